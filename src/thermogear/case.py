@@ -1,0 +1,215 @@
+"""Cases: load a case file or a built-in parameter set, validate it, and build the components.
+
+A case file is TOML with units in its key names (``module_mm``, ``speed_rpm``). Every value is checked at load
+time; a bad one raises :class:`~thermogear.errors.CaseError` naming the key, the value, the allowed range and
+the reason.
+"""
+
+from __future__ import annotations
+
+import math
+import tomllib
+from dataclasses import dataclass, field
+from importlib import resources
+from pathlib import Path
+from typing import Any
+
+import pydantic
+
+from thermogear.errors import CaseError, closest_key
+from thermogear.fzg import fzg_load_stage_torque
+from thermogear.geometry import Gear, GearPair
+from thermogear.materials import Material
+from thermogear.operating import OperatingPoint
+from thermogear.schema import (CaseFile, DampingSection, DynamicsSection, LubricantSection, TemperatureSection,
+                               ThermalSection)
+
+
+@dataclass(frozen=True)
+class Case:
+    """A validated case: the gear pair and everything that acts on it.
+
+    The gear pair, material and operating point are built components; the lubricant, temperature, thermal,
+    damping and dynamics sections are validated, immutable inputs that the later stages turn into components.
+    """
+
+    name: str
+    title: str
+    citation: str
+    assumptions: tuple[str, ...]
+    gear_pair: GearPair
+    material: Material
+    operating_point: OperatingPoint
+    roughness_ra: float  # composite Ra [m]
+    inertias: tuple[float, float] | None  # [kg m²] or None for discs
+    lubricant: LubricantSection
+    temperature: TemperatureSection
+    thermal: ThermalSection
+    damping: DampingSection
+    dynamics: DynamicsSection
+    source: str  # parameter-set name or file path
+    document: dict[str, Any] = field(compare=False, repr=False)  # the case file as loaded (for result files)
+
+    @property
+    def directory(self) -> Path | None:
+        """Folder of the case file (for relative paths in it), None for a built-in set."""
+        path = Path(self.source)
+        return path.parent if path.suffix == ".toml" and path.exists() else None
+
+    @property
+    def equivalent_mass(self) -> float:
+        """me of Eq. 5 [kg], total over the face width."""
+        return self.gear_pair.equivalent_mass(self.material.density, self.inertias)
+
+    @property
+    def normal_load(self) -> float:
+        """External normal load w = F_bt = T1 / r_b1 [N], total over the face width."""
+        return self.operating_point.normal_load(self.gear_pair.pinion.base_radius)
+
+    def with_changes(self, **changes: Any) -> "Case":
+        """A new case with dotted case-file keys replaced, re-validated (``{"operating.speed_rpm": 3000}``)."""
+        document = _deep_copy(self.document)
+        for dotted, value in changes.items():
+            node = document
+            *parents, last = dotted.split(".")
+            for part in parents:
+                node = node.setdefault(part, {})
+            node[last] = value
+        return case_from_document(document, source=self.source)
+
+
+def parameter_set_names() -> list[str]:
+    """Names of the built-in parameter sets."""
+    folder = resources.files("thermogear.parameter_sets")
+    return sorted(p.name[:-5] for p in folder.iterdir() if p.name.endswith(".toml"))
+
+
+def parameter_set_path(name: str):
+    """Path (importlib resource) of a built-in parameter set."""
+    return resources.files("thermogear.parameter_sets") / f"{name}.toml"
+
+
+def load_case(name_or_path: str | Path) -> Case:
+    """Load a built-in parameter set by name (``"luo2019"``) or a TOML case file by path."""
+    text_source = str(name_or_path)
+    path = Path(name_or_path)
+    if path.suffix == ".toml" or path.exists():
+        if not path.is_file():
+            raise CaseError("case", text_source, "an existing .toml file or a built-in name "
+                            f"({', '.join(parameter_set_names())})", "no such file")
+        text = path.read_text(encoding="utf-8")
+    elif text_source in parameter_set_names():
+        text = parameter_set_path(text_source).read_text(encoding="utf-8")
+    else:
+        suggestion = closest_key(text_source, parameter_set_names())
+        hint = f" (did you mean '{suggestion}'?)" if suggestion else ""
+        raise CaseError("case", text_source, f"one of {', '.join(parameter_set_names())} or a .toml path",
+                        f"no such parameter set{hint}")
+    try:
+        document = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as error:
+        raise CaseError("case", text_source, "valid TOML", f"the file cannot be parsed: {error}") from None
+    return case_from_document(document, source=str(path if path.exists() else text_source))
+
+
+def case_from_document(document: dict[str, Any], source: str = "<memory>") -> Case:
+    """Validate a case document (the parsed TOML) and build the components."""
+    try:
+        model = CaseFile.model_validate(document)
+    except pydantic.ValidationError as error:
+        raise _case_error_from_validation(error) from None
+    gears = model.gears
+    angle = math.radians(gears.pressure_angle_deg)
+
+    def gear(section) -> Gear:
+        width = section.face_width_mm if section.face_width_mm is not None else gears.face_width_mm
+        return Gear(teeth=section.teeth, module=gears.module_mm * 1e-3, pressure_angle=angle,
+                    face_width=width * 1e-3, profile_shift=section.profile_shift,
+                    addendum_coefficient=gears.addendum_coefficient,
+                    dedendum_coefficient=gears.dedendum_coefficient,
+                    tool_tip_radius_coefficient=gears.tool_tip_radius_coefficient,
+                    bore_radius=section.bore_radius_mm * 1e-3,
+                    tip_radius=None if section.tip_diameter_mm is None else section.tip_diameter_mm * 0.5e-3)
+
+    centre = None if gears.centre_distance_mm is None else gears.centre_distance_mm * 1e-3
+    pair = GearPair.create(gear(gears.pinion), gear(gears.wheel), centre, tip_shortening=gears.tip_shortening)
+    material = model.material
+    op = model.operating
+    if op.power_kw is not None:
+        operating = OperatingPoint.from_power(op.speed_rpm, op.power_kw * 1e3)
+    else:
+        torque = op.torque_nm if op.torque_nm is not None else fzg_load_stage_torque(op.fzg_load_stage)
+        operating = OperatingPoint(op.speed_rpm, torque)
+    inertias = None
+    if (gears.pinion.inertia_kg_m2 is None) != (gears.wheel.inertia_kg_m2 is None):
+        raise CaseError("gears.wheel.inertia_kg_m2", gears.wheel.inertia_kg_m2, "given for both gears or neither",
+                        "the equivalent mass needs both inertias")
+    if gears.pinion.inertia_kg_m2 is not None:
+        inertias = (gears.pinion.inertia_kg_m2, gears.wheel.inertia_kg_m2)
+    return Case(
+        name=model.case.name, title=model.case.title, citation=model.case.citation,
+        assumptions=tuple(model.case.assumptions), gear_pair=pair,
+        material=Material(youngs_modulus=material.youngs_modulus_gpa * 1e9, poisson_ratio=material.poisson_ratio,
+                          density=material.density_kg_m3, specific_heat=material.specific_heat_j_per_kg_k,
+                          thermal_conductivity=material.thermal_conductivity_w_per_m_k,
+                          thermal_expansion=material.thermal_expansion_per_k),
+        operating_point=operating, roughness_ra=gears.roughness_ra_um * 1e-6, inertias=inertias,
+        lubricant=model.lubricant, temperature=model.temperature, thermal=model.thermal, damping=model.damping,
+        dynamics=model.dynamics, source=source, document=document)
+
+
+# --------------------------------------------------------------------------------------------- errors
+def _case_error_from_validation(error: pydantic.ValidationError) -> CaseError:
+    """The first pydantic error as a CaseError naming key, value, allowed range and reason."""
+    first = error.errors(include_url=False)[0]
+    location = [str(part) for part in first["loc"] if not isinstance(part, int)]
+    key = ".".join(location) or "case"
+    value = first.get("input")
+    kind = first["type"]
+    context = first.get("ctx") or {}
+    if kind == "extra_forbidden":
+        valid = _valid_keys(location[:-1])
+        suggestion = closest_key(location[-1], valid)
+        hint = f"did you mean '{suggestion}'?" if suggestion else "see `thermogear schema`"
+        return CaseError(key, value, "one of: " + ", ".join(sorted(valid)), f"unknown key ({hint})")
+    if kind == "missing":
+        return CaseError(key, None, "a value", "this key is required")
+    bounds = {"greater_than": "> {gt}", "greater_than_equal": ">= {ge}", "less_than": "< {lt}",
+              "less_than_equal": "<= {le}"}
+    if kind in bounds:
+        allowed = bounds[kind].format(**context)
+        reason = "out of range" + (_unit_hint(key, value, context))
+        return CaseError(key, value, allowed, reason)
+    if kind == "literal_error":
+        return CaseError(key, value, str(context.get("expected", "")), "not one of the choices")
+    if kind == "value_error":
+        message = str(context.get("error", first["msg"]))
+        name, _, reason = message.partition(": ")
+        return CaseError(f"{key}.{name}" if key != "case" and reason else (name if reason else key), value,
+                         "see the message", reason or message)
+    return CaseError(key, value, first["msg"].lower(), f"wrong type ({kind})")
+
+
+def _unit_hint(key: str, value: Any, context: dict) -> str:
+    if key.endswith("_mm") and isinstance(value, (int, float)) and 0 < value < 0.1:
+        return ": this looks like metres, the key is in millimetres"
+    if key.endswith("_gpa") and isinstance(value, (int, float)) and value > 1e6:
+        return ": this looks like Pa, the key is in GPa"
+    return ""
+
+
+def _valid_keys(location: list[str]) -> list[str]:
+    model: type[pydantic.BaseModel] = CaseFile
+    for part in location:
+        annotation = model.model_fields[part].annotation
+        candidates = [annotation, *getattr(annotation, "__args__", ())]
+        model = next(c for c in candidates if isinstance(c, type) and issubclass(c, pydantic.BaseModel))
+    return list(model.model_fields)
+
+
+def _deep_copy(document: Any) -> Any:
+    if isinstance(document, dict):
+        return {key: _deep_copy(value) for key, value in document.items()}
+    if isinstance(document, list):
+        return [_deep_copy(value) for value in document]
+    return document

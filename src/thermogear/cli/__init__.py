@@ -1,0 +1,38 @@
+"""Command line of thermogear. Each command lives in its own module and registers itself on ``app``."""
+
+from __future__ import annotations
+
+import sys
+
+import typer
+
+from thermogear.cli.app import app, error_console
+from thermogear.errors import ThermogearError
+
+# Command modules (importing registers their commands).
+from thermogear.cli import cases  # noqa: E402,F401
+
+
+def main() -> None:
+    """Console-script entry point: run the app, turn thermogear errors into one clear line and exit 2."""
+    try:
+        app(standalone_mode=False)
+    except ThermogearError as error:
+        error_console.print(f"[bold red]error:[/] {error}", highlight=False)
+        sys.exit(2)
+    except KeyboardInterrupt:
+        error_console.print("interrupted")
+        sys.exit(130)
+    except typer.Exit as error:
+        sys.exit(error.exit_code)
+    except typer.Abort:
+        sys.exit(130)
+    except Exception as error:
+        # click's usage errors (typer vendors click, so they are matched by what they offer, not by class)
+        if callable(getattr(error, "show", None)) and isinstance(getattr(error, "exit_code", None), int):
+            error.show()
+            sys.exit(error.exit_code)
+        raise
+
+
+__all__ = ["app", "main"]

@@ -1,0 +1,55 @@
+"""Errors and warnings of thermogear.
+
+Every error about user input names the key, the value, the allowed range and the reason, so that a
+gear engineer can fix the case file without reading the source.
+"""
+
+from __future__ import annotations
+
+import difflib
+from collections.abc import Iterable
+
+
+class ThermogearError(Exception):
+    """Base class of every error thermogear raises on purpose."""
+
+
+class CaseError(ThermogearError, ValueError):
+    """A case (file or API input) that is invalid or outside what the model supports.
+
+    Parameters
+    ----------
+    key:
+        Dotted key of the offending input, as written in a case file (``"pinion.teeth"``).
+    value:
+        The value that was given.
+    allowed:
+        The allowed range or set, in words (``"> 1"``, ``"[0, 0.8]"``).
+    reason:
+        Why the value is refused (the physics or the model limit behind it).
+    """
+
+    def __init__(self, key: str, value: object, allowed: str, reason: str) -> None:
+        self.key = key
+        self.value = value
+        self.allowed = allowed
+        self.reason = reason
+        super().__init__(f"{key} = {value!r}: allowed {allowed}; {reason}")
+
+
+class ModelLimitError(ThermogearError, RuntimeError):
+    """The model cannot give a valid answer at this operating point (e.g. parametric instability)."""
+
+
+class ExtrapolationWarning(UserWarning):
+    """An empirical fit or formula is used outside the range of the data it was fitted to."""
+
+
+class ModelAssumptionWarning(UserWarning):
+    """The result rests on an assumption that the user should know about."""
+
+
+def closest_key(key: str, valid: Iterable[str]) -> str | None:
+    """Closest valid key to a misspelt one, or None when nothing is close."""
+    matches = difflib.get_close_matches(key, list(valid), n=1, cutoff=0.5)
+    return matches[0] if matches else None

@@ -1,0 +1,37 @@
+"""Operating point: speed and load of the pinion."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+
+@dataclass(frozen=True)
+class OperatingPoint:
+    """Pinion speed and torque. The pinion drives."""
+
+    speed_rpm: float  # n1 [rpm]
+    torque: float  # T1 [N m]
+
+    @classmethod
+    def from_power(cls, speed_rpm: float, power: float) -> "OperatingPoint":
+        """From transmitted power P [W]: T1 = P / ω1."""
+        return cls(speed_rpm, power / cls.angular_speed_of(speed_rpm))
+
+    @staticmethod
+    def angular_speed_of(speed_rpm: float) -> float:
+        return speed_rpm * math.pi / 30.0
+
+    @property
+    def angular_speed(self) -> float:
+        """ω1 [rad/s]."""
+        return self.angular_speed_of(self.speed_rpm)
+
+    @property
+    def power(self) -> float:
+        """P = T1 ω1 [W]."""
+        return self.torque * self.angular_speed
+
+    def normal_load(self, pinion_base_radius: float) -> float:
+        """Normal (line-of-action) load F_n = F_bt = T1 / r_b1 [N], total over the face width."""
+        return self.torque / pinion_base_radius

@@ -1,0 +1,1 @@
+"""Built-in parameter sets, one TOML file each, named after their source."""

@@ -1,0 +1,78 @@
+"""Case-file sections [gears], [gears.pinion], [gears.wheel], [material] and [operating]."""
+
+from __future__ import annotations
+
+from typing import Annotated
+
+from pydantic import Field, model_validator
+
+from thermogear.schema.base import Section
+
+
+class GearSection(Section):
+    """One gear of the pair. Lengths in millimetres as the key names say."""
+
+    teeth: Annotated[int, Field(ge=5, le=1000, description="number of teeth z [–]")]
+    profile_shift: Annotated[float, Field(ge=-1.0, le=1.5, description="profile shift coefficient x [–]")] = 0.0
+    face_width_mm: Annotated[float, Field(gt=0.0, le=2000.0, description="face width b [mm]")] | None = None
+    bore_radius_mm: Annotated[float, Field(ge=0.0, le=5000.0, description="bore (hub) radius r_n [mm]")] = 0.0
+    tip_diameter_mm: Annotated[float, Field(gt=0.0, le=20000.0,
+                                            description="tip diameter d_a [mm]; default from the geometry")] | None = None
+    inertia_kg_m2: Annotated[float, Field(gt=0.0, description="polar moment of inertia [kg m²]; default: solid "
+                                                               "disc of the pitch radius with the bore")] | None = None
+
+
+class GearsSection(Section):
+    """The pair: common rack data, centre distance, and the two gears."""
+
+    module_mm: Annotated[float, Field(ge=0.1, le=100.0, description="module m [mm]")]
+    pressure_angle_deg: Annotated[float, Field(gt=0.0, lt=45.0, description="pressure angle α [°]")] = 20.0
+    face_width_mm: Annotated[float, Field(gt=0.0, le=2000.0, description="face width b of both gears [mm]")] | None = None
+    addendum_coefficient: Annotated[float, Field(gt=0.0, le=2.0, description="h_a* [–]")] = 1.0
+    dedendum_coefficient: Annotated[float, Field(gt=0.0, le=2.5, description="h_f* [–]")] = 1.25
+    tool_tip_radius_coefficient: Annotated[float, Field(ge=0.0, le=0.6, description="rack tip radius ρ_fP* [–]")] = 0.38
+    centre_distance_mm: Annotated[float, Field(gt=0.0, description="centre distance a [mm]; default: zero "
+                                                                   "backlash from the profile shifts")] | None = None
+    tip_shortening: bool = Field(True, description="shorten the tips to keep the standard clearance (ISO 21771)")
+    roughness_ra_um: Annotated[float, Field(ge=0.0, le=50.0, description="composite arithmetic mean roughness "
+                                                                        "Ra = (Ra1 + Ra2)/2 [μm]")] = 1.0
+    pinion: GearSection
+    wheel: GearSection
+
+    @model_validator(mode="after")
+    def _face_width_given(self):
+        for name in ("pinion", "wheel"):
+            if self.face_width_mm is None and getattr(self, name).face_width_mm is None:
+                raise ValueError(f"face_width_mm: give gears.face_width_mm or gears.{name}.face_width_mm")
+        return self
+
+
+class MaterialSection(Section):
+    """Gear material (both gears)."""
+
+    youngs_modulus_gpa: Annotated[float, Field(ge=1.0, le=1000.0, description="Young's modulus E [GPa]")] = 206.0
+    poisson_ratio: Annotated[float, Field(ge=0.0, lt=0.5, description="Poisson's ratio ν [–]")] = 0.3
+    density_kg_m3: Annotated[float, Field(ge=500.0, le=25000.0, description="density ρ [kg/m³]")] = 7850.0
+    specific_heat_j_per_kg_k: Annotated[float, Field(gt=0.0, le=5000.0, description="specific heat c [J/(kg K)]")] = 465.0
+    thermal_conductivity_w_per_m_k: Annotated[float, Field(gt=0.0, le=500.0,
+                                                           description="thermal conductivity [W/(m K)]")] = 46.0
+    thermal_expansion_per_k: Annotated[float, Field(ge=0.0, le=1e-4,
+                                                    description="linear thermal expansion coefficient [1/K]")] = 11.5e-6
+
+
+class OperatingSection(Section):
+    """Operating point: pinion speed and either the power or the pinion torque."""
+
+    speed_rpm: Annotated[float, Field(gt=0.0, le=200000.0, description="pinion speed n1 [rpm]")]
+    power_kw: Annotated[float, Field(gt=0.0, le=1e5, description="transmitted power P [kW]")] | None = None
+    torque_nm: Annotated[float, Field(gt=0.0, le=1e7, description="pinion torque T1 [N m]")] | None = None
+    fzg_load_stage: Annotated[int, Field(ge=1, le=14, description="FZG load stage KS (pinion torque from the "
+                                                                  "standard table)")] | None = None
+
+    @model_validator(mode="after")
+    def _one_load(self):
+        given = [name for name in ("power_kw", "torque_nm", "fzg_load_stage") if getattr(self, name) is not None]
+        if len(given) != 1:
+            raise ValueError("power_kw: give exactly one of power_kw, torque_nm, fzg_load_stage "
+                             f"(given: {', '.join(given) or 'none'})")
+        return self

@@ -1,0 +1,32 @@
+"""Case-file section [temperature]: where the tooth temperatures come from."""
+
+from __future__ import annotations
+
+from typing import Annotated, Literal
+
+from pydantic import Field
+
+from thermogear.schema.base import Section
+
+
+class TemperatureSection(Section):
+    """Tooth temperature input of the thermal model (°C). ``model`` picks the source:
+
+    - ``"uniform"``: one bulk temperature for the whole gear body (``bulk_c``);
+    - ``"tabulated"``: flank temperature along Γ (``gamma`` and ``flank_c``, or ``csv``) fitted by a polynomial
+      of ``fit_degree``, with base-circle and bore temperatures per gear;
+    - ``"fem"``: the finite-element bulk-temperature model computes everything.
+    """
+
+    model: Literal["uniform", "tabulated", "fem"] = "uniform"
+    reference_c: float = Field(20.0, description="stress-free (assembly) temperature [°C]")
+    bulk_c: float | None = Field(None, description="uniform bulk temperature [°C]")
+    gamma: list[float] | None = Field(None, description="contact positions Γ of the flank table [–]")
+    flank_c: list[float] | None = Field(None, description="flank temperatures at gamma [°C]")
+    csv: str | None = Field(None, description="CSV file with columns gamma, flank_c (relative to the case file)")
+    fit_degree: Annotated[int, Field(ge=0, le=12)] = 4
+    pinion_base_c: float | None = Field(None, description="pinion base-circle temperature [°C]")
+    pinion_bore_c: float | None = Field(None, description="pinion bore temperature [°C]")
+    wheel_base_c: float | None = Field(None, description="wheel base-circle temperature [°C]")
+    wheel_bore_c: float | None = Field(None, description="wheel bore temperature [°C]")
+    wheel_flank_offset_c: float = Field(0.0, description="wheel flank temperature minus the pinion's [°C]")
