@@ -29,11 +29,15 @@ def involute(angle):
 
 
 def inverse_involute(value, tolerance: float = 1e-14):
-    """Angle α [rad] with inv α = value, by Newton's method (vectorised, converges from α0 = (3v)^(1/3))."""
+    """Angle α [rad] with inv α = value, by Newton's method (vectorised).
+
+    tan α − α is convex and increasing on [0, π/2), and both (3v)^(1/3) and arctan(v + π/2) bound the root from
+    above, so Newton's method started at the smaller of the two converges monotonically.
+    """
     value = np.asarray(value, dtype=float)
     if np.any(value < 0):
         raise ValueError("inverse_involute: the involute function is non-negative")
-    angle = np.cbrt(3.0 * value)
+    angle = np.minimum(np.cbrt(3.0 * value), np.arctan(value + np.pi / 2.0))
     for _ in range(50):
         step = (np.tan(angle) - angle - value) / np.tan(angle) ** 2
         step = np.where(angle > 0, step, 0.0)
@@ -372,11 +376,11 @@ class GearPair:
                                 "the tooth would have no involute flank")
             tip_thickness = float(gear.thickness_at(tip))
             if tip_thickness <= 0.0:
-                raise CaseError(f"{key}.profile_shift", gear.profile_shift, "smaller (pointed tip)",
+                raise CaseError(f"{key}.profile_shift", gear.profile_shift, "smaller, or a smaller tip diameter (pointed tip)",
                                 f"the tooth comes to a point below its tip circle (tip thickness "
                                 f"{tip_thickness * 1e3:.3f} mm)")
             if tip_thickness < MINIMUM_TIP_THICKNESS_MODULES * gear.module:
-                raise CaseError(f"{key}.profile_shift", gear.profile_shift, "smaller (thicker tip)",
+                raise CaseError(f"{key}.profile_shift", gear.profile_shift, "smaller, or a smaller tip diameter (thicker tip)",
                                 f"the tip is {tip_thickness * 1e3:.3f} mm thick, less than "
                                 f"{MINIMUM_TIP_THICKNESS_MODULES}·m = "
                                 f"{MINIMUM_TIP_THICKNESS_MODULES * gear.module * 1e3:.3f} mm")

@@ -11,6 +11,7 @@ from thermogear.errors import ThermogearError
 
 # Command modules (importing registers their commands).
 from thermogear.cli import cases  # noqa: E402,F401
+from thermogear.cli import check  # noqa: E402,F401
 
 
 def main() -> None:

@@ -1,0 +1,51 @@
+"""`thermogear check CASE`: validate a case file and show the geometry it describes."""
+
+from __future__ import annotations
+
+import math
+
+import typer
+from rich.table import Table
+
+from thermogear.case import load_case
+from thermogear.cli.app import app, console, print_json
+
+
+@app.command()
+def check(case: str = typer.Argument(..., help="built-in parameter set name or path to a .toml case file"),
+          as_json: bool = typer.Option(False, "--json", help="one JSON object on stdout")) -> None:
+    """Validate a case and print its gear-pair geometry (exit status 2 with one clear message if it is invalid)."""
+    loaded = load_case(case)
+    pair = loaded.gear_pair
+    payload = {
+        "case": loaded.name,
+        "valid": True,
+        "centre_distance_mm": pair.centre_distance * 1e3,
+        "operating_pressure_angle_deg": math.degrees(pair.operating_pressure_angle),
+        "contact_ratio": pair.contact_ratio,
+        "tip_diameter_mm": {"pinion": 2e3 * pair.pinion.tip_radius, "wheel": 2e3 * pair.wheel.tip_radius},
+        "root_diameter_mm": {"pinion": 2e3 * pair.pinion.root_radius, "wheel": 2e3 * pair.wheel.root_radius},
+        "base_diameter_mm": {"pinion": 2e3 * pair.pinion.base_radius, "wheel": 2e3 * pair.wheel.base_radius},
+        "path_mm": {key: value * 1e3 for key, value in pair.path_points.items()},
+        "normal_load_n": loaded.normal_load,
+        "pinion_torque_nm": loaded.operating_point.torque,
+        "mesh_frequency_hz": pair.mesh_frequency(loaded.operating_point.speed_rpm),
+    }
+    if as_json:
+        print_json(payload)
+        return
+    table = Table(title=f"{loaded.name}: {loaded.title}")
+    table.add_column("quantity")
+    table.add_column("value", justify="right")
+    table.add_row("centre distance [mm]", f"{payload['centre_distance_mm']:.4f}")
+    table.add_row("operating pressure angle [°]", f"{payload['operating_pressure_angle_deg']:.4f}")
+    table.add_row("contact ratio ε_α [–]", f"{pair.contact_ratio:.4f}")
+    for gear in ("pinion", "wheel"):
+        table.add_row(f"{gear} d_a / d_b / d_f [mm]",
+                      f"{payload['tip_diameter_mm'][gear]:.3f} / {payload['base_diameter_mm'][gear]:.3f} / "
+                      f"{payload['root_diameter_mm'][gear]:.3f}")
+    table.add_row("path A/B/C/D/E from T1 [mm]", " / ".join(f"{v:.3f}" for v in payload["path_mm"].values()))
+    table.add_row("normal load F_bt [N]", f"{loaded.normal_load:.1f}")
+    table.add_row("mesh frequency [Hz]", f"{payload['mesh_frequency_hz']:.2f}")
+    console.print(table)
+    console.print("[green]case is valid[/]")
