@@ -1,0 +1,156 @@
+"""The model chain of one operating point: case → mesh-cycle stiffness and damping → dynamics → response.
+
+``Simulation(case, model="thermal")`` wires the stages of design.md for the thermal model of Luo & Li (2020)
+(k_T with c_r, Eq. 6) or the elastic one (k_e with c_e, Eq. 5). The elastic and thermal models are the same
+pipeline with different per-pair stiffness and damping; nothing here knows how either is computed.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from functools import cached_property
+from typing import Literal
+
+import numpy as np
+
+from thermogear.case import Case
+from thermogear.errors import CaseError
+
+Model = Literal["elastic", "thermal"]
+Method = Literal["periodic", "transient"]
+MODELS: tuple[str, ...] = ("elastic", "thermal")
+
+
+@dataclass(frozen=True)
+class Simulation:
+    """One operating point of one model.
+
+    Parameters
+    ----------
+    case:
+        The validated case.
+    model:
+        ``"elastic"`` (k_e, damping with oil at the reference temperature) or ``"thermal"`` (k_T, damping with
+        the viscosity at the flank temperature).
+    points_per_period:
+        Intervals of the mesh-cycle grid; default from the case's [dynamics] section.
+    """
+
+    case: Case
+    model: Model = "thermal"
+    points_per_period: int | None = None
+
+    def __post_init__(self) -> None:
+        if self.model not in MODELS:
+            raise CaseError("model", self.model, " | ".join(MODELS), "unknown model")
+
+    # ------------------------------------------------------------------------------------ mesh cycle
+    @property
+    def speed_rpm(self) -> float:
+        return self.case.operating_point.speed_rpm
+
+    @cached_property
+    def mesh_cycle(self):
+        from thermogear.mesh_cycle import MeshCycle
+
+        return MeshCycle(self.case.gear_pair, self.speed_rpm)
+
+    @cached_property
+    def grid(self):
+        """The mesh-cycle grid (interval nodes with every contact transition, pair roll distances)."""
+        count = self.points_per_period or self.case.dynamics.points_per_period
+        return self.mesh_cycle.grid(count)
+
+    def _per_pair(self, evaluate) -> np.ndarray:
+        """Evaluate a per-pair function of roll distance on the pair slots in contact (0 elsewhere)."""
+        grid = self.grid
+        points = self.case.gear_pair.path_points
+        roll = np.clip(grid.roll, points["A"], points["E"])
+        values = np.zeros_like(roll)
+        values[grid.in_contact] = evaluate(roll[grid.in_contact])
+        return values
+
+    @cached_property
+    def pair_stiffness(self) -> np.ndarray:
+        """Per-pair stiffness on the grid, (slots, n) [N/m], total over the face width."""
+        if self.model == "thermal":
+            from thermogear.thermal.stiffness import thermal_pair_stiffness_at
+
+            return self._per_pair(lambda roll: thermal_pair_stiffness_at(self.case, roll))
+        from thermogear.stiffness.table import pair_stiffness_at
+
+        return self._per_pair(lambda roll: pair_stiffness_at(self.case.gear_pair, self.case.material, roll))
+
+    @cached_property
+    def mesh_stiffness(self) -> np.ndarray:
+        """k(τ) on the grid intervals [N/m]: the pairs in contact in parallel."""
+        return self.pair_stiffness.sum(axis=0)
+
+    @cached_property
+    def mesh_damping(self) -> np.ndarray:
+        """c(τ) on the grid intervals [N·s/m] under the case's damping rule."""
+        from thermogear.damping import mesh_cycle_damping
+
+        return np.asarray(mesh_cycle_damping(self.case, self.grid, self.model), dtype=float)
+
+    @property
+    def mesh_stiffness_mean(self) -> float:
+        """Time mean of k(τ) over one mesh period [N/m]."""
+        durations = np.diff(self.grid.nodes)
+        return float(np.sum(self.mesh_stiffness * durations) / np.sum(durations))
+
+    @property
+    def mesh_frequency_hz(self) -> float:
+        return self.case.gear_pair.mesh_frequency(self.speed_rpm)
+
+    @property
+    def natural_frequency_hz(self) -> float:
+        """f_n = sqrt(mean k / me) / 2π [Hz]."""
+        return math.sqrt(self.mesh_stiffness_mean / self.case.equivalent_mass) / (2.0 * math.pi)
+
+    @property
+    def frequency_ratio(self) -> float:
+        """λ = f_mesh / f_n [–] (the paper's frequency ratio)."""
+        return self.mesh_frequency_hz / self.natural_frequency_hz
+
+    # ------------------------------------------------------------------------------------- dynamics
+    @cached_property
+    def problem(self):
+        """The gear-agnostic dynamics problem me·ẍ + c(τ)ẋ + k(τ)x = w over one mesh period."""
+        from thermogear.dynamics.problem import MeshDynamicsProblem
+
+        grid = self.grid
+        return MeshDynamicsProblem(
+            mass=self.case.equivalent_mass, nodes=grid.nodes, stiffness=self.mesh_stiffness,
+            damping=self.mesh_damping, force=self.case.normal_load, contact_count=grid.contact_count,
+            pair_stiffness=self.pair_stiffness, face_width=self.case.gear_pair.face_width)
+
+    def run(self, method: Method | None = None, include_damping_force: bool | None = None):
+        """Solve the dynamics and return a :class:`~thermogear.dynamics.response.DynamicResponse`.
+
+        ``"periodic"``: exact periodic steady state (Floquet/monodromy). ``"transient"``: from rest
+        (x = ẋ = 0, as the paper) over the case's number of mesh periods with the compiled RK4; the response
+        keeps the whole history and reads the steady state from the last period.
+        """
+        from thermogear.dynamics.response import response_from_orbit, response_from_transient
+
+        method = method or self.case.dynamics.method
+        damping_force = (self.case.dynamics.include_damping_force if include_damping_force is None
+                         else include_damping_force)
+        if method == "periodic":
+            from thermogear.dynamics.periodic import periodic_steady_state
+
+            orbit = periodic_steady_state(self.problem)
+            return response_from_orbit(self.problem, orbit, include_damping_force=damping_force)
+        if method == "transient":
+            from thermogear.dynamics.transient import transient_from_rest
+
+            history = transient_from_rest(self.problem, periods=self.case.dynamics.transient_periods)
+            return response_from_transient(self.problem, history, include_damping_force=damping_force)
+        raise CaseError("method", method, "periodic | transient", "unknown solution method")
+
+
+def compare(case: Case, method: Method | None = None, points_per_period: int | None = None) -> dict:
+    """Run the elastic and the thermal model of one case: ``{"elastic": response, "thermal": response}``."""
+    return {model: Simulation(case, model, points_per_period).run(method) for model in MODELS}
