@@ -1,0 +1,244 @@
+"""The mesh-cycle equation of motion as data: me·ẍ + c(τ)·ẋ + k(τ)·x = w over one mesh period.
+
+Luo & Li (2020) Eqs. (5)–(6), physics.md §1.2. The coefficients are piecewise constant on the intervals
+between ``nodes`` (the region transitions A..E of the mesh cycle are nodes). Everything is a total over the
+face width (kg, N/m, N·s/m, N); the face width is kept only for per-width views of loads in metrics.
+
+This module holds inputs and checks them; it has no solver logic (layer 2 of design.md).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from thermogear.errors import CaseError
+
+__all__ = ["MeshDynamicsProblem", "region_name"]
+
+_REGION_NAMES = {0: "no_contact", 1: "single", 2: "double", 3: "triple", 4: "quadruple"}
+
+
+def region_name(contact_count: int) -> str:
+    """Name of a contact region from the number of tooth pairs in contact (1 → "single", 2 → "double")."""
+    return _REGION_NAMES.get(int(contact_count), f"{int(contact_count)}_pairs")
+
+
+def _as_float_array(name: str, value: object, shape: tuple[int, ...]) -> np.ndarray:
+    array = np.array(value, dtype=float, copy=True)
+    if array.shape != shape:
+        raise CaseError(name, f"array of shape {array.shape}", f"shape {shape}",
+                        "one value per interval between consecutive nodes")
+    if not np.all(np.isfinite(array)):
+        raise CaseError(name, f"{int(np.sum(~np.isfinite(array)))} non-finite values", "finite numbers",
+                        "a NaN or infinite coefficient has no physical meaning")
+    array.setflags(write=False)
+    return array
+
+
+@dataclass(frozen=True)
+class MeshDynamicsProblem:
+    """Linear time-periodic torsional model of a gear mesh over one mesh period (Luo & Li Eqs. 5–6).
+
+    Parameters
+    ----------
+    mass:
+        Equivalent mass me [kg] (total over the face width), Eq. (5).
+    nodes:
+        (n+1,) interval boundaries [s], ``nodes[0] = 0``, ``nodes[-1] = T`` (the mesh period), strictly increasing.
+    stiffness:
+        (n,) mesh stiffness k on each interval [N/m], > 0.
+    damping:
+        (n,) mesh damping c on each interval [N·s/m], >= 0.
+    force:
+        Static normal load w [N]; scalar or (n,) per interval.
+    contact_count:
+        (n,) number of tooth pairs in contact on each interval (defines the regions: 1 single, 2 double).
+    pair_stiffness, pair_damping:
+        Optional (slots, n) stiffness [N/m] and damping [N·s/m] of each tooth pair slot (0 where out of contact).
+        ``pair_stiffness`` must sum over slots to ``stiffness``. Without ``pair_damping`` the damping is shared
+        in proportion to the pair stiffness when a pair load including the damping force is asked for.
+    face_width:
+        Face width b [m], only for per-width views of loads (N/mm) in metrics.
+    """
+
+    mass: float
+    nodes: np.ndarray
+    stiffness: np.ndarray
+    damping: np.ndarray
+    force: float | np.ndarray
+    contact_count: np.ndarray
+    pair_stiffness: np.ndarray | None = None
+    pair_damping: np.ndarray | None = None
+    face_width: float = 1.0
+    _force_array: np.ndarray = field(init=False, repr=False, compare=False)
+
+    def __post_init__(self) -> None:
+        mass = float(self.mass)
+        if not np.isfinite(mass) or mass <= 0.0:
+            raise CaseError("mass", self.mass, "> 0 kg, finite", "the equivalent mass me of Eq. (5) must be positive")
+        object.__setattr__(self, "mass", mass)
+        nodes = np.array(self.nodes, dtype=float, copy=True)
+        if nodes.ndim != 1 or nodes.size < 2:
+            raise CaseError("nodes", f"array of shape {nodes.shape}", "1-D, at least 2 values",
+                            "the nodes bound the intervals of one mesh period")
+        if not np.all(np.isfinite(nodes)):
+            raise CaseError("nodes", "non-finite values", "finite times [s]", "a node time must be a number")
+        if nodes[0] != 0.0:
+            raise CaseError("nodes[0]", float(nodes[0]), "0", "the mesh period starts at τ = 0")
+        if np.any(np.diff(nodes) <= 0.0):
+            raise CaseError("nodes", "not strictly increasing", "strictly increasing times",
+                            "each interval must have a positive length")
+        nodes.setflags(write=False)
+        object.__setattr__(self, "nodes", nodes)
+        n = nodes.size - 1
+        stiffness = _as_float_array("stiffness", self.stiffness, (n,))
+        if np.any(stiffness <= 0.0):
+            raise CaseError("stiffness", float(stiffness.min()), "> 0 N/m on every interval",
+                            "the linear mesh model needs at least one pair in contact; zero stiffness is contact "
+                            "loss, which this linear model does not represent")
+        damping = _as_float_array("damping", self.damping, (n,))
+        if np.any(damping < 0.0):
+            raise CaseError("damping", float(damping.min()), ">= 0 N·s/m", "negative damping injects energy")
+        force_value = np.array(self.force, dtype=float)
+        if force_value.ndim == 0:
+            force_array = np.full(n, float(force_value))
+            object.__setattr__(self, "force", float(force_value))
+        else:
+            force_array = _as_float_array("force", force_value, (n,))
+            object.__setattr__(self, "force", force_array)
+        if not np.all(np.isfinite(force_array)):
+            raise CaseError("force", self.force, "finite [N]", "the static load must be a number")
+        if np.any(force_array <= 0.0):
+            raise CaseError("force", float(force_array.min()), "> 0 N",
+                            "the mesh is modelled under a positive transmitted load")
+        force_array.setflags(write=False)
+        contact = np.array(self.contact_count, copy=True)
+        if contact.shape != (n,):
+            raise CaseError("contact_count", f"array of shape {contact.shape}", f"shape ({n},)",
+                            "one pair count per interval")
+        if not np.all(np.isfinite(contact.astype(float))) or np.any(contact != np.round(contact)) or np.any(contact < 1):
+            raise CaseError("contact_count", contact.tolist()[:8], "integers >= 1",
+                            "the number of tooth pairs in contact on each interval")
+        contact = contact.astype(np.int64)
+        contact.setflags(write=False)
+        object.__setattr__(self, "stiffness", stiffness)
+        object.__setattr__(self, "damping", damping)
+        object.__setattr__(self, "contact_count", contact)
+        object.__setattr__(self, "_force_array", force_array)
+        if self.pair_stiffness is not None:
+            pair_k = np.atleast_2d(np.array(self.pair_stiffness, dtype=float))
+            pair_k = _as_float_array("pair_stiffness", pair_k, (pair_k.shape[0], n))
+            if np.any(pair_k < 0.0):
+                raise CaseError("pair_stiffness", float(pair_k.min()), ">= 0 N/m", "0 marks a pair out of contact")
+            total = pair_k.sum(axis=0)
+            if not np.allclose(total, stiffness, rtol=1e-6, atol=0.0):
+                worst = float(np.max(np.abs(total - stiffness) / stiffness))
+                raise CaseError("pair_stiffness", f"sum over pairs off by {worst:.3g} (relative)",
+                                "sum over pairs equal to stiffness (rtol 1e-6)",
+                                "pairs in contact act in parallel, so their stiffnesses add up to the mesh stiffness")
+            object.__setattr__(self, "pair_stiffness", pair_k)
+        if self.pair_damping is not None:
+            if self.pair_stiffness is None:
+                raise CaseError("pair_damping", "given", "only together with pair_stiffness",
+                                "pair loads need the pair stiffness")
+            pair_c = np.atleast_2d(np.array(self.pair_damping, dtype=float))
+            pair_c = _as_float_array("pair_damping", pair_c, self.pair_stiffness.shape)
+            if np.any(pair_c < 0.0):
+                raise CaseError("pair_damping", float(pair_c.min()), ">= 0 N·s/m", "negative damping injects energy")
+            object.__setattr__(self, "pair_damping", pair_c)
+        face_width = float(self.face_width)
+        if not np.isfinite(face_width) or face_width <= 0.0:
+            raise CaseError("face_width", self.face_width, "> 0 m", "used to express loads per unit face width")
+        object.__setattr__(self, "face_width", face_width)
+
+    # ---------------------------------------------------------------- derived quantities
+    @property
+    def interval_count(self) -> int:
+        """Number of intervals n."""
+        return int(self.nodes.size - 1)
+
+    @property
+    def durations(self) -> np.ndarray:
+        """(n,) interval lengths [s]."""
+        return np.diff(self.nodes)
+
+    @property
+    def period(self) -> float:
+        """Mesh period T [s]."""
+        return float(self.nodes[-1])
+
+    @property
+    def mesh_frequency(self) -> float:
+        """Mesh frequency f_m = 1/T [Hz]."""
+        return 1.0 / self.period
+
+    @property
+    def force_per_interval(self) -> np.ndarray:
+        """(n,) static load w on each interval [N]."""
+        return self._force_array
+
+    @property
+    def static_load(self) -> float:
+        """Time-mean static load w0 [N] (equals ``force`` for a constant load)."""
+        return float(np.dot(self._force_array, self.durations) / self.period)
+
+    @property
+    def mean_stiffness(self) -> float:
+        """Time-mean mesh stiffness over one period [N/m]."""
+        return float(np.dot(self.stiffness, self.durations) / self.period)
+
+    @property
+    def natural_frequency(self) -> float:
+        """Natural frequency f_n = sqrt(mean k / me) / 2π [Hz] (from the time-mean stiffness)."""
+        return float(np.sqrt(self.mean_stiffness / self.mass) / (2.0 * np.pi))
+
+    @property
+    def frequency_ratio(self) -> float:
+        """Frequency ratio λ = f_m / f_n [-] (the paper's 0.153)."""
+        return self.mesh_frequency / self.natural_frequency
+
+    @property
+    def static_transmission_error(self) -> np.ndarray:
+        """(n,) static transmission error w/k on each interval [m] (the equilibria of the dynamic response)."""
+        return self._force_array / self.stiffness
+
+    @property
+    def regions(self) -> tuple[int, ...]:
+        """Distinct contact counts present, ascending."""
+        return tuple(int(c) for c in np.unique(self.contact_count))
+
+    def pair_arrays(self) -> tuple[np.ndarray, np.ndarray] | None:
+        """(slots, n) pair stiffness and pair damping; damping shared in proportion to stiffness when not given."""
+        if self.pair_stiffness is None:
+            return None
+        if self.pair_damping is not None:
+            return self.pair_stiffness, self.pair_damping
+        share = self.pair_stiffness / self.stiffness[None, :]
+        return self.pair_stiffness, share * self.damping[None, :]
+
+    # ---------------------------------------------------------------- constructors
+    @classmethod
+    def square_wave(cls, *, mass: float, mesh_period: float, contact_ratio: float, single_stiffness: float,
+                    double_stiffness: float, single_damping: float, double_damping: float, force: float,
+                    face_width: float = 1.0) -> MeshDynamicsProblem:
+        """Two-level (square-wave) mesh stiffness of a spur pair with 1 < contact ratio < 2.
+
+        One mesh period starts when a pair enters contact at A: double contact for (ε − 1)·T (A→B), single
+        contact for (2 − ε)·T (B→D). Two pair slots: slot 0 is the pair that entered at A (half the double
+        stiffness, then the whole single stiffness), slot 1 the pair that leaves at E (half the double stiffness,
+        then out of contact). Meant for tests, benchmarks and quick studies; the gear chain builds its own.
+        """
+        if not 1.0 < contact_ratio < 2.0:
+            raise CaseError("contact_ratio", contact_ratio, "(1, 2)",
+                            "the square wave alternates one double- and one single-contact region")
+        t_double = (contact_ratio - 1.0) * mesh_period
+        nodes = np.array([0.0, t_double, mesh_period])
+        stiffness = np.array([double_stiffness, single_stiffness])
+        damping = np.array([double_damping, single_damping])
+        pair_stiffness = np.array([[0.5 * double_stiffness, single_stiffness], [0.5 * double_stiffness, 0.0]])
+        pair_damping = np.array([[0.5 * double_damping, single_damping], [0.5 * double_damping, 0.0]])
+        return cls(mass=mass, nodes=nodes, stiffness=stiffness, damping=damping, force=force,
+                   contact_count=np.array([2, 1]), pair_stiffness=pair_stiffness, pair_damping=pair_damping,
+                   face_width=face_width)
