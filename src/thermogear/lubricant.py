@@ -51,6 +51,8 @@ def walther_constants(points_c_cst: Sequence[Sequence[float]], key: str = "lubri
     law's range, or a viscosity that does not fall as the temperature rises.
     """
     points = np.asarray(points_c_cst, dtype=float)
+    if points.size == 0:
+        points = points.reshape(0, 2)
     if points.ndim != 2 or points.shape[1] != 2:
         raise CaseError(key, points_c_cst, "[[temperature °C, viscosity mm²/s], ...]",
                         "each point is a (temperature, kinematic viscosity) pair")
