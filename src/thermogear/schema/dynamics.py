@@ -10,15 +10,21 @@ from thermogear.schema.base import Section
 
 
 class DampingSection(Section):
-    """Equivalent viscous damping of tooth friction (Luo & Li Eqs. 26–28).
+    """Equivalent viscous damping of tooth friction (Luo & Li Eqs. 26–28; docs/damping.md).
 
-    ``rule``: how the pairs in contact combine into c(τ): ``"paper"`` (Luo & Li Fig. 7: the value of the pair
-    at the contact position, double-pair value below single-pair value) or ``"parallel"`` (dampers of the pairs
-    in contact add, the physically consistent reading of the same energy argument).
+    ``rule``: how the pairs in contact combine into c(τ): ``"paper"`` (Luo & Li Fig. 7: the arithmetic mean of
+    the pairs in contact, so the double-pair value stays below the single-pair one, as the per-pair values are)
+    or ``"parallel"`` (dampers of the pairs in contact add, the physically consistent reading of the same
+    energy argument).
+    ``stiffness``: the pair stiffness k in Eq. 28 (and in the load share of the friction formula) for the
+    thermal model: ``"elastic"`` k_e (the paper: c_r differs from c_e by the viscosity only) or ``"thermal"``
+    k_T. The elastic model always uses k_e.
     """
 
     rule: Literal["paper", "parallel"] = "parallel"
     lubricant_factor: Annotated[float, Field(gt=0.0, le=3.0, description="X_L; default from the base oil")] | None = None
+    stiffness: Literal["elastic", "thermal"] = Field(
+        "elastic", description="pair stiffness of Eq. 28 in the thermal model: k_e (paper) or k_T")
 
 
 class DynamicsSection(Section):
