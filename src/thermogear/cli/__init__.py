@@ -12,6 +12,8 @@ from thermogear.errors import ThermogearError
 # Command modules (importing registers their commands).
 from thermogear.cli import cases  # noqa: E402,F401
 from thermogear.cli import check  # noqa: E402,F401
+from thermogear.cli import stiffness  # noqa: E402,F401
+from thermogear.cli import damping  # noqa: E402,F401
 
 
 def main() -> None:

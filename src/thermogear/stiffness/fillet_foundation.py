@@ -98,8 +98,10 @@ def root_to_bore_ratio(root_radius: float, bore_radius: float, key: str = "gear"
     return root_radius / bore_radius
 
 
-def check_sainsot_range(root_to_bore: float, root_half_angle_rad: float, key: str = "gear") -> list[str]:
-    """Warn (ExtrapolationWarning) where the Sainsot fit is extrapolated; returns the messages."""
+def check_sainsot_range(root_to_bore: float, root_half_angle_rad: float, key: str = "gear",
+                        warn: bool = True) -> list[str]:
+    """Messages for each input or output of the Sainsot fit outside its range; with ``warn`` each is also
+    issued as an ExtrapolationWarning."""
     messages = []
     low, high = SAINSOT_INPUT_RANGES["h_f"]
     if not low <= root_to_bore <= high:
@@ -111,7 +113,15 @@ def check_sainsot_range(root_to_bore: float, root_half_angle_rad: float, key: st
         value = float(sainsot_coefficient(name, root_to_bore, root_half_angle_rad))
         if not low <= value <= high:
             messages.append(f"{key}: {name}* = {value:.4f} outside the range of Sainsot's data [{low}, {high}]")
-    for message in messages:
+    for message in messages if warn else ():
         warnings.warn(f"Sainsot fillet-foundation fit extrapolated — {message}", ExtrapolationWarning,
                       stacklevel=3)
     return messages
+
+
+def gear_sainsot_messages(gear, key: str = "gear") -> list[str]:
+    """Extrapolation messages of the Sainsot fit for one gear (no warning issued)."""
+    h_f = root_to_bore_ratio(gear.root_radius, gear.bore_radius, key)
+    theta_f = root_half_angle(gear.teeth, gear.pressure_angle, gear.dedendum_coefficient,
+                              gear.tool_tip_radius_coefficient)
+    return check_sainsot_range(h_f, theta_f, key, warn=False)
