@@ -118,14 +118,20 @@ def mesh_damping(per_pair_damping, in_contact, rule: Rule = "paper"):
     raise CaseError("damping.rule", rule, " | ".join(RULES), "unknown mesh-damping rule")
 
 
-def contact_region_means(mesh_values, contact_count) -> dict[str, float]:
-    """Means of a mesh-cycle quantity over the single-pair and the double-pair region (uniform time grid)."""
+def contact_region_means(mesh_values, contact_count, weights=None) -> dict[str, float]:
+    """Means of a mesh-cycle quantity over the single-pair and the double-pair region.
+
+    ``weights``: interval lengths of the grid (``MeshGrid.steps``) for a time average on a non-uniform grid;
+    None for equal weights. A region absent from the cycle gives NaN (documented; a contact ratio of exactly 1
+    or 2 has only one region).
+    """
     values = np.asarray(mesh_values, dtype=float)
     count = np.asarray(contact_count)
+    weights = np.ones_like(values) if weights is None else np.asarray(weights, dtype=float)
     result = {}
     for name, pairs in (("single", 1), ("double", 2)):
         mask = count == pairs
-        result[name] = float(values[mask].mean()) if np.any(mask) else float("nan")
+        result[name] = float(np.average(values[mask], weights=weights[mask])) if np.any(mask) else float("nan")
     return result
 
 
@@ -250,6 +256,115 @@ def mesh_cycle_damping(case: "Case", grid, model: Model = "elastic", rule: Rule 
     return mesh_damping(per_pair_damping_on_grid(case, grid, model), grid.in_contact, rule)
 
 
-__all__ = ["MODELS", "RULES", "PairDamping", "contact_region_means", "coulomb_equivalent_damping",
+# ---------------------------------------------------------------------------------------------- summary
+#: Luo & Li (2020) Sect. 3 mean dampings [N·s/m] (totals over the 25 mm face), for display beside luo2019.
+PAPER_MEAN_DAMPING = {"elastic": {"single": 3.41e3, "double": 2.40e3}, "thermal": {"single": 5.72e3, "double": 4.03e3}}
+
+
+@dataclass(frozen=True)
+class DampingSummary:
+    """Elastic and thermal friction damping of a case: per pair along the path and c(τ) over one mesh cycle.
+
+    ``path``: PairDamping per model on an even roll grid A–E; ``mesh``: c(τ) [N·s/m] per model on ``grid``
+    (MeshGrid); ``region_means``: time means of c(τ) over the single- and double-pair regions per model.
+    """
+
+    case_name: str
+    rule: str
+    stiffness: str
+    lubricant: Lubricant
+    path: dict
+    grid: object
+    mesh: dict
+    region_means: dict
+    pitch: dict  # PairDamping at C per model
+
+    def to_dict(self) -> dict:
+        """The JSON summary of ``thermogear damping``."""
+        oil, pitch = self.lubricant, self.pitch
+        flank_viscosity = float(np.mean(self.path["thermal"].viscosity))
+        result = {
+            "case": self.case_name, "rule": self.rule, "stiffness": self.stiffness,
+            "lubricant": {"name": oil.name, "base_oil": oil.base_oil, "lubricant_factor_oil": oil.lubricant_factor},
+            "friction_coefficient_pitch": {model: float(pitch[model].friction_coefficient[0]) for model in MODELS},
+            "damping_n_s_per_m": self.region_means,
+            "thermal_over_elastic": {region: self.region_means["thermal"][region]
+                                     / self.region_means["elastic"][region] for region in ("single", "double")},
+            "viscosity_mpa_s": {"oil_reference": float(pitch["elastic"].viscosity[0]) * 1e3,
+                                "flank_mean": flank_viscosity * 1e3},
+            "temperature_c": {"oil_reference": float(pitch["elastic"].temperature_c[0]),
+                              "flank_mean": float(np.mean(self.path["thermal"].temperature_c))},
+            "along_path": {"gamma": self.path["elastic"].gamma,
+                           "elastic_n_s_per_m": self.path["elastic"].damping,
+                           "thermal_n_s_per_m": self.path["thermal"].damping,
+                           "friction_elastic": self.path["elastic"].friction_coefficient,
+                           "friction_thermal": self.path["thermal"].friction_coefficient},
+        }
+        if self.case_name == "luo2019":
+            result["paper_n_s_per_m"] = PAPER_MEAN_DAMPING
+        return result
+
+
+def damping_summary(case: "Case", count: int = 720, path_points: int = 81, rule: Rule | None = None
+                    ) -> DampingSummary:
+    """Compute the elastic and thermal friction damping of a case (per pair and over the mesh cycle)."""
+    from thermogear.mesh_cycle import MeshCycle
+
+    rule = case.damping.rule if rule is None else rule
+    oil = lubricant_from_case(case)
+    pair = case.gear_pair
+    grid = MeshCycle(pair, case.operating_point.speed_rpm).grid(count)
+    roll = pair.roll_grid(path_points)
+    path, mesh, means, pitch = {}, {}, {}, {}
+    for model in MODELS:
+        path[model] = pair_damping(case, roll, model, lubricant=oil)
+        pitch[model] = pair_damping(case, np.array([pair.path_points["C"]]), model, lubricant=oil)
+        mesh[model] = mesh_damping(per_pair_damping_on_grid(case, grid, model), grid.in_contact, rule)
+        means[model] = contact_region_means(mesh[model], grid.contact_count, grid.steps)
+    return DampingSummary(case_name=case.name, rule=rule, stiffness=case.damping.stiffness, lubricant=oil,
+                          path=path, grid=grid, mesh=mesh, region_means=means, pitch=pitch)
+
+
+def plot_damping(summary: DampingSummary, periods: int = 3, axes=None):
+    """Luo & Li Figs. 7–8: per-pair damping along Γ and mesh damping c(τ) over a few mesh periods, elastic
+    and thermal. Returns the matplotlib figure."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    if axes is None:
+        figure, axes = plt.subplots(1, 2, figsize=(11, 4.2), constrained_layout=True)
+    else:
+        figure = axes[0].figure
+    styles = {"elastic": dict(color="tab:blue", label="elastic c_e (oil at reference temperature)"),
+              "thermal": dict(color="tab:red", label="thermal c_r (oil at flank temperature)")}
+    for model in MODELS:
+        axes[0].plot(summary.path[model].gamma, summary.path[model].damping, **styles[model])
+    axes[0].set_xlabel("contact position Γ [–]")
+    axes[0].set_ylabel("damping of one tooth pair [N·s/m]")
+    axes[0].set_title("per pair along the path")
+    grid = summary.grid
+    period = grid.nodes[-1]
+    for model in MODELS:
+        times = np.concatenate([grid.nodes[:-1] + j * period for j in range(periods)] + [[periods * period]])
+        values = np.tile(summary.mesh[model], periods)
+        axes[1].stairs(values, times * 1e3, baseline=None, color=styles[model]["color"], label=model)
+        if summary.case_name == "luo2019" and summary.rule == "paper":
+            for region in ("single", "double"):
+                axes[1].axhline(PAPER_MEAN_DAMPING[model][region], color=styles[model]["color"], lw=0.8, ls=":")
+    axes[1].set_xlabel("time τ [ms]")
+    axes[1].set_ylabel("mesh damping c(τ) [N·s/m]")
+    title = f"mesh cycle, rule '{summary.rule}'"
+    if summary.case_name == "luo2019" and summary.rule == "paper":
+        title += " (dotted: paper's means)"
+    axes[1].set_title(title)
+    axes[0].legend(loc="best", fontsize=8)
+    axes[1].legend(loc="best", fontsize=8)
+    figure.suptitle(f"Friction damping (Luo & Li Eqs. 26–28), case {summary.case_name}")
+    return figure
+
+
+__all__ = ["DampingSummary", "PAPER_MEAN_DAMPING", "damping_summary", "plot_damping", "MODELS", "RULES", "PairDamping", "contact_region_means", "coulomb_equivalent_damping",
            "friction_damping", "load_shares", "mesh_circular_frequency", "mesh_cycle_damping", "mesh_damping",
            "oil_temperature_c", "pair_damping", "per_pair_damping_on_grid"]

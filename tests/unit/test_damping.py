@@ -143,3 +143,9 @@ def test_roll_outside_the_path_is_refused(luo2019, hump_stiffness):
         pair_damping(luo2019, np.array([0.0]), "elastic")
     with pytest.raises(CaseError):
         pair_damping(luo2019, np.array([luo2019.gear_pair.path_points["C"]]), "plastic")
+
+
+def test_zero_speed_case_is_refused_at_load_with_the_speed_key(luo2019):
+    with pytest.raises(CaseError) as caught:
+        luo2019.with_changes(**{"operating.speed_rpm": 0.0})
+    assert caught.value.key == "operating.speed_rpm"

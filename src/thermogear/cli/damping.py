@@ -1,0 +1,97 @@
+"""`thermogear damping` (friction damping of a case, Luo & Li Eqs. 26–28) and `thermogear oils` (built-in oils)."""
+
+from __future__ import annotations
+
+import warnings
+from pathlib import Path
+
+import typer
+from rich.table import Table
+
+from thermogear.case import load_case
+from thermogear.cli.app import app, console, error_console, print_json
+from thermogear.damping import PAPER_MEAN_DAMPING, damping_summary, plot_damping
+from thermogear.lubricant import builtin_lubricant, builtin_lubricant_names
+
+
+@app.command()
+def damping(case: str = typer.Argument(..., help="built-in parameter set (see `thermogear cases`) or a .toml file"),
+            as_json: bool = typer.Option(False, "--json", help="one JSON object on stdout"),
+            plot: Path | None = typer.Option(None, "--plot", help="write the figure (Figs. 7–8) to this file"),
+            rule: str | None = typer.Option(None, "--rule", help="mesh rule 'paper' or 'parallel' "
+                                                                   "(default: the case's [damping] rule)"),
+            points: int = typer.Option(720, "--points", min=16, max=100000, help="intervals per mesh period")) -> None:
+    """Equivalent viscous damping of tooth friction: elastic (oil at the reference temperature) and thermal
+    (oil at the local flank temperature), per pair along the path and over the mesh cycle."""
+    loaded = load_case(case)
+    if rule is not None:
+        loaded = loaded.with_changes(**{"damping.rule": rule})
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        summary = damping_summary(loaded, count=points)
+    messages = sorted({f"{w.category.__name__}: {w.message}" for w in caught})
+    payload = summary.to_dict()
+    payload["warnings"] = messages
+    if plot is not None:
+        figure = plot_damping(summary)
+        figure.savefig(plot, dpi=150)
+        payload["plot"] = str(plot)
+    if as_json:
+        print_json(payload)
+        return
+    for message in messages:
+        error_console.print(f"[yellow]warning:[/] {message}", highlight=False)
+    table = Table(title=f"Friction damping of {summary.case_name} (rule '{summary.rule}', Eq. 28 stiffness "
+                        f"'{summary.stiffness}')")
+    table.add_column("quantity")
+    table.add_column("elastic", justify="right")
+    table.add_column("thermal", justify="right")
+    table.add_column("ratio", justify="right")
+    reference = PAPER_MEAN_DAMPING if summary.case_name == "luo2019" else None
+    if reference:
+        table.add_column("paper (el. / th.)", justify="right")
+    mu = payload["friction_coefficient_pitch"]
+    row = ["friction coefficient at C", f"{mu['elastic']:.4f}", f"{mu['thermal']:.4f}",
+           f"{mu['thermal'] / mu['elastic']:.3f}"]
+    table.add_row(*(row + [""] if reference else row))
+    for region in ("single", "double"):
+        means = payload["damping_n_s_per_m"]
+        row = [f"mean damping, {region}-pair region [N·s/m]", f"{means['elastic'][region]:.4g}",
+               f"{means['thermal'][region]:.4g}", f"{payload['thermal_over_elastic'][region]:.3f}"]
+        if reference:
+            row.append(f"{reference['elastic'][region]:.3g} / {reference['thermal'][region]:.3g}")
+        table.add_row(*row)
+    viscosity, temperature = payload["viscosity_mpa_s"], payload["temperature_c"]
+    row = ["oil temperature [°C] / viscosity [mPa·s]",
+           f"{temperature['oil_reference']:.1f} / {viscosity['oil_reference']:.1f}",
+           f"{temperature['flank_mean']:.1f} / {viscosity['flank_mean']:.1f} (flank mean)", ""]
+    table.add_row(*(row + [""] if reference else row))
+    console.print(table)
+    if plot is not None:
+        console.print(f"figure written to {plot}")
+
+
+@app.command()
+def oils(as_json: bool = typer.Option(False, "--json", help="one JSON object on stdout")) -> None:
+    """List the built-in oils with their viscosities, density, base oil and source."""
+    rows = []
+    for name in builtin_lubricant_names():
+        oil = builtin_lubricant(name)
+        rows.append({"name": name, "title": oil.title, "base_oil": oil.base_oil,
+                     "viscosity_points_c_mm2_s": [list(point) for point in oil.viscosity_points],
+                     "density_kg_m3": oil.density_reference, "density_reference_c": oil.density_reference_c,
+                     "density_coefficient_per_k": oil.density_coefficient,
+                     "lubricant_factor": oil.lubricant_factor, "source": oil.source})
+    if as_json:
+        print_json({"oils": rows})
+        return
+    table = Table(title="Built-in oils (select with [lubricant] name = ...)")
+    for column in ("name", "base oil", "ν 40 °C [mm²/s]", "ν 100 °C [mm²/s]", "ρ 15 °C [kg/m³]", "X_L"):
+        table.add_column(column, justify="left" if column in ("name", "base oil") else "right")
+    for row in rows:
+        points = dict(row["viscosity_points_c_mm2_s"])
+        table.add_row(row["name"], row["base_oil"], f"{points.get(40.0, float('nan')):g}",
+                      f"{points.get(100.0, float('nan')):g}", f"{row['density_kg_m3']:g}", f"{row['lubricant_factor']:g}")
+    console.print(table)
+    console.print("Sources: `thermogear oils --json`. The ISO VG grades are generic oils; use your oil's data sheet "
+                  "(viscosity_points) for real work.")
