@@ -82,11 +82,10 @@ class Spectrum:
         indices = _local_maxima(self.power, self._band_mask(band))
         if indices.size == 0:
             return []
-        found = [interpolate_peak(self.power, index, self.resolution_hz, self.frequency_hz[0])
-                 for index in indices]
-        found.sort(key=lambda peak: peak.amplitude, reverse=True)
-        strongest = found[0].amplitude
-        return [peak for peak in found if peak.amplitude >= relative_threshold * strongest][:max_peaks]
+        frequency, amplitude = interpolate_peaks(self.power, indices, self.resolution_hz, self.frequency_hz[0])
+        order = np.argsort(-amplitude, kind="stable")
+        keep = order[amplitude[order] >= relative_threshold * amplitude[order[0]]][:max_peaks]
+        return [Peak(float(frequency[i]), float(amplitude[i])) for i in keep]
 
     def peak_in_band(self, band: tuple[float, float] | None = None) -> Peak:
         """The strongest interpolated peak in ``band`` [Hz] (the largest bin where the band holds no local maximum)."""
@@ -106,9 +105,9 @@ class Spectrum:
         mask = (self.frequency_hz >= frequency_hz - half) & (self.frequency_hz <= frequency_hz + half)
         indices = _local_maxima(self.power, mask)
         if indices.size:
-            found = [interpolate_peak(self.power, index, self.resolution_hz, self.frequency_hz[0])
-                     for index in indices]
-            return max(found, key=lambda peak: peak.amplitude), True
+            frequency, amplitude = interpolate_peaks(self.power, indices, self.resolution_hz, self.frequency_hz[0])
+            best = int(np.argmax(amplitude))
+            return Peak(float(frequency[best]), float(amplitude[best])), True
         index = int(np.argmin(np.abs(self.frequency_hz - frequency_hz)))
         return Peak(float(frequency_hz), float(self.amplitude[index])), False
 
@@ -143,17 +142,27 @@ def hann_kernel(offset_bins: np.ndarray | float) -> np.ndarray:
 
 def interpolate_peak(power: np.ndarray, index: int, resolution_hz: float, first_frequency_hz: float = 0.0) -> Peak:
     """Frequency [Hz] and sine amplitude of a Hann-window peak at bin ``index`` (Grandke's ratio, module doc)."""
-    magnitude = np.sqrt(np.maximum(power, 0.0))
-    centre = magnitude[index]
-    if index == 0 or index == magnitude.size - 1 or centre <= 0:
-        return Peak(float(first_frequency_hz + index * resolution_hz), float(np.sqrt(2.0) * centre))
-    left, right = magnitude[index - 1], magnitude[index + 1]
-    sign = 1.0 if right >= left else -1.0
-    ratio = min(max(right, left) / centre, 1.0)
-    offset = sign * (2.0 * ratio - 1.0) / (ratio + 1.0)
-    offset = float(np.clip(offset, -0.5, 0.5))
-    amplitude = np.sqrt(2.0) * centre / float(hann_kernel(offset))
-    return Peak(float(first_frequency_hz + (index + offset) * resolution_hz), float(amplitude))
+    frequency, amplitude = interpolate_peaks(power, np.array([index]), resolution_hz, first_frequency_hz)
+    return Peak(float(frequency[0]), float(amplitude[0]))
+
+
+def interpolate_peaks(power: np.ndarray, indices: np.ndarray, resolution_hz: float,
+                      first_frequency_hz: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
+    """Vectorised :func:`interpolate_peak`: frequencies [Hz] and sine amplitudes of the peaks at bins ``indices``.
+
+    Bins at the ends of the spectrum are not interpolated (frequency of the bin, amplitude √(2 P)).
+    """
+    magnitude = np.sqrt(np.maximum(np.asarray(power, dtype=float), 0.0))
+    indices = np.asarray(indices, dtype=int)
+    centre = magnitude[indices]
+    interior = (indices > 0) & (indices < magnitude.size - 1) & (centre > 0)
+    left = magnitude[np.clip(indices - 1, 0, magnitude.size - 1)]
+    right = magnitude[np.clip(indices + 1, 0, magnitude.size - 1)]
+    sign = np.where(right >= left, 1.0, -1.0)
+    ratio = np.clip(np.maximum(left, right) / np.where(centre > 0, centre, 1.0), 0.0, 1.0)
+    offset = np.where(interior, np.clip(sign * (2.0 * ratio - 1.0) / (ratio + 1.0), -0.5, 0.5), 0.0)
+    amplitude = np.sqrt(2.0) * centre / hann_kernel(offset)
+    return first_frequency_hz + (indices + offset) * resolution_hz, amplitude
 
 
 def spectrum(signal: Signal, method: str = "welch", segment_length: int | None = None,

@@ -78,3 +78,9 @@ def window_spectrum(part: Signal, method: str, segment_length: int | None) -> Sp
     """Spectrum of one window (Welch segments no longer than the window)."""
     length = None if segment_length is None else min(segment_length, part.values.size)
     return spectrum(part, method, length)
+
+
+def window_spectra(signal: Signal, windows: list[tuple[float, float]], method: str = "fft",
+                   segment_length: int | None = None) -> list[Spectrum]:
+    """The spectrum of each window [s] (for a waterfall plot)."""
+    return [window_spectrum(signal.between(low, high), method, segment_length) for low, high in windows]
