@@ -14,6 +14,7 @@ from thermogear.cli import cases  # noqa: E402,F401
 from thermogear.cli import check  # noqa: E402,F401
 from thermogear.cli import stiffness  # noqa: E402,F401
 from thermogear.cli import damping  # noqa: E402,F401
+from thermogear.cli import vibration  # noqa: E402,F401
 
 
 def main() -> None:
