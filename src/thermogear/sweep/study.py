@@ -1,0 +1,410 @@
+"""Study definition: a grid over case parameters, its points, its chunks, and the case each point runs.
+
+A study varies one or more case parameters over lists of values; the points are the Cartesian product, in the
+order the parameters are given (the last one varies fastest). Parameters are named by short aliases
+(``speed_rpm``, ``oil_temperature_c``) or by any dotted case-file key (``gears.pinion.profile_shift``).
+
+Values are written ``a:b:n`` (n values from a to b, both included, evenly spaced), ``v1,v2,...`` (a list) or one
+number. Every value is checked against the case schema when the study is defined, so a bad value fails at once
+with a :class:`~thermogear.errors.CaseError` naming the parameter, not after an hour of computing.
+
+The chunks (blocks of the grid computed by one task and written as one region of the result store) depend only
+on the study definition, never on the number of workers: a study gives the same chunks, hence the same numbers
+bit for bit, on a laptop, on a cluster and after any number of interruptions.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import itertools
+import json
+import math
+import tomllib
+import typing
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pydantic
+
+from thermogear.errors import CaseError, closest_key
+
+__all__ = ["ALIASES", "Block", "Parameter", "Study", "load_study_case", "parse_values", "resolve_key"]
+
+#: Short names of the parameters engineers sweep most, and the case-file keys they set.
+ALIASES: dict[str, str] = {
+    "speed_rpm": "operating.speed_rpm",
+    "torque_nm": "operating.torque_nm",
+    "power_kw": "operating.power_kw",
+    "fzg_load_stage": "operating.fzg_load_stage",
+    "oil_temperature_c": "lubricant.operating_temperature_c",
+    "oil_reference_temperature_c": "lubricant.reference_temperature_c",
+    "x_te": "thermal.x_te",
+    "module_mm": "gears.module_mm",
+    "face_width_mm": "gears.face_width_mm",
+    "pinion_profile_shift": "gears.pinion.profile_shift",
+    "wheel_profile_shift": "gears.wheel.profile_shift",
+    "roughness_ra_um": "gears.roughness_ra_um",
+    "bulk_temperature_c": "temperature.bulk_c",
+    "flank_temperature_offset_c": "temperature.flank_offset_c",
+    "wheel_flank_offset_c": "temperature.wheel_flank_offset_c",
+}
+
+#: Keys set together with a parameter so that the case stays consistent (exactly one load input; a given X_te).
+COMPANION_CHANGES: dict[str, dict[str, Any]] = {
+    "operating.torque_nm": {"operating.power_kw": None, "operating.fzg_load_stage": None},
+    "operating.power_kw": {"operating.torque_nm": None, "operating.fzg_load_stage": None},
+    "operating.fzg_load_stage": {"operating.power_kw": None, "operating.torque_nm": None},
+    "thermal.x_te": {"thermal.x_te_source": "given"},
+}
+
+#: A derived parameter: a shift of every tabulated flank temperature (the case's flank table + offset).
+FLANK_OFFSET_KEY = "temperature.flank_offset_c"
+
+MODEL_CHOICES = ("elastic", "thermal", "both")
+DEFAULT_CHUNK_POINTS = 256
+
+
+# ---------------------------------------------------------------------------------------------- parsing
+def parse_values(text: str | float | int | list | tuple, name: str = "vary") -> np.ndarray:
+    """Values of a parameter from ``"a:b:n"``, ``"v1,v2,..."``, one number or a list of numbers.
+
+    ``a:b:n`` gives n evenly spaced values from a to b, both ends included (``np.linspace``). Raises CaseError
+    naming ``name`` on anything else, on non-finite numbers and on repeated values.
+    """
+    allowed = "'a:b:n' (n >= 2 values from a to b), 'v1,v2,...' or one number"
+    if isinstance(text, (list, tuple)):
+        items = list(text)
+    elif isinstance(text, (int, float)) and not isinstance(text, bool):
+        items = [text]
+    elif isinstance(text, str):
+        stripped = text.strip()
+        if ":" in stripped:
+            parts = stripped.split(":")
+            if len(parts) != 3:
+                raise CaseError(name, text, allowed, "a range needs start, stop and count: 'a:b:n'")
+            try:
+                start, stop = float(parts[0]), float(parts[1])
+                count_value = float(parts[2])
+            except ValueError:
+                raise CaseError(name, text, allowed, "start, stop and count must be numbers") from None
+            if count_value != int(count_value) or count_value < 2:
+                raise CaseError(name, text, allowed, "the count n of 'a:b:n' must be an integer >= 2")
+            if not (math.isfinite(start) and math.isfinite(stop)) or start == stop:
+                raise CaseError(name, text, allowed, "start and stop must be finite and different")
+            return np.linspace(start, stop, int(count_value))
+        items = [part for part in stripped.split(",") if part.strip()]
+        if not items:
+            raise CaseError(name, text, allowed, "no values given")
+    else:
+        raise CaseError(name, text, allowed, "not a value specification")
+    try:
+        values = np.array([float(item) for item in items], dtype=float)
+    except (TypeError, ValueError):
+        raise CaseError(name, text, allowed, "every value must be a number") from None
+    if not np.all(np.isfinite(values)):
+        raise CaseError(name, text, "finite numbers", "a sweep over NaN or infinity has no meaning")
+    if np.unique(values).size != values.size:
+        raise CaseError(name, text, "distinct values", "a value repeated in a sweep computes the same point twice")
+    return values
+
+
+def _case_file_model():
+    from thermogear.schema import CaseFile
+
+    return CaseFile
+
+
+def _field_annotation(key: str):
+    """Annotation of a dotted case-file key in the schema, or raise CaseError with the closest valid key."""
+    model = _case_file_model()
+    parts = key.split(".")
+    for depth, part in enumerate(parts):
+        fields = model.model_fields
+        if part not in fields:
+            prefix = ".".join(parts[:depth])
+            valid = [f"{prefix}.{name}" if prefix else name for name in fields]
+            suggestion = closest_key(key, valid + list(ALIASES))
+            hint = f" (did you mean '{suggestion}'?)" if suggestion else ""
+            raise CaseError("vary", key, "an alias (" + ", ".join(sorted(ALIASES)) + ") or a dotted case key",
+                            f"unknown case parameter{hint}")
+        annotation = fields[part].annotation
+        if depth == len(parts) - 1:
+            return annotation
+        candidates = [annotation, *typing.get_args(annotation)]
+        nested = [c for c in candidates if isinstance(c, type) and issubclass(c, pydantic.BaseModel)]
+        if not nested:
+            raise CaseError("vary", key, "a key that names a single number", f"'{part}' is not a section")
+        model = nested[0]
+    raise AssertionError("unreachable")  # pragma: no cover
+
+
+def _is_integer_field(annotation) -> bool:
+    """True when the schema field holds an integer (teeth, FZG load stage)."""
+    candidates = [annotation, *typing.get_args(annotation)]
+    for candidate in candidates:
+        candidates.extend(typing.get_args(candidate))
+    numeric = [c for c in candidates if c in (int, float)]
+    return bool(numeric) and all(c is int for c in numeric)
+
+
+def resolve_key(name: str) -> str:
+    """Dotted case key of an alias or of a dotted key (checked against the schema)."""
+    key = ALIASES.get(name, name)
+    if key != FLANK_OFFSET_KEY:
+        _field_annotation(key)
+    return key
+
+
+# --------------------------------------------------------------------------------------------- the study
+@dataclass(frozen=True)
+class Parameter:
+    """One swept parameter: its dimension ``name`` (alias or dotted key), case ``key`` and ``values``."""
+
+    name: str
+    key: str
+    values: tuple[float | int, ...]
+
+    @property
+    def size(self) -> int:
+        return len(self.values)
+
+
+@dataclass(frozen=True)
+class Block:
+    """A chunk of the grid: ``index`` (chunk coordinates) and ``slices`` (one per parameter, in grid order)."""
+
+    index: tuple[int, ...]
+    number: int
+    slices: tuple[slice, ...]
+
+    @property
+    def shape(self) -> tuple[int, ...]:
+        return tuple(s.stop - s.start for s in self.slices)
+
+    @property
+    def size(self) -> int:
+        return int(np.prod(self.shape))
+
+
+def _chunk_shape(sizes: tuple[int, ...], target: int) -> tuple[int, ...]:
+    """Chunk shape of about ``target`` points: whole trailing dimensions first, then slices of the next one."""
+    shape = []
+    budget = max(int(target), 1)
+    for size in reversed(sizes):
+        take = max(min(size, budget), 1)
+        shape.append(take)
+        budget = max(budget // take, 1)
+    return tuple(reversed(shape))
+
+
+@dataclass(frozen=True)
+class Study:
+    """A parameter study of one case: the grid of ``parameters`` for the ``models`` (elastic and/or thermal).
+
+    ``chunk_points``: about how many grid points one task computes and the store writes as one chunk (each
+    point runs every model of the study).
+    """
+
+    case: Any  # thermogear.case.Case
+    parameters: tuple[Parameter, ...]
+    models: tuple[str, ...] = ("elastic", "thermal")
+    chunk_points: int = DEFAULT_CHUNK_POINTS
+    fixed_changes: tuple[tuple[str, Any], ...] = ()
+    _flank_table: tuple[float, ...] | None = field(default=None, repr=False, compare=False)
+
+    # ------------------------------------------------------------------------------ construction
+    @classmethod
+    def define(cls, case, vary: dict[str, Any] | list[str], model: str = "both",
+               chunk_points: int | None = None) -> "Study":
+        """A checked study. ``vary``: ``{"speed_rpm": "500:12000:240", ...}`` or ``["speed_rpm=500:12000:240"]``
+        (the command-line form). ``model``: ``"elastic"``, ``"thermal"`` or ``"both"``."""
+        if model not in MODEL_CHOICES:
+            raise CaseError("model", model, " | ".join(MODEL_CHOICES), "unknown model choice")
+        models = ("elastic", "thermal") if model == "both" else (model,)
+        if isinstance(vary, dict):
+            items = list(vary.items())
+        else:
+            items = []
+            for entry in vary:
+                name, sep, spec = str(entry).partition("=")
+                if not sep or not name.strip() or not spec.strip():
+                    raise CaseError("vary", entry, "NAME=VALUES, e.g. speed_rpm=500:12000:240",
+                                    "each --vary names one parameter and its values")
+                items.append((name.strip(), spec.strip()))
+        if not items:
+            raise CaseError("vary", [], "at least one parameter", "a sweep needs something to vary")
+        parameters = []
+        seen: dict[str, str] = {}
+        for name, spec in items:
+            key = resolve_key(name)
+            if key in seen:
+                raise CaseError("vary", name, "each case key once", f"'{seen[key]}' already sets {key}")
+            seen[key] = name
+            values = parse_values(spec, name=f"vary.{name}")
+            if key != FLANK_OFFSET_KEY and _is_integer_field(_field_annotation(key)):
+                if np.any(values != np.round(values)):
+                    raise CaseError(f"vary.{name}", spec, "whole numbers", f"{key} is an integer")
+                typed = tuple(int(v) for v in values)
+            else:
+                typed = tuple(float(v) for v in values)
+            parameters.append(Parameter(name=name, key=key, values=typed))
+        chunk = DEFAULT_CHUNK_POINTS if chunk_points is None else int(chunk_points)
+        if chunk < 1:
+            raise CaseError("chunk_points", chunk_points, ">= 1", "a chunk holds at least one point")
+        flank = None
+        if any(p.key == FLANK_OFFSET_KEY for p in parameters):
+            flank = _flank_table_of(case)
+        study = cls(case=case, parameters=tuple(parameters), models=models, chunk_points=chunk,
+                    fixed_changes=_fixed_changes(case, parameters), _flank_table=flank)
+        study.check_values()
+        return study
+
+    @classmethod
+    def from_description(cls, case, description: dict[str, Any]) -> "Study":
+        """The study written in a store's attributes by :meth:`describe` (for ``--resume``)."""
+        vary = {p["name"]: list(p["values"]) for p in description["parameters"]}
+        models = tuple(description["models"])
+        model = "both" if len(models) == 2 else models[0]
+        study = cls.define(case, vary, model=model, chunk_points=description["chunk_points"])
+        return study
+
+    def check_values(self) -> None:
+        """Build the case of every value of every parameter alone (others at the case's values); a bad one raises
+        CaseError naming the parameter and value."""
+        for parameter in self.parameters:
+            for value in parameter.values:
+                try:
+                    self.case.with_changes(**self._changes_for(((parameter, value),)))
+                except CaseError as error:
+                    raise CaseError(f"vary.{parameter.name}", value, error.allowed,
+                                    f"{error.key}: {error.reason}") from None
+
+    # ------------------------------------------------------------------------------ the grid
+    @property
+    def dims(self) -> tuple[str, ...]:
+        return tuple(p.name for p in self.parameters)
+
+    @property
+    def shape(self) -> tuple[int, ...]:
+        return tuple(p.size for p in self.parameters)
+
+    @property
+    def size(self) -> int:
+        """Number of grid points (each runs every model)."""
+        return int(np.prod(self.shape))
+
+    @property
+    def chunk_shape(self) -> tuple[int, ...]:
+        return _chunk_shape(self.shape, self.chunk_points)
+
+    @property
+    def block_grid(self) -> tuple[int, ...]:
+        """Number of chunks along each dimension."""
+        return tuple(-(-size // chunk) for size, chunk in zip(self.shape, self.chunk_shape))
+
+    def blocks(self) -> list[Block]:
+        """Every chunk of the grid, in C order (the block number is the flat index in that order)."""
+        chunk = self.chunk_shape
+        result = []
+        for number, index in enumerate(itertools.product(*(range(n) for n in self.block_grid))):
+            slices = tuple(slice(i * c, min((i + 1) * c, size)) for i, c, size in zip(index, chunk, self.shape))
+            result.append(Block(index=index, number=number, slices=slices))
+        return result
+
+    def block_values(self, block: Block) -> list[tuple[float | int, ...]]:
+        """Parameter values of every point of a block, in C order of the block."""
+        axes = [p.values[s] for p, s in zip(self.parameters, block.slices)]
+        return list(itertools.product(*axes))
+
+    # ------------------------------------------------------------------------------ cases of points
+    def _changes_for(self, pairs) -> dict[str, Any]:
+        changes: dict[str, Any] = dict(self.fixed_changes)
+        for parameter, value in pairs:
+            if parameter.key == FLANK_OFFSET_KEY:
+                table = self._flank_table if self._flank_table is not None else _flank_table_of(self.case)
+                changes["temperature.flank_c"] = [t + float(value) for t in table]
+                continue
+            changes.update(COMPANION_CHANGES.get(parameter.key, {}))
+            changes[parameter.key] = value
+        return changes
+
+    def changes(self, values: tuple[float | int, ...]) -> dict[str, Any]:
+        """Dotted-key changes of the case for one point's parameter values (grid order)."""
+        return self._changes_for(zip(self.parameters, values))
+
+    def case_at(self, values: tuple[float | int, ...]):
+        """The validated case of one point."""
+        return self.case.with_changes(**self.changes(values))
+
+    # ------------------------------------------------------------------------------ identity
+    def describe(self) -> dict[str, Any]:
+        """JSON-ready definition (stored in the result attributes; resume checks it)."""
+        return {
+            "parameters": [{"name": p.name, "key": p.key, "values": list(p.values)} for p in self.parameters],
+            "models": list(self.models),
+            "chunk_points": self.chunk_points,
+            "fixed_changes": {key: value for key, value in self.fixed_changes},
+            "case_document_sha256": case_fingerprint(self.case),
+        }
+
+
+def _fixed_changes(case, parameters) -> tuple[tuple[str, Any], ...]:
+    """Changes applied to every point. A speed sweep runs at constant torque: a case whose load is a power is
+    turned into the torque of that power at the case's speed (sweeping speed at constant power would change the
+    load with speed; vary ``power_kw`` together with the speed to study that)."""
+    keys = {p.key for p in parameters}
+    load_keys = {"operating.torque_nm", "operating.power_kw", "operating.fzg_load_stage"}
+    operating = case.document.get("operating", {})
+    if "operating.speed_rpm" in keys and not keys & load_keys and operating.get("power_kw") is not None:
+        return (("operating.power_kw", None), ("operating.torque_nm", float(case.operating_point.torque)))
+    return ()
+
+
+def case_fingerprint(case) -> str:
+    """SHA-256 of the case document (sorted JSON): two runs of one study must start from the same case."""
+    text = json.dumps(case.document, sort_keys=True, default=str)
+    return hashlib.sha256(text.encode("utf-8")).hexdigest()
+
+
+def _flank_table_of(case) -> tuple[float, ...]:
+    section = case.temperature
+    if section.model != "tabulated" or section.flank_c is None:
+        raise CaseError("vary.flank_temperature_offset_c", section.model,
+                        "a case with temperature.model = 'tabulated' and flank_c given inline",
+                        "the offset shifts the tabulated flank temperatures; for a uniform temperature vary "
+                        "bulk_temperature_c")
+    return tuple(float(t) for t in section.flank_c)
+
+
+# ----------------------------------------------------------------------------------------- case files
+def load_study_case(name_or_path: str | Path):
+    """Load a case and its optional ``[sweep]`` table: returns ``(case, sweep_section or None)``.
+
+    The ``[sweep]`` table is taken out of the document before the case is validated, so the case of every point
+    is the case without its study (and a case file with a [sweep] table loads the same as one without).
+    """
+    from thermogear.case import case_from_document, load_case
+
+    path = Path(str(name_or_path))
+    if not (path.suffix == ".toml" and path.is_file()):
+        return load_case(name_or_path), None
+    try:
+        document = tomllib.loads(path.read_text(encoding="utf-8"))
+    except tomllib.TOMLDecodeError as error:
+        raise CaseError("case", str(path), "valid TOML", f"the file cannot be parsed: {error}") from None
+    raw = document.pop("sweep", None)
+    case = case_from_document(document, source=str(path))
+    if raw is None:
+        return case, None
+    from thermogear.schema.sweep import SweepSection
+
+    try:
+        section = SweepSection.model_validate(raw)
+    except pydantic.ValidationError as error:
+        first = error.errors(include_url=False)[0]
+        location = ".".join(str(part) for part in first["loc"])
+        raise CaseError(f"sweep.{location}" if location else "sweep", first.get("input"), "see docs/sweeps.md",
+                        first["msg"]) from None
+    return case, section
