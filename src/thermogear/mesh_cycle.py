@@ -84,6 +84,7 @@ class MeshCycle:
         (taken modulo the period)."""
         times = np.atleast_1d(np.asarray(times, dtype=float))
         phase = np.mod(times, self.period)
+        phase[phase > self.period * (1.0 - 1e-12)] = 0.0  # whole periods land on 0, not on T − ε
         points = self.gear_pair.path_points
         base_pitch = self.gear_pair.base_pitch
         roll = (points["A"] + self.contact_speed * phase)[None, :] + base_pitch * np.arange(self.slots)[:, None]
