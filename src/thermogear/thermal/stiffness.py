@@ -62,7 +62,8 @@ def thermal_stiffness_of_pair(normal_load, elastic_stiffness, expansion_sum, x_t
     check_x_te(x_te)
     load = _check_load(normal_load)
     stiffness = np.asarray(elastic_stiffness, dtype=float)
-    return load * stiffness / (load + x_te * stiffness * np.asarray(expansion_sum, dtype=float))
+    # Same as F k/(F + X k ΣΔ), written so that X_te = 0 returns k_e bit for bit.
+    return stiffness / (1.0 + x_te * stiffness * np.asarray(expansion_sum, dtype=float) / load)
 
 
 def thermal_stiffness_of_tooth(normal_load, tooth_stiffness, elastic_stiffness, expansion_sum, own_expansion, x_te):
@@ -72,8 +73,8 @@ def thermal_stiffness_of_tooth(normal_load, tooth_stiffness, elastic_stiffness, 
     check_x_te(x_te)
     load = _check_load(normal_load)
     tooth = np.asarray(tooth_stiffness, dtype=float)
-    return load * tooth / (load + (1.0 + x_te) * np.asarray(elastic_stiffness) * np.asarray(expansion_sum)
-                           - tooth * np.asarray(own_expansion))
+    return tooth / (1.0 + ((1.0 + x_te) * np.asarray(elastic_stiffness) * np.asarray(expansion_sum)
+                           - tooth * np.asarray(own_expansion)) / load)
 
 
 @dataclass(frozen=True)
@@ -120,7 +121,7 @@ class ThermalPairStiffness:
 
 
 def thermal_pair_stiffness(elastic_compliance_1, elastic_compliance_2, expansion_1, expansion_2, normal_load,
-                           x_te) -> ThermalPairStiffness:
+                           x_te, elastic_compliance=None) -> ThermalPairStiffness:
     """Pair and single-tooth thermal compliance (Luo & Li 2020 Eqs. 13–23), in compliance form:
 
         δ = δ1 + δ2,  δ_Tp = (Δ_t1 + Δ_t2)/F_n,  δ_Tpi = Δ_ti/F_n                          (Eq. 20, 23)
@@ -129,7 +130,8 @@ def thermal_pair_stiffness(elastic_compliance_1, elastic_compliance_2, expansion
 
     ``elastic_compliance_1/2`` δ1, δ2 [m/N] (each tooth with half the Hertz compliance, δ1 + δ2 = 1/k_e);
     ``expansion_1/2`` Δ_t1, Δ_t2 [m] (positive = interference); ``normal_load`` F_n [N]; ``x_te`` [–].
-    Arrays broadcast. Warns (ModelAssumptionWarning) where a single-tooth compliance is ≤ 0 (the expansion of
+    ``elastic_compliance``: the pair's δ as computed by the elastic model, if at hand (equal to δ1 + δ2 up to
+    rounding; passing it makes X_te = 0 return that model's k_e bit for bit). Arrays broadcast. Warns (ModelAssumptionWarning) where a single-tooth compliance is ≤ 0 (the expansion of
     that flank exceeds its elastic share: Eq. 23 then has no physical single-tooth meaning).
     """
     check_x_te(x_te)
@@ -140,7 +142,9 @@ def thermal_pair_stiffness(elastic_compliance_1, elastic_compliance_2, expansion
         raise CaseError("elastic_compliance", None, "> 0 and finite", "tooth compliances must be positive")
     expansion_1 = np.asarray(expansion_1, dtype=float)
     expansion_2 = np.asarray(expansion_2, dtype=float)
-    total = pinion + wheel
+    total = pinion + wheel if elastic_compliance is None else np.asarray(elastic_compliance, dtype=float)
+    if elastic_compliance is not None and not np.allclose(total, pinion + wheel, rtol=1e-12, atol=0.0):
+        raise ValueError("thermal_pair_stiffness: elastic_compliance differs from δ1 + δ2")
     expansion_compliance = (expansion_1 + expansion_2) / load
     compliance = total + x_te * expansion_compliance
     if np.any(compliance <= 0.0):
@@ -205,7 +209,7 @@ class ThermalStiffness:
     def __post_init__(self) -> None:
         object.__setattr__(self, "result", thermal_pair_stiffness(
             self.elastic.pinion_total, self.elastic.wheel_total, self.expansion_pinion, self.expansion_wheel,
-            self.normal_load, self.x_te))
+            self.normal_load, self.x_te, elastic_compliance=self.elastic.total))
 
     @property
     def stiffness(self) -> np.ndarray:

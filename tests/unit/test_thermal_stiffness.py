@@ -1,0 +1,163 @@
+"""Thermal stiffness (Luo & Li Eqs. 13–23): identities on synthetic compliances, X_te resolution, wiring."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from thermogear.errors import CaseError, ModelAssumptionWarning, ThermogearError
+from thermogear.thermal import calibration as calibration_module
+from thermogear.thermal.calibration import calibrate_x_te, resolve_x_te, x_te_for_drop
+from thermogear.thermal.stiffness import (pair_share_normal_load, thermal_pair_stiffness,
+                                          thermal_pair_stiffness_at, thermal_stiffness, thermal_stiffness_of_pair,
+                                          thermal_stiffness_of_tooth)
+from thermogear.thermal.summary import crossing_gammas
+
+# Synthetic per-tooth compliances of a pair along the path (totals, m/N) and expansions (m): orders of magnitude
+# of the luo2019 pair (δ ≈ 4e-9 m/N, Δ ≈ 5–15 μm, F_n ≈ 1e4 N).
+PINION = np.array([1.2e-9, 1.5e-9, 1.9e-9, 2.4e-9, 3.4e-9])
+WHEEL = np.array([3.1e-9, 2.2e-9, 1.7e-9, 1.4e-9, 1.1e-9])
+EXPANSION_1 = np.array([6e-6, 9e-6, 10e-6, 11e-6, 14e-6])
+EXPANSION_2 = np.array([17e-6, 14e-6, 12.5e-6, 12e-6, 9e-6])
+LOAD = 1.0e4
+
+
+def test_zero_x_te_gives_the_elastic_stiffness_exactly():
+    result = thermal_pair_stiffness(PINION, WHEEL, EXPANSION_1, EXPANSION_2, LOAD, 0.0)
+    np.testing.assert_array_equal(result.stiffness, 1.0 / (PINION + WHEEL))
+    np.testing.assert_array_equal(result.stiffness, result.elastic_stiffness)
+    np.testing.assert_array_equal(thermal_stiffness_of_pair(LOAD, 1.0 / (PINION + WHEEL), EXPANSION_1 + EXPANSION_2,
+                                                            0.0), 1.0 / (PINION + WHEEL))
+
+
+@pytest.mark.parametrize("x_te", [0.0, 0.2166, 1.0, 3.0])
+def test_eq17_is_the_series_of_eq16_for_both_teeth(x_te):
+    stiffness = 1.0 / (PINION + WHEEL)
+    total = EXPANSION_1 + EXPANSION_2
+    tooth_1 = thermal_stiffness_of_tooth(LOAD, 1.0 / PINION, stiffness, total, EXPANSION_1, x_te)
+    tooth_2 = thermal_stiffness_of_tooth(LOAD, 1.0 / WHEEL, stiffness, total, EXPANSION_2, x_te)
+    pair = thermal_stiffness_of_pair(LOAD, stiffness, total, x_te)
+    np.testing.assert_allclose(tooth_1 * tooth_2 / (tooth_1 + tooth_2), pair, rtol=1e-12)
+    # ... and the compliance form (Eqs. 20–23) is the same thing.
+    result = thermal_pair_stiffness(PINION, WHEEL, EXPANSION_1, EXPANSION_2, LOAD, x_te)
+    np.testing.assert_allclose(result.stiffness, pair, rtol=1e-12)
+    np.testing.assert_allclose(result.pinion_stiffness, tooth_1, rtol=1e-12)
+    np.testing.assert_allclose(result.wheel_stiffness, tooth_2, rtol=1e-12)
+    np.testing.assert_allclose(result.pinion_compliance + result.wheel_compliance, result.compliance, rtol=1e-12)
+    np.testing.assert_allclose(result["δ_Tp"], total / LOAD, rtol=1e-15)
+
+
+def test_eq21_compliance_grows_by_x_te_delta_tp():
+    # Eqs. 19–21 by hand at one point: δ_T − δ = X_te (Δ_t1 + Δ_t2)/F_n.
+    result = thermal_pair_stiffness(2e-9, 2e-9, 10e-6, 12e-6, 1e4, 0.25)
+    assert float(result.compliance - 4e-9) == pytest.approx(0.25 * 22e-6 / 1e4, rel=1e-12)
+    # Eq. 23 by hand: δ_T1 = δ1 + (δ1/δ)(1 + X) δ_Tp − Δ1/F = 2e-9 + 0.5·1.25·2.2e-9 − 1e-9
+    assert float(result.pinion_compliance) == pytest.approx(2e-9 + 0.5 * 1.25 * 2.2e-9 - 1e-9, rel=1e-12)
+
+
+def test_eq18_ratio_is_independent_of_the_face_width_convention():
+    # Totals (k = b k′, F = b F′) and per-unit-width values give the same k_T/k_e (Δ does not scale with b).
+    width = 0.025
+    ratio_total = thermal_stiffness_of_pair(LOAD, 1.0 / (PINION + WHEEL), EXPANSION_1 + EXPANSION_2, 0.3) * (
+        PINION + WHEEL)
+    ratio_per_width = thermal_stiffness_of_pair(LOAD / width, 1.0 / ((PINION + WHEEL) * width),
+                                                EXPANSION_1 + EXPANSION_2, 0.3) * (PINION + WHEEL) * width
+    np.testing.assert_allclose(ratio_total, ratio_per_width, rtol=1e-13)
+
+
+def test_heat_softens_the_pair_for_positive_x_te():
+    result = thermal_pair_stiffness(PINION, WHEEL, EXPANSION_1, EXPANSION_2, LOAD, 0.2)
+    assert np.all(result.stiffness < result.elastic_stiffness)
+
+
+@pytest.mark.parametrize("x_te", [-0.1, np.nan])
+def test_bad_x_te_is_refused(x_te):
+    with pytest.raises(CaseError, match="thermal.x_te"):
+        thermal_pair_stiffness(PINION, WHEEL, EXPANSION_1, EXPANSION_2, LOAD, x_te)
+
+
+def test_bad_load_is_refused():
+    with pytest.raises(CaseError, match="normal_load"):
+        thermal_pair_stiffness(PINION, WHEEL, EXPANSION_1, EXPANSION_2, 0.0, 0.2)
+
+
+def test_non_physical_single_tooth_compliance_is_reported():
+    with pytest.warns(ModelAssumptionWarning, match="δ_Ti"):
+        thermal_pair_stiffness(1e-9, 3e-9, 40e-6, 0.0, 1e4, 0.0)  # Δ1/F = 4e-9 > δ1 + its share
+
+
+def test_x_te_for_drop_round_trip():
+    stiffness = 1.0 / (PINION + WHEEL)
+    x_te = x_te_for_drop(14.52, LOAD, stiffness[2], EXPANSION_1[2] + EXPANSION_2[2])
+    ratio = thermal_stiffness_of_pair(LOAD, stiffness[2], EXPANSION_1[2] + EXPANSION_2[2], x_te) / stiffness[2]
+    assert 100.0 * (1.0 - ratio) == pytest.approx(14.52, rel=1e-12)
+    with pytest.raises(CaseError, match="no X_te"):
+        x_te_for_drop(10.0, LOAD, stiffness[2], 0.0)
+
+
+def test_pair_share_loads():
+    # Two pairs of equal stiffness share equally; a pair alone carries the whole load.
+    def constant(roll):
+        return np.full(np.shape(roll), 2.0e8)
+
+    roll = np.array([0.0, 0.8, 1.0])  # path [0, 1.6], base pitch 1: the middle point is single contact
+    load = pair_share_normal_load(100.0, roll, constant(roll), constant, 0.0, 1.6, 1.0)
+    np.testing.assert_allclose(load, [50.0, 100.0, 50.0])
+
+
+def test_crossings_are_located():
+    gamma = np.linspace(-0.5, 0.5, 101)
+    assert crossing_gammas(gamma, np.zeros_like(gamma), gamma - 0.123) == [pytest.approx(0.123, abs=1e-12)]
+    assert crossing_gammas(gamma, np.zeros_like(gamma), gamma**2 + 0.1) == []
+
+
+# ------------------------------------------------------------------------------------------------- cases
+def test_case_with_zero_x_te_equals_the_elastic_pair(luo2019):
+    from thermogear.stiffness.potential_energy import pair_compliance
+
+    roll = luo2019.gear_pair.roll_grid(21)
+    result = thermal_stiffness(luo2019, roll, x_te=0.0)
+    np.testing.assert_array_equal(result.stiffness, pair_compliance(luo2019.gear_pair, luo2019.material,
+                                                                    roll).stiffness)
+
+
+def test_dynamics_entry_matches_the_direct_evaluation(luo2019):
+    pair = luo2019.gear_pair
+    roll = np.linspace(pair.path_points["A"], pair.path_points["E"], 17)
+    direct = thermal_stiffness(luo2019, roll).stiffness
+    # The dynamics entry interpolates the cached PEM table (cubic spline, < 1e-6 relative).
+    np.testing.assert_allclose(thermal_pair_stiffness_at(luo2019, roll), direct, rtol=1e-5)
+    outside = thermal_pair_stiffness_at(luo2019, np.array([pair.path_points["A"] - 1e-3, pair.path_points["E"] + 1e-3]))
+    np.testing.assert_array_equal(outside, 0.0)
+
+
+def test_resolve_given(luo2019):
+    case = luo2019.with_changes(thermal={"x_te_source": "given", "x_te": 0.3})
+    assert resolve_x_te(case) == (0.3, "given")
+    with pytest.raises(CaseError, match="needs thermal.x_te"):
+        resolve_x_te(luo2019.with_changes(thermal={"x_te_source": "given"}))
+
+
+def test_resolve_calibrated_is_labelled_as_a_calibration(luo2019):
+    value, label = resolve_x_te(luo2019)
+    assert label.startswith("calibrated: X_te=") and "14.52 % drop at C" in label
+    assert value == pytest.approx(calibrate_x_te(luo2019).x_te, rel=1e-15)
+    with pytest.raises(CaseError, match="either given or calibrated"):
+        resolve_x_te(luo2019.with_changes(thermal=dict(luo2019.document["thermal"], x_te=0.2)))
+
+
+def test_resolve_fem_without_provider(luo2019, monkeypatch):
+    monkeypatch.setattr(calibration_module, "_PROVIDERS", {})
+    with pytest.raises(ThermogearError, match="not available"):
+        resolve_x_te(luo2019.with_changes(thermal={"x_te_source": "fem"}))
+    calibration_module.register_x_te_provider("fem", lambda case: 0.4)
+    assert resolve_x_te(luo2019.with_changes(thermal={"x_te_source": "fem"})) == (0.4, "fem")
+    calibration_module.register_x_te_provider("fem", lambda case: -0.4)
+    with pytest.raises(CaseError, match=">= 0"):
+        resolve_x_te(luo2019.with_changes(thermal={"x_te_source": "fem"}))
+
+
+def test_calibration_at_another_point(luo2019):
+    calibration = calibrate_x_te(luo2019, drop_percent=10.0, point="A")
+    result = thermal_stiffness(luo2019, np.array([luo2019.gear_pair.path_points["A"]]), x_te=calibration.x_te)
+    assert float(result.drop_percent[0]) == pytest.approx(10.0, rel=1e-9)
