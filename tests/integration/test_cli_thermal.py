@@ -1,0 +1,95 @@
+"""`thermogear stiffness CASE --thermal`: the `thermal` JSON object, the Fig. 4 plot, bad input → exit 2."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from thermogear.case import parameter_set_path
+
+
+def run(*arguments: str, cwd: Path | None = None) -> subprocess.CompletedProcess:
+    return subprocess.run([sys.executable, "-m", "thermogear", *arguments], capture_output=True, text=True,
+                          timeout=120, cwd=cwd)
+
+
+@pytest.fixture(scope="module")
+def thermal_run(tmp_path_factory):
+    folder = tmp_path_factory.mktemp("thermal")
+    plot = folder / "fig4.png"
+    result = run("stiffness", "luo2019", "--thermal", "--json", "--plot", str(plot))
+    assert result.returncode == 0, result.stderr
+    return json.loads(result.stdout)["thermal"], plot
+
+
+def test_thermal_object_has_the_documented_keys(thermal_run):
+    thermal, _ = thermal_run
+    assert {"x_te", "x_te_source", "stiffness_drop_percent", "single_tooth_compliance_change_percent",
+            "single_tooth_crossing_gamma"} <= set(thermal)
+    assert {"A", "C", "E"} <= set(thermal["stiffness_drop_percent"])
+    assert set(thermal["single_tooth_compliance_change_percent"]) == {"driving_tip", "driving_root", "driven_tip",
+                                                                      "driven_root"}
+    assert set(thermal["single_tooth_crossing_gamma"]) == {"driving", "driven"}
+    assert thermal["x_te_source"].startswith("calibrated") and isinstance(thermal["x_te"], float)
+    assert thermal["stiffness_drop_percent"]["C"] == pytest.approx(14.52, abs=1e-6)
+    crossing = thermal["single_tooth_crossing_gamma"]
+    assert all(value is None or isinstance(value, float) for value in crossing.values())
+    # per-width view: k_e at C of the order of 13–14 N/(mm·μm) (physics.md §3.4: 13.45)
+    assert 12.0 < thermal["points"]["C"]["elastic_stiffness_n_per_mm_um"] < 15.0
+
+
+def test_plot_is_written(thermal_run):
+    _, plot = thermal_run
+    assert plot.is_file() and plot.stat().st_size > 10_000
+    assert plot.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    assert not list(plot.parent.glob(".fig4.*"))  # no temporary left behind
+
+
+def _case_file(tmp_path: Path, temperature: str, thermal: str | None = None) -> Path:
+    text = parameter_set_path("luo2019").read_text(encoding="utf-8")
+    head, rest = text.split("[temperature]", 1)
+    tail = rest.split("[damping]", 1)[1]
+    thermal = thermal or 'x_te_source = "calibrated"\ncalibration_drop_percent = 14.52\n'
+    path = tmp_path / "case.toml"
+    path.write_text(head + "[temperature]\n" + temperature + "\n[thermal]\n" + thermal + "\n[damping]" + tail,
+                    encoding="utf-8")
+    return path
+
+
+BODY = "pinion_base_c = 76.0\npinion_bore_c = 72.0\nwheel_base_c = 76.0\nwheel_bore_c = 72.0\n"
+
+
+@pytest.mark.parametrize("temperature, thermal, words", [
+    ('model = "tabulated"\ngamma = [-0.6, 0.0, 0.0, 0.6]\nflank_c = [81, 77, 77, 80]\nfit_degree = 2\n' + BODY,
+     None, "temperature.gamma"),
+    ('model = "tabulated"\ngamma = [-0.6, 0.3, 0.0, 0.6]\nflank_c = [81, 77, 77, 80]\nfit_degree = 2\n' + BODY,
+     None, "strictly increasing"),
+    ('model = "tabulated"\ngamma = [-0.6, 0.0, 0.6]\nflank_c = [81, 77, 80]\nfit_degree = 3\n' + BODY,
+     None, "temperature.fit_degree"),
+    ('model = "tabulated"\ngamma = [-0.3, 0.0, 0.3]\nflank_c = [81, 77, 80]\nfit_degree = 2\n' + BODY,
+     None, "does not span the path"),
+    ('model = "uniform"\nbulk_c = 10.0\n', None, "below the stress-free reference"),
+    ('model = "uniform"\nbulk_c = 250.0\n', None, "material data"),
+    ('model = "uniform"\nbulk_c = 70.0\n', 'x_te_source = "given"\nx_te = -0.5\n', "thermal.x_te"),
+    ('model = "uniform"\nbulk_c = 70.0\n', 'x_te_source = "given"\n', "needs thermal.x_te"),
+    ('model = "fem"\n', None, "not available"),
+])
+def test_bad_input_exits_2_with_one_clear_line(tmp_path, temperature, thermal, words):
+    path = _case_file(tmp_path, temperature, thermal)
+    result = run("stiffness", str(path), "--thermal", "--json")
+    assert result.returncode == 2, (result.stdout[-500:], result.stderr)
+    message = " ".join(result.stderr.split())  # the console wraps long lines
+    assert words in message and "Traceback" not in message
+
+
+def test_csv_table_relative_to_the_case_file(tmp_path):
+    (tmp_path / "flank.csv").write_text("gamma,flank_c\n-0.6,81\n-0.3,78.6\n0.0,77\n0.3,78.2\n0.6,80.6\n")
+    path = _case_file(tmp_path, 'model = "tabulated"\ncsv = "flank.csv"\nfit_degree = 4\n' + BODY)
+    result = run("stiffness", str(path), "--thermal", "--json", cwd=Path("/"))
+    assert result.returncode == 0, result.stderr
+    thermal = json.loads(result.stdout)["thermal"]
+    assert thermal["temperature"]["source"] == "tabulated (csv)"
