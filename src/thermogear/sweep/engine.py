@@ -1,0 +1,137 @@
+"""Running a study on Dask: a local cluster by default, a ``dask.distributed`` scheduler by address, one path.
+
+Every block (chunk) of the study is one task. The driver submits the blocks that the store has not marked done,
+writes each result into the store as soon as it arrives (data first, then the block's marker) and shows a
+progress bar. The tasks are pure functions of (study, block), so where they run does not change a bit of the
+result: a local cluster, a remote scheduler and an in-process loop give the same dataset.
+
+Schedulers (``scheduler`` argument, ``--scheduler`` on the command line):
+
+* ``None`` / ``"local"``: a ``distributed.LocalCluster`` of worker processes (one thread each, all cores by
+  default), started and closed by :func:`run_study`;
+* ``"tcp://host:port"`` (any address a ``distributed.Client`` accepts): an existing scheduler and its workers;
+* ``"serial"``: no Dask, a plain loop in this process (debugging; the baseline of the benchmarks).
+"""
+
+from __future__ import annotations
+
+import os
+import warnings
+from contextlib import ExitStack
+from pathlib import Path
+from typing import Any, Callable
+
+from thermogear.errors import CaseError
+from thermogear.sweep.batch import evaluate_block
+from thermogear.sweep.store import ResultStore
+
+__all__ = ["StudyRun", "compute_block", "run_study"]
+
+METHODS = ("batch", "simulation")
+
+
+def compute_block(study, block, method: str = "batch"):
+    """One task: the arrays of a block and the warnings raised computing it (run on a worker)."""
+    return evaluate_block(study, block, method)
+
+
+class StudyRun:
+    """What a finished :func:`run_study` returns: the dataset, the warnings, and how much was computed."""
+
+    def __init__(self, dataset, messages: list[str], computed: int, skipped: int, path: Path) -> None:
+        self.dataset = dataset
+        self.messages = messages
+        self.computed = computed
+        self.skipped = skipped
+        self.path = path
+
+
+def _progress(enabled: bool, total: int, completed: int):
+    from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn, \
+        TimeRemainingColumn
+
+    from thermogear.cli.app import error_console
+
+    progress = Progress(TextColumn("[bold]sweep[/]"), BarColumn(), MofNCompleteColumn(), TextColumn("chunks"),
+                        TimeElapsedColumn(), TimeRemainingColumn(), console=error_console, disable=not enabled,
+                        transient=False)
+    task = progress.add_task("sweep", total=total, completed=completed)
+    return progress, task
+
+
+def run_study(study, out: str | Path, scheduler: str | None = None, resume: bool = False, overwrite: bool = False,
+              workers: int | None = None, method: str = "batch", progress: bool = True,
+              on_block: Callable[[int], Any] | None = None) -> StudyRun:
+    """Compute a study into the zarr store ``out`` and return the dataset.
+
+    ``resume``: continue the study stored at ``out`` (finished blocks are kept and not recomputed).
+    ``workers``: processes of the local cluster (default: all cores). ``method``: ``"batch"`` (fast path) or
+    ``"simulation"`` (one Simulation per point). ``on_block(number)`` is called after each block is stored.
+    """
+    if method not in METHODS:
+        raise CaseError("method", method, " | ".join(METHODS), "unknown evaluation method")
+    store = ResultStore.resume(out, study) if resume else ResultStore.create(out, study, overwrite=overwrite)
+    blocks = study.blocks()
+    done = store.done_blocks()
+    pending = [block for block in blocks if block.number not in done]
+    messages: list[str] = []
+
+    def finish(block, arrays, block_messages) -> None:
+        store.write_block(block, arrays)
+        for text in block_messages:
+            if text not in messages:
+                messages.append(text)
+        if on_block is not None:
+            on_block(block.number)
+
+    bar, task = _progress(progress, len(blocks), len(done))
+    with ExitStack() as stack:
+        stack.enter_context(bar)
+        if pending and scheduler == "serial":
+            for block in pending:
+                finish(block, *compute_block(study, block, method))
+                bar.advance(task)
+        elif pending:
+            client = stack.enter_context(_client(scheduler, workers))
+            from distributed import as_completed
+
+            shared = client.scatter(study, broadcast=True, hash=False)
+            futures = {client.submit(compute_block, shared, block, method, pure=False): block for block in pending}
+            try:
+                for future in as_completed(futures):
+                    finish(futures[future], *future.result())
+                    bar.advance(task)
+            finally:
+                client.cancel(list(futures))
+    return StudyRun(store.dataset(), messages, computed=len(pending), skipped=len(done), path=Path(out))
+
+
+def _client(scheduler: str | None, workers: int | None):
+    """A distributed Client: on a new LocalCluster (closed with the client) or on a scheduler address."""
+    from distributed import Client, LocalCluster
+
+    if scheduler in (None, "", "local"):
+        count = workers or os.cpu_count() or 1
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            cluster = LocalCluster(n_workers=count, threads_per_worker=1, processes=True, dashboard_address=None)
+        return _OwnedClient(Client(cluster), cluster)
+    if workers is not None:
+        raise CaseError("workers", workers, "only with the local cluster",
+                        "a remote scheduler has its own workers")
+    return Client(scheduler, timeout="30s")
+
+
+class _OwnedClient:
+    """Context manager closing a client and the local cluster it was started on."""
+
+    def __init__(self, client, cluster) -> None:
+        self.client = client
+        self.cluster = cluster
+
+    def __enter__(self):
+        return self.client
+
+    def __exit__(self, *exc) -> None:
+        self.client.close()
+        self.cluster.close()

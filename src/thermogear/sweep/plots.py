@@ -1,0 +1,156 @@
+"""Plots of a study: responses against speed (elastic and thermal on one axes), resonance orders, 2-D maps.
+
+A resonance of the mesh (parametrically excited by k(τ) at the mesh frequency f_m = z1·n1/60) is expected where a
+harmonic of the mesh frequency meets the natural frequency, j·f_m = f_n, i.e. at the pinion speed
+n_j = 60·f_n/(z1·j) (order j = 1 main resonance, j = 2, 3 … super-harmonic ones). The speed plots mark these
+speeds for each model (the thermal model's are lower: k_T < k_e lowers f_n) and label the peaks found.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+__all__ = ["QUANTITY_LABELS", "plot_map", "plot_speed_response", "resonance_peaks", "resonance_speeds"]
+
+#: Axis labels and display scale of the plotted quantities.
+QUANTITY_LABELS: dict[str, tuple[str, float]] = {
+    "kv": ("Kv [–]", 1.0),
+    "dte_rms": ("RMS DTE [μm]", 1e6),
+    "dte_peak_to_peak": ("peak-to-peak DTE [μm]", 1e6),
+    "max_system_load_ratio": ("max dynamic load / static load [–]", 1.0),
+    "max_pair_load": ("max pair dynamic load [N]", 1.0),
+    "dte_mean": ("mean DTE [μm]", 1e6),
+    "max_velocity": ("max |dx/dt| [m/s]", 1.0),
+    "floquet_multiplier_max": ("largest Floquet multiplier [–]", 1.0),
+}
+_MODEL_STYLE = {"elastic": {"color": "tab:blue", "linestyle": "-"},
+                "thermal": {"color": "tab:red", "linestyle": "--"}}
+SPEED = "speed_rpm"
+
+
+def _select(dataset, select: dict[str, Any] | None, keep: tuple[str, ...]):
+    """Pick one value of every dimension other than ``keep`` and ``model`` (given, or the first one)."""
+    chosen: dict[str, Any] = dict(select or {})
+    for dim in dataset.dims:
+        if dim not in keep and dim not in ("model", "chunk") and dim not in chosen:
+            chosen[dim] = dataset[dim].values[0]
+    picked = dataset.sel(chosen) if chosen else dataset
+    return picked, chosen
+
+
+def _pinion_teeth(dataset) -> float:
+    ratio = dataset["mesh_frequency_hz"] / dataset[SPEED] * 60.0
+    return float(np.nanmedian(np.asarray(ratio)))
+
+
+def resonance_speeds(dataset, model: str, orders=(1, 2, 3), select: dict[str, Any] | None = None) -> dict[int, float]:
+    """Pinion speeds n_j = 60·f_n/(z1·j) [rpm] where order j of the mesh frequency meets f_n (per model)."""
+    picked, _ = _select(dataset, select, keep=(SPEED,))
+    natural = float(np.nanmedian(picked["natural_frequency_hz"].sel(model=model)))
+    teeth = _pinion_teeth(picked)
+    return {int(j): 60.0 * natural / (teeth * j) for j in orders}
+
+
+def resonance_peaks(dataset, model: str, quantity: str = "kv", select: dict[str, Any] | None = None,
+                    prominence: float = 0.05) -> list[dict[str, float]]:
+    """Local maxima of ``quantity`` against speed for one model: speed, value, and the nearest order j of the
+    mesh frequency (f_n/f_m) with the relative distance of the peak from that order's predicted speed."""
+    from scipy.signal import find_peaks
+
+    picked, _ = _select(dataset, select, keep=(SPEED,))
+    curve = picked[quantity].sel(model=model)
+    values = np.asarray(curve, dtype=float)
+    speeds = np.asarray(picked[SPEED], dtype=float)
+    finite = np.where(np.isfinite(values), values, np.nanmin(values))
+    span = float(np.nanmax(values) - np.nanmin(values)) or 1.0
+    indices, _ = find_peaks(finite, prominence=prominence * span)
+    predicted = resonance_speeds(dataset, model, orders=range(1, 11), select=select)
+    natural = float(np.nanmedian(picked["natural_frequency_hz"].sel(model=model)))
+    peaks = []
+    for index in indices:
+        mesh = float(picked["mesh_frequency_hz"].values[index])
+        order = max(int(round(natural / mesh)), 1)
+        expected = predicted.get(order, 60.0 * natural / (_pinion_teeth(picked) * order))
+        peaks.append({"speed_rpm": float(speeds[index]), "value": float(values[index]), "order": order,
+                      "predicted_speed_rpm": expected,
+                      "relative_offset": float(speeds[index] / expected - 1.0)})
+    return peaks
+
+
+def plot_speed_response(dataset, quantities=("kv", "dte_rms", "dte_peak_to_peak", "max_system_load_ratio"),
+                        select: dict[str, Any] | None = None, orders=(1, 2, 3), ax=None):
+    """Quantities against pinion speed, elastic and thermal on the same axes, resonance orders marked.
+
+    ``select`` fixes the other swept parameters (default: their first value). ``ax``: one axes per quantity (a
+    sequence) or None for a new figure. Returns the figure.
+    """
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    if SPEED not in dataset.dims:
+        raise ValueError("plot_speed_response needs a study that varies speed_rpm")
+    picked, chosen = _select(dataset, select, keep=(SPEED,))
+    quantities = tuple(quantities)
+    if ax is None:
+        figure, axes = plt.subplots(len(quantities), 1, sharex=True, figsize=(8.0, 2.4 * len(quantities) + 0.6),
+                                    squeeze=False)
+        axes = list(axes[:, 0])
+    else:
+        axes = list(np.atleast_1d(ax))
+        figure = axes[0].figure
+    speeds = np.asarray(picked[SPEED], dtype=float)
+    for axis, quantity in zip(axes, quantities):
+        label, scale = QUANTITY_LABELS.get(quantity, (quantity, 1.0))
+        for model in picked["model"].values:
+            style = _MODEL_STYLE.get(str(model), {})
+            axis.plot(speeds, np.asarray(picked[quantity].sel(model=model), dtype=float) * scale,
+                      label=str(model), **style)
+            for order, speed in resonance_speeds(dataset, str(model), orders, select=chosen).items():
+                if speeds.min() <= speed <= speeds.max():
+                    axis.axvline(speed, color=style.get("color", "grey"), linewidth=0.6, alpha=0.5, linestyle=":")
+                    axis.annotate(f"{order}·f_m = f_n", (speed, 1.0), xycoords=("data", "axes fraction"),
+                                  rotation=90, va="top", ha="right", fontsize=7, color=style.get("color", "grey"))
+        axis.set_ylabel(label)
+        axis.grid(True, alpha=0.3)
+    axes[0].legend(loc="upper left", fontsize=8)
+    axes[-1].set_xlabel("pinion speed [rpm]")
+    if chosen:
+        axes[0].set_title(", ".join(f"{k} = {v:g}" if isinstance(v, (int, float, np.number)) else f"{k} = {v}"
+                                    for k, v in chosen.items()), fontsize=9)
+    figure.tight_layout()
+    return figure
+
+
+def plot_map(dataset, quantity: str = "kv", x: str | None = None, y: str | None = None, model: str = "thermal",
+             select: dict[str, Any] | None = None, ax=None):
+    """Map of ``quantity`` over two swept parameters (default: the first two dimensions) for one model."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    dims = [d for d in dataset[quantity].dims if d != "model"]
+    x = x or (SPEED if SPEED in dims else dims[-1])
+    y = y or next(d for d in dims if d != x)
+    picked, chosen = _select(dataset, select, keep=(x, y))
+    values = picked[quantity].sel(model=model).transpose(y, x)
+    label, scale = QUANTITY_LABELS.get(quantity, (quantity, 1.0))
+    if ax is None:
+        figure, ax = plt.subplots(figsize=(7.0, 4.5))
+    else:
+        figure = ax.figure
+    mesh = ax.pcolormesh(np.asarray(picked[x]), np.asarray(picked[y]), np.asarray(values, dtype=float) * scale,
+                         shading="nearest")
+    figure.colorbar(mesh, ax=ax, label=label)
+    ax.set_xlabel(x)
+    ax.set_ylabel(y)
+    title = f"{quantity} ({model})"
+    if chosen:
+        title += " — " + ", ".join(f"{k} = {v}" for k, v in chosen.items())
+    ax.set_title(title, fontsize=9)
+    figure.tight_layout()
+    return figure
