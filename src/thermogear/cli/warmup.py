@@ -1,0 +1,109 @@
+"""`thermogear warmup CASE`: operating states of a rig warm-up (stiffness, damping, natural frequency, steady
+response per temperature), and with ``--rig-comparison`` the model beside Luo & Li (2020) Table 3 / Fig. 18."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import typer
+from rich.table import Table
+
+from thermogear.case import load_case
+from thermogear.cli.app import app, console, print_json
+from thermogear.errors import CaseError
+
+WARMUP_MODELS = ("first-order",)
+
+
+@app.command()
+def warmup(
+    case: str = typer.Argument(..., help="built-in parameter set (see `thermogear cases`) or a .toml file"),
+    temperature_history: str | None = typer.Option(
+        None, "--temperature-history",
+        help="CSV with time_s|time_min and temperature_c, or luo2019:RPM (the paper's Table 3 run)"),
+    model: str | None = typer.Option(None, "--model", help="warm-up model instead of a history: 'first-order'"),
+    start_c: float = typer.Option(20.0, "--start-c", help="first-order model: start temperature [°C]"),
+    final_c: float = typer.Option(60.0, "--final-c", help="first-order model: final temperature [°C]"),
+    time_constant_s: float = typer.Option(600.0, "--time-constant-s", help="first-order model: τ [s]"),
+    duration_s: float = typer.Option(1200.0, "--duration-s", help="first-order model: duration [s]"),
+    states: int = typer.Option(7, "--states", min=1, max=500, help="first-order model: number of states"),
+    gear_model: str = typer.Option("thermal", "--gear-model", help="'thermal' (k_T, c_r) or 'elastic' (k_e, c_e)"),
+    speed_rpm: float | None = typer.Option(None, "--speed-rpm", help="pinion speed [rpm] (default: the case's, "
+                                           "or RPM of luo2019:RPM)"),
+    dynamics: bool = typer.Option(True, "--dynamics/--no-dynamics", help="solve the steady response per state"),
+    rig_comparison: bool = typer.Option(False, "--rig-comparison",
+                                        help="instead: CASE beside the paper's Table 3 / Fig. 18 (relative shifts)"),
+    as_json: bool = typer.Option(False, "--json", help="one JSON object on stdout"),
+    plot: Path | None = typer.Option(None, "--plot", help="write the figure to this file (.png/.svg/.pdf)"),
+) -> None:
+    """Warm-up of a test rig as a sequence of steady operating states."""
+    base = load_case(case)
+    if rig_comparison:
+        _rig_comparison(base, gear_model, as_json, plot)
+        return
+    from thermogear.experiment.warmup import first_order_history, read_temperature_history, warmup as run_warmup
+
+    if (temperature_history is None) == (model is None):
+        raise CaseError("--temperature-history/--model", temperature_history or model,
+                        "exactly one of --temperature-history FILE|luo2019:RPM or --model first-order",
+                        "the warm-up needs one temperature source")
+    if model is not None:
+        if model not in WARMUP_MODELS:
+            raise CaseError("--model", model, " | ".join(WARMUP_MODELS), "unknown warm-up model")
+        history = first_order_history(start_c, final_c, time_constant_s, duration_s, states)
+    else:
+        history = read_temperature_history(temperature_history)
+        if speed_rpm is None and temperature_history.startswith("luo2019:"):
+            speed_rpm = float(temperature_history.split(":", 1)[1])
+    result = run_warmup(base, history, gear_model, speed_rpm, dynamics)
+    payload = result.as_dict()
+    if plot is not None:
+        _save(result.plot(), plot)
+        payload["plot"] = str(plot)
+    if as_json:
+        print_json(payload)
+        return
+    table = Table(title=f"warm-up of {result.case_name} at {result.speed_rpm:g} rpm ({result.model} model; "
+                        f"{result.history_source})")
+    for name in ("t [s]", "T [°C]", "k̄ [N/(mm·μm)]", "c̄ [N·s/m]", "f_n [Hz]", "f_mesh [Hz]", "Kv", "DTE rms [μm]"):
+        table.add_column(name, justify="right")
+    for state in payload["states"]:
+        response = state["response"]
+        table.add_row(f"{state['time_s']:.0f}", f"{state['temperature_c']:.1f}",
+                      f"{state['mesh_stiffness_mean_n_per_mm_um']:.3f}", f"{state['mesh_damping_mean_n_s_per_m']:.0f}",
+                      f"{state['natural_frequency_hz']:.1f}", f"{state['mesh_frequency_hz']:.1f}",
+                      "—" if response is None else f"{response['kv']:.3f}",
+                      "—" if response is None else f"{response['dte_rms_m'] * 1e6:.3f}")
+    console.print(table)
+    console.print(payload["assumption"])
+    if plot is not None:
+        console.print(f"figure written to {plot}")
+
+
+def _rig_comparison(base, gear_model: str, as_json: bool, plot: Path | None) -> None:
+    from thermogear.experiment.comparison import compare_with_rig
+
+    comparison = compare_with_rig(base, gear_model)
+    payload = comparison.as_dict()
+    if plot is not None:
+        _save(comparison.plot(), plot)
+        payload["plot"] = str(plot)
+    if as_json:
+        print_json(payload)
+        return
+    console.print(f"[bold]{comparison.case_name}[/] ({comparison.model} model) beside Luo & Li (2020) Table 3 / Fig. 18")
+    console.print(comparison.markdown(), markup=False)
+    for note in comparison.notes:
+        console.print(f"• {note}", markup=False)
+    if plot is not None:
+        console.print(f"figure written to {plot}")
+
+
+def _save(figure, path: Path) -> None:
+    import matplotlib.pyplot as plt
+
+    if path.suffix.lower() not in (".png", ".svg", ".pdf"):
+        raise CaseError("--plot", str(path), ".png, .svg or .pdf", "unknown figure format")
+    path.parent.mkdir(parents=True, exist_ok=True)
+    figure.savefig(path, dpi=130)
+    plt.close(figure)
