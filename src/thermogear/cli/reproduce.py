@@ -1,0 +1,40 @@
+"""`thermogear reproduce luo2019`: run the paper's whole chain and write the report beside the paper's numbers."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import typer
+
+from thermogear.cli.app import app, console, error_console
+from thermogear.errors import CaseError
+
+#: Papers thermogear reproduces: name → built-in parameter set.
+PAPERS = {"luo2019": "luo2019"}
+
+
+@app.command()
+def reproduce(
+    paper: str = typer.Argument(..., help="the paper to reproduce: luo2019"),
+    out: Path = typer.Option(None, "--out", help="output folder (default ./thermogear-<paper>/)"),
+    force: bool = typer.Option(False, "--force", help="replace an existing output folder"),
+    quiet: bool = typer.Option(False, "--quiet", "-q", help="no progress bar and no summary (for scripts)"),
+) -> None:
+    """Reproduce a paper: every figure, every number beside the paper's, the assumptions and the differences,
+    in one self-contained report.html (+ figures/, results.nc, summary.json)."""
+    from thermogear.case import load_case
+    from thermogear.report.build import build_report, report_steps
+    from thermogear.report.terminal import print_summary, step_progress
+
+    if paper not in PAPERS:
+        from thermogear.errors import closest_key
+
+        suggestion = closest_key(paper, list(PAPERS))
+        raise CaseError("paper", paper, ", ".join(PAPERS),
+                        "no such paper" + (f" (did you mean '{suggestion}'?)" if suggestion else ""))
+    case = load_case(PAPERS[paper])
+    target = out if out is not None else Path(f"thermogear-{paper}")
+    with step_progress(report_steps(case), error_console, quiet) as advance:
+        outcome = build_report(case, target, force=force, paper=True, progress=advance)
+    if not quiet:
+        print_summary(outcome, console)

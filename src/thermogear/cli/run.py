@@ -1,0 +1,129 @@
+"""`thermogear run CASE`: the dynamics of one case (elastic and/or thermal), as a table, JSON or a full report."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import typer
+
+from thermogear.cli.app import app, console, error_console, print_json
+from thermogear.errors import CaseError
+
+_MODELS = {"elastic": ("elastic",), "thermal": ("thermal",), "both": ("elastic", "thermal")}
+
+
+def model_json(response) -> dict:
+    """The JSON object of one model (issue 5): loads per unit width, displacements in μm, stability, messages."""
+    from thermogear.report.evaluate import model_messages
+
+    m = response.metrics
+    regions = list(m["equilibrium_per_region"])
+    return {
+        "kv": m["kv"],
+        "max_pair_load_n_per_mm": m["max_pair_load_n_per_mm"],
+        "max_system_load_n_per_mm": m["max_system_load_n_per_mm"],
+        "max_system_load_ratio": m["max_system_load_ratio"],
+        "static_load_n_per_mm": m["static_load_n_per_mm"],
+        "equilibrium_um": {region: m["equilibrium_per_region"][region] * 1e6 for region in regions},
+        "amplitude_um": {region: m["amplitude_per_region"][region] * 1e6 for region in regions},
+        "natural_frequency_hz": m["natural_frequency_hz"],
+        "mesh_frequency_hz": m["mesh_frequency_hz"],
+        "frequency_ratio": m["frequency_ratio"],
+        "floquet_multipliers_abs": m["floquet_multipliers_abs"],
+        "stable": m["stable"],
+        "contact_loss": bool(m["contact_loss"]["detected"]),
+        "valid": m["valid"],
+        "method": response.method,
+        "messages": model_messages(response, response.label or ""),
+    }
+
+
+@app.command()
+def run(
+    case_name: str = typer.Argument(..., metavar="CASE", help="built-in parameter set (thermogear cases) or a .toml"),
+    model: str = typer.Option("both", "--model", help="elastic | thermal | both"),
+    method: str = typer.Option(None, "--method", help="periodic | transient (default: the case's [dynamics])"),
+    as_json: bool = typer.Option(False, "--json", help="one JSON object on stdout"),
+    out: Path = typer.Option(None, "--out", help="write the full report (report.html, figures, results.nc, "
+                                                 "summary.json) into this folder"),
+    force: bool = typer.Option(False, "--force", help="replace an existing --out folder"),
+    quiet: bool = typer.Option(False, "--quiet", "-q", help="no progress bar (for scripts)"),
+) -> None:
+    """Run the dynamics of a case and report Kv, loads, transmission error per region, frequencies and stability.
+    Contact loss and instability are said in words (when, how long, how deep)."""
+    from thermogear.case import load_case
+    from thermogear.report.evaluate import model_messages
+    from thermogear.report.terminal import print_messages, print_summary, step_progress
+
+    if model not in _MODELS:
+        raise CaseError("--model", model, "elastic | thermal | both", "unknown model")
+    if method is not None and method not in ("periodic", "transient"):
+        raise CaseError("--method", method, "periodic | transient", "unknown solution method")
+    case = load_case(case_name)
+    method = method or case.dynamics.method
+    models = _MODELS[model]
+    if out is not None:
+        from thermogear.report.build import build_report, report_steps
+
+        with step_progress(report_steps(case), error_console, quiet or as_json) as advance:
+            outcome = build_report(case, out, force=force, method=method, paper=False, progress=advance)
+        responses = {name: outcome.evaluation.responses[name] for name in models
+                     if name in outcome.evaluation.responses}
+        failed = {name: outcome.evaluation.problems[f"{name} model"] for name in models
+                  if f"{name} model" in outcome.evaluation.problems}
+    else:
+        from thermogear.simulation import Simulation
+
+        responses, failed = {}, {}
+        with step_progress([f"{name} model" for name in models], error_console, quiet or as_json) as advance:
+            for name in models:
+                advance(f"{name} model")
+                responses[name] = Simulation(case, name).run(method)
+    messages = [text for name, response in responses.items() for text in model_messages(response, name)]
+    if as_json:
+        payload = {"case": case.name, "method": method,
+                   "models": {name: {**model_json(response), "messages": model_messages(response, name)}
+                              for name, response in responses.items()}}
+        if failed:
+            payload["not_computed"] = failed
+        if out is not None:
+            payload["report"] = str(outcome.report)
+        print_messages(messages, error_console)
+        print_json(payload)
+        return
+    if out is not None:
+        print_summary(outcome, console)
+        for name, reason in failed.items():
+            error_console.print(f"{name} model not computed: {reason}", highlight=False)
+        return
+    _print_table(case, responses, console)
+    print_messages(messages, console)
+
+
+def _print_table(case, responses, console) -> None:
+    from rich.table import Table
+
+    from thermogear.report.paper_table import format_value
+
+    table = Table(title=f"{case.name}: dynamics ({', '.join(responses)})", header_style="bold")
+    table.add_column("quantity")
+    for name in responses:
+        table.add_column(name, justify="right")
+    table.add_column("unit")
+    data = {name: model_json(response) for name, response in responses.items()}
+    rows = [("Kv (Eq. 29)", "kv", "–"), ("max pair load", "max_pair_load_n_per_mm", "N/mm"),
+            ("max system load / static", "max_system_load_ratio", "–"),
+            ("natural frequency", "natural_frequency_hz", "Hz"), ("frequency ratio λ", "frequency_ratio", "–")]
+    for label, key, unit in rows:
+        table.add_row(label, *(format_value(d[key]) if d[key] is not None else "—" for d in data.values()), unit)
+    regions = list(next(iter(data.values()))["equilibrium_um"])
+    for region in regions:
+        table.add_row(f"equilibrium, {region}", *(format_value(d["equilibrium_um"].get(region)) for d in data.values()),
+                      "μm")
+    for region in regions:
+        table.add_row(f"amplitude, {region}", *(format_value(d["amplitude_um"].get(region)) for d in data.values()),
+                      "μm")
+    table.add_row("largest |Floquet multiplier|", *(format_value(d["floquet_multipliers_abs"][0])
+                                                    for d in data.values()), "–")
+    table.add_row("linear model valid", *("yes" if d["valid"] else "NO" for d in data.values()), "")
+    console.print(table)

@@ -1,0 +1,98 @@
+"""Build the whole report folder of one case: evaluate, draw, write (atomically).
+
+    outcome = build_report(load_case("luo2019"), Path("thermogear-luo2019"))
+
+writes ``report.html``, ``figures/<fig>.png|svg``, ``results.nc`` and ``summary.json`` into the folder, which
+appears complete or not at all (:class:`~thermogear.report.writer.OutputFolder`).
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Callable
+
+from thermogear.citations import citations_used, clear_citations
+from thermogear.report.evaluate import (Evaluation, evaluate_case, is_paper_case, key_results, model_messages,
+                                        paper_verdicts)
+from thermogear.report.writer import OutputFolder
+
+__all__ = ["ReportOutcome", "build_report", "report_steps"]
+
+
+@dataclass
+class ReportOutcome:
+    """What was written and what the terminal summary shows."""
+
+    folder: Path
+    evaluation: Evaluation
+    verdicts: list
+    results: list[dict]
+    messages: list[str]
+    figures: list[str]
+    missing_figures: dict[str, str]
+    seconds: float
+    timings: dict = field(default_factory=dict)
+
+    @property
+    def report(self) -> Path:
+        return self.folder / "report.html"
+
+
+def report_steps(case, models=("elastic", "thermal")) -> list[str]:
+    """The progress steps of :func:`build_report` for ``case`` (for a progress bar's total)."""
+    steps = [f"{model} model" for model in models] + ["thermal stiffness", "damping", "start-up transients"]
+    if is_paper_case(case):
+        steps += ["rig trend", "FE verification"]
+    return steps + ["figures", "files"]
+
+
+def build_report(case, out: Path | str, *, force: bool = False, method: str = "periodic", paper: bool | None = None,
+                 progress: Callable[[str], None] | None = None) -> ReportOutcome:
+    """Run the chain of ``case`` and write its report folder ``out`` (see module docstring).
+
+    ``paper``: add the paper column (default: for the paper's own case). An existing ``out`` is refused before
+    any work unless ``force``. ``progress(step)`` is called before each step.
+    """
+    from thermogear import __version__
+    from thermogear.report.figures import report_figures, save_figure
+    from thermogear.report.html import render_report
+    from thermogear.report.results_file import (case_toml_text, summary_document, write_results_netcdf,
+                                                write_summary_json)
+
+    start = time.perf_counter()
+    step = progress or (lambda name: None)
+    folder = OutputFolder(Path(out), force=force)
+    folder.check()
+    clear_citations()
+    paper = is_paper_case(case) if paper is None else paper
+    evaluation = evaluate_case(case, method=method, progress=step)
+    verdicts = paper_verdicts(evaluation) if paper else []
+    results = key_results(evaluation)
+    messages = [text for model, response in evaluation.responses.items() for text in model_messages(response, model)]
+    step("figures")
+    figure_start = time.perf_counter()
+    figures, missing = report_figures(evaluation)
+    evaluation.timings["figures"] = time.perf_counter() - figure_start
+    step("files")
+    write_start = time.perf_counter()
+    with folder:
+        figure_folder = folder.path / "figures"
+        figure_folder.mkdir()
+        pngs = {}
+        for name, figure in figures.items():
+            save_figure(figure, figure_folder, name)
+            pngs[name] = (figure_folder / f"{name}.png").read_bytes()
+        write_results_netcdf(evaluation, folder.path / "results.nc")
+        citations = citations_used()
+        document = summary_document(evaluation, verdicts, results, messages, figures, missing, citations)
+        write_summary_json(document, folder.path / "summary.json")
+        page = render_report(evaluation, version=__version__, toml_text=case_toml_text(case), pngs=pngs,
+                             missing_figures=missing, results=results, verdicts=verdicts, messages=messages,
+                             citations=citations)
+        (folder.path / "report.html").write_text(page, encoding="utf-8")
+    evaluation.timings["files"] = time.perf_counter() - write_start
+    return ReportOutcome(folder=folder.target, evaluation=evaluation, verdicts=verdicts, results=results,
+                         messages=messages, figures=sorted(figures), missing_figures=missing,
+                         seconds=time.perf_counter() - start, timings=dict(evaluation.timings))

@@ -1,0 +1,259 @@
+"""The report's figures, named after the figures of Luo & Li (2020): 3c, 4, 6, 7, 8, 9, 10, 11, 12 (and 15).
+
+:func:`report_figures` draws every figure it can from an :class:`~thermogear.report.evaluate.Evaluation` and
+returns ``{name: figure}`` plus ``{name: reason}`` for those it cannot draw. Where the library has a plotting
+function (thermal curves, dynamic response) it is used; this module only lays the panels out.
+"""
+
+from __future__ import annotations
+
+from typing import Any, Callable
+
+import numpy as np
+
+__all__ = ["FIG6_SPAN_MS", "FIGURES", "report_figures", "save_figure"]
+
+#: Time span of the right panel of Fig. 6 [ms] (the paper's 0–5 ms).
+FIG6_SPAN_MS = 5.0
+
+#: Figure name → caption.
+FIGURES: dict[str, str] = {
+    "fig3c": "Fig. 3(c) — flank temperature of the driving tooth along the path of contact Γ (temperature input).",
+    "fig4": "Fig. 4 — elastic and thermal stiffness and compliance along Γ: pair and single teeth.",
+    "fig6": "Fig. 6 — per-pair and total mesh stiffness over one mesh cycle (left) and over 0–5 ms (right).",
+    "fig7": "Fig. 7 — friction damping with oil at the reference temperature (elastic model, c_e).",
+    "fig8": "Fig. 8 — friction damping with oil at the flank temperature (thermal model, c_r).",
+    "fig9": "Fig. 9 — dynamic transmission error x(τ) from rest, elastic and thermal.",
+    "fig10": "Fig. 10 — phase portrait ẋ against x from rest, elastic and thermal.",
+    "fig11": "Fig. 11 — velocity ẋ(τ) from rest, elastic and thermal.",
+    "fig12": "Fig. 12 — dynamic pair and system loads per unit face width in the steady state (three periods).",
+    "fig15": "Fig. 15 — FE verification of the elastic and thermal stiffness along Γ.",
+}
+
+_COLORS = {"elastic": "tab:blue", "thermal": "tab:red"}
+
+
+def _pyplot():
+    import matplotlib
+
+    matplotlib.use("Agg", force=False)
+    import matplotlib.pyplot as plt
+
+    return plt
+
+
+def _mark_points(ax, case) -> None:
+    pair = case.gear_pair
+    for name, roll in pair.path_points.items():
+        gamma = float(pair.gamma(roll))
+        ax.axvline(gamma, color="0.8", lw=0.7, zorder=0)
+        ax.annotate(name, (gamma, 1.0), xycoords=("data", "axes fraction"), ha="center", va="bottom", fontsize=8)
+
+
+def fig3c(evaluation):
+    plt = _pyplot()
+    case, field = evaluation.case, evaluation.temperature_field
+    pair = case.gear_pair
+    figure, ax = plt.subplots(figsize=(6.5, 3.8), constrained_layout=True)
+    gamma = np.asarray(pair.gamma(pair.roll_grid(201)), float)
+    ax.plot(gamma, field.pinion_flank_c(gamma), color="tab:red", label="driving flank (fit used by the model)")
+    ax.plot(gamma, field.wheel_flank_c(gamma), color="tab:orange", ls="--", label="driven flank")
+    table = case.temperature
+    if getattr(table, "gamma", None) is not None and getattr(table, "flank_c", None) is not None:
+        ax.plot(table.gamma, table.flank_c, "ko", ms=4, label="tabulated input")
+    _mark_points(ax, case)
+    ax.set_xlabel("contact position Γ [–]")
+    ax.set_ylabel("flank temperature [°C]")
+    ax.legend(fontsize=8, loc="best")
+    return figure
+
+
+def fig4(evaluation):
+    try:
+        from thermogear.thermal.plots import plot_thermal_curves
+    except ImportError:
+        plot_thermal_curves = None
+    if plot_thermal_curves is not None:
+        return plot_thermal_curves(evaluation.thermal_curves, evaluation.case)
+    plt = _pyplot()  # fallback: the pair curves only
+    curve = evaluation.thermal_curves.curve
+    width = evaluation.case.gear_pair.face_width
+    figure, ax = plt.subplots(figsize=(6.5, 3.8), constrained_layout=True)
+    ax.plot(curve.gamma, curve.elastic_stiffness / width * 1e-9, color=_COLORS["elastic"], label="k_e")
+    ax.plot(curve.gamma, curve.stiffness / width * 1e-9, color=_COLORS["thermal"], label="k_T")
+    ax.set_xlabel("contact position Γ [–]")
+    ax.set_ylabel("pair stiffness [N/(mm·μm)]")
+    ax.legend()
+    return figure
+
+
+def fig6(evaluation):
+    plt = _pyplot()
+    simulation = evaluation.simulations["thermal"]
+    elastic = evaluation.simulations.get("elastic")
+    grid = simulation.grid
+    width = evaluation.case.gear_pair.face_width
+    scale = 1.0 / width / 1e10
+    figure, (left, right) = plt.subplots(1, 2, figsize=(11, 4.0), constrained_layout=True)
+    nodes_ms = grid.nodes * 1e3
+    for slot, values in enumerate(simulation.pair_stiffness):
+        left.stairs(values * scale, nodes_ms, baseline=None, lw=1.0, label=f"k_T pair {slot + 1}")
+    left.stairs(simulation.mesh_stiffness * scale, nodes_ms, baseline=None, color="k", lw=1.6, label="k_T total")
+    if elastic is not None:
+        left.stairs(elastic.mesh_stiffness * scale, nodes_ms, baseline=None, color="0.5", ls="--", lw=1.0,
+                    label="k_e total")
+    left.set_xlabel("time τ in one mesh period [ms]")
+    left.set_ylabel("stiffness [10¹⁰ N/m per m]")
+    left.set_title("one mesh cycle")
+    left.legend(fontsize=8)
+    period = grid.nodes[-1]
+    count = int(np.ceil(FIG6_SPAN_MS * 1e-3 / period))
+    times = np.concatenate([grid.nodes[:-1] + j * period for j in range(count)] + [[count * period]]) * 1e3
+    values = np.tile(simulation.mesh_stiffness * scale, count)
+    right.stairs(values, times, baseline=None, color="k", label="k_T total")
+    if elastic is not None:
+        right.stairs(np.tile(elastic.mesh_stiffness * scale, count), times, baseline=None, color="0.5", ls="--",
+                     label="k_e total")
+    right.set_xlim(0.0, FIG6_SPAN_MS)
+    right.set_xlabel("time τ [ms]")
+    right.set_title(f"0–{FIG6_SPAN_MS:g} ms")
+    right.legend(fontsize=8)
+    return figure
+
+
+def _damping_figure(evaluation, model: str):
+    plt = _pyplot()
+    from thermogear.damping import PAPER_MEAN_DAMPING
+
+    summary = evaluation.damping
+    figure, (left, right) = plt.subplots(1, 2, figsize=(11, 4.0), constrained_layout=True)
+    path = summary.path[model]
+    left.plot(path.gamma, path.damping, color=_COLORS[model])
+    left.set_xlabel("contact position Γ [–]")
+    left.set_ylabel("damping of one tooth pair [N·s/m]")
+    left.set_title("per pair along the path")
+    _mark_points(left, evaluation.case)
+    grid = summary.grid
+    period = grid.nodes[-1]
+    periods = 3
+    times = np.concatenate([grid.nodes[:-1] + j * period for j in range(periods)] + [[periods * period]]) * 1e3
+    right.stairs(np.tile(summary.mesh[model], periods), times, baseline=None, color=_COLORS[model],
+                 label=f"c(τ), rule '{summary.rule}'")
+    means = summary.region_means[model]
+    for region, style in (("single", "-."), ("double", ":")):
+        if np.isfinite(means.get(region, np.nan)):
+            right.axhline(means[region], color=_COLORS[model], ls=style, lw=0.8,
+                          label=f"thermogear mean, {region}: {means[region]:.3g}")
+    if evaluation.paper:
+        for region, style in (("single", "-."), ("double", ":")):
+            right.axhline(PAPER_MEAN_DAMPING[model][region], color="k", ls=style, lw=0.8,
+                          label=f"paper mean, {region}: {PAPER_MEAN_DAMPING[model][region]:.3g}")
+    right.set_xlabel("time τ [ms]")
+    right.set_ylabel("mesh damping [N·s/m]")
+    right.set_title("mesh cycle")
+    right.legend(fontsize=7, loc="best")
+    return figure
+
+
+def fig7(evaluation):
+    return _damping_figure(evaluation, "elastic")
+
+
+def fig8(evaluation):
+    return _damping_figure(evaluation, "thermal")
+
+
+def _pair(evaluation, source: str):
+    responses = getattr(evaluation, source)
+    elastic, thermal = responses.get("elastic"), responses.get("thermal")
+    first = elastic if elastic is not None else thermal
+    other = thermal if elastic is not None else None
+    return first, other
+
+
+def fig9(evaluation):
+    first, other = _pair(evaluation, "transients")
+    return first.plot_displacement(other=other)
+
+
+def fig10(evaluation):
+    first, other = _pair(evaluation, "transients")
+    return first.plot_phase(other=other)
+
+
+def fig11(evaluation):
+    first, other = _pair(evaluation, "transients")
+    return first.plot_velocity(other=other)
+
+
+def fig12(evaluation):
+    first, other = _pair(evaluation, "responses")
+    return first.plot_loads(other=other, periods=3)
+
+
+def fig15(evaluation):
+    plt = _pyplot()
+    result = evaluation.fem
+    width = evaluation.case.gear_pair.face_width
+    figure, ax = plt.subplots(figsize=(6.5, 3.8), constrained_layout=True)
+    ax.plot(result["gamma"], np.asarray(result["elastic"]) / width * 1e-9, "o-", color=_COLORS["elastic"],
+            label="FE elastic")
+    ax.plot(result["gamma"], np.asarray(result["thermal"]) / width * 1e-9, "s-", color=_COLORS["thermal"],
+            label="FE thermo-elastic")
+    curves = evaluation.thermal_curves
+    if curves is not None:
+        ax.plot(curves.curve.gamma, curves.curve.elastic_stiffness / width * 1e-9, color=_COLORS["elastic"], ls=":",
+                label="analytical k_e")
+        ax.plot(curves.curve.gamma, curves.curve.stiffness / width * 1e-9, color=_COLORS["thermal"], ls=":",
+                label="analytical k_T")
+    ax.set_xlabel("contact position Γ [–]")
+    ax.set_ylabel("pair stiffness [N/(mm·μm)]")
+    ax.legend(fontsize=8)
+    return figure
+
+
+_DRAW: dict[str, tuple[Callable[[Any], Any], tuple[str, ...]]] = {
+    "fig3c": (fig3c, ("thermal stiffness",)),
+    "fig4": (fig4, ("thermal stiffness",)),
+    "fig6": (fig6, ("thermal model",)),
+    "fig7": (fig7, ("damping",)),
+    "fig8": (fig8, ("damping",)),
+    "fig9": (fig9, ("start-up transients",)),
+    "fig10": (fig10, ("start-up transients",)),
+    "fig11": (fig11, ("start-up transients",)),
+    "fig12": (fig12, ("elastic model", "thermal model")),
+    "fig15": (fig15, ("FE verification",)),
+}
+
+
+def report_figures(evaluation) -> tuple[dict[str, Any], dict[str, str]]:
+    """Draw every figure: ``({name: matplotlib figure}, {name: reason it is missing})``."""
+    figures, missing = {}, {}
+    for name, (draw, stages) in _DRAW.items():
+        if name == "fig15" and evaluation.fem is None:
+            missing[name] = evaluation.problem("FE verification") or "the FE verification was not run"
+            continue
+        reason = evaluation.problem(*stages)
+        if reason:
+            missing[name] = reason
+            continue
+        try:
+            figures[name] = draw(evaluation)
+        except (KeyboardInterrupt, SystemExit):
+            raise
+        except Exception as error:  # noqa: BLE001 - a figure that cannot be drawn is reported with its reason
+            missing[name] = f"{type(error).__name__}: {error}"
+    return figures, missing
+
+
+def save_figure(figure, folder, name: str) -> list[str]:
+    """Write ``name.png`` (150 dpi) and ``name.svg`` into ``folder``; close the figure; return the file names."""
+    import matplotlib.pyplot as plt
+
+    files = []
+    for suffix, options in ((".png", {"dpi": 150}), (".svg", {})):
+        path = folder / f"{name}{suffix}"
+        figure.savefig(path, **options)
+        files.append(path.name)
+    plt.close(figure)
+    return files

@@ -1,0 +1,84 @@
+"""Terminal side of the report commands: a progress bar over the steps and the short rich summary."""
+
+from __future__ import annotations
+
+from contextlib import contextmanager
+from typing import Iterator
+
+from rich.console import Console
+from rich.table import Table
+
+from thermogear.report.paper_table import format_value
+
+__all__ = ["step_progress", "print_summary", "print_messages"]
+
+
+@contextmanager
+def step_progress(steps: list[str], console: Console, quiet: bool = False) -> Iterator:
+    """A progress bar over ``steps`` on ``console`` (stderr); yields ``advance(step_name)``. Quiet: no output."""
+    if quiet:
+        yield lambda name: None
+        return
+    from rich.progress import BarColumn, Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
+
+    with Progress(SpinnerColumn(), TextColumn("[bold]{task.description:<22}"), BarColumn(),
+                  TextColumn("{task.completed}/{task.total}"), TimeElapsedColumn(), console=console,
+                  transient=True) as progress:
+        task = progress.add_task("starting", total=len(steps))
+        seen: list[str] = []
+
+        def advance(name: str) -> None:
+            if seen:
+                progress.advance(task)
+            seen.append(name)
+            progress.update(task, description=name)
+
+        yield advance
+        progress.update(task, completed=len(steps))
+
+
+def print_messages(messages: list[str], console: Console) -> None:
+    for message in messages:
+        console.print(f"[bold red]{message}[/]", highlight=False)
+
+
+def print_summary(outcome, console: Console) -> None:
+    """The short summary: the paper table (results and calibration rows; inputs and measurements counted) or
+    the results table, the messages, and the report's path."""
+    if outcome.verdicts:
+        table = Table(title="Luo & Li (2020) vs thermogear", show_lines=False, header_style="bold")
+        table.add_column("quantity", ratio=1, overflow="fold")
+        for name in ("paper", "thermogear", "unit", "deviation", "status"):
+            table.add_column(name, justify="left" if name in ("unit", "status") else "right", no_wrap=True)
+        style = {"within": "[green]within[/]", "outside": "[red]outside[/]", "not computed": "[yellow]not computed[/]"}
+        for verdict in outcome.verdicts:
+            if verdict.row.kind in ("input", "measured"):
+                continue
+            row = verdict.row
+            table.add_row(row.quantity, row.paper_text, format_value(verdict.value), row.unit, verdict.deviation_text,
+                          style[verdict.status])
+        console.print(table)
+        for kind, label in (("input", "Table 1 inputs carried by the case"),
+                            ("measured", "rig measurements transcribed")):
+            rows = [v for v in outcome.verdicts if v.row.kind == kind]
+            exact = sum(1 for v in rows if v.status == "within")
+            console.print(f"{label}: {exact}/{len(rows)} exact"
+                          + ("" if exact == len(rows) else
+                             " (" + ", ".join(f"{v.row.key}: {v.status}" for v in rows if v.status != "within") + ")"),
+                          highlight=False)
+        counts = {s: sum(1 for v in outcome.verdicts if v.status == s) for s in ("within", "outside", "not computed")}
+        console.print(f"[bold]{len(outcome.verdicts)} rows:[/] [green]{counts['within']} within[/], "
+                      f"[red]{counts['outside']} outside[/], [yellow]{counts['not computed']} not computed[/]")
+    else:
+        table = Table(title=f"thermogear results: {outcome.evaluation.case.name}", header_style="bold")
+        for name in ("quantity", "elastic", "thermal", "unit"):
+            table.add_column(name, justify="left" if name in ("quantity", "unit") else "right")
+        for row in outcome.results:
+            table.add_row(row["quantity"], format_value(row["elastic"]) if row["elastic"] is not None else "—",
+                          format_value(row["thermal"]) if row["thermal"] is not None else "—", row["unit"])
+        console.print(table)
+    print_messages(outcome.messages, console)
+    if outcome.missing_figures:
+        console.print("figures not drawn: " + "; ".join(f"{k} ({v})" for k, v in outcome.missing_figures.items()),
+                      highlight=False)
+    console.print(f"report: [bold]{outcome.report}[/]  ({outcome.seconds:.1f} s)", highlight=False)
