@@ -17,6 +17,8 @@ from thermogear.cli import damping  # noqa: E402,F401
 from thermogear.cli import vibration  # noqa: E402,F401
 from thermogear.cli import warmup  # noqa: E402,F401
 from thermogear.cli import sweep  # noqa: E402,F401
+from thermogear.cli import reproduce  # noqa: E402,F401
+from thermogear.cli import run  # noqa: E402,F401
 
 
 def main() -> None:
