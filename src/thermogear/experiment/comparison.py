@@ -110,14 +110,16 @@ def simulate_rig_signal(harmonics: np.ndarray, mesh_frequency_hz: float, transfe
 
 @dataclass(frozen=True)
 class ComparisonRow:
-    """One Table 3 state: speed [rpm], minute, temperature [°C], the model's mean mesh stiffness [N/m] and natural
-    frequency [Hz], and the measurements (accelerations [m/s²], resonance [Hz] or None)."""
+    """One Table 3 state: speed [rpm], minute, temperature [°C], the model's mean mesh stiffness [N/m], natural
+    frequency [Hz] and RMS of the dynamic mesh force about its mean [N] (None without dynamics), and the
+    measurements (accelerations [m/s²], resonance [Hz] or None)."""
 
     speed_rpm: float
     minute: float
     temperature_c: float
     mesh_stiffness_mean: float
     natural_frequency_hz: float
+    dynamic_force_rms: float | None
     measured_mean_acceleration: float
     measured_max_acceleration: float
     measured_resonance_hz: float | None
@@ -126,7 +128,8 @@ class ComparisonRow:
 @dataclass(frozen=True)
 class SpeedShift:
     """Relative changes over one run, first → last Table 3 temperature: model stiffness and natural frequency,
-    measured resonance (or None), and the ratio predicted / measured frequency change (or None)."""
+    measured resonance (or None), the ratio predicted / measured frequency change (or None), the model's RMS
+    dynamic mesh force (or None) and the measured mean and maximum acceleration."""
 
     speed_rpm: float
     temperature_start_c: float
@@ -135,6 +138,9 @@ class SpeedShift:
     natural_frequency_change: float
     measured_frequency_change: float | None
     ratio: float | None
+    dynamic_force_change: float | None
+    measured_mean_acceleration_change: float
+    measured_max_acceleration_change: float
 
 
 @dataclass(frozen=True)
@@ -173,6 +179,16 @@ class RigComparison:
             lines.append(f"| {shift.speed_rpm:.0f} | {temperatures} | {stiffness} | {frequency} | "
                          f"{shift.stiffness_change:+.2%} | {shift.natural_frequency_change:+.2%} | {measured} | "
                          f"{ratio} |")
+        lines += ["", "| n1 [rpm] | T [°C] | RMS dynamic mesh force model [N] | Δ model | Δ mean accel. measured | "
+                  "Δ max accel. measured |", "|---|---|---|---|---|---|"]
+        for shift in self.shifts:
+            rows = [row for row in self.rows if row.speed_rpm == shift.speed_rpm]
+            temperatures = " / ".join(f"{row.temperature_c:.1f}" for row in rows)
+            force = ("—" if shift.dynamic_force_change is None
+                     else " / ".join(f"{row.dynamic_force_rms:.1f}" for row in rows))
+            change = "—" if shift.dynamic_force_change is None else f"{shift.dynamic_force_change:+.1%}"
+            lines.append(f"| {shift.speed_rpm:.0f} | {temperatures} | {force} | {change} | "
+                         f"{shift.measured_mean_acceleration_change:+.1%} | {shift.measured_max_acceleration_change:+.1%} |")
         return "\n".join(lines)
 
     def plot(self, ax=None):
@@ -181,9 +197,17 @@ class RigComparison:
         return plot_resonance_comparison(self, ax=ax)
 
 
-def compare_with_rig(case=STAND_IN_CASE, model: str = "thermal", simulation: Callable | None = None) -> RigComparison:
+def dynamic_force_rms(response, period_s: float, samples: int = 4096) -> float:
+    """RMS of the dynamic mesh force k·x about its mean over one period [N] (Parseval on the harmonics)."""
+    harmonics = periodic_force_harmonics(response.time, response.system_load(), period_s, samples // 2 - 1, samples)
+    return float(np.sqrt(0.5 * np.sum(np.abs(harmonics[1:]) ** 2)))
+
+
+def compare_with_rig(case=STAND_IN_CASE, model: str = "thermal", dynamics: bool = True,
+                     simulation: Callable | None = None) -> RigComparison:
     """The model (``case`` name or Case, default the FZG type C stand-in) at every Table 3 state, beside the
-    measurements. ``simulation`` is a factory ``(case, model) -> Simulation`` (default the real one)."""
+    measurements. With ``dynamics`` the periodic steady state of each state gives the RMS dynamic mesh force.
+    ``simulation`` is a factory ``(case, model) -> Simulation`` (default the real one)."""
     from thermogear.case import load_case
 
     if simulation is None:
@@ -195,16 +219,22 @@ def compare_with_rig(case=STAND_IN_CASE, model: str = "thermal", simulation: Cal
         run = []
         for measurement in measurements_at(speed):
             sim = simulation(state_case(base, measurement.temperature_c, speed), model)
+            force = (dynamic_force_rms(sim.run(method="periodic"), 1.0 / sim.mesh_frequency_hz) if dynamics
+                     else None)
             run.append(ComparisonRow(speed, measurement.minute, measurement.temperature_c, sim.mesh_stiffness_mean,
-                                     sim.natural_frequency_hz, measurement.mean_acceleration_m_s2,
+                                     sim.natural_frequency_hz, force, measurement.mean_acceleration_m_s2,
                                      measurement.max_acceleration_m_s2, measurement.resonance_frequency_hz))
         rows.extend(run)
         first, last = run[0], run[-1]
         frequency_change = last.natural_frequency_hz / first.natural_frequency_hz - 1.0
         measured_change = measured["relative_change"] if speed == measured["speed_rpm"] else None
-        shifts.append(SpeedShift(speed, first.temperature_c, last.temperature_c,
-                                 last.mesh_stiffness_mean / first.mesh_stiffness_mean - 1.0, frequency_change,
-                                 measured_change, None if measured_change is None else frequency_change / measured_change + 0.0))
+        shifts.append(SpeedShift(
+            speed, first.temperature_c, last.temperature_c,
+            last.mesh_stiffness_mean / first.mesh_stiffness_mean - 1.0, frequency_change, measured_change,
+            None if measured_change is None else frequency_change / measured_change + 0.0,
+            None if first.dynamic_force_rms is None else last.dynamic_force_rms / first.dynamic_force_rms - 1.0,
+            last.measured_mean_acceleration / first.measured_mean_acceleration - 1.0,
+            last.measured_max_acceleration / first.measured_max_acceleration - 1.0))
     points = tuple((row.temperature_c, row.resonance_frequency_hz) for row in measurements_at(measured["speed_rpm"])
                    if row.resonance_frequency_hz is not None)
     return RigComparison(base.name, model, tuple(rows), tuple(shifts), measured["speed_rpm"], points,
