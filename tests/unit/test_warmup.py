@@ -144,3 +144,64 @@ def test_real_warmup_thermal_stiffness_falls_and_elastic_stays():
     me = case.equivalent_mass
     np.testing.assert_allclose(thermal.natural_frequency_hz,
                                np.sqrt(thermal.mesh_stiffness_mean / me) / (2 * np.pi), rtol=1e-12)
+
+
+# ------------------------------------------------------------------ transfer path and rig-signal synthesis
+def test_sdof_transfer_path_limits():
+    from thermogear.experiment.comparison import SdofTransferPath
+
+    path = SdofTransferPath(natural_frequency_hz=100.0, damping_ratio=0.05, mass_kg=2.0)
+    assert abs(path.acceleration_per_force(1e6)) == pytest.approx(1 / 2.0, rel=1e-6)  # mass line: a = F/m
+    assert abs(path.acceleration_per_force(100.0)) == pytest.approx(1 / (2 * 0.05 * 2.0), rel=1e-12)  # resonance
+    stiffness = 2.0 * (2 * np.pi * 100.0) ** 2
+    low = 0.1
+    assert abs(path.acceleration_per_force(low)) == pytest.approx((2 * np.pi * low) ** 2 / stiffness, rel=1e-4)
+    with pytest.raises(CaseError, match="damping_ratio"):
+        SdofTransferPath(100.0, 0.0, 1.0)
+    with pytest.raises(CaseError, match="mass_kg"):
+        SdofTransferPath(100.0, 0.1, -1.0)
+
+
+def test_force_harmonics_of_a_known_periodic_force():
+    from thermogear.experiment.comparison import periodic_force_harmonics
+
+    period = 0.01
+    time = np.linspace(0.0, period, 1001)  # includes both ends, as a response over one period
+    force = 100.0 + 30.0 * np.cos(2 * np.pi * time / period + 0.4) + 5.0 * np.sin(2 * np.pi * 3 * time / period)
+    harmonics = periodic_force_harmonics(time, force, period, 4)
+    assert harmonics[0].real == pytest.approx(100.0, rel=1e-9)
+    assert abs(harmonics[1]) == pytest.approx(30.0, rel=1e-4) and np.angle(harmonics[1]) == pytest.approx(0.4, abs=1e-3)
+    assert abs(harmonics[3]) == pytest.approx(5.0, rel=1e-3)
+    assert abs(harmonics[2]) < 1e-6
+
+
+def test_simulated_signal_of_one_harmonic_through_the_mass_line():
+    from thermogear.experiment.comparison import SdofTransferPath, simulate_rig_signal
+    from thermogear.experiment.spectrum import spectrum
+
+    path = SdofTransferPath(natural_frequency_hz=1.0, damping_ratio=0.1, mass_kg=4.0)  # far below 200 Hz
+    signal = simulate_rig_signal(np.array([0.0, 8.0 + 0j]), 200.0, path, 2.0, 2048.0)
+    peak = spectrum(signal, "fft").peaks()[0]
+    assert peak.frequency_hz == pytest.approx(200.0, abs=0.05)
+    assert peak.amplitude == pytest.approx(8.0 * abs(path.acceleration_per_force(200.0)), rel=0.01)  # ≈ F/m = 2
+
+
+# ------------------------------------------------------------------ command line (wiring only)
+def test_warmup_command_json_and_errors():
+    import json
+    import subprocess
+    import sys
+
+    def run(*arguments):
+        return subprocess.run([sys.executable, "-m", "thermogear", "warmup", *arguments], capture_output=True,
+                              text=True, timeout=120)
+
+    completed = run("fzg_type_c", "--temperature-history", "luo2019:900", "--no-dynamics", "--json")
+    assert completed.returncode == 0, completed.stderr
+    payload = json.loads(completed.stdout)
+    assert payload["speed_rpm"] == 900.0
+    assert [state["temperature_c"] for state in payload["states"]] == [32.3, 35.6, 42.7]
+    frequencies = [state["natural_frequency_hz"] for state in payload["states"]]
+    assert frequencies == sorted(frequencies, reverse=True)
+    completed = run("fzg_type_c")
+    assert completed.returncode == 2 and "exactly one of" in " ".join(completed.stderr.split())

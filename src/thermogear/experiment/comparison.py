@@ -53,8 +53,8 @@ class SdofTransferPath:
         for key, value in (("natural_frequency_hz", self.natural_frequency_hz), ("mass_kg", self.mass_kg)):
             if not (math.isfinite(value) and value > 0):
                 raise CaseError(f"transfer_path.{key}", value, "> 0", "a physical oscillator")
-        if not (math.isfinite(self.damping_ratio) and 0 < self.damping_ratio < 1):
-            raise CaseError("transfer_path.damping_ratio", self.damping_ratio, "(0, 1)", "an underdamped mode")
+        if not (math.isfinite(self.damping_ratio) and self.damping_ratio > 0):
+            raise CaseError("transfer_path.damping_ratio", self.damping_ratio, "> 0", "a damped oscillator")
 
     def acceleration_per_force(self, frequency_hz: np.ndarray) -> np.ndarray:
         """H(f) = −ω² / (m (ω₀² − ω² + 2iζω₀ω)) [m/s² per N] (complex)."""
