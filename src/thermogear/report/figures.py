@@ -246,10 +246,20 @@ def report_figures(evaluation) -> tuple[dict[str, Any], dict[str, str]]:
     return figures, missing
 
 
+def fix_legend_locations(figure, location: str = "upper right") -> None:
+    """Replace legends placed at "best" by a fixed corner: matplotlib's search for the best place scans every
+    data point (seconds per figure for a 60-period transient), and it reruns on every save."""
+    legends = [ax.get_legend() for ax in figure.axes] + list(getattr(figure, "legends", []))
+    for legend in legends:
+        if legend is not None and getattr(legend, "_loc", None) == 0 and hasattr(legend, "set_loc"):
+            legend.set_loc(location)
+
+
 def save_figure(figure, folder, name: str) -> list[str]:
     """Write ``name.png`` (150 dpi) and ``name.svg`` into ``folder``; close the figure; return the file names."""
     import matplotlib.pyplot as plt
 
+    fix_legend_locations(figure)
     files = []
     for suffix, options in ((".png", {"dpi": 150}), (".svg", {})):
         path = folder / f"{name}{suffix}"
