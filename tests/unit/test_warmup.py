@@ -119,6 +119,8 @@ def test_warmup_wiring_with_a_fake_simulation():
     assert result.speed_rpm == 900.0
     payload = result.as_dict()
     assert payload["states"][1]["mesh_stiffness_mean_n_per_mm_um"] == pytest.approx(1.4e8 / 14e-3 / 1e9)
+    figure = result.plot()
+    assert len(figure.axes) == 2 and len(figure.axes[1].lines[0].get_xdata()) == 2
 
 
 def test_state_case_sets_uniform_bulk_and_oil_temperature():

@@ -85,9 +85,12 @@ def test_elastic_model_predicts_no_stiffness_shift():
     assert elastic.shift_at(900.0).ratio == pytest.approx(0.0, abs=1e-9)
 
 
-def test_comparison_plot(comparison):
+def test_comparison_plots(comparison):
+    from thermogear.experiment.plots import plot_rig_amplitudes
+
     figure = comparison.plot()
     assert len(figure.axes[0].lines) == 2
+    assert len(plot_rig_amplitudes(rig_measurements()).axes[0].lines) == 6  # mean and max for three speeds
 
 
 # --------------------------------------------------------------------------------- simulated rig signal
