@@ -99,6 +99,8 @@ def parse_values(text: str | float | int | list | tuple, name: str = "vary") -> 
             raise CaseError(name, text, allowed, "no values given")
     else:
         raise CaseError(name, text, allowed, "not a value specification")
+    if not items:
+        raise CaseError(name, text, allowed, "no values given")
     try:
         values = np.array([float(item) for item in items], dtype=float)
     except (TypeError, ValueError):

@@ -1,0 +1,137 @@
+"""Kill test: a sweep killed with SIGKILL at random moments and resumed gives exactly the uninterrupted dataset.
+
+Each run is a separate `thermogear sweep ... --resume` process in its own session; SIGKILL goes to the whole
+process group (the local Dask cluster's nanny and worker processes included), so nothing gets to clean up. The
+kill moments are drawn at random in the span of an uninterrupted run (the seed is in the failure message).
+"""
+
+from __future__ import annotations
+
+import os
+import random
+import signal
+import subprocess
+import sys
+import time
+
+import numpy as np
+import pytest
+import xarray as xr
+import zarr
+
+STUDY = ["luo2019", "--vary", "speed_rpm=1000:9000:90", "--vary", "torque_nm=200,300,400", "--chunk-points", "6",
+         "--method", "simulation", "--no-progress"]
+
+
+def _command(out, scheduler: str) -> list[str]:
+    extra = ["--scheduler", "serial"] if scheduler == "serial" else ["--workers", "2"]
+    return [sys.executable, "-m", "thermogear", "sweep", *STUDY, "--out", str(out), "--resume", *extra]
+
+
+def _run(out, scheduler: str, kill_after: float | None, timeline: list | None = None) -> int | None:
+    """Run one sweep process; SIGKILL its process group after ``kill_after`` s. Returns the exit code, or None
+    when it was killed. With ``timeline``, (seconds, chunks done) is recorded while it runs."""
+    process = subprocess.Popen(_command(out, scheduler), stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+                               start_new_session=True, env={**os.environ, "PYTHONWARNINGS": "ignore"})
+    start = time.perf_counter()
+    try:
+        if timeline is not None:
+            while process.poll() is None and time.perf_counter() - start < 120:
+                timeline.append((time.perf_counter() - start, _done_count(out)))
+                time.sleep(0.05)
+        process.wait(timeout=kill_after if kill_after is not None else 120)
+        return process.returncode
+    except subprocess.TimeoutExpired:
+        os.killpg(process.pid, signal.SIGKILL)
+        process.wait()
+        return None
+    finally:
+        if process.poll() is None:  # pragma: no cover - never leave a process behind
+            os.killpg(process.pid, signal.SIGKILL)
+            process.wait()
+        if process.stderr:
+            process.stderr.close()
+
+
+def _done_count(out) -> int:
+    try:
+        return int(np.sum(zarr.open_group(str(out), mode="r")["chunk_done"][:]))
+    except Exception:  # noqa: BLE001 - a store killed during creation may not open; it counts as empty
+        return 0
+
+
+def test_killed_and_resumed_sweep_equals_uninterrupted(tmp_path):
+    reference = tmp_path / "reference.zarr"
+    timeline: list[tuple[float, int]] = []
+    assert _run(reference, "serial", None, timeline) == 0
+    # when the computing starts (first chunk stored) and ends (last chunk stored) in an uninterrupted run
+    first = next((t for t, done in timeline if done > 0), timeline[-1][0])
+    last = next((t for t, done in timeline if done == max(d for _, d in timeline)), timeline[-1][0])
+    seed = random.SystemRandom().randrange(2**32)
+    rng = random.Random(seed)
+    store = tmp_path / "killed.zarr"
+    total = int(zarr.open_group(str(reference), mode="r")["chunk_done"].shape[0])
+    history = []
+    finished = False
+    for attempt in range(5):
+        scheduler = "local" if attempt == 1 else "serial"
+        remaining = 1.0 - _done_count(store) / total
+        if remaining == 0.0:
+            break
+        startup = 0.8 * first + (3.0 if scheduler == "local" else 0.0)  # the local cluster takes longer to start
+        moment = startup + rng.uniform(0.0, 1.1) * (last - first) * remaining
+        code = _run(store, scheduler, moment)
+        history.append((scheduler, round(moment, 2), code, _done_count(store)))
+        if code is not None:
+            assert code == 0, history
+            finished = True
+            break
+    if not finished:
+        assert _run(store, "serial", None) == 0
+        history.append(("serial", None, 0, _done_count(store)))
+    message = f"seed {seed}, runs (scheduler, kill moment, exit code, chunks done) {history}"
+    print(message)
+    assert any(0 < done < total for _, _, code, done in history if code is None) or len(history) == 1, message
+    expected = xr.open_zarr(str(reference), consolidated=False).load()
+    resumed = xr.open_zarr(str(store), consolidated=False).load()
+    assert int(resumed["chunk_done"].sum()) == total, message
+    assert resumed.identical(expected), message
+    for name in expected.data_vars:  # bit for bit, NaN where NaN
+        assert np.array_equal(np.asarray(resumed[name]), np.asarray(expected[name]), equal_nan=True), (name, message)
+
+
+def test_resume_refuses_another_study(tmp_path):
+    out = tmp_path / "a.zarr"
+    base = [sys.executable, "-m", "thermogear", "sweep", "luo2019", "--out", str(out), "--scheduler", "serial",
+            "--no-progress"]
+    first = subprocess.run([*base, "--vary", "speed_rpm=1000,2000"], capture_output=True, text=True, timeout=120)
+    assert first.returncode == 0, first.stderr
+    again = subprocess.run([*base, "--vary", "speed_rpm=1000,2000"], capture_output=True, text=True, timeout=120)
+    assert again.returncode == 2 and "--resume" in again.stderr
+    other = subprocess.run([*base, "--vary", "speed_rpm=1000,3000", "--resume"], capture_output=True, text=True,
+                           timeout=120)
+    assert other.returncode == 2 and "same study" in other.stderr
+    same = subprocess.run([*base, "--resume"], capture_output=True, text=True, timeout=120)
+    assert same.returncode == 0 and "0 computed, 1 kept" in " ".join(same.stdout.split()), same.stdout
+
+
+@pytest.mark.parametrize("kill", [False])
+def test_interrupted_store_without_marker_is_recomputed(tmp_path, kill):
+    """A block whose data were written but whose marker was not (a kill between the two) is computed again."""
+    from thermogear.case import load_case
+    from thermogear.sweep import Study, run_study
+
+    study = Study.define(load_case("luo2019"), ["speed_rpm=1000:4000:6"], model="elastic", chunk_points=2)
+    out = tmp_path / "s.zarr"
+    with np.errstate(all="ignore"):
+        import warnings
+
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            full = run_study(study, out, scheduler="serial", progress=False).dataset
+            group = zarr.open_group(str(out), mode="r+")
+            group["chunk_done"][1] = 0
+            group["kv"][:, 2:4] = -1.0  # stale data of the unmarked block
+            again = run_study(study, out, scheduler="serial", resume=True, progress=False)
+    assert again.computed == 1 and again.skipped == 2
+    assert again.dataset.identical(full)
