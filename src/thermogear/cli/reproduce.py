@@ -7,6 +7,7 @@ from pathlib import Path
 import typer
 
 from thermogear.cli.app import app, console, error_console
+from thermogear.report.terminal import interruptible
 from thermogear.errors import CaseError
 
 #: Papers thermogear reproduces: name → built-in parameter set.
@@ -34,7 +35,7 @@ def reproduce(
                         "no such paper" + (f" (did you mean '{suggestion}'?)" if suggestion else ""))
     case = load_case(PAPERS[paper])
     target = out if out is not None else Path(f"thermogear-{paper}")
-    with step_progress(report_steps(case), error_console, quiet) as advance:
+    with interruptible(target), step_progress(report_steps(case), error_console, quiet) as advance:
         outcome = build_report(case, target, force=force, paper=True, progress=advance)
     if not quiet:
         print_summary(outcome, console)

@@ -7,6 +7,7 @@ from pathlib import Path
 import typer
 
 from thermogear.cli.app import app, console, error_console, print_json
+from thermogear.report.terminal import interruptible
 from thermogear.errors import CaseError
 
 _MODELS = {"elastic": ("elastic",), "thermal": ("thermal",), "both": ("elastic", "thermal")}
@@ -65,7 +66,7 @@ def run(
     if out is not None:
         from thermogear.report.build import build_report, report_steps
 
-        with step_progress(report_steps(case), error_console, quiet or as_json) as advance:
+        with interruptible(out), step_progress(report_steps(case), error_console, quiet or as_json) as advance:
             outcome = build_report(case, out, force=force, method=method, paper=False, progress=advance)
         responses = {name: outcome.evaluation.responses[name] for name in models
                      if name in outcome.evaluation.responses}

@@ -10,7 +10,29 @@ from rich.table import Table
 
 from thermogear.report.paper_table import format_value
 
-__all__ = ["step_progress", "print_summary", "print_messages"]
+__all__ = ["interruptible", "step_progress", "print_summary", "print_messages"]
+
+
+@contextmanager
+def interruptible(target) -> Iterator[None]:
+    """Turn Ctrl-C / SIGTERM during a report into one line on stderr and exit status 130 (the output folder is
+    left as it was: see :class:`~thermogear.report.writer.OutputFolder`)."""
+    import signal
+    import sys
+
+    from thermogear.report.writer import Terminated
+
+    def terminate(signum, frame):
+        raise Terminated(f"terminated by signal {signum}")
+
+    previous = signal.signal(signal.SIGTERM, terminate)
+    try:
+        yield
+    except KeyboardInterrupt:
+        Console(stderr=True).print(f"interrupted: {target} was not written or replaced", highlight=False)
+        sys.exit(130)
+    finally:
+        signal.signal(signal.SIGTERM, previous)
 
 
 @contextmanager

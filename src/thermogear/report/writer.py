@@ -26,11 +26,7 @@ _SIGNALS = (signal.SIGINT, signal.SIGTERM)
 
 
 class Terminated(KeyboardInterrupt):
-    """Raised in the main thread when SIGTERM arrives, so that clean-up runs as for Ctrl-C."""
-
-
-def _raise_terminated(signum: int, frame: FrameType | None) -> None:
-    raise Terminated(f"terminated by signal {signum}")
+    """Raised in the main thread when SIGINT or SIGTERM arrives during a write, so that clean-up runs."""
 
 
 class OutputFolder:
@@ -41,7 +37,8 @@ class OutputFolder:
         self.force = force
         self.option = option
         self.path: Path | None = None
-        self._previous_handler = None
+        self.interrupted = False
+        self._previous_handlers: dict = {}
 
     def check(self) -> None:
         """Refuse an existing target without ``force`` (before any work is done)."""
@@ -58,21 +55,30 @@ class OutputFolder:
         umask = os.umask(0)
         os.umask(umask)
         os.chmod(self.path, 0o777 & ~umask)  # mkdtemp makes it private; the report folder is an ordinary folder
-        try:
-            self._previous_handler = signal.signal(signal.SIGTERM, _raise_terminated)
-        except ValueError:  # not the main thread: SIGTERM keeps its handler
-            self._previous_handler = None
+        for signum in _SIGNALS:
+            try:
+                self._previous_handlers[signum] = signal.signal(signum, self._on_signal)
+            except ValueError:  # not the main thread: the signal keeps its handler
+                pass
         return self
+
+    def _on_signal(self, signum: int, frame: FrameType | None) -> None:
+        # The flag makes the interruption stick even if some library code swallows the exception.
+        self.interrupted = True
+        raise Terminated(f"interrupted by signal {signum}")
 
     def __exit__(self, kind, error, traceback) -> bool:
         try:
             if kind is None:
+                if self.interrupted:
+                    raise Terminated("interrupted; the output folder was not replaced")
                 self._commit()
         finally:
             if self.path is not None and self.path.exists():
                 shutil.rmtree(self.path, ignore_errors=True)
-            if self._previous_handler is not None:
-                signal.signal(signal.SIGTERM, self._previous_handler)
+            for signum, handler in self._previous_handlers.items():
+                signal.signal(signum, handler)
+            self._previous_handlers.clear()
         return False
 
     def _commit(self) -> None:
@@ -94,4 +100,4 @@ class OutputFolder:
                 shutil.rmtree(old, ignore_errors=True)
         finally:
             if blocked:
-                signal.pthread_sigmask(signal.SIG_SETMASK, previous)
+                signal.pthread_sigmask(signal.SIG_SETMASK, previous)  # a pending signal is delivered here

@@ -1,0 +1,136 @@
+"""`thermogear reproduce luo2019` as a new user runs it: default folder, every file, one row per paper number,
+no silent overwrite, and an interrupted run leaves the previous output or none."""
+
+from __future__ import annotations
+
+import json
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+import thermogear
+from thermogear.report.paper_table import PAPER_ROWS
+
+FIGURES = ("fig3c", "fig4", "fig6", "fig7", "fig8", "fig9", "fig10", "fig11", "fig12")
+FIELDS = ("quantity", "paper", "thermogear", "unit", "deviation", "tolerance", "within", "note", "status", "reason")
+
+
+def _command(*args: str) -> list[str]:
+    return [sys.executable, "-m", "thermogear", *args]
+
+
+@pytest.fixture(scope="module")
+def default_run(tmp_path_factory):
+    """One run with no --out, in an empty working folder (the README's first command)."""
+    folder = tmp_path_factory.mktemp("user")
+    result = subprocess.run(_command("reproduce", "luo2019", "--quiet"), cwd=folder, capture_output=True, text=True,
+                            timeout=300)
+    assert result.returncode == 0, result.stderr
+    return folder / "thermogear-luo2019", result
+
+
+def test_default_folder_has_every_file(default_run):
+    out, _ = default_run
+    assert (out / "report.html").is_file() and (out / "summary.json").is_file() and (out / "results.nc").is_file()
+    for name in FIGURES:
+        assert (out / "figures" / f"{name}.png").stat().st_size > 10_000, name
+        assert (out / "figures" / f"{name}.svg").is_file(), name
+    assert not list(out.parent.glob(".thermogear-luo2019.*")), "temporary folders left behind"
+
+
+def test_summary_has_one_row_per_paper_number(default_run):
+    out, _ = default_run
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["thermogear_version"] == thermogear.__version__
+    keys = [row["key"] for row in summary["table"]]
+    assert keys == [row.key for row in PAPER_ROWS]  # none missing, none added, same order
+    for row in summary["table"]:
+        for field in FIELDS:
+            assert field in row, (row["key"], field)
+        if row["status"] == "not computed":
+            assert row["reason"], row["key"]
+            assert not row["required"], f"required row not computed: {row['key']}"
+        else:
+            assert row["within"] in (True, False)
+    assert summary["table_counts"]["within"] >= 100
+    assert {"elastic", "thermal"} <= set(summary["models"])
+    assert any("Luo" in ref["text"] for ref in summary["references"])
+
+
+def test_results_file_carries_curves_case_and_version(default_run):
+    import xarray as xr
+
+    out, _ = default_run
+    with xr.open_dataset(out / "results.nc", engine="h5netcdf") as root:
+        assert root.attrs["thermogear_version"] == thermogear.__version__
+        assert "[gears]" in root.attrs["case_toml"] and root.attrs["case_name"] == "luo2019"
+        assert root["thermal_pair_stiffness"].size > 100
+        assert float((root["thermal_pair_stiffness"] < root["elastic_pair_stiffness"]).mean()) == 1.0
+    for group in ("elastic_steady", "thermal_steady", "elastic_transient", "thermal_transient"):
+        with xr.open_dataset(out / "results.nc", engine="h5netcdf", group=group) as data:
+            assert data["displacement"].size > 10, group
+
+
+def test_report_is_self_contained(default_run):
+    out, _ = default_run
+    page = (out / "report.html").read_text()
+    assert page.count("src='data:image/png;base64,") == len(FIGURES)
+    assert "<script" not in page and "src='http" not in page and 'href="http' not in page
+    assert "References" in page and "Assumptions" in page
+
+
+def test_existing_folder_is_not_overwritten(default_run):
+    out, _ = default_run
+    before = (out / "summary.json").read_text()
+    result = subprocess.run(_command("reproduce", "luo2019", "--out", str(out), "--quiet"), capture_output=True,
+                            text=True, timeout=120)
+    assert result.returncode == 2
+    assert "--force" in result.stderr
+    assert (out / "summary.json").read_text() == before
+
+
+def _interrupt(out: Path, signum: int, extra: tuple[str, ...] = ()) -> int:
+    """Start a run into ``out`` and send ``signum`` once its temporary folder exists (mid-write)."""
+    process = subprocess.Popen(_command("reproduce", "luo2019", "--out", str(out), "--quiet", *extra),
+                               stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    deadline = time.monotonic() + 120
+    while time.monotonic() < deadline and process.poll() is None:
+        if list(out.parent.glob(f".{out.name}.partial-*")):
+            break
+        time.sleep(0.02)
+    if process.poll() is None:
+        os.kill(process.pid, signum)
+    process.communicate(timeout=120)
+    return process.returncode
+
+
+def test_sigint_keeps_previous_output(default_run, tmp_path):
+    source, _ = default_run
+    out = tmp_path / "report"
+    out.mkdir()
+    (out / "summary.json").write_text((source / "summary.json").read_text())
+    before = (out / "summary.json").read_text()
+    code = _interrupt(out, signal.SIGINT, ("--force",))
+    assert code != 0
+    assert (out / "summary.json").read_text() == before, "the previous output was changed"
+    assert not (out / "report.html").exists()
+    assert not list(tmp_path.glob(".report.*")), "temporary folder left behind"
+
+
+def test_sigterm_leaves_no_output(tmp_path):
+    out = tmp_path / "fresh"
+    code = _interrupt(out, signal.SIGTERM)
+    assert code != 0
+    assert not out.exists(), "an interrupted first run must leave no folder"
+    assert not list(tmp_path.glob(".fresh.*")), "temporary folder left behind"
+
+
+def test_unknown_paper_is_refused():
+    result = subprocess.run(_command("reproduce", "luo2018"), capture_output=True, text=True, timeout=120)
+    assert result.returncode == 2
+    assert "luo2019" in result.stderr

@@ -1,0 +1,90 @@
+"""`thermogear run CASE`: JSON per model (issue 5), the full report of any case (issue 6), and the words the CLI
+must say about contact loss and instability."""
+
+from __future__ import annotations
+
+import json
+import math
+import subprocess
+import sys
+from types import SimpleNamespace
+
+import pytest
+
+from thermogear.report.evaluate import model_messages
+
+KEYS = ("kv", "max_pair_load_n_per_mm", "max_system_load_ratio", "equilibrium_um", "amplitude_um",
+        "natural_frequency_hz", "frequency_ratio", "floquet_multipliers_abs")
+
+
+def _run(*args: str, cwd=None) -> subprocess.CompletedProcess:
+    return subprocess.run([sys.executable, "-m", "thermogear", "run", *args], capture_output=True, text=True,
+                          timeout=300, cwd=cwd)
+
+
+def test_json_has_every_key_per_model():
+    result = _run("luo2019", "--json")
+    assert result.returncode == 0, result.stderr
+    payload = json.loads(result.stdout)
+    assert set(payload["models"]) == {"elastic", "thermal"}
+    for model, data in payload["models"].items():
+        for key in KEYS:
+            assert key in data, (model, key)
+        assert set(data["equilibrium_um"]) == {"single", "double"}
+        assert set(data["amplitude_um"]) == {"single", "double"}
+        assert all(math.isfinite(v) for v in data["equilibrium_um"].values())
+        assert data["stable"] and data["valid"] and data["messages"] == []
+    # heat softens the mesh: larger static transmission error in both regions, lower natural frequency
+    elastic, thermal = payload["models"]["elastic"], payload["models"]["thermal"]
+    assert thermal["equilibrium_um"]["single"] > elastic["equilibrium_um"]["single"]
+    assert thermal["natural_frequency_hz"] < elastic["natural_frequency_hz"]
+
+
+def test_one_model_transient():
+    result = _run("luo2019", "--model", "thermal", "--method", "transient", "--json")
+    assert result.returncode == 0, result.stderr
+    payload = json.loads(result.stdout)
+    assert list(payload["models"]) == ["thermal"] and payload["method"] == "transient"
+    assert payload["models"]["thermal"]["method"].startswith("transient")
+
+
+def test_table_output_and_bad_option():
+    result = _run("fzg_type_c", "--model", "elastic")
+    assert result.returncode == 0, result.stderr
+    assert "Kv" in result.stdout and "equilibrium, single" in result.stdout
+    bad = _run("fzg_type_c", "--model", "thermic")
+    assert bad.returncode == 2 and "elastic | thermal | both" in bad.stderr
+
+
+def test_report_of_any_case_is_complete(tmp_path):
+    out = tmp_path / "fzg"
+    result = _run("fzg_type_c", "--out", str(out), "--quiet")
+    assert result.returncode == 0, result.stderr
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["table"] == []  # no paper column for a user's case
+    assert summary["case"]["name"] == "fzg_type_c"
+    assert summary["not_computed_stages"] == {}, summary["not_computed_stages"]
+    assert summary["figures"]["missing"] == {} or set(summary["figures"]["missing"]) <= {"fig15"}
+    quantities = [row["quantity"] for row in summary["results"]]
+    assert "dynamic load factor Kv (Eq. 29)" in quantities
+    for row in summary["results"]:
+        assert row["elastic"] is not None or row["thermal"] is not None, row["quantity"]
+    page = (out / "report.html").read_text()
+    assert page.count("src='data:image/png;base64,") == 9
+    assert "paper vs thermogear" not in page and "FZG type C" in page
+    assert (out / "results.nc").stat().st_size > 0
+
+
+def _fake_response(detected: bool, stable: bool):
+    metrics = {"contact_loss": {"detected": detected, "start_times": [2.0e-4], "durations": [1.5e-4],
+                                "min_force": -1200.0, "min_force_ratio": -0.12},
+               "stable": stable, "floquet_multipliers_abs": [1.07, 0.2]}
+    return SimpleNamespace(metrics=metrics, problem=SimpleNamespace(period=1.0e-3))
+
+
+def test_contact_loss_and_instability_are_said_in_words():
+    assert model_messages(_fake_response(False, True), "elastic") == []
+    loss, = model_messages(_fake_response(True, True), "thermal")
+    assert "CONTACT LOSS" in loss and "0.200 ms" in loss and "0.150 ms" in loss and "-12 %" in loss
+    unstable, = model_messages(_fake_response(False, False), "elastic")
+    assert "UNSTABLE" in unstable and "1.07" in unstable
