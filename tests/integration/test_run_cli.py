@@ -88,3 +88,16 @@ def test_contact_loss_and_instability_are_said_in_words():
     assert "CONTACT LOSS" in loss and "0.200 ms" in loss and "0.150 ms" in loss and "-12 %" in loss
     unstable, = model_messages(_fake_response(False, False), "elastic")
     assert "UNSTABLE" in unstable and "1.07" in unstable
+
+
+def test_user_guide_case_file_runs(tmp_path):
+    """The minimal case file of docs/user-guide.md loads and runs as written."""
+    import re
+    from pathlib import Path
+
+    guide = (Path(__file__).resolve().parents[2] / "docs" / "user-guide.md").read_text(encoding="utf-8")
+    case_file = tmp_path / "my_pair.toml"
+    case_file.write_text(re.search(r"```toml\n(.*?)```", guide, re.S).group(1), encoding="utf-8")
+    result = _run(str(case_file), "--json")
+    assert result.returncode == 0, result.stderr
+    assert set(json.loads(result.stdout)["models"]) == {"elastic", "thermal"}

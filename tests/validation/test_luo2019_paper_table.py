@@ -129,3 +129,17 @@ def test_damping_ratio_holds_in_both_regions(values):
     for region, ratio in values["_damping_ratio"].items():
         assert abs(ratio - 1.68) <= 0.08, region
     assert np.isfinite(values["_steady_load_ratio"])
+
+
+def test_generated_docs_are_up_to_date():
+    """docs/validation.md and docs/case-file-reference.md are generated from this table and the schema."""
+    import importlib.util
+    from pathlib import Path
+
+    path = Path(__file__).resolve().parents[2] / "docs" / "generate.py"
+    spec = importlib.util.spec_from_file_location("thermogear_docs_generate", path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    stale = [name for name, text in module.pages().items()
+             if (path.parent / name).read_text(encoding="utf-8") != text]
+    assert not stale, f"out of date: {stale}; run `python docs/generate.py` and commit the pages"

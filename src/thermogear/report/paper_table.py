@@ -174,6 +174,8 @@ class Verdict:
     def deviation_text(self) -> str:
         if self.deviation is None:
             return "—"
+        if abs(self.deviation) < 5e-4:
+            return "0.0 %"
         return f"{self.deviation * 100:+.1f} %"
 
     @property
