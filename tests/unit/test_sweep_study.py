@@ -152,3 +152,34 @@ def test_block_batch_equals_block_simulation(luo):
         assert np.all(np.abs(fast[name][both] - slow[name][both]) <= 1e-9 * np.abs(slow[name][both])), name
     # heavier load: larger static deflection, larger max pair load
     assert np.all(fast["max_pair_load"][:, 1, :] > fast["max_pair_load"][:, 0, :])
+
+
+# ------------------------------------------------------------------------------------------- resonance
+def test_luo2019_resonance_where_the_natural_frequency_predicts_it(luo, tmp_path):
+    """Speed sweep of luo2019 through the main mesh resonance (f_m = f_n, n1 = 60 f_n / z1).
+
+    The mesh is lightly damped, so the response is parametrically unstable in a band around the resonance; the
+    band's centre must lie within 3 % of the prediction from the time-mean stiffness (the stiffness fluctuation
+    of k(τ), ~10 % peak to peak, shifts and widens the tongue at second order), and the thermal band must sit
+    lower by the ratio of the natural frequencies, sqrt(mean k_T / mean k_e), within 1 % (the same argument,
+    applied to both models)."""
+    import matplotlib
+
+    from thermogear.sweep import Study, run_study
+    from thermogear.sweep.plots import find_resonance, plot_speed_response
+
+    study = Study.define(luo, ["speed_rpm=10000:15500:221"], chunk_points=256)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        data = run_study(study, tmp_path / "r.zarr", scheduler="serial", progress=False).dataset
+    elastic = find_resonance(data, "elastic")
+    thermal = find_resonance(data, "thermal")
+    for found in (elastic, thermal):
+        assert abs(found["relative_offset"]) < 0.03, found
+    stiffness_ratio = float(data["mean_mesh_stiffness"].sel(model="thermal").mean()
+                            / data["mean_mesh_stiffness"].sel(model="elastic").mean())
+    assert stiffness_ratio < 0.95  # the thermal model is softer
+    assert thermal["speed_rpm"] / elastic["speed_rpm"] == pytest.approx(stiffness_ratio**0.5, rel=0.01)
+    figure = plot_speed_response(data)
+    assert len(figure.axes) == 4
+    matplotlib.pyplot.close(figure)

@@ -12,7 +12,8 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["QUANTITY_LABELS", "plot_map", "plot_speed_response", "resonance_peaks", "resonance_speeds"]
+__all__ = ["QUANTITY_LABELS", "find_resonance", "plot_map", "plot_speed_response", "resonance_peaks",
+           "resonance_speeds", "unstable_bands"]
 
 #: Axis labels and display scale of the plotted quantities.
 QUANTITY_LABELS: dict[str, tuple[str, float]] = {
@@ -79,6 +80,49 @@ def resonance_peaks(dataset, model: str, quantity: str = "kv", select: dict[str,
     return peaks
 
 
+def unstable_bands(dataset, model: str, select: dict[str, Any] | None = None) -> list[tuple[float, float]]:
+    """Speed ranges [rpm] (first and last swept speed) where the model has no stable periodic steady state
+    (parametric instability: a Floquet multiplier of modulus >= 1)."""
+    picked, _ = _select(dataset, select, keep=(SPEED,))
+    unstable = np.asarray(picked["stable"].sel(model=model)) == 0
+    speeds = np.asarray(picked[SPEED], dtype=float)
+    bands, start = [], None
+    for index, flag in enumerate(unstable):
+        if flag and start is None:
+            start = index
+        if start is not None and (not flag or index == unstable.size - 1):
+            stop = index if flag else index - 1
+            bands.append((float(speeds[start]), float(speeds[stop])))
+            start = None
+    return bands
+
+
+def find_resonance(dataset, model: str, order: int = 1, quantity: str = "kv",
+                   select: dict[str, Any] | None = None) -> dict[str, Any]:
+    """The resonance of one mesh-frequency order in a speed sweep, beside its prediction n_j = 60·f_n/(z1·j).
+
+    Where the response is parametrically unstable near the prediction (lightly damped mesh: the instability
+    tongue around j·f_m = f_n), the resonance is the centre of that unstable band; otherwise the largest value
+    of ``quantity`` within ±25 % of the prediction.
+    """
+    predicted = resonance_speeds(dataset, model, (order,), select=select)[order]
+    bands = [b for b in unstable_bands(dataset, model, select) if b[0] <= 1.25 * predicted and b[1] >= 0.75 * predicted]
+    if bands:
+        band = min(bands, key=lambda b: abs(0.5 * (b[0] + b[1]) - predicted))
+        found, kind = 0.5 * (band[0] + band[1]), "unstable band"
+    else:
+        picked, _ = _select(dataset, select, keep=(SPEED,))
+        speeds = np.asarray(picked[SPEED], dtype=float)
+        values = np.asarray(picked[quantity].sel(model=model), dtype=float)
+        window = (speeds >= 0.75 * predicted) & (speeds <= 1.25 * predicted) & np.isfinite(values)
+        if not np.any(window):
+            raise ValueError(f"no swept speed within 25 % of the predicted resonance {predicted:.1f} rpm")
+        index = np.flatnonzero(window)[np.argmax(values[window])]
+        found, kind, band = float(speeds[index]), f"maximum of {quantity}", None
+    return {"model": model, "order": order, "predicted_speed_rpm": predicted, "speed_rpm": found, "kind": kind,
+            "band_rpm": band, "relative_offset": found / predicted - 1.0}
+
+
 def plot_speed_response(dataset, quantities=("kv", "dte_rms", "dte_peak_to_peak", "max_system_load_ratio"),
                         select: dict[str, Any] | None = None, orders=(1, 2, 3), ax=None):
     """Quantities against pinion speed, elastic and thermal on the same axes, resonance orders marked.
@@ -109,14 +153,20 @@ def plot_speed_response(dataset, quantities=("kv", "dte_rms", "dte_peak_to_peak"
             style = _MODEL_STYLE.get(str(model), {})
             axis.plot(speeds, np.asarray(picked[quantity].sel(model=model), dtype=float) * scale,
                       label=str(model), **style)
+            for low, high in unstable_bands(dataset, str(model), select=chosen):
+                axis.axvspan(low, high, color=style.get("color", "grey"), alpha=0.12, linewidth=0)
             for order, speed in resonance_speeds(dataset, str(model), orders, select=chosen).items():
                 if speeds.min() <= speed <= speeds.max():
                     axis.axvline(speed, color=style.get("color", "grey"), linewidth=0.6, alpha=0.5, linestyle=":")
                     axis.annotate(f"{order}·f_m = f_n", (speed, 1.0), xycoords=("data", "axes fraction"),
                                   rotation=90, va="top", ha="right", fontsize=7, color=style.get("color", "grey"))
         axis.set_ylabel(label)
+        finite = np.asarray(picked[quantity], dtype=float)
+        finite = finite[np.isfinite(finite) & (finite > 0)]
+        if finite.size and finite.max() > 50.0 * np.median(finite):
+            axis.set_yscale("log")
         axis.grid(True, alpha=0.3)
-    axes[0].legend(loc="upper left", fontsize=8)
+    axes[0].legend(loc="upper left", fontsize=8, title="shaded: unstable", title_fontsize=7)
     axes[-1].set_xlabel("pinion speed [rpm]")
     if chosen:
         axes[0].set_title(", ".join(f"{k} = {v:g}" if isinstance(v, (int, float, np.number)) else f"{k} = {v}"
