@@ -17,7 +17,7 @@ color:#1d232a;line-height:1.45}
 h1{font-size:1.6em;margin-bottom:.2em}h2{border-bottom:2px solid #dde3ea;padding-bottom:.2em;margin-top:2em}
 .meta{color:#56606b;font-size:.92em}table{border-collapse:collapse;width:100%;font-size:.86em;margin:.6em 0}
 th,td{border:1px solid #d5dbe1;padding:3px 6px;vertical-align:top}th{background:#eef2f6;text-align:left}
-td.num{text-align:right;font-variant-numeric:tabular-nums;white-space:nowrap}
+td.num{text-align:right;font-variant-numeric:tabular-nums;white-space:nowrap}td.nc{max-width:18em}
 tr.within td.status{background:#e3f4e6}tr.outside td.status{background:#fde2e1}
 tr.notcomputed td.status{background:#fff3cd}.badge{display:inline-block;padding:.15em .6em;border-radius:1em;
 margin-right:.4em;font-weight:600}.b-within{background:#e3f4e6}.b-outside{background:#fde2e1}
@@ -97,14 +97,15 @@ def _paper_section(verdicts) -> str:
     for v in verdicts:
         row = v.row
         css = v.status.replace(" ", "")
-        value = _num(v.value) if v.computed else f"not computed: {_e(v.reason)}"
+        value = _num(v.value) if v.computed else f"<span class='small'>not computed: {_e(v.reason)}</span>"
+        value_class = "num" if v.computed else "nc"
         note = row.note
         if v.computed and v.reason:
             note = f"{note} {v.reason}".strip()
         rows.append(
             f"<tr class='{css}' id='row-{_e(row.key)}'><td>{_e(row.quantity)}<br><span class='small'>{_e(row.section)}"
             f" · {_e(row.kind)} · <code>{_e(row.key)}</code></span></td><td class='num'>{_e(row.paper_text)}</td>"
-            f"<td class='num'>{value}</td><td>{_e(row.unit)}</td><td class='num'>{_e(v.deviation_text)}</td>"
+            f"<td class='{value_class}'>{value}</td><td>{_e(row.unit)}</td><td class='num'>{_e(v.deviation_text)}</td>"
             f"<td>{_e(row.tolerance_text)}<details><summary class='small'>why</summary><span class='small'>"
             f"{_e(row.argument)}</span></details></td><td class='status'>{_e(v.status)}</td>"
             f"<td class='small'>{_e(note)}</td></tr>")
