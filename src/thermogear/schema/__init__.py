@@ -8,6 +8,7 @@ from thermogear.schema.base import Section
 from thermogear.schema.dynamics import DampingSection, DynamicsSection
 from thermogear.schema.gears import GearSection, GearsSection, MaterialSection, OperatingSection
 from thermogear.schema.lubricant import LubricantSection
+from thermogear.schema.sweep import SweepSection
 from thermogear.schema.temperature import TemperatureSection
 from thermogear.schema.thermal import ThermalSection
 
@@ -33,7 +34,8 @@ class CaseFile(Section):
     thermal: ThermalSection = ThermalSection()
     damping: DampingSection = DampingSection()
     dynamics: DynamicsSection = DynamicsSection()
+    sweep: SweepSection | None = None
 
 
 __all__ = ["CaseFile", "CaseInfo", "DampingSection", "DynamicsSection", "GearSection", "GearsSection",
-           "LubricantSection", "MaterialSection", "OperatingSection", "TemperatureSection", "ThermalSection"]
+           "LubricantSection", "MaterialSection", "OperatingSection", "SweepSection", "TemperatureSection", "ThermalSection"]
