@@ -25,6 +25,9 @@ KNOWN_GAPS = {
     "fig4.crossing_near_root": "no driving-tooth crossing (see fig4.single_tooth_crossings)",
     "fig4.thermal_higher_root_side": "driving-tooth root compliance change positive (docs/thermal.md)",
     "fig4.driving_compliance_root": "root-flank expansion 1.8–1.9 × smaller than the paper needs (docs/thermal.md)",
+    "fig9.amplitude_change_double": "the double-region amplitude is dominated by the jump between the two "
+                                    "equilibria, which grows under heat; the paper's -5.5 % contradicts its own "
+                                    "equilibria (table note)",
     "fig11.thermal_peak_velocity_larger": "thermogear's damping is 1.6–1.7 × the paper's (physics.md §1.6); the "
                                           "larger thermal damping outweighs the softer thermal stiffness",
 }
@@ -120,6 +123,17 @@ def test_known_gap_bound(key, evaluation, values):
         ratio = peak["thermal"] / peak["elastic"]
         stiffness = {m: evaluation.simulations[m].mesh_stiffness_mean for m in ("elastic", "thermal")}
         assert 0.85 <= ratio <= math.sqrt(stiffness["elastic"] / stiffness["thermal"])
+    elif key == "fig9.amplitude_change_double":
+        # Entering the double region the displacement starts at the single-region level and falls to the
+        # double-region equilibrium; with the transient of the previous transition decayed (multipliers < 1e-3 per
+        # period) the peak - equilibrium equals that level difference within 10 %, in both models, so the
+        # thermal/elastic amplitude ratio follows the ratio of the equilibrium jumps.
+        for model in ("elastic", "thermal"):
+            metrics = evaluation.responses[model].metrics
+            jump = metrics["equilibrium_per_region"]["single"] - metrics["equilibrium_per_region"]["double"]
+            amplitude = metrics["amplitude_per_region"]["double"]
+            assert amplitude == pytest.approx(jump, rel=0.10), model
+        assert values["fig9.amplitude_change_double"] > 0.0  # the jump grows with the equilibria under heat
     else:  # pragma: no cover - every gap needs its bound
         pytest.fail(f"no bound written for known gap {key}")
 

@@ -24,7 +24,7 @@ from thermogear.cli import run  # noqa: E402,F401
 def main() -> None:
     """Console-script entry point: run the app, turn thermogear errors into one clear line and exit 2."""
     try:
-        app(standalone_mode=False)
+        status = app(standalone_mode=False)
     except ThermogearError as error:
         error_console.print(f"[bold red]error:[/] {error}", highlight=False)
         sys.exit(2)
@@ -41,6 +41,8 @@ def main() -> None:
             error.show()
             sys.exit(error.exit_code)
         raise
+    # without standalone mode click returns the exit code of an Exit/Abort instead of exiting with it
+    sys.exit(status if isinstance(status, int) else 0)
 
 
 __all__ = ["app", "main"]
