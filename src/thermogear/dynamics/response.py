@@ -1,0 +1,433 @@
+"""Dynamic response of the mesh over one period: loads, metrics (Kv, Eq. 29), spectra, plots, netCDF.
+
+Definitions (Luo & Li 2020 §4, physics.md §1.2 and §1.5):
+
+* dynamic transmission error (DTE): x(τ) [m];
+* static transmission error / equilibrium on an interval: w/k [m]; per region (single, double, … contact) the
+  time-mean of w/k over the intervals of that region;
+* amplitude per region: the largest x in the region minus the region's equilibrium (the paper's "peak minus
+  equilibrium") [m]; ``deviation_per_region`` gives max |x − equilibrium| as well;
+* dynamic load (the paper's definition): system k(τ)·x(τ), pair p: k_p(τ)·x(τ); with
+  ``include_damping_force`` the damping force c·ẋ (c_p·ẋ) is added;
+* Kv = 1 + Δw/w0, Δw = max single-pair dynamic load − w0, w0 = static load w (Eq. 29), so Kv = max pair load/w0;
+* max system load ratio = max system dynamic load / w0;
+* contact loss: the mesh force k·x (+ c·ẋ) < 0 somewhere; the tooth cannot pull, the linear model no longer
+  holds and the response is marked invalid (``valid`` False, a :class:`ModelAssumptionWarning`).
+
+Maxima include both one-sided limits at the nodes, where k and c jump while x and ẋ are continuous.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import tempfile
+import warnings
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from thermogear.dynamics.periodic import PeriodicOrbit, evaluate_orbit, floquet_multipliers
+from thermogear.dynamics.problem import MeshDynamicsProblem, region_name
+from thermogear.dynamics.spectra import harmonic_spectrum, one_sided_amplitudes, uniform_period_grid
+from thermogear.dynamics.transient import TransientHistory
+from thermogear.errors import CaseError, ModelAssumptionWarning, ModelLimitError
+
+__all__ = ["DynamicResponse", "compute_metrics", "response_from_orbit", "response_from_transient"]
+
+_QUANTITIES = ("displacement", "velocity", "system_load", "pair_load")
+
+
+def _left_limit_index(interval: np.ndarray) -> np.ndarray:
+    """Sample indices where the interval changes (nodes inside the record)."""
+    return np.flatnonzero(interval[1:] != interval[:-1]) + 1
+
+
+def _load(stiffness: np.ndarray, damping: np.ndarray, interval: np.ndarray, x: np.ndarray, v: np.ndarray,
+          include_damping_force: bool) -> np.ndarray:
+    """k·x (+ c·ẋ) with coefficients taken on ``interval`` (last axis = samples)."""
+    load = stiffness[..., interval] * x
+    if include_damping_force:
+        load = load + damping[..., interval] * v
+    return load
+
+
+def _load_with_left_limits(stiffness: np.ndarray, damping: np.ndarray, interval: np.ndarray, x: np.ndarray,
+                           v: np.ndarray, include_damping_force: bool) -> np.ndarray:
+    """Loads at the samples followed by the left limits at the interior nodes (for maxima and minima)."""
+    right = _load(stiffness, damping, interval, x, v, include_damping_force)
+    nodes = _left_limit_index(interval)
+    left = _load(stiffness, damping, interval[nodes - 1], x[nodes], v[nodes], include_damping_force)
+    return np.concatenate([right, left], axis=-1)
+
+
+def _contact_loss(time: np.ndarray, force: np.ndarray, minimum: float, static_load: float) -> dict[str, Any]:
+    """Runs of negative mesh force: start times [s], durations [s], the minimum force [N]."""
+    negative = force < 0.0
+    detected = bool(minimum < 0.0)
+    starts: list[float] = []
+    durations: list[float] = []
+    if np.any(negative):
+        edges = np.diff(np.concatenate([[0], negative.astype(np.int8), [0]]))
+        first = np.flatnonzero(edges == 1)
+        last = np.flatnonzero(edges == -1) - 1
+        for a, b in zip(first, last, strict=True):
+            # the crossing lies between a sample and its neighbour: linear interpolation of the force
+            t_start = time[a]
+            if a > 0 and force[a - 1] > 0.0:
+                t_start = time[a - 1] + (time[a] - time[a - 1]) * force[a - 1] / (force[a - 1] - force[a])
+            t_end = time[b]
+            if b + 1 < time.size and force[b + 1] > 0.0:
+                t_end = time[b] + (time[b + 1] - time[b]) * force[b] / (force[b] - force[b + 1])
+            starts.append(float(t_start))
+            durations.append(float(t_end - t_start))
+    return {"detected": detected, "start_times": starts, "durations": durations,
+            "total_duration": float(sum(durations)), "min_force": float(minimum),
+            "min_force_ratio": float(minimum / static_load)}
+
+
+def compute_metrics(problem: MeshDynamicsProblem, time: np.ndarray, displacement: np.ndarray,
+                    velocity: np.ndarray, interval: np.ndarray, multipliers: np.ndarray,
+                    include_damping_force: bool = False) -> dict[str, Any]:
+    """Metrics of one steady period (time from 0 to T, both ends sampled); see the module docstring."""
+    x, v = displacement, velocity
+    w0 = problem.static_load
+    period = problem.period
+    system = _load_with_left_limits(problem.stiffness, problem.damping, interval, x, v, include_damping_force)
+    system_right = system[: x.size]
+    max_system = float(np.max(system))
+    metrics: dict[str, Any] = {"static_load": w0, "static_load_n_per_mm": w0 / problem.face_width / 1e3}
+
+    pair = problem.pair_arrays()
+    if pair is not None:
+        pair_loads = _load_with_left_limits(pair[0], pair[1], interval, x, v, include_damping_force)
+        max_pair = float(np.max(pair_loads))
+        basis = "pair_loads"
+    else:
+        single = problem.contact_count == 1
+        if np.any(single):
+            # one pair in contact carries the whole mesh force: there the pair load is the system load
+            in_single = single[interval]
+            nodes = _left_limit_index(interval)
+            in_single_left = single[interval[nodes - 1]]
+            mask = np.concatenate([in_single, in_single_left])
+            max_pair = float(np.max(system[mask]))
+            basis = "system_load_in_single_contact"
+        else:
+            max_pair = None
+            basis = "unavailable: no pair stiffness and no single-contact interval"
+    metrics["kv"] = None if max_pair is None else max_pair / w0
+    metrics["kv_basis"] = basis
+    metrics["max_pair_load"] = max_pair
+    metrics["max_pair_load_n_per_mm"] = None if max_pair is None else max_pair / problem.face_width / 1e3
+    metrics["max_system_load"] = max_system
+    metrics["max_system_load_n_per_mm"] = max_system / problem.face_width / 1e3
+    metrics["max_system_load_ratio"] = max_system / w0
+
+    static_te = problem.static_transmission_error
+    durations = problem.durations
+    equilibrium: dict[str, float] = {}
+    amplitude: dict[str, float] = {}
+    deviation: dict[str, float] = {}
+    region_of_sample = problem.contact_count[interval]
+    nodes = _left_limit_index(interval)
+    for count in problem.regions:
+        name = region_name(count)
+        in_region = problem.contact_count == count
+        level = float(np.dot(static_te[in_region], durations[in_region]) / durations[in_region].sum())
+        mask = region_of_sample == count
+        mask[nodes] |= problem.contact_count[interval[nodes - 1]] == count  # right end of a region interval
+        equilibrium[name] = level
+        amplitude[name] = float(np.max(x[mask]) - level)
+        deviation[name] = float(np.max(np.abs(x[mask] - level)))
+    metrics["equilibrium_per_region"] = equilibrium
+    metrics["amplitude_per_region"] = amplitude
+    metrics["deviation_per_region"] = deviation
+
+    mean_x = float(np.trapezoid(x, time) / period)
+    metrics["dte_mean"] = mean_x
+    metrics["dte_rms"] = float(np.sqrt(max(np.trapezoid((x - mean_x) ** 2, time) / period, 0.0)))
+    metrics["dte_peak_to_peak"] = float(np.max(x) - np.min(x))
+    metrics["max_velocity"] = float(np.max(np.abs(v)))
+    metrics["natural_frequency_hz"] = problem.natural_frequency
+    metrics["mesh_frequency_hz"] = problem.mesh_frequency
+    metrics["frequency_ratio"] = problem.frequency_ratio
+    moduli = np.sort(np.abs(np.asarray(multipliers)))[::-1]
+    metrics["floquet_multipliers_abs"] = [float(m) for m in moduli]
+    metrics["stable"] = bool(moduli[0] < 1.0)
+    loss = _contact_loss(time, system_right, float(np.min(system)), w0)
+    metrics["contact_loss"] = loss
+    metrics["valid"] = bool(metrics["stable"] and not loss["detected"])
+    _check_finite(metrics)
+    return metrics
+
+
+def _check_finite(value: Any, key: str = "metrics") -> None:
+    if isinstance(value, dict):
+        for name, item in value.items():
+            _check_finite(item, f"{key}.{name}")
+    elif isinstance(value, list | tuple):
+        for item in value:
+            _check_finite(item, key)
+    elif isinstance(value, float) and not np.isfinite(value):
+        raise ModelLimitError(f"{key} is not finite ({value}); the model is out of its numerical range")
+
+
+def _jsonable(value: Any) -> Any:
+    if isinstance(value, dict):
+        return {str(k): _jsonable(v) for k, v in value.items()}
+    if isinstance(value, list | tuple):
+        return [_jsonable(v) for v in value]
+    if isinstance(value, np.generic):
+        return value.item()
+    return value
+
+
+@dataclass(frozen=True)
+class DynamicResponse:
+    """Steady dynamic response over one mesh period, its metrics, and optionally the whole transient.
+
+    ``time`` [s] from 0 to T, ``displacement`` x [m], ``velocity`` ẋ [m/s], ``interval`` the interval of each
+    sample. ``history`` is the full transient when the response was built from one (plots show the start-up).
+    ``valid`` is False when the linear model does not hold (contact loss or instability); ``warnings`` says why.
+    """
+
+    problem: MeshDynamicsProblem
+    time: np.ndarray
+    displacement: np.ndarray
+    velocity: np.ndarray
+    method: str
+    include_damping_force: bool
+    metrics: dict[str, Any]
+    interval: np.ndarray
+    multipliers: np.ndarray
+    history: TransientHistory | None = None
+    initial_state: tuple[float, float] | None = None
+    label: str = ""
+    warnings: tuple[str, ...] = field(default=())
+
+    # ------------------------------------------------------------------ basic views
+    @property
+    def valid(self) -> bool:
+        """True when the linear model holds: stable and no contact loss."""
+        return bool(self.metrics["valid"])
+
+    @property
+    def stiffness(self) -> np.ndarray:
+        """k at each sample [N/m] (right-continuous at nodes)."""
+        return self.problem.stiffness[self.interval]
+
+    @property
+    def damping(self) -> np.ndarray:
+        """c at each sample [N·s/m]."""
+        return self.problem.damping[self.interval]
+
+    @property
+    def contact_count(self) -> np.ndarray:
+        """Pairs in contact at each sample."""
+        return self.problem.contact_count[self.interval]
+
+    @property
+    def static_transmission_error(self) -> np.ndarray:
+        """w/k at each sample [m] (the equilibrium the response oscillates about)."""
+        return self.problem.static_transmission_error[self.interval]
+
+    def system_load(self) -> np.ndarray:
+        """System dynamic load k·x (+ c·ẋ) at each sample [N] (right-continuous at nodes)."""
+        return _load(self.problem.stiffness, self.problem.damping, self.interval, self.displacement,
+                     self.velocity, self.include_damping_force)
+
+    def pair_loads(self) -> np.ndarray:
+        """(slots, samples) pair dynamic loads k_p·x (+ c_p·ẋ) [N]; needs ``pair_stiffness`` in the problem."""
+        pair = self.problem.pair_arrays()
+        if pair is None:
+            raise CaseError("pair_stiffness", None, "a (slots, n) array", "pair loads need the stiffness of each pair")
+        return _load(pair[0], pair[1], self.interval, self.displacement, self.velocity, self.include_damping_force)
+
+    # ------------------------------------------------------------------ spectra
+    def spectrum(self, quantity: str = "displacement", points: int = 1024) -> tuple[np.ndarray, np.ndarray]:
+        """Harmonic amplitude spectrum of the steady period: (frequencies [Hz] = j·f_m, amplitudes [SI]).
+
+        ``quantity``: "displacement" [m], "velocity" [m/s], "system_load" [N] or "pair_load" [N] (2-D: slots).
+        The periodic orbit is evaluated exactly on a uniform grid (when the response holds its initial state);
+        otherwise x and ẋ are interpolated. Loads use k of the interval each grid time falls in.
+        """
+        if quantity not in _QUANTITIES:
+            raise CaseError("quantity", quantity, str(_QUANTITIES), "signal whose spectrum is asked for")
+        period = self.problem.period
+        if quantity in ("displacement", "velocity") and self.initial_state is None:
+            values = self.displacement if quantity == "displacement" else self.velocity
+            return harmonic_spectrum(self.time, values, period, points)
+        grid = uniform_period_grid(period, points)
+        if self.initial_state is not None:
+            x, v = evaluate_orbit(self.problem, self.initial_state, grid)
+        else:
+            x = np.interp(grid, self.time, self.displacement)
+            v = np.interp(grid, self.time, self.velocity)
+        interval = np.clip(np.searchsorted(self.problem.nodes, grid, side="right") - 1, 0,
+                           self.problem.interval_count - 1)
+        if quantity == "displacement":
+            values = x
+        elif quantity == "velocity":
+            values = v
+        elif quantity == "system_load":
+            values = _load(self.problem.stiffness, self.problem.damping, interval, x, v, self.include_damping_force)
+        else:
+            pair = self.problem.pair_arrays()
+            if pair is None:
+                raise CaseError("pair_stiffness", None, "a (slots, n) array", "pair loads need each pair's stiffness")
+            values = _load(pair[0], pair[1], interval, x, v, self.include_damping_force)
+        return np.arange(grid.size // 2 + 1) / period, one_sided_amplitudes(values)
+
+    # ------------------------------------------------------------------ plots (Luo & Li Figs. 9–12)
+    def plot_displacement(self, other: DynamicResponse | None = None, ax: Any = None, periods: int | None = None):
+        """Fig. 9: transmission error x(τ) with the static levels; returns the figure."""
+        from thermogear.dynamics.plots import plot_displacement
+
+        return plot_displacement(self, other=other, ax=ax, periods=periods)
+
+    def plot_phase(self, other: DynamicResponse | None = None, ax: Any = None, periods: int | None = None):
+        """Fig. 10: phase portrait ẋ against x; returns the figure."""
+        from thermogear.dynamics.plots import plot_phase
+
+        return plot_phase(self, other=other, ax=ax, periods=periods)
+
+    def plot_velocity(self, other: DynamicResponse | None = None, ax: Any = None, periods: int | None = None):
+        """Fig. 11: velocity ẋ(τ); returns the figure."""
+        from thermogear.dynamics.plots import plot_velocity
+
+        return plot_velocity(self, other=other, ax=ax, periods=periods)
+
+    def plot_loads(self, other: DynamicResponse | None = None, ax: Any = None, periods: int | None = None):
+        """Fig. 12: pair and system dynamic loads per unit face width [N/mm]; returns the figure."""
+        from thermogear.dynamics.plots import plot_loads
+
+        return plot_loads(self, other=other, ax=ax, periods=periods)
+
+    def plot_spectrum(self, quantity: str = "displacement", ax: Any = None, harmonics: int = 20):
+        """Bar chart of the harmonic amplitudes of ``quantity``; returns the figure."""
+        from thermogear.dynamics.plots import plot_spectrum
+
+        return plot_spectrum(self, quantity=quantity, ax=ax, harmonics=harmonics)
+
+    # ------------------------------------------------------------------ export
+    def metrics_json(self) -> dict[str, Any]:
+        """Metrics as plain JSON types, plus ``method``, ``label`` and ``warnings``."""
+        summary = _jsonable(self.metrics)
+        summary["method"] = self.method
+        summary["label"] = self.label
+        summary["include_damping_force"] = self.include_damping_force
+        summary["warnings"] = list(self.warnings)
+        return summary
+
+    def to_xarray(self):
+        """xarray Dataset: the steady period, the problem's coefficients, the history (if any), metrics in attrs."""
+        import xarray as xr
+
+        from thermogear import __version__
+
+        problem = self.problem
+        data_vars: dict[str, Any] = {
+            "displacement": ("time", self.displacement, {"units": "m", "long_name": "dynamic transmission error"}),
+            "velocity": ("time", self.velocity, {"units": "m/s"}),
+            "system_load": ("time", self.system_load(), {"units": "N", "long_name": "system dynamic load"}),
+            "static_transmission_error": ("time", self.static_transmission_error, {"units": "m"}),
+            "mesh_stiffness": ("time", self.stiffness, {"units": "N/m"}),
+            "mesh_damping": ("time", self.damping, {"units": "N s/m"}),
+            "interval_index": ("time", self.interval.astype(np.int64)),
+            "node_time": ("node", problem.nodes, {"units": "s"}),
+            "interval_stiffness": ("interval", problem.stiffness, {"units": "N/m"}),
+            "interval_damping": ("interval", problem.damping, {"units": "N s/m"}),
+            "interval_force": ("interval", problem.force_per_interval, {"units": "N"}),
+            "interval_contact_count": ("interval", problem.contact_count.astype(np.int64)),
+        }
+        if problem.pair_stiffness is not None:
+            data_vars["pair_load"] = (("slot", "time"), self.pair_loads(), {"units": "N"})
+            data_vars["interval_pair_stiffness"] = (("slot", "interval"), problem.pair_stiffness, {"units": "N/m"})
+        if self.history is not None:
+            data_vars["history_displacement"] = ("history_time", self.history.displacement, {"units": "m"})
+            data_vars["history_velocity"] = ("history_time", self.history.velocity, {"units": "m/s"})
+        coords: dict[str, Any] = {"time": ("time", self.time, {"units": "s"})}
+        if self.history is not None:
+            coords["history_time"] = ("history_time", self.history.time, {"units": "s"})
+        attrs: dict[str, Any] = {
+            "title": "thermogear mesh dynamic response",
+            "thermogear_version": __version__,
+            "method": self.method,
+            "label": self.label,
+            "include_damping_force": int(self.include_damping_force),
+            "valid": int(self.valid),
+            "mass_kg": problem.mass,
+            "face_width_m": problem.face_width,
+            "metrics_json": json.dumps(self.metrics_json()),
+        }
+        for key, value in self.metrics.items():
+            if isinstance(value, float):
+                attrs[key] = value
+        return xr.Dataset(data_vars=data_vars, coords=coords, attrs=attrs)
+
+    def save(self, path: str | os.PathLike) -> Path:
+        """Write :meth:`to_xarray` to netCDF (h5netcdf), atomically: a temporary file, then ``os.replace``."""
+        target = Path(path)
+        target.parent.mkdir(parents=True, exist_ok=True)
+        dataset = self.to_xarray()
+        handle, temporary = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=target.parent)
+        os.close(handle)
+        try:
+            dataset.to_netcdf(temporary, engine="h5netcdf")
+            os.replace(temporary, target)
+        finally:
+            if os.path.exists(temporary):
+                os.remove(temporary)
+        return target
+
+
+def _warn(problem: MeshDynamicsProblem, metrics: dict[str, Any]) -> tuple[str, ...]:
+    messages = []
+    if not metrics["stable"]:
+        messages.append(f"parametric instability: Floquet multiplier moduli {metrics['floquet_multipliers_abs']} "
+                        "(one is >= 1); the response grows and has no steady state")
+    loss = metrics["contact_loss"]
+    if loss["detected"]:
+        starts = ", ".join(f"{t * 1e6:.2f} μs" for t in loss["start_times"][:5])
+        lengths = ", ".join(f"{d * 1e6:.2f} μs" for d in loss["durations"][:5])
+        messages.append(f"contact loss: the mesh force turns negative (minimum {loss['min_force']:.4g} N, "
+                        f"{loss['min_force_ratio']:.3g} × the static load) starting at τ = {starts} for {lengths} "
+                        f"(in all {loss['total_duration'] / problem.period:.1%} of the mesh period); the teeth would "
+                        "separate, so the linear model and its loads do not hold there")
+    for message in messages:
+        warnings.warn(message, ModelAssumptionWarning, stacklevel=3)
+    return tuple(messages)
+
+
+def response_from_orbit(problem: MeshDynamicsProblem, orbit: PeriodicOrbit, include_damping_force: bool = False,
+                        label: str = "") -> DynamicResponse:
+    """Response of the exact periodic steady state (from :func:`periodic_steady_state`)."""
+    metrics = compute_metrics(problem, orbit.time, orbit.displacement, orbit.velocity, orbit.interval,
+                              orbit.multipliers, include_damping_force)
+    return DynamicResponse(problem=problem, time=orbit.time, displacement=orbit.displacement,
+                           velocity=orbit.velocity, method=orbit.method,
+                           include_damping_force=bool(include_damping_force), metrics=metrics,
+                           interval=orbit.interval, multipliers=orbit.multipliers, history=None,
+                           initial_state=orbit.initial_state, label=label, warnings=_warn(problem, metrics))
+
+
+def response_from_transient(problem: MeshDynamicsProblem, history: TransientHistory,
+                            include_damping_force: bool = False, label: str = "") -> DynamicResponse:
+    """Response whose steady state is the last period of a transient; the whole history is kept for plots.
+
+    The Floquet multipliers are computed from the problem (cheap) so that an unstable point is flagged; the
+    convergence of the last period is in ``metrics["transient_last_period_change"]`` (relative change of the
+    period-start displacement over the last period).
+    """
+    time, x, v, interval = history.last_period()
+    multipliers = floquet_multipliers(problem)
+    metrics = compute_metrics(problem, time, x, v, interval, multipliers, include_damping_force)
+    metrics["transient_periods"] = history.periods
+    metrics["transient_last_period_change"] = float(history.convergence()[-1])
+    return DynamicResponse(problem=problem, time=time, displacement=x, velocity=v, method=history.method,
+                           include_damping_force=bool(include_damping_force), metrics=metrics, interval=interval,
+                           multipliers=multipliers, history=history, initial_state=None, label=label,
+                           warnings=_warn(problem, metrics))
