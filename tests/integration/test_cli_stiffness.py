@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import importlib.util
 import json
 import subprocess
 import sys
@@ -73,11 +72,3 @@ def test_unknown_case_exits_2():
     result = run("luo2091")
     assert result.returncode == 2
     assert "luo2019" in result.stderr and "Traceback" not in result.stderr
-
-
-@pytest.mark.skipif(importlib.util.find_spec("thermogear.thermal.summary") is not None,
-                    reason="the thermal summary exists; its own tests cover --thermal")
-def test_thermal_without_the_thermal_module_is_a_clear_error():
-    result = run("luo2019", "--thermal", "--json")
-    assert result.returncode == 2
-    assert "thermal" in result.stderr and "Traceback" not in result.stderr

@@ -74,17 +74,6 @@ def stiffness_summary(case: Case) -> tuple[dict, list[str]]:
     return summary, messages
 
 
-def _thermal_module():
-    try:
-        thermal_summary = importlib.import_module("thermogear.thermal.summary")
-    except ModuleNotFoundError as error:
-        if error.name in ("thermogear.thermal", "thermogear.thermal.summary"):
-            raise ThermogearError("--thermal is not available yet: thermogear.thermal.summary is not installed "
-                                  "in this version") from None
-        raise
-    return thermal_summary
-
-
 def _atomic_figure(figure, path: Path) -> None:
     """Save a matplotlib figure atomically (temporary file in the target folder, then os.replace)."""
     suffix = path.suffix.lower()
@@ -176,7 +165,7 @@ def stiffness(
 ) -> None:
     """Elastic mesh stiffness along the path of contact and over one mesh period (per mm of face width)."""
     loaded = load_case(case)
-    thermal_module = _thermal_module() if thermal else None
+    thermal_module = importlib.import_module("thermogear.thermal.summary") if thermal else None
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ExtrapolationWarning)  # collected into the summary instead
         summary, _ = stiffness_summary(loaded)

@@ -34,6 +34,7 @@ from thermogear.dynamics.problem import MeshDynamicsProblem, region_name
 from thermogear.dynamics.spectra import harmonic_spectrum, one_sided_amplitudes, uniform_period_grid
 from thermogear.dynamics.transient import TransientHistory
 from thermogear.errors import CaseError, ModelAssumptionWarning, ModelLimitError
+from thermogear.serialization import json_ready
 
 __all__ = ["DynamicResponse", "compute_metrics", "response_from_orbit", "response_from_transient"]
 
@@ -175,16 +176,6 @@ def _check_finite(value: Any, key: str = "metrics") -> None:
         raise ModelLimitError(f"{key} is not finite ({value}); the model is out of its numerical range")
 
 
-def _jsonable(value: Any) -> Any:
-    if isinstance(value, dict):
-        return {str(k): _jsonable(v) for k, v in value.items()}
-    if isinstance(value, list | tuple):
-        return [_jsonable(v) for v in value]
-    if isinstance(value, np.generic):
-        return value.item()
-    return value
-
-
 @dataclass(frozen=True)
 class DynamicResponse:
     """Steady dynamic response over one mesh period, its metrics, and optionally the whole transient.
@@ -315,7 +306,7 @@ class DynamicResponse:
     # ------------------------------------------------------------------ export
     def metrics_json(self) -> dict[str, Any]:
         """Metrics as plain JSON types, plus ``method``, ``label`` and ``warnings``."""
-        summary = _jsonable(self.metrics)
+        summary = json_ready(self.metrics)
         summary["method"] = self.method
         summary["label"] = self.label
         summary["include_damping_force"] = self.include_damping_force

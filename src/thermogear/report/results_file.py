@@ -9,12 +9,13 @@ number of the paper for the paper's case), the metrics per model, the messages, 
 from __future__ import annotations
 
 import json
-import math
 from datetime import datetime, timezone
 from pathlib import Path
 from typing import Any
 
 import numpy as np
+
+from thermogear.serialization import json_ready
 
 __all__ = ["case_toml_text", "curves_dataset", "write_results_netcdf", "summary_document", "write_summary_json",
            "RESPONSE_GROUPS"]
@@ -109,20 +110,6 @@ def write_results_netcdf(evaluation, path: Path) -> list[str]:
     return groups
 
 
-def _json_ready(value: Any) -> Any:
-    if isinstance(value, dict):
-        return {str(key): _json_ready(item) for key, item in value.items()}
-    if isinstance(value, (list, tuple)):
-        return [_json_ready(item) for item in value]
-    if isinstance(value, np.ndarray):
-        return _json_ready(value.tolist())
-    if isinstance(value, np.generic):
-        value = value.item()
-    if isinstance(value, float) and not math.isfinite(value):
-        return None
-    return value
-
-
 def summary_document(evaluation, verdicts, results, messages, figures, missing_figures, citations) -> dict:
     """The content of summary.json."""
     from thermogear import __version__
@@ -131,7 +118,7 @@ def summary_document(evaluation, verdicts, results, messages, figures, missing_f
     table = [verdict.as_dict() for verdict in verdicts]
     counts = {status: sum(1 for row in table if row["status"] == status)
               for status in ("within", "outside", "not computed")}
-    return _json_ready({
+    return json_ready({
         "thermogear_version": __version__,
         "generated": datetime.now(timezone.utc).isoformat(timespec="seconds"),
         "case": {"name": case.name, "title": case.title, "source": str(case.source), "citation": case.citation,
@@ -147,7 +134,7 @@ def summary_document(evaluation, verdicts, results, messages, figures, missing_f
         "figures": {"drawn": sorted(figures), "missing": missing_figures},
         "timings_s": dict(evaluation.timings),
         "references": [{"key": ref.key, "text": ref.formatted()} for ref in citations],
-    })
+    }, non_finite="null")
 
 
 def write_summary_json(document: dict, path: Path) -> None:
