@@ -69,7 +69,8 @@ def print_summary(outcome, console: Console) -> None:
     the results table, the messages, and the report's path."""
     if outcome.verdicts:
         table = Table(title="Luo & Li (2020) vs thermogear", show_lines=False, header_style="bold")
-        table.add_column("quantity", ratio=1, overflow="fold")
+        # one line per row whatever the terminal width: the full wording is in report.html
+        table.add_column("quantity", no_wrap=True, overflow="ellipsis", max_width=max(24, console.width - 58))
         for name in ("paper", "thermogear", "unit", "deviation", "status"):
             table.add_column(name, justify="left" if name in ("unit", "status") else "right", no_wrap=True)
         style = {"within": "[green]within[/]", "outside": "[red]outside[/]", "not computed": "[yellow]not computed[/]"}
@@ -93,8 +94,9 @@ def print_summary(outcome, console: Console) -> None:
                       f"[red]{counts['outside']} outside[/], [yellow]{counts['not computed']} not computed[/]")
     else:
         table = Table(title=f"thermogear results: {outcome.evaluation.case.name}", header_style="bold")
-        for name in ("quantity", "elastic", "thermal", "unit"):
-            table.add_column(name, justify="left" if name in ("quantity", "unit") else "right")
+        table.add_column("quantity", no_wrap=True, overflow="ellipsis", max_width=max(24, console.width - 40))
+        for name in ("elastic", "thermal", "unit"):
+            table.add_column(name, justify="left" if name == "unit" else "right", no_wrap=True)
         for row in outcome.results:
             table.add_row(row["quantity"], format_value(row["elastic"]) if row["elastic"] is not None else "—",
                           format_value(row["thermal"]) if row["thermal"] is not None else "—", row["unit"])
