@@ -112,6 +112,16 @@ def _solve_periodic(m00: float, m01: float, m10: float, m11: float, bx: float, b
 
 
 @numba.njit(cache=True)
+def _undamped(damping: np.ndarray) -> bool:
+    """True when c = 0 on every interval: then det M = exp(−∫c/me) = 1, no multiplier is strictly inside the unit
+    circle and free vibrations never decay, so there is no attracting periodic orbit (Liouville's formula)."""
+    for value in damping:
+        if value != 0.0:
+            return False
+    return True
+
+
+@numba.njit(cache=True)
 def _batch_kernel(mass: np.ndarray, nodes: np.ndarray, stiffness: np.ndarray, damping: np.ndarray,
                   force: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     count = stiffness.shape[0]
@@ -121,6 +131,9 @@ def _batch_kernel(mass: np.ndarray, nodes: np.ndarray, stiffness: np.ndarray, da
     for j in range(count):
         m00, m01, m10, m11, bx, bv = _one_period(mass[j], nodes, stiffness[j], damping[j], force[j])
         first, second = _multipliers_abs(m00, m01, m10, m11)
+        if _undamped(damping[j]):
+            # |μ1·μ2| = det M = 1 exactly (Liouville), so |μ|max >= 1 in exact arithmetic, whatever rounding gives
+            first = max(first, 1.0)
         moduli[j, 0] = first
         moduli[j, 1] = second
         if first < 1.0:
@@ -258,11 +271,19 @@ def _instability_message(moduli: np.ndarray, problem: MeshDynamicsProblem | None
 def periodic_initial_state(problem: MeshDynamicsProblem) -> tuple[tuple[float, float], np.ndarray]:
     """Initial state (x0 [m], v0 [m/s]) of the periodic orbit and the Floquet multipliers.
 
-    Raises :class:`ModelLimitError` when a multiplier has modulus >= 1 (parametric resonance).
+    Raises :class:`ModelLimitError` when a multiplier has modulus >= 1 (parametric resonance), or when the mesh is
+    undamped (c = 0 everywhere: det M = 1, free vibrations never decay, no attracting orbit).
     """
     matrix, image = monodromy(problem)
     multipliers = _eigenvalues_2x2(matrix)
     moduli = np.abs(multipliers)
+    if not np.any(problem.damping > 0.0):
+        # decided on c, not on the computed moduli: those equal 1 only up to rounding and would make the verdict
+        # depend on the period
+        raise ModelLimitError(
+            f"undamped mesh (c = 0 on every interval): the Floquet multiplier moduli "
+            f"{np.array2string(moduli, precision=6)} have the product det M = 1, so free vibrations never decay and "
+            "there is no attracting periodic steady state; give the mesh some damping or integrate a transient")
     if not np.all(np.isfinite(matrix)) or np.max(moduli) >= 1.0:
         raise ModelLimitError(_instability_message(moduli, problem))
     x0, v0 = _solve_periodic(matrix[0, 0], matrix[0, 1], matrix[1, 0], matrix[1, 1], image[0], image[1])
@@ -283,7 +304,8 @@ def periodic_steady_state(problem: MeshDynamicsProblem, samples_per_interval: in
     Raises
     ------
     ModelLimitError
-        If a Floquet multiplier has modulus >= 1 (parametric instability): there is no periodic orbit to return.
+        If a Floquet multiplier has modulus >= 1 (parametric instability), or c = 0 on every interval (undamped:
+        the multipliers lie on the unit circle): there is no attracting periodic orbit to return.
     """
     if int(samples_per_interval) != samples_per_interval or samples_per_interval < 1:
         raise CaseError("samples_per_interval", samples_per_interval, "integer >= 1",

@@ -157,7 +157,8 @@ def compute_metrics(problem: MeshDynamicsProblem, time: np.ndarray, displacement
     metrics["frequency_ratio"] = problem.frequency_ratio
     moduli = np.sort(np.abs(np.asarray(multipliers)))[::-1]
     metrics["floquet_multipliers_abs"] = [float(m) for m in moduli]
-    metrics["stable"] = bool(moduli[0] < 1.0)
+    # undamped: det M = 1, so |μ|max >= 1 in exact arithmetic even where rounding puts it a hair below 1
+    metrics["stable"] = bool(moduli[0] < 1.0 and np.any(problem.damping > 0.0))
     loss = _contact_loss(time, system_right, float(np.min(system)), w0)
     metrics["contact_loss"] = loss
     metrics["valid"] = bool(metrics["stable"] and not loss["detected"])
