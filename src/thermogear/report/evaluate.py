@@ -247,8 +247,7 @@ def _input_values(case) -> dict[str, Any]:
 
     pair, material, document = case.gear_pair, case.material, case.document
     oil = lubricant_from_case(case)
-    schema_gap = ("not in the case schema: thermogear's models do not use this oil property (the flank "
-                  "temperature is an input, not computed from a heat balance)")
+    schema_gap = "not given in this case ([lubricant] specific_heat_j_per_kg_k / thermal_conductivity_w_per_m_k)"
     return {
         "table1.pinion_teeth": pair.pinion.teeth, "table1.wheel_teeth": pair.wheel.teeth,
         "table1.module": pair.module * 1e3, "table1.pressure_angle": np.degrees(pair.pinion.pressure_angle),
@@ -261,8 +260,11 @@ def _input_values(case) -> dict[str, Any]:
         "table1.oil_density": oil.density_reference,
         "table1.oil_viscosity_40": float(oil.kinematic_viscosity(40.0, warn=False)) * 1e6,
         "table1.oil_viscosity_100": float(oil.kinematic_viscosity(100.0, warn=False)) * 1e6,
-        "table1.oil_specific_heat": (None, schema_gap),
-        "table1.oil_thermal_conductivity": (None, schema_gap),
+        "table1.oil_specific_heat": (case.lubricant.specific_heat_j_per_kg_k
+                                     if case.lubricant.specific_heat_j_per_kg_k is not None else (None, schema_gap)),
+        "table1.oil_thermal_conductivity": (case.lubricant.thermal_conductivity_w_per_m_k
+                                            if case.lubricant.thermal_conductivity_w_per_m_k is not None
+                                            else (None, schema_gap)),
         "table1.oil_operating_temperature": case.lubricant.operating_temperature_c,
         "table1.roughness": case.roughness_ra * 1e6,
         "fig7.oil_temperature_elastic": case.lubricant.reference_temperature_c,

@@ -248,10 +248,10 @@ def _inputs() -> list[PaperRow]:
     for key, quantity, value, unit in items:
         note = ""
         if key in ("oil_specific_heat", "oil_thermal_conductivity"):
-            note = ("thermogear's models do not use this oil property (the flank temperature is an input); the row "
-                    "checks it is recorded in the report's case description.")
+            note = ("Used only by the finite-element heat model's convection correlations (the dynamic chain takes "
+                    "the flank temperature as an input); the row checks the case carries it.")
         rows.append(PaperRow(f"table1.{key}", "Table 1", quantity, float(value), unit, Exact(), _INPUT, note,
-                             kind="input", required=not note))
+                             kind="input"))
     return rows
 
 

@@ -21,6 +21,10 @@ class LubricantSection(Section):
                                                       description="relative density change per K [1/K]")] | None = None
     base_oil: Literal["mineral", "pao", "pag_insoluble", "pag_soluble", "ester", "traction"] | None = Field(
         None, description="base oil type, sets the lubricant factor X_L of the friction formula")
+    specific_heat_j_per_kg_k: Annotated[float, Field(gt=0.0, le=10000.0, description="oil specific heat "
+                                                     "[J/(kg K)], for the FE convection correlations")] | None = None
+    thermal_conductivity_w_per_m_k: Annotated[float, Field(gt=0.0, le=5.0, description="oil thermal conductivity "
+                                                           "[W/(m K)], for the FE convection correlations")] | None = None
     reference_temperature_c: float = Field(30.0, description="oil temperature of the 'elastic' model [°C]")
     operating_temperature_c: float = Field(60.0, description="oil (sump or injection) temperature of the "
                                                              "thermal model [°C]")
