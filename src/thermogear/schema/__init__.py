@@ -6,6 +6,7 @@ from pydantic import Field
 
 from thermogear.schema.base import Section
 from thermogear.schema.dynamics import DampingSection, DynamicsSection
+from thermogear.schema.fem import FemSection
 from thermogear.schema.gears import GearSection, GearsSection, MaterialSection, OperatingSection
 from thermogear.schema.lubricant import LubricantSection
 from thermogear.schema.sweep import SweepSection
@@ -34,6 +35,7 @@ class CaseFile(Section):
     thermal: ThermalSection = ThermalSection()
     damping: DampingSection = DampingSection()
     dynamics: DynamicsSection = DynamicsSection()
+    fem: FemSection = FemSection()
     sweep: SweepSection | None = None
 
 
