@@ -19,6 +19,7 @@ from thermogear.cli import warmup  # noqa: E402,F401
 from thermogear.cli import sweep  # noqa: E402,F401
 from thermogear.cli import reproduce  # noqa: E402,F401
 from thermogear.cli import run  # noqa: E402,F401
+from thermogear.cli import fem  # noqa: E402,F401
 
 
 def main() -> None:

@@ -198,7 +198,7 @@ class ToothTemperature:
         angle = np.arctan2(x, y)
         wrapped = (angle + 0.5 * pitch) % pitch - 0.5 * pitch
         radius = np.hypot(x, y)
-        points = np.vstack([radius * np.sin(wrapped), radius * np.cos(wrapped)])
+        points = np.vstack([(radius * np.sin(wrapped)).ravel(), (radius * np.cos(wrapped)).ravel()])
         return (probe_matrix(self.basis, points) @ self.values).reshape(x.shape)
 
     def flank_c(self, own_roll) -> np.ndarray:

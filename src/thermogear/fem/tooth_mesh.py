@@ -15,20 +15,25 @@ import numpy as np
 import skfem
 import triangle
 
-from thermogear.fem.tooth_profile import BOUNDARY_TAGS, ToothOutline, tooth_sector_outline
+from thermogear.fem.tooth_profile import BOUNDARY_TAGS, ToothOutline, full_gear_outline, tooth_sector_outline
 from thermogear.geometry import Gear
 
 #: Minimum triangle angle [deg] asked of Triangle (its guarantee holds up to about 33°).
 MINIMUM_ANGLE_DEG = 28.0
 
 
-def triangulate_outline(points: np.ndarray, markers: np.ndarray, maximum_area: float):
-    """Quality triangulation of a closed polygon: (vertices (n, 2), triangles (m, 3), boundary edges (k, 2),
-    edge markers (k,)). ``maximum_area`` [m²] caps the triangle size."""
+def triangulate_outline(points: np.ndarray, markers: np.ndarray, maximum_area: float,
+                        segments: np.ndarray | None = None, holes: np.ndarray | None = None):
+    """Quality triangulation of a closed polygon (or of several loops given by ``segments``, with ``holes``
+    points): (vertices (n, 2), triangles (m, 3), boundary edges (k, 2), edge markers (k,)). ``maximum_area``
+    [m²] caps the triangle size."""
     count = len(points)
-    segments = np.column_stack([np.arange(count), (np.arange(count) + 1) % count])
-    result = triangle.triangulate({"vertices": points, "segments": segments, "segment_markers": markers},
-                                  f"pq{MINIMUM_ANGLE_DEG:g}a{maximum_area:.6e}")
+    if segments is None:
+        segments = np.column_stack([np.arange(count), (np.arange(count) + 1) % count])
+    geometry = {"vertices": points, "segments": segments, "segment_markers": markers}
+    if holes is not None:
+        geometry["holes"] = holes
+    result = triangle.triangulate(geometry, f"pq{MINIMUM_ANGLE_DEG:g}a{maximum_area:.6e}")
     return (result["vertices"], result["triangles"], result["segments"],
             result["segment_markers"].ravel().astype(int))
 
@@ -63,7 +68,9 @@ def mesh_from_outline(outline: ToothOutline, maximum_area: float | None = None) 
     """Mesh an outline; the default maximum area is (m/3)² (interior elements about a third of a module)."""
     module = outline.gear.module
     maximum_area = maximum_area or (module / 3.0) ** 2
-    vertices, triangles, edges, edge_markers = triangulate_outline(outline.points, outline.markers, maximum_area)
+    holes = np.zeros((1, 2)) if outline.full_gear else None
+    vertices, triangles, edges, edge_markers = triangulate_outline(outline.points, outline.markers, maximum_area,
+                                                                   outline.segments, holes)
     mesh = skfem.MeshTri(np.ascontiguousarray(vertices.T), np.ascontiguousarray(triangles.T))
     lookup = {}
     for (a, b), marker in zip(edges, edge_markers):
@@ -81,11 +88,17 @@ def mesh_from_outline(outline: ToothOutline, maximum_area: float | None = None) 
 def tooth_mesh(gear: Gear, bore_radius: float | None = None, teeth: int = 1, refinement: float = 1.0) -> ToothMesh:
     """Mesh of a sector of ``teeth`` teeth of ``gear`` down to the bore.
 
+    ``teeth`` = 0 (or z) meshes the whole gear (bore as a hole), fine on the loaded tooth and its neighbours.
     ``refinement`` divides every length scale (boundary spacings m/20 on flank and fillet, m/10 on the tip, m/2.5
     on the rim, interior size m/3): 2 halves the element size (about 4× the elements).
     """
     bore_radius = nominal_bore_radius(gear) if bore_radius is None else bore_radius
     module = gear.module
+    if teeth in (0, gear.teeth):  # the whole gear, fine around the loaded tooth
+        outline = full_gear_outline(gear, bore_radius, 3, flank_spacing=module / (20.0 * refinement),
+                                    fillet_spacing=module / (20.0 * refinement), tip_spacing=module / (10.0 * refinement),
+                                    rim_spacing=module / (2.5 * refinement))
+        return mesh_from_outline(outline, maximum_area=(module / (3.0 * refinement)) ** 2)
     outline = tooth_sector_outline(gear, bore_radius, teeth, flank_spacing=module / (20.0 * refinement),
                                    fillet_spacing=module / (20.0 * refinement),
                                    tip_spacing=module / (10.0 * refinement),

@@ -112,6 +112,7 @@ class ToothOutline:
     teeth: int
     points: np.ndarray
     markers: np.ndarray
+    loops: tuple[int, ...] = ()  # point counts of the closed loops (empty: one loop of all points)
 
     @property
     def sector_angle(self) -> float:
@@ -119,9 +120,23 @@ class ToothOutline:
         return self.teeth * math.pi / self.gear.teeth
 
     @property
+    def full_gear(self) -> bool:
+        return self.teeth == self.gear.teeth
+
+    @property
     def segments(self) -> np.ndarray:
-        count = len(self.points)
-        return np.column_stack([np.arange(count), (np.arange(count) + 1) % count])
+        loops = self.loops or (len(self.points),)
+        parts, start = [], 0
+        for count in loops:
+            index = np.arange(start, start + count)
+            parts.append(np.column_stack([index, np.roll(index, -1)]))
+            start += count
+        return np.vstack(parts)
+
+    @property
+    def outer_points(self) -> np.ndarray:
+        """The points of the outer loop (the tooth profile side)."""
+        return self.points[: self.loops[0]] if self.loops else self.points
 
 
 def tooth_half_profile(gear: Gear, flank_spacing: float, fillet_spacing: float, tip_spacing: float):
@@ -218,6 +233,56 @@ def tooth_sector_outline(gear: Gear, bore_radius: float, teeth: int = 1, flank_s
     return ToothOutline(gear, bore_radius, teeth, np.array(points), markers)
 
 
+def full_gear_outline(gear: Gear, bore_radius: float, fine_teeth: int = 3, flank_spacing: float | None = None,
+                      fillet_spacing: float | None = None, tip_spacing: float | None = None,
+                      rim_spacing: float | None = None, coarse_factor: float = 4.0) -> ToothOutline:
+    """Outline of the whole gear: all z teeth (outer loop) and the bore (inner loop, a hole). The ``fine_teeth``
+    teeth around the loaded one (centred on +y) get the given spacings, the others ``coarse_factor`` times
+    coarser. Tags as :func:`tooth_sector_outline` (no cut faces)."""
+    if not 0.0 < bore_radius < gear.root_radius:
+        raise CaseError("bore_radius_mm", bore_radius * 1e3, f"(0, {gear.root_radius * 1e3:.3f})",
+                        "the FE gear runs from the bore to the tip; a solid gear needs a nominal bore")
+    module = gear.module
+    flank_spacing = flank_spacing or module / 20.0
+    fillet_spacing = fillet_spacing or module / 20.0
+    tip_spacing = tip_spacing or module / 10.0
+    rim_spacing = rim_spacing or module / 2.5
+
+    def tooth_pieces(scale: float):
+        half = tooth_half_profile(gear, flank_spacing * scale, fillet_spacing * scale, tip_spacing * scale)
+        left = [(-x, y, "passive_flank" if tag == "active_flank" else tag) for x, y, tag in half]
+        return _orient_pieces(left + [(x[::-1], y[::-1], tag) for x, y, tag in reversed(half)])
+
+    fine, coarse = tooth_pieces(1.0), tooth_pieces(coarse_factor)
+    points, tags = [], []
+    reach = fine_teeth // 2
+    for index in range(gear.teeth):
+        offset = index if index <= gear.teeth // 2 else index - gear.teeth  # cyclic distance from tooth 0
+        pieces = fine if abs(offset) <= reach else coarse
+        rotation = offset * 2.0 * math.pi / gear.teeth
+        cos_r, sin_r = math.cos(rotation), math.sin(rotation)
+        for x, y, tag in pieces:
+            if tag == "active_flank" and offset != 0:
+                tag = "passive_flank"
+            px = x * cos_r + y * sin_r
+            py = -x * sin_r + y * cos_r
+            for i in range(len(px) - 1):
+                points.append((px[i], py[i]))
+                tags.append(tag)
+    # order the teeth by angle so the loop does not cross itself
+    points = np.array(points)
+    angle = np.arctan2(points[:, 0], points[:, 1])
+    start = int(np.argmin(np.abs(angle - (-math.pi + math.pi / gear.teeth))))
+    points = np.roll(points, -start, axis=0)
+    tags = tags[start:] + tags[:start]
+    outer = len(points)
+    count = max(int(math.ceil(2.0 * math.pi * bore_radius / (rim_spacing * coarse_factor / 2.0))), 24)
+    angles = np.linspace(0.0, 2.0 * math.pi, count, endpoint=False)
+    bore = np.column_stack(polar_to_tooth_frame(bore_radius, angles))
+    markers = np.array([BOUNDARY_TAGS[tag] for tag in tags] + [BOUNDARY_TAGS["bore"]] * count, dtype=int)
+    return ToothOutline(gear, bore_radius, gear.teeth, np.vstack([points, bore]), markers, (outer, count))
+
+
 def _orient_pieces(pieces):
     """Walk pieces in the order given, flipping any whose start is farther from the previous end than its end."""
     oriented = []
@@ -233,5 +298,5 @@ def _orient_pieces(pieces):
     return oriented
 
 
-__all__ = ["BOUNDARY_TAGS", "ToothOutline", "involute_flank_angles", "polar_to_tooth_frame", "resample_polyline",
+__all__ = ["BOUNDARY_TAGS", "ToothOutline", "full_gear_outline", "involute_flank_angles", "polar_to_tooth_frame", "resample_polyline",
            "tool_tip_centre_offset", "tooth_half_profile", "tooth_sector_outline", "trochoid_fillet"]

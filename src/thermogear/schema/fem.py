@@ -22,7 +22,8 @@ class FemSection(Section):
     mesh_refinement: Annotated[float, Field(gt=0.2, le=6.0, description="divides every element size [–]")] = 1.0
     plane: Literal["stress", "strain"] = Field("stress", description="2-D elasticity assumption (the potential "
                                                "energy method uses E, i.e. plane stress)")
-    sector_teeth: Annotated[int, Field(ge=1, le=9, description="teeth in the elasticity sector (odd)")] = 3
+    sector_teeth: Annotated[int, Field(ge=0, le=9, description="elasticity model: 0 = the whole gear (bore "
+                                       "clamped); an odd number = a sector of that many teeth, cut faces free")] = 0
     contact_positions: Annotated[int, Field(ge=3, le=61, description="FE load positions from A to E")] = 11
     bore: Literal["adiabatic", "convective"] = Field("adiabatic", description="thermal condition at the bore")
     bore_h_w_per_m2_k: Coefficient = Field(None, description="bore convection coefficient (bore = 'convective')")
@@ -41,6 +42,6 @@ class FemSection(Section):
     @field_validator("sector_teeth")
     @classmethod
     def _odd(cls, value: int) -> int:
-        if value % 2 == 0:
-            raise ValueError("the loaded tooth sits in the middle of the sector, so the number must be odd")
+        if value != 0 and value % 2 == 0:
+            raise ValueError("the loaded tooth sits in the middle of the sector, so the number must be odd (or 0 for the whole gear)")
         return value

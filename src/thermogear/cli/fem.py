@@ -1,0 +1,92 @@
+"""`thermogear fem CASE`: the finite-element verification (bulk temperature, FE vs PEM compliance, flank expansion
+vs Eqs. 8–12, X_te from FE runs, mesh refinement study)."""
+
+from __future__ import annotations
+
+import os
+import tempfile
+import time
+from pathlib import Path
+
+import typer
+from rich.table import Table
+
+import thermogear.fem.provider  # noqa: F401  (registers the "fem" temperature and X_te providers)
+from thermogear.case import load_case
+from thermogear.cli.app import app, console, print_json
+
+
+def fem_summary(case_name: str, refine: bool = True) -> tuple[dict, object]:
+    """(JSON summary, FemAnalysis) of a case; with ``refine`` the study at twice the refinement is added."""
+    from thermogear.fem.verification import cached_analysis, fem_analysis, refinement_change_percent  # noqa: PLC0415
+
+    start = time.perf_counter()
+    case = load_case(case_name)
+    analysis = cached_analysis(case)
+    summary = analysis.summary()
+    if refine:
+        fine = fem_analysis(case, 2.0 * analysis.refinement)
+        changes = refinement_change_percent(analysis, fine)
+        summary["refinement_change_percent"] = changes["max"]
+        summary["refinement_change_by_quantity_percent"] = changes
+        summary["refinement_compared"] = [analysis.refinement, fine.refinement]
+    summary["wall_time_s"] = time.perf_counter() - start
+    if case.name == "luo2019":
+        summary["paper"] = {"flank_temperature_c": [77.0, 81.0], "stiffness_drop_percent": {"A": 8.53, "C": 14.52,
+                                                                                            "E": 8.53}}
+    return summary, analysis
+
+
+def _save(figure, path: Path) -> None:
+    handle, temporary = tempfile.mkstemp(suffix=path.suffix, dir=path.parent)
+    os.close(handle)
+    try:
+        figure.savefig(temporary, dpi=120)
+        os.replace(temporary, path)
+    finally:
+        if os.path.exists(temporary):
+            os.remove(temporary)
+
+
+@app.command()
+def fem(case: str = typer.Argument(..., help="built-in parameter set or case file"),
+        json_output: bool = typer.Option(False, "--json", help="print the summary as JSON"),
+        plot: Path | None = typer.Option(None, "--plot", help="folder for Figs. 3(b), 3(c), 15 (PNG)"),
+        no_refinement: bool = typer.Option(False, "--no-refinement", help="skip the refinement study")) -> None:
+    """Finite-element verification: bulk temperature, FE vs PEM tooth compliance, flank expansion, X_te."""
+    summary, analysis = fem_summary(case, refine=not no_refinement)
+    if plot is not None:
+        from thermogear.fem import plots  # noqa: PLC0415
+
+        plot.mkdir(parents=True, exist_ok=True)
+        for name, draw in (("fig3b_temperature_field.png", plots.plot_temperature_field),
+                           ("fig3c_flank_temperature.png", plots.plot_flank_temperature),
+                           ("fig15_stiffness_along_path.png", plots.plot_stiffness_along_path),
+                           ("fe_vs_pem_tooth_stiffness.png", plots.plot_compliance_comparison)):
+            figure = draw(analysis)
+            _save(figure, plot / name)
+        summary["plots"] = str(plot)
+    if json_output:
+        print_json(summary)
+        return
+    table = Table(title=f"FE verification — {summary['case']}")
+    table.add_column("quantity")
+    table.add_column("value", justify="right")
+    compliance = summary["compliance_fe_vs_pem_percent"]
+    rows = [("FE vs PEM tooth compliance, max |Δ| [%]", f"{compliance['max_abs']:.2f}"),
+            ("FE vs PEM tooth compliance, mean |Δ| [%]", f"{compliance['mean_abs']:.2f}"),
+            ("X_te (FE, magnitude reading)", f"{summary['x_te']:.4g}"),
+            ("X_te (line-of-action reading)", f"{summary['x_te_line_of_action']:.4g}")]
+    rows += [(f"stiffness drop at {k} [%]", f"{v:.2f}") for k, v in summary["stiffness_drop_percent"].items()]
+    rows += [(f"pinion flank temperature at {k} [°C]", f"{v:.2f}") for k, v in summary["flank_temperature_c"].items()]
+    rows += [(f"{g} base / bore temperature [°C]",
+              f"{summary['base_temperature_c'][g]:.2f} / {summary['bore_temperature_c'][g]:.2f}")
+             for g in ("pinion", "wheel")]
+    rows.append(("flank expansion FE vs Eqs. 8–12, uniform rise, max |Δ| [%]",
+                 f"{summary['expansion_fe_vs_analytical_percent']['max_abs']:.2f}"))
+    if "refinement_change_percent" in summary:
+        rows.append(("largest change on refinement [%]", f"{summary['refinement_change_percent']:.2f}"))
+    rows.append(("wall time (s)", f"{summary['wall_time_s']:.1f}"))
+    for row in rows:
+        table.add_row(*row)
+    console.print(table)
