@@ -133,10 +133,6 @@ class FlankHeatInput:
     def base_radius(self) -> float:
         return self._base_radius  # set in flank_heat_input
 
-    def power_per_width(self) -> float:
-        """∫ q̄ dρ over the flank [W/m] (the arc length of an involute is dρ·ρ/… ≈ dρ for this check only)."""
-        return float(np.trapezoid(self.flux, self.roll))
-
 
 def flank_heat_input(case: "Case", which: str, settings: FemSection | None = None, count: int = 201) -> FlankHeatInput:
     """q̄ along the flank of ``which`` gear (module docstring)."""
