@@ -7,8 +7,10 @@ the reason.
 
 from __future__ import annotations
 
+import functools
 import math
 import tomllib
+import weakref
 from dataclasses import dataclass, field
 from importlib import resources
 from pathlib import Path
@@ -21,8 +23,8 @@ from thermogear.fzg import fzg_load_stage_torque
 from thermogear.geometry import Gear, GearPair
 from thermogear.materials import Material
 from thermogear.operating import OperatingPoint
-from thermogear.schema import (CaseFile, DampingSection, DynamicsSection, LubricantSection, TemperatureSection,
-                               ThermalSection)
+from thermogear.schema import (CaseFile, DampingSection, DynamicsSection, FemSection, LubricantSection,
+                               TemperatureSection, ThermalSection)
 
 
 @dataclass(frozen=True)
@@ -47,6 +49,7 @@ class Case:
     thermal: ThermalSection
     damping: DampingSection
     dynamics: DynamicsSection
+    fem: FemSection
     source: str  # parameter-set name or file path
     document: dict[str, Any] = field(compare=False, repr=False)  # the case file as loaded (for result files)
 
@@ -76,6 +79,29 @@ class Case:
                 node = node.setdefault(part, {})
             node[last] = value
         return case_from_document(document, source=self.source)
+
+
+def cached_per_case(function):
+    """Memoise a function of a Case alone on that Case instance.
+
+    Derived components of a case (its temperature field, lubricant, X_te) are pure functions of the case and are
+    asked for by several stages of one operating point; like the stiffness tables they are computed once per case.
+    A Case holds lists and so is not hashable: results are keyed by identity and dropped with the case.
+    """
+    results: dict[int, tuple[weakref.ref, object]] = {}
+
+    @functools.wraps(function)
+    def cached(case):
+        key = id(case)
+        entry = results.get(key)
+        if entry is not None and entry[0]() is case:
+            return entry[1]
+        value = function(case)
+        results[key] = (weakref.ref(case, lambda _, key=key: results.pop(key, None)), value)
+        return value
+
+    cached.cache_clear = results.clear
+    return cached
 
 
 def parameter_set_names() -> list[str]:
@@ -155,7 +181,7 @@ def case_from_document(document: dict[str, Any], source: str = "<memory>") -> Ca
                           thermal_expansion=material.thermal_expansion_per_k),
         operating_point=operating, roughness_ra=gears.roughness_ra_um * 1e-6, inertias=inertias,
         lubricant=model.lubricant, temperature=model.temperature, thermal=model.thermal, damping=model.damping,
-        dynamics=model.dynamics, source=source, document=document)
+        dynamics=model.dynamics, fem=model.fem, source=source, document=document)
 
 
 # --------------------------------------------------------------------------------------------- errors

@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING, Sequence
 
 import numpy as np
 
+from thermogear.case import cached_per_case
 from thermogear.errors import CaseError, ExtrapolationWarning, ModelAssumptionWarning, closest_key
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -225,6 +226,7 @@ def builtin_lubricant(name: str) -> Lubricant:
                                  key=f"lubricants/oils.toml:{name}.viscosity_points")
 
 
+@cached_per_case
 def lubricant_from_case(case: "Case") -> Lubricant:
     """The oil a case selects: a built-in one (optionally with the case's density or base oil), or its own
     ``viscosity_points``."""

@@ -141,7 +141,7 @@ class Simulation:
         if method == "periodic":
             from thermogear.dynamics.periodic import periodic_steady_state
 
-            orbit = periodic_steady_state(self.problem)
+            orbit = periodic_steady_state(self.problem, self.case.dynamics.samples_per_interval)
             return response_from_orbit(self.problem, orbit, include_damping_force=damping_force)
         if method == "transient":
             from thermogear.dynamics.transient import transient_from_rest

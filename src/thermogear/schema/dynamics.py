@@ -32,5 +32,7 @@ class DynamicsSection(Section):
 
     method: Literal["periodic", "transient"] = "periodic"
     points_per_period: Annotated[int, Field(ge=64, le=100000)] = 1024
+    samples_per_interval: Annotated[int, Field(ge=1, le=256, description="samples of the periodic orbit inside "
+                                                             "each interval, for metrics and plots")] = 4
     transient_periods: Annotated[int, Field(ge=1, le=100000)] = 60
     include_damping_force: bool = Field(False, description="dynamic load k·x + c·ẋ instead of the paper's k·x")

@@ -63,9 +63,6 @@ POINT_VARIABLES: dict[str, tuple[str, str]] = {
     "mesh_frequency_hz": ("Hz", "mesh frequency z1 n1 / 60"),
     "static_load": ("N", "static normal load w (total over the face width)"),
 }
-#: Samples per interval at which the orbit is evaluated for the metrics: the default of
-#: :func:`~thermogear.dynamics.periodic.periodic_steady_state`, so both paths see the same samples.
-SAMPLES_PER_INTERVAL = 64
 #: Speed exponent of the friction damping of Eqs. 27–28 (c ∝ n1^(−5/4)).
 DAMPING_SPEED_EXPONENT = -1.25
 
@@ -84,6 +81,7 @@ class GroupTables:
     damping: np.ndarray  # (n,) c [N·s/m] at the reference speed
     pair_stiffness: np.ndarray  # (slots, n) [N/m]
     include_damping_force: bool
+    samples_per_interval: int  # orbit samples per interval for the metrics: the case's, as in Simulation.run
     natural_frequency_hz: float
     mean_mesh_stiffness: float
     pinion_teeth: int
@@ -101,6 +99,7 @@ def group_tables(case, model: str, points_per_period: int | None = None) -> Grou
                        damping=np.ascontiguousarray(problem.damping),
                        pair_stiffness=np.ascontiguousarray(problem.pair_stiffness),
                        include_damping_force=bool(case.dynamics.include_damping_force),
+                       samples_per_interval=int(case.dynamics.samples_per_interval),
                        natural_frequency_hz=float(problem.natural_frequency),
                        mean_mesh_stiffness=float(problem.mean_stiffness),
                        pinion_teeth=int(case.gear_pair.pinion.teeth))
@@ -254,7 +253,7 @@ def _metrics_batch(mass: np.ndarray, nodes: np.ndarray, stiffness: np.ndarray, d
     return out
 
 
-def evaluate_speeds(tables: GroupTables, speeds_rpm, samples: int = SAMPLES_PER_INTERVAL) -> dict[str, np.ndarray]:
+def evaluate_speeds(tables: GroupTables, speeds_rpm, samples: int | None = None) -> dict[str, np.ndarray]:
     """Metrics of one group at many speeds [rpm] (the fast path); arrays of the shape of ``speeds_rpm``.
 
     Unstable points (a Floquet multiplier modulus >= 1) get NaN metrics and ``stable`` 0.
@@ -268,7 +267,8 @@ def evaluate_speeds(tables: GroupTables, speeds_rpm, samples: int = SAMPLES_PER_
     x0, v0, moduli = periodic_steady_state_batch(mass, tables.nodes, np.broadcast_to(tables.stiffness,
                                                  damping.shape), damping, tables.force)
     values = _metrics_batch(np.ascontiguousarray(mass), tables.nodes, tables.stiffness, tables.damping,
-                            np.ascontiguousarray(factor), tables.force, tables.pair_stiffness, x0, v0, int(samples),
+                            np.ascontiguousarray(factor), tables.force, tables.pair_stiffness, x0, v0,
+                            int(tables.samples_per_interval if samples is None else samples),
                             tables.include_damping_force)
     stable = moduli[:, 0] < 1.0
     w0 = tables.force

@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from thermogear.case import cached_per_case
 from thermogear.errors import CaseError, ThermogearError
 from thermogear.thermal.stiffness import (_elastic_modules, check_x_te, expansion_for_case,
                                           normal_load_for_case)
@@ -96,7 +97,19 @@ def calibrate_x_te(case: "Case", drop_percent: float | None = None, point: str |
 def resolve_x_te(case: "Case", load_basis: str | None = None,
                  temperature: TemperatureField | None = None) -> tuple[float, str]:
     """(X_te, source label) from ``[thermal]``: ``"given"``, ``"calibrated: X_te=… gives … % drop at …"`` or
-    ``"fem"``. Raises CaseError for missing or contradictory keys, ThermogearError when the FE model is absent."""
+    ``"fem"``. Raises CaseError for missing or contradictory keys, ThermogearError when the FE model is absent.
+    With the case's own settings (no option given) the answer is computed once per case."""
+    if load_basis is None and temperature is None:
+        return _resolve_x_te_of_case(case)
+    return _resolve_x_te(case, load_basis, temperature)
+
+
+@cached_per_case
+def _resolve_x_te_of_case(case: "Case") -> tuple[float, str]:
+    return _resolve_x_te(case, None, None)
+
+
+def _resolve_x_te(case: "Case", load_basis: str | None, temperature: TemperatureField | None) -> tuple[float, str]:
     section = case.thermal
     if section.x_te_source == "given":
         if section.x_te is None:
@@ -111,6 +124,8 @@ def resolve_x_te(case: "Case", load_basis: str | None = None,
         calibration = calibrate_x_te(case, load_basis=load_basis, temperature=temperature)
         check_x_te(calibration.x_te)
         return calibration.x_te, calibration.label
+    if section.x_te_source == "fem":
+        import thermogear.fem.provider  # noqa: F401  (registers the finite-element providers on import)
     provider = _PROVIDERS.get(section.x_te_source)
     if provider is None:
         raise ThermogearError(f"thermal.x_te_source = '{section.x_te_source}': the finite-element thermo-elastic "

@@ -25,6 +25,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from thermogear.case import cached_per_case
 from thermogear.errors import CaseError, ExtrapolationWarning, ModelAssumptionWarning, ThermogearError
 
 if TYPE_CHECKING:
@@ -259,6 +260,7 @@ def register_temperature_provider(name: str, provider: TemperatureProvider) -> N
     _PROVIDERS[name] = provider
 
 
+@cached_per_case
 def temperature_field_from_case(case: "Case") -> TemperatureField:
     """Build and check the TemperatureField of a case (``[temperature]`` section). Raises CaseError for bad
     input and ThermogearError when the ``fem`` model is asked for but not available."""
@@ -270,6 +272,8 @@ def temperature_field_from_case(case: "Case") -> TemperatureField:
     elif section.model == "tabulated":
         field = _tabulated_field(section, case.directory)
     else:
+        if section.model == "fem":
+            import thermogear.fem.provider  # noqa: F401  (registers the finite-element providers on import)
         provider = _PROVIDERS.get(section.model)
         if provider is None:
             raise ThermogearError(f"temperature.model = '{section.model}': the finite-element bulk-temperature "
