@@ -76,7 +76,7 @@ BODY = "pinion_base_c = 76.0\npinion_bore_c = 72.0\nwheel_base_c = 76.0\nwheel_b
     ('model = "uniform"\nbulk_c = 250.0\n', None, "material data"),
     ('model = "uniform"\nbulk_c = 70.0\n', 'x_te_source = "given"\nx_te = -0.5\n', "thermal.x_te"),
     ('model = "uniform"\nbulk_c = 70.0\n', 'x_te_source = "given"\n', "needs thermal.x_te"),
-    ('model = "fem"\n', None, "not available"),
+    ('model = "spectral"\n', None, "temperature.model"),
 ])
 def test_bad_input_exits_2_with_one_clear_line(tmp_path, temperature, thermal, words):
     path = _case_file(tmp_path, temperature, thermal)

@@ -16,7 +16,7 @@ import pytest
 import thermogear
 from thermogear.report.paper_table import PAPER_ROWS
 
-FIGURES = ("fig3c", "fig4", "fig6", "fig7", "fig8", "fig9", "fig10", "fig11", "fig12")
+FIGURES = ("fig3c", "fig4", "fig6", "fig7", "fig8", "fig9", "fig10", "fig11", "fig12", "fig15")
 FIELDS = ("quantity", "paper", "thermogear", "unit", "deviation", "tolerance", "within", "note", "status", "reason")
 
 

@@ -43,8 +43,8 @@ INWARD_OFFSET = 2e-6
 
 
 def fem_settings(case: "Case") -> FemSection:
-    """The case's ``[fem]`` section (defaults when absent)."""
-    return FemSection.model_validate(case.document.get("fem", {}))
+    """The case's ``[fem]`` section (defaults when absent), validated when the case was loaded."""
+    return case.fem
 
 
 def gear_of(case: "Case", which: str):

@@ -153,22 +153,14 @@ def evaluate_case(case, method: str = "periodic", models: tuple[str, ...] = MODE
     return evaluation
 
 
-# ------------------------------------------------------------------------------------------ adapters
+# -------------------------------------------------------------------------------------------- stages
 def fem_verification(case):
-    """ADAPTER (Fig. 15): thermogear's FE verification of the elastic and thermal stiffness along the path.
+    """Fig. 15: thermogear's own FE verification of the elastic and thermal pair stiffness along the path,
+    ``{"gamma", "elastic", "thermal", "driving_elastic", "driving_thermal"}`` arrays [N/m]."""
+    from thermogear.fem.verification import stiffness_along_path
 
-    Returns ``{"gamma", "elastic", "thermal"}`` arrays [N/m] or raises ``NotImplementedError`` while
-    ``thermogear.fem`` offers no verification entry point.
-    """
-    try:
-        from thermogear.fem import verification  # type: ignore[attr-defined]
-    except ImportError:
-        raise NotImplementedError("thermogear.fem has no verification module yet (Fig. 15 is optional)") from None
-    function = getattr(verification, "stiffness_along_path", None)
-    if function is None:
-        raise NotImplementedError("thermogear.fem.verification has no stiffness_along_path() yet")
     cite("scikit_fem")
-    return function(case)
+    return stiffness_along_path(case)
 
 
 def _rig_trend() -> dict:
@@ -477,7 +469,7 @@ def paper_values(evaluation: Evaluation) -> dict[str, Any]:
 
     # ---------------------------------------------------------------- experiment (§5.2)
     def experiment():
-        from thermogear.experiment.rig_data import STATED_TORQUE_NM, rig_measurements  # noqa: F401
+        from thermogear.experiment.rig_data import rig_measurements
         from thermogear.fzg import fzg_load_stage_torque
 
         out = {}

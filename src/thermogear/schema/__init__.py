@@ -39,5 +39,5 @@ class CaseFile(Section):
     sweep: SweepSection | None = None
 
 
-__all__ = ["CaseFile", "CaseInfo", "DampingSection", "DynamicsSection", "GearSection", "GearsSection",
+__all__ = ["CaseFile", "CaseInfo", "DampingSection", "DynamicsSection", "FemSection", "GearSection", "GearsSection",
            "LubricantSection", "MaterialSection", "OperatingSection", "SweepSection", "TemperatureSection", "ThermalSection"]
