@@ -9,6 +9,7 @@ import pytest
 from thermogear.case import load_case
 from thermogear.fem.verification import (UNIFORM_RISE, cached_analysis, fem_analysis, refinement_change_percent,
                                          stiffness_along_path)
+from thermogear.thermal.expansion import flank_expansion_along_line_of_action
 
 GEARS = ("pinion", "wheel")
 
@@ -51,8 +52,24 @@ def test_eqs_8_12_exceed_the_fe_expansion_by_the_angular_term_of_eq_9(analysis):
         gear = getattr(pair, which)
         own = analysis.roll if which == "pinion" else pair.line_of_action_length - analysis.roll
         half_angle = np.asarray(gear.half_angle_at(np.hypot(gear.base_radius, own)))
-        surplus = analysis.uniform_expansion_analytical[which] - analysis.uniform_expansion_fe[which]
+        printed = flank_expansion_along_line_of_action(gear, own, UNIFORM_RISE, UNIFORM_RISE, UNIFORM_RISE, alpha,
+                                                       "paper")
+        surplus = printed - analysis.uniform_expansion_fe[which]
         assert np.allclose(surplus, alpha * UNIFORM_RISE * gear.base_radius * half_angle, rtol=0.02)
+
+
+def test_consistent_eqs_8_12_match_the_fe_expansion_within_10_percent(analysis):
+    """Issue 7 acceptance, with Eq. 9 in its consistent form (thermal.expansion_model = "consistent"): for a
+    uniform rise it is the homogeneous expansion, which the FE reproduces within its 0.5 % discretisation error;
+    10 % is the issue's bound. (The printed form misses it by the double-counted term above, up to ~30 %.)"""
+    alpha = analysis.case.material.thermal_expansion
+    pair = analysis.case.gear_pair
+    for which in GEARS:
+        gear = getattr(pair, which)
+        own = analysis.roll if which == "pinion" else pair.line_of_action_length - analysis.roll
+        consistent = flank_expansion_along_line_of_action(gear, own, UNIFORM_RISE, UNIFORM_RISE, UNIFORM_RISE,
+                                                          alpha, "consistent")
+        assert np.max(np.abs(analysis.uniform_expansion_fe[which] / consistent - 1.0)) < 0.10
 
 
 def test_fe_temperatures_order_flank_base_bore_oil(luo):

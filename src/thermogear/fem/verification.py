@@ -197,7 +197,7 @@ class FemAnalysis:
             "mean_friction_coefficient": float(np.mean(temperatures["pinion"].heat_input.friction_coefficient)),
             "expansion_fe_vs_analytical_percent": {
                 "max_abs": float(np.max(np.abs(uniform))), "mean_abs": float(np.mean(np.abs(uniform))),
-                "uniform_rise_k": UNIFORM_RISE,
+                "uniform_rise_k": UNIFORM_RISE, "eq9_form": self.case.thermal.expansion_model,
                 "vs_homogeneous_expansion_max_abs": float(np.max(np.abs(homogeneous))),
                 "bulk_field_max_abs": float(np.max(np.abs(bulk)))},
             "expansion_um": {g: {"fe": (self.expansion_fe[g] * 1e6).tolist(),
@@ -215,7 +215,8 @@ def _expansion_analytical(case: "Case", which: str, roll, field) -> np.ndarray:
     base = field.pinion_base_c if which == "pinion" else field.wheel_base_c
     bore = field.pinion_bore_c if which == "pinion" else field.wheel_bore_c
     return flank_expansion_along_line_of_action(gear, own_roll_of(case, which, roll), field.rise(flank),
-                                                field.rise(base), field.rise(bore), case.material.thermal_expansion)
+                                                field.rise(base), field.rise(bore), case.material.thermal_expansion,
+                                                case.thermal.expansion_model)
 
 
 def fem_analysis(case: "Case", refinement: float | None = None, settings: FemSection | None = None) -> FemAnalysis:
@@ -257,7 +258,7 @@ def fem_analysis(case: "Case", refinement: float | None = None, settings: FemSec
         uniform = sector.thermal_displacement(UNIFORM_RISE, alpha)
         uniform_fe[gear] = np.sum(sector.point_displacement(uniform, own) * normal, axis=0)
         uniform_an[gear] = flank_expansion_along_line_of_action(sector.gear, own, UNIFORM_RISE, UNIFORM_RISE,
-                                                                UNIFORM_RISE, alpha)
+                                                                UNIFORM_RISE, alpha, case.thermal.expansion_model)
     timings["thermoelastic"] = time.perf_counter() - start
     return FemAnalysis(case, settings, refinement, roll, gamma, temperatures, field_, deflection, deflection_other,
                        thermal, expansion_fe, expansion_an, uniform_fe, uniform_an, timings)

@@ -23,3 +23,6 @@ class ThermalSection(Section):
     calibration_drop_percent: Annotated[float, Field(gt=0.0, lt=100.0)] | None = None
     calibration_point: Literal["A", "B", "C", "D", "E"] = "C"
     load_basis: Literal["external", "pair_share"] = "external"
+    expansion_model: Literal["paper", "consistent"] = Field(
+        "consistent", description="form of Luo & Li Eq. 9: 'paper' as printed (counts the circumferential growth "
+                                  "twice), 'consistent' (homogeneous expansion for a uniform rise; FE-verified)")

@@ -14,6 +14,8 @@ angle ω_k = α_k − φ_k to the x axis (physics.md §1.3 notes, §3.1: ω_k = 
 
 from __future__ import annotations
 
+from typing import Literal
+
 import numpy as np
 
 from thermogear.errors import CaseError
@@ -46,12 +48,24 @@ def base_circle_radial_expansion(alpha_th, base_radius, bore_radius, base_rise, 
     return result if np.ndim(result) else float(result)
 
 
-def flank_point_displacement(alpha_th, radius, half_angle, flank_rise, base_expansion, base_radius):
+Circumferential = Literal["paper", "consistent"]
+
+
+def flank_point_displacement(alpha_th, radius, half_angle, flank_rise, base_expansion, base_radius,
+                             circumferential: Circumferential = "paper"):
     """In-plane displacement (Δx, Δy) [m] of the flank point at radius r_k and half angle φ_k (Eqs. 9–11).
 
         Δr_k = Δr_b + λ Δt_k (r_k − r_b)                         (Eq. 10, last term Δr_bk)
-        Δs_k = λ Δt_k s_k / 2,  s_k = 2 r_k φ_k,  Δφ_k = Δs_k / r_k′,  r_k′ = r_k + Δr_k,  φ_k′ = φ_k + Δφ_k  (Eq. 9)
+        Δs_k = λ Δt_k s_k / 2,  s_k = 2 r_k φ_k,  r_k′ = r_k + Δr_k,  φ_k′ = φ_k + Δφ_k
+        "paper":       Δφ_k = Δs_k / r_k′                                     (Eq. 9 as printed)
+        "consistent":  Δφ_k = (Δs_k − φ_k Δr_k) / r_k′
         Δx = r_k′ sin φ_k′ − r_k sin φ_k,  Δy = r_k′ cos φ_k′ − r_k cos φ_k                              (Eq. 11)
+
+    Eq. 9 as printed counts the circumferential growth twice: moving a point radially at constant angle already
+    widens the tooth by φ_k Δr_k, and Eq. 9 adds the whole Δs_k on top. For a uniform rise of a free gear the
+    "consistent" form gives the homogeneous expansion (every point moves radially by λ ΔT r, φ unchanged), which
+    the finite-element check reproduces to 0.05 %; the printed form overstates the flank expansion by λ ΔT r_b φ_k
+    (≈ +30 % at the luo2019 pinion root). "paper" is kept to reproduce Luo & Li.
 
     ``flank_rise`` Δt_k [K] above the reference; ``base_expansion`` Δr_b [m] from
     :func:`base_circle_radial_expansion`. Eq. 8's φ_k uses the reference-circle thickness (physics.md §1.3).
@@ -61,6 +75,11 @@ def flank_point_displacement(alpha_th, radius, half_angle, flank_rise, base_expa
     flank_rise = np.asarray(flank_rise, dtype=float)
     radial = base_expansion + alpha_th * flank_rise * (radius - base_radius)
     half_thickness_growth = alpha_th * flank_rise * radius * half_angle  # Δs_k = λ Δt_k s_k / 2
+    if circumferential == "consistent":
+        half_thickness_growth = half_thickness_growth - half_angle * radial
+    elif circumferential != "paper":
+        raise CaseError("thermal.expansion_model", circumferential, "'paper' or 'consistent'",
+                        "unknown form of Eq. 9")
     new_radius = radius + radial
     new_half_angle = half_angle + half_thickness_growth / new_radius
     delta_x = new_radius * np.sin(new_half_angle) - radius * np.sin(half_angle)
@@ -74,14 +93,16 @@ def project_on_line_of_action(delta_x, delta_y, load_angle):
     return np.asarray(delta_x) * np.cos(load_angle) + np.asarray(delta_y) * np.sin(load_angle)
 
 
-def flank_expansion_along_line_of_action(gear, roll, flank_rise, base_rise, bore_rise, alpha_th):
+def flank_expansion_along_line_of_action(gear, roll, flank_rise, base_rise, bore_rise, alpha_th,
+                                         circumferential: Circumferential = "paper"):
     """Thermal expansion Δ_t [m] of one gear's flank at the contact point, along the line of action, positive =
     interference (Luo & Li 2020 Eqs. 8–12 with the base-circle term of physics.md §4).
 
     ``gear``: a :class:`~thermogear.geometry.Gear` (base radius, bore radius, tooth thickness); ``roll``: distance
     of the contact point from this gear's own base-circle tangency point along the line of action [m]
     (the pinion: T1K; the wheel: T2K = T1T2 − T1K); ``flank_rise`` Δt_k [K] (array like ``roll``),
-    ``base_rise`` t_b and ``bore_rise`` t_n [K] above the stress-free reference; ``alpha_th`` λ [1/K].
+    ``base_rise`` t_b and ``bore_rise`` t_n [K] above the stress-free reference; ``alpha_th`` λ [1/K];
+    ``circumferential``: the form of Eq. 9 (see :func:`flank_point_displacement`).
     """
     roll = np.asarray(roll, dtype=float)
     if np.any(roll < 0.0):
@@ -93,16 +114,18 @@ def flank_expansion_along_line_of_action(gear, roll, flank_rise, base_rise, bore
     load_angle = pressure_angle_at_point - half_angle  # ω_k = α_k − φ_k
     base_expansion = base_circle_radial_expansion(alpha_th, base_radius, gear.bore_radius, base_rise, bore_rise)
     delta_x, delta_y = flank_point_displacement(alpha_th, radius, half_angle, flank_rise, base_expansion,
-                                                base_radius)
+                                                base_radius, circumferential)
     return project_on_line_of_action(delta_x, delta_y, load_angle)
 
 
 def pair_flank_expansion(gear_pair, roll, pinion_flank_rise, wheel_flank_rise, alpha_th, pinion_base_rise,
-                         pinion_bore_rise, wheel_base_rise, wheel_bore_rise):
+                         pinion_bore_rise, wheel_base_rise, wheel_bore_rise,
+                         circumferential: Circumferential = "paper"):
     """(Δ_t1, Δ_t2) [m] of the pinion and wheel flanks at roll distances T1K [m] of a pair (Eqs. 8–12)."""
     roll = np.asarray(roll, dtype=float)
     pinion = flank_expansion_along_line_of_action(gear_pair.pinion, roll, pinion_flank_rise, pinion_base_rise,
-                                                  pinion_bore_rise, alpha_th)
+                                                  pinion_bore_rise, alpha_th, circumferential)
     wheel = flank_expansion_along_line_of_action(gear_pair.wheel, gear_pair.line_of_action_length - roll,
-                                                 wheel_flank_rise, wheel_base_rise, wheel_bore_rise, alpha_th)
+                                                 wheel_flank_rise, wheel_base_rise, wheel_bore_rise, alpha_th,
+                                                 circumferential)
     return pinion, wheel

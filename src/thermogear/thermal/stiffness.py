@@ -272,7 +272,8 @@ def expansion_for_case(case: "Case", roll, temperature: TemperatureField | None 
         pair, roll, temperature.rise(temperature.pinion_flank_c(gamma)),
         temperature.rise(temperature.wheel_flank_c(gamma)), case.material.thermal_expansion,
         temperature.rise(temperature.pinion_base_c), temperature.rise(temperature.pinion_bore_c),
-        temperature.rise(temperature.wheel_base_c), temperature.rise(temperature.wheel_bore_c))
+        temperature.rise(temperature.wheel_base_c), temperature.rise(temperature.wheel_bore_c),
+        case.thermal.expansion_model)
 
 
 def normal_load_for_case(case: "Case", roll, load_basis: str | None = None, elastic_stiffness=None) -> np.ndarray:
