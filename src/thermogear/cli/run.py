@@ -48,7 +48,7 @@ def run(
     out: Path = typer.Option(None, "--out", help="write the full report (report.html, figures, results.nc, "
                                                  "summary.json) into this folder"),
     force: bool = typer.Option(False, "--force", help="replace an existing --out folder"),
-    quiet: bool = typer.Option(False, "--quiet", "-q", help="no progress bar (for scripts)"),
+    quiet: bool = typer.Option(False, "--quiet", "-q", help="no progress bar, and no summary with --out (for scripts)"),
 ) -> None:
     """Run the dynamics of a case and report Kv, loads, transmission error per region, frequencies and stability.
     Contact loss and instability are said in words (when, how long, how deep)."""
@@ -93,7 +93,10 @@ def run(
         print_json(payload)
         return
     if out is not None:
-        print_summary(outcome, console)
+        if quiet:  # scripts: no summary, but what the model must say (contact loss, instability) still goes out
+            print_messages(messages, error_console)
+        else:
+            print_summary(outcome, console)
         for name, reason in failed.items():
             error_console.print(f"{name} model not computed: {reason}", highlight=False)
         return
