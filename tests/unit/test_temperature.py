@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import sys
+import types
+
 import warnings
 
 import numpy as np
@@ -162,7 +165,9 @@ def test_case_table_too_short_for_the_path(luo2019):
 
 
 def test_fem_without_provider_is_a_clear_error(luo2019, monkeypatch):
+    # an installation without the FE model: no provider registered, and importing the provider module adds none
     monkeypatch.setattr(temperature_module, "_PROVIDERS", {})
+    monkeypatch.setitem(sys.modules, "thermogear.fem.provider", types.ModuleType("thermogear.fem.provider"))
     with pytest.raises(ThermogearError, match="finite-element bulk-temperature model is not available"):
         temperature_field_from_case(luo2019.with_changes(temperature={"model": "fem"}))
 

@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import sys
+import types
+
 import numpy as np
 import pytest
 
@@ -147,7 +150,9 @@ def test_resolve_calibrated_is_labelled_as_a_calibration(luo2019):
 
 
 def test_resolve_fem_without_provider(luo2019, monkeypatch):
+    # an installation without the FE model: no provider registered, and importing the provider module adds none
     monkeypatch.setattr(calibration_module, "_PROVIDERS", {})
+    monkeypatch.setitem(sys.modules, "thermogear.fem.provider", types.ModuleType("thermogear.fem.provider"))
     with pytest.raises(ThermogearError, match="not available"):
         resolve_x_te(luo2019.with_changes(thermal={"x_te_source": "fem"}))
     calibration_module.register_x_te_provider("fem", lambda case: 0.4)

@@ -124,9 +124,11 @@ def _resolve_x_te(case: "Case", load_basis: str | None, temperature: Temperature
         calibration = calibrate_x_te(case, load_basis=load_basis, temperature=temperature)
         check_x_te(calibration.x_te)
         return calibration.x_te, calibration.label
-    if section.x_te_source == "fem":
-        import thermogear.fem.provider  # noqa: F401  (registers the finite-element providers on import)
     provider = _PROVIDERS.get(section.x_te_source)
+    if provider is None and section.x_te_source == "fem":
+        import thermogear.fem.provider  # noqa: F401  (registers thermogear's own FE provider on import)
+
+        provider = _PROVIDERS.get(section.x_te_source)
     if provider is None:
         raise ThermogearError(f"thermal.x_te_source = '{section.x_te_source}': the finite-element thermo-elastic "
                               "analysis is not available in this installation (no provider registered); use "

@@ -20,6 +20,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from thermogear.case import cached_per_case
 from thermogear.errors import CaseError, ModelAssumptionWarning, ModelLimitError
 from thermogear.thermal.expansion import pair_flank_expansion
 from thermogear.thermal.temperature import TemperatureField, temperature_field_from_case
@@ -326,28 +327,49 @@ def thermal_pair_stiffness_at(case: "Case", roll, x_te: float | None = None) -> 
     """k_T [N/m] (total over the face width) of one tooth pair at roll distances T1K [m]: what the dynamics use,
     summed over the pairs in contact by the mesh cycle (pairs in parallel). Zero outside the path [A, E].
 
-    Elastic tooth compliances come from the cached PEM table (``stiffness.table``), so sweeps reuse them.
+    With the case's own X_te and the external load (F_n the same at every position), k_T is a smooth function of
+    the roll distance: it is tabulated once per case on the roll grid of the cached PEM table and interpolated by
+    a cubic spline, like k_e (``stiffness.table``), so every operating point and sweep reuses it. With the pair's
+    share of the load (which jumps at B and D) or an explicit ``x_te`` it is evaluated directly.
     """
-    from thermogear.stiffness.table import tooth_compliance_at  # noqa: PLC0415
-    from thermogear.thermal.calibration import resolve_x_te as _resolve  # noqa: PLC0415
-
     roll = np.asarray(roll, dtype=float)
     pair = case.gear_pair
     points = pair.path_points
     inside = (roll >= points["A"] - CONTACT_TOLERANCE) & (roll <= points["E"] + CONTACT_TOLERANCE)
     result = np.zeros(roll.shape)
     if np.any(inside):
-        temperature = temperature_field_from_case(case)
-        if x_te is None:
-            x_te, _ = _resolve(case, temperature=temperature)
-        check_x_te(x_te)
         inner = np.clip(roll[inside], points["A"], points["E"])
-        pinion, wheel = tooth_compliance_at(pair, case.material, inner)
-        expansion_pinion, expansion_wheel = expansion_for_case(case, inner, temperature)
-        load = normal_load_for_case(case, inner, elastic_stiffness=1.0 / (pinion + wheel))
-        result[inside] = thermal_pair_stiffness(pinion, wheel, expansion_pinion, expansion_wheel, load,
-                                                x_te).stiffness
+        if x_te is None and case.thermal.load_basis == "external":
+            result[inside] = _thermal_stiffness_spline(case)(inner)
+        else:
+            result[inside] = _thermal_pair_stiffness_direct(case, inner, x_te)
     return result if result.ndim else float(result)
+
+
+def _thermal_pair_stiffness_direct(case: "Case", roll: np.ndarray, x_te: float | None = None) -> np.ndarray:
+    """k_T [N/m] at roll distances on [A, E] from Eqs. 8–23 directly (elastic compliances from the PEM table)."""
+    from thermogear.stiffness.table import tooth_compliance_at  # noqa: PLC0415
+    from thermogear.thermal.calibration import resolve_x_te as _resolve  # noqa: PLC0415
+
+    temperature = temperature_field_from_case(case)
+    if x_te is None:
+        x_te, _ = _resolve(case, temperature=temperature)
+    check_x_te(x_te)
+    pinion, wheel = tooth_compliance_at(case.gear_pair, case.material, roll)
+    expansion_pinion, expansion_wheel = expansion_for_case(case, roll, temperature)
+    load = normal_load_for_case(case, roll, elastic_stiffness=1.0 / (pinion + wheel))
+    return thermal_pair_stiffness(pinion, wheel, expansion_pinion, expansion_wheel, load, x_te).stiffness
+
+
+@cached_per_case
+def _thermal_stiffness_spline(case: "Case"):
+    """Cubic spline of k_T over the PEM table's roll grid (401 points from A to E), once per case."""
+    from scipy.interpolate import CubicSpline  # noqa: PLC0415
+
+    from thermogear.stiffness.table import pair_compliance_table  # noqa: PLC0415
+
+    roll = np.asarray(pair_compliance_table(case.gear_pair, case.material).roll)
+    return CubicSpline(roll, _thermal_pair_stiffness_direct(case, roll))
 
 
 def thermal_mesh_stiffness(case: "Case", count: int | None = None, x_te: float | None = None,

@@ -272,9 +272,11 @@ def temperature_field_from_case(case: "Case") -> TemperatureField:
     elif section.model == "tabulated":
         field = _tabulated_field(section, case.directory)
     else:
-        if section.model == "fem":
-            import thermogear.fem.provider  # noqa: F401  (registers the finite-element providers on import)
         provider = _PROVIDERS.get(section.model)
+        if provider is None and section.model == "fem":
+            import thermogear.fem.provider  # noqa: F401  (registers thermogear's own FE provider on import)
+
+            provider = _PROVIDERS.get(section.model)
         if provider is None:
             raise ThermogearError(f"temperature.model = '{section.model}': the finite-element bulk-temperature "
                                   "model is not available in this installation (no provider registered); use "
