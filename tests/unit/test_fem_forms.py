@@ -34,7 +34,7 @@ def _heat_error(level: int, element) -> float:
                                                  sink=SINK, source=source, element=element)
     error = basis.interpolate(temperature)
     quad = basis.global_coordinates()
-    values = error.value - exact_temperature(quad[0], quad[1])
+    values = np.asarray(error) - exact_temperature(quad[0], quad[1])
     return float(np.sqrt(np.sum(values**2 * basis.dx)))
 
 
@@ -82,7 +82,8 @@ def _elastic_error(level: int, order: int, plane: str) -> float:
     field = basis.interpolate(solution)
     quad = basis.global_coordinates()
     ux, uy = exact_displacement(quad[0], quad[1])
-    squared = (field.value[0] - ux) ** 2 + (field.value[1] - uy) ** 2
+    displacement = np.asarray(field)
+    squared = (displacement[0] - ux) ** 2 + (displacement[1] - uy) ** 2
     return float(np.sqrt(np.sum(squared * basis.dx)))
 
 
