@@ -142,12 +142,13 @@ class Simulation:
             from thermogear.dynamics.periodic import periodic_steady_state
 
             orbit = periodic_steady_state(self.problem, self.case.dynamics.samples_per_interval)
-            return response_from_orbit(self.problem, orbit, include_damping_force=damping_force)
+            return response_from_orbit(self.problem, orbit, include_damping_force=damping_force, label=self.model)
         if method == "transient":
             from thermogear.dynamics.transient import transient_from_rest
 
             history = transient_from_rest(self.problem, periods=self.case.dynamics.transient_periods)
-            return response_from_transient(self.problem, history, include_damping_force=damping_force)
+            return response_from_transient(self.problem, history, include_damping_force=damping_force,
+                                           label=self.model)
         raise CaseError("method", method, "periodic | transient", "unknown solution method")
 
 

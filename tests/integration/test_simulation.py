@@ -81,3 +81,11 @@ def test_periodic_and_transient_methods_give_the_same_metrics(luo2019):
 def test_unknown_model_is_refused(luo2019):
     with pytest.raises(CaseError, match="model"):
         Simulation(luo2019, "plastic")
+
+
+def test_responses_are_labelled_with_their_model(luo2019):
+    # plots and result files name the curves by model (elastic / thermal), not by solver
+    for model in ("elastic", "thermal"):
+        response = Simulation(luo2019, model, points_per_period=128).run("periodic")
+        assert response.label == model
+        assert response.to_xarray().attrs["label"] == model
