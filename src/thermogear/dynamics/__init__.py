@@ -14,9 +14,12 @@ from thermogear.dynamics.periodic import (PeriodicOrbit, evaluate_orbit, floquet
                                           periodic_steady_state, periodic_steady_state_batch)
 from thermogear.dynamics.problem import MeshDynamicsProblem, region_name
 from thermogear.dynamics.reference import reference_solve_ivp
+from thermogear.dynamics.response import (DynamicResponse, compute_metrics, response_from_orbit,
+                                          response_from_transient)
 from thermogear.dynamics.transient import (TransientHistory, largest_safe_step, transient_from_rest,
                                            transient_python)
 
-__all__ = ["MeshDynamicsProblem", "PeriodicOrbit", "TransientHistory", "evaluate_orbit", "floquet_multipliers",
+__all__ = ["DynamicResponse", "MeshDynamicsProblem", "compute_metrics", "response_from_orbit",
+           "response_from_transient", "PeriodicOrbit", "TransientHistory", "evaluate_orbit", "floquet_multipliers",
            "largest_safe_step", "periodic_steady_state", "periodic_steady_state_batch", "reference_solve_ivp",
            "region_name", "transient_from_rest", "transient_python"]

@@ -70,8 +70,8 @@ class TransientHistory:
         return self.time[sl] - self.time[start], self.displacement[sl], self.velocity[sl], self.interval[sl]
 
     def convergence(self) -> np.ndarray:
-        """(periods,) change of the period-start displacement from one period to the next, relative to the last
-        period's peak-to-peak-free scale max|x| [-]; tends to 0 as the run settles on the periodic orbit."""
+        """(periods,) change of the period-start displacement from one period to the next, relative to max|x|
+        over the run [-]; tends to 0 as the run settles on the periodic orbit."""
         states = self.period_start_states()
         scale = max(float(np.max(np.abs(self.displacement))), np.finfo(float).tiny)
         return np.abs(np.diff(states[:, 0])) / scale
@@ -157,8 +157,9 @@ def _prepare(problem: MeshDynamicsProblem, periods: int, steps_per_interval: int
         safe = largest_safe_step(problem)
         needed = int(np.max(np.ceil(problem.durations * _eigen_moduli(problem) / SAFE_OMEGA_STEP)))
         raise CaseError("steps_per_interval", steps, f">= {needed} (largest safe step {safe:.4g} s)",
-                        f"the RK4 step gives ω·h = {step:.3g} > {SAFE_OMEGA_STEP} for the natural frequency "
-                        f"{problem.natural_frequency:.6g} Hz: too coarse to be accurate (stability ends at 2.78)")
+                        f"the RK4 step gives |λ|·h = {step:.3g} > {SAFE_OMEGA_STEP} (|λ| up to "
+                        f"{np.max(_eigen_moduli(problem)):.6g} rad/s): too coarse to be accurate "
+                        "(RK4 stability ends at 2.78)")
     total = int(periods) * problem.interval_count * steps + 1
     if total > MAX_STORED_SAMPLES:
         raise CaseError("periods", periods, f"periods × intervals × steps <= {MAX_STORED_SAMPLES}",
