@@ -1,0 +1,272 @@
+"""The nonsmooth (backlash, contact-loss) mesh equation of motion as data.
+
+Per tooth-pair slot s, on each interval of the mesh period (coefficients piecewise constant between ``nodes``):
+
+    me·ẍ + c_eff·ẋ + Σ_s k_s·⟨x − e_s⟩₊ − Σ_s k'_s·⟨−x − j − e'_s⟩₊ = w,      ⟨u⟩₊ = max(u, 0)
+
+x is the dynamic transmission error along the line of action [m] (positive = approach of the driving flanks),
+e_s the unloaded deviation of pair s on the driving flank [m] (positive = material missing: the pair engages
+later), j the normal backlash [m] and k'_s, e'_s the stiffness and deviation of the back (coast) flank pair.
+The dead-zone force law is that of Kahraman & Singh (1990), "Non-linear dynamics of a spur gear pair",
+J. Sound Vib. 142(1):49–75, written here per tooth pair with the time-varying pair stiffness of the linear model.
+
+Damping (``damping_mode``):
+
+* ``"always"`` (default): c acts on ẋ at all times, also in free flight, as in Kahraman & Singh (1990). The oil
+  squeezed out of the closing gap and the bearings and shafts that carry the gear bodies keep dissipating energy
+  while the flanks are apart; the lumped c of a torsional model stands for all of them, not only for the contact.
+  How large the in-flight share is, is not known in general; "always" is the usual modelling choice and keeps the
+  vector field continuous (no saltation at a contact switch).
+* ``"in_contact"``: c is scaled by the fraction of the pairs present on the interval that are in contact (driving
+  or back flank), so it vanishes in free flight; the vector field then jumps at every contact switch.
+
+This module holds inputs and checks them; it has no solver logic.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from thermogear.dynamics.problem import MeshDynamicsProblem
+from thermogear.errors import CaseError
+
+__all__ = ["DAMPING_MODES", "BacklashMeshProblem"]
+
+DAMPING_MODES = ("always", "in_contact")
+
+
+def _checked(name: str, value: object, shape: tuple[int, ...], reason: str) -> np.ndarray:
+    array = np.array(value, dtype=float, copy=True)
+    if array.ndim == 1 and len(shape) == 2 and shape[0] == 1:
+        array = array[None, :]
+    if array.shape != shape:
+        raise CaseError(name, f"array of shape {array.shape}", f"shape {shape}", reason)
+    if not np.all(np.isfinite(array)):
+        raise CaseError(name, f"{int(np.sum(~np.isfinite(array)))} non-finite values", "finite numbers",
+                        "a NaN or infinite coefficient has no physical meaning")
+    array = np.ascontiguousarray(array)
+    array.setflags(write=False)
+    return array
+
+
+@dataclass(frozen=True)
+class BacklashMeshProblem:
+    """Torsional mesh model with contact loss and back-side contact over one mesh period.
+
+    Parameters
+    ----------
+    mass:
+        Equivalent mass me [kg].
+    nodes:
+        (n+1,) interval boundaries [s], ``nodes[0] = 0``, ``nodes[-1] = T`` (mesh period), strictly increasing.
+    pair_stiffness:
+        (slots, n) driving-flank stiffness k_s of each tooth-pair slot [N/m], >= 0 (0 = pair not in mesh).
+    pair_deviation:
+        (slots, n) unloaded deviation e_s of the driving flank [m] (positive = engages later).
+    back_pair_stiffness, back_pair_deviation:
+        (slots, n) the same for the back flank, k'_s [N/m] and e'_s [m].
+    backlash:
+        Normal backlash j [m], > 0 (j <= 0 is a jammed mesh, refused).
+    damping:
+        (n,) mesh damping c on each interval [N·s/m], >= 0.
+    force:
+        Static load w [N], scalar or (n,), > 0.
+    damping_mode:
+        ``"always"`` or ``"in_contact"`` (module docstring).
+    face_width:
+        Face width b [m], only for per-width views of loads.
+    """
+
+    mass: float
+    nodes: np.ndarray
+    pair_stiffness: np.ndarray
+    pair_deviation: np.ndarray
+    back_pair_stiffness: np.ndarray
+    back_pair_deviation: np.ndarray
+    backlash: float
+    damping: np.ndarray
+    force: float | np.ndarray
+    damping_mode: str = "always"
+    face_width: float = 1.0
+    _force_array: np.ndarray = field(init=False, repr=False, compare=False)
+
+    def __post_init__(self) -> None:
+        mass = float(self.mass)
+        if not np.isfinite(mass) or mass <= 0.0:
+            raise CaseError("mass", self.mass, "> 0 kg, finite", "the equivalent mass me must be positive")
+        object.__setattr__(self, "mass", mass)
+        nodes = np.array(self.nodes, dtype=float, copy=True)
+        if nodes.ndim != 1 or nodes.size < 2 or not np.all(np.isfinite(nodes)):
+            raise CaseError("nodes", f"array of shape {nodes.shape}", "1-D, >= 2 finite times [s]",
+                            "the nodes bound the intervals of one mesh period")
+        if nodes[0] != 0.0:
+            raise CaseError("nodes[0]", float(nodes[0]), "0", "the mesh period starts at τ = 0")
+        if np.any(np.diff(nodes) <= 0.0):
+            raise CaseError("nodes", "not strictly increasing", "strictly increasing times",
+                            "each interval must have a positive length")
+        nodes.setflags(write=False)
+        object.__setattr__(self, "nodes", nodes)
+        n = nodes.size - 1
+        stiffness = np.atleast_2d(np.array(self.pair_stiffness, dtype=float))
+        shape = (stiffness.shape[0], n)
+        per_pair = "one row per tooth-pair slot, one column per interval between nodes"
+        stiffness = _checked("pair_stiffness", stiffness, shape, per_pair)
+        back_stiffness = _checked("back_pair_stiffness", self.back_pair_stiffness, shape, per_pair)
+        for name, array in (("pair_stiffness", stiffness), ("back_pair_stiffness", back_stiffness)):
+            if np.any(array < 0.0):
+                raise CaseError(name, float(array.min()), ">= 0 N/m", "0 marks a pair out of mesh")
+        if not np.any(stiffness > 0.0):
+            raise CaseError("pair_stiffness", "all zero", "some pair with k > 0",
+                            "without any tooth pair the mesh transmits no load")
+        object.__setattr__(self, "pair_stiffness", stiffness)
+        object.__setattr__(self, "back_pair_stiffness", back_stiffness)
+        object.__setattr__(self, "pair_deviation", _checked("pair_deviation", self.pair_deviation, shape, per_pair))
+        object.__setattr__(self, "back_pair_deviation",
+                           _checked("back_pair_deviation", self.back_pair_deviation, shape, per_pair))
+        backlash = float(self.backlash)
+        if not np.isfinite(backlash) or backlash <= 0.0:
+            raise CaseError("backlash", self.backlash, "> 0 m, finite",
+                            "zero or negative backlash is a jammed mesh: both flanks would be loaded at once")
+        object.__setattr__(self, "backlash", backlash)
+        damping = _checked("damping", self.damping, (n,), "one damping value per interval")
+        if np.any(damping < 0.0):
+            raise CaseError("damping", float(damping.min()), ">= 0 N·s/m", "negative damping injects energy")
+        object.__setattr__(self, "damping", damping)
+        force_value = np.array(self.force, dtype=float)
+        if force_value.ndim == 0:
+            force_array = np.full(n, float(force_value))
+            object.__setattr__(self, "force", float(force_value))
+        else:
+            force_array = _checked("force", force_value, (n,), "one load per interval")
+            object.__setattr__(self, "force", force_array)
+        if not np.all(np.isfinite(force_array)) or np.any(force_array <= 0.0):
+            raise CaseError("force", self.force, "finite, > 0 N", "the mesh is modelled under a positive load")
+        force_array = np.ascontiguousarray(force_array)
+        force_array.setflags(write=False)
+        object.__setattr__(self, "_force_array", force_array)
+        if self.damping_mode not in DAMPING_MODES:
+            raise CaseError("damping_mode", self.damping_mode, " | ".join(DAMPING_MODES),
+                            "damping acts always (default) or only in proportion to the pairs in contact")
+        face_width = float(self.face_width)
+        if not np.isfinite(face_width) or face_width <= 0.0:
+            raise CaseError("face_width", self.face_width, "> 0 m", "used to express loads per unit face width")
+        object.__setattr__(self, "face_width", face_width)
+
+    # ---------------------------------------------------------------- derived quantities
+    @property
+    def slot_count(self) -> int:
+        """Number of tooth-pair slots."""
+        return int(self.pair_stiffness.shape[0])
+
+    @property
+    def interval_count(self) -> int:
+        """Number of intervals n."""
+        return int(self.nodes.size - 1)
+
+    @property
+    def durations(self) -> np.ndarray:
+        """(n,) interval lengths [s]."""
+        return np.diff(self.nodes)
+
+    @property
+    def period(self) -> float:
+        """Mesh period T [s]."""
+        return float(self.nodes[-1])
+
+    @property
+    def force_per_interval(self) -> np.ndarray:
+        """(n,) static load w on each interval [N]."""
+        return self._force_array
+
+    @property
+    def static_load(self) -> float:
+        """Time-mean static load w0 [N] (the denominator of Kv, as in the linear metrics)."""
+        return float(np.dot(self._force_array, self.durations) / self.period)
+
+    @property
+    def mesh_stiffness(self) -> np.ndarray:
+        """(n,) driving-flank stiffness with every present pair in contact, Σ_s k_s [N/m]."""
+        return self.pair_stiffness.sum(axis=0)
+
+    @property
+    def mean_stiffness(self) -> float:
+        """Time-mean of Σ_s k_s [N/m]."""
+        return float(np.dot(self.mesh_stiffness, self.durations) / self.period)
+
+    @property
+    def natural_frequency(self) -> float:
+        """f_n = sqrt(mean Σk / me)/2π [Hz]."""
+        return float(np.sqrt(self.mean_stiffness / self.mass) / (2.0 * np.pi))
+
+    @property
+    def frequency_ratio(self) -> float:
+        """Mesh frequency over natural frequency λ = (1/T)/f_n [-]."""
+        return 1.0 / self.period / self.natural_frequency
+
+    @property
+    def displacement_scale(self) -> float:
+        """Largest static deflection w/Σk [m]: the scale of x for tolerances."""
+        stiffness = self.mesh_stiffness
+        present = stiffness > 0.0
+        return float(np.max(self._force_array[present] / stiffness[present]))
+
+    @property
+    def velocity_scale(self) -> float:
+        """displacement_scale times the largest natural angular frequency [m/s]."""
+        return self.displacement_scale * float(np.sqrt(np.max(self.mesh_stiffness) / self.mass))
+
+    def linear_problem(self) -> MeshDynamicsProblem | None:
+        """The linear model with every present driving pair in contact (deviations folded into the load).
+
+        Σ_s k_s·(x − e_s) = w  ⇔  (Σ_s k_s)·x = w + Σ_s k_s·e_s, so the linear problem has stiffness Σ_s k_s and
+        load w + Σ_s k_s e_s. None when an interval has no pair or the folded load is not positive.
+        """
+        stiffness = self.mesh_stiffness
+        if np.any(stiffness <= 0.0):
+            return None
+        load = self._force_array + np.sum(self.pair_stiffness * self.pair_deviation, axis=0)
+        if np.any(load <= 0.0):
+            return None
+        contact = np.maximum(np.sum(self.pair_stiffness > 0.0, axis=0), 1)
+        return MeshDynamicsProblem(mass=self.mass, nodes=self.nodes, stiffness=stiffness, damping=self.damping,
+                                   force=load, contact_count=contact, pair_stiffness=self.pair_stiffness,
+                                   face_width=self.face_width)
+
+    def with_changes(self, **changes: object) -> BacklashMeshProblem:
+        """A copy with some fields replaced (checked again)."""
+        values = {name: getattr(self, name) for name in
+                  ("mass", "nodes", "pair_stiffness", "pair_deviation", "back_pair_stiffness", "back_pair_deviation",
+                   "backlash", "damping", "force", "damping_mode", "face_width")}
+        unknown = set(changes) - set(values)
+        if unknown:
+            raise CaseError("with_changes", sorted(unknown), ", ".join(values), "unknown field")
+        values.update(changes)
+        return BacklashMeshProblem(**values)
+
+    # ---------------------------------------------------------------- constructors
+    @classmethod
+    def from_linear(cls, problem: MeshDynamicsProblem, backlash: float, pair_deviation: object = 0.0,
+                    back_pair_stiffness: object | None = None, back_pair_deviation: object | None = None,
+                    damping_mode: str = "always") -> BacklashMeshProblem:
+        """Build from a linear :class:`MeshDynamicsProblem` plus deviations and backlash.
+
+        The pair stiffness is the problem's ``pair_stiffness`` (one slot carrying the whole ``stiffness`` when it
+        has none). ``pair_deviation`` [m] is broadcast to (slots, n); the back flank defaults to the driving-flank
+        stiffness and deviation (a symmetric tooth pair).
+        """
+        pair_stiffness = (problem.pair_stiffness if problem.pair_stiffness is not None
+                          else problem.stiffness[None, :])
+        shape = pair_stiffness.shape
+        try:
+            deviation = np.broadcast_to(np.asarray(pair_deviation, dtype=float), shape)
+        except ValueError:
+            raise CaseError("pair_deviation", f"shape {np.shape(pair_deviation)}", f"broadcastable to {shape}",
+                            "one deviation per tooth-pair slot and interval") from None
+        back_k = pair_stiffness if back_pair_stiffness is None else back_pair_stiffness
+        back_e = deviation if back_pair_deviation is None else back_pair_deviation
+        return cls(mass=problem.mass, nodes=problem.nodes, pair_stiffness=pair_stiffness, pair_deviation=deviation,
+                   back_pair_stiffness=back_k, back_pair_deviation=back_e, backlash=backlash,
+                   damping=problem.damping, force=problem.force, damping_mode=damping_mode,
+                   face_width=problem.face_width)
