@@ -1,0 +1,257 @@
+"""The thermo-elastic mesh of a case: one frozen component the mesh model plugs in (docs/thermal.md).
+
+``ThermoelasticMesh.from_case(case)`` (memoised per case) resolves the temperatures, expands gears and housing,
+builds the hot gear pair, Young's modulus of each gear at its tooth temperature, the backlash hot and cold, the
+jamming temperature and the unloaded deviations; it then answers per tooth pair along the roll distance on the hot
+geometry (stiffness, deviation) and, for a normal load, the loaded static transmission error over one mesh period.
+At zero rise (everything at 20 °C, the reference) it is the elastic model bit for bit.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from thermogear.case import cached_per_case
+from thermogear.geometry import GearPair
+from thermogear.materials import Material
+from thermogear.mesh_cycle import MeshCycle, MeshGrid
+from thermogear.stiffness.table import pair_stiffness_at, tooth_compliance_at
+from thermogear.thermal.temperature import TemperatureField, temperature_field_from_case
+from thermogear.thermoelastic.deviations import (base_pitch_deviation, equivalent_bulk_rise, flank_distortion,
+                                                 tip_relief)
+from thermogear.thermoelastic.inputs import (GearInputs, HousingInputs, backlash_allowance, check_not_jammed,
+                                             gear_inputs, housing_inputs)
+from thermogear.thermoelastic.load_sharing import LoadedTransmissionError, loaded_transmission_error
+from thermogear.thermoelastic.materials import youngs_modulus_at
+from thermogear.thermoelastic.operating import BacklashAllowance, backlash_at, jamming_rise, operating_gear_pair
+
+if TYPE_CHECKING:
+    from thermogear.case import Case
+
+#: Contact positions Γ of the thermal flank-distortion table (A to E inclusive); linear interpolation between them
+#: is exact to < 1e-4 of the distortion for the smooth (polynomial) flank fields of thermogear.
+DISTORTION_POINT_COUNT = 401
+
+#: Intervals of one mesh period for the period statistics (min/mean/max stiffness, STE) [–].
+PERIOD_INTERVAL_COUNT = 512
+
+#: Plausibility bounds: jamming closer than this above the operating bulk temperature is flagged [K]; a hot
+#: contact ratio below this is flagged [–]; the stiffness change may exceed what E(T) and the change of contact
+#: ratio explain by this much before it is flagged [–] (the PEM table interpolation is good to 1e-6).
+JAMMING_MARGIN_K = 20.0
+CONTACT_RATIO_MINIMUM = 1.05
+STIFFNESS_EXPLAINED_SLACK = 0.005
+
+
+@dataclass(frozen=True, eq=False)
+class ThermoelasticMesh:
+    """The gear mesh of a case at its operating temperatures (SI units; temperatures in °C)."""
+
+    cold_gear_pair: GearPair  # at the reference temperature
+    gear_pair: GearPair  # at temperature: gears by their bulk rise, centre distance by the housing's
+    material: Material  # the case's material, E at 20 °C
+    reference_c: float
+    housing_c: float
+    bulk_c: tuple[float, float]  # equivalent bulk temperature of pinion and wheel [°C]
+    tooth_c: tuple[float, float]  # tooth temperature of E(T) [°C]
+    strains: tuple[float, float, float]  # pinion, wheel, housing [–]
+    youngs_modulus: tuple[float, float]  # E at the tooth temperatures [Pa]
+    youngs_modulus_cold: tuple[float, float]  # E at the reference temperature [Pa]
+    gears: tuple[GearInputs, GearInputs]
+    housing: HousingInputs
+    allowance: BacklashAllowance
+    backlash_normal: float  # at temperature [m]
+    backlash_normal_cold: float  # at the reference temperature [m]
+    jamming_bulk_temperature_c: float | None
+    distortion_gamma: np.ndarray  # Γ of the distortion table (cold pair)
+    distortion: np.ndarray  # thermal flank distortion of a pair at distortion_gamma [m], + = material missing
+    speed_rpm: float
+    normal_load: float  # the case's static normal load [N]
+    temperature_source: str
+
+    # ---------------------------------------------------------------------------------------- construction
+    @classmethod
+    def from_case(cls, case: "Case") -> "ThermoelasticMesh":
+        """The component of a case, built once per case (raises CaseError when the gears jam)."""
+        return _thermoelastic_mesh(case)
+
+    # ------------------------------------------------------------------------------------------- stiffness
+    @property
+    def modulus_ratios(self) -> tuple[float, float]:
+        """E(T)/E(20 °C) of pinion and wheel [–]."""
+        return (self.youngs_modulus[0] / self.material.youngs_modulus,
+                self.youngs_modulus[1] / self.material.youngs_modulus)
+
+    def pair_stiffness_at(self, roll) -> np.ndarray:
+        """Pair stiffness [N/m, total over the face width] at roll distances on the hot path [A', E'].
+
+        Every PEM compliance of a tooth (bending, shear, axial, fillet, its half of Hertz) is ∝ 1/E, so each
+        tooth's compliance from the cached table of the hot pair is divided by its own E ratio. With equal ratios
+        this is the ratio times the cached pair stiffness (bit for bit the elastic one at ratio 1).
+        """
+        ratio_pinion, ratio_wheel = self.modulus_ratios
+        if ratio_pinion == ratio_wheel:
+            return ratio_pinion * pair_stiffness_at(self.gear_pair, self.material, roll)
+        pinion, wheel = tooth_compliance_at(self.gear_pair, self.material, roll)
+        return 1.0 / (pinion / ratio_pinion + wheel / ratio_wheel)
+
+    def elastic_pair_stiffness_at(self, roll) -> np.ndarray:
+        """The elastic model's pair stiffness [N/m] (cold pair, E at 20 °C) at roll distances on the cold path."""
+        return pair_stiffness_at(self.cold_gear_pair, self.material, roll)
+
+    # ------------------------------------------------------------------------------------------ deviations
+    def deviation_parts_at(self, roll) -> dict[str, np.ndarray]:
+        """The parts of the unloaded deviation [m] at roll distances on the hot path: ``tip_relief`` (both gears),
+        ``base_pitch`` and ``thermal_distortion``; positive = material missing."""
+        roll = np.asarray(roll, dtype=float)
+        pair = self.gear_pair
+        pinion, wheel = self.gears
+        pinion_strain, wheel_strain, _ = self.strains
+        points = pair.path_points
+        relief = tip_relief(roll, points["E"], pinion.tip_relief, pinion.tip_relief_length * (1 + pinion_strain),
+                            pinion.tip_relief_shape)
+        wheel_roll = pair.line_of_action_length - roll
+        relief = relief + tip_relief(wheel_roll, pair.line_of_action_length - points["A"], wheel.tip_relief,
+                                     wheel.tip_relief_length * (1 + wheel_strain), wheel.tip_relief_shape)
+        wheel_pitch = 2.0 * math.pi * pair.wheel.base_radius / pair.wheel.teeth
+        pitch = base_pitch_deviation(roll, points["C"], pair.base_pitch, wheel_pitch)
+        distortion = np.interp(pair.gamma(roll), self.distortion_gamma, self.distortion)
+        return {"tip_relief": relief, "base_pitch": pitch, "thermal_distortion": distortion}
+
+    def pair_deviation_at(self, roll) -> np.ndarray:
+        """Unloaded deviation e(roll) of a tooth pair [m] on the hot path, positive = material missing."""
+        parts = self.deviation_parts_at(roll)
+        return parts["tip_relief"] + parts["base_pitch"] + parts["thermal_distortion"]
+
+    # --------------------------------------------------------------------------------- one mesh period
+    def mesh_grid(self, count: int = PERIOD_INTERVAL_COUNT, cold: bool = False) -> MeshGrid:
+        """Pair slots over one mesh period of the hot (or cold) pair at the case's speed."""
+        pair = self.cold_gear_pair if cold else self.gear_pair
+        return MeshCycle(pair, self.speed_rpm).grid(count)
+
+    def mesh_stiffness(self, count: int = PERIOD_INTERVAL_COUNT, cold: bool = False) -> tuple[MeshGrid, np.ndarray]:
+        """(grid, k(τ)): the unloaded mesh stiffness over one period [N/m], pairs on the path in parallel; thermal
+        (hot pair, E(T)) or ``cold`` (the elastic model)."""
+        grid = self.mesh_grid(count, cold)
+        stiffness = self._per_pair(grid, self.elastic_pair_stiffness_at if cold else self.pair_stiffness_at)
+        return grid, MeshCycle.total(stiffness, grid.in_contact)
+
+    def loaded_transmission_error(self, normal_load: float | None = None, count: int = PERIOD_INTERVAL_COUNT,
+                                  cold: bool = False) -> tuple[MeshGrid, LoadedTransmissionError]:
+        """Loaded static transmission error and load share over one mesh period at ``normal_load`` [N] (default:
+        the case's). ``cold``: the elastic model's pair with the same tip reliefs and no thermal deviation."""
+        load = self.normal_load if normal_load is None else float(normal_load)
+        grid = self.mesh_grid(count, cold)
+        if cold:
+            stiffness = self._per_pair(grid, self.elastic_pair_stiffness_at)
+            deviation = self._per_pair(grid, self._cold_deviation_at)
+        else:
+            stiffness = self._per_pair(grid, self.pair_stiffness_at)
+            deviation = self._per_pair(grid, self.pair_deviation_at)
+        return grid, loaded_transmission_error(stiffness, deviation, load, grid.in_contact)
+
+    def _cold_deviation_at(self, roll) -> np.ndarray:
+        pair = self.cold_gear_pair
+        pinion, wheel = self.gears
+        points = pair.path_points
+        return (tip_relief(roll, points["E"], pinion.tip_relief, pinion.tip_relief_length, pinion.tip_relief_shape)
+                + tip_relief(pair.line_of_action_length - np.asarray(roll, dtype=float),
+                             pair.line_of_action_length - points["A"], wheel.tip_relief, wheel.tip_relief_length,
+                             wheel.tip_relief_shape))
+
+    @staticmethod
+    def _per_pair(grid: MeshGrid, evaluate) -> np.ndarray:
+        values = np.zeros_like(grid.roll)
+        values[grid.in_contact] = evaluate(grid.roll[grid.in_contact])
+        return values
+
+    # ------------------------------------------------------------------------------------------- checks
+    @property
+    def plausibility(self) -> tuple[str, ...]:
+        """Findings that make the thermal result doubtful, in words (empty when nothing is flagged)."""
+        flags = []
+        hot_grid, hot = self.mesh_stiffness()
+        cold_grid, cold = self.mesh_stiffness(cold=True)
+        change = float(hot_grid.time_average(hot) / cold_grid.time_average(cold)) - 1.0
+        modulus = 0.5 * sum(self.modulus_ratios) - 1.0
+        width = self.gear_pair.face_width / self.cold_gear_pair.face_width - 1.0
+        contact = self.gear_pair.contact_ratio / self.cold_gear_pair.contact_ratio - 1.0
+        if abs(change - modulus - width) > 2.0 * abs(contact) + STIFFNESS_EXPLAINED_SLACK:
+            flags.append(f"the mean mesh stiffness changes by {100 * change:+.2f} %, more than E(T) "
+                         f"({100 * modulus:+.2f} %) and the change of contact ratio ({100 * contact:+.2f} %) explain")
+        jamming = self.jamming_bulk_temperature_c
+        if jamming is not None and jamming - max(self.bulk_c) < JAMMING_MARGIN_K:
+            flags.append(f"the backlash closes at a bulk temperature of {jamming:.1f} °C, less than "
+                         f"{JAMMING_MARGIN_K:g} K above the operating {max(self.bulk_c):.1f} °C")
+        if self.gear_pair.contact_ratio < CONTACT_RATIO_MINIMUM:
+            flags.append(f"the contact ratio at temperature is {self.gear_pair.contact_ratio:.3f}, close to 1")
+        return tuple(flags)
+
+
+# --------------------------------------------------------------------------------------------- building
+@cached_per_case
+def _thermoelastic_mesh(case: "Case") -> ThermoelasticMesh:
+    field = temperature_field_from_case(case)
+    pair = case.gear_pair
+    gears_section = case.gears_input
+    inputs = tuple(gear_inputs(gears_section, case.material_input, name) for name in ("pinion", "wheel"))
+    housing = housing_inputs(case.housing, case.lubricant)
+    reference = field.reference_c
+    bulk_rise = (equivalent_bulk_rise(pair.pinion, inputs[0].expansion_per_k, field.pinion_base_c - reference,
+                                      field.pinion_bore_c - reference),
+                 equivalent_bulk_rise(pair.wheel, inputs[1].expansion_per_k, field.wheel_base_c - reference,
+                                      field.wheel_bore_c - reference))
+    bulk_c = (reference + bulk_rise[0], reference + bulk_rise[1])
+    strains = (inputs[0].expansion_per_k * bulk_rise[0], inputs[1].expansion_per_k * bulk_rise[1],
+               housing.expansion_per_k * (housing.temperature_c - reference))
+    allowance = backlash_allowance(pair, gears_section)
+    hot_backlash = check_not_jammed(pair, allowance, inputs[0], inputs[1], housing, reference, bulk_c,
+                                    "temperature.bulk_c" if field.source == "uniform" else "temperature")
+    rise = jamming_rise(pair, allowance, inputs[0].expansion_per_k, inputs[1].expansion_per_k, strains[2])
+    tooth_c = _tooth_temperatures(field, pair)
+    modulus = case.material.youngs_modulus
+    gamma, distortion = _distortion_table(field, pair, inputs, bulk_rise)
+    return ThermoelasticMesh(
+        cold_gear_pair=pair, gear_pair=operating_gear_pair(pair, *strains), material=case.material,
+        reference_c=reference, housing_c=housing.temperature_c, bulk_c=bulk_c, tooth_c=tooth_c, strains=strains,
+        youngs_modulus=tuple(youngs_modulus_at(modulus, g.modulus_coefficient_per_k, t)
+                             for g, t in zip(inputs, tooth_c)),
+        youngs_modulus_cold=tuple(youngs_modulus_at(modulus, g.modulus_coefficient_per_k, reference)
+                                  for g in inputs),
+        gears=inputs, housing=housing, allowance=allowance, backlash_normal=hot_backlash,
+        backlash_normal_cold=backlash_at(pair, allowance, 0.0, 0.0, 0.0),
+        jamming_bulk_temperature_c=None if rise is None else reference + rise,
+        distortion_gamma=gamma, distortion=distortion, speed_rpm=case.operating_point.speed_rpm,
+        normal_load=case.normal_load, temperature_source=field.source)
+
+
+def _tooth_temperatures(field: TemperatureField, pair: GearPair) -> tuple[float, float]:
+    """Tooth temperature of each gear for E(T) [°C]: the mean of its flank temperature over the path and its
+    base-circle temperature (a uniform field: the bulk temperature, exactly)."""
+    if field.source == "uniform":
+        return field.pinion_base_c, field.wheel_base_c
+    gamma = pair.gamma(pair.roll_grid(DISTORTION_POINT_COUNT))
+    pinion_flank = float(np.mean(field.pinion_flank_c(gamma)))
+    wheel_flank = float(np.mean(field.wheel_flank_c(gamma)))
+    return 0.5 * (pinion_flank + field.pinion_base_c), 0.5 * (wheel_flank + field.wheel_base_c)
+
+
+def _distortion_table(field: TemperatureField, pair: GearPair, inputs, bulk_rise) -> tuple[np.ndarray, np.ndarray]:
+    """Thermal flank distortion of a pair on Γ from A to E of the cold pair [m], + = material missing."""
+    roll = pair.roll_grid(DISTORTION_POINT_COUNT)
+    gamma = np.asarray(pair.gamma(roll), dtype=float)
+    reference = field.reference_c
+    pinion = flank_distortion(pair.pinion, roll, field.pinion_flank_c(gamma) - reference,
+                              field.pinion_base_c - reference, field.pinion_bore_c - reference,
+                              inputs[0].expansion_per_k, bulk_rise[0])
+    wheel = flank_distortion(pair.wheel, pair.line_of_action_length - roll, field.wheel_flank_c(gamma) - reference,
+                             field.wheel_base_c - reference, field.wheel_bore_c - reference,
+                             inputs[1].expansion_per_k, bulk_rise[1])
+    distortion = -(pinion + wheel)
+    gamma.setflags(write=False)
+    distortion.setflags(write=False)
+    return gamma, distortion
