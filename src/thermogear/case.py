@@ -23,8 +23,9 @@ from thermogear.fzg import fzg_load_stage_torque
 from thermogear.geometry import Gear, GearPair
 from thermogear.materials import Material
 from thermogear.operating import OperatingPoint
-from thermogear.schema import (CaseFile, DampingSection, DynamicsSection, FemSection, LubricantSection,
-                               TemperatureSection, ThermalSection)
+from thermogear.schema import (CaseFile, DampingSection, DynamicsSection, FemSection, GearsSection, HousingSection,
+                               LubricantSection, MaterialSection, TemperatureSection, ThermalSection)
+from thermogear.thermoelastic.inputs import check_thermoelastic_inputs
 
 
 @dataclass(frozen=True)
@@ -52,6 +53,10 @@ class Case:
     fem: FemSection
     source: str  # parameter-set name or file path
     document: dict[str, Any] = field(compare=False, repr=False)  # the case file as loaded (for result files)
+    # inputs of the thermo-elastic mesh model (thermogear.thermoelastic): the validated sections
+    housing: HousingSection = HousingSection()
+    gears_input: GearsSection | None = None
+    material_input: MaterialSection = MaterialSection()
 
     @property
     def directory(self) -> Path | None:
@@ -159,6 +164,7 @@ def case_from_document(document: dict[str, Any], source: str = "<memory>") -> Ca
 
     centre = None if gears.centre_distance_mm is None else gears.centre_distance_mm * 1e-3
     pair = GearPair.create(gear(gears.pinion), gear(gears.wheel), centre, tip_shortening=gears.tip_shortening)
+    check_thermoelastic_inputs(pair, model)
     material = model.material
     op = model.operating
     if op.power_kw is not None:
@@ -181,7 +187,8 @@ def case_from_document(document: dict[str, Any], source: str = "<memory>") -> Ca
                           thermal_expansion=material.thermal_expansion_per_k),
         operating_point=operating, roughness_ra=gears.roughness_ra_um * 1e-6, inertias=inertias,
         lubricant=model.lubricant, temperature=model.temperature, thermal=model.thermal, damping=model.damping,
-        dynamics=model.dynamics, fem=model.fem, source=source, document=document)
+        dynamics=model.dynamics, fem=model.fem, source=source, document=document, housing=model.housing,
+        gears_input=gears, material_input=material)
 
 
 # --------------------------------------------------------------------------------------------- errors

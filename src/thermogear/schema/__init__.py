@@ -7,6 +7,7 @@ from pydantic import Field
 from thermogear.schema.base import Section
 from thermogear.schema.dynamics import DampingSection, DynamicsSection
 from thermogear.schema.fem import FemSection
+from thermogear.schema.housing import HousingSection
 from thermogear.schema.gears import GearSection, GearsSection, MaterialSection, OperatingSection
 from thermogear.schema.lubricant import LubricantSection
 from thermogear.schema.sweep import SweepSection
@@ -33,11 +34,12 @@ class CaseFile(Section):
     lubricant: LubricantSection = LubricantSection(name="iso_vg_100_mineral")
     temperature: TemperatureSection = TemperatureSection()
     thermal: ThermalSection = ThermalSection()
+    housing: HousingSection = HousingSection()
     damping: DampingSection = DampingSection()
     dynamics: DynamicsSection = DynamicsSection()
     fem: FemSection = FemSection()
     sweep: SweepSection | None = None
 
 
-__all__ = ["CaseFile", "CaseInfo", "DampingSection", "DynamicsSection", "FemSection", "GearSection", "GearsSection",
+__all__ = ["CaseFile", "CaseInfo", "DampingSection", "DynamicsSection", "FemSection", "GearSection", "GearsSection", "HousingSection",
            "LubricantSection", "MaterialSection", "OperatingSection", "SweepSection", "TemperatureSection", "ThermalSection"]

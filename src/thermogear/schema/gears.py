@@ -2,7 +2,8 @@
 
 from __future__ import annotations
 
-from typing import Annotated
+import math
+from typing import Annotated, Literal
 
 from pydantic import Field, model_validator
 
@@ -20,6 +21,23 @@ class GearSection(Section):
                                             description="tip diameter d_a [mm]; default from the geometry")] | None = None
     inertia_kg_m2: Annotated[float, Field(gt=0.0, description="polar moment of inertia [kg m²]; default: solid "
                                                                "disc of the pitch radius with the bore")] | None = None
+    # thermo-elastic mesh model (docs/thermal.md): per-gear material at temperature and profile modification
+    thermal_expansion_per_k: Annotated[float, Field(ge=0.0, le=1e-4, description="this gear's linear expansion "
+                                                    "coefficient [1/K]; default [material]")] | None = None
+    youngs_modulus_temperature_coefficient_per_k: Annotated[float, Field(
+        ge=-1e-3, le=0.0, description="β_E of E(T) = E(20 °C)·[1 + β_E (T − 20 °C)] for this gear [1/K]; "
+                                      "default [material]")] | None = None
+    tip_relief_um: Annotated[float, Field(ge=0.0, le=1000.0, description="tip relief amount at the tip, along "
+                                                                         "the line of action [μm]")] = 0.0
+    tip_relief_length_mm: Annotated[float, Field(gt=0.0, le=1000.0, description="tip relief length: roll "
+                                                 "distance along the line of action from the tip [mm]")] | None = None
+    tip_relief_shape: Literal["linear", "parabolic"] = Field("linear", description="tip relief shape")
+
+    @model_validator(mode="after")
+    def _relief_complete(self):
+        if self.tip_relief_um > 0.0 and self.tip_relief_length_mm is None:
+            raise ValueError("tip_relief_length_mm: a tip relief needs its length (roll distance from the tip, mm)")
+        return self
 
 
 class GearsSection(Section):
@@ -36,6 +54,8 @@ class GearsSection(Section):
     tip_shortening: bool = Field(True, description="shorten the tips to keep the standard clearance (ISO 21771)")
     roughness_ra_um: Annotated[float, Field(ge=0.0, le=50.0, description="composite arithmetic mean roughness "
                                                                         "Ra = (Ra1 + Ra2)/2 [μm]")] = 1.0
+    backlash_normal_um: Annotated[float, Field(ge=0.0, le=20000.0, description="normal backlash at the reference "
+                                               "temperature [μm]; default: AGMA 2002-B88 minimum")] | None = None
     pinion: GearSection
     wheel: GearSection
 
@@ -44,6 +64,15 @@ class GearsSection(Section):
         for name in ("pinion", "wheel"):
             if self.face_width_mm is None and getattr(self, name).face_width_mm is None:
                 raise ValueError(f"face_width_mm: give gears.face_width_mm or gears.{name}.face_width_mm")
+        return self
+
+    @model_validator(mode="after")
+    def _backlash_below_base_pitch(self):
+        if self.backlash_normal_um is not None:
+            base_pitch_um = math.pi * self.module_mm * math.cos(math.radians(self.pressure_angle_deg)) * 1e3
+            if self.backlash_normal_um >= base_pitch_um:
+                raise ValueError(f"backlash_normal_um: {self.backlash_normal_um} μm is not below the base pitch "
+                                 f"{base_pitch_um:.1f} μm; a backlash of a whole base pitch leaves no tooth")
         return self
 
 
@@ -58,6 +87,11 @@ class MaterialSection(Section):
                                                            description="thermal conductivity [W/(m K)]")] = 46.0
     thermal_expansion_per_k: Annotated[float, Field(ge=0.0, le=1e-4,
                                                     description="linear thermal expansion coefficient [1/K]")] = 11.5e-6
+    material_class: Literal["carbon_steel", "carbon_moly_steel", "nickel_steel"] = Field(
+        "carbon_steel", description="steel class of the default temperature coefficient of E (Roark's table)")
+    youngs_modulus_temperature_coefficient_per_k: Annotated[float, Field(
+        ge=-1e-3, le=0.0, description="β_E of E(T) = E(20 °C)·[1 + β_E (T − 20 °C)] [1/K]; default from "
+                                      "material_class")] | None = None
 
 
 class OperatingSection(Section):

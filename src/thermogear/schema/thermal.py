@@ -18,6 +18,10 @@ class ThermalSection(Section):
     (``"external"``) or the pair's share (``"pair_share"``).
     """
 
+    model: Literal["thermoelastic", "luo2020"] = Field(
+        "thermoelastic", description="'thermoelastic': E(T), expansion of gears and housing, backlash, flank "
+                                     "deviations (no fitted factor; docs/thermal.md); 'luo2020': the paper's k_T "
+                                     "with X_te (Luo & Li 2020 Eqs. 13–23), kept to reproduce the paper")
     x_te: Annotated[float, Field(ge=0.0, le=100.0, description="thermal-load correction factor X_te [–]")] | None = None
     x_te_source: Literal["given", "calibrated", "fem"] = "given"
     calibration_drop_percent: Annotated[float, Field(gt=0.0, lt=100.0)] | None = None
