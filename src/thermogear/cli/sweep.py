@@ -37,6 +37,7 @@ def sweep(
     from thermogear.sweep.store import study_description
 
     loaded, section = load_study_case(case)
+    check_scheduler(scheduler)
     stored = study_description(out) if resume else None
     if vary:
         definition: dict | list = list(vary)
@@ -54,8 +55,15 @@ def sweep(
         chunks = chunks or stored["chunk_points"]
     study = Study.define(loaded, definition, model=chosen_model or "both", chunk_points=chunks)
     start = time.perf_counter()
-    run = run_study(study, out, scheduler=scheduler, resume=resume, overwrite=overwrite, workers=workers,
-                    method=method, progress=progress and not as_json)
+    existed = out.exists() or out.is_symlink()
+    try:
+        run = run_study(study, out, scheduler=scheduler, resume=resume, overwrite=overwrite, workers=workers,
+                        method=method, progress=progress and not as_json)
+    except (OSError, TimeoutError) as error:  # the scheduler went away, or the disk refused a write
+        _remove_empty_store(out, existed)
+        raise CaseError("--scheduler" if scheduler not in (None, "serial") else "--out",
+                        scheduler if scheduler not in (None, "serial") else str(out), "a reachable scheduler and a "
+                        "writable --out", f"the study could not run: {error}") from None
     elapsed = time.perf_counter() - start
     for message in run.messages:
         error_console.print(f"[yellow]warning:[/] {message}", highlight=False)
@@ -95,3 +103,55 @@ def sweep(
                       "stable = 0)[/]")
     if figure_path:
         console.print(f"plot: {figure_path}")
+
+
+def check_scheduler(address: str | None, timeout: float = 5.0) -> None:
+    """Refuse a ``tcp://host:port`` scheduler that does not accept connections, before anything is written.
+
+    A ``dask.distributed`` client retries an unreachable address for its whole timeout and then raises from deep
+    inside the driver; this one connection attempt names the address instead (``serial``, ``local`` and no
+    address need no check; other protocols are left to the client)."""
+    if address in (None, "", "serial", "local"):
+        return
+    import socket
+    from urllib.parse import urlsplit
+
+    parts = urlsplit(address if "://" in address else f"tcp://{address}")
+    if parts.scheme not in ("tcp", "tls"):
+        return
+    allowed = "a dask.distributed scheduler address tcp://host:port, 'serial' or 'local'"
+    try:
+        host, port = parts.hostname, parts.port
+    except ValueError:
+        host, port = None, None
+    if not host or port is None:
+        raise CaseError("--scheduler", address, allowed, "the address needs a host and a port")
+    try:
+        with socket.create_connection((host, port), timeout=timeout):
+            pass
+    except OSError as error:
+        raise CaseError("--scheduler", address, allowed,
+                        f"no scheduler answers there ({error.strerror or error}); nothing was written") from None
+
+
+def _remove_empty_store(out: Path, existed: bool) -> None:
+    """After a failed run, remove the store this run created when it holds no finished block (never a path that
+    existed before the run, and only a store carrying thermogear's marker)."""
+    if existed:
+        return
+    import shutil
+
+    import numpy as np
+    import zarr
+
+    from thermogear.ownership import is_owned, resolve_output
+
+    target = resolve_output(out)
+    if not is_owned(target, "sweep-store"):
+        return
+    try:
+        done = int(np.sum(zarr.open_group(str(target), mode="r")["chunk_done"][:]))
+    except (OSError, KeyError, ValueError, TypeError):
+        done = 0
+    if done == 0:
+        shutil.rmtree(target, ignore_errors=True)

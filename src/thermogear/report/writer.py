@@ -2,7 +2,12 @@
 
 Everything is written into a hidden temporary folder next to the target (same file system) and renamed into
 place at the end. SIGINT and SIGTERM during the run remove the temporary folder and leave the previous output
-(or none); the final swap runs with both signals blocked. An existing target is only replaced with ``force``.
+(or none); the final swap runs with both signals blocked. An existing target is only replaced with ``force``, and
+only when thermogear wrote it (its ownership marker, :mod:`thermogear.ownership`); anything else is refused and
+left untouched. The target is resolved first (symbolic links followed, ``..`` removed), so a link given as the
+target keeps pointing at the new folder and ``a/sub/../x`` never creates ``a/sub``. The temporary folder carries
+the marker too, with the writing process: a run killed outright (SIGKILL) leaves it behind, and the next run into
+the same parent folder removes such stale partial folders of its own target, and only those.
 
     with OutputFolder(Path("thermogear-luo2019"), force=False) as folder:
         (folder.path / "report.html").write_text(...)
@@ -19,6 +24,7 @@ from pathlib import Path
 from types import FrameType
 
 from thermogear.errors import CaseError
+from thermogear.ownership import marker_process_alive, read_marker, require_owned, resolve_output, write_marker
 
 __all__ = ["OutputFolder", "Terminated"]
 
@@ -33,7 +39,7 @@ class OutputFolder:
     """A folder written under a temporary name and moved to ``target`` on success (see module docstring)."""
 
     def __init__(self, target: Path | str, force: bool = False, option: str = "--out") -> None:
-        self.target = Path(target).absolute()
+        self.target = resolve_output(target)
         self.force = force
         self.option = option
         self.path: Path | None = None
@@ -47,20 +53,51 @@ class OutputFolder:
                             "the output folder exists and is not overwritten silently; pass --force to replace it")
         if self.target.exists() and not self.target.is_dir():
             raise CaseError(self.option, str(self.target), "a folder", "a file of that name exists")
+        if self.target.exists():
+            require_owned(self.target, "report", self.option, "replaced")
+        existing = self.target.parent
+        while not existing.exists() and existing != existing.parent:
+            existing = existing.parent
+        if not existing.is_dir() or not os.access(existing, os.W_OK | os.X_OK):
+            raise CaseError(self.option, str(self.target), "a folder thermogear can create and write",
+                            f"cannot write there: {existing} is not a writable folder")
 
     def __enter__(self) -> "OutputFolder":
         self.check()
-        self.target.parent.mkdir(parents=True, exist_ok=True)
-        self.path = Path(tempfile.mkdtemp(prefix=f".{self.target.name}.partial-", dir=self.target.parent))
-        umask = os.umask(0)
-        os.umask(umask)
-        os.chmod(self.path, 0o777 & ~umask)  # mkdtemp makes it private; the report folder is an ordinary folder
+        try:
+            self.target.parent.mkdir(parents=True, exist_ok=True)
+            self.remove_stale_partials()
+            self.path = Path(tempfile.mkdtemp(prefix=f".{self.target.name}.partial-", dir=self.target.parent))
+            umask = os.umask(0)
+            os.umask(umask)
+            os.chmod(self.path, 0o777 & ~umask)  # mkdtemp makes it private; the report folder is an ordinary one
+            write_marker(self.path, "report")
+        except OSError as error:
+            if self.path is not None:
+                shutil.rmtree(self.path, ignore_errors=True)
+                self.path = None
+            raise CaseError(self.option, str(self.target), "a folder thermogear can create and write",
+                            f"cannot write there: {error.strerror or error}") from None
         for signum in _SIGNALS:
             try:
                 self._previous_handlers[signum] = signal.signal(signum, self._on_signal)
             except ValueError:  # not the main thread: the signal keeps its handler
                 pass
         return self
+
+    def remove_stale_partials(self) -> list[Path]:
+        """Remove the ``.NAME.partial-*`` folders of this target left by a killed run: only folders that carry
+        thermogear's report marker and whose writing process is gone. Returns the folders removed."""
+        removed = []
+        for candidate in self.target.parent.glob(f".{self.target.name}.partial-*"):
+            if candidate.is_symlink() or not candidate.is_dir():
+                continue
+            document = read_marker(candidate)
+            if document is None or document.get("kind") != "report" or marker_process_alive(document):
+                continue
+            shutil.rmtree(candidate, ignore_errors=True)
+            removed.append(candidate)
+        return removed
 
     def _on_signal(self, signum: int, frame: FrameType | None) -> None:
         # The flag makes the interruption stick even if some library code swallows the exception.
@@ -92,6 +129,7 @@ class OutputFolder:
                 if not self.force:  # appeared while we were running
                     raise CaseError(self.option, str(self.target), "a folder that does not exist yet, or --force",
                                     "the output folder appeared during the run; nothing was replaced")
+                require_owned(self.target, "report", self.option, "replaced")
                 old = Path(tempfile.mkdtemp(prefix=f".{self.target.name}.old-", dir=self.target.parent))
                 os.rmdir(old)
                 os.replace(self.target, old)

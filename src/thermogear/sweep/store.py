@@ -11,7 +11,13 @@ Layout (xarray conventions, readable with ``xarray.open_zarr``):
   (SIGKILL included) therefore leaves finished blocks marked, an unfinished block unmarked (recomputed on resume,
   its partial data overwritten by identical numbers), and nothing marked that is not there;
 * attributes: ``thermogear_version``, the case document (JSON), the study definition (JSON), and
-  ``thermogear_initialized`` written last when the store is created (a store without it is created anew).
+  ``thermogear_initialized`` written last when the store is created (a store of thermogear's without it is
+  created anew);
+* the ownership marker file (:mod:`thermogear.ownership`), written first when the store is created. An existing
+  path is only overwritten (``--overwrite``) or resumed (``--resume``) when it carries that marker; anything else
+  is refused, untouched. ``--resume`` never deletes a store that holds finished blocks.
+* metadata consolidated (``zarr.json`` of the group lists every array), so that opening a store reads one file
+  and does not warn.
 
 No time stamps are stored, so an interrupted and resumed study gives exactly the store of an uninterrupted one.
 """
@@ -20,18 +26,41 @@ from __future__ import annotations
 
 import json
 import shutil
+import warnings
+from contextlib import contextmanager
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
 from thermogear.errors import CaseError
+from thermogear.ownership import is_owned, require_owned, resolve_output, write_marker
 from thermogear.sweep.batch import MODEL_VARIABLES, POINT_VARIABLES
 
 __all__ = ["ResultStore", "open_result", "study_description"]
 
 _INITIALIZED = "thermogear_initialized"
 _DONE = "chunk_done"
+_KIND = "sweep-store"
+
+
+@contextmanager
+def _quiet_zarr():
+    """Silence zarr's warnings about its own specification (``UnstableSpecificationWarning``: the fixed-length
+    string dtype of the ``model`` coordinate has no final zarr v3 specification yet) where the store is written
+    and read; thermogear reads back what it wrote, so the warning says nothing to the user. Also silenced: zarr's
+    note that the ownership marker file is not part of the zarr hierarchy (it is not meant to be), and its note
+    that consolidated metadata is not yet in the zarr v3 specification (zarr-python and xarray read it)."""
+    with warnings.catch_warnings():
+        warnings.filterwarnings("ignore", message=r"Consolidated metadata is currently not part")
+        warnings.filterwarnings("ignore", message=r".*is not recognized as a component of a Zarr hierarchy")
+        try:
+            from zarr.errors import UnstableSpecificationWarning
+        except ImportError:  # older zarr: no such warning
+            pass
+        else:
+            warnings.simplefilter("ignore", UnstableSpecificationWarning)
+        yield
 
 
 def _attributes(study) -> dict[str, Any]:
@@ -56,7 +85,8 @@ class ResultStore:
 
         self.path = Path(path)
         self.study = study
-        self._group = zarr.open_group(str(self.path), mode="r+")
+        with _quiet_zarr():
+            self._group = zarr.open_group(str(self.path), mode="r+", use_consolidated=False)
 
     # ------------------------------------------------------------------------------ opening
     @classmethod
@@ -66,12 +96,19 @@ class ResultStore:
         import xarray as xr
         import zarr
 
-        target = Path(path)
+        target = resolve_output(path)
         if target.exists():
             if not overwrite:
                 raise CaseError("out", str(target), "a path that does not exist yet (or --resume / --overwrite)",
                                 "the result store exists; resume it or overwrite it explicitly")
-            shutil.rmtree(target) if target.is_dir() else target.unlink()
+            require_owned(target, _KIND, "--out", "overwritten")
+            shutil.rmtree(target)
+        try:
+            target.mkdir(parents=True)
+            write_marker(target, _KIND)
+        except OSError as error:
+            raise CaseError("--out", str(target), "a folder thermogear can create and write",
+                            f"cannot write there: {error.strerror or error}") from None
         dims = study.dims
         chunks = study.chunk_shape
         coords: dict[str, Any] = {"model": ("model", np.array(study.models, dtype=str))}
@@ -96,9 +133,12 @@ class ResultStore:
                             {"long_name": "1 where the block (task) of this number is completely written"})
         encoding[_DONE] = {"chunks": (1,)}
         dataset = xr.Dataset(data_vars=data_vars, coords=coords, attrs=_attributes(study))
-        dataset.to_zarr(str(target), mode="w", compute=False, encoding=encoding, consolidated=False)
-        group = zarr.open_group(str(target), mode="r+")
-        group.attrs[_INITIALIZED] = 1
+        with _quiet_zarr():
+            # mode "a" into the folder that holds only the marker: "w" would clear the folder, marker included
+            dataset.to_zarr(str(target), mode="a", compute=False, encoding=encoding, consolidated=True)
+            group = zarr.open_group(str(target), mode="r+", use_consolidated=False)
+            group.attrs[_INITIALIZED] = 1
+            zarr.consolidate_metadata(str(target))
         return cls(target, study)
 
     @classmethod
@@ -107,15 +147,21 @@ class ResultStore:
         created). A store of another study or case is refused."""
         import zarr
 
-        target = Path(path)
+        target = resolve_output(path)
         if not target.exists():
             return cls.create(target, study)
+        require_owned(target, _KIND, "--out", "resumed or deleted")
         try:
-            group = zarr.open_group(str(target), mode="r")
-            attrs = dict(group.attrs)
+            with _quiet_zarr():
+                group = zarr.open_group(str(target), mode="r")
+                attrs = dict(group.attrs)
+                done = int(np.sum(group[_DONE][:])) if _DONE in group else 0
         except (FileNotFoundError, ValueError, KeyError, OSError, TypeError):
-            attrs = {}
+            attrs, done = {}, 0
         if not attrs.get(_INITIALIZED):
+            if done:  # never: the record is created before any block; but --resume must not delete results
+                raise CaseError("--out", str(target), "a completely created store",
+                                "the store holds finished blocks but no creation record; nothing was changed")
             return cls.create(target, study, overwrite=True)
         stored = json.loads(attrs.get("study_json", "{}"))
         if stored != json.loads(json.dumps(study.describe(), sort_keys=True)):
@@ -152,7 +198,8 @@ def open_result(path: str | Path, keep_record: bool = False):
     """Open a study's store as an xarray Dataset (loaded); ``keep_record`` keeps the ``chunk_done`` record."""
     import xarray as xr
 
-    dataset = xr.open_zarr(str(path), consolidated=False).load()
+    with _quiet_zarr():
+        dataset = xr.open_zarr(str(path), consolidated=None).load()
     if not keep_record:
         dataset = dataset.drop_vars(_DONE)
     return dataset
@@ -163,11 +210,12 @@ def study_description(path: str | Path) -> dict[str, Any] | None:
     there is no completely created store there."""
     import zarr
 
-    target = Path(path)
-    if not target.exists():
+    target = resolve_output(path)
+    if not target.exists() or not is_owned(target, _KIND):
         return None
     try:
-        attrs = dict(zarr.open_group(str(target), mode="r").attrs)
+        with _quiet_zarr():
+            attrs = dict(zarr.open_group(str(target), mode="r").attrs)
     except (FileNotFoundError, ValueError, KeyError, OSError, TypeError):
         return None
     if not attrs.get(_INITIALIZED) or "study_json" not in attrs:
