@@ -7,7 +7,7 @@ import html
 from datetime import datetime, timezone
 
 from thermogear.report.figures import FIGURES
-from thermogear.report.paper_table import format_value
+from thermogear.report.paper_checks import format_value
 
 __all__ = ["render_report"]
 
@@ -26,6 +26,11 @@ margin-right:.4em;font-weight:600}.b-within{background:#e3f4e6}.b-outside{backgr
 figure{margin:1.4em 0;text-align:center}figure img{max-width:100%;height:auto;border:1px solid #e3e7eb}
 figcaption{font-size:.9em;color:#3b4550;margin-top:.3em}.small{font-size:.82em;color:#56606b}
 details{margin:.3em 0}code{background:#f2f4f7;padding:0 .25em;border-radius:3px}
+#headline{border:2px solid #c9d4df;border-radius:8px;padding:.4em 1em;margin:.6em 0;background:#f7fafc}
+.headline{font-size:1.15em;margin:.3em 0}.big{font-size:1.5em;font-weight:700}.case-line{margin:.2em 0;color:#3b4550}
+ul.gaps{margin:.2em 0;font-size:.85em;columns:2}ul.gaps li{break-inside:avoid}ul.gaps details{display:inline}
+.key-figures{display:flex;gap:.5em}.key-figures img{width:100%;max-width:380px;height:auto;border:1px solid #e3e7eb}
+details.section>summary{font-weight:600;cursor:pointer;padding:.2em 0}
 """
 
 
@@ -62,14 +67,14 @@ def _case_section(evaluation, toml_text: str) -> str:
             f"<ul>{assumptions}</ul><details><summary>case file (TOML)</summary><pre>{_e(toml_text)}</pre></details>")
 
 
-def _figures_section(pngs: dict[str, bytes], missing: dict[str, str]) -> str:
+def _figures_section(pngs: dict[str, bytes], missing: dict[str, str], remarks: dict[str, str]) -> str:
     parts = ["<h2 id='figures'>Figures</h2>"]
     for name, caption in FIGURES.items():
         if name in pngs:
             data = base64.b64encode(pngs[name]).decode("ascii")
             parts.append(f"<figure id='{name}'><img alt='{_e(caption)}' src='data:image/png;base64,{data}'>"
                          f"<figcaption>{_e(caption)} <span class='small'>(figures/{name}.png, .svg)</span>"
-                         f"</figcaption></figure>")
+                         f"{'<br>' + _e(remarks[name]) if name in remarks else ''}</figcaption></figure>")
         elif name in missing:
             parts.append(f"<p class='warn'><b>{_e(name)}</b> not drawn: {_e(missing[name])}</p>")
     return "".join(parts)
@@ -84,51 +89,123 @@ def _results_section(results: list[dict]) -> str:
             f"<th>note</th></tr>{body}</table>")
 
 
+def _kind_counts_text(counts: dict) -> str:
+    return (f"{counts['within']} within, {counts['outside']} outside, {counts['not computed']} not computed "
+            f"of {counts['total']}")
+
+
+def fe_versus_analytical(evaluation) -> dict | None:
+    """Fig. 15 in numbers: the FE thermal drop 1 − kT/ke against the analytical one at the FE points [%], and
+    the ratios FE/analytical of ke and kT (None without an FE result or thermal curves)."""
+    import numpy as np
+
+    fem, curves = evaluation.fem, evaluation.thermal_curves
+    if fem is None or curves is None:
+        return None
+    gamma = np.asarray(fem["gamma"], float)
+    fe_elastic, fe_thermal = np.asarray(fem["elastic"], float), np.asarray(fem["thermal"], float)
+    path = np.asarray(curves.curve.gamma, float)
+    elastic = np.interp(gamma, path, np.asarray(curves.curve.elastic_stiffness, float))
+    thermal = np.interp(gamma, path, np.asarray(curves.curve.stiffness, float))
+    fe_drop, drop = 100.0 * (1.0 - fe_thermal / fe_elastic), 100.0 * (1.0 - thermal / elastic)
+    return {"fe_drop_percent": [float(fe_drop.min()), float(fe_drop.max())],
+            "analytical_drop_percent": [float(drop.min()), float(drop.max())],
+            "fe_over_analytical_elastic": [float((fe_elastic / elastic).min()), float((fe_elastic / elastic).max())],
+            "fe_over_analytical_thermal": [float((fe_thermal / thermal).min()), float((fe_thermal / thermal).max())]}
+
+
+def fe_versus_analytical_text(numbers: dict) -> str:
+    """One paragraph stating the FE-versus-analytical difference of Fig. 15 as it is."""
+    fe, an = numbers["fe_drop_percent"], numbers["analytical_drop_percent"]
+    ke, kt = numbers["fe_over_analytical_elastic"], numbers["fe_over_analytical_thermal"]
+    return (f"Fig. 15 in numbers: thermogear's FE puts the thermal pair stiffness {fe[0]:.0f}–{fe[1]:.0f} % below the "
+            f"elastic one, the analytical model (Eqs. 13–23, X_te calibrated at C) {an[0]:.1f}–{an[1]:.1f} %. The FE "
+            f"elastic stiffness is {ke[0]:.2f}–{ke[1]:.2f} × the analytical one, but the FE thermal stiffness is only "
+            f"{kt[0]:.2f}–{kt[1]:.2f} × the analytical k_T: the FE confirms the direction of the paper's statement "
+            "(k_T below k_e along the whole path), not its size.")
+
+
+def _headline_section(evaluation, verdicts, pngs: dict[str, bytes]) -> str:
+    """The first screen: the case in one line, the headline comparison and the key figures."""
+    from thermogear.report.paper_table import known_gaps, table_counts
+
+    case = evaluation.case
+    pair, op = case.gear_pair, case.operating_point
+    facts = (f"{_e(case.title or case.name)} — z1/z2 {pair.pinion.teeth}/{pair.wheel.teeth}, m {pair.module * 1e3:g} mm, "
+             f"b {pair.face_width * 1e3:g} mm, {op.power / 1e3:.4g} kW at {op.speed_rpm:g} rpm, "
+             f"ε {pair.contact_ratio:.3f}, load {case.normal_load / pair.face_width / 1e3:.4g} N/mm")
+    parts = [f"<section id='headline'><p class='case-line'>{facts}</p>"]
+    if verdicts:
+        counts = table_counts(verdicts)
+        prediction, statement = counts["prediction"], counts["qualitative"]
+        gaps = known_gaps(verdicts)
+        parts.append(
+            f"<p class='headline'><span class='big'>{prediction['within']} of {prediction['total']}</span> "
+            f"predictions of the paper's numbers within their argued tolerance · "
+            f"<span class='big'>{prediction['outside'] + prediction['not computed']}</span> known gaps · "
+            f"{statement['within']} of {statement['total']} qualitative statements reproduced.</p>"
+            f"<p class='small'>Not counted above: {counts['input']['total']} input rows (Table 1 and rig data "
+            f"transcribed: {_kind_counts_text(counts['input'])}) and {counts['calibration']['total']} calibration "
+            f"(X_te set so that the drop at C matches: {_kind_counts_text(counts['calibration'])}).</p>")
+        by_cause: dict[str, list[str]] = {}
+        for verdict in gaps:
+            by_cause.setdefault(verdict.row.gap or verdict.reason or "no documented cause",
+                                []).append(verdict.row.key)
+        items = "".join(f"<li><b>{_e(', '.join(keys))}</b><details><summary class='small'>cause</summary>"
+                        f"<span class='small'>{_e(cause)}</span></details></li>" for cause, keys in by_cause.items())
+        parts.append(f"<p><b>Known gaps, by cause</b> (details in the table below):</p><ul class='gaps'>{items}</ul>")
+    else:
+        metrics = {model: response.metrics for model, response in evaluation.responses.items()}
+        kv = " · ".join(f"{model}: Kv {m['kv']:.3f}, f_n {m['natural_frequency_hz']:.0f} Hz"
+                        for model, m in metrics.items() if "kv" in m)
+        parts.append(f"<p class='headline'>{_e(kv) or 'no dynamic response computed'}</p>")
+    keys = [name for name in ("fig4", "fig9", "fig12") if name in pngs]
+    if keys:
+        thumbs = "".join(f"<a href='#{name}'><img alt='{_e(FIGURES[name])}' title='{_e(FIGURES[name])}' "
+                         f"src='data:image/png;base64,{base64.b64encode(pngs[name]).decode('ascii')}'></a>"
+                         for name in keys)
+        parts.append(f"<div class='key-figures'>{thumbs}</div>")
+    parts.append("</section>")
+    return "".join(parts)
+
+
 def _paper_section(verdicts) -> str:
-    counts = {s: sum(1 for v in verdicts if v.status == s) for s in ("within", "outside", "not computed")}
+    from thermogear.report.paper_table import KIND_MEANING
+
     head = ("<h2 id='paper'>Every number of the paper beside thermogear's</h2>"
-            f"<p><span class='badge b-within'>{counts['within']} within</span>"
-            f"<span class='badge b-outside'>{counts['outside']} outside</span>"
-            f"<span class='badge b-nc'>{counts['not computed']} not computed</span> of {len(verdicts)} rows. "
-            "Deviation = (thermogear − paper)/|paper|. Each tolerance is argued (open a row's argument); rows of kind "
-            "<i>input</i> check that the case carries the paper's data, <i>measured</i> rows check thermogear's copy "
-            "of the rig measurements, <i>calibration</i> rows were used to set a parameter.</p>")
-    rows = []
-    for v in verdicts:
-        row = v.row
-        css = v.status.replace(" ", "")
-        value = _num(v.value) if v.computed else f"<span class='small'>not computed: {_e(v.reason)}</span>"
-        value_class = "num" if v.computed else "nc"
-        note = row.note
-        if v.computed and v.reason:
-            note = f"{note} {v.reason}".strip()
-        rows.append(
-            f"<tr class='{css}' id='row-{_e(row.key)}'><td>{_e(row.quantity)}<br><span class='small'>{_e(row.section)}"
-            f" · {_e(row.kind)} · <code>{_e(row.key)}</code></span></td><td class='num'>{_e(row.paper_text)}</td>"
-            f"<td class='{value_class}'>{value}</td><td>{_e(row.unit)}</td><td class='num'>{_e(v.deviation_text)}</td>"
-            f"<td>{_e(row.tolerance_text)}<details><summary class='small'>why</summary><span class='small'>"
-            f"{_e(row.argument)}</span></details></td><td class='status'>{_e(v.status)}</td>"
-            f"<td class='small'>{_e(note)}</td></tr>")
-    return (head + "<table><tr><th>quantity</th><th>paper</th><th>thermogear</th><th>unit</th><th>deviation</th>"
-            "<th>tolerance</th><th>status</th><th>note</th></tr>" + "".join(rows) + "</table>")
-
-
-def _differences_section(verdicts) -> str:
-    items = [v for v in verdicts if v.status != "within" or (v.row.note and v.row.kind == "result")]
-    if not items:
-        return ""
-    lines = []
-    for v in items:
-        if v.status == "within" and not v.row.note:
-            continue
-        what = {"within": "within its tolerance", "outside": "OUTSIDE its tolerance",
-                "not computed": "not computed"}[v.status]
-        cause = v.row.note or "no documented cause yet"
-        if v.status == "not computed":
-            cause = v.reason
-        lines.append(f"<li><b>{_e(v.row.quantity)}</b> ({what}): {_e(cause)}</li>")
-    return ("<h2 id='differences'>Where thermogear differs from the paper, and why</h2><ul>" + "".join(lines)
-            + "</ul>")
+            "<p class='small'>Deviation = (thermogear − paper)/|paper|, or 'inside the range' where the paper gives "
+            "only a range or an order of magnitude. Each tolerance is argued (open 'why'). Kinds: "
+            + "; ".join(f"<i>{_e(kind)}</i> — {_e(text)}" for kind, text in KIND_MEANING.items())
+            + ". Sections holding only inputs are closed.</p>")
+    groups: dict[str, list] = {}
+    for verdict in verdicts:
+        groups.setdefault(verdict.row.section, []).append(verdict)
+    blocks = []
+    for section, items in groups.items():
+        counts = {s: sum(1 for v in items if v.status == s) for s in ("within", "outside", "not computed")}
+        evidence = any(v.row.kind in ("prediction", "qualitative") for v in items)
+        rows = []
+        for v in items:
+            row = v.row
+            css = v.status.replace(" ", "")
+            value = _num(v.value) if v.computed else f"<span class='small'>not computed: {_e(v.reason)}</span>"
+            value_class = "num" if v.computed else "nc"
+            note = " ".join(text for text in (row.note, f"Known gap: {row.gap}" if row.gap else "",
+                                              v.reason if v.computed else "") if text)
+            rows.append(
+                f"<tr class='{css}' id='row-{_e(row.key)}'><td>{_e(row.quantity)}<br><span class='small'>"
+                f"<code>{_e(row.key)}</code></span></td><td>{_e(row.kind)}</td>"
+                f"<td class='num'>{_e(row.paper_text)}</td><td class='{value_class}'>{value}</td><td>{_e(row.unit)}"
+                f"</td><td class='num'>{_e(v.deviation_text)}</td><td>{_e(row.tolerance_text)}<details><summary "
+                f"class='small'>why</summary><span class='small'>{_e(row.argument)}</span></details></td>"
+                f"<td class='status'>{_e(v.status)}</td><td class='small'>{_e(note)}</td></tr>")
+        summary = (f"{_e(section)} — {len(items)} rows: {counts['within']} within, {counts['outside']} outside"
+                   + (f", {counts['not computed']} not computed" if counts["not computed"] else ""))
+        blocks.append(f"<details class='section'{' open' if evidence else ''}><summary>{summary}</summary><table>"
+                      "<tr><th>quantity</th><th>kind</th><th>paper</th><th>thermogear</th><th>unit</th>"
+                      "<th>deviation</th><th>tolerance</th><th>status</th><th>note</th></tr>" + "".join(rows)
+                      + "</table></details>")
+    return head + "".join(blocks)
 
 
 def render_report(evaluation, *, version: str, toml_text: str, pngs: dict[str, bytes], missing_figures: dict,
@@ -141,24 +218,26 @@ def render_report(evaluation, *, version: str, toml_text: str, pngs: dict[str, b
              f"<meta name='viewport' content='width=device-width, initial-scale=1'><style>{_CSS}</style></head><body>",
              f"<h1>{_e(title)}</h1><p class='meta'>case <b>{_e(case.name)}</b> · thermogear {_e(version)} · "
              f"{_e(generated)} · method {_e(evaluation.method)}</p>"]
+    for message in messages:
+        parts.append(f"<div class='alert'>{_e(message)}</div>")
+    nav = ["<a href='#case'>case</a>", "<a href='#figures'>figures</a>", "<a href='#results'>results</a>"]
+    if verdicts:
+        nav += ["<a href='#paper'>paper vs thermogear</a>"]
+    nav.append("<a href='#references'>references</a>")
+    parts.insert(2, _headline_section(evaluation, verdicts, pngs))
     if verdicts:
         parts.append("<p>Luo B., Li W., <i>Investigation on the influence of heat on the dynamic characteristics of a "
                      "gear transmission system</i>, Engineering Failure Analysis (2020), "
                      "doi:10.1016/j.engfailanal.2020.104724. Every figure and every number the paper reports is "
                      "recomputed below from its Table 1 and the assumptions listed with the case.</p>")
-    for message in messages:
-        parts.append(f"<div class='alert'>{_e(message)}</div>")
-    nav = ["<a href='#case'>case</a>", "<a href='#figures'>figures</a>", "<a href='#results'>results</a>"]
-    if verdicts:
-        nav += ["<a href='#paper'>paper vs thermogear</a>", "<a href='#differences'>differences</a>"]
-    nav.append("<a href='#references'>references</a>")
     parts.append("<p class='small'>" + " · ".join(nav) + "</p>")
     parts.append(_case_section(evaluation, toml_text))
-    parts.append(_figures_section(pngs, missing_figures))
+    fe_numbers = fe_versus_analytical(evaluation)
+    parts.append(_figures_section(pngs, missing_figures,
+                                  {"fig15": fe_versus_analytical_text(fe_numbers)} if fe_numbers else {}))
     parts.append(_results_section(results))
     if verdicts:
         parts.append(_paper_section(verdicts))
-        parts.append(_differences_section(verdicts))
     if evaluation.problems:
         parts.append("<h2>Stages not computed</h2><ul>" + "".join(
             f"<li><b>{_e(k)}</b>: {_e(v)}</li>" for k, v in evaluation.problems.items()) + "</ul>")

@@ -2,8 +2,9 @@
 
 ``results.nc`` has the case curves in its root group and one group per dynamic response
 (``elastic_steady``, ``thermal_steady``, ``elastic_transient``, ``thermal_transient``); its attributes carry the
-thermogear version, the case name and the case file's TOML text. ``summary.json`` holds the table (one row per
-number of the paper for the paper's case), the metrics per model, the messages, the timings and the references.
+thermogear version, the case name and the case file's TOML text. ``summary.json`` holds the headline (predictions
+within / outside / not computed, known gaps with causes), the table (one row per number of the paper for the
+paper's case) with ``table_counts`` per kind, the metrics per model, the messages, the timings and the references.
 """
 
 from __future__ import annotations
@@ -115,9 +116,13 @@ def summary_document(evaluation, verdicts, results, messages, figures, missing_f
     from thermogear import __version__
 
     case = evaluation.case
+    from thermogear.report.html import fe_versus_analytical
+    from thermogear.report.paper_table import known_gaps, table_counts
+
     table = [verdict.as_dict() for verdict in verdicts]
-    counts = {status: sum(1 for row in table if row["status"] == status)
-              for status in ("within", "outside", "not computed")}
+    counts = table_counts(verdicts) if verdicts else {}
+    gaps = [{"key": v.row.key, "kind": v.row.kind, "quantity": v.row.quantity, "status": v.status,
+             "cause": v.row.gap or v.reason} for v in known_gaps(verdicts)]
     return json_ready({
         "thermogear_version": __version__,
         "generated": datetime.now(timezone.utc).isoformat(timespec="seconds"),
@@ -125,7 +130,12 @@ def summary_document(evaluation, verdicts, results, messages, figures, missing_f
                  "assumptions": list(case.assumptions)},
         "paper": "Luo & Li (2020), doi:10.1016/j.engfailanal.2020.104724" if verdicts else None,
         "table": table,
+        "headline": ({"predictions": counts["prediction"], "qualitative": counts["qualitative"],
+                      "known_gaps": gaps,
+                      "note": "input and calibration rows are transcription and calibration checks and are not "
+                              "counted here"} if verdicts else None),
         "table_counts": counts,
+        "fig15_fe_versus_analytical": fe_versus_analytical(evaluation),
         "results": results,
         "models": {model: response.metrics_json() for model, response in evaluation.responses.items()},
         "messages": messages,

@@ -7,6 +7,7 @@ from typing import Iterator
 
 from rich.console import Console
 from rich.table import Table
+from rich.text import Text
 
 from thermogear.report.paper_table import format_value
 
@@ -43,7 +44,7 @@ def step_progress(steps: list[str], console: Console, quiet: bool = False) -> It
         return
     from rich.progress import BarColumn, Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
 
-    with Progress(SpinnerColumn(), TextColumn("[bold]{task.description:<22}"), BarColumn(),
+    with Progress(SpinnerColumn(), TextColumn("{task.description:<22}", style="bold", markup=False), BarColumn(),
                   TextColumn("{task.completed}/{task.total}"), TimeElapsedColumn(), console=console,
                   transient=True) as progress:
         task = progress.add_task("starting", total=len(steps))
@@ -61,40 +62,45 @@ def step_progress(steps: list[str], console: Console, quiet: bool = False) -> It
 
 def print_messages(messages: list[str], console: Console) -> None:
     for message in messages:
-        console.print(f"[bold red]{message}[/]", highlight=False)
+        console.print(Text(message, style="bold red"), soft_wrap=True)
 
 
 def print_summary(outcome, console: Console) -> None:
-    """The short summary: the paper table (results and calibration rows; inputs and measurements counted) or
+    """The short summary: the paper table (predictions, statements and the calibration; inputs counted) or
     the results table, the messages, and the report's path."""
     if outcome.verdicts:
         table = Table(title="Luo & Li (2020) vs thermogear", show_lines=False, header_style="bold")
-        # one line per row whatever the terminal width: the full wording is in report.html
-        table.add_column("quantity", no_wrap=True, overflow="ellipsis", max_width=max(24, console.width - 58))
+        # the quantity wraps on a narrow terminal rather than being cut; off a terminal nothing wraps
+        table.add_column("quantity", overflow="fold", max_width=max(24, console.width - 58))
         for name in ("paper", "thermogear", "unit", "deviation", "status"):
             table.add_column(name, justify="left" if name in ("unit", "status") else "right", no_wrap=True)
-        style = {"within": "[green]within[/]", "outside": "[red]outside[/]", "not computed": "[yellow]not computed[/]"}
+        style = {"within": Text("within", style="green"), "outside": Text("outside", style="red"),
+                 "not computed": Text("not computed", style="yellow")}
         for verdict in outcome.verdicts:
-            if verdict.row.kind in ("input", "measured"):
+            if verdict.row.kind not in ("prediction", "qualitative", "calibration"):
                 continue
             row = verdict.row
             table.add_row(row.quantity, row.paper_text, format_value(verdict.value), row.unit, verdict.deviation_text,
-                          style[verdict.status])
+                          style[verdict.status] + ("" if not row.gap else " (known gap)"))
         console.print(table)
-        for kind, label in (("input", "Table 1 inputs carried by the case"),
-                            ("measured", "rig measurements transcribed")):
+        from thermogear.report.paper_table import table_counts
+
+        counts = table_counts(outcome.verdicts)
+        for kind, label in (("input", "inputs and rig data transcribed (not counted)"),
+                            ("calibration", "calibration (matches by construction, not counted)")):
             rows = [v for v in outcome.verdicts if v.row.kind == kind]
-            exact = sum(1 for v in rows if v.status == "within")
-            console.print(f"{label}: {exact}/{len(rows)} exact"
-                          + ("" if exact == len(rows) else
+            console.print(f"{label}: {counts[kind]['within']}/{counts[kind]['total']} within"
+                          + ("" if counts[kind]["within"] == len(rows) else
                              " (" + ", ".join(f"{v.row.key}: {v.status}" for v in rows if v.status != "within") + ")"),
                           highlight=False)
-        counts = {s: sum(1 for v in outcome.verdicts if v.status == s) for s in ("within", "outside", "not computed")}
-        console.print(f"[bold]{len(outcome.verdicts)} rows:[/] [green]{counts['within']} within[/], "
-                      f"[red]{counts['outside']} outside[/], [yellow]{counts['not computed']} not computed[/]")
+        prediction, statement = counts["prediction"], counts["qualitative"]
+        console.print(Text.assemble((f"predictions: {prediction['within']} of {prediction['total']} within", "bold"),
+                                    ", ", (f"{prediction['outside'] + prediction['not computed']} known gaps", "red"),
+                                    f" (causes in report.html); statements: {statement['within']} of "
+                                    f"{statement['total']} reproduced"))
     else:
         table = Table(title=f"thermogear results: {outcome.evaluation.case.name}", header_style="bold")
-        table.add_column("quantity", no_wrap=True, overflow="ellipsis", max_width=max(24, console.width - 40))
+        table.add_column("quantity", overflow="fold", max_width=max(24, console.width - 40))
         for name in ("elastic", "thermal", "unit"):
             table.add_column(name, justify="left" if name == "unit" else "right", no_wrap=True)
         for row in outcome.results:
@@ -105,4 +111,4 @@ def print_summary(outcome, console: Console) -> None:
     if outcome.missing_figures:
         console.print("figures not drawn: " + "; ".join(f"{k} ({v})" for k, v in outcome.missing_figures.items()),
                       highlight=False)
-    console.print(f"report: [bold]{outcome.report}[/]  ({outcome.seconds:.1f} s)", highlight=False)
+    console.print(Text.assemble("report: ", (str(outcome.report), "bold"), f"  ({outcome.seconds:.1f} s)"))
