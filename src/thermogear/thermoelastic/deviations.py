@@ -42,7 +42,9 @@ def tip_relief(own_roll, tip_roll: float, amount: float, length: float, shape: s
 
 
 def base_pitch_deviation(roll, pitch_point_roll: float, pinion_base_pitch: float, wheel_base_pitch: float):
-    """e_pb = (p_b2 − p_b1)/p_b1 · (roll − roll_C) [m] (module docstring): zero when the pitches are equal."""
+    """e_pb = (p_b2 − p_b1)/p_b1 · (roll − roll_C) [m] (module docstring): zero when the pitches are equal.
+
+    Only the ratio of the two pitches matters, so they may be given in any common unit (e.g. 1 + ε1, 1 + ε2)."""
     roll = np.asarray(roll, dtype=float)
     return (wheel_base_pitch - pinion_base_pitch) / pinion_base_pitch * (roll - pitch_point_roll)
 

@@ -9,7 +9,6 @@ At zero rise (everything at 20 °C, the reference) it is the elastic model bit f
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
@@ -117,8 +116,8 @@ class ThermoelasticMesh:
         wheel_roll = pair.line_of_action_length - roll
         relief = relief + tip_relief(wheel_roll, pair.line_of_action_length - points["A"], wheel.tip_relief,
                                      wheel.tip_relief_length * (1 + wheel_strain), wheel.tip_relief_shape)
-        wheel_pitch = 2.0 * math.pi * pair.wheel.base_radius / pair.wheel.teeth
-        pitch = base_pitch_deviation(roll, points["C"], pair.base_pitch, wheel_pitch)
+        # p_b2'/p_b1' = (1 + ε2)/(1 + ε1): written with the strains so that equal strains give exactly 0
+        pitch = base_pitch_deviation(roll, points["C"], 1.0 + pinion_strain, 1.0 + wheel_strain)
         distortion = np.interp(pair.gamma(roll), self.distortion_gamma, self.distortion)
         return {"tip_relief": relief, "base_pitch": pitch, "thermal_distortion": distortion}
 
@@ -241,9 +240,19 @@ def _tooth_temperatures(field: TemperatureField, pair: GearPair) -> tuple[float,
 
 
 def _distortion_table(field: TemperatureField, pair: GearPair, inputs, bulk_rise) -> tuple[np.ndarray, np.ndarray]:
-    """Thermal flank distortion of a pair on Γ from A to E of the cold pair [m], + = material missing."""
+    """Thermal flank distortion of a pair on Γ from A to E of the cold pair [m], + = material missing.
+
+    A uniform field has none: its consistent Eqs. 8–12 are the homogeneous expansion, which the geometry already
+    holds (tests/unit/test_thermoelastic_deviations.py checks the formula gives 0 to rounding); it is set to 0
+    exactly so that a uniform field adds no rounding noise (and zero rise is the elastic model bit for bit).
+    """
     roll = pair.roll_grid(DISTORTION_POINT_COUNT)
     gamma = np.asarray(pair.gamma(roll), dtype=float)
+    if field.source == "uniform":
+        zero = np.zeros_like(gamma)
+        gamma.setflags(write=False)
+        zero.setflags(write=False)
+        return gamma, zero
     reference = field.reference_c
     pinion = flank_distortion(pair.pinion, roll, field.pinion_flank_c(gamma) - reference,
                               field.pinion_base_c - reference, field.pinion_bore_c - reference,
