@@ -2,7 +2,7 @@
 
 Run: python benchmarks/bench_stiffness.py [CASE] [COUNT]
 Prints a table and writes benchmarks/results/bench_stiffness.json. Both implementations are timed in the same
-run; the baseline integrates the same integrands (physics.md §3.2) with scipy.integrate.quad point by point.
+run; the baseline integrates the same integrands (Tian 2004; Chaari et al. 2009) with scipy.integrate.quad point by point.
 """
 
 from __future__ import annotations

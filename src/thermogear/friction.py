@@ -1,4 +1,4 @@
-"""Mean tooth friction coefficient of DIN 3990-4 / ISO/TR 13989-1 (Luo & Li (2020) Eq. 27, physics.md §7).
+"""Mean tooth friction coefficient of DIN 3990-4 / ISO/TR 13989-1 (Luo & Li (2020) Eq. 27, ISO/TR 13989-1).
 
     μ_m = 0.12 · ( w_Bt · R_a / (η · v_Σ · ρ_red) )^0.25 · X_L
 
@@ -17,7 +17,7 @@ from thermogear.errors import CaseError, ExtrapolationWarning
 
 #: Leading constant of the DIN 3990-4 / ISO/TR 13989-1 mean friction coefficient.
 FRICTION_CONSTANT = 0.12
-#: Usual validity limits of the formula (physics.md §7, recalled [R]): sum of rolling speeds at most 50 m/s,
+#: Usual validity limits of the formula (ISO/TR 13989-1, recalled [R]): sum of rolling speeds at most 50 m/s,
 #: transverse unit load at least 150 N/mm.
 MAXIMUM_SUM_VELOCITY = 50.0  # [m/s]
 MINIMUM_UNIT_LOAD = 150e3  # [N/m]

@@ -1,7 +1,7 @@
 """The FZG back-to-back test rig (ISO 14635-1 / DIN 51354): load stages.
 
 Pinion torques of the load stages KS 1–14 for the standard 0.5 m load lever, as tabulated in the GEARpie
-project's ``LOAD_STAGES.py`` (physics.md §9, [S]); ISO 14635-1 defines the same stages.
+project's ``LOAD_STAGES.py``; ISO 14635-1 defines the same stages.
 """
 
 from __future__ import annotations

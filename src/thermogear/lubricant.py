@@ -4,9 +4,9 @@ Functions (layer 1) take and return SI values, temperatures in °C; kelvin and c
 Walther law. :class:`Lubricant` (layer 2) holds one oil; :func:`builtin_lubricant` reads the library
 ``thermogear/lubricants/oils.toml`` and :func:`lubricant_from_case` builds the oil a case selects.
 
-Sources: ASTM D341 (Walther equation, two-point form as in physics.md §6), density law and per-base-oil
-coefficients of the GEARpie lubricant library (physics.md §6), lubricant factor X_L of DIN 3990-4 /
-ISO/TR 13989-1 (physics.md §7, recalled [R]).
+Sources: ASTM D341 (Walther equation, two-point form), density law and per-base-oil
+coefficients of the GEARpie lubricant library (C.M.C.G. Fernandes), lubricant factor X_L of DIN 3990-4 /
+ISO/TR 13989-1 (recalled, not checked against the standard's text).
 """
 
 from __future__ import annotations
@@ -29,7 +29,7 @@ WALTHER_OFFSET_CST = 0.7
 KELVIN = 273.15
 
 #: Lubricant factor X_L of the DIN 3990-4 / ISO/TR 13989-1 mean friction coefficient per base oil
-#: (physics.md §7, recalled [R]; the standard's entry for esters is "phosphate ester").
+#: (ISO/TR 13989-1, recalled [R]; the standard's entry for esters is "phosphate ester").
 LUBRICANT_FACTORS = {"mineral": 1.0, "pao": 0.8, "pag_insoluble": 0.7, "pag_soluble": 0.6, "ester": 1.3,
                      "traction": 1.5}
 #: Density at 15 °C [kg/m³] and its relative temperature coefficient [1/K] per base oil (GEARpie
@@ -45,7 +45,7 @@ def walther_constants(points_c_cst: Sequence[Sequence[float]], key: str = "lubri
                       ) -> tuple[float, float]:
     """Constants (A, B) of log10 log10(ν + 0.7) = A − B·log10 T through viscosity points (ASTM D341).
 
-    Two points give the exact fit (physics.md §6); more points a least-squares fit of the straight line in
+    Two points give the exact fit (ASTM D341); more points a least-squares fit of the straight line in
     Walther coordinates. ``points_c_cst`` is [[temperature °C, ν mm²/s], ...].
 
     Raises CaseError (naming ``key``) for fewer than two points, repeated temperatures, viscosities below the
@@ -93,7 +93,7 @@ def walther_kinematic_viscosity(temperature_c, walther_a: float, walther_b: floa
 
 
 def linear_density(temperature_c, density_reference: float, reference_c: float, coefficient: float):
-    """Density ρ(T) = ρ_ref·[1 + α_T·(T − T_ref)] [kg/m³] (GEARpie's law, physics.md §6)."""
+    """Density ρ(T) = ρ_ref·[1 + α_T·(T − T_ref)] [kg/m³] (the density law of the GEARpie lubricant library)."""
     return density_reference * (1.0 + coefficient * (np.asarray(temperature_c, dtype=float) - reference_c))
 
 
@@ -186,7 +186,7 @@ class Lubricant:
 
     @property
     def lubricant_factor(self) -> float:
-        """X_L of the DIN 3990-4 / ISO/TR 13989-1 friction formula for this base oil (physics.md §7, [R])."""
+        """X_L of the DIN 3990-4 / ISO/TR 13989-1 friction formula for this base oil (ISO/TR 13989-1, [R])."""
         return LUBRICANT_FACTORS[self.base_oil]
 
     def viscosity_index_points(self) -> dict[str, float]:

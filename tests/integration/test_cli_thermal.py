@@ -38,7 +38,7 @@ def test_thermal_object_has_the_documented_keys(thermal_run):
     assert thermal["stiffness_drop_percent"]["C"] == pytest.approx(14.52, abs=1e-6)
     crossing = thermal["single_tooth_crossing_gamma"]
     assert all(value is None or isinstance(value, float) for value in crossing.values())
-    # per-width view: k_e at C of the order of 13–14 N/(mm·μm) (physics.md §3.4: 13.45)
+    # per-width view: k_e at C of the order of 13–14 N/(mm·μm) (docs/derivations.md: 13.45)
     assert 12.0 < thermal["points"]["C"]["elastic_stiffness_n_per_mm_um"] < 15.0
 
 

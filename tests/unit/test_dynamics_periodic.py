@@ -1,4 +1,4 @@
-"""Exact periodic steady state (Floquet / monodromy, physics.md §11) on synthetic problems with closed forms.
+"""Exact periodic steady state (Floquet / monodromy, Floquet (1883)) on synthetic problems with closed forms.
 
 Units: a 1 kg equivalent mass with a 100 Hz natural frequency (k = (2π·100)² N/m) and a 100 N load keep the
 numbers readable; nothing in the solver depends on the scale.

@@ -1,4 +1,4 @@
-"""Thermal expansion of the flanks (Luo & Li Eqs. 8–12, physics.md §4): identities, limits and hand values."""
+"""Thermal expansion of the flanks (Luo & Li Eqs. 8–12, Timoshenko & Goodier 1951): identities, limits and hand values."""
 
 from __future__ import annotations
 
@@ -16,7 +16,7 @@ ALPHA = 11.5e-6
 
 
 def test_equal_base_and_bore_rise_is_free_expansion():
-    # physics.md §4: t_n = t_b = T gives u = λ r_b T (no thermal stress in a uniformly heated free disc).
+    # Timoshenko & Goodier 1951: t_n = t_b = T gives u = λ r_b T (no thermal stress in a uniformly heated free disc).
     assert base_circle_radial_expansion(ALPHA, 0.038, 0.015, 60.0, 60.0) == pytest.approx(ALPHA * 0.038 * 60.0,
                                                                                             rel=1e-14)
 
@@ -72,7 +72,7 @@ def test_uniform_temperature_moves_the_flank_point_radially_by_free_expansion(lu
 
 def test_projection_matches_the_linearised_hand_formula(luo2019):
     # To first order in λΔT: Δ_t = Δr_k sin α_k + Δs_k cos α_k (radial part along the line of action plus the
-    # half-thickness growth, physics.md §1.3 notes: ω_k + φ_k = α_k). λΔT ~ 7e-4, so agreement to ~1e-3.
+    # half-thickness growth, Luo & Li (2020) Eq. 8: ω_k + φ_k = α_k). λΔT ~ 7e-4, so agreement to ~1e-3.
     gear = luo2019.gear_pair.pinion
     roll = np.linspace(0.006, 0.021, 7)
     flank_rise, base_rise, bore_rise = 58.0, 56.0, 52.0

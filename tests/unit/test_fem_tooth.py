@@ -59,7 +59,7 @@ def test_blok_partition_limits_and_symmetry():
 
 
 def test_mean_flux_is_the_contact_fraction_of_the_instantaneous_flux():
-    """q̄ = q·(2a/(ωρ))/(2π/ω) with q = μ p_m v_s and p_m = F′/(2a) (physics.md §5.1 derivation)."""
+    """q̄ = q·(2a/(ωρ))/(2π/ω) with q = μ p_m v_s and p_m = F′/(2a) (docs/fem.md)."""
     mu, load, sliding, radius, width = 0.05, 4e5, 2.0, 0.01, 2e-4
     instantaneous = mu * load / (2 * width) * sliding
     expected = instantaneous * (2 * width / radius) / (2 * math.pi)

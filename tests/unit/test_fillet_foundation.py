@@ -17,12 +17,12 @@ ANGLE = math.radians(20.0)
 
 @pytest.mark.parametrize("name, expected", [("L", 6.89), ("M", 1.24), ("P", 3.21), ("Q", 0.44)])
 def test_coefficients_match_the_values_derived_in_physics_md(name, expected):
-    # physics.md §3.4 [D]: pinion of luo2019 evaluated with h_f = 2.45, θ_f = 0.1048 rad (two decimals given)
+    # docs/derivations.md: pinion of luo2019 evaluated with h_f = 2.45, θ_f = 0.1048 rad (two decimals given)
     assert float(sainsot_coefficient(name, 2.45, 0.1048)) == pytest.approx(expected, abs=0.006)
 
 
 def test_root_angle_equals_the_quoted_formula_with_the_tool_addendum():
-    # physics.md §3.3: θ_f = [π/2 + 2 tan α (h* − ρ*) + 2ρ*/cos α]/z, here with h* the rack (tool) addendum 1.25
+    # Sainsot et al. (2004): θ_f = [π/2 + 2 tan α (h* − ρ*) + 2ρ*/cos α]/z, here with h* the rack (tool) addendum 1.25
     for teeth in (17, 27, 35, 80):
         quoted = (math.pi / 2 + 2 * math.tan(ANGLE) * (1.25 - 0.38) + 2 * 0.38 / math.cos(ANGLE)) / teeth
         assert root_half_angle(teeth, ANGLE, 1.25, 0.38) == pytest.approx(quoted, rel=1e-14)
@@ -47,7 +47,7 @@ def test_full_round_tool_gives_half_the_angular_pitch():
 
 def test_u_f_is_where_the_line_of_action_crosses_the_centreline():
     """With L* = M* = 0 the compliance is P*(1 + Q* tan²α1) cos²α1/(EL); check u_f through the L*, M* terms:
-    u_f = r_b/cos α1 − r_f equals d − h_K tan α1 (physics.md §3.1, §3.3)."""
+    u_f = r_b/cos α1 − r_f equals d − h_K tan α1 (Sainsot et al. (2004))."""
     r_b, r_f, alpha_2, alpha_1 = 0.038, 0.03675, 0.0731, 0.21
     d = r_b * (math.cos(alpha_1) + (alpha_1 + alpha_2) * math.sin(alpha_1))
     h_k = r_b * ((alpha_1 + alpha_2) * math.cos(alpha_1) - math.sin(alpha_1))

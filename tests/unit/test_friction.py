@@ -10,14 +10,14 @@ import pytest
 from thermogear.errors import CaseError, ExtrapolationWarning
 from thermogear.friction import mean_friction_coefficient
 
-# physics.md §7, the paper's gear at the pitch point (SI): w_Bt 401.47 N/mm, Ra 6.3 μm, η(30 °C) 457.8 mPa·s,
+# ISO/TR 13989-1, the paper's gear at the pitch point (SI): w_Bt 401.47 N/mm, Ra 6.3 μm, η(30 °C) 457.8 mPa·s,
 # v_Σ 5.802 m/s, ρ_red 7.820 mm
 PITCH = dict(unit_load=401.47e3, roughness=6.3e-6, dynamic_viscosity=0.4578, sum_velocity=5.802,
              relative_radius=7.820e-3)
 
 
 def test_hand_value_at_the_pitch_point():
-    # 0.12·(401.47·6.3/(457.8·5.802·7.820))^0.25 = 0.0709 (physics.md §7 table)
+    # 0.12·(401.47·6.3/(457.8·5.802·7.820))^0.25 = 0.0709 (docs/derivations.md)
     assert mean_friction_coefficient(**PITCH) == pytest.approx(0.12 * (401.47 * 6.3 / (457.8 * 5.802 * 7.820))
                                                               ** 0.25, rel=1e-12)
     assert mean_friction_coefficient(**PITCH) == pytest.approx(0.0709, abs=5e-5)

@@ -1,4 +1,4 @@
-"""Involute geometry: hand values (physics.md §2), identities and limits."""
+"""Involute geometry: hand values (ISO 21771; docs/derivations.md), identities and limits."""
 
 from __future__ import annotations
 
@@ -27,7 +27,7 @@ def test_inverse_involute_round_trip():
 
 
 def test_luo2019_radii_match_physics_sheet():
-    # physics.md §2 table: r_a1 43.5, r_f1 36.75, r_a2 55.5, r_f2 48.75 mm, p_b 8.8564 mm, g_alpha 14.685 mm
+    # docs/derivations.md: r_a1 43.5, r_f1 36.75, r_a2 55.5, r_f2 48.75 mm, p_b 8.8564 mm, g_alpha 14.685 mm
     p = pair()
     assert p.pinion.tip_radius == pytest.approx(43.5e-3, abs=1e-9)
     assert p.pinion.root_radius == pytest.approx(36.75e-3, abs=1e-9)
@@ -66,7 +66,7 @@ def test_sliding_vanishes_at_pitch_point():
     p = pair()
     assert p.sliding_speed(p.path_points["C"], 2000.0) == pytest.approx(0.0, abs=1e-12)
     v1, v2 = p.rolling_speeds(p.path_points["C"], 2000.0)
-    # physics.md §7: sum of rolling speeds at C = 5.802 m/s
+    # docs/derivations.md: sum of rolling speeds at C = 5.802 m/s
     assert v1 + v2 == pytest.approx(5.802, abs=1e-3)
 
 

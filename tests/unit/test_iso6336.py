@@ -1,4 +1,4 @@
-"""ISO 6336-1 Method B single and mesh stiffness (physics.md §3.5)."""
+"""ISO 6336-1 Method B single and mesh stiffness (ISO 6336-1 clause 9)."""
 
 from __future__ import annotations
 
@@ -14,7 +14,7 @@ ANGLE = math.radians(20)
 
 
 def test_flexibility_hand_value_luo2019():
-    # physics.md §3.5 [D]: q′ = 0.04723 + 0.15551/27 + 0.25791/35 = 0.060358 mm·μm/N
+    # docs/derivations.md: q′ = 0.04723 + 0.15551/27 + 0.25791/35 = 0.060358 mm·μm/N
     assert iso6336_flexibility(27, 35, 0, 0) * 1e9 == pytest.approx(0.060358, abs=2e-6)
 
 

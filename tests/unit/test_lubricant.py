@@ -17,7 +17,7 @@ PAPER_POINTS = [[40.0, 320.0], [100.0, 38.5]]
 
 
 def test_two_point_walther_constants_match_hand_values():
-    # physics.md §6: A = 6.84743, B = 2.58376 for 320 cSt @ 40 °C and 38.5 cSt @ 100 °C
+    # docs/derivations.md: A = 6.84743, B = 2.58376 for 320 cSt @ 40 °C and 38.5 cSt @ 100 °C
     a, b = walther_constants(PAPER_POINTS)
     assert a == pytest.approx(6.84743, abs=2e-5)
     assert b == pytest.approx(2.58376, abs=2e-5)

@@ -1,5 +1,5 @@
 """Potential-energy-method tooth compliance: quadrature against adaptive quadrature, closed forms against
-direct integration of the beam energy, the two root cases, physical limits (physics.md §3.1–3.2)."""
+direct integration of the beam energy, the two root cases, physical limits (Tian 2004; Chaari et al. 2009)."""
 
 from __future__ import annotations
 
@@ -27,7 +27,7 @@ def gear(teeth: int, bore: float = 0.015, **changes) -> Gear:
 
 
 def test_hertz_compliance_hand_value():
-    # 4 (1 − 0.09) / (π · 206e9 · 1) = 5.6245e-12 m/N  (physics.md §3.4: k_h = 1.778e11 N/m per m)
+    # 4 (1 − 0.09) / (π · 206e9 · 1) = 5.6245e-12 m/N  (docs/derivations.md: k_h = 1.778e11 N/m per m)
     assert hertz_compliance(206e9, 0.3, 1.0) == pytest.approx(5.62452e-12, rel=1e-5)
     assert 1.0 / hertz_compliance(206e9, 0.3, 1.0) == pytest.approx(1.778e11, rel=1e-3)
 
@@ -51,7 +51,7 @@ def test_gauss_legendre_matches_adaptive_quadrature(alpha_1):
 
 
 def test_involute_integral_equals_beam_energy_in_the_centreline_coordinate():
-    """Check the change of variables of physics.md §3.1 independently: integrate the beam formula
+    """Check the change of variables of Chaari et al. (2009) independently: integrate the beam formula
     3 (r_b − x cos α1)² / (2 E L h³) over x with x(α), h(α) sampled densely (trapezoid in x)."""
     r_b = 1.0
     alpha_2 = gear(27).half_tooth_angle_at_base

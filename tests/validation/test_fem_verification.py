@@ -94,7 +94,7 @@ def test_fe_flank_temperature_has_a_minimum_near_the_pitch_point(luo):
 
 
 @pytest.mark.xfail(strict=True, reason="known gap: the FE flank is 89-91 °C, the paper's 77-81 °C; the paper's "
-                   "convection coefficients and heat partition are unknown (physics.md §12) and none is tuned here")
+                   "convection coefficients and heat partition are unknown (docs/derivations.md) and none is tuned here")
 def test_fe_flank_temperature_in_the_papers_range(luo):
     """Paper Fig. 3(c): 77–81 °C along the path (±1 K read from the figure)."""
     flank = luo.flank_temperature_points()

@@ -1,4 +1,4 @@
-"""Luo & Li (2020) Sect. 3 / physics.md §1.6, §6, §7: oil viscosity, friction at the pitch point and the friction
+"""Luo & Li (2020) Sect. 3 / docs/derivations.md, ASTM D341, ISO/TR 13989-1: oil viscosity, friction at the pitch point and the friction
 damping of the luo2019 case. One row per published (or sheet-derived) number, each tolerance argued."""
 
 from __future__ import annotations
@@ -27,7 +27,7 @@ def summary():
 
 
 # The paper's oil (Table 1: 320 / 38.5 cSt at 40 / 100 °C, 870 kg/m³ taken at 15 °C, PAO density coefficient
-# −5.5e-4 1/K). physics.md §6 table values, given to 4 digits; 1 % covers the rounding of the sheet and the
+# −5.5e-4 1/K). docs/derivations.md, given to 4 digits; 1 % covers the rounding of the sheet and the
 # choice of density law (with ρ = 870 kg/m³ constant the 80 °C value would be 3.8 % higher, so 1 % still tests
 # the law).
 @pytest.mark.parametrize("temperature_c, expected_mpa_s", [(30.0, 457.8), (60.0, 115.4), (80.0, 57.0)])
@@ -37,7 +37,7 @@ def test_paper_oil_dynamic_viscosity(temperature_c, expected_mpa_s):
 
 
 def test_friction_coefficient_at_the_pitch_point_with_oil_at_30_c(summary):
-    # physics.md §7: 0.0709 (Ra 6.3 μm, w_Bt 401.5 N/mm, X_L = 1). 3 %: the sheet rounds its inputs to 3-4 digits;
+    # docs/derivations.md: 0.0709 (Ra 6.3 μm, w_Bt 401.5 N/mm, X_L = 1). 3 %: the sheet rounds its inputs to 3-4 digits;
     # a 3 % error in μ would need a 12 % error in the load group, well beyond any rounding, so it still tests
     # units and inputs.
     assert summary.pitch["elastic"].friction_coefficient[0] == pytest.approx(0.0709, rel=0.03)
@@ -58,7 +58,7 @@ def test_thermal_over_elastic_mean_damping_ratio(summary, region, paper_ratio):
 
 def test_paper_ratio_points_to_a_flank_temperature_inside_fig_3():
     # The flank temperature at which (η30/ηT)^0.25 equals the paper's 1.677-1.679 must lie in Fig. 3(c)'s
-    # 77-81 °C band (physics.md §1.6 finds 79.6 °C): a check of the viscosity law against the paper.
+    # 77-81 °C band (docs/derivations.md finds 79.6 °C): a check of the viscosity law against the paper.
     oil = builtin_lubricant("sch632")
     eta_30 = _quiet(oil.dynamic_viscosity, 30.0)
     for ratio in (5.72 / 3.41, 4.03 / 2.40):
@@ -77,7 +77,7 @@ def test_double_region_mean_below_single_region_mean(summary, model):
 @pytest.mark.parametrize("model", ["elastic", "thermal"])
 @pytest.mark.parametrize("region", ["single", "double"])
 def test_magnitude_beside_the_paper(summary, model, region):
-    # Not reproduced exactly: physics.md §1.6 derives 1.4-1.7 × the paper's values for bores of 12/15-20/25 mm
+    # Not reproduced exactly: docs/derivations.md derives 1.4-1.7 × the paper's values for bores of 12/15-20/25 mm
     # (the paper gives neither bores nor its stiffness curve; k enters Eq. 28 linearly). The band 1.2-1.9 × is
     # that derivation widened by the flank-temperature reconstruction (±5 % on c_r). A units error (per width,
     # ×b, or total mesh stiffness) would be off by 25× or more.

@@ -4,7 +4,7 @@ periodic steady state). One test per published number; each tolerance is argued 
 
 Why the tolerances cannot be tighter than they are: the paper does not give the bores (they set the fillet
 stiffness, the equivalent mass and the base-circle expansion), its stiffness curve, its temperature polynomial
-or X_te; our damping comes out 1.6-1.7x the paper's magnitudes for those reasons (physics.md §1.6), and the
+or X_te; our damping comes out 1.6-1.7x the paper's magnitudes for those reasons (docs/derivations.md), and the
 paper reads its values off a transient RK4 run from rest, not the exact steady state.
 """
 
@@ -24,14 +24,14 @@ def responses(luo2019):
 
 def test_frequency_ratio(responses):
     # paper §3: lambda = 0.153. f_n ~ sqrt(k_mean/me): the assumed bores move k_mean by +-7 % and me by +-5 %
-    # (physics.md §1.6), i.e. lambda by about +-0.01.
+    # (docs/derivations.md), i.e. lambda by about +-0.01.
     assert responses["elastic"]["frequency_ratio"] == pytest.approx(0.153, abs=0.01)
 
 
 @pytest.mark.parametrize("model, paper", [("elastic", 1.21), ("thermal", 1.13)])
 def test_dynamic_load_factor(responses, model, paper):
     # paper Eq. 29 / §4.2: Kv 1.21 (elastic), 1.13 (thermal). Kv - 1 scales with the damping ratio, which carries
-    # the 1.6x damping-magnitude uncertainty; +-0.06 is about a quarter of Kv - 1 (physics.md §1.6 found 1.25-1.26
+    # the 1.6x damping-magnitude uncertainty; +-0.06 is about a quarter of Kv - 1 (docs/derivations.md found 1.25-1.26
     # and 1.17-1.18 for three bore assumptions with the paper's own damping).
     assert responses[model]["kv"] == pytest.approx(paper, abs=0.06)
 
@@ -43,7 +43,7 @@ def test_heat_lowers_the_dynamic_load_factor(responses):
 
 def test_maximum_system_load_ratio(responses):
     # paper §4.2: the maximum system dynamic load is 1.65 x static (thermal case), at the single-to-double
-    # transition. physics.md §1.6 found 1.59-1.76 over the bore assumptions: +-0.12 covers that spread.
+    # transition. docs/derivations.md found 1.59-1.76 over the bore assumptions: +-0.12 covers that spread.
     assert responses["thermal"]["max_system_load_ratio"] == pytest.approx(1.65, abs=0.12)
 
 
@@ -65,7 +65,7 @@ def test_single_region_amplitude_falls_under_heat(responses):
 
 def test_response_is_stable_and_in_contact(responses):
     # paper §4.1: the response converges to a periodic orbit (Floquet multipliers inside the unit circle) and the
-    # teeth never separate at this load (static TE ~30 um, amplitudes < 10 um; physics.md §10)
+    # teeth never separate at this load (static TE ~30 um, amplitudes < 10 um; Kahraman & Singh (1990))
     for metrics in responses.values():
         assert max(metrics["floquet_multipliers_abs"]) < 1.0
         assert not metrics["contact_loss"]["detected"]

@@ -1,5 +1,5 @@
 """luo2019 (Luo & Li 2020, Table 1): geometry of the path, ISO 6336-1 cross-check and the PEM numbers derived in
-physics.md §2, §3.4 and §3.5 (the issue's acceptance numbers)."""
+docs/derivations.md (the issue's acceptance numbers)."""
 
 from __future__ import annotations
 
@@ -24,20 +24,20 @@ def summary():
 
 
 def test_contact_ratio(summary):
-    # physics.md §2 [D]: ε_α = 1.658; the issue allows ±0.001
+    # docs/derivations.md: ε_α = 1.658; the issue allows ±0.001
     assert summary["contact_ratio"] == pytest.approx(1.658, abs=0.001)
 
 
 @pytest.mark.parametrize("point, value", [("A", 6.383), ("B", 12.212), ("C", 13.852), ("D", 15.240),
                                           ("E", 21.068)])
 def test_path_points(summary, point, value):
-    # physics.md §2 [D] table (three decimals given): ±0.002 mm as in the issue
+    # docs/derivations.md (three decimals given): ±0.002 mm as in the issue
     assert summary["path_mm"][point] == pytest.approx(value, abs=0.002)
 
 
 @pytest.mark.parametrize("key, value", [("c_prime_n_per_mm_um", 12.92), ("c_gamma_alpha_n_per_mm_um", 19.30)])
 def test_iso6336(summary, key, value):
-    # physics.md §3.5 [D], given to four figures: ±1 % as in the issue
+    # docs/derivations.md, given to four figures: ±1 % as in the issue
     assert summary["iso6336"][key] == pytest.approx(value, rel=0.01)
 
 
@@ -54,13 +54,13 @@ def test_fzg_type_c_geometry():
     assert data["contact_ratio"] == pytest.approx(1.46, abs=0.02)
 
 
-# physics.md §3.4 [D] pair stiffness per m of face width (three or four figures given)
+# docs/derivations.md pair stiffness per m of face width (three or four figures given)
 PHYSICS_PAIR = {"A": 9.27e9, "B": 1.323e10, "C": 1.345e10, "D": 1.327e10, "E": 9.25e9}
 
 
 @pytest.mark.parametrize("point", list(PHYSICS_PAIR))
 def test_physics_md_numbers_with_its_root_angle(luo2019, point, monkeypatch):
-    """physics.md §3.4 was computed with θ_f from the gear's addendum (h* = 1 in the θ_f formula, 0.1048 rad).
+    """docs/derivations.md was computed with θ_f from the gear's addendum (h* = 1 in the θ_f formula, 0.1048 rad).
     With that θ_f every other part of our PEM reproduces its numbers to the figures given (±0.3 %)."""
     original = potential_energy.root_half_angle
     monkeypatch.setattr(potential_energy, "root_half_angle",
@@ -73,14 +73,14 @@ def test_physics_md_numbers_with_its_root_angle(luo2019, point, monkeypatch):
 @pytest.mark.parametrize("point", list(PHYSICS_PAIR))
 def test_physics_md_numbers_with_the_rack_derived_root_angle(luo2019, point):
     """With θ_f derived from the rack (tool addendum 1.25, θ_f = 0.1116 rad; docs/stiffness.md) the fillet
-    foundation is stiffer and the pair 2–3 % stiffer than physics.md §3.4: assert the size and sign of that gap."""
+    foundation is stiffer and the pair 2–3 % stiffer than docs/derivations.md: assert the size and sign of that gap."""
     pair = luo2019.gear_pair
     value = float(pair_stiffness_at(pair, luo2019.material, pair.path_points[point])) / pair.face_width
     assert 1.015 < value / PHYSICS_PAIR[point] < 1.03
 
 
 def test_mesh_stiffness_against_physics_md(luo2019):
-    # physics.md §3.4 [D]: min 1.32e10, mean 1.99e10, max 2.36e10 per m (with its θ_f); ours 2–3 % higher
+    # docs/derivations.md: min 1.32e10, mean 1.99e10, max 2.36e10 per m (with its θ_f); ours 2–3 % higher
     grid, _, total = mesh_stiffness(luo2019.gear_pair, luo2019.material, 2000.0, 2048)
     width = luo2019.gear_pair.face_width
     for ours, theirs in ((total.min(), 1.32e10), (grid.time_average(total), 1.99e10), (total.max(), 2.36e10)):

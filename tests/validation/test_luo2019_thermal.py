@@ -39,7 +39,7 @@ def test_calibration_is_reported_and_reproduces_its_target(summary):
 # fixed at C, Eq. 18 gives drop(A)/drop(C) ≈ [k_e(A)/k_e(C)]·[ΣΔ_t(A)/ΣΔ_t(C)]. ΣΔ_t is nearly constant along the
 # path (the radial parts project as λΔT·ρ_k and ρ1 + ρ2 = T1T2), so the temperature assumptions barely matter
 # (base/bore 60/40 to 77/77 °C, λ 11.5–12.5e-6, fit degree 4–6: drop at A 10.3–10.6 %); what sets it is the
-# elastic ratio k_e(A)/k_e(C), 0.69 for this PEM model (physics.md §3.4 likewise) against the ≈0.55 the paper's
+# elastic ratio k_e(A)/k_e(C), 0.69 for this PEM model (docs/derivations.md likewise) against the ≈0.55 the paper's
 # 8.53/14.52 implies. A ±20 % difference in that ratio between stiffness models is common (fillet-foundation
 # and Hertz variants), which is ±2–3 points here.
 @pytest.mark.parametrize("point", ["A", "E"])

@@ -4,7 +4,7 @@ Published results used (see docs/stiffness.md, "Validation"):
 
 1. ISO 6336-1:2006, §9 (Method B): the single stiffness c′ and mean mesh stiffness c_γα of spur gears, an
    empirical fit by the standard (after Winter & Podlesnik's measurements and FE data) to steel gears with solid
-   discs and the ISO 53 basic rack. Formulas as in physics.md §3.5 [S: python-gearbox, GEARpie].
+   discs and the ISO 53 basic rack. Formulas as in ISO 6336-1 clause 9 [S: python-gearbox, GEARpie].
 2. ISO 6336-1 / DIN 3990-1 (Method C): in the absence of better data, steel spur gears with solid discs and
    a standard basic rack have c′ ≈ 14 N/(mm·μm) and c_γα ≈ 20 N/(mm·μm). [R]: recalled from the standard; the
    same two values are the default of independent public gear codes found with the search tool (a C# rating

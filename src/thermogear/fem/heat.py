@@ -1,5 +1,5 @@
 """Steady heat conduction in a 2-D tooth sector (scikit-fem): friction heat on the meshing flank, convection on
-the other surfaces and a sink term for the end faces (physics.md §5.1).
+the other surfaces and a sink term for the end faces (docs/fem.md).
 
 Strong form per unit face width, with T the temperature, T_a the oil temperature:
 
@@ -33,7 +33,7 @@ AIR_VISCOSITY = 2.0e-5
 
 # --------------------------------------------------------------------------------------------- functions
 def blok_heat_partition(rolling_speed_1, rolling_speed_2, effusivity_1: float = 1.0, effusivity_2: float = 1.0):
-    """Share of the friction heat entering body 1, β1 = B1√v1 / (B1√v1 + B2√v2) [–] (Blok; physics.md §5.1).
+    """Share of the friction heat entering body 1, β1 = B1√v1 / (B1√v1 + B2√v2) [–] (Blok; docs/fem.md).
 
     ``rolling_speed_1/2`` v1, v2 [m/s]; ``effusivity`` B = √(k ρ c) of each body (equal for two steel gears).
     """
@@ -45,7 +45,7 @@ def blok_heat_partition(rolling_speed_1, rolling_speed_2, effusivity_1: float = 
 def mean_flank_heat_flux(heat_share, friction_coefficient, unit_load, sliding_speed, radius_of_curvature,
                          conversion_factor: float = 1.0):
     """Friction heat flux on a flank averaged over one revolution, q̄ = γ β μ F′ v_s / (2π ρ) [W/m²]
-    (physics.md §5.1, after GEARpie CONTACT.py ``qvzp1ms``).
+    (docs/fem.md, after GEARpie CONTACT.py ``qvzp1ms``).
 
     ``heat_share`` β [–]; ``friction_coefficient`` μ [–]; ``unit_load`` F′ [N/m] (the pair's load per unit face
     width); ``sliding_speed`` v_s [m/s]; ``radius_of_curvature`` ρ of this flank at the point [m] (the point is in
@@ -58,7 +58,7 @@ def mean_flank_heat_flux(heat_share, friction_coefficient, unit_load, sliding_sp
 
 def mist_properties(oil_fraction: float, oil_conductivity: float, oil_density: float, oil_specific_heat: float,
                     oil_viscosity: float) -> dict[str, float]:
-    """Volume-weighted oil–air mist properties (Handschuh & Kicher 1994 style mixing, physics.md §5.1 [R]):
+    """Volume-weighted oil–air mist properties (Handschuh & Kicher 1994 style mixing, docs/fem.md, unverified):
     k, ρ, η linear in the oil fraction X, c from the mixed heat capacity. Returns k [W/(m K)], rho [kg/m³],
     c [J/(kg K)], nu [m²/s], prandtl [–]."""
     x = oil_fraction
@@ -74,7 +74,7 @@ def mist_properties(oil_fraction: float, oil_conductivity: float, oil_density: f
 def rotating_disc_coefficient(conductivity: float, prandtl: float, angular_speed: float, kinematic_viscosity: float,
                               exponent: float = 2.0) -> float:
     """End-face convection of a free rotating disc, laminar: h = 0.308 k (m + 2)^0.5 Pr^0.5 (ω/ν)^0.5 [W/(m² K)]
-    (physics.md §5.1 [R], the form cited after Patir & Cheng / Handschuh & Kicher; m: exponent of the radial
+    (docs/fem.md, unverified, the form cited after Patir & Cheng / Handschuh & Kicher; m: exponent of the radial
     temperature profile)."""
     return 0.308 * conductivity * math.sqrt(exponent + 2.0) * math.sqrt(prandtl) * math.sqrt(
         angular_speed / kinematic_viscosity)
@@ -82,7 +82,7 @@ def rotating_disc_coefficient(conductivity: float, prandtl: float, angular_speed
 
 def tooth_surface_coefficient(conductivity: float, prandtl: float, angular_speed: float, radius: float,
                               length: float, kinematic_viscosity: float) -> float:
-    """Flank/tip convection h = 0.228 Re^0.731 Pr^(1/3) k / L, Re = ω r L / ν [W/(m² K)] (physics.md §5.1 [R])."""
+    """Flank/tip convection h = 0.228 Re^0.731 Pr^(1/3) k / L, Re = ω r L / ν [W/(m² K)] (docs/fem.md, unverified)."""
     reynolds = angular_speed * radius * length / kinematic_viscosity
     return 0.228 * reynolds**0.731 * prandtl ** (1.0 / 3.0) * conductivity / length
 

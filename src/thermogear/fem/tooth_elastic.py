@@ -14,7 +14,7 @@ Model (docs/fem.md):
   displacement = translation + rotation) over the inner part of the chord (−0.75 x_K … +0.5 x_K), and that
   rigid-section motion taken to K and projected on the line of action is the tooth deflection. What is left out
   is the near field of the contact (Hertz flattening), which the pair model adds back as the Hertz compliance
-  4(1 − ν²)/(π E b) of physics.md §3.2, as in the potential energy method. The PEM compliance compared with is
+  4(1 − ν²)/(π E b) of Tian 2004; Chaari et al. 2009, as in the potential energy method. The PEM compliance compared with is
   bending + shear + axial + fillet foundation;
 - thermal runs: the bulk temperature rise above the stress-free reference as a load, bore free, cut faces on
   rollers (no displacement normal to the radial cut lines: cyclic symmetry of a tooth field and a free gear
@@ -54,7 +54,7 @@ INWARD_OFFSET = 2e-6
 # --------------------------------------------------------------------------------------------- functions
 def contact_point_geometry(gear, own_roll):
     """Contact point K of a gear's right flank at its own roll distance ρ [m]: (x_K, y_K) [m] in the tooth frame,
-    the load angle ω = α_K − φ_K [rad] (= α1 of physics.md §3.1) and the outward flank normal (cos ω, sin ω)."""
+    the load angle ω = α_K − φ_K [rad] (= α1 of Chaari et al. (2009)) and the outward flank normal (cos ω, sin ω)."""
     own_roll = np.asarray(own_roll, dtype=float)
     radius = np.hypot(gear.base_radius, own_roll)
     half_angle = np.asarray(gear.half_angle_at(radius), dtype=float)
@@ -64,7 +64,7 @@ def contact_point_geometry(gear, own_roll):
 
 
 def hertz_half_width(unit_load, relative_radius, youngs_modulus: float, poisson_ratio: float):
-    """a_H = 2 √(F′ R / (π E*)), 1/E* = 2 (1 − ν²)/E for two equal materials [m] (physics.md §5.1)."""
+    """a_H = 2 √(F′ R / (π E*)), 1/E* = 2 (1 − ν²)/E for two equal materials [m] (docs/fem.md)."""
     effective = youngs_modulus / (2.0 * (1.0 - poisson_ratio**2))
     return 2.0 * np.sqrt(np.asarray(unit_load) * np.asarray(relative_radius) / (math.pi * effective))
 

@@ -1,4 +1,4 @@
-"""Bulk temperature of one gear's tooth (physics.md §5.1): steady 2-D conduction in a one-tooth sector from the
+"""Bulk temperature of one gear's tooth (docs/fem.md): steady 2-D conduction in a one-tooth sector from the
 bore to the tip, time-averaged friction heat on the meshing flank, convection elsewhere, end faces as a sink.
 
 Model (all assumptions stated in docs/fem.md):
@@ -8,7 +8,7 @@ Model (all assumptions stated in docs/fem.md):
   operating oil temperature, β Blok's partition; plus convection h_m;
 - other flank, fillets and root: h_n; tip: h_t; end faces: sink 2 h_e / b in 2-D; bore adiabatic or h_bore;
 - ambient: the operating oil temperature ``[lubricant].operating_temperature_c``.
-Coefficients not given in ``[fem]`` come from the correlations of physics.md §5.1 [R] with oil–air mist
+Coefficients not given in ``[fem]`` come from the correlations of docs/fem.md, unverified with oil–air mist
 properties (:func:`convection_coefficients`).
 """
 
@@ -77,7 +77,7 @@ class ConvectionCoefficients:
 
 def convection_coefficients(case: "Case", which: str, settings: FemSection | None = None) -> ConvectionCoefficients:
     """Convection coefficients of one gear: the ``[fem]`` values where given, else the correlations of
-    physics.md §5.1 evaluated with oil–air mist properties (oil fraction ``[fem].oil_fraction``) at the operating
+    docs/fem.md evaluated with oil–air mist properties (oil fraction ``[fem].oil_fraction``) at the operating
     oil temperature: flanks and tip h = 0.228 Re^0.731 Pr^(1/3) k/L (L = tooth depth, r = reference radius), end
     faces the laminar rotating disc h = 0.308 k (m + 2)^0.5 Pr^0.5 (ω/ν)^0.5 with m = 2; a convective bore without
     a value takes the end-face coefficient."""

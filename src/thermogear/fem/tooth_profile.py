@@ -7,9 +7,9 @@ Generation (ISO 53 basic rack with tool tip radius ρ_fP = ρ_fP*·m, profile sh
 at r + x·m from the gear centre and rolls without slip (its line at distance r) on the reference circle. The
 rounded tool tip (centre at r_f + ρ_fP) generates the fillet as the envelope of its circle: at each rolling angle
 the generating point is where the common normal passes through the pitch point (law of gearing). The straight
-rack flank generates the involute, which is written in closed form (Luo & Li (2020) Eq. 8, physics.md §1.3).
+rack flank generates the involute, which is written in closed form (Luo & Li (2020) Eq. 8).
 Sources: Litvin & Fuentes, Gear Geometry and Applied Theory (2004) ch. 1–2 (envelope of the tool family);
-ISO 21771 (tooth thickness); physics.md §2.
+ISO 21771 (tooth thickness).
 """
 
 from __future__ import annotations

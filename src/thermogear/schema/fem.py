@@ -1,6 +1,6 @@
 """Case-file section [fem]: settings of the finite-element tooth model (mesh, heat and elasticity).
 
-Every convection coefficient left out is computed from the correlations of physics.md §5.1 (stated there as
+Every convection coefficient left out is computed from the correlations of docs/fem.md (stated there as
 recalled [R]; see docs/fem.md for the values they give); a number given here replaces the correlation for that
 boundary.
 """

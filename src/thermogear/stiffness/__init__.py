@@ -1,4 +1,4 @@
-"""Elastic mesh stiffness: potential energy method (physics.md §3), ISO 6336-1 cross-check, cached tables."""
+"""Elastic mesh stiffness: potential energy method (Yang & Lin (1987), Tian 2004; Chaari et al. 2009), ISO 6336-1 cross-check, cached tables."""
 
 from thermogear.stiffness.iso6336 import iso6336_mesh_stiffness, iso6336_single_stiffness, iso6336_stiffness
 from thermogear.stiffness.potential_energy import (PairCompliance, ToothCompliance, hertz_compliance,

@@ -1,10 +1,10 @@
 """Fillet-foundation (gear body) compliance of a spur gear tooth after Sainsot, Velex & Duverger (2004).
 
 P. Sainsot, P. Velex, O. Duverger, "Contribution of gear body to tooth deflections — a new bidimensional
-analytical formula", J. Mech. Des. 126 (2004) 748–752. Coefficients and formula: physics.md §3.3.
+analytical formula", J. Mech. Des. 126 (2004) 748–752. Coefficients and formula: Sainsot et al. (2004).
 
 The root half angle θ_f of a rack-cut gear is derived here from the rack geometry (see
-:func:`root_half_angle`); physics.md §3.3 quotes the x = 0 formula with the gear's addendum coefficient in it,
+:func:`root_half_angle`); the x = 0 formula is often quoted with the gear's addendum coefficient in it,
 which drops the clearance term (see docs/stiffness.md).
 """
 
@@ -18,7 +18,7 @@ import numpy as np
 from thermogear.errors import CaseError, ExtrapolationWarning
 
 #: Sainsot et al. (2004) polynomial coefficients (A, B, C, D, E, F) of X*(h_f, θ_f) for X* ∈ {L*, M*, P*, Q*}
-#: (physics.md §3.3).
+#: (Sainsot et al. (2004)).
 SAINSOT_COEFFICIENTS: dict[str, tuple[float, float, float, float, float, float]] = {
     "L": (-5.574e-5, -1.9986e-3, -2.3015e-4, 4.7702e-3, 0.0271, 6.8045),
     "M": (60.111e-5, 28.100e-3, -83.431e-4, -9.9256e-3, 0.1624, 0.9086),
@@ -26,7 +26,7 @@ SAINSOT_COEFFICIENTS: dict[str, tuple[float, float, float, float, float, float]]
     "Q": (-6.2042e-5, 9.0889e-3, -4.0964e-4, 7.8297e-3, -0.1472, 0.6904),
 }
 
-#: Ranges of the fitted outputs L*, M*, P*, Q* over Sainsot's data [S: ROSS gear_element.py, physics.md §3.3].
+#: Ranges of the fitted outputs L*, M*, P*, Q* over Sainsot's data [S: ROSS gear_element.py, Sainsot et al. (2004)].
 SAINSOT_OUTPUT_RANGES: dict[str, tuple[float, float]] = {
     "L": (6.82, 6.94), "M": (1.08, 3.29), "P": (2.56, 13.47), "Q": (0.141, 0.62),
 }
@@ -37,7 +37,7 @@ SAINSOT_INPUT_RANGES: dict[str, tuple[float, float]] = {"h_f": (1.4, 7.0), "thet
 
 
 def sainsot_coefficient(name: str, root_to_bore_ratio, root_half_angle):
-    """X*(h_f, θ_f) = A/θ_f² + B h_f² + C h_f/θ_f + D/θ_f + E h_f + F  [–]  (Sainsot et al. 2004; physics.md §3.3).
+    """X*(h_f, θ_f) = A/θ_f² + B h_f² + C h_f/θ_f + D/θ_f + E h_f + F  [–]  (Sainsot et al. 2004).
 
     ``name`` is one of "L", "M", "P", "Q"; h_f = r_f / r_int [–], θ_f [rad].
     """
@@ -51,7 +51,7 @@ def root_half_angle(teeth: int, pressure_angle: float, tool_addendum_coefficient
                     tool_tip_radius_coefficient: float) -> float:
     """Half angle θ_f subtended at the gear centre by the tooth's footprint on the root circle [rad].
 
-    Derived for this package from the generating rack (physics.md §3.3 asks for it; Sainsot et al. 2004 define
+    Derived for this package from the generating rack (the fillet-foundation formula needs it; Sainsot et al. 2004 define
     S_f = 2 r_f θ_f as the tooth root length): the fillet meets the root circle where the rack-tip corner
     radius ρ = ρ* m touches the rack tip line. That point lies
     w = m[π/4 − h_fP* tan α − ρ*(1 − sin α)/cos α] from the middle of the rack tooth, and rolling the rack on the
@@ -61,7 +61,7 @@ def root_half_angle(teeth: int, pressure_angle: float, tool_addendum_coefficient
         θ_f = [π/2 + 2 h_fP* tan α + 2ρ*(1 − sin α)/cos α] / z.
 
     The profile shift x moves the rack radially only, so θ_f does not depend on x (x enters through r_f).
-    This equals physics.md's [π/2 + 2 tan α (h* − ρ*) + 2ρ*/cos α]/z with h* the rack (tool) addendum h_fP*
+    This equals the textbook form [π/2 + 2 tan α (h* − ρ*) + 2ρ*/cos α]/z with h* the rack (tool) addendum h_fP*
     (1.25 for ISO 53), not the gear addendum. A tool whose corner radius leaves no flat tip (w < 0) gives the
     full-round limit θ_f = π/z.
     """
@@ -72,7 +72,7 @@ def root_half_angle(teeth: int, pressure_angle: float, tool_addendum_coefficient
 
 def fillet_foundation_compliance(load_angle, base_radius: float, root_radius: float, root_to_bore_ratio: float,
                                  root_half_angle_rad: float, youngs_modulus: float, face_width: float):
-    """Fillet-foundation compliance 1/k_f [m/N] (Sainsot et al. 2004; physics.md §3.3).
+    """Fillet-foundation compliance 1/k_f [m/N] (Sainsot et al. 2004).
 
     1/k_f = cos²α1/(E L) · {L*(u_f/S_f)² + M*(u_f/S_f) + P*(1 + Q* tan²α1)}, with
     u_f = r_b / cos α1 − r_f (where the line of action crosses the tooth centreline, measured from the root

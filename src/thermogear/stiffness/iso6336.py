@@ -1,6 +1,6 @@
 """ISO 6336-1 Method B single stiffness c′ and mesh stiffness c_γα of spur gears — a cross-check of the PEM.
 
-Formulas: physics.md §3.5 ([S] python-gearbox ``iso.py``, GEARpie ``DIN3990.py``); ISO 6336-1:2006 §9.
+Formulas: ISO 6336-1 clause 9 ([S] python-gearbox ``iso.py``, GEARpie ``DIN3990.py``); ISO 6336-1:2006 §9.
 Inside SI: stiffness per unit face width in N/m per m of face width (N/m²). 1 N/(mm·μm) = 1e9 N/m².
 """
 
@@ -49,7 +49,7 @@ def iso6336_single_stiffness(teeth_1: int, teeth_2: int, shift_1: float, shift_2
                              rack_dedendum_coefficient: float = 1.25, pressure_angle: float = math.radians(20.0),
                              line_load: float | None = None, rim_factor: float = 1.0,
                              helix_angle: float = 0.0, warn: bool = True) -> float:
-    """Single stiffness c′ per unit face width [N/m²] (ISO 6336-1:2006 Method B, §9.3; physics.md §3.5).
+    """Single stiffness c′ per unit face width [N/m²] (ISO 6336-1:2006 Method B, §9.3; ISO 6336-1 clause 9).
 
     c′ = (1/q′)·C_M·C_R·C_B·cos β·(E_r/206 GPa), E_r = 2E1E2/(E1 + E2); C_M = 0.8 (solid discs), C_R the rim
     factor (1 for solid blanks), C_B the basic rack factor. With ``line_load`` F_t·K_A/b [N/m] below 100 N/mm,
@@ -75,7 +75,7 @@ def iso6336_single_stiffness(teeth_1: int, teeth_2: int, shift_1: float, shift_2
 def iso6336_mesh_stiffness(single_stiffness: float, contact_ratio: float) -> float:
     """Mean mesh stiffness c_γα = c′(0.75 ε_α + 0.25) per unit face width [N/m²] (ISO 6336-1 §9.3.1).
 
-    For ε_α < 1.2 the value is multiplied by 0.9 as in python-gearbox (physics.md §3.5) [R: the reduction
+    For ε_α < 1.2 the value is multiplied by 0.9 as in python-gearbox (ISO 6336-1 clause 9) [R: the reduction
     "up to about 10 %" for low contact ratios is recalled from the standard, not confirmed].
     """
     value = single_stiffness * (0.75 * contact_ratio + 0.25)

@@ -1,14 +1,14 @@
 """Elastic compliance of spur gear teeth by the potential energy method (PEM).
 
 Yang & Lin (1987): Hertz, bending, axial compression; Tian (2004): shear; Sainsot et al. (2004): fillet
-foundation; two-case root treatment after Ma et al. (2015). Formulas, symbols and derivations: physics.md §3.
+foundation; two-case root treatment after Ma et al. (2015). Formulas, symbols and derivations: Yang & Lin (1987), Tian 2004; Chaari et al. 2009.
 
 All compliances are in m/N for a face width L [m] (pass L = 1 for per-unit-width values). The load angle α1 of
-physics.md §3.1 is the angle between the contact force and the normal to the tooth centreline.
+Chaari et al. (2009) is the angle between the contact force and the normal to the tooth centreline.
 
 The integrals over the involute are evaluated with fixed Gauss–Legendre nodes mapped onto [−α1, α_end] for all
 contact positions at once (one (positions × nodes) array); the straight root segment below the base circle has
-closed forms (physics.md §3.2).
+closed forms (Tian 2004; Chaari et al. 2009).
 """
 
 from __future__ import annotations
@@ -28,7 +28,7 @@ from thermogear.stiffness.fillet_foundation import (check_sainsot_range, fillet_
 #: agree with adaptive quadrature to ~1e-13 relative (tests/unit/test_potential_energy.py).
 GAUSS_NODE_COUNT = 24
 
-#: Shear form factor of a rectangular section (Tian 2004; physics.md §3.2).
+#: Shear form factor of a rectangular section (Tian 2004).
 SHEAR_FORM_FACTOR = 1.2
 
 
@@ -42,7 +42,7 @@ def _gauss_legendre(count: int) -> tuple[np.ndarray, np.ndarray]:
 
 # ------------------------------------------------------------------------------------------------- functions
 def hertz_compliance(youngs_modulus: float, poisson_ratio: float, face_width: float) -> float:
-    """Hertzian contact compliance 1/k_h = 4(1 − ν²)/(π E L) [m/N] (Yang & Sun 1985; physics.md §3.2).
+    """Hertzian contact compliance 1/k_h = 4(1 − ν²)/(π E L) [m/N] (Yang & Sun 1985).
 
     Load-independent (linearised line contact) and the same for every contact position.
     """
@@ -50,7 +50,7 @@ def hertz_compliance(youngs_modulus: float, poisson_ratio: float, face_width: fl
 
 
 def involute_end_angle(half_tooth_angle_base: float, base_radius: float, root_radius: float) -> float:
-    """Upper limit α_end of the involute integrals [rad] (physics.md §3.2).
+    """Upper limit α_end of the involute integrals [rad] (Tian 2004; Chaari et al. 2009).
 
     α2 when the root circle lies below the base circle (the involute runs down to r_b); otherwise
     α5 = α2 − sqrt((r_f/r_b)² − 1), where the involute r(α) = r_b·sqrt(1 + (α2 − α)²) meets the root circle.
@@ -62,7 +62,7 @@ def involute_end_angle(half_tooth_angle_base: float, base_radius: float, root_ra
 
 def involute_integrals(load_angle, half_tooth_angle_base: float, end_angle: float,
                        node_count: int = GAUSS_NODE_COUNT) -> tuple[np.ndarray, np.ndarray]:
-    """Dimensionless PEM integrals over the involute part of the tooth, α ∈ [−α1, α_end] (physics.md §3.2).
+    """Dimensionless PEM integrals over the involute part of the tooth, α ∈ [−α1, α_end] (Tian 2004; Chaari et al. 2009).
 
     Returns (I_b, I_n) with
         I_b = ∫ 3{1 + cos α1[(α2 − α) sin α − cos α]}² (α2 − α) cos α / (2[sin α + (α2 − α) cos α]³) dα
@@ -89,7 +89,7 @@ def involute_integrals(load_angle, half_tooth_angle_base: float, end_angle: floa
 
 def root_segment_integrals(load_angle, half_tooth_angle_base: float, base_radius: float,
                            root_radius: float) -> tuple[np.ndarray, np.ndarray]:
-    """Closed-form PEM integrals of the straight segment between root and base circle (physics.md §3.2) [–].
+    """Closed-form PEM integrals of the straight segment between root and base circle (Tian 2004; Chaari et al. 2009) [–].
 
     Zero when r_f ≥ r_b. Otherwise the tooth between r_f and r_b is a straight segment of half-thickness
     r_b sin α2, α3 = arcsin(r_b sin α2 / r_f), and
@@ -130,7 +130,7 @@ class ToothCompliance:
 def tooth_compliance(gear: Gear, load_angle, material: Material, face_width: float,
                      key: str = "gear", node_count: int = GAUSS_NODE_COUNT,
                      warn: bool = True) -> ToothCompliance:
-    """Bending, shear, axial and fillet-foundation compliance of one tooth [m/N] (physics.md §3.2–3.3).
+    """Bending, shear, axial and fillet-foundation compliance of one tooth [m/N] (Tian 2004; Sainsot et al. 2004).
 
     ``load_angle`` α1 [rad] (scalar or array; see :meth:`GearPair.pinion_load_angle`); ``face_width`` L [m];
     ``key`` ("pinion"/"wheel") names the gear in errors and warnings. Handles the root circle below the base
@@ -177,7 +177,7 @@ class PairCompliance:
 
     @property
     def total(self) -> np.ndarray:
-        """δ = δ_pinion + δ_wheel + δ_hertz [m/N] (physics.md §3.4)."""
+        """δ = δ_pinion + δ_wheel + δ_hertz [m/N] (docs/derivations.md)."""
         return self.pinion.total + self.wheel.total + self.hertz
 
     @property
@@ -187,7 +187,7 @@ class PairCompliance:
 
     @property
     def pinion_total(self) -> np.ndarray:
-        """δ1: pinion tooth compliance plus half the Hertz compliance [m/N] (so δ1 + δ2 = δ; physics.md §1.3)."""
+        """δ1: pinion tooth compliance plus half the Hertz compliance [m/N] (so δ1 + δ2 = δ; Luo & Li 2020, Eqs. 7–23)."""
         return self.pinion.total + 0.5 * self.hertz
 
     @property
@@ -201,7 +201,7 @@ def pair_compliance(gear_pair: GearPair, material: Material, roll, face_width: f
     """Pinion, wheel and Hertz compliance of one tooth pair in contact at roll distances ``roll`` [m].
 
     ``face_width`` [m] defaults to the pair's common face width (totals over the face width); pass 1 for
-    per-unit-width values. The two teeth and the contact act in series (physics.md §3.4).
+    per-unit-width values. The two teeth and the contact act in series (docs/derivations.md).
     """
     roll = np.asarray(roll, dtype=float)
     width = gear_pair.face_width if face_width is None else float(face_width)

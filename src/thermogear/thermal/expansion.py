@@ -1,6 +1,6 @@
-"""Thermal expansion of the tooth flanks along the line of action (Luo & Li 2020 Eqs. 8–12, physics.md §4).
+"""Thermal expansion of the tooth flanks along the line of action (Luo & Li 2020 Eqs. 8–12, Timoshenko & Goodier 1951).
 
-Pure, vectorised functions. Temperatures are **rises above the stress-free reference** [K] (physics.md §4; the
+Pure, vectorised functions. Temperatures are **rises above the stress-free reference** [K] (Timoshenko & Goodier 1951; the
 paper does not say so, but Eq. 10 is the thermo-elastic displacement of a disc from its stress-free state).
 
 Sign: the flank displacement is projected on the outward normal of the flank at the contact point, i.e. on the
@@ -8,7 +8,7 @@ line of action pointing towards the mating tooth. Positive = the flank moves int
 
 Frame of one tooth (Eqs. 11–12): y along the tooth centreline pointing to the tip, x across it towards the loaded
 flank. The contact point K sits at (r_k sin φ_k, r_k cos φ_k); the contact force presses on the flank at the load
-angle ω_k = α_k − φ_k to the x axis (physics.md §1.3 notes, §3.1: ω_k = α1), so the flank's outward normal is
+angle ω_k = α_k − φ_k to the x axis (Luo & Li (2020) Eq. 8; ω_k = α1 of the potential energy method), so the flank's outward normal is
 (cos ω_k, sin ω_k).
 """
 
@@ -25,7 +25,7 @@ def base_circle_radial_expansion(alpha_th, base_radius, bore_radius, base_rise, 
     """Radial displacement of the base circle Δr_b [m] (Luo & Li 2020 Eq. 10, first three terms; ref. [33]).
 
     Free thin annular disc (plane stress) from the bore r_n to the base circle r_b under the steady logarithmic
-    temperature field between the bore rise t_n and the base-circle rise t_b (physics.md §4):
+    temperature field between the bore rise t_n and the base-circle rise t_b (Timoshenko & Goodier 1951):
 
         Δr_b = λ r_b t_n + λ r_b³ (t_b − t_n)/(r_b² − r_n²) − λ r_b (t_b − t_n)/(2 ln(r_b/r_n))
 
@@ -68,7 +68,7 @@ def flank_point_displacement(alpha_th, radius, half_angle, flank_rise, base_expa
     (≈ +30 % at the luo2019 pinion root). "paper" is kept to reproduce Luo & Li.
 
     ``flank_rise`` Δt_k [K] above the reference; ``base_expansion`` Δr_b [m] from
-    :func:`base_circle_radial_expansion`. Eq. 8's φ_k uses the reference-circle thickness (physics.md §1.3).
+    :func:`base_circle_radial_expansion`. Eq. 8's φ_k uses the reference-circle thickness (Luo & Li 2020, Eqs. 7–23).
     """
     radius = np.asarray(radius, dtype=float)
     half_angle = np.asarray(half_angle, dtype=float)
@@ -96,7 +96,7 @@ def project_on_line_of_action(delta_x, delta_y, load_angle):
 def flank_expansion_along_line_of_action(gear, roll, flank_rise, base_rise, bore_rise, alpha_th,
                                          circumferential: Circumferential = "paper"):
     """Thermal expansion Δ_t [m] of one gear's flank at the contact point, along the line of action, positive =
-    interference (Luo & Li 2020 Eqs. 8–12 with the base-circle term of physics.md §4).
+    interference (Luo & Li 2020 Eqs. 8–12 with the base-circle term of Timoshenko & Goodier 1951).
 
     ``gear``: a :class:`~thermogear.geometry.Gear` (base radius, bore radius, tooth thickness); ``roll``: distance
     of the contact point from this gear's own base-circle tangency point along the line of action [m]

@@ -6,10 +6,10 @@ Three sources, chosen in the case file (``[temperature].model``):
 - ``"uniform"``: one bulk temperature for the whole gear body (flank, base circle and bore);
 - ``"tabulated"``: flank temperatures at contact positions Γ (in the case or a CSV file), fitted by a polynomial
   in Γ of ``fit_degree`` as Luo & Li (2020) do for their Fig. 3(c), with base-circle and bore temperatures per gear;
-- ``"fem"``: the finite-element bulk-temperature model (physics.md §5.1). It plugs in through
+- ``"fem"``: the finite-element bulk-temperature model (docs/fem.md). It plugs in through
   :func:`register_temperature_provider`; until it is registered, asking for it is an error.
 
-Temperatures are °C here; the expansion uses the rises above ``reference_c`` (physics.md §4: Eq. 10 holds for
+Temperatures are °C here; the expansion uses the rises above ``reference_c`` (Timoshenko & Goodier 1951: Eq. 10 holds for
 rises above the stress-free state, which the paper does not say).
 """
 
