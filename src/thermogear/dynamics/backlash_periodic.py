@@ -9,7 +9,9 @@ Search order (:func:`periodic_response`): Newton for N = 1 from the given state 
 solution with every pair in contact; if that fails or is unstable, a transient run-in from the same state, then
 N = 1, 2, …, ``max_period_count``; if none converges to a stable orbit, a longer transient and one more round of
 Newton from its end; otherwise the response is classified "non-periodic" and the last periods of the transient are
-returned with ``converged`` False. An orbit is never returned unconverged under another name.
+returned with ``converged`` False. An orbit is never returned unconverged under another name. A transient that
+grows beyond 10⁶ static deflections raises :class:`~thermogear.errors.ModelLimitError` (a parametric instability
+that the backlash cannot bound).
 """
 
 from __future__ import annotations
@@ -26,6 +28,7 @@ __all__ = ["BacklashHistory", "BacklashOrbit", "backlash_flow", "backlash_transi
            "periodic_response", "shoot"]
 
 SCAN_FRACTION = 1.0 / 16.0  # scan step / natural period of the active set (backlash_kernel docstring)
+_UNBOUNDED = 1e6  # scaled |state| beyond which a transient is taken as growing without bound
 
 
 @dataclass(frozen=True)
@@ -260,6 +263,12 @@ def periodic_response(problem: BacklashMeshProblem, initial_state: tuple[float, 
     for run_in in (run_in_periods, classify_periods):
         end, _, _ = backlash_flow(problem, state, run_in)
         state = (float(end[0]), float(end[1]))
+        if _scaled(problem, end) > _UNBOUNDED:
+            raise ModelLimitError(
+                f"the backlash mesh response grows without bound (|x| reached {abs(end[0]):.3g} m, "
+                f"{abs(end[0]) / problem.displacement_scale:.3g} static deflections, after {run_in} mesh periods): "
+                "at large amplitude both flanks act like one linear mesh, so a parametric instability of the "
+                "linear model persists; change the speed or add damping")
         for count in range(1, int(max_period_count) + 1):
             result = shoot(problem, state, count, tolerance, max_iterations)
             total += result["iterations"]

@@ -130,6 +130,14 @@ class BacklashMeshProblem:
             raise CaseError("backlash", self.backlash, "> 0 m, finite",
                             "zero or negative backlash is a jammed mesh: both flanks would be loaded at once")
         object.__setattr__(self, "backlash", backlash)
+        # the local clearance of slot s between the driving contact (x > e_s) and the back contact (x < −j − e'_s)
+        clearance = backlash + self.pair_deviation + self.back_pair_deviation
+        both = (stiffness > 0.0) & (back_stiffness > 0.0)
+        if np.any(both & (clearance <= 0.0)):
+            worst = float(np.min(np.where(both, clearance, np.inf)))
+            raise CaseError("backlash", backlash, f"> −(e_s + e'_s) for every pair (local clearance {worst:.3g} m)",
+                            "a pair whose deviations close the backlash would touch both flanks at once (jammed); "
+                            "a pitch-type error shifts the flanks together (e' = −e), thinning adds to both")
         damping = _checked("damping", self.damping, (n,), "one damping value per interval")
         if np.any(damping < 0.0):
             raise CaseError("damping", float(damping.min()), ">= 0 N·s/m", "negative damping injects energy")
