@@ -10,6 +10,7 @@ from __future__ import annotations
 import functools
 import math
 import tomllib
+import warnings
 import weakref
 from dataclasses import dataclass, field
 from importlib import resources
@@ -92,18 +93,25 @@ def cached_per_case(function):
     Derived components of a case (its temperature field, lubricant, X_te) are pure functions of the case and are
     asked for by several stages of one operating point; like the stiffness tables they are computed once per case.
     A Case holds lists and so is not hashable: results are keyed by identity and dropped with the case.
+    The warnings the first computation raised are recorded with the result and raised again on every later call,
+    so a cached component never swallows a warning the second time it is asked for.
     """
-    results: dict[int, tuple[weakref.ref, object]] = {}
+    results: dict[int, tuple[weakref.ref, object, tuple]] = {}
 
     @functools.wraps(function)
     def cached(case):
         key = id(case)
         entry = results.get(key)
-        if entry is not None and entry[0]() is case:
-            return entry[1]
-        value = function(case)
-        results[key] = (weakref.ref(case, lambda _, key=key: results.pop(key, None)), value)
-        return value
+        if entry is None or entry[0]() is not case:
+            with warnings.catch_warnings(record=True) as caught:
+                warnings.simplefilter("always")
+                value = function(case)
+            recorded = tuple((item.message, item.category) for item in caught)
+            entry = (weakref.ref(case, lambda _, key=key: results.pop(key, None)), value, recorded)
+            results[key] = entry
+        for message, category in entry[2]:
+            warnings.warn(message if isinstance(message, Warning) else str(message), category, stacklevel=2)
+        return entry[1]
 
     cached.cache_clear = results.clear
     return cached

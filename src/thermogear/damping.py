@@ -1,16 +1,19 @@
-"""Equivalent viscous damping of tooth friction (Luo & Li (2020) Eqs. 26–28; physics.md §1.5, §1.6, §8).
+"""Equivalent viscous damping of tooth friction (Luo & Li (2020) Eqs. 26–28; docs/damping.md).
 
 Chain: Coulomb friction F = μ·w of a tooth pair (Eq. 27, :mod:`thermogear.friction`) dissipates 4·F·B per cycle of
 harmonic motion of amplitude B; a viscous damper c dissipates π·c·ω·B². Equal energy gives c = 4F/(πωB) (Eq. 26).
 With the quasi-static amplitude B ≈ w/k (frequency ratio ≪ 1) the load cancels: c = 4·μ·k/(π·ω) (Eq. 28), ω the
 mesh circular frequency 2π·z1·n1/60 (the paper's constant 1.459 = 0.12·4·60/(π·2π) confirms it).
 
-Conventions (physics.md §1.6): per tooth pair, k is that pair's stiffness and μ uses that pair's share of the
+Conventions (docs/damping.md, units): per tooth pair, k is that pair's stiffness and μ uses that pair's share of the
 load; stiffness and damping are totals over the face width (N/m, N·s/m), the friction formula gets the load per
 unit width.
 
+The pair stiffness, load share and oil temperature of a case come from :class:`thermogear.mesh.model.MeshModel`;
+this module holds the relations only.
+
 Design choice — which k in Eq. 28 for the thermal model: the paper's c_r/c_e ratio is 1.677 (single region) and
-1.679 (double region), exactly (η(30 °C)/η(T_flank))^0.25 at T_flank ≈ 79.6 °C (physics.md §1.6): only the
+1.679 (double region), exactly (η(30 °C)/η(T_flank))^0.25 at T_flank ≈ 79.6 °C (docs/damping.md): only the
 viscosity changed between c_e and c_r, so the paper used the elastic pair stiffness k_e (and the k_e load share)
 in both. That is the default, ``[damping] stiffness = "elastic"``; ``"thermal"`` uses the thermal model's k_T
 for Eq. 28 and the load share of the thermal model (an option, not the paper).
@@ -34,16 +37,19 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Literal
+from typing import Literal
 
 import numpy as np
 
 from thermogear.errors import CaseError
 from thermogear.friction import friction_validity_warnings, mean_friction_coefficient
-from thermogear.lubricant import Lubricant, lubricant_from_case
 
-if TYPE_CHECKING:  # pragma: no cover
-    from thermogear.case import Case
+#: How the friction damping c = 4·μ·k/(π·ω_m) with μ = 0.12·X_L·(w_i·R_a/(η·v_Σ·ρ_red))^(1/4) (Eqs. 27–28) scales
+#: with the pinion speed n1 and the normal load w when the geometry, the oil temperature and the load shares stay
+#: as they are: v_Σ ∝ n1 and ω_m ∝ n1 give c ∝ n1^(−5/4); the pair's load w_i ∝ w gives c ∝ w^(1/4). Exact for the
+#: formula (it is a pure power law); the mesh model says when its inputs keep those conditions.
+FRICTION_DAMPING_SPEED_EXPONENT = -1.25
+FRICTION_DAMPING_LOAD_EXPONENT = 0.25
 
 Model = Literal["elastic", "thermal"]
 Rule = Literal["paper", "parallel"]
@@ -55,7 +61,8 @@ RULES = ("paper", "parallel")
 def coulomb_equivalent_damping(friction_force, circular_frequency, amplitude):
     """Viscous damping that dissipates per cycle what Coulomb friction does, c = 4F/(π·ω·B) [N·s/m].
 
-    Luo & Li (2020) Eq. 26; energy equivalence for harmonic motion x = B sin ωt (physics.md §8).
+    Luo & Li (2020) Eq. 26; energy equivalence for harmonic motion x = B sin ωt (Den Hartog's equivalent
+    viscous damping of Coulomb friction).
     friction_force F [N], circular_frequency ω [rad/s], amplitude B [m].
     """
     force = np.asarray(friction_force, dtype=float)
@@ -92,7 +99,7 @@ def friction_damping(pair_stiffness, friction_coefficient, mesh_circular_frequen
 
 
 def mesh_circular_frequency(pinion_teeth: int, pinion_speed_rpm: float) -> float:
-    """ω_m = 2π·z1·n1/60 [rad/s] (the ω of Luo & Li Eqs. 26, 28; physics.md §1.5)."""
+    """ω_m = 2π·z1·n1/60 [rad/s] (the ω of Luo & Li Eqs. 26, 28)."""
     if not pinion_speed_rpm > 0.0:
         raise CaseError("operating.speed_rpm", pinion_speed_rpm, "> 0",
                         "the friction formula is undefined at standstill; the dynamics at rest is static")
@@ -135,11 +142,24 @@ def contact_region_means(mesh_values, contact_count, weights=None) -> dict[str, 
     return result
 
 
-def load_shares(stiffness_at_positions, in_contact) -> np.ndarray:
-    """Share of the load of each pair, k_i / Σ k_j over the pairs in contact (axis 0) [–]."""
-    stiffness = np.where(in_contact, np.asarray(stiffness_at_positions, dtype=float), 0.0)
-    total = stiffness.sum(axis=0)
-    return np.divide(stiffness, total, out=np.zeros_like(stiffness), where=total > 0)
+def friction_pair_damping(pair_stiffness, load_share, total_unit_load, roughness, viscosity, sum_velocity,
+                          relative_radius, lubricant_factor, circular_frequency):
+    """Friction coefficient, equivalent viscous damping and unit load of tooth pairs (Luo & Li Eqs. 27–28).
+
+    μ of DIN 3990-4 with the pair's load per unit width (its share of ``total_unit_load`` w_Bt [N/m]), the
+    composite ``roughness`` R_a [m], ``viscosity`` η [Pa·s] at the contact, ``sum_velocity`` v_Σ [m/s] and
+    ``relative_radius`` ρ_red [m] at the contact, X_L ``lubricant_factor`` [–]; then c = 4·μ·k/(π·ω_m) with
+    the pair stiffness k [N/m] (total) and the mesh circular frequency ω_m [rad/s]. Arrays broadcast.
+    The formula's usual limits are checked on the pair's total unit load w_Bt (the standard's load) and warned
+    about once. Returns (μ [–], c [N·s/m], unit load of the pair [N/m]).
+    """
+    share = np.asarray(load_share, dtype=float)
+    unit_load = share * float(total_unit_load)
+    friction_validity_warnings(float(total_unit_load), sum_velocity)
+    friction = np.asarray(mean_friction_coefficient(unit_load, roughness, viscosity, sum_velocity, relative_radius,
+                                                    lubricant_factor, check_limits=False), dtype=float)
+    damping = np.asarray(friction_damping(pair_stiffness, friction, circular_frequency), dtype=float)
+    return friction, damping, unit_load
 
 
 # --------------------------------------------------------------------------------------------- component
@@ -164,207 +184,5 @@ class PairDamping:
     unit_load: np.ndarray
 
 
-def _check_model(model: str) -> None:
-    if model not in MODELS:
-        raise CaseError("model", model, " | ".join(MODELS), "unknown damping model")
-
-
-def _stiffness_function(case: "Case", model: str):
-    """Pair stiffness k(roll) [N/m] (total) used by Eq. 28 and the load share, per ``[damping] stiffness``."""
-    choice = getattr(case.damping, "stiffness", "elastic")
-    if model == "thermal" and choice == "thermal":
-        from thermogear.thermal.stiffness import thermal_pair_stiffness_at
-
-        return lambda roll: np.asarray(thermal_pair_stiffness_at(case, roll), dtype=float)
-    from thermogear.stiffness.table import pair_stiffness_at
-
-    return lambda roll: np.asarray(pair_stiffness_at(case.gear_pair, case.material, roll), dtype=float)
-
-
-def oil_temperature_c(case: "Case", gamma, model: str) -> np.ndarray:
-    """Oil temperature of the friction formula [°C]: the lubricant's reference temperature ("elastic") or the
-    local flank temperature of the temperature input, mean of pinion and wheel flank at the contact ("thermal")."""
-    gamma = np.asarray(gamma, dtype=float)
-    if model == "elastic":
-        return np.full(gamma.shape, float(case.lubricant.reference_temperature_c))
-    from thermogear.thermal.temperature import temperature_field_from_case
-
-    field = temperature_field_from_case(case)
-    return 0.5 * (np.asarray(field.pinion_flank_c(gamma), dtype=float)
-                  + np.asarray(field.wheel_flank_c(gamma), dtype=float))
-
-
-def pair_damping(case: "Case", roll, model: Model = "elastic", lubricant: Lubricant | None = None) -> PairDamping:
-    """Friction damping of the tooth pair at roll distance(s) ``roll`` [m] along the path A–E.
-
-    μ (Eq. 27) uses the local relative radius of curvature, the local sum of rolling speeds, the pair's share of
-    the normal load k_i/Σk over the pairs in contact at that mesh position (neighbours one base pitch apart), the
-    viscosity at the model's oil temperature and the case's roughness and X_L; c = 4μk/(πω_m) (Eq. 28).
-    """
-    _check_model(model)
-    pair = case.gear_pair
-    speed = case.operating_point.speed_rpm
-    omega_m = mesh_circular_frequency(pair.pinion.teeth, speed)
-    roll = np.asarray(roll, dtype=float)
-    points = pair.path_points
-    tolerance = 1e-9 * pair.base_pitch
-    if np.any((roll < points["A"] - tolerance) | (roll > points["E"] + tolerance)):
-        raise CaseError("roll", [float(roll.min()), float(roll.max())],
-                        f"[{points['A']:.6g}, {points['E']:.6g}] m (A to E)", "outside the path of contact")
-    oil = lubricant if lubricant is not None else lubricant_from_case(case)
-    stiffness_of = _stiffness_function(case, model)
-    # Pairs in contact at the same instant sit whole base pitches apart; row 0 is the pair itself.
-    offsets = np.array([0, -1, 1, -2, 2], dtype=float)[:, None] * pair.base_pitch
-    positions = roll.reshape(1, -1) + offsets
-    in_contact = (positions >= points["A"] - tolerance) & (positions <= points["E"] + tolerance)
-    stiffness = np.zeros(positions.shape)
-    stiffness[in_contact] = stiffness_of(np.clip(positions[in_contact], points["A"], points["E"]))
-    share = load_shares(stiffness, in_contact)[0].reshape(roll.shape)
-    own_stiffness = stiffness[0].reshape(roll.shape)
-    width = pair.face_width
-    total_unit_load = case.normal_load / width  # w_Bt of the standard [N/m]
-    unit_load = share * total_unit_load
-    gamma = np.asarray(pair.gamma(roll), dtype=float)
-    temperature = oil_temperature_c(case, gamma, model)
-    viscosity = np.asarray(oil.dynamic_viscosity(temperature), dtype=float)
-    rolling_1, rolling_2 = pair.rolling_speeds(roll, speed)
-    sum_velocity = np.asarray(rolling_1 + rolling_2, dtype=float)
-    factor = case.damping.lubricant_factor if case.damping.lubricant_factor is not None else oil.lubricant_factor
-    friction_validity_warnings(total_unit_load, sum_velocity)
-    friction = mean_friction_coefficient(unit_load, case.roughness_ra, viscosity, sum_velocity,
-                                         pair.relative_radius_of_curvature(roll), factor, check_limits=False)
-    damping = friction_damping(own_stiffness, friction, omega_m)
-    return PairDamping(model=model, roll=roll, gamma=gamma, friction_coefficient=np.asarray(friction),
-                       viscosity=viscosity, damping=np.asarray(damping), temperature_c=temperature,
-                       pair_stiffness=own_stiffness, load_share=np.asarray(share), unit_load=np.asarray(unit_load))
-
-
-def per_pair_damping_on_grid(case: "Case", grid, model: Model = "elastic") -> np.ndarray:
-    """Pair dampings (slots, n) [N·s/m] at a MeshGrid's roll positions, 0 where a slot is out of contact."""
-    roll = np.asarray(grid.roll, dtype=float)
-    contact = np.asarray(grid.in_contact, dtype=bool)
-    values = np.zeros(roll.shape)
-    if np.any(contact):
-        values[contact] = pair_damping(case, roll[contact], model).damping
-    return values
-
-
-def mesh_cycle_damping(case: "Case", grid, model: Model = "elastic", rule: Rule | None = None) -> np.ndarray:
-    """Mesh damping c(τ) [N·s/m] (total over the face width) on a MeshCycle grid, under the case's rule."""
-    _check_model(model)
-    rule = case.damping.rule if rule is None else rule
-    return mesh_damping(per_pair_damping_on_grid(case, grid, model), grid.in_contact, rule)
-
-
-# ---------------------------------------------------------------------------------------------- summary
-#: Luo & Li (2020) Sect. 3 mean dampings [N·s/m] (totals over the 25 mm face), for display beside luo2019.
-PAPER_MEAN_DAMPING = {"elastic": {"single": 3.41e3, "double": 2.40e3}, "thermal": {"single": 5.72e3, "double": 4.03e3}}
-
-
-@dataclass(frozen=True)
-class DampingSummary:
-    """Elastic and thermal friction damping of a case: per pair along the path and c(τ) over one mesh cycle.
-
-    ``path``: PairDamping per model on an even roll grid A–E; ``mesh``: c(τ) [N·s/m] per model on ``grid``
-    (MeshGrid); ``region_means``: time means of c(τ) over the single- and double-pair regions per model.
-    """
-
-    case_name: str
-    rule: str
-    stiffness: str
-    lubricant: Lubricant
-    path: dict
-    grid: object
-    mesh: dict
-    region_means: dict
-    pitch: dict  # PairDamping at C per model
-
-    def to_dict(self) -> dict:
-        """The JSON summary of ``thermogear damping``."""
-        oil, pitch = self.lubricant, self.pitch
-        flank_viscosity = float(np.mean(self.path["thermal"].viscosity))
-        result = {
-            "case": self.case_name, "rule": self.rule, "stiffness": self.stiffness,
-            "lubricant": {"name": oil.name, "base_oil": oil.base_oil, "lubricant_factor_oil": oil.lubricant_factor},
-            "friction_coefficient_pitch": {model: float(pitch[model].friction_coefficient[0]) for model in MODELS},
-            "damping_n_s_per_m": self.region_means,
-            "thermal_over_elastic": {region: self.region_means["thermal"][region]
-                                     / self.region_means["elastic"][region] for region in ("single", "double")},
-            "viscosity_mpa_s": {"oil_reference": float(pitch["elastic"].viscosity[0]) * 1e3,
-                                "flank_mean": flank_viscosity * 1e3},
-            "temperature_c": {"oil_reference": float(pitch["elastic"].temperature_c[0]),
-                              "flank_mean": float(np.mean(self.path["thermal"].temperature_c))},
-            "along_path": {"gamma": self.path["elastic"].gamma,
-                           "elastic_n_s_per_m": self.path["elastic"].damping,
-                           "thermal_n_s_per_m": self.path["thermal"].damping,
-                           "friction_elastic": self.path["elastic"].friction_coefficient,
-                           "friction_thermal": self.path["thermal"].friction_coefficient},
-        }
-        if self.case_name == "luo2019":
-            result["paper_n_s_per_m"] = PAPER_MEAN_DAMPING
-        return result
-
-
-def damping_summary(case: "Case", count: int = 720, path_points: int = 81, rule: Rule | None = None
-                    ) -> DampingSummary:
-    """Compute the elastic and thermal friction damping of a case (per pair and over the mesh cycle)."""
-    from thermogear.mesh_cycle import MeshCycle
-
-    rule = case.damping.rule if rule is None else rule
-    oil = lubricant_from_case(case)
-    pair = case.gear_pair
-    grid = MeshCycle(pair, case.operating_point.speed_rpm).grid(count)
-    roll = pair.roll_grid(path_points)
-    path, mesh, means, pitch = {}, {}, {}, {}
-    for model in MODELS:
-        path[model] = pair_damping(case, roll, model, lubricant=oil)
-        pitch[model] = pair_damping(case, np.array([pair.path_points["C"]]), model, lubricant=oil)
-        mesh[model] = mesh_damping(per_pair_damping_on_grid(case, grid, model), grid.in_contact, rule)
-        means[model] = contact_region_means(mesh[model], grid.contact_count, grid.steps)
-    return DampingSummary(case_name=case.name, rule=rule, stiffness=case.damping.stiffness, lubricant=oil,
-                          path=path, grid=grid, mesh=mesh, region_means=means, pitch=pitch)
-
-
-def plot_damping(summary: DampingSummary, periods: int = 3, axes=None):
-    """Luo & Li Figs. 7–8: per-pair damping along Γ and mesh damping c(τ) over a few mesh periods, elastic
-    and thermal. Returns the matplotlib figure."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    if axes is None:
-        figure, axes = plt.subplots(1, 2, figsize=(11, 4.2), constrained_layout=True)
-    else:
-        figure = axes[0].figure
-    styles = {"elastic": dict(color="tab:blue", label="elastic c_e (oil at reference temperature)"),
-              "thermal": dict(color="tab:red", label="thermal c_r (oil at flank temperature)")}
-    for model in MODELS:
-        axes[0].plot(summary.path[model].gamma, summary.path[model].damping, **styles[model])
-    axes[0].set_xlabel("contact position Γ [–]")
-    axes[0].set_ylabel("damping of one tooth pair [N·s/m]")
-    axes[0].set_title("per pair along the path")
-    grid = summary.grid
-    period = grid.nodes[-1]
-    for model in MODELS:
-        times = np.concatenate([grid.nodes[:-1] + j * period for j in range(periods)] + [[periods * period]])
-        values = np.tile(summary.mesh[model], periods)
-        axes[1].stairs(values, times * 1e3, baseline=None, color=styles[model]["color"], label=model)
-        if summary.case_name == "luo2019" and summary.rule == "paper":
-            for region in ("single", "double"):
-                axes[1].axhline(PAPER_MEAN_DAMPING[model][region], color=styles[model]["color"], lw=0.8, ls=":")
-    axes[1].set_xlabel("time τ [ms]")
-    axes[1].set_ylabel("mesh damping c(τ) [N·s/m]")
-    title = f"mesh cycle, rule '{summary.rule}'"
-    if summary.case_name == "luo2019" and summary.rule == "paper":
-        title += " (dotted: paper's means)"
-    axes[1].set_title(title)
-    axes[0].legend(loc="best", fontsize=8)
-    axes[1].legend(loc="best", fontsize=8)
-    figure.suptitle(f"Friction damping (Luo & Li Eqs. 26–28), case {summary.case_name}")
-    return figure
-
-
-__all__ = ["DampingSummary", "PAPER_MEAN_DAMPING", "damping_summary", "plot_damping", "MODELS", "RULES", "PairDamping", "contact_region_means", "coulomb_equivalent_damping",
-           "friction_damping", "load_shares", "mesh_circular_frequency", "mesh_cycle_damping", "mesh_damping",
-           "oil_temperature_c", "pair_damping", "per_pair_damping_on_grid"]
+__all__ = ["FRICTION_DAMPING_LOAD_EXPONENT", "FRICTION_DAMPING_SPEED_EXPONENT", "MODELS", "RULES", "PairDamping", "contact_region_means", "coulomb_equivalent_damping", "friction_damping",
+           "friction_pair_damping", "mesh_circular_frequency", "mesh_damping"]

@@ -2,7 +2,7 @@
 
 Time origin τ = 0 when a pair enters contact at A (Luo & Li Eq. 25). Pair slot j (j = 0 … slots − 1) is the
 pair that entered j mesh periods earlier; its roll distance from T1 is T1A + r_b1 ω1 (τ mod T_m) + j p_b and it
-is in contact while that is ≤ T1E (physics.md §2). Valid for any contact ratio ε_α > 1 (also ≥ 2): there are
+is in contact while that is ≤ T1E (involute geometry: docs/stiffness.md, path of contact). Valid for any contact ratio ε_α > 1 (also ≥ 2): there are
 ceil(ε_α) slots. Pairs in contact act in parallel and share the load in proportion to their stiffness.
 """
 
@@ -14,7 +14,6 @@ from dataclasses import dataclass
 import numpy as np
 
 from thermogear.geometry import GearPair
-from thermogear.materials import Material
 
 #: Uniform grid nodes closer than this fraction of the step to an inserted transition are dropped.
 _MERGE_FRACTION = 0.25
@@ -116,26 +115,39 @@ class MeshCycle:
         """Sum over the pairs in contact (parallel pairs): (slots, n) → (n,)."""
         return np.where(in_contact, per_pair, 0.0).sum(axis=0)
 
-    @staticmethod
-    def load_share(per_pair_stiffness, in_contact) -> np.ndarray:
-        """Load share of each pair k_i / Σ k_j (0 where not in contact): (slots, n) [–] (physics.md §2)."""
-        stiffness = np.where(in_contact, per_pair_stiffness, 0.0)
-        return stiffness / stiffness.sum(axis=0, keepdims=True)
 
+def load_shares(pair_stiffness, in_contact) -> np.ndarray:
+    """Share of the static load carried by each tooth pair, k_i / Σ_j k_j over the pairs in contact (axis 0) [–];
+    0 where a pair is out of contact or no pair is.
 
-def mesh_stiffness(gear_pair: GearPair, material: Material, speed_rpm: float,
-                   count: int = 1024) -> tuple[MeshGrid, np.ndarray, np.ndarray]:
-    """Elastic mesh stiffness over one mesh period, total over the face width [N/m].
-
-    Returns (grid, per-pair stiffness (slots, n) — 0 where a pair is out of contact —, mesh stiffness (n,)),
-    all at the grid midpoints. Pair stiffness from the cached PEM table (physics.md §3.4).
+    Pairs in contact act as springs in parallel between the same two base circles: with no deviation between
+    them each takes the load in proportion to its stiffness (ISO 6336-1 load sharing of an unmodified mesh;
+    Luo & Li (2020) Sect. 2.3). The one load-share function of thermogear: the damping, the paper's thermal model
+    (pair-share load basis), the dynamics and the report all use it.
     """
-    from thermogear.stiffness.table import pair_stiffness_at
+    stiffness = np.where(in_contact, np.asarray(pair_stiffness, dtype=float), 0.0)
+    total = stiffness.sum(axis=0, keepdims=True)
+    return np.divide(stiffness, total, out=np.zeros_like(stiffness), where=total > 0)
 
-    cycle = MeshCycle(gear_pair, speed_rpm)
-    grid = cycle.grid(count)
-    end = gear_pair.path_points["E"]
-    per_pair = np.zeros_like(grid.roll)
-    per_pair[grid.in_contact] = pair_stiffness_at(gear_pair, material,
-                                                  np.minimum(grid.roll[grid.in_contact], end))
-    return grid, per_pair, MeshCycle.total(per_pair, grid.in_contact)
+
+def simultaneous_pairs(roll, path_start: float, path_end: float, base_pitch: float,
+                       tolerance: float = 1e-12) -> tuple[np.ndarray, np.ndarray]:
+    """Roll distances [m] of the tooth pairs in mesh at the same instant as a pair at ``roll`` and whether each is
+    on the path [A, E]: arrays (2·reach + 1, *roll.shape), row 0 the pair itself, the others whole base pitches
+    ahead and behind (successive pairs are one base pitch apart along the line of action)."""
+    roll = np.asarray(roll, dtype=float)
+    reach = int(np.ceil((path_end - path_start) / base_pitch)) + 1
+    offsets = [0] + [j for step in range(1, reach + 1) for j in (-step, step)]
+    positions = roll[None, ...] + np.array(offsets, dtype=float).reshape((-1,) + (1,) * roll.ndim) * base_pitch
+    inside = (positions >= path_start - tolerance) & (positions <= path_end + tolerance)
+    return positions, inside
+
+
+def load_share_at(roll, stiffness_at, path_start: float, path_end: float, base_pitch: float) -> tuple[np.ndarray, np.ndarray]:
+    """(load share [–], own stiffness [N/m]) of the pair at roll distances ``roll`` [m] on [A, E] among the pairs
+    in mesh with it, by :func:`load_shares`; ``stiffness_at(roll) -> k`` [N/m] is the pair stiffness along the path."""
+    positions, inside = simultaneous_pairs(roll, path_start, path_end, base_pitch)
+    stiffness = np.zeros(positions.shape)
+    stiffness[inside] = np.asarray(stiffness_at(np.clip(positions[inside], path_start, path_end)), dtype=float)
+    return load_shares(stiffness, inside)[0], stiffness[0]
+

@@ -8,15 +8,26 @@ from dataclasses import dataclass
 
 @dataclass(frozen=True)
 class OperatingPoint:
-    """Pinion speed and torque. The pinion drives."""
+    """Pinion speed and torque. The pinion drives.
+
+    ``constant_power``: the load was given as a power, so at another speed the torque is P/ω1 (a speed sweep of
+    such a case keeps the power, not the torque); otherwise the torque stays as given.
+    """
 
     speed_rpm: float  # n1 [rpm]
     torque: float  # T1 [N m]
+    constant_power: bool = False
 
     @classmethod
     def from_power(cls, speed_rpm: float, power: float) -> "OperatingPoint":
         """From transmitted power P [W]: T1 = P / ω1."""
-        return cls(speed_rpm, power / cls.angular_speed_of(speed_rpm))
+        return cls(speed_rpm, power / cls.angular_speed_of(speed_rpm), constant_power=True)
+
+    def torque_at(self, speed_rpm: float) -> float:
+        """Pinion torque T1 [N m] at a pinion speed [rpm]: the given torque, or the given power over ω1."""
+        if self.constant_power and speed_rpm != self.speed_rpm:
+            return self.power / self.angular_speed_of(speed_rpm)
+        return self.torque
 
     @staticmethod
     def angular_speed_of(speed_rpm: float) -> float:

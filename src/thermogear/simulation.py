@@ -1,8 +1,9 @@
-"""The model chain of one operating point: case → mesh-cycle stiffness and damping → dynamics → response.
+"""The model chain of one operating point: case → mesh model → dynamics → response.
 
 ``Simulation(case, model="thermal")`` wires the stages of design.md for the thermal model of Luo & Li (2020)
 (k_T with c_r, Eq. 6) or the elastic one (k_e with c_e, Eq. 5). The elastic and thermal models are the same
-pipeline with different per-pair stiffness and damping; nothing here knows how either is computed.
+pipeline with different per-pair stiffness and damping; nothing here knows how either is computed: the
+:class:`~thermogear.mesh.model.MeshModel` gives the mesh period, a solver the response.
 """
 
 from __future__ import annotations
@@ -14,8 +15,11 @@ from typing import Literal
 
 import numpy as np
 
+import thermogear.fem.provider  # noqa: F401  (composition root: the FE model is the "fem" temperature and X_te source)
 from thermogear.case import Case
 from thermogear.errors import CaseError
+from thermogear.mesh.model import MeshModel
+from thermogear.mesh.state import MeshState
 
 Model = Literal["elastic", "thermal"]
 Method = Literal["periodic", "transient"]
@@ -45,69 +49,54 @@ class Simulation:
         if self.model not in MODELS:
             raise CaseError("model", self.model, " | ".join(MODELS), "unknown model")
 
-    # ------------------------------------------------------------------------------------ mesh cycle
+    # ------------------------------------------------------------------------------------ mesh model
+    @cached_property
+    def mesh_model(self) -> MeshModel:
+        """The mesh model of the case under this model: the one reader of the case for physics."""
+        return MeshModel(self.case, self.model)
+
     @property
     def speed_rpm(self) -> float:
-        return self.case.operating_point.speed_rpm
+        return self.mesh_model.speed_rpm
 
     @cached_property
-    def mesh_cycle(self):
-        from thermogear.mesh_cycle import MeshCycle
+    def state(self) -> MeshState:
+        """The mesh period at the case's operating point: k(τ), c(τ), deviations, load, mass."""
+        return self.mesh_model.state(points_per_period=self.points_per_period)
 
-        return MeshCycle(self.case.gear_pair, self.speed_rpm)
-
-    @cached_property
+    @property
     def grid(self):
         """The mesh-cycle grid (interval nodes with every contact transition, pair roll distances)."""
-        count = self.points_per_period or self.case.dynamics.points_per_period
-        return self.mesh_cycle.grid(count)
+        return self.state.grid
 
-    def _per_pair(self, evaluate) -> np.ndarray:
-        """Evaluate a per-pair function of roll distance on the pair slots in contact (0 elsewhere)."""
-        grid = self.grid
-        points = self.case.gear_pair.path_points
-        roll = np.clip(grid.roll, points["A"], points["E"])
-        values = np.zeros_like(roll)
-        values[grid.in_contact] = evaluate(roll[grid.in_contact])
-        return values
-
-    @cached_property
+    @property
     def pair_stiffness(self) -> np.ndarray:
         """Per-pair stiffness on the grid, (slots, n) [N/m], total over the face width."""
-        if self.model == "thermal":
-            from thermogear.thermal.stiffness import thermal_pair_stiffness_at
+        return self.state.pair_stiffness
 
-            return self._per_pair(lambda roll: thermal_pair_stiffness_at(self.case, roll))
-        from thermogear.stiffness.table import pair_stiffness_at
-
-        return self._per_pair(lambda roll: pair_stiffness_at(self.case.gear_pair, self.case.material, roll))
-
-    @cached_property
+    @property
     def mesh_stiffness(self) -> np.ndarray:
         """k(τ) on the grid intervals [N/m]: the pairs in contact in parallel."""
-        return self.pair_stiffness.sum(axis=0)
+        return self.state.mesh_stiffness
 
-    @cached_property
+    @property
     def mesh_damping(self) -> np.ndarray:
         """c(τ) on the grid intervals [N·s/m] under the case's damping rule."""
-        from thermogear.damping import mesh_cycle_damping
-
-        return np.asarray(mesh_cycle_damping(self.case, self.grid, self.model), dtype=float)
+        return self.state.mesh_damping
 
     @property
     def mesh_stiffness_mean(self) -> float:
         """Time mean of k(τ) over one mesh period [N/m]."""
-        durations = np.diff(self.grid.nodes)
-        return float(np.sum(self.mesh_stiffness * durations) / np.sum(durations))
+        return self.state.mean_mesh_stiffness
 
     @property
     def mesh_frequency_hz(self) -> float:
-        return self.case.gear_pair.mesh_frequency(self.speed_rpm)
+        return self.state.mesh_frequency_hz
 
     @property
     def natural_frequency_hz(self) -> float:
         """f_n = sqrt(mean k / me) / 2π [Hz]."""
-        return math.sqrt(self.mesh_stiffness_mean / self.case.equivalent_mass) / (2.0 * math.pi)
+        return math.sqrt(self.mesh_stiffness_mean / self.state.mass) / (2.0 * math.pi)
 
     @property
     def frequency_ratio(self) -> float:
@@ -117,14 +106,8 @@ class Simulation:
     # ------------------------------------------------------------------------------------- dynamics
     @cached_property
     def problem(self):
-        """The gear-agnostic dynamics problem me·ẍ + c(τ)ẋ + k(τ)x = w over one mesh period."""
-        from thermogear.dynamics.problem import MeshDynamicsProblem
-
-        grid = self.grid
-        return MeshDynamicsProblem(
-            mass=self.case.equivalent_mass, nodes=grid.nodes, stiffness=self.mesh_stiffness,
-            damping=self.mesh_damping, force=self.case.normal_load, contact_count=grid.contact_count,
-            pair_stiffness=self.pair_stiffness, face_width=self.case.gear_pair.face_width)
+        """The gear-agnostic dynamics problem me·ẍ + c(τ)ẋ + k(τ)(x − e(τ)) = w over one mesh period."""
+        return self.state.problem()
 
     def run(self, method: Method | None = None, include_damping_force: bool | None = None):
         """Solve the dynamics and return a :class:`~thermogear.dynamics.response.DynamicResponse`.

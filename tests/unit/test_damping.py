@@ -13,11 +13,17 @@ import warnings
 import numpy as np
 import pytest
 
-import thermogear.damping as damping_module
 from thermogear.damping import (contact_region_means, coulomb_equivalent_damping, friction_damping,
-                                load_shares, mesh_circular_frequency, mesh_damping, pair_damping)
+                                mesh_circular_frequency, mesh_damping)
 from thermogear.errors import CaseError, ExtrapolationWarning
 from thermogear.lubricant import lubricant_from_case
+from thermogear.mesh.model import MeshModel
+from thermogear.mesh_cycle import load_shares
+
+
+def pair_damping(case, roll, model):
+    """The pair damping of a case's mesh model at its operating point."""
+    return MeshModel(case, model).pair_damping_at(roll)
 
 
 def test_coulomb_equivalent_damping_hand_value():
@@ -76,11 +82,11 @@ def hump_stiffness(monkeypatch, luo2019):
     middle, half = 0.5 * (points["A"] + points["E"]), 0.5 * (points["E"] - points["A"])
     calls = []
 
-    def stiffness_function(case, model):
-        calls.append(model)
-        return lambda roll: 3.0e8 * (1.0 - 0.5 * ((np.asarray(roll) - middle) / half) ** 2)
+    def damping_stiffness_at(self, roll, normal_load=None):
+        calls.append(self.model)
+        return 3.0e8 * (1.0 - 0.5 * ((np.asarray(roll) - middle) / half) ** 2)
 
-    monkeypatch.setattr(damping_module, "_stiffness_function", stiffness_function)
+    monkeypatch.setattr(MeshModel, "damping_stiffness_at", damping_stiffness_at)
     return calls
 
 
@@ -95,7 +101,7 @@ def test_pair_alone_carries_the_whole_load_in_single_contact(luo2019, hump_stiff
     result = _quiet(pair_damping, luo2019, np.array([points["C"]]), "elastic")
     assert result.load_share == pytest.approx([1.0])
     assert result.temperature_c == pytest.approx([30.0])
-    # physics.md §7: μ = 0.0709 at the pitch point with oil at 30 °C (share 1, so independent of the stiffness)
+    # Luo & Li (2020) Sect. 3: μ = 0.0709 at the pitch point with oil at 30 °C (share 1, so independent of k)
     assert result.friction_coefficient[0] == pytest.approx(0.0709, abs=1e-4)
     omega = mesh_circular_frequency(27, 2000.0)
     assert result.damping[0] == pytest.approx(4 * result.friction_coefficient[0] * 3.0e8 * (

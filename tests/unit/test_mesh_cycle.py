@@ -10,7 +10,16 @@ import pytest
 
 from thermogear.geometry import Gear, GearPair
 from thermogear.materials import Material
-from thermogear.mesh_cycle import MeshCycle, mesh_stiffness
+from thermogear.mesh_cycle import MeshCycle, load_shares
+from thermogear.stiffness.table import pair_stiffness_at
+
+def mesh_stiffness(pair, material, speed_rpm, count):
+    """(grid, per-pair k (slots, n), k(τ)) of a bare gear pair from the primitives the mesh model uses."""
+    grid = MeshCycle(pair, speed_rpm).grid(count)
+    per_pair = np.zeros(grid.roll.shape)
+    end = pair.path_points["E"]
+    per_pair[grid.in_contact] = pair_stiffness_at(pair, material, np.minimum(grid.roll[grid.in_contact], end))
+    return grid, per_pair, MeshCycle.total(per_pair, grid.in_contact)
 
 
 def high_contact_ratio_pair() -> GearPair:
@@ -66,7 +75,7 @@ def test_total_and_load_share():
     per_pair = np.array([[1.0, 2.0, 3.0], [3.0, 2.0, 5.0]])
     in_contact = np.array([[True, True, True], [True, True, False]])
     np.testing.assert_allclose(MeshCycle.total(per_pair, in_contact), [4.0, 4.0, 3.0])
-    share = MeshCycle.load_share(per_pair, in_contact)
+    share = load_shares(per_pair, in_contact)
     np.testing.assert_allclose(share, [[0.25, 0.5, 1.0], [0.75, 0.5, 0.0]])
     np.testing.assert_allclose(share.sum(axis=0), 1.0)
 

@@ -9,6 +9,7 @@ import pytest
 
 from thermogear.case import load_case
 from thermogear.errors import CaseError
+from thermogear.mesh.model import MeshModel
 from thermogear.sweep.batch import MODEL_VARIABLES, POINT_VARIABLES, evaluate_block, evaluate_point, \
     evaluate_speeds, group_tables
 from thermogear.sweep.study import Study, _chunk_shape, parse_values, resolve_key
@@ -130,7 +131,7 @@ def test_batch_equals_one_simulation_per_point(luo, model):
     speeds = np.array([800.0, 2000.0, 6500.0, 11000.0])
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        fast = evaluate_speeds(group_tables(case, model), speeds)
+        fast = evaluate_speeds(group_tables(MeshModel(case, model)), speeds)
         for index, speed in enumerate(speeds):
             slow = evaluate_point(case.with_changes(**{"operating.speed_rpm": float(speed)}), model)
             for name in (*MODEL_VARIABLES, *POINT_VARIABLES):

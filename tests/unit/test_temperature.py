@@ -168,7 +168,7 @@ def test_fem_without_provider_is_a_clear_error(luo2019, monkeypatch):
     # an installation without the FE model: no provider registered, and importing the provider module adds none
     monkeypatch.setattr(temperature_module, "_PROVIDERS", {})
     monkeypatch.setitem(sys.modules, "thermogear.fem.provider", types.ModuleType("thermogear.fem.provider"))
-    with pytest.raises(ThermogearError, match="finite-element bulk-temperature model is not available"):
+    with pytest.raises(ThermogearError, match="finite-element bulk-temperature model is not registered"):
         temperature_field_from_case(luo2019.with_changes(temperature={"model": "fem"}))
 
 

@@ -11,8 +11,8 @@ import pytest
 from thermogear.errors import CaseError, ModelAssumptionWarning, ThermogearError
 from thermogear.thermal import calibration as calibration_module
 from thermogear.thermal.calibration import calibrate_x_te, resolve_x_te, x_te_for_drop
-from thermogear.thermal.stiffness import (pair_share_normal_load, thermal_pair_stiffness,
-                                          thermal_pair_stiffness_at, thermal_stiffness, thermal_stiffness_of_pair,
+from thermogear.thermal.case_stiffness import thermal_pair_stiffness_at, thermal_stiffness
+from thermogear.thermal.stiffness import (pair_share_normal_load, thermal_pair_stiffness, thermal_stiffness_of_pair,
                                           thermal_stiffness_of_tooth)
 from thermogear.thermal.summary import crossing_gammas
 
@@ -104,7 +104,7 @@ def test_pair_share_loads():
         return np.full(np.shape(roll), 2.0e8)
 
     roll = np.array([0.0, 0.8, 1.0])  # path [0, 1.6], base pitch 1: the middle point is single contact
-    load = pair_share_normal_load(100.0, roll, constant(roll), constant, 0.0, 1.6, 1.0)
+    load = pair_share_normal_load(100.0, roll, constant, 0.0, 1.6, 1.0)
     np.testing.assert_allclose(load, [50.0, 100.0, 50.0])
 
 
@@ -153,7 +153,7 @@ def test_resolve_fem_without_provider(luo2019, monkeypatch):
     # an installation without the FE model: no provider registered, and importing the provider module adds none
     monkeypatch.setattr(calibration_module, "_PROVIDERS", {})
     monkeypatch.setitem(sys.modules, "thermogear.fem.provider", types.ModuleType("thermogear.fem.provider"))
-    with pytest.raises(ThermogearError, match="not available"):
+    with pytest.raises(ThermogearError, match="not registered"):
         resolve_x_te(luo2019.with_changes(thermal={"x_te_source": "fem"}))
     calibration_module.register_x_te_provider("fem", lambda case: 0.4)
     assert resolve_x_te(luo2019.with_changes(thermal={"x_te_source": "fem"})) == (0.4, "fem")

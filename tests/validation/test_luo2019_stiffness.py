@@ -11,9 +11,17 @@ import numpy as np
 import pytest
 
 import thermogear.stiffness.potential_energy as potential_energy
-from thermogear.mesh_cycle import mesh_stiffness
+from thermogear.mesh_cycle import MeshCycle
 from thermogear.stiffness.iso6336 import iso6336_stiffness
 from thermogear.stiffness.table import pair_stiffness_at
+
+def mesh_stiffness(pair, material, speed_rpm, count):
+    """(grid, per-pair k (slots, n), k(τ)) of a bare gear pair from the primitives the mesh model uses."""
+    grid = MeshCycle(pair, speed_rpm).grid(count)
+    per_pair = np.zeros(grid.roll.shape)
+    end = pair.path_points["E"]
+    per_pair[grid.in_contact] = pair_stiffness_at(pair, material, np.minimum(grid.roll[grid.in_contact], end))
+    return grid, per_pair, MeshCycle.total(per_pair, grid.in_contact)
 
 
 @pytest.fixture(scope="module")

@@ -24,7 +24,8 @@ import pytest
 
 from thermogear.geometry import Gear, GearPair
 from thermogear.materials import Material
-from thermogear.mesh_cycle import MeshCycle, mesh_stiffness
+from thermogear.mesh_cycle import MeshCycle
+from thermogear.stiffness.table import pair_stiffness_at
 from thermogear.stiffness.iso6336 import iso6336_stiffness
 from thermogear.stiffness.potential_energy import pair_compliance
 
@@ -35,6 +36,14 @@ N_PER_MM_UM = 1e9
 # h_f = r_f / r_int ≈ 2.2–2.4, inside Sainsot's fitted range. (teeth 1, teeth 2, module [mm], x1, x2)
 PAIRS = [(20, 40, 3.0, 0.0, 0.0), (25, 50, 4.0, 0.0, 0.0), (30, 30, 3.0, 0.0, 0.0), (40, 80, 2.0, 0.0, 0.0),
          (18, 36, 3.0, 0.2, 0.1), (27, 35, 3.0, 0.0, 0.0), (50, 50, 2.0, 0.0, 0.0), (60, 90, 2.0, 0.0, 0.0)]
+
+def mesh_stiffness(pair, material, speed_rpm, count):
+    """(grid, per-pair k (slots, n), k(τ)) of a bare gear pair from the primitives the mesh model uses."""
+    grid = MeshCycle(pair, speed_rpm).grid(count)
+    per_pair = np.zeros(grid.roll.shape)
+    end = pair.path_points["E"]
+    per_pair[grid.in_contact] = pair_stiffness_at(pair, material, np.minimum(grid.roll[grid.in_contact], end))
+    return grid, per_pair, MeshCycle.total(per_pair, grid.in_contact)
 
 
 def make_pair(teeth_1, teeth_2, module_mm, shift_1, shift_2, width=0.02) -> GearPair:

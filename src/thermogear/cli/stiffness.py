@@ -14,8 +14,10 @@ from rich.table import Table
 
 from thermogear.case import Case, load_case
 from thermogear.cli.app import app, console, error_console, print_json
+from thermogear.cli.console import print_warning
+from thermogear.cli.tables import dict_tables
 from thermogear.errors import ExtrapolationWarning, ThermogearError
-from thermogear.mesh_cycle import mesh_stiffness
+from thermogear.mesh.model import MeshModel
 from thermogear.stiffness.fillet_foundation import gear_sainsot_messages
 from thermogear.stiffness.iso6336 import N_PER_MM_UM, iso6336_stiffness
 from thermogear.stiffness.table import pair_compliance_table, pair_stiffness_at, tooth_compliance_at
@@ -39,7 +41,8 @@ def stiffness_summary(case: Case) -> tuple[dict, list[str]]:
         pair_k = pair_stiffness_at(pair, material, rolls)
         delta_1, delta_2 = tooth_compliance_at(pair, material, rolls)
         table = pair_compliance_table(pair, material)
-        grid, _, mesh_k = mesh_stiffness(pair, material, case.operating_point.speed_rpm, MESH_GRID_COUNT)
+        state = MeshModel(case, "elastic").state(points_per_period=MESH_GRID_COUNT)
+        grid, mesh_k = state.grid, state.mesh_stiffness
         iso = iso6336_stiffness(pair, material, case.operating_point)
     messages += [str(w.message) for w in caught
                  if issubclass(w.category, ExtrapolationWarning) and "Sainsot" not in str(w.message)]
@@ -52,7 +55,7 @@ def stiffness_summary(case: Case) -> tuple[dict, list[str]]:
         "operating_pressure_angle_deg": float(np.degrees(pair.operating_pressure_angle)),
         "face_width_mm": width * 1e3,
         "base_pitch_mm": pair.base_pitch * 1e3,
-        "mesh_period_s": pair.mesh_period(case.operating_point.speed_rpm),
+        "mesh_period_s": state.period,
         "path_mm": {name: float(points[name] * 1e3) for name in POINTS},
         "gamma": {name: float(value) for name, value in zip(POINTS, gamma)},
         "pair_stiffness_n_per_mm_um": {name: float(k * per_width) for name, k in zip(POINTS, pair_k)},
@@ -121,7 +124,8 @@ def plot_stiffness(case: Case, ax=None):
     ax[1].axhline(per_width / table.hertz, color="0.5", ls="--", label="Hertz")
     ax[1].set(xlabel="Γ", ylabel="stiffness [N/(mm·μm)]", title="Single-tooth stiffness", yscale="log")
     ax[1].legend()
-    grid, per_pair, total = mesh_stiffness(pair, material, case.operating_point.speed_rpm, MESH_GRID_COUNT)
+    state = MeshModel(case, "elastic").state(points_per_period=MESH_GRID_COUNT)
+    grid, per_pair, total = state.grid, state.pair_stiffness, state.mesh_stiffness
     period = grid.nodes[-1]
     ax[2].plot(grid.midpoints / period, total * per_width, color="k", label="mesh")
     for slot in range(per_pair.shape[0]):
@@ -175,7 +179,7 @@ def stiffness(
         summary["thermal"] = thermal_module.thermal_stiffness_summary(loaded)
     if plot is not None:
         if thermal_module is not None:
-            thermal_module.plot_thermal_stiffness(loaded, plot)
+            importlib.import_module("thermogear.thermal.plots").plot_thermal_stiffness(loaded, plot)
         else:
             import matplotlib.pyplot as plt
 

@@ -136,18 +136,18 @@ class FlankHeatInput:
 
 def flank_heat_input(case: "Case", which: str, settings: FemSection | None = None, count: int = 201) -> FlankHeatInput:
     """q̄ along the flank of ``which`` gear (module docstring)."""
-    from thermogear.damping import pair_damping  # noqa: PLC0415
     from thermogear.friction import mean_friction_coefficient  # noqa: PLC0415
-    from thermogear.lubricant import lubricant_from_case  # noqa: PLC0415
+    from thermogear.mesh.model import MeshModel  # noqa: PLC0415
 
     settings = settings or fem_settings(case)
-    pair = case.gear_pair
+    mesh = MeshModel(case, "elastic")
+    pair = mesh.gear_pair
     roll = pair.roll_grid(count)
-    speed = case.operating_point.speed_rpm
+    speed = mesh.speed_rpm
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ExtrapolationWarning)  # the damping model reports the friction limits
-        shares = pair_damping(case, roll, "elastic")
-        oil = lubricant_from_case(case)
+        shares = mesh.pair_damping_at(roll)
+        oil = mesh.lubricant
         viscosity = float(oil.dynamic_viscosity(case.lubricant.operating_temperature_c, warn=False))
     rolling_1, rolling_2 = pair.rolling_speeds(roll, speed)
     factor = case.damping.lubricant_factor if case.damping.lubricant_factor is not None else oil.lubricant_factor

@@ -127,7 +127,7 @@ def evaluate_case(case, method: str = "periodic", models: tuple[str, ...] = MODE
     step("damping")
 
     def damping():
-        from thermogear.damping import damping_summary
+        from thermogear.mesh.damping_summary import damping_summary
 
         evaluation.damping = damping_summary(case)
         cite("den_hartog1931", "iso_tr13989_1", "astm_d341")
@@ -205,25 +205,14 @@ def _phase_distance(time: float, moment: float, period: float) -> float:
 
 
 def _pair_share(case, model: str) -> dict[str, float]:
-    """Steady load share of a pair at A, B, D, E (its partner one base pitch away) for one model."""
-    pair = case.gear_pair
-    points = pair.path_points
-    pitch = pair.base_pitch
-    if model == "thermal":
-        from thermogear.thermal.stiffness import thermal_pair_stiffness_at
+    """Steady load share of a pair at A, B, D, E for one model, from its mesh model."""
+    from thermogear.mesh.model import MeshModel
+    from thermogear.mesh_cycle import load_share_at
 
-        def stiffness(roll):
-            return np.asarray(thermal_pair_stiffness_at(case, np.asarray(roll, float)), float)
-    else:
-        from thermogear.stiffness.table import pair_stiffness_at
-
-        def stiffness(roll):
-            return np.asarray(pair_stiffness_at(pair, case.material, np.asarray(roll, float)), float)
+    mesh = MeshModel(case, model)
+    points = mesh.gear_pair.path_points
     own = np.array([points["A"], points["B"], points["D"], points["E"]])
-    partner = np.array([points["A"] + pitch, points["E"], points["A"], points["E"] - pitch])
-    partner = np.clip(partner, points["A"], points["E"])
-    k_own, k_partner = stiffness(own), stiffness(partner)
-    share = k_own / (k_own + k_partner)
+    share, _ = load_share_at(own, mesh.pair_stiffness_at, points["A"], points["E"], mesh.gear_pair.base_pitch)
     return dict(zip("ABDE", (float(v) for v in share)))
 
 

@@ -123,7 +123,7 @@ def fig6(evaluation):
 
 def _damping_figure(evaluation, model: str):
     plt = _pyplot()
-    from thermogear.damping import PAPER_MEAN_DAMPING
+    from thermogear.mesh.damping_summary import PAPER_MEAN_DAMPING
 
     summary = evaluation.damping
     figure, (left, right) = plt.subplots(1, 2, figsize=(11, 4.0), constrained_layout=True)

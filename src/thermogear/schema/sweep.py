@@ -20,6 +20,7 @@ from typing import Annotated, Literal
 from pydantic import Field, field_validator
 
 from thermogear.schema.base import Section
+from thermogear.schema.values import parse_values
 
 
 class SweepSection(Section):
@@ -34,8 +35,6 @@ class SweepSection(Section):
     @field_validator("vary")
     @classmethod
     def _values_parse(cls, vary: dict) -> dict:
-        from thermogear.sweep.study import parse_values
-
         for name, spec in vary.items():
             try:
                 parse_values(spec, name=f"vary.{name}")

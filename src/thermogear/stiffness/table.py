@@ -7,6 +7,7 @@ keys on them directly. Cached arrays are read-only.
 
 from __future__ import annotations
 
+import warnings
 from functools import lru_cache
 
 import numpy as np
@@ -33,20 +34,39 @@ def _read_only(compliance: PairCompliance) -> PairCompliance:
 
 
 @lru_cache(maxsize=64)
+def _table_with_warnings(gear_pair: GearPair, material: Material, count: int) -> tuple[PairCompliance, tuple]:
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        table = _read_only(pair_compliance(gear_pair, material, gear_pair.roll_grid(count)))
+    return table, tuple((item.message, item.category) for item in caught)
+
+
 def pair_compliance_table(gear_pair: GearPair, material: Material, count: int = TABLE_POINT_COUNT) -> PairCompliance:
     """Pair compliance on ``count`` evenly spaced roll distances from A to E (inclusive), totals over the
-    face width [m/N]. Cached; the arrays are read-only."""
+    face width [m/N]. Cached; the arrays are read-only. The warnings of the first computation (e.g. the
+    fillet-foundation fit extrapolated) are raised again on every call, so the cache never swallows them."""
     if count < 4:
         raise ValueError("pair_compliance_table: count must be at least 4")
-    return _read_only(pair_compliance(gear_pair, material, gear_pair.roll_grid(count)))
+    table, recorded = _table_with_warnings(gear_pair, material, count)
+    for message, category in recorded:
+        warnings.warn(message, category, stacklevel=2)
+    return table
 
 
 @lru_cache(maxsize=64)
-def _splines(gear_pair: GearPair, material: Material) -> dict[str, CubicSpline]:
-    table = pair_compliance_table(gear_pair, material)
+def _spline_set(gear_pair: GearPair, material: Material) -> tuple[dict[str, CubicSpline], tuple]:
+    table, recorded = _table_with_warnings(gear_pair, material, TABLE_POINT_COUNT)
     return {"stiffness": CubicSpline(table.roll, table.stiffness),
             "pinion": CubicSpline(table.roll, table.pinion_total),
-            "wheel": CubicSpline(table.roll, table.wheel_total)}
+            "wheel": CubicSpline(table.roll, table.wheel_total)}, recorded
+
+
+def _splines(gear_pair: GearPair, material: Material) -> dict[str, CubicSpline]:
+    """The cached splines of a pair's table; re-raises the warnings of the table's computation."""
+    splines, recorded = _spline_set(gear_pair, material)
+    for message, category in recorded:
+        warnings.warn(message, category, stacklevel=3)
+    return splines
 
 
 def _checked_roll(gear_pair: GearPair, roll) -> np.ndarray:
@@ -75,8 +95,8 @@ def tooth_compliance_at(gear_pair: GearPair, material: Material, roll) -> tuple[
 
 def clear_cache() -> None:
     """Drop every cached table (tests, memory)."""
-    pair_compliance_table.cache_clear()
-    _splines.cache_clear()
+    _table_with_warnings.cache_clear()
+    _spline_set.cache_clear()
 
 
 __all__ = ["TABLE_POINT_COUNT", "PairCompliance", "ToothCompliance", "clear_cache", "pair_compliance_table",

@@ -19,8 +19,9 @@ import numpy as np
 
 from thermogear.case import cached_per_case
 from thermogear.errors import CaseError, ThermogearError
-from thermogear.thermal.stiffness import (_elastic_modules, check_x_te, expansion_for_case,
-                                          normal_load_for_case)
+from thermogear.stiffness.potential_energy import pair_compliance
+from thermogear.thermal.case_inputs import expansion_for_case, normal_load_for_case
+from thermogear.thermal.stiffness import check_x_te
 from thermogear.thermal.temperature import TemperatureField, temperature_field_from_case
 
 if TYPE_CHECKING:
@@ -70,9 +71,10 @@ class Calibration:
 
 
 def calibrate_x_te(case: "Case", drop_percent: float | None = None, point: str | None = None,
-                   load_basis: str | None = None, temperature: TemperatureField | None = None) -> Calibration:
-    """Solve for the X_te that gives ``drop_percent`` at path point ``point`` (A–E) for a case
-    (defaults from ``[thermal]``)."""
+                   load_basis: str | None = None, temperature: TemperatureField | None = None,
+                   normal_load: float | None = None) -> Calibration:
+    """Solve for the X_te that gives ``drop_percent`` at path point ``point`` (A–E) for a case under the external
+    normal load ``normal_load`` [N] (defaults from ``[thermal]`` and the case's operating point)."""
     section = case.thermal
     drop_percent = section.calibration_drop_percent if drop_percent is None else drop_percent
     if drop_percent is None:
@@ -83,33 +85,35 @@ def calibrate_x_te(case: "Case", drop_percent: float | None = None, point: str |
     if point not in points:
         raise CaseError("thermal.calibration_point", point, "one of A, B, C, D, E", "unknown path point")
     basis = section.load_basis if load_basis is None else load_basis
-    pair_compliance, _ = _elastic_modules()
     roll = np.array([points[point]])
     elastic = pair_compliance(case.gear_pair, case.material, roll)
     stiffness = np.asarray(elastic.stiffness, dtype=float)
     expansion_pinion, expansion_wheel = expansion_for_case(case, roll, temperature)
-    load = normal_load_for_case(case, roll, basis, elastic_stiffness=stiffness)
+    load = normal_load_for_case(case, roll, basis, external_load=normal_load)
     x_te = float(np.ravel(x_te_for_drop(drop_percent, load, stiffness, expansion_pinion + expansion_wheel))[0])
     return Calibration(x_te=x_te, point=point, gamma=float(case.gear_pair.gamma(points[point])),
                        drop_percent=float(drop_percent), load_basis=basis)
 
 
-def resolve_x_te(case: "Case", load_basis: str | None = None,
-                 temperature: TemperatureField | None = None) -> tuple[float, str]:
+def resolve_x_te(case: "Case", load_basis: str | None = None, temperature: TemperatureField | None = None,
+                 normal_load: float | None = None) -> tuple[float, str]:
     """(X_te, source label) from ``[thermal]``: ``"given"``, ``"calibrated: X_te=… gives … % drop at …"`` or
     ``"fem"``. Raises CaseError for missing or contradictory keys, ThermogearError when the FE model is absent.
-    With the case's own settings (no option given) the answer is computed once per case."""
-    if load_basis is None and temperature is None:
+    A calibration is solved at ``normal_load`` [N] (default: the case's), so a case asked for another load keeps
+    its calibration target, exactly as the same case file at that load would. With the case's own settings (no
+    option given) the answer is computed once per case."""
+    if load_basis is None and temperature is None and (normal_load is None or normal_load == case.normal_load):
         return _resolve_x_te_of_case(case)
-    return _resolve_x_te(case, load_basis, temperature)
+    return _resolve_x_te(case, load_basis, temperature, normal_load)
 
 
 @cached_per_case
 def _resolve_x_te_of_case(case: "Case") -> tuple[float, str]:
-    return _resolve_x_te(case, None, None)
+    return _resolve_x_te(case, None, None, None)
 
 
-def _resolve_x_te(case: "Case", load_basis: str | None, temperature: TemperatureField | None) -> tuple[float, str]:
+def _resolve_x_te(case: "Case", load_basis: str | None, temperature: TemperatureField | None,
+                  normal_load: float | None) -> tuple[float, str]:
     section = case.thermal
     if section.x_te_source == "given":
         if section.x_te is None:
@@ -121,17 +125,13 @@ def _resolve_x_te(case: "Case", load_basis: str | None, temperature: Temperature
             raise CaseError("thermal.x_te", section.x_te, "absent with x_te_source = 'calibrated'",
                             "X_te is either given or calibrated; remove one of them")
         temperature = temperature_field_from_case(case) if temperature is None else temperature
-        calibration = calibrate_x_te(case, load_basis=load_basis, temperature=temperature)
+        calibration = calibrate_x_te(case, load_basis=load_basis, temperature=temperature, normal_load=normal_load)
         check_x_te(calibration.x_te)
         return calibration.x_te, calibration.label
     provider = _PROVIDERS.get(section.x_te_source)
-    if provider is None and section.x_te_source == "fem":
-        import thermogear.fem.provider  # noqa: F401  (registers thermogear's own FE provider on import)
-
-        provider = _PROVIDERS.get(section.x_te_source)
     if provider is None:
         raise ThermogearError(f"thermal.x_te_source = '{section.x_te_source}': the finite-element thermo-elastic "
-                              "analysis is not available in this installation (no provider registered); use "
+                              "analysis is not registered (importing thermogear.simulation or thermogear.fem.provider registers it); use "
                               "'given' or 'calibrated'")
     value = float(provider(case))
     check_x_te(value)

@@ -11,9 +11,10 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 
+from thermogear.thermal.summary import ThermalCurves, thermal_curves
+
 if TYPE_CHECKING:
     from thermogear.case import Case
-    from thermogear.thermal.summary import ThermalCurves
 
 #: m/N total → mm·μm/N per unit face width (δ·b)
 _COMPLIANCE_SCALE = 1e9
@@ -23,9 +24,6 @@ def plot_thermal_curves(curves: "ThermalCurves", case: "Case", axes=None):
     """Four panels: (a) k_e and k_T; (b) δ_e and δ_T; (c) driving tooth δ_e1 and δ_T1; (d) driven tooth δ_e2
     and δ_T2, along Γ with the points A–E marked. ``axes``: four matplotlib axes, or None for a new figure.
     Returns the figure."""
-    import matplotlib  # noqa: PLC0415
-
-    matplotlib.use("Agg")
     import matplotlib.pyplot as plt  # noqa: PLC0415
 
     curve, points = curves.curve, curves.points
@@ -86,3 +84,10 @@ def save_figure_atomically(figure, path) -> None:
         raise
     finally:
         plt.close(figure)
+
+
+def plot_thermal_stiffness(case: "Case", path) -> None:
+    """Write the Fig. 4 reproduction (k_e, k_T, δ_e, δ_T, δ_e1, δ_T1, δ_e2, δ_T2 along Γ) to ``path``
+    atomically (format from the suffix)."""
+    figure = plot_thermal_curves(thermal_curves(case), case)
+    save_figure_atomically(figure, path)

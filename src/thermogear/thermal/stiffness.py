@@ -1,6 +1,7 @@
-"""Meshing thermal stiffness of a tooth pair and of single teeth (Luo & Li 2020 Eqs. 13–23, physics.md §1.3).
+"""Meshing thermal stiffness of a tooth pair and of single teeth (Luo & Li 2020 Eqs. 13–23).
 
-Pure functions first (one equation each), then :class:`ThermalStiffness` and the case-level entry points.
+Pure functions (one equation each) and :class:`ThermalStiffness`; a case's k_T is assembled in
+:mod:`thermogear.thermal.case_stiffness`.
 
 Units: thermogear works in totals over the face width b (stiffness N/m, compliance m/N, load N); the paper
 writes everything per unit face width. Every relation here is homogeneous in b: with k = b·k′ and F_n = b·F_n′,
@@ -16,17 +17,12 @@ from __future__ import annotations
 
 import warnings
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import numpy as np
 
-from thermogear.case import cached_per_case
 from thermogear.errors import CaseError, ModelAssumptionWarning, ModelLimitError
-from thermogear.thermal.expansion import pair_flank_expansion
-from thermogear.thermal.temperature import TemperatureField, temperature_field_from_case
-
-if TYPE_CHECKING:
-    from thermogear.case import Case
+from thermogear.mesh_cycle import load_share_at
 
 #: Tolerance on roll distances when deciding that a neighbouring pair is inside [A, E] [m].
 CONTACT_TOLERANCE = 1e-12
@@ -165,25 +161,13 @@ def thermal_pair_stiffness(elastic_compliance_1, elastic_compliance_2, expansion
         equivalent_thermal_load=equivalent_thermal_load(1.0 / total, expansion_1, expansion_2))
 
 
-def pair_share_normal_load(external_load, roll, own_stiffness, stiffness_at, path_start, path_end, base_pitch):
+def pair_share_normal_load(external_load, roll, stiffness_at, path_start, path_end, base_pitch):
     """Normal load F_n [N] of the pair at roll distance ``roll`` [m] when the pairs in contact share the external
     load ``external_load`` [N] in proportion to their elastic stiffness (pairs in parallel, equal deflection):
-    F_n = w·k_e(roll)/Σ_j k_e(roll + j·p_b), over the pairs j with roll + j·p_b in [A, E].
-
-    ``own_stiffness`` k_e(roll) [N/m]; ``stiffness_at(roll) -> k_e`` for the neighbouring pairs.
-    """
-    roll = np.asarray(roll, dtype=float)
-    own = np.asarray(own_stiffness, dtype=float)
-    total = own.copy()
-    reach = int(np.ceil((path_end - path_start) / base_pitch)) + 1
-    for offset in [j for j in range(-reach, reach + 1) if j != 0]:
-        other = roll + offset * base_pitch
-        inside = (other >= path_start - CONTACT_TOLERANCE) & (other <= path_end + CONTACT_TOLERANCE)
-        if np.any(inside):
-            stiffness = np.zeros_like(total)
-            stiffness[inside] = np.asarray(stiffness_at(np.clip(other[inside], path_start, path_end)), float)
-            total = total + stiffness
-    return external_load * own / total
+    F_n = w·k_e(roll)/Σ_j k_e(roll + j·p_b), over the pairs j with roll + j·p_b in [A, E]
+    (:func:`thermogear.mesh_cycle.load_share_at`). ``stiffness_at(roll) -> k_e`` [N/m] along the path."""
+    share, _ = load_share_at(roll, stiffness_at, path_start, path_end, base_pitch)
+    return external_load * share
 
 
 # --------------------------------------------------------------------------------------------- component
@@ -204,7 +188,7 @@ class ThermalStiffness:
     x_te_source: str
     load_basis: str
     normal_load: np.ndarray  # [N]
-    temperature: TemperatureField | None = None
+    temperature: Any = None  # TemperatureField the expansions came from
     result: ThermalPairStiffness = field(init=False, repr=False)
 
     def __post_init__(self) -> None:
@@ -255,148 +239,3 @@ class ThermalStiffness:
     def wheel_compliance_change_percent(self) -> np.ndarray:
         """(δ_T2 − δ2)/δ2·100 [%]."""
         return 100.0 * (self.wheel_compliance / self.result.elastic_wheel_compliance - 1.0)
-
-
-# ------------------------------------------------------------------------------------------- case wiring
-def _elastic_modules():
-    from thermogear.stiffness.potential_energy import pair_compliance
-    from thermogear.stiffness.table import pair_stiffness_at
-    return pair_compliance, pair_stiffness_at
-
-
-def expansion_for_case(case: "Case", roll, temperature: TemperatureField | None = None):
-    """(Δ_t1, Δ_t2) [m] of a case's pair at roll distances T1K [m] from its temperature field (Eqs. 8–12)."""
-    temperature = temperature_field_from_case(case) if temperature is None else temperature
-    pair = case.gear_pair
-    gamma = pair.gamma(roll)
-    return pair_flank_expansion(
-        pair, roll, temperature.rise(temperature.pinion_flank_c(gamma)),
-        temperature.rise(temperature.wheel_flank_c(gamma)), case.material.thermal_expansion,
-        temperature.rise(temperature.pinion_base_c), temperature.rise(temperature.pinion_bore_c),
-        temperature.rise(temperature.wheel_base_c), temperature.rise(temperature.wheel_bore_c),
-        case.thermal.expansion_model)
-
-
-def normal_load_for_case(case: "Case", roll, load_basis: str | None = None, elastic_stiffness=None) -> np.ndarray:
-    """F_n of Eqs. 13–18 at roll distances [m]: the external load or the pair's share (see module docstring)."""
-    basis = case.thermal.load_basis if load_basis is None else load_basis
-    roll = np.atleast_1d(np.asarray(roll, dtype=float))
-    external = case.normal_load
-    if basis == "external":
-        return np.full(roll.shape, external)
-    if basis != "pair_share":
-        raise CaseError("thermal.load_basis", basis, "'external' or 'pair_share'", "unknown load basis")
-    pair_compliance, pair_stiffness_at = _elastic_modules()
-    pair = case.gear_pair
-    if elastic_stiffness is None:
-        elastic_stiffness = pair_stiffness_at(pair, case.material, roll)
-    points = pair.path_points
-    return pair_share_normal_load(external, roll, elastic_stiffness,
-                                  lambda other: pair_stiffness_at(pair, case.material, other),
-                                  points["A"], points["E"], pair.base_pitch)
-
-
-def thermal_stiffness(case: "Case", roll, x_te: float | None = None, load_basis: str | None = None,
-                      temperature: TemperatureField | None = None) -> ThermalStiffness:
-    """Thermal stiffness of a case's tooth pair at roll distances T1K [m] (Luo & Li Eqs. 8–23).
-
-    X_te is resolved from the case (given / calibrated / fem) unless ``x_te`` is passed; ``load_basis``
-    overrides ``[thermal].load_basis``.
-    """
-    from thermogear.thermal.calibration import resolve_x_te  # noqa: PLC0415 (calibration imports this module)
-
-    pair_compliance, _ = _elastic_modules()
-    roll = np.atleast_1d(np.asarray(roll, dtype=float))
-    basis = case.thermal.load_basis if load_basis is None else load_basis
-    temperature = temperature_field_from_case(case) if temperature is None else temperature
-    if x_te is None:
-        x_te, source = resolve_x_te(case, load_basis=basis, temperature=temperature)
-    else:
-        check_x_te(x_te)
-        source = "given (argument)"
-    elastic = pair_compliance(case.gear_pair, case.material, roll)
-    expansion_pinion, expansion_wheel = expansion_for_case(case, roll, temperature)
-    load = normal_load_for_case(case, roll, basis, elastic_stiffness=np.asarray(elastic.stiffness, float))
-    return ThermalStiffness(roll=roll, gamma=np.asarray(case.gear_pair.gamma(roll)), elastic=elastic,
-                            expansion_pinion=np.asarray(expansion_pinion), expansion_wheel=np.asarray(expansion_wheel),
-                            x_te=float(x_te), x_te_source=source, load_basis=basis, normal_load=load,
-                            temperature=temperature)
-
-
-def thermal_pair_stiffness_at(case: "Case", roll, x_te: float | None = None) -> np.ndarray:
-    """k_T [N/m] (total over the face width) of one tooth pair at roll distances T1K [m]: what the dynamics use,
-    summed over the pairs in contact by the mesh cycle (pairs in parallel). Zero outside the path [A, E].
-
-    With the case's own X_te and the external load (F_n the same at every position), k_T is a smooth function of
-    the roll distance: it is tabulated once per case on the roll grid of the cached PEM table and interpolated by
-    a cubic spline, like k_e (``stiffness.table``), so every operating point and sweep reuses it. With the pair's
-    share of the load (which jumps at B and D) or an explicit ``x_te`` it is evaluated directly.
-    """
-    roll = np.asarray(roll, dtype=float)
-    pair = case.gear_pair
-    points = pair.path_points
-    inside = (roll >= points["A"] - CONTACT_TOLERANCE) & (roll <= points["E"] + CONTACT_TOLERANCE)
-    result = np.zeros(roll.shape)
-    if np.any(inside):
-        inner = np.clip(roll[inside], points["A"], points["E"])
-        if x_te is None and case.thermal.load_basis == "external":
-            result[inside] = _thermal_stiffness_spline(case)(inner)
-        else:
-            result[inside] = _thermal_pair_stiffness_direct(case, inner, x_te)
-    return result if result.ndim else float(result)
-
-
-def _thermal_pair_stiffness_direct(case: "Case", roll: np.ndarray, x_te: float | None = None) -> np.ndarray:
-    """k_T [N/m] at roll distances on [A, E] from Eqs. 8–23 directly (elastic compliances from the PEM table)."""
-    from thermogear.stiffness.table import tooth_compliance_at  # noqa: PLC0415
-    from thermogear.thermal.calibration import resolve_x_te as _resolve  # noqa: PLC0415
-
-    temperature = temperature_field_from_case(case)
-    if x_te is None:
-        x_te, _ = _resolve(case, temperature=temperature)
-    check_x_te(x_te)
-    pinion, wheel = tooth_compliance_at(case.gear_pair, case.material, roll)
-    expansion_pinion, expansion_wheel = expansion_for_case(case, roll, temperature)
-    load = normal_load_for_case(case, roll, elastic_stiffness=1.0 / (pinion + wheel))
-    return thermal_pair_stiffness(pinion, wheel, expansion_pinion, expansion_wheel, load, x_te).stiffness
-
-
-@cached_per_case
-def _thermal_stiffness_spline(case: "Case"):
-    """Cubic spline of k_T over the PEM table's roll grid (401 points from A to E), once per case."""
-    from scipy.interpolate import CubicSpline  # noqa: PLC0415
-
-    from thermogear.stiffness.table import pair_compliance_table  # noqa: PLC0415
-
-    roll = np.asarray(pair_compliance_table(case.gear_pair, case.material).roll)
-    return CubicSpline(roll, _thermal_pair_stiffness_direct(case, roll))
-
-
-def thermal_mesh_stiffness(case: "Case", count: int | None = None, x_te: float | None = None,
-                           load_basis: str | None = None) -> tuple[np.ndarray, np.ndarray]:
-    """(k_e(τ), k_T(τ)) [N/m] over one mesh period on the mesh-cycle grid midpoints: the pairs in contact in
-    parallel (physics.md §3.4, Luo & Li Fig. 6). Totals over the face width."""
-    from thermogear.mesh_cycle import MeshCycle  # noqa: PLC0415
-    from thermogear.thermal.calibration import resolve_x_te as _resolve  # noqa: PLC0415
-
-    pair = case.gear_pair
-    cycle = MeshCycle(pair, case.operating_point.speed_rpm)
-    grid = cycle.grid(count or case.dynamics.points_per_period)
-    points = pair.path_points
-    rolls = np.clip(grid.roll[grid.in_contact], points["A"], points["E"])
-    temperature = temperature_field_from_case(case)
-    if x_te is None:
-        x_te, _ = _resolve(case, load_basis=load_basis, temperature=temperature)
-    result = thermal_stiffness(case, rolls, x_te=x_te, load_basis=load_basis, temperature=temperature)
-    elastic = np.zeros_like(grid.roll)
-    thermal = np.zeros_like(grid.roll)
-    elastic[grid.in_contact] = result.elastic_stiffness
-    thermal[grid.in_contact] = result.stiffness
-    return MeshCycle.total(elastic, grid.in_contact), MeshCycle.total(thermal, grid.in_contact)
-
-
-def resolve_x_te(case: "Case", **options):
-    """(X_te, source label) of a case; see :func:`thermogear.thermal.calibration.resolve_x_te`."""
-    from thermogear.thermal.calibration import resolve_x_te as _resolve  # noqa: PLC0415
-
-    return _resolve(case, **options)

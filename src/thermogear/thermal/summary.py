@@ -11,7 +11,10 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from thermogear.thermal.stiffness import ThermalStiffness, thermal_stiffness
+from thermogear.thermal.case_stiffness import thermal_stiffness
+from thermogear.thermal.stiffness import ThermalStiffness
+from thermogear.mesh.model import MeshModel
+from thermogear.thermal.calibration import resolve_x_te
 from thermogear.thermal.temperature import temperature_field_from_case
 
 if TYPE_CHECKING:
@@ -39,8 +42,6 @@ def thermal_curves(case: "Case", count: int = CURVE_POINT_COUNT, load_basis: str
     temperature = temperature_field_from_case(case)
     pair = case.gear_pair
     if x_te is None:
-        from thermogear.thermal.calibration import resolve_x_te  # noqa: PLC0415
-
         x_te, source = resolve_x_te(case, load_basis=load_basis, temperature=temperature)
     else:
         source = "given (argument)"
@@ -134,25 +135,17 @@ def thermal_stiffness_summary(case: "Case") -> dict:
         "units": {"stiffness": "N/(mm·μm) per unit face width", "expansion": "μm along the line of action, "
                   "positive = interference", "normal_load_n": "N total over the face width"},
     }
-    summary["mesh_stiffness_n_per_mm_um"] = _mesh_stiffness_summary(case, points.x_te, points.load_basis, width)
+    summary["mesh_stiffness_n_per_mm_um"] = _mesh_stiffness_summary(case, width)
     return summary
 
 
-def _mesh_stiffness_summary(case: "Case", x_te: float, load_basis: str, width: float) -> dict | None:
-    """Min/mean/max over one mesh cycle of the elastic and thermal mesh stiffness (pairs in parallel)."""
-    from thermogear.thermal.stiffness import thermal_mesh_stiffness  # noqa: PLC0415
-
-    elastic, thermal = thermal_mesh_stiffness(case, x_te=x_te, load_basis=load_basis)
+def _mesh_stiffness_summary(case: "Case", width: float) -> dict | None:
+    """Min/mean/max over one mesh cycle of the elastic and thermal mesh stiffness (pairs in parallel), from the
+    mesh model at the case's operating point."""
     scale = PER_WIDTH_STIFFNESS_TO_N_PER_MM_UM / width
-    return {name: {"min": float(values.min() * scale), "mean": float(values.mean() * scale),
-                   "max": float(values.max() * scale)}
-            for name, values in (("elastic", elastic), ("thermal", thermal))}
-
-
-def plot_thermal_stiffness(case: "Case", path) -> None:
-    """Write the Fig. 4 reproduction (k_e, k_T, δ_e, δ_T, δ_e1, δ_T1, δ_e2, δ_T2 along Γ) to ``path``
-    atomically (format from the suffix)."""
-    from thermogear.thermal.plots import plot_thermal_curves, save_figure_atomically  # noqa: PLC0415
-
-    figure = plot_thermal_curves(thermal_curves(case), case)
-    save_figure_atomically(figure, path)
+    result = {}
+    for name in ("elastic", "thermal"):
+        values = MeshModel(case, name).state(damping=False).mesh_stiffness
+        result[name] = {"min": float(values.min() * scale), "mean": float(values.mean() * scale),
+                        "max": float(values.max() * scale)}
+    return result

@@ -1,0 +1,91 @@
+"""The friction damping of a case, elastic and thermal, as the ``thermogear damping`` command and the report
+show it (Luo & Li (2020) Eqs. 26–28, Figs. 7–8), computed by the mesh model."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from thermogear.damping import MODELS, RULES, contact_region_means, mesh_damping
+from thermogear.errors import CaseError
+from thermogear.lubricant import Lubricant
+from thermogear.mesh.model import MeshModel
+
+if TYPE_CHECKING:
+    from thermogear.case import Case
+
+
+#: Luo & Li (2020) Sect. 3 mean dampings [N·s/m] (totals over the 25 mm face), for display beside luo2019.
+PAPER_MEAN_DAMPING = {"elastic": {"single": 3.41e3, "double": 2.40e3}, "thermal": {"single": 5.72e3, "double": 4.03e3}}
+
+
+@dataclass(frozen=True)
+class DampingSummary:
+    """Elastic and thermal friction damping of a case: per pair along the path and c(τ) over one mesh cycle.
+
+    ``path``: PairDamping per model on an even roll grid A–E; ``mesh``: c(τ) [N·s/m] per model on ``grid``
+    (MeshGrid); ``region_means``: time means of c(τ) over the single- and double-pair regions per model.
+    """
+
+    case_name: str
+    rule: str
+    stiffness: str
+    lubricant: Lubricant
+    path: dict
+    grid: object
+    mesh: dict
+    region_means: dict
+    pitch: dict  # PairDamping at C per model
+
+    def to_dict(self) -> dict:
+        """The JSON summary of ``thermogear damping``."""
+        oil, pitch = self.lubricant, self.pitch
+        flank_viscosity = float(np.mean(self.path["thermal"].viscosity))
+        result = {
+            "case": self.case_name, "rule": self.rule, "stiffness": self.stiffness,
+            "lubricant": {"name": oil.name, "base_oil": oil.base_oil, "lubricant_factor_oil": oil.lubricant_factor},
+            "friction_coefficient_pitch": {model: float(pitch[model].friction_coefficient[0]) for model in MODELS},
+            "damping_n_s_per_m": self.region_means,
+            "thermal_over_elastic": {region: self.region_means["thermal"][region]
+                                     / self.region_means["elastic"][region] for region in ("single", "double")},
+            "viscosity_mpa_s": {"oil_reference": float(pitch["elastic"].viscosity[0]) * 1e3,
+                                "flank_mean": flank_viscosity * 1e3},
+            "temperature_c": {"oil_reference": float(pitch["elastic"].temperature_c[0]),
+                              "flank_mean": float(np.mean(self.path["thermal"].temperature_c))},
+            "along_path": {"gamma": self.path["elastic"].gamma,
+                           "elastic_n_s_per_m": self.path["elastic"].damping,
+                           "thermal_n_s_per_m": self.path["thermal"].damping,
+                           "friction_elastic": self.path["elastic"].friction_coefficient,
+                           "friction_thermal": self.path["thermal"].friction_coefficient},
+        }
+        if self.case_name == "luo2019":
+            result["paper_n_s_per_m"] = PAPER_MEAN_DAMPING
+        return result
+
+
+def damping_summary(case: "Case", count: int = 720, path_points: int = 81, rule: str | None = None
+                    ) -> DampingSummary:
+    """The elastic and thermal friction damping of a case at its operating point (per pair along the path and
+    over the mesh cycle), from the mesh model of each."""
+    rule = case.damping.rule if rule is None else rule
+    if rule not in RULES:
+        raise CaseError("damping.rule", rule, " | ".join(RULES), "unknown mesh-damping rule")
+    path, mesh, means, pitch = {}, {}, {}, {}
+    grid = oil = None
+    for model in MODELS:
+        mesh_model = MeshModel(case, model)
+        oil = mesh_model.lubricant
+        pair = mesh_model.gear_pair
+        path[model] = mesh_model.pair_damping_at(pair.roll_grid(path_points))
+        pitch[model] = mesh_model.pair_damping_at(np.array([pair.path_points["C"]]))
+        state = mesh_model.state(points_per_period=count)
+        grid = state.grid
+        mesh[model] = mesh_damping(state.pair_damping, grid.in_contact, rule)
+        means[model] = contact_region_means(mesh[model], grid.contact_count, grid.steps)
+    return DampingSummary(case_name=case.name, rule=rule, stiffness=case.damping.stiffness, lubricant=oil,
+                          path=path, grid=grid, mesh=mesh, region_means=means, pitch=pitch)
+
+
+__all__ = ["DampingSummary", "PAPER_MEAN_DAMPING", "damping_summary"]

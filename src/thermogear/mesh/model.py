@@ -1,0 +1,247 @@
+"""The mesh model: the one place that turns a case into what the dynamics need.
+
+``MeshModel(case, model)`` reads the case once for its physics and answers, for the model chosen
+(``"elastic"``: k_e with the oil at its reference temperature, Luo & Li (2020) Eq. 5; ``"thermal"``: the case's
+thermal model, Eq. 6), per tooth pair along the roll distance: stiffness, friction damping, unloaded deviation
+and backlash; and for an operating point (speed and normal load are arguments, never re-read from the case) the
+state of one mesh period — k(τ), c(τ), the excitation, the static load, the equivalent mass and the period
+(:class:`~thermogear.mesh.state.MeshState`). ``Simulation``, the sweep (both paths), the damping and stiffness
+commands, the FE heat input and the report take what they need from here: this module holds the one
+elastic/thermal switch of thermogear.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from functools import cached_property
+from typing import TYPE_CHECKING, Literal
+
+import numpy as np
+
+from thermogear.damping import (FRICTION_DAMPING_LOAD_EXPONENT, FRICTION_DAMPING_SPEED_EXPONENT, PairDamping,
+                                friction_pair_damping, mesh_circular_frequency, mesh_damping)
+from thermogear.errors import CaseError
+from thermogear.lubricant import Lubricant, lubricant_from_case
+from thermogear.mesh.state import MeshState
+from thermogear.mesh_cycle import MeshCycle, MeshGrid, load_share_at, load_shares
+from thermogear.stiffness.table import pair_stiffness_at
+from thermogear.thermal.case_stiffness import thermal_pair_stiffness_at
+from thermogear.thermal.temperature import TemperatureField, temperature_field_from_case
+
+if TYPE_CHECKING:
+    from thermogear.case import Case
+
+Model = Literal["elastic", "thermal"]
+MODELS: tuple[str, ...] = ("elastic", "thermal")
+
+
+@dataclass(frozen=True, eq=False)
+class MeshModel:
+    """The gear mesh of a case under one model.
+
+    Parameters
+    ----------
+    case:
+        The validated case.
+    model:
+        ``"elastic"`` or ``"thermal"`` (the case's ``[thermal]`` model: the paper's ``"luo2020"`` secant k_T).
+    """
+
+    case: "Case"
+    model: Model = "thermal"
+
+    def __post_init__(self) -> None:
+        if self.model not in MODELS:
+            raise CaseError("model", self.model, " | ".join(MODELS), "unknown model")
+
+    # ------------------------------------------------------------------------------------ what it is
+    @property
+    def thermal(self) -> bool:
+        return self.model == "thermal"
+
+    @property
+    def thermal_model(self) -> str | None:
+        """Name of the thermal mesh model in use (``"luo2020"``), None for the elastic model."""
+        return getattr(self.case.thermal, "model", "luo2020") if self.thermal else None
+
+    @property
+    def gear_pair(self):
+        """The gear pair as it meshes under this model (geometry, path of contact A–E, contact ratio)."""
+        return self.case.gear_pair
+
+    @property
+    def face_width(self) -> float:
+        return self.gear_pair.face_width
+
+    @property
+    def equivalent_mass(self) -> float:
+        """me of Luo & Li Eq. 5 [kg], total over the face width."""
+        return self.case.equivalent_mass
+
+    @cached_property
+    def lubricant(self) -> Lubricant:
+        return lubricant_from_case(self.case)
+
+    @cached_property
+    def temperature(self) -> TemperatureField | None:
+        """The tooth temperature field of the thermal model; None for the elastic one."""
+        return temperature_field_from_case(self.case) if self.thermal else None
+
+    @property
+    def stiffness_depends_on_load(self) -> bool:
+        """True where the pair stiffness changes with the normal load (the paper's secant k_T, Eq. 18)."""
+        return self.thermal
+
+    @property
+    def damping_scaling(self) -> tuple[float, float | None] | None:
+        """(speed exponent, load exponent) of the mesh damping, c(n, w) = c(n0, w0)·(n/n0)^a·(w/w0)^b, where this
+        model keeps the conditions under which the friction damping is such a power law (geometry, oil
+        temperature and load shares independent of speed and load; thermogear.damping); the load exponent is
+        None where the load shares move with the load, and the whole is None where the temperature input depends
+        on the speed (the FE heat model) or the pairs carry deviations. Sweeps use it to reuse one mesh period."""
+        if self.case.temperature.model == "fem" or getattr(self.case.thermal, "x_te_source", "") == "fem":
+            return None
+        shares_move = self.thermal and self.case.damping.stiffness == "thermal" and self.stiffness_depends_on_load
+        return FRICTION_DAMPING_SPEED_EXPONENT, (None if shares_move else FRICTION_DAMPING_LOAD_EXPONENT)
+
+    @property
+    def damping_rule(self) -> str:
+        return self.case.damping.rule
+
+    # ----------------------------------------------------------------------------------- operating point
+    @property
+    def speed_rpm(self) -> float:
+        """The case's pinion speed [rpm] (the default operating point)."""
+        return float(self.case.operating_point.speed_rpm)
+
+    def normal_load(self, speed_rpm: float | None = None) -> float:
+        """Static normal load w = T1/r_b1 [N] (total) at a pinion speed [rpm]: the case's torque, or its power
+        over ω1 where the case gives a power."""
+        operating = self.case.operating_point
+        speed = operating.speed_rpm if speed_rpm is None else float(speed_rpm)
+        return operating.torque_at(speed) / self.gear_pair.pinion.base_radius
+
+    def mesh_period(self, speed_rpm: float) -> float:
+        """T_m = 60/(z1·n1) [s]."""
+        return self.gear_pair.mesh_period(speed_rpm)
+
+    # ------------------------------------------------------------------------------- per pair, along roll
+    def _load(self, normal_load: float | None) -> float:
+        return self.normal_load() if normal_load is None else float(normal_load)
+
+    def pair_stiffness_at(self, roll, normal_load: float | None = None) -> np.ndarray:
+        """Stiffness of one tooth pair [N/m] (total over the face width) at roll distances on [A, E]."""
+        roll = np.asarray(roll, dtype=float)
+        if self.thermal:
+            return np.asarray(thermal_pair_stiffness_at(self.case, roll, normal_load=self._load(normal_load)),
+                              dtype=float)
+        return np.asarray(pair_stiffness_at(self.gear_pair, self.case.material, roll), dtype=float)
+
+    def damping_stiffness_at(self, roll, normal_load: float | None = None) -> np.ndarray:
+        """The pair stiffness k of Eq. 28 and of the friction load share [N/m]: k_e unless ``[damping]
+        stiffness = "thermal"`` asks the thermal model's own."""
+        if self.thermal and self.case.damping.stiffness == "thermal":
+            return self.pair_stiffness_at(roll, normal_load)
+        return np.asarray(pair_stiffness_at(self.gear_pair, self.case.material, np.asarray(roll, float)), float)
+
+    def friction_temperature_c(self, gamma) -> np.ndarray:
+        """Oil temperature of the friction formula [°C]: the lubricant's reference temperature (elastic) or the
+        mean of the pinion and wheel flank temperatures at the contact (thermal)."""
+        gamma = np.asarray(gamma, dtype=float)
+        if not self.thermal:
+            return np.full(gamma.shape, float(self.case.lubricant.reference_temperature_c))
+        field = self.temperature
+        return 0.5 * (np.asarray(field.pinion_flank_c(gamma), dtype=float)
+                      + np.asarray(field.wheel_flank_c(gamma), dtype=float))
+
+    def pair_deviation_at(self, roll) -> np.ndarray:
+        """Unloaded deviation of one tooth pair along the line of action [m] (positive: material missing, the
+        pair engages later). The elastic and the paper's thermal model have none."""
+        return np.zeros(np.shape(roll))
+
+    @property
+    def backlash(self) -> float | None:
+        """Normal backlash [m]; None where the model does not carry one."""
+        return None
+
+    def _friction(self, roll, share, stiffness, speed_rpm: float, normal_load: float) -> PairDamping:
+        pair, case = self.gear_pair, self.case
+        gamma = np.asarray(pair.gamma(roll), dtype=float)
+        temperature = self.friction_temperature_c(gamma)
+        viscosity = np.asarray(self.lubricant.dynamic_viscosity(temperature), dtype=float)
+        rolling_1, rolling_2 = pair.rolling_speeds(roll, speed_rpm)
+        factor = case.damping.lubricant_factor
+        factor = self.lubricant.lubricant_factor if factor is None else factor
+        friction, damping, unit_load = friction_pair_damping(
+            stiffness, share, normal_load / pair.face_width, case.roughness_ra, viscosity,
+            np.asarray(rolling_1 + rolling_2, dtype=float), pair.relative_radius_of_curvature(roll), factor,
+            mesh_circular_frequency(pair.pinion.teeth, speed_rpm))
+        return PairDamping(model=self.model, roll=roll, gamma=gamma, friction_coefficient=friction,
+                           viscosity=viscosity, damping=damping, temperature_c=temperature, pair_stiffness=stiffness,
+                           load_share=share, unit_load=unit_load)
+
+    def pair_damping_at(self, roll, speed_rpm: float | None = None, normal_load: float | None = None) -> PairDamping:
+        """Friction damping of one tooth pair at roll distances on [A, E] (Luo & Li Eqs. 26–28): μ of DIN 3990-4
+        with the pair's share of the load among the pairs in mesh with it, c = 4μk/(πω_m)."""
+        speed = self.speed_rpm if speed_rpm is None else float(speed_rpm)
+        load = self._load(normal_load)
+        mesh_circular_frequency(self.gear_pair.pinion.teeth, speed)  # refuses standstill first
+        roll = np.asarray(roll, dtype=float)
+        points = self.gear_pair.path_points
+        tolerance = 1e-9 * self.gear_pair.base_pitch
+        if np.any((roll < points["A"] - tolerance) | (roll > points["E"] + tolerance)):
+            raise CaseError("roll", [float(roll.min()), float(roll.max())],
+                            f"[{points['A']:.6g}, {points['E']:.6g}] m (A to E)", "outside the path of contact")
+        share, stiffness = load_share_at(roll, lambda other: self.damping_stiffness_at(other, load),
+                                         points["A"], points["E"], self.gear_pair.base_pitch)
+        return self._friction(roll, share, stiffness, speed, load)
+
+    # ------------------------------------------------------------------------------- one mesh period
+    def grid(self, speed_rpm: float | None = None, points_per_period: int | None = None) -> MeshGrid:
+        """The mesh-cycle grid of one period at a speed [rpm] (every contact transition a node)."""
+        speed = self.speed_rpm if speed_rpm is None else float(speed_rpm)
+        count = points_per_period or self.case.dynamics.points_per_period
+        return MeshCycle(self.gear_pair, speed).grid(count)
+
+    def _on_grid(self, grid: MeshGrid, evaluate) -> np.ndarray:
+        points = self.gear_pair.path_points
+        values = np.zeros(grid.roll.shape)
+        roll = np.clip(grid.roll[grid.in_contact], points["A"], points["E"])
+        values[grid.in_contact] = evaluate(roll)
+        return values
+
+    def state(self, speed_rpm: float | None = None, normal_load: float | None = None,
+              points_per_period: int | None = None, damping: bool = True) -> MeshState:
+        """Everything the dynamics need over one mesh period at a pinion speed [rpm] and normal load [N]
+        (defaults: the case's operating point). ``damping=False`` leaves the friction damping out (zeros), for
+        callers that need the stiffness only."""
+        speed = self.speed_rpm if speed_rpm is None else float(speed_rpm)
+        load = self.normal_load(speed) if normal_load is None else float(normal_load)
+        grid = self.grid(speed, points_per_period)
+        stiffness = self._on_grid(grid, lambda roll: self.pair_stiffness_at(roll, load))
+        if (self.thermal and self.case.damping.stiffness == "thermal") or not damping:
+            damping_stiffness = stiffness
+        else:
+            damping_stiffness = self._on_grid(grid, lambda roll: self.damping_stiffness_at(roll, load))
+        pair_damping = np.zeros(grid.roll.shape)
+        if damping:
+            share = load_shares(damping_stiffness, grid.in_contact)
+            contact = grid.in_contact
+            points = self.gear_pair.path_points
+            friction = self._friction(np.clip(grid.roll[contact], points["A"], points["E"]), share[contact],
+                                      damping_stiffness[contact], speed, load)
+            pair_damping[contact] = friction.damping
+        deviation = self._on_grid(grid, self.pair_deviation_at)
+        return MeshState(model=self.model, speed_rpm=speed, normal_load=load, mass=self.equivalent_mass, grid=grid,
+                         pair_stiffness=stiffness, pair_damping=pair_damping,
+                         mesh_damping=np.asarray(mesh_damping(pair_damping, grid.in_contact, self.damping_rule), float),
+                         pair_deviation=deviation, backlash=self.backlash, face_width=self.face_width,
+                         mesh_frequency_hz=self.gear_pair.mesh_frequency(speed))
+
+    def natural_frequency_hz(self, state: MeshState) -> float:
+        """f_n = sqrt(mean k / me)/2π [Hz] of a state."""
+        return math.sqrt(state.mean_mesh_stiffness / state.mass) / (2.0 * math.pi)
+
+
+__all__ = ["MODELS", "MeshModel", "MeshState"]

@@ -1,0 +1,65 @@
+"""The state of one mesh period at one operating point: what the dynamics solvers take from the mesh model."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from thermogear.dynamics.problem import MeshDynamicsProblem
+from thermogear.mesh_cycle import MeshCycle, MeshGrid
+
+
+@dataclass(frozen=True, eq=False)
+class MeshState:
+    """One mesh period of a model at a pinion speed and normal load, on the mesh-cycle grid (totals over the face).
+
+    ``pair_stiffness``, ``pair_damping`` [N/m, N·s/m] and ``pair_deviation`` [m] are (slots, n) on the grid
+    intervals, 0 where a pair slot is out of contact; ``mesh_damping`` c(τ) (n,) under the case's rule;
+    ``normal_load`` w [N]; ``mass`` me [kg]; ``backlash`` the normal backlash [m] or None.
+    """
+
+    model: str
+    speed_rpm: float
+    normal_load: float
+    mass: float
+    grid: MeshGrid
+    pair_stiffness: np.ndarray
+    pair_damping: np.ndarray
+    mesh_damping: np.ndarray
+    pair_deviation: np.ndarray
+    backlash: float | None
+    face_width: float
+    mesh_frequency_hz: float
+
+    @property
+    def period(self) -> float:
+        """Mesh period T_m [s]."""
+        return float(self.grid.nodes[-1])
+
+    @property
+    def mesh_stiffness(self) -> np.ndarray:
+        """k(τ) [N/m] (n,): the pairs in contact in parallel."""
+        return MeshCycle.total(self.pair_stiffness, self.grid.in_contact)
+
+    @property
+    def mean_mesh_stiffness(self) -> float:
+        """Time mean of k(τ) over one period [N/m]."""
+        return float(self.grid.time_average(self.mesh_stiffness))
+
+    @property
+    def excitation(self) -> np.ndarray:
+        """Σ_i k_i·e_i (n,) [N]: the force the unloaded deviations add to the static load in
+        me·ẍ + c·ẋ + Σ k_i·(x − e_i) = w."""
+        return MeshCycle.total(self.pair_stiffness * self.pair_deviation, self.grid.in_contact)
+
+    def problem(self) -> MeshDynamicsProblem:
+        """The linear mesh-dynamics problem me·ẍ + c(τ)ẋ + k(τ)(x − e(τ)) = w over this period."""
+        excitation = self.excitation
+        force = self.normal_load + excitation if np.any(excitation) else self.normal_load
+        return MeshDynamicsProblem(mass=self.mass, nodes=self.grid.nodes, stiffness=self.mesh_stiffness,
+                                   damping=self.mesh_damping, force=force, contact_count=self.grid.contact_count,
+                                   pair_stiffness=self.pair_stiffness, face_width=self.face_width)
+
+
+__all__ = ["MeshState"]
