@@ -52,7 +52,7 @@ class Branch:
 def _solve_point(problem: BacklashMeshProblem, state: tuple[float, float] | None, options: dict) -> BacklashOrbit:
     if state is not None:
         result = shoot(problem, state, 1, options["tolerance"], options["max_iterations"])
-        if _stable(result):
+        if _stable(result, problem):
             return _orbit(problem, result, 1, options["samples_per_interval"], result["iterations"])
     return periodic_response(problem, initial_state=state, **options)
 

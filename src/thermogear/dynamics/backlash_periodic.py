@@ -212,8 +212,10 @@ def _orbit(problem: BacklashMeshProblem, result: dict, period_count: int, sample
                          multipliers=multipliers, initial_state=state, history=history, iterations=iterations)
 
 
-def _stable(result: dict) -> bool:
-    return bool(result["converged"] and np.all(np.isfinite(result["monodromy"]))
+def _stable(result: dict, problem: BacklashMeshProblem) -> bool:
+    """Converged with every multiplier inside the unit circle. Undamped (c = 0 everywhere): det M = 1 by Liouville,
+    so |μ|max >= 1 in exact arithmetic whatever rounding gives; decided on c, as the linear solver does."""
+    return bool(result["converged"] and np.all(np.isfinite(result["monodromy"])) and np.any(problem.damping > 0.0)
                 and np.max(np.abs(np.linalg.eigvals(result["monodromy"]))) < 1.0)
 
 
@@ -257,7 +259,7 @@ def periodic_response(problem: BacklashMeshProblem, initial_state: tuple[float, 
     total = 0
     first = shoot(problem, start, 1, tolerance, max_iterations)
     total += first["iterations"]
-    if _stable(first):
+    if _stable(first, problem):
         return _orbit(problem, first, 1, samples_per_interval, total)
     state = start
     for run_in in (run_in_periods, classify_periods):
@@ -272,11 +274,11 @@ def periodic_response(problem: BacklashMeshProblem, initial_state: tuple[float, 
         for count in range(1, int(max_period_count) + 1):
             result = shoot(problem, state, count, tolerance, max_iterations)
             total += result["iterations"]
-            if _stable(result):
+            if _stable(result, problem):
                 least = _least_period(problem, result["state"], count, tolerance)
                 if least != count:
                     result = shoot(problem, result["state"], least, tolerance, max_iterations)
-                    if not _stable(result):
+                    if not _stable(result, problem):
                         continue
                 return _orbit(problem, result, least, samples_per_interval, total)
     # non-periodic: the attractor is neither a stable period-N orbit (N <= max) nor reachable by Newton
