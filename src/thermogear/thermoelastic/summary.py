@@ -1,0 +1,141 @@
+"""The ``thermal`` object of ``thermogear stiffness CASE --thermal --json`` and its figure.
+
+:func:`thermal_block` answers for either thermal model: the thermo-elastic model's keys (``model``, ``operating``,
+``cold``, ``youngs_modulus_gpa``, ``mesh_stiffness_n_per_mm_um``, ``deviation_um``,
+``loaded_transmission_error_um``, ``jamming_bulk_temperature_c``, …) and, where the case configures X_te, the
+paper's model (Luo & Li 2020) beside it — at the top level for ``model = "luo2020"`` (today's keys, unchanged) with
+the thermo-elastic prediction under ``thermoelastic``, else under ``luo2020``. Plain floats; stiffness per unit face
+width in N/(mm·μm), lengths in μm and mm, temperatures in °C.
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from thermogear.errors import ExtrapolationWarning
+from thermogear.thermal.temperature import temperature_field_from_case
+from thermogear.thermoelastic.mesh import ThermoelasticMesh
+
+if TYPE_CHECKING:
+    from thermogear.case import Case
+
+#: N/m per metre of face width → N/(mm·μm)
+PER_WIDTH_TO_N_PER_MM_UM = 1e-9
+
+#: [thermal] keys that belong to the paper's model; a case that sets any of them gets its result beside ours.
+LUO2020_KEYS = frozenset({"x_te", "x_te_source", "calibration_drop_percent", "calibration_point", "load_basis",
+                          "expansion_model"})
+
+#: Roll positions along the path for the deviation's peak-to-peak [–].
+PATH_POINT_COUNT = 401
+
+
+def _geometry(pair, backlash: float) -> dict:
+    return {"centre_distance_mm": pair.centre_distance * 1e3,
+            "pressure_angle_deg": math.degrees(pair.operating_pressure_angle),
+            "contact_ratio": pair.contact_ratio, "backlash_normal_um": backlash * 1e6}
+
+
+def _statistics(grid, values, scale: float) -> dict:
+    return {"min": float(values.min() * scale), "mean": float(grid.time_average(values) * scale),
+            "max": float(values.max() * scale)}
+
+
+def thermoelastic_summary(case: "Case") -> dict:
+    """The thermo-elastic model's JSON object for a case (module docstring)."""
+    component = ThermoelasticMesh.from_case(case)
+    hot, cold = component.gear_pair, component.cold_gear_pair
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", ExtrapolationWarning)  # the elastic summary reports them
+        grid, stiffness = component.mesh_stiffness()
+        cold_grid, cold_stiffness = component.mesh_stiffness(cold=True)
+        _, loaded = component.loaded_transmission_error()
+        _, cold_loaded = component.loaded_transmission_error(cold=True)
+        flags = list(component.plausibility)
+    roll = hot.roll_grid(PATH_POINT_COUNT)
+    parts = component.deviation_parts_at(roll)
+    deviation = parts["tip_relief"] + parts["base_pitch"] + parts["thermal_distortion"]
+    hot_scale = PER_WIDTH_TO_N_PER_MM_UM / hot.face_width
+    cold_scale = PER_WIDTH_TO_N_PER_MM_UM / cold.face_width
+    mean_change = grid.time_average(stiffness) / cold_grid.time_average(cold_stiffness) - 1.0
+    pinion, wheel = component.gears
+    return {
+        "model": case.thermal.model,
+        "operating": _geometry(hot, component.backlash_normal),
+        "cold": _geometry(cold, component.backlash_normal_cold),
+        "temperatures_c": {"reference": component.reference_c, "housing": component.housing_c,
+                           "bulk": {"pinion": component.bulk_c[0], "wheel": component.bulk_c[1]},
+                           "tooth": {"pinion": component.tooth_c[0], "wheel": component.tooth_c[1]}},
+        "youngs_modulus_gpa": {"pinion": component.youngs_modulus[0] * 1e-9,
+                               "wheel": component.youngs_modulus[1] * 1e-9},
+        "mesh_stiffness_n_per_mm_um": _statistics(grid, stiffness, hot_scale),
+        "mesh_stiffness_change_percent": float(100.0 * mean_change),
+        "deviation_um": {"peak_to_peak": float(np.ptp(deviation) * 1e6),
+                         **{f"{name}_peak_to_peak": float(np.ptp(values) * 1e6) for name, values in parts.items()}},
+        "loaded_transmission_error_um": {"mean": float(grid.time_average(loaded.approach) * 1e6),
+                                         "peak_to_peak": loaded.peak_to_peak * 1e6},
+        "jamming_bulk_temperature_c": component.jamming_bulk_temperature_c,
+        "elastic": {"mesh_stiffness_n_per_mm_um": _statistics(cold_grid, cold_stiffness, cold_scale),
+                    "loaded_transmission_error_um": {
+                        "mean": float(cold_grid.time_average(cold_loaded.approach) * 1e6),
+                        "peak_to_peak": cold_loaded.peak_to_peak * 1e6}},
+        "normal_load_n": component.normal_load,
+        "assumptions": [
+            f"normal backlash at {component.reference_c:g} °C: {component.allowance.nominal * 1e6:.1f} μm "
+            f"({component.allowance.source})",
+            f"E(T) = E(20 °C)·[1 + β_E (T − 20 °C)], β_E pinion {pinion.modulus_coefficient_per_k:.3g} /K "
+            f"({pinion.modulus_source}), wheel {wheel.modulus_coefficient_per_k:.3g} /K ({wheel.modulus_source})",
+            f"housing expansion {component.housing.expansion_per_k:.3g} /K at {component.housing_c:g} °C "
+            f"({component.housing.source})",
+            "gears scaled by their equivalent bulk rise (the uniform rise with the same base-circle expansion, "
+            "Luo & Li Eq. 10); the rest of the field distorts the loaded flank (consistent Eqs. 8–12)",
+        ],
+        "plausibility": flags,
+        "temperature": temperature_field_from_case(case).describe(),
+    }
+
+
+def _luo2020_configured(case: "Case") -> bool:
+    return bool(LUO2020_KEYS & case.thermal.model_fields_set)
+
+
+def thermal_block(case: "Case") -> dict:
+    """The ``thermal`` object of the stiffness command for the case's thermal model (module docstring)."""
+    if case.thermal.model == "luo2020":
+        from thermogear.thermal.summary import thermal_stiffness_summary  # noqa: PLC0415  (the paper's model)
+
+        block = {"model": "luo2020", **thermal_stiffness_summary(case)}
+        block["thermoelastic"] = thermoelastic_summary(case)
+        return block
+    block = thermoelastic_summary(case)
+    if _luo2020_configured(case):
+        from thermogear.thermal.summary import thermal_stiffness_summary  # noqa: PLC0415
+
+        block["luo2020"] = thermal_stiffness_summary(case)
+    return block
+
+
+def write_thermal_plot(case: "Case", path) -> None:
+    """Write the thermal figure of the stiffness command to ``path`` (atomically; format from the suffix): the
+    paper's Fig. 4 for ``luo2020``, else deviation, loaded STE and load share, elastic and thermal."""
+    from thermogear.thermal.plots import save_figure_atomically  # noqa: PLC0415
+
+    if case.thermal.model == "luo2020":
+        from thermogear.thermal.plots import plot_thermal_curves  # noqa: PLC0415
+        from thermogear.thermal.summary import thermal_curves  # noqa: PLC0415
+
+        figure = plot_thermal_curves(thermal_curves(case), case)
+    else:
+        from thermogear.thermoelastic.plots import plot_thermoelastic  # noqa: PLC0415
+
+        figure = plot_thermoelastic(ThermoelasticMesh.from_case(case), title=case.name)
+    save_figure_atomically(figure, path)
+
+
+#: The names the stiffness command calls (``thermal_module.thermal_stiffness_summary`` / ``.plot_thermal_stiffness``).
+thermal_stiffness_summary = thermal_block
+plot_thermal_stiffness = write_thermal_plot
