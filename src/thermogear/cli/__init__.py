@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import os
 import sys
 
 import typer
@@ -24,13 +25,17 @@ from thermogear.cli import fem  # noqa: E402,F401
 
 def main() -> None:
     """Console-script entry point: run the app, turn thermogear errors into one clear line and exit 2."""
+    install_warning_printer()
+    # the command line only writes figures to files: a non-interactive backend, chosen here and never by the
+    # library (a notebook user's backend stays theirs); an explicit MPLBACKEND wins
+    os.environ.setdefault("MPLBACKEND", "Agg")
     try:
-        status = app(standalone_mode=False)
+        status = app(standalone_mode=False, prog_name="thermogear")
     except ThermogearError as error:
-        error_console.print(f"[bold red]error:[/] {error}", highlight=False)
+        print_error(str(error))
         sys.exit(2)
     except KeyboardInterrupt:
-        error_console.print("interrupted")
+        print_error("interrupted")
         sys.exit(130)
     except typer.Exit as error:
         sys.exit(error.exit_code)

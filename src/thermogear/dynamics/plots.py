@@ -19,9 +19,6 @@ _STYLES = ({"color": "tab:blue", "linestyle": "-"}, {"color": "tab:red", "linest
 
 
 def _axes(ax: Any):
-    import matplotlib
-
-    matplotlib.use("Agg", force=False)
     import matplotlib.pyplot as plt
 
     if ax is None:

@@ -9,9 +9,6 @@ import numpy as np
 
 
 def _axes(ax: Any = None):
-    import matplotlib
-
-    matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
     if ax is None:

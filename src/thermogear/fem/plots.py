@@ -8,9 +8,6 @@ from __future__ import annotations
 
 
 def _axes(ax, size=(6.0, 4.0)):
-    import matplotlib  # noqa: PLC0415
-
-    matplotlib.use("Agg")
     import matplotlib.pyplot as plt  # noqa: PLC0415
 
     if ax is None:

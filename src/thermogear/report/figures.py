@@ -34,9 +34,6 @@ _COLORS = {"elastic": "tab:blue", "thermal": "tab:red"}
 
 
 def _pyplot():
-    import matplotlib
-
-    matplotlib.use("Agg", force=False)
     import matplotlib.pyplot as plt
 
     return plt

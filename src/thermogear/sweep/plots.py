@@ -130,9 +130,6 @@ def plot_speed_response(dataset, quantities=("kv", "dte_rms", "dte_peak_to_peak"
     ``select`` fixes the other swept parameters (default: their first value). ``ax``: one axes per quantity (a
     sequence) or None for a new figure. Returns the figure.
     """
-    import matplotlib
-
-    matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
     if SPEED not in dataset.dims:
@@ -178,9 +175,6 @@ def plot_speed_response(dataset, quantities=("kv", "dte_rms", "dte_peak_to_peak"
 def plot_map(dataset, quantity: str = "kv", x: str | None = None, y: str | None = None, model: str = "thermal",
              select: dict[str, Any] | None = None, ax=None):
     """Map of ``quantity`` over two swept parameters (default: the first two dimensions) for one model."""
-    import matplotlib
-
-    matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
     dims = [d for d in dataset[quantity].dims if d != "model"]
