@@ -143,17 +143,21 @@ class ThermoelasticMesh:
                                   cold: bool = False) -> tuple[MeshGrid, LoadedTransmissionError]:
         """Loaded static transmission error and load share over one mesh period at ``normal_load`` [N] (default:
         the case's). ``cold``: the elastic model's pair with the same tip reliefs and no thermal deviation."""
+        grid, stiffness, deviation = self.period_pairs(count, cold)
         load = self.normal_load if normal_load is None else float(normal_load)
-        grid = self.mesh_grid(count, cold)
-        if cold:
-            stiffness = self._per_pair(grid, self.elastic_pair_stiffness_at)
-            deviation = self._per_pair(grid, self._cold_deviation_at)
-        else:
-            stiffness = self._per_pair(grid, self.pair_stiffness_at)
-            deviation = self._per_pair(grid, self.pair_deviation_at)
         return grid, loaded_transmission_error(stiffness, deviation, load, grid.in_contact)
 
-    def _cold_deviation_at(self, roll) -> np.ndarray:
+    def period_pairs(self, count: int = PERIOD_INTERVAL_COUNT,
+                     cold: bool = False) -> tuple[MeshGrid, np.ndarray, np.ndarray]:
+        """(grid, k_i(τ) [N/m], e_i(τ) [m]) of every pair slot over one mesh period (0 for slots off the path):
+        what the dynamics' me·ẍ + c·ẋ + Σ k_i (x − e_i) = w needs, on the hot (or ``cold``) pair."""
+        grid = self.mesh_grid(count, cold)
+        if cold:
+            return (grid, self._per_pair(grid, self.elastic_pair_stiffness_at),
+                    self._per_pair(grid, self.cold_pair_deviation_at))
+        return grid, self._per_pair(grid, self.pair_stiffness_at), self._per_pair(grid, self.pair_deviation_at)
+
+    def cold_pair_deviation_at(self, roll) -> np.ndarray:
         pair = self.cold_gear_pair
         pinion, wheel = self.gears
         points = pair.path_points
