@@ -158,6 +158,8 @@ class ThermoelasticMesh:
         return grid, self._per_pair(grid, self.pair_stiffness_at), self._per_pair(grid, self.pair_deviation_at)
 
     def cold_pair_deviation_at(self, roll) -> np.ndarray:
+        """The elastic model's unloaded deviation of a pair [m] at roll distances on the cold path: the tip
+        reliefs alone (no thermal part), positive = material missing."""
         pair = self.cold_gear_pair
         pinion, wheel = self.gears
         points = pair.path_points

@@ -29,7 +29,7 @@ def plot_thermoelastic(component: ThermoelasticMesh, ax=None, title: str = ""):
     for name, values in parts.items():
         ax[0].plot(gamma, values * 1e6, lw=0.8, label=name.replace("_", " "))
     cold = component.cold_gear_pair
-    ax[0].plot(cold.gamma(cold.roll_grid(401)), component._cold_deviation_at(cold.roll_grid(401)) * 1e6,
+    ax[0].plot(cold.gamma(cold.roll_grid(401)), component.cold_pair_deviation_at(cold.roll_grid(401)) * 1e6,
                color="0.5", ls="--", label="elastic (relief only)")
     ax[0].set(xlabel="Γ", ylabel="deviation [μm] (+ = material missing)", title="Unloaded deviation of a pair")
     ax[0].legend(fontsize=8)
