@@ -169,7 +169,7 @@ def stiffness(
 ) -> None:
     """Elastic mesh stiffness along the path of contact and over one mesh period (per mm of face width)."""
     loaded = load_case(case)
-    thermal_module = importlib.import_module("thermogear.thermal.summary") if thermal else None
+    thermal_module = importlib.import_module("thermogear.thermoelastic.summary") if thermal else None  # both models
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ExtrapolationWarning)  # collected into the summary instead
         summary, _ = stiffness_summary(loaded)
