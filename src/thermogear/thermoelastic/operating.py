@@ -80,8 +80,8 @@ def normal_backlash(pair: GearPair, thinning_pinion: float = 0.0, thinning_wheel
     pitch = math.pi * (pair.pinion.base_radius / pair.pinion.teeth + pair.wheel.base_radius / pair.wheel.teeth)
     sum_base_radii = pair.pinion.base_radius + pair.wheel.base_radius
     angle = math.acos(sum_base_radii / pair.centre_distance)
-    return (pitch - (base_thickness(pair.pinion) - thinning_pinion) - (base_thickness(pair.wheel) - thinning_wheel)
-            + 2.0 * sum_base_radii * float(involute(angle)))
+    return float(pitch - (base_thickness(pair.pinion) - thinning_pinion)
+                 - (base_thickness(pair.wheel) - thinning_wheel) + 2.0 * sum_base_radii * float(involute(angle)))
 
 
 def agma_minimum_backlash(centre_distance: float, module: float) -> float:
@@ -137,4 +137,4 @@ def jamming_rise(pair: GearPair, allowance: BacklashAllowance, pinion_expansion:
         high, value_high = root, backlash(root)
         if abs(high - low) < 1e-9:
             break
-    return high
+    return float(high)
