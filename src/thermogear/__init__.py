@@ -12,11 +12,28 @@ try:
 except PackageNotFoundError:  # running from a source tree that is not installed
     __version__ = "0+unknown"
 
-from thermogear.case import Case, load_case, parameter_set_names  # noqa: E402
 from thermogear.errors import CaseError, ExtrapolationWarning, ThermogearError  # noqa: E402
-from thermogear.geometry import Gear, GearPair  # noqa: E402
-from thermogear.materials import Material  # noqa: E402
-from thermogear.operating import OperatingPoint  # noqa: E402
+
+# The components load on first use (PEP 562), so that `import thermogear.cli` (`thermogear --help`) does not pay
+# for NumPy and pydantic: name → module that defines it.
+_LAZY = {"Case": "thermogear.case", "load_case": "thermogear.case", "parameter_set_names": "thermogear.case",
+         "Gear": "thermogear.geometry", "GearPair": "thermogear.geometry", "Material": "thermogear.materials",
+         "OperatingPoint": "thermogear.operating"}
+
+
+def __getattr__(name: str):
+    if name not in _LAZY:
+        raise AttributeError(f"module 'thermogear' has no attribute {name!r}")
+    import importlib  # noqa: PLC0415
+
+    value = getattr(importlib.import_module(_LAZY[name]), name)
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(_LAZY))
+
 
 __all__ = ["Case", "CaseError", "ExtrapolationWarning", "Gear", "GearPair", "Material", "OperatingPoint",
            "ThermogearError", "__version__", "load_case", "parameter_set_names"]

@@ -15,17 +15,18 @@ import weakref
 from dataclasses import dataclass, field
 from importlib import resources
 from pathlib import Path
-from typing import Any
+from typing import Any, Callable
 
 import pydantic
 
 from thermogear.errors import CaseError, closest_key
 from thermogear.fzg import fzg_load_stage_torque
-from thermogear.geometry import Gear, GearPair
+from thermogear.geometry import Gear, GearPair, involute
 from thermogear.materials import Material
 from thermogear.operating import OperatingPoint
 from thermogear.schema import (CaseFile, DampingSection, DynamicsSection, FemSection, GearsSection, HousingSection,
                                LubricantSection, MaterialSection, TemperatureSection, ThermalSection)
+from thermogear.temperature_field import check_temperatures, temperature_field_from_section
 from thermogear.thermoelastic.inputs import check_thermoelastic_inputs
 
 
@@ -129,14 +130,23 @@ def parameter_set_path(name: str):
 
 
 def load_case(name_or_path: str | Path) -> Case:
-    """Load a built-in parameter set by name (``"luo2019"``) or a TOML case file by path."""
+    """Load a built-in parameter set by name (``"luo2019"``) or a TOML case file by path.
+
+    Every check the model would make is made here (:func:`case_from_document`), so a case that loads is one that
+    runs; a file that is not UTF-8 text or not TOML is one CaseError, never a traceback."""
     text_source = str(name_or_path)
     path = Path(name_or_path)
     if path.suffix == ".toml" or path.exists():
         if not path.is_file():
             raise CaseError("case", text_source, "an existing .toml file or a built-in name "
                             f"({', '.join(parameter_set_names())})", "no such file")
-        text = path.read_text(encoding="utf-8")
+        try:
+            text = path.read_text(encoding="utf-8")
+        except UnicodeDecodeError as error:
+            raise CaseError("case", text_source, "a UTF-8 text file (TOML)",
+                            f"byte {error.start} cannot be read as UTF-8 (a binary or latin-1 file?)") from None
+        except OSError as error:
+            raise CaseError("case", text_source, "a readable .toml file", error.strerror or str(error)) from None
     elif text_source in parameter_set_names():
         text = parameter_set_path(text_source).read_text(encoding="utf-8")
     else:
@@ -148,7 +158,83 @@ def load_case(name_or_path: str | Path) -> Case:
         document = tomllib.loads(text)
     except tomllib.TOMLDecodeError as error:
         raise CaseError("case", text_source, "valid TOML", f"the file cannot be parsed: {error}") from None
+    except RecursionError:
+        raise CaseError("case", text_source, "TOML nested a few levels deep",
+                        "the file nests tables or arrays too deeply to be a case file") from None
     return case_from_document(document, source=str(path if path.exists() else text_source))
+
+
+# --------------------------------------------------------------------------------------------- load-time checks
+CaseCheck = Callable[["Case"], None]
+_CASE_CHECKS: list[CaseCheck] = []
+
+
+def register_case_check(check: CaseCheck) -> CaseCheck:
+    """Add a check that every loaded case must pass (it raises CaseError). Returns the check, so it can be used as
+    a decorator. The built-in checks (temperatures, X_te) run first; registered ones after, in order."""
+    if not callable(check):
+        raise TypeError("a case check must be callable: check(case) -> None")
+    if check not in _CASE_CHECKS:
+        _CASE_CHECKS.append(check)
+    return check
+
+
+def check_case(case: "Case") -> None:
+    """Run every load-time check on a built case: what the model would refuse later is refused now.
+
+    Section-local checks run in the schema (values, lubricant name and viscosity points, the flank table's
+    values); here run the checks that need the gear pair or several sections: the temperature field over the path
+    of contact (:func:`~thermogear.temperature_field.check_temperatures`: table sorted and matched, fit degree,
+    temperatures between reference_c and the material limit) and the X_te the paper's thermal model needs.
+    Warnings of these checks are left to the stage that uses the value (it issues them once, there)."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        _check_temperature_field(case)
+    _check_thermal_inputs(case)
+    for check in _CASE_CHECKS:
+        check(case)
+
+
+def check_profile_shift_sum(gears) -> None:
+    """Refuse profile shifts whose sum leaves no zero-backlash operating pressure angle.
+
+    ISO 21771: inv α_w = inv α + 2 tan α (x1 + x2)/(z1 + z2). The involute inv α = tan α − α is never negative,
+    so x1 + x2 must exceed −inv α (z1 + z2)/(2 tan α); below that (e.g. z 12/27, α 15.9°, x −0.46/−0.11) the
+    geometry has no solution (this used to surface as a ValueError of the inverse involute)."""
+    angle = math.radians(gears.pressure_angle_deg)
+    teeth = gears.pinion.teeth + gears.wheel.teeth
+    shift_sum = gears.pinion.profile_shift + gears.wheel.profile_shift
+    if float(involute(angle)) + 2.0 * math.tan(angle) * shift_sum / teeth > 0.0:
+        return
+    minimum = -float(involute(angle)) * teeth / (2.0 * math.tan(angle))
+    raise CaseError("gears.pinion.profile_shift + gears.wheel.profile_shift", round(shift_sum, 6),
+                    f"> {minimum:.4f} for z {gears.pinion.teeth}/{gears.wheel.teeth} at α = "
+                    f"{gears.pressure_angle_deg:g}°",
+                    "no operating pressure angle exists: inv α_w = inv α + 2 tan α (x1 + x2)/(z1 + z2) (ISO 21771) "
+                    "would be negative; raise the profile shifts")
+
+
+def _check_temperature_field(case: "Case") -> None:
+    section = case.temperature
+    if section.model not in ("uniform", "tabulated"):  # "fem": computed by its provider, checked there
+        return
+    field = temperature_field_from_section(section, case.directory)
+    pair = case.gear_pair
+    points = pair.path_points
+    check_temperatures(field, float(pair.gamma(points["A"])), float(pair.gamma(points["E"])))
+
+
+def _check_thermal_inputs(case: "Case") -> None:
+    section = case.thermal
+    if getattr(section, "model", "luo2020") != "luo2020":  # only the paper's k_T (Eqs. 13–23) uses X_te
+        return
+    if section.x_te_source == "given" and section.x_te is None:
+        raise CaseError("thermal.x_te", None, ">= 0 (or x_te_source = 'calibrated')",
+                        "the paper's thermal stiffness (Luo & Li 2020 Eqs. 13–23) needs the thermal-load "
+                        "correction factor X_te; give thermal.x_te or calibrate it")
+    if section.x_te_source == "calibrated" and section.x_te is not None:
+        raise CaseError("thermal.x_te", section.x_te, "absent with x_te_source = 'calibrated'",
+                        "X_te is either given or calibrated; remove one of them")
 
 
 def case_from_document(document: dict[str, Any], source: str = "<memory>") -> Case:
@@ -171,6 +257,7 @@ def case_from_document(document: dict[str, Any], source: str = "<memory>") -> Ca
                     tip_radius=None if section.tip_diameter_mm is None else section.tip_diameter_mm * 0.5e-3)
 
     centre = None if gears.centre_distance_mm is None else gears.centre_distance_mm * 1e-3
+    check_profile_shift_sum(gears)
     pair = GearPair.create(gear(gears.pinion), gear(gears.wheel), centre, tip_shortening=gears.tip_shortening)
     check_thermoelastic_inputs(pair, model)
     material = model.material
@@ -186,7 +273,7 @@ def case_from_document(document: dict[str, Any], source: str = "<memory>") -> Ca
                         "the equivalent mass needs both inertias")
     if gears.pinion.inertia_kg_m2 is not None:
         inertias = (gears.pinion.inertia_kg_m2, gears.wheel.inertia_kg_m2)
-    return Case(
+    case = Case(
         name=model.case.name, title=model.case.title, citation=model.case.citation,
         assumptions=tuple(model.case.assumptions), gear_pair=pair,
         material=Material(youngs_modulus=material.youngs_modulus_gpa * 1e9, poisson_ratio=material.poisson_ratio,
@@ -197,12 +284,19 @@ def case_from_document(document: dict[str, Any], source: str = "<memory>") -> Ca
         lubricant=model.lubricant, temperature=model.temperature, thermal=model.thermal, damping=model.damping,
         dynamics=model.dynamics, fem=model.fem, source=source, document=document, housing=model.housing,
         gears_input=gears, material_input=material)
+    check_case(case)
+    return case
 
 
 # --------------------------------------------------------------------------------------------- errors
 def _case_error_from_validation(error: pydantic.ValidationError) -> CaseError:
-    """The first pydantic error as a CaseError naming key, value, allowed range and reason."""
-    first = error.errors(include_url=False)[0]
+    """The first pydantic error as a CaseError naming key, value, allowed range and reason. An unknown key is
+    reported before a missing one (a misspelt section name is both: ``[gear]`` for ``[gears]``)."""
+    errors = error.errors(include_url=False)
+    first = next((item for item in errors if item["type"] == "extra_forbidden"), errors[0])
+    raised = (first.get("ctx") or {}).get("error")
+    if isinstance(raised, CaseError):  # a schema validator that names its key, range and reason itself
+        return raised
     location = [str(part) for part in first["loc"] if not isinstance(part, int)]
     key = ".".join(location) or "case"
     value = first.get("input")
@@ -212,6 +306,10 @@ def _case_error_from_validation(error: pydantic.ValidationError) -> CaseError:
         valid = _valid_keys(location[:-1])
         suggestion = closest_key(location[-1], valid)
         hint = f"did you mean '{suggestion}'?" if suggestion else "see `thermogear schema`"
+        if isinstance(value, dict):  # a whole table: a misspelt section
+            hint = f"did you mean '{suggestion}'?" if suggestion else hint
+            return CaseError(key, "{...}", "one of the sections: " + ", ".join(sorted(valid)),
+                             f"unknown section [{key}] ({hint})")
         return CaseError(key, value, "one of: " + ", ".join(sorted(valid)), f"unknown key ({hint})")
     if kind == "missing":
         return CaseError(key, None, "a value", "this key is required")
@@ -221,6 +319,8 @@ def _case_error_from_validation(error: pydantic.ValidationError) -> CaseError:
         allowed = bounds[kind].format(**context)
         reason = "out of range" + (_unit_hint(key, value, context))
         return CaseError(key, value, allowed, reason)
+    if kind in ("finite_number", "float_parsing") and isinstance(value, float):
+        return CaseError(key, value, "a finite number", "NaN or infinity has no meaning here")
     if kind == "literal_error":
         return CaseError(key, value, str(context.get("expected", "")), "not one of the choices")
     if kind == "value_error":
@@ -232,6 +332,12 @@ def _case_error_from_validation(error: pydantic.ValidationError) -> CaseError:
 
 
 def _unit_hint(key: str, value: Any, context: dict) -> str:
+    if key.endswith("_c") and isinstance(value, (int, float)):
+        if value <= -273.15:
+            return ": below absolute zero"
+        if "le" in context:
+            return (": above what the material data cover (room-temperature E, ν and a constant expansion "
+                    "coefficient; gear steels temper at 150–200 °C)")
     if key.endswith("_mm") and isinstance(value, (int, float)) and 0 < value < 0.1:
         return ": this looks like metres, the key is in millimetres"
     if key.endswith("_gpa") and isinstance(value, (int, float)) and value > 1e6:

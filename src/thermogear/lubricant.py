@@ -19,6 +19,7 @@ import numpy as np
 
 from thermogear.case import cached_per_case
 from thermogear.errors import CaseError, ExtrapolationWarning, ModelAssumptionWarning, closest_key
+from thermogear.schema.lubricant import check_viscosity_points
 
 if TYPE_CHECKING:  # pragma: no cover
     from thermogear.case import Case
@@ -51,29 +52,7 @@ def walther_constants(points_c_cst: Sequence[Sequence[float]], key: str = "lubri
     Raises CaseError (naming ``key``) for fewer than two points, repeated temperatures, viscosities below the
     law's range, or a viscosity that does not fall as the temperature rises.
     """
-    points = np.asarray(points_c_cst, dtype=float)
-    if points.size == 0:
-        points = points.reshape(0, 2)
-    if points.ndim != 2 or points.shape[1] != 2:
-        raise CaseError(key, points_c_cst, "[[temperature °C, viscosity mm²/s], ...]",
-                        "each point is a (temperature, kinematic viscosity) pair")
-    if len(points) < 2:
-        raise CaseError(key, points_c_cst, "two or more points",
-                        "a viscosity–temperature law needs at least two points to fix its two constants")
-    if not np.all(np.isfinite(points)):
-        raise CaseError(key, points_c_cst, "finite numbers", "a point is not a number")
-    order = np.argsort(points[:, 0])
-    temperature_c, viscosity = points[order, 0], points[order, 1]
-    if np.any(temperature_c <= -KELVIN):
-        raise CaseError(key, points_c_cst, "temperatures above -273.15 °C", "below absolute zero")
-    if np.any(np.diff(temperature_c) == 0.0):
-        raise CaseError(key, points_c_cst, "distinct temperatures", "two points share a temperature")
-    if np.any(viscosity < 2.0):
-        raise CaseError(key, points_c_cst, "viscosities >= 2 mm²/s",
-                        "the Walther form of ASTM D341 without its low-viscosity correction holds above 2 mm²/s")
-    if np.any(np.diff(viscosity) >= 0.0):
-        raise CaseError(key, points_c_cst, "viscosity decreasing as temperature rises",
-                        "an oil thins when heated; check the order of temperature and viscosity in each point")
+    temperature_c, viscosity = check_viscosity_points(points_c_cst, key)
     x = np.log10(temperature_c + KELVIN)
     y = np.log10(np.log10(viscosity + WALTHER_OFFSET_CST))
     slope, intercept = np.polyfit(x, y, 1)

@@ -131,11 +131,11 @@ def test_case_uniform_field(luo2019):
 
 
 def test_case_uniform_refuses_table_keys(luo2019):
-    case = luo2019.with_changes(temperature={"model": "uniform", "bulk_c": 60.0, "pinion_base_c": 50.0})
+    # refused when the case is loaded (issue 15: one set of checks, at load time)
     with pytest.raises(CaseError, match="pinion_base_c"):
-        temperature_field_from_case(case)
+        luo2019.with_changes(temperature={"model": "uniform", "bulk_c": 60.0, "pinion_base_c": 50.0})
     with pytest.raises(CaseError, match="bulk_c"):
-        temperature_field_from_case(luo2019.with_changes(temperature={"model": "uniform"}))
+        luo2019.with_changes(temperature={"model": "uniform"})
 
 
 def test_case_table_from_csv(luo2019, tmp_path):

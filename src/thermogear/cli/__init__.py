@@ -1,4 +1,5 @@
-"""Command line of thermogear. Each command lives in its own module and registers itself on ``app``."""
+"""Command line of thermogear. Each command lives in its own module, imported only when the command runs
+(:data:`thermogear.cli.app.COMMANDS`), and registers itself on ``app``."""
 
 from __future__ import annotations
 
@@ -7,20 +8,9 @@ import sys
 
 import typer
 
-from thermogear.cli.app import app, error_console
+from thermogear.cli.app import app
+from thermogear.cli.console import install_warning_printer, print_error
 from thermogear.errors import ThermogearError
-
-# Command modules (importing registers their commands).
-from thermogear.cli import cases  # noqa: E402,F401
-from thermogear.cli import check  # noqa: E402,F401
-from thermogear.cli import stiffness  # noqa: E402,F401
-from thermogear.cli import damping  # noqa: E402,F401
-from thermogear.cli import vibration  # noqa: E402,F401
-from thermogear.cli import warmup  # noqa: E402,F401
-from thermogear.cli import sweep  # noqa: E402,F401
-from thermogear.cli import reproduce  # noqa: E402,F401
-from thermogear.cli import run  # noqa: E402,F401
-from thermogear.cli import fem  # noqa: E402,F401
 
 
 def main() -> None:

@@ -12,7 +12,8 @@ from thermogear.cli.app import app, console, print_json
 
 
 @app.command()
-def check(case: str = typer.Argument(..., help="built-in parameter set name or path to a .toml case file"),
+def check(case: str = typer.Argument(..., metavar="CASE",
+                                  help="built-in parameter set name or path to a .toml case file"),
           as_json: bool = typer.Option(False, "--json", help="one JSON object on stdout")) -> None:
     """Validate a case and print its gear-pair geometry (exit status 2 with one clear message if it is invalid)."""
     loaded = load_case(case)
@@ -48,4 +49,4 @@ def check(case: str = typer.Argument(..., help="built-in parameter set name or p
     table.add_row("normal load F_bt [N]", f"{loaded.normal_load:.1f}")
     table.add_row("mesh frequency [Hz]", f"{payload['mesh_frequency_hz']:.2f}")
     console.print(table)
-    console.print("[green]case is valid[/]")
+    console.print("case is valid", style="green")

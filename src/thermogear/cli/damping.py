@@ -18,7 +18,8 @@ from thermogear.warning_causes import distinct_warnings
 
 
 @app.command()
-def damping(case: str = typer.Argument(..., help="built-in parameter set (see `thermogear cases`) or a .toml file"),
+def damping(case: str = typer.Argument(..., metavar="CASE",
+                                    help="built-in parameter set (see `thermogear cases`) or a .toml file"),
             as_json: bool = typer.Option(False, "--json", help="one JSON object on stdout"),
             plot: Path | None = typer.Option(None, "--plot", help="write the figure (Figs. 7–8) to this file"),
             rule: str | None = typer.Option(None, "--rule", help="mesh rule 'paper' or 'parallel' "
@@ -32,7 +33,7 @@ def damping(case: str = typer.Argument(..., help="built-in parameter set (see `t
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         summary = damping_summary(loaded, count=points)
-    messages = sorted({f"{w.category.__name__}: {w.message}" for w in caught})
+    messages = distinct_warnings(str(w.message) for w in caught)  # once per cause
     payload = summary.to_dict()
     payload["warnings"] = messages
     if plot is not None:
@@ -43,7 +44,7 @@ def damping(case: str = typer.Argument(..., help="built-in parameter set (see `t
         print_json(payload)
         return
     for message in messages:
-        error_console.print(f"[yellow]warning:[/] {message}", highlight=False)
+        print_warning(message, error_console)
     table = Table(title=f"Friction damping of {summary.case_name} (rule '{summary.rule}', Eq. 28 stiffness "
                         f"'{summary.stiffness}')")
     table.add_column("quantity")

@@ -14,17 +14,22 @@ from rich.table import Table
 import thermogear.fem.provider  # noqa: F401  (registers the "fem" temperature and X_te providers)
 from thermogear.case import load_case
 from thermogear.cli.app import app, console, print_json
+from thermogear.cli.console import step_progress
 
 
-def fem_summary(case_name: str, refine: bool = True) -> tuple[dict, object]:
-    """(JSON summary, FemAnalysis) of a case; with ``refine`` the study at twice the refinement is added."""
+def fem_summary(case_name: str, refine: bool = True, progress=None) -> tuple[dict, object]:
+    """(JSON summary, FemAnalysis) of a case; with ``refine`` the study at twice the refinement is added.
+    ``progress(step_name)`` is called as each step starts (see :data:`FEM_STEPS`)."""
     from thermogear.fem.verification import cached_analysis, fem_analysis, refinement_change_percent  # noqa: PLC0415
 
+    advance = progress or (lambda name: None)
     start = time.perf_counter()
     case = load_case(case_name)
+    advance(FEM_STEPS[0])
     analysis = cached_analysis(case)
     summary = analysis.summary()
     if refine:
+        advance(FEM_STEPS[1])
         fine = fem_analysis(case, 2.0 * analysis.refinement)
         changes = refinement_change_percent(analysis, fine)
         summary["refinement_change_percent"] = changes["max"]
@@ -35,6 +40,11 @@ def fem_summary(case_name: str, refine: bool = True) -> tuple[dict, object]:
         summary["paper"] = {"flank_temperature_c": [77.0, 81.0], "stiffness_drop_percent": {"A": 8.53, "C": 14.52,
                                                                                             "E": 8.53}}
     return summary, analysis
+
+
+#: The steps of `thermogear fem` as its progress display names them (the refinement study takes most of the time).
+FEM_STEPS = ("FE analysis: heat, elastic and thermo-elastic tooth models",
+             "refinement study at twice the mesh density", "figures")
 
 
 def _save(figure, path: Path) -> None:
@@ -49,26 +59,39 @@ def _save(figure, path: Path) -> None:
 
 
 @app.command()
-def fem(case: str = typer.Argument(..., help="built-in parameter set or case file"),
+def fem(case: str = typer.Argument(..., metavar="CASE", help="built-in parameter set or case file"),
         json_output: bool = typer.Option(False, "--json", help="print the summary as JSON"),
         plot: Path | None = typer.Option(None, "--plot", help="folder for Figs. 3(b), 3(c), 15 (PNG)"),
-        no_refinement: bool = typer.Option(False, "--no-refinement", help="skip the refinement study")) -> None:
+        no_refinement: bool = typer.Option(False, "--no-refinement", help="skip the refinement study"),
+        quiet: bool = typer.Option(False, "--quiet", "-q", help="no progress display (for scripts)")) -> None:
     """Finite-element verification: bulk temperature, FE vs PEM tooth compliance, flank expansion, X_te."""
-    summary, analysis = fem_summary(case, refine=not no_refinement)
-    if plot is not None:
-        from thermogear.fem import plots  # noqa: PLC0415
-
-        plot.mkdir(parents=True, exist_ok=True)
-        for name, draw in (("fig3b_temperature_field.png", plots.plot_temperature_field),
-                           ("fig3c_flank_temperature.png", plots.plot_flank_temperature),
-                           ("fig15_stiffness_along_path.png", plots.plot_stiffness_along_path),
-                           ("fe_vs_pem_tooth_stiffness.png", plots.plot_compliance_comparison)):
-            figure = draw(analysis)
-            _save(figure, plot / name)
-        summary["plots"] = str(plot)
+    steps = [FEM_STEPS[0]] + ([] if no_refinement else [FEM_STEPS[1]]) + ([] if plot is None else [FEM_STEPS[2]])
+    with step_progress(steps, quiet=quiet or json_output) as advance:
+        summary, analysis = fem_summary(case, refine=not no_refinement, progress=advance)
+        if plot is not None:
+            advance(FEM_STEPS[2])
+            _write_figures(plot, analysis)
+            summary["plots"] = str(plot)
     if json_output:
         print_json(summary)
         return
+    _print_table(summary)
+
+
+def _write_figures(plot: Path, analysis) -> None:
+    """Figs. 3(b), 3(c), 15 and the FE vs PEM compliance into the folder ``plot``."""
+    from thermogear.fem import plots  # noqa: PLC0415
+
+    plot.mkdir(parents=True, exist_ok=True)
+    for name, draw in (("fig3b_temperature_field.png", plots.plot_temperature_field),
+                       ("fig3c_flank_temperature.png", plots.plot_flank_temperature),
+                       ("fig15_stiffness_along_path.png", plots.plot_stiffness_along_path),
+                       ("fe_vs_pem_tooth_stiffness.png", plots.plot_compliance_comparison)):
+        figure = draw(analysis)
+        _save(figure, plot / name)
+
+
+def _print_table(summary: dict) -> None:
     table = Table(title=f"FE verification — {summary['case']}")
     table.add_column("quantity")
     table.add_column("value", justify="right")

@@ -16,7 +16,7 @@ PAPERS = {"luo2019": "luo2019"}
 
 @app.command()
 def reproduce(
-    paper: str = typer.Argument(..., help="the paper to reproduce: luo2019"),
+    paper: str = typer.Argument(..., metavar="PAPER", help="the paper to reproduce: luo2019"),
     out: Path = typer.Option(None, "--out", help="output folder (default ./thermogear-<paper>/)"),
     force: bool = typer.Option(False, "--force", help="replace an existing output folder"),
     quiet: bool = typer.Option(False, "--quiet", "-q", help="no progress bar and no summary (for scripts)"),

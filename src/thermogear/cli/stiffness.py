@@ -138,7 +138,7 @@ def plot_stiffness(case: Case, ax=None):
 
 
 def _print_table(summary: dict) -> None:
-    console.print(f"[bold]{summary['case']}[/]: contact ratio {summary['contact_ratio']:.4f}, centre distance "
+    console.print(f"{summary['case']}: contact ratio {summary['contact_ratio']:.4f}, centre distance "
                   f"{summary['centre_distance_mm']:.3f} mm, face width {summary['face_width_mm']:.2f} mm, "
                   f"mesh period {summary['mesh_period_s'] * 1e3:.4f} ms")
     table = Table(title="Tooth pair along the path of contact (stiffness per mm of face width)")
@@ -162,7 +162,8 @@ def _print_table(summary: dict) -> None:
 
 @app.command()
 def stiffness(
-    case: str = typer.Argument(..., help="built-in parameter set (see `thermogear cases`) or a .toml case file"),
+    case: str = typer.Argument(..., metavar="CASE",
+                               help="built-in parameter set (see `thermogear cases`) or a .toml case file"),
     as_json: bool = typer.Option(False, "--json", help="one JSON object on stdout"),
     plot: Path | None = typer.Option(None, "--plot", help="write a figure (.png, .svg or .pdf)"),
     thermal: bool = typer.Option(False, "--thermal", help="add the thermal stiffness (thermogear.thermal)"),
@@ -174,7 +175,7 @@ def stiffness(
         warnings.simplefilter("ignore", ExtrapolationWarning)  # collected into the summary instead
         summary, _ = stiffness_summary(loaded)
     for message in summary["warnings"]:
-        error_console.print(f"[yellow]warning (extrapolation):[/] {message}", highlight=False)
+        print_warning(message, error_console)
     if thermal_module is not None:
         summary["thermal"] = thermal_module.thermal_stiffness_summary(loaded)
     if plot is not None:
@@ -194,11 +195,7 @@ def stiffness(
         return
     _print_table(summary)
     if thermal_module is not None:
-        table = Table(title="Thermal stiffness")
-        table.add_column("quantity")
-        table.add_column("value", justify="right")
-        for key, value in summary["thermal"].items():
-            table.add_row(str(key), f"{value:.5g}" if isinstance(value, float) else str(value))
-        console.print(table)
+        for table in dict_tables(f"Thermal mesh (model {summary['thermal']['model']})", summary["thermal"]):
+            console.print(table)
     if plot is not None:
         console.print(f"figure written to {plot}")

@@ -2,19 +2,20 @@
 
 from __future__ import annotations
 
-import json
 import time
 from pathlib import Path
 
 import typer
 
 from thermogear.cli.app import app, console, error_console, print_json
+from thermogear.cli.console import print_warning
+from thermogear.cli.sweep_summary import print_sweep_summary, response_summary
 from thermogear.errors import CaseError
 
 
 @app.command()
 def sweep(
-    case: str = typer.Argument(..., help="built-in parameter set name or path to a .toml case file"),
+    case: str = typer.Argument(..., metavar="CASE", help="built-in parameter set name or path to a .toml case file"),
     vary: list[str] = typer.Option(None, "--vary", help="NAME=VALUES, VALUES 'a:b:n', 'v1,v2,...' or one number; "
                                    "NAME an alias (speed_rpm, torque_nm, oil_temperature_c, x_te, module_mm, ...) "
                                    "or a dotted case key; repeat for a grid (the case's [sweep] table otherwise)"),
@@ -65,8 +66,6 @@ def sweep(
                         scheduler if scheduler not in (None, "serial") else str(out), "a reachable scheduler and a "
                         "writable --out", f"the study could not run: {error}") from None
     elapsed = time.perf_counter() - start
-    for message in run.messages:
-        error_console.print(f"[yellow]warning:[/] {message}", highlight=False)
     figure_path = None
     if plot is not None and "speed_rpm" in study.dims:
         from thermogear.sweep.plots import plot_speed_response
@@ -85,24 +84,16 @@ def sweep(
         "chunks_computed": run.computed,
         "chunks_kept": run.skipped,
         "seconds": elapsed,
-        "unstable_points": int((dataset["stable"] == 0).sum()),
-        "contact_loss_points": int((dataset["contact_loss"] == 1).sum()),
-        "kv_max": {m: float(dataset["kv"].sel(model=m).max()) for m in study.models},
+        **response_summary(dataset, study.models),
         "plot": figure_path,
         "warnings": run.messages,
     }
     if as_json:
+        for message in run.messages:
+            print_warning(message, error_console)
         print_json(summary)
         return
-    console.print(f"[green]study written[/] to {out}: {study.size} points × {len(study.models)} model(s) "
-                  f"in {len(study.blocks())} chunks ({run.computed} computed, {run.skipped} kept) in {elapsed:.1f} s")
-    console.print("dims: " + json.dumps(summary["dims"]) + "; max Kv: "
-                  + ", ".join(f"{m} {v:.4g}" for m, v in summary["kv_max"].items()))
-    if summary["unstable_points"]:
-        console.print(f"[yellow]{summary['unstable_points']} point(s) parametrically unstable (NaN metrics, "
-                      "stable = 0)[/]")
-    if figure_path:
-        console.print(f"plot: {figure_path}")
+    print_sweep_summary(summary, console, error_console)
 
 
 def check_scheduler(address: str | None, timeout: float = 5.0) -> None:

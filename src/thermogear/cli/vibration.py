@@ -38,7 +38,7 @@ def parse_band(text: str | None) -> tuple[float, float] | None:
 
 @app.command()
 def vibration(
-    file: Path = typer.Argument(..., help="CSV (header; a time column in s or --rate) or WAV file"),
+    file: Path = typer.Argument(..., metavar="FILE", help="CSV (header; a time column in s or --rate) or WAV file"),
     column: str | None = typer.Option(None, "--column", help="signal column (CSV) or channel_N / N (WAV)"),
     rate: float | None = typer.Option(None, "--rate", help="sampling rate [Hz] (CSV without a time column)"),
     scale: float = typer.Option(1.0, "--scale", help="multiply the samples (WAV: signal unit per full scale)"),
@@ -112,7 +112,7 @@ def _save(figure, path: Path) -> str:
 
 
 def _print_summary(payload: dict, rows) -> None:
-    console.print(f"[bold]{payload['file']}[/] column {payload['column']}: {payload['samples']} samples at "
+    console.print(f"{payload['file']} column {payload['column']}: {payload['samples']} samples at "
                   f"{payload['sampling_rate_hz']:.6g} Hz ({payload['duration_s']:.4g} s); {payload['method']} "
                   f"spectrum, Hann, Δf = {payload['resolution_hz']:.4g} Hz, {payload['segments']} segment(s)")
     console.print(f"mean |a−ā| = {payload['mean_amplitude']:.4g}, max |a−ā| = {payload['max_amplitude']:.4g}, "

@@ -17,7 +17,8 @@ WARMUP_MODELS = ("first-order",)
 
 @app.command()
 def warmup(
-    case: str = typer.Argument(..., help="built-in parameter set (see `thermogear cases`) or a .toml file"),
+    case: str = typer.Argument(..., metavar="CASE",
+                               help="built-in parameter set (see `thermogear cases`) or a .toml file"),
     temperature_history: str | None = typer.Option(
         None, "--temperature-history",
         help="CSV with time_s|time_min and temperature_c, or luo2019:RPM (the paper's Table 3 run)"),
@@ -91,10 +92,10 @@ def _rig_comparison(base, gear_model: str, as_json: bool, plot: Path | None) -> 
     if as_json:
         print_json(payload)
         return
-    console.print(f"[bold]{comparison.case_name}[/] ({comparison.model} model) beside Luo & Li (2020) Table 3 / Fig. 18")
-    console.print(comparison.markdown(), markup=False)
+    console.print(f"{comparison.case_name} ({comparison.model} model) beside Luo & Li (2020) Table 3 / Fig. 18")
+    console.print(comparison.markdown())
     for note in comparison.notes:
-        console.print(f"• {note}", markup=False)
+        console.print(f"• {note}")
     if plot is not None:
         console.print(f"figure written to {plot}")
 

@@ -8,6 +8,16 @@ from pydantic import Field
 
 from thermogear.schema.base import Section
 
+#: Absolute zero [°C]: no temperature of a case may reach it.
+ABSOLUTE_ZERO_C = -273.15
+#: Highest temperature any case temperature may have [°C] (= thermogear.temperature_field.MATERIAL_MAXIMUM_C: the
+#: material data are room-temperature constants; gear steels temper at 150–200 °C). Repeated here because the
+#: schema imports nothing of the model; a test checks the two agree.
+CASE_MAXIMUM_C = 200.0
+
+#: A temperature of a case [°C]: a finite number above absolute zero and at most CASE_MAXIMUM_C.
+Celsius = Annotated[float, Field(gt=ABSOLUTE_ZERO_C, le=CASE_MAXIMUM_C, allow_inf_nan=False)]
+
 
 class TemperatureSection(Section):
     """Tooth temperature input of the thermal model (°C). ``model`` picks the source:
@@ -19,14 +29,16 @@ class TemperatureSection(Section):
     """
 
     model: Literal["uniform", "tabulated", "fem"] = "uniform"
-    reference_c: float = Field(20.0, description="stress-free (assembly) temperature [°C]")
-    bulk_c: float | None = Field(None, description="uniform bulk temperature [°C]")
-    gamma: list[float] | None = Field(None, description="contact positions Γ of the flank table [–]")
-    flank_c: list[float] | None = Field(None, description="flank temperatures at gamma [°C]")
+    reference_c: Celsius = Field(20.0, description="stress-free (assembly) temperature [°C]")
+    bulk_c: Celsius | None = Field(None, description="uniform bulk temperature [°C]")
+    gamma: list[Annotated[float, Field(allow_inf_nan=False)]] | None = Field(
+        None, description="contact positions Γ of the flank table [–]")
+    flank_c: list[Celsius] | None = Field(None, description="flank temperatures at gamma [°C]")
     csv: str | None = Field(None, description="CSV file with columns gamma, flank_c (relative to the case file)")
     fit_degree: Annotated[int, Field(ge=0, le=12)] = 4
-    pinion_base_c: float | None = Field(None, description="pinion base-circle temperature [°C]")
-    pinion_bore_c: float | None = Field(None, description="pinion bore temperature [°C]")
-    wheel_base_c: float | None = Field(None, description="wheel base-circle temperature [°C]")
-    wheel_bore_c: float | None = Field(None, description="wheel bore temperature [°C]")
-    wheel_flank_offset_c: float = Field(0.0, description="wheel flank temperature minus the pinion's [°C]")
+    pinion_base_c: Celsius | None = Field(None, description="pinion base-circle temperature [°C]")
+    pinion_bore_c: Celsius | None = Field(None, description="pinion bore temperature [°C]")
+    wheel_base_c: Celsius | None = Field(None, description="wheel base-circle temperature [°C]")
+    wheel_bore_c: Celsius | None = Field(None, description="wheel bore temperature [°C]")
+    wheel_flank_offset_c: Annotated[float, Field(ge=-CASE_MAXIMUM_C, le=CASE_MAXIMUM_C, allow_inf_nan=False)] = Field(
+        0.0, description="wheel flank temperature minus the pinion's [°C]")

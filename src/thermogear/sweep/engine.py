@@ -24,6 +24,7 @@ from typing import Any, Callable
 from thermogear.errors import CaseError
 from thermogear.sweep.batch import evaluate_block
 from thermogear.sweep.store import ResultStore
+from thermogear.warning_causes import WarningTally
 
 __all__ = ["StudyRun", "compute_block", "run_study"]
 
@@ -47,26 +48,23 @@ class StudyRun:
 
 
 def _progress(enabled: bool, total: int, completed: int):
-    from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn, \
-        TimeRemainingColumn
+    """The progress bar of a study on stderr, counting grid points (a terminal only; see
+    :func:`thermogear.cli.console.point_progress`). Yields ``advance(points)``."""
+    from thermogear.cli.console import point_progress
 
-    from thermogear.cli.app import error_console
-
-    progress = Progress(TextColumn("[bold]sweep[/]"), BarColumn(), MofNCompleteColumn(), TextColumn("chunks"),
-                        TimeElapsedColumn(), TimeRemainingColumn(), console=error_console, disable=not enabled,
-                        transient=False)
-    task = progress.add_task("sweep", total=total, completed=completed)
-    return progress, task
+    return point_progress("sweep", total=total, completed=completed, unit="points", enabled=enabled)
 
 
 def run_study(study, out: str | Path, scheduler: str | None = None, resume: bool = False, overwrite: bool = False,
               workers: int | None = None, method: str = "batch", progress: bool = True,
-              on_block: Callable[[int], Any] | None = None) -> StudyRun:
+              on_block: Callable[[int], Any] | None = None, dashboard: str | None = None) -> StudyRun:
     """Compute a study into the zarr store ``out`` and return the dataset.
 
     ``resume``: continue the study stored at ``out`` (finished blocks are kept and not recomputed).
     ``workers``: processes of the local cluster (default: all cores). ``method``: ``"batch"`` (fast path) or
     ``"simulation"`` (one Simulation per point). ``on_block(number)`` is called after each block is stored.
+    ``dashboard``: address of the local cluster's Bokeh dashboard (e.g. ``":8787"``); None (default): none is
+    started, so a study opens no port unless asked.
     """
     if method not in METHODS:
         raise CaseError("method", method, " | ".join(METHODS), "unknown evaluation method")
@@ -74,25 +72,23 @@ def run_study(study, out: str | Path, scheduler: str | None = None, resume: bool
     blocks = study.blocks()
     done = store.done_blocks()
     pending = [block for block in blocks if block.number not in done]
-    messages: list[str] = []
+    tally = WarningTally()  # once per cause: a friction warning at 10⁵ unit loads is one message
 
     def finish(block, arrays, block_messages) -> None:
         store.write_block(block, arrays)
-        for text in block_messages:
-            if text not in messages:
-                messages.append(text)
+        tally.update(block_messages)
         if on_block is not None:
             on_block(block.number)
 
-    bar, task = _progress(progress, len(blocks), len(done))
     with ExitStack() as stack:
-        stack.enter_context(bar)
+        advance = stack.enter_context(_progress(progress, study.size,
+                                                sum(block.size for block in blocks if block.number in done)))
         if pending and scheduler == "serial":
             for block in pending:
                 finish(block, *compute_block(study, block, method))
-                bar.advance(task)
+                advance(block.size)
         elif pending:
-            client = stack.enter_context(_client(scheduler, workers))
+            client = stack.enter_context(_client(scheduler, workers, dashboard))
             from distributed import as_completed
 
             shared = client.scatter(study, broadcast=True, hash=False)
@@ -100,21 +96,23 @@ def run_study(study, out: str | Path, scheduler: str | None = None, resume: bool
             try:
                 for future in as_completed(futures):
                     finish(futures[future], *future.result())
-                    bar.advance(task)
+                    advance(futures[future].size)
             finally:
                 client.cancel(list(futures))
-    return StudyRun(store.dataset(), messages, computed=len(pending), skipped=len(done), path=Path(out))
+    return StudyRun(store.dataset(), tally.messages(), computed=len(pending), skipped=len(done), path=Path(out))
 
 
-def _client(scheduler: str | None, workers: int | None):
-    """A distributed Client: on a new LocalCluster (closed with the client) or on a scheduler address."""
+def _client(scheduler: str | None, workers: int | None, dashboard: str | None = None):
+    """A distributed Client: on a new LocalCluster (closed with the client; a dashboard only at ``dashboard``)
+    or on a scheduler address."""
     from distributed import Client, LocalCluster
 
     if scheduler in (None, "", "local"):
         count = workers or os.cpu_count() or 1
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
-            cluster = LocalCluster(n_workers=count, threads_per_worker=1, processes=True, dashboard_address=None)
+            cluster = LocalCluster(n_workers=count, threads_per_worker=1, processes=True,
+                                   dashboard_address=dashboard)
         return _OwnedClient(Client(cluster), cluster)
     if workers is not None:
         raise CaseError("workers", workers, "only with the local cluster",

@@ -12,8 +12,8 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["QUANTITY_LABELS", "find_resonance", "plot_map", "plot_speed_response", "resonance_peaks",
-           "resonance_speeds", "unstable_bands"]
+__all__ = ["QUANTITY_LABELS", "find_resonance", "linear_model_valid", "plot_map", "plot_speed_response",
+           "resonance_peaks", "resonance_speeds", "unstable_bands"]
 
 #: Axis labels and display scale of the plotted quantities.
 QUANTITY_LABELS: dict[str, tuple[str, float]] = {
@@ -39,6 +39,13 @@ def _select(dataset, select: dict[str, Any] | None, keep: tuple[str, ...]):
             chosen[dim] = dataset[dim].values[0]
     picked = dataset.sel(chosen) if chosen else dataset
     return picked, chosen
+
+
+def linear_model_valid(dataset):
+    """Per model and point: True where the linear mesh model holds (a stable periodic steady state and no contact
+    loss). Elsewhere Kv and the other responses are those of teeth that would separate or of an unstable
+    solution (Kv of several hundred), not of the gear pair: summaries leave them out and plots mark them."""
+    return (dataset["stable"] == 1) & (dataset["contact_loss"] == 0)
 
 
 def _pinion_teeth(dataset) -> float:
@@ -144,12 +151,19 @@ def plot_speed_response(dataset, quantities=("kv", "dte_rms", "dte_peak_to_peak"
         axes = list(np.atleast_1d(ax))
         figure = axes[0].figure
     speeds = np.asarray(picked[SPEED], dtype=float)
+    valid = linear_model_valid(picked)
     for axis, quantity in zip(axes, quantities):
         label, scale = QUANTITY_LABELS.get(quantity, (quantity, 1.0))
         for model in picked["model"].values:
             style = _MODEL_STYLE.get(str(model), {})
-            axis.plot(speeds, np.asarray(picked[quantity].sel(model=model), dtype=float) * scale,
-                      label=str(model), **style)
+            values = np.asarray(picked[quantity].sel(model=model), dtype=float) * scale
+            holds = np.asarray(valid.sel(model=model), dtype=bool)
+            axis.plot(speeds, np.where(holds, values, np.nan), label=str(model), **style)
+            lost = ~holds & np.isfinite(values)
+            if lost.any():  # contact loss: the linear model's number, marked and not joined to the curve
+                axis.plot(speeds[lost], values[lost], linestyle="none", marker="x", markersize=3, alpha=0.5,
+                          color=style.get("color", "grey"),
+                          label=f"{model}: contact loss (linear model invalid)")
             for low, high in unstable_bands(dataset, str(model), select=chosen):
                 axis.axvspan(low, high, color=style.get("color", "grey"), alpha=0.12, linewidth=0)
             for order, speed in resonance_speeds(dataset, str(model), orders, select=chosen).items():
@@ -158,7 +172,7 @@ def plot_speed_response(dataset, quantities=("kv", "dte_rms", "dte_peak_to_peak"
                     axis.annotate(f"{order}·f_m = f_n", (speed, 1.0), xycoords=("data", "axes fraction"),
                                   rotation=90, va="top", ha="right", fontsize=7, color=style.get("color", "grey"))
         axis.set_ylabel(label)
-        finite = np.asarray(picked[quantity], dtype=float)
+        finite = np.asarray(picked[quantity].where(valid), dtype=float)
         finite = finite[np.isfinite(finite) & (finite > 0)]
         if finite.size and finite.max() > 50.0 * np.median(finite):
             axis.set_yscale("log")
@@ -181,7 +195,8 @@ def plot_map(dataset, quantity: str = "kv", x: str | None = None, y: str | None 
     x = x or (SPEED if SPEED in dims else dims[-1])
     y = y or next(d for d in dims if d != x)
     picked, chosen = _select(dataset, select, keep=(x, y))
-    values = picked[quantity].sel(model=model).transpose(y, x)
+    # points where the linear model does not hold (contact loss, instability) are left blank
+    values = picked[quantity].where(linear_model_valid(picked)).sel(model=model).transpose(y, x)
     label, scale = QUANTITY_LABELS.get(quantity, (quantity, 1.0))
     if ax is None:
         figure, ax = plt.subplots(figsize=(7.0, 4.5))
@@ -192,7 +207,7 @@ def plot_map(dataset, quantity: str = "kv", x: str | None = None, y: str | None 
     figure.colorbar(mesh, ax=ax, label=label)
     ax.set_xlabel(x)
     ax.set_ylabel(y)
-    title = f"{quantity} ({model})"
+    title = f"{quantity} ({model}; blank: contact loss or unstable)"
     if chosen:
         title += " — " + ", ".join(f"{k} = {v}" for k, v in chosen.items())
     ax.set_title(title, fontsize=9)

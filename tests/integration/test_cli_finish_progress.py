@@ -1,0 +1,50 @@
+"""Progress: the FE command names its steps; bars show on a terminal only (issue 15, part B)."""
+
+from __future__ import annotations
+
+import io
+import subprocess
+import sys
+from types import SimpleNamespace
+
+from thermogear.cli import fem as fem_command
+from thermogear.cli.console import PlainConsole, point_progress, step_progress
+
+
+def test_fem_summary_reports_each_step(monkeypatch):
+    import thermogear.fem.verification as verification
+
+    class Analysis(SimpleNamespace):
+        def summary(self):
+            return {"case": "luo2019"}
+
+    monkeypatch.setattr(verification, "cached_analysis", lambda case: Analysis(refinement=1.0))
+    monkeypatch.setattr(verification, "fem_analysis", lambda case, refinement: Analysis(refinement=refinement))
+    monkeypatch.setattr(verification, "refinement_change_percent", lambda coarse, fine: {"max": 0.5})
+    steps = []
+    summary, _ = fem_command.fem_summary("luo2019", refine=True, progress=steps.append)
+    assert steps == list(fem_command.FEM_STEPS[:2])
+    assert summary["refinement_compared"] == [1.0, 2.0]
+
+
+def test_bars_show_on_a_terminal_only():
+    terminal = PlainConsole(file=io.StringIO(), force_terminal=True, width=100)
+    with point_progress("sweep", total=10, console=terminal) as advance:
+        advance(4)
+        advance(6)
+    assert "10/10" in terminal.file.getvalue() and "points" in terminal.file.getvalue()
+    pipe = PlainConsole(file=io.StringIO())
+    with point_progress("sweep", total=10, console=pipe) as advance, \
+            step_progress(["one", "two"], console=pipe) as step:
+        advance(10)
+        step("one")
+    assert pipe.file.getvalue() == ""
+    quiet = PlainConsole(file=io.StringIO(), force_terminal=True)
+    with step_progress(["one"], quiet=True, console=quiet) as step:
+        step("one")
+    assert quiet.file.getvalue() == ""
+
+
+def test_fem_has_a_quiet_option():
+    result = subprocess.run([sys.executable, "-m", "thermogear", "fem", "--help"], capture_output=True, text=True)
+    assert "--quiet" in result.stdout

@@ -1,0 +1,82 @@
+"""Start-up of the command line: commands load lazily, `--help` still lists every command (issue 15, part B).
+
+Speed itself is measured in benchmarks/bench_startup.py (ratios against `python -c pass`); these tests check
+what makes it fast and cannot flake on a loaded machine: which modules a command imports.
+"""
+
+from __future__ import annotations
+
+import importlib
+import inspect
+import subprocess
+import sys
+
+import pytest
+
+from thermogear.cli.app import COMMANDS, app, first_sentence
+
+HEAVY = ("scipy", "matplotlib", "numba", "dask", "distributed", "zarr", "xarray", "skfem")
+
+
+# Runs the console script's main() and lists sys.modules at exit (importlib.import_module, which the lazy group
+# uses, does not show in `python -X importtime`).
+DRIVER = """
+import atexit, sys
+output = sys.argv.pop(1)
+atexit.register(lambda: open(output, "w").write(" ".join(sorted(sys.modules))))
+sys.argv[0] = "thermogear"
+from thermogear.cli import main
+main()
+"""
+
+
+def imported_modules(tmp_path, *arguments: str) -> set[str]:
+    """Modules a fresh `thermogear ARGUMENTS` process has imported when it exits."""
+    listing = tmp_path / "modules.txt"
+    result = subprocess.run([sys.executable, "-c", DRIVER, str(listing), *arguments], capture_output=True,
+                            text=True)
+    assert result.returncode == 0, result.stderr[-2000:]
+    return set(listing.read_text().split())
+
+
+def test_help_lists_every_command_without_importing_one(tmp_path):
+    modules = imported_modules(tmp_path, "--help")
+    command_modules = {entry.module for entry in COMMANDS.values()}
+    assert not modules & command_modules
+    assert not {m for m in modules if m.split(".")[0] in HEAVY}
+    assert "numpy" not in modules and "thermogear.case" not in modules
+
+
+def test_cases_imports_only_its_own_module(tmp_path):
+    modules = imported_modules(tmp_path, "cases")
+    assert {m for m in modules if m.startswith("thermogear.cli.") and m not in (
+        "thermogear.cli.app", "thermogear.cli.console")} == {"thermogear.cli.cases"}
+    assert not {m for m in modules if m.split(".")[0] in HEAVY}
+
+
+def test_help_text_lists_every_command_with_its_one_line_help():
+    result = subprocess.run([sys.executable, "-m", "thermogear", "--help"], capture_output=True, text=True)
+    text = " ".join(result.stdout.split())
+    for name, entry in COMMANDS.items():
+        assert f"{name} {entry.help}" in text
+
+
+@pytest.mark.parametrize("name", sorted(COMMANDS))
+def test_listed_help_is_the_first_sentence_of_the_command_docstring(name: str):
+    importlib.import_module(COMMANDS[name].module)
+    callbacks = {(info.name or info.callback.__name__.replace("_", "-")): info.callback
+                 for info in app.registered_commands}
+    assert name in callbacks, f"{COMMANDS[name].module} registers no command '{name}'"
+    assert COMMANDS[name].help == first_sentence(inspect.getdoc(callbacks[name]))
+
+
+def test_a_mistyped_command_is_answered_with_the_closest_one():
+    result = subprocess.run([sys.executable, "-m", "thermogear", "stifness", "luo2019"], capture_output=True,
+                            text=True)
+    assert result.returncode == 2
+    assert "stiffness" in result.stderr
+
+
+def test_first_sentence():
+    assert first_sentence("Run a study. Then more.\n\nDetails.") == "Run a study."
+    assert first_sentence("Two lines\nof one sentence (e.g. this).") == "Two lines of one sentence (e.g. this)."

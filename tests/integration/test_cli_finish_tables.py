@@ -1,0 +1,70 @@
+"""`stiffness --thermal` as tables with units, whatever keys its JSON gains (issue 15, part B)."""
+
+from __future__ import annotations
+
+import io
+import json
+import re
+import subprocess
+import sys
+
+import pytest
+from rich.console import Console
+
+from thermogear.cli.tables import dict_tables, format_value, split_unit
+
+
+def render(data: dict) -> str:
+    console = Console(file=io.StringIO(), width=200, markup=False, emoji=False, highlight=False)
+    for item in dict_tables("Thermal stiffness", data):
+        console.print(item)
+    return console.file.getvalue()
+
+
+@pytest.mark.parametrize(("key", "label", "unit"), [
+    ("flank_temperature_c", "flank temperature", "°C"),
+    ("thermal_stiffness_n_per_mm_um", "thermal stiffness", "N/(mm·μm)"),
+    ("normal_load_n_per_mm", "normal load", "N/mm"),
+    ("expansion_pinion_um", "expansion pinion", "μm"),
+    ("stiffness_drop_percent_range", "stiffness drop range", "%"),
+    ("x_te", "x te", None),
+    ("load_basis", "load basis", None),
+])
+def test_units_come_from_the_key(key, label, unit):
+    assert split_unit(key) == (label, unit)
+
+
+def test_values_are_short():
+    assert format_value(14.52000000000001) == "14.52"
+    assert format_value(0.21662311627157446) == "0.21662"
+    assert format_value(True) == "yes" and format_value(None) == "—"
+    assert format_value([-0.6, 0.55]) == "[-0.6, 0.55]"
+
+
+def test_nested_summary_gives_rows_and_a_matrix():
+    data = {"x_te": 0.21662311627157446,
+            "stiffness_drop_percent": {"A": 10.447797676446003, "C": 14.52000000000001},
+            "points": {"A": {"flank_temperature_c": 80.57687607782132, "gamma": -0.5391880507140497},
+                       "C": {"flank_temperature_c": 77.06897948160419, "gamma": 0.0}},
+            "new_key_mpa_s": 1.23456789,
+            "x_te_source": "calibrated: X_te=0.21662 gives 14.52 % drop at C [external basis]"}
+    text = render(data)
+    assert not re.search(r"\d\.\d{7,}", text)  # no 16-digit floats
+    assert "stiffness drop, A" in text and "10.448" in text and "%" in text
+    assert re.search(r"flank temperature\s*│\s*80\.577\s*│\s*77\.069\s*│\s*°C", text)  # one column per point
+    assert "mPa·s" in text  # a key nobody told the table about
+    assert "x te source: calibrated: X_te=0.21662 gives 14.52 % drop at C [external basis]" in text
+
+
+def test_stiffness_thermal_prints_tables_not_dicts():
+    result = subprocess.run([sys.executable, "-m", "thermogear", "stiffness", "luo2019", "--thermal"],
+                            capture_output=True, text=True)
+    assert result.returncode == 0, result.stderr
+    text = result.stdout
+    assert "{'" not in text and "':" not in text  # no Python dict reprs
+    assert not re.search(r"\d\.\d{9,}", text)
+    assert "N/(mm·μm)" in text and "°C" in text and "μm" in text
+    # every number of the JSON's thermal block has a row: the drop at C to 5 digits
+    data = json.loads(subprocess.run([sys.executable, "-m", "thermogear", "stiffness", "luo2019", "--thermal",
+                                      "--json"], capture_output=True, text=True).stdout)
+    assert format_value(data["thermal"]["stiffness_drop_percent"]["C"]) in text
