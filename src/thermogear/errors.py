@@ -37,6 +37,20 @@ class CaseError(ThermogearError, ValueError):
         super().__init__(f"{key} = {value!r}: allowed {allowed}; {reason}")
 
 
+class ProblemError(ThermogearError, ValueError):
+    """An invalid input to a solver: the arrays a mesh model hands over, or what a user passes to a solver
+    directly. It names the solver's quantity (``"nodes"``, ``"stiffness"``), not a case-file key: a solver
+    knows nothing of gears or case files.
+    """
+
+    def __init__(self, quantity: str, value: object, allowed: str, reason: str) -> None:
+        self.quantity = quantity
+        self.value = value
+        self.allowed = allowed
+        self.reason = reason
+        super().__init__(f"solver input {quantity} = {value!r}: allowed {allowed}; {reason}")
+
+
 class ModelLimitError(ThermogearError, RuntimeError):
     """The model cannot give a valid answer at this operating point (e.g. parametric instability)."""
 

@@ -15,7 +15,7 @@ from scipy.linalg import expm
 from thermogear.dynamics import (MeshDynamicsProblem, evaluate_orbit, floquet_multipliers, periodic_steady_state,
                                  periodic_steady_state_batch, reference_solve_ivp)
 from thermogear.dynamics.periodic import monodromy, periodic_initial_state
-from thermogear.errors import CaseError, ModelLimitError
+from thermogear.errors import ProblemError, ModelLimitError
 
 MASS = 1.0  # [kg]
 OMEGA = 2.0 * np.pi * 100.0  # natural circular frequency of the single-contact stiffness [rad/s]
@@ -167,7 +167,7 @@ def test_sample_count_does_not_change_the_orbit():
 
 @pytest.mark.parametrize("samples", [0, -3, 2.5])
 def test_bad_sample_count_is_refused(samples):
-    with pytest.raises(CaseError, match="samples_per_interval"):
+    with pytest.raises(ProblemError, match="samples_per_interval"):
         periodic_steady_state(square_wave(0.3), samples_per_interval=samples)
 
 
@@ -228,11 +228,11 @@ def test_batch_equals_one_solve_per_point_and_marks_unstable_points():
 
 def test_batch_refuses_bad_shapes_and_values():
     base = square_wave(0.3)
-    with pytest.raises(CaseError, match="nodes"):
+    with pytest.raises(ProblemError, match="nodes"):
         periodic_steady_state_batch(MASS, base.nodes[:-1], base.stiffness[None, :], base.damping[None, :], FORCE)
-    with pytest.raises(CaseError):
+    with pytest.raises(ProblemError):
         periodic_steady_state_batch(MASS, base.nodes, -base.stiffness[None, :], base.damping[None, :], FORCE)
-    with pytest.raises(CaseError):
+    with pytest.raises(ProblemError):
         periodic_steady_state_batch(MASS, base.nodes, np.array([[np.nan, 1.0]]), base.damping[None, :], FORCE)
 
 

@@ -16,7 +16,7 @@ from thermogear.dynamics import (MeshDynamicsProblem, evaluate_orbit, periodic_s
                                  transient_from_rest)
 from thermogear.dynamics.response import compute_metrics, response_from_orbit, response_from_transient
 from thermogear.dynamics.spectra import harmonic_spectrum, signal_spectrum
-from thermogear.errors import CaseError, ModelAssumptionWarning, ModelLimitError
+from thermogear.errors import CaseError, ProblemError, ModelAssumptionWarning, ModelLimitError
 
 MASS = 1.0
 OMEGA = 2.0 * np.pi * 100.0
@@ -289,9 +289,10 @@ def _arguments(**changes):
     ({"pair_damping": [[5.0, 8.0], [5.0, 0.0]]}, "pair_damping"), ({"face_width": 0.0}, "face_width"),
 ])
 def test_bad_problem_inputs_are_refused_naming_the_key(changes, key):
-    with pytest.raises(CaseError) as error:
+    with pytest.raises(ProblemError) as error:
         MeshDynamicsProblem(**_arguments(**changes))
-    assert error.value.key == key
+    assert error.value.quantity == key  # a solver quantity, not a case-file key
+    assert not isinstance(error.value, CaseError)
     assert error.value.allowed and error.value.reason
 
 
@@ -313,7 +314,7 @@ def test_derived_quantities_of_the_problem():
     np.testing.assert_allclose(problem.static_transmission_error, [100.0 / 2e5, 100.0 / 1e5])
     assert problem.regions == (1, 2) and region_name(1) == "single" and region_name(2) == "double"
     assert region_name(7) == "7_pairs"
-    with pytest.raises(CaseError, match="contact_ratio"):
+    with pytest.raises(ProblemError, match="contact_ratio"):
         MeshDynamicsProblem.square_wave(mass=1.0, mesh_period=1e-3, contact_ratio=2.2, single_stiffness=1e5,
                                         double_stiffness=2e5, single_damping=1.0, double_damping=1.0, force=1.0)
 
@@ -358,7 +359,7 @@ def test_harmonic_and_signal_spectra_of_a_sine():
 
 
 def test_spectrum_refuses_an_unknown_quantity():
-    with pytest.raises(CaseError, match="quantity"):
+    with pytest.raises(ProblemError, match="quantity"):
         orbit_response(square_wave(), samples=4).spectrum("temperature")
 
 

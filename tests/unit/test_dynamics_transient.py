@@ -11,7 +11,7 @@ import pytest
 from thermogear.dynamics import (MeshDynamicsProblem, largest_safe_step, periodic_steady_state, reference_solve_ivp,
                                  transient_from_rest, transient_python)
 from thermogear.dynamics.transient import DEFAULT_OMEGA_STEP, default_steps_per_interval
-from thermogear.errors import CaseError
+from thermogear.errors import ProblemError
 
 MASS = 1.0
 OMEGA = 2.0 * np.pi * 100.0
@@ -122,14 +122,14 @@ def test_too_coarse_a_step_is_refused_with_the_largest_safe_step():
     assert largest_safe_step(problem) == pytest.approx(1.0 / omega_max, rel=1e-12)
     shortest = problem.durations.max()  # the longest interval sets the step for a given count
     coarse = int(np.floor(shortest * OMEGA / 1.5))  # ω·h ≈ 1.5 on the single-contact interval
-    with pytest.raises(CaseError) as error:
+    with pytest.raises(ProblemError) as error:
         transient_from_rest(problem, periods=1, steps_per_interval=coarse)
     message = str(error.value)
     stated = float(re.search(r"largest safe step ([0-9.eE+-]+) s", message).group(1))
     assert stated == pytest.approx(1.0 / omega_max, rel=1e-3)  # printed with 4 significant digits
     needed = int(re.search(r">= (\d+)", message).group(1))
     transient_from_rest(problem, periods=1, steps_per_interval=needed)  # the stated count is accepted
-    with pytest.raises(CaseError):
+    with pytest.raises(ProblemError):
         transient_from_rest(problem, periods=1, steps_per_interval=needed - 1)
 
 
@@ -170,11 +170,11 @@ def test_history_period_views():
                                          ({"periods": 1, "x0": np.nan}, "x0"),
                                          ({"periods": 10**9}, "periods")])
 def test_bad_transient_arguments_are_refused(kwargs, key):
-    with pytest.raises(CaseError, match=key):
+    with pytest.raises(ProblemError, match=key):
         transient_from_rest(square_wave(), **kwargs)
 
 
 @pytest.mark.parametrize("kwargs, key", [({"periods": 0}, "periods"), ({"periods": 1, "rtol": 2.0}, "rtol")])
 def test_bad_reference_arguments_are_refused(kwargs, key):
-    with pytest.raises(CaseError, match=key):
+    with pytest.raises(ProblemError, match=key):
         reference_solve_ivp(square_wave(), **kwargs)

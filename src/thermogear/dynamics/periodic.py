@@ -23,7 +23,7 @@ import numba
 import numpy as np
 
 from thermogear.dynamics.problem import MeshDynamicsProblem
-from thermogear.errors import CaseError, ModelLimitError
+from thermogear.errors import ProblemError, ModelLimitError
 
 __all__ = ["PeriodicOrbit", "evaluate_orbit", "floquet_multipliers", "periodic_initial_state",
            "periodic_steady_state", "periodic_steady_state_batch"]
@@ -308,7 +308,7 @@ def periodic_steady_state(problem: MeshDynamicsProblem, samples_per_interval: in
         the multipliers lie on the unit circle): there is no attracting periodic orbit to return.
     """
     if int(samples_per_interval) != samples_per_interval or samples_per_interval < 1:
-        raise CaseError("samples_per_interval", samples_per_interval, "integer >= 1",
+        raise ProblemError("samples_per_interval", samples_per_interval, "integer >= 1",
                         "number of equal sub-steps per interval at which the orbit is evaluated")
     (x0, v0), multipliers = periodic_initial_state(problem)
     time, x, v, interval = _sample_kernel(*_problem_arrays(problem), x0, v0, int(samples_per_interval))
@@ -352,19 +352,19 @@ def periodic_steady_state_batch(mass: float | np.ndarray, nodes: np.ndarray, sti
     stiffness = np.ascontiguousarray(np.atleast_2d(np.asarray(stiffness, dtype=float)))
     count, n = stiffness.shape
     if nodes.shape != (n + 1,):
-        raise CaseError("nodes", f"shape {nodes.shape}", f"shape ({n + 1},)", "one more node than intervals")
+        raise ProblemError("nodes", f"shape {nodes.shape}", f"shape ({n + 1},)", "one more node than intervals")
     damping = np.ascontiguousarray(np.broadcast_to(np.asarray(damping, dtype=float), (count, n)))
     force_array = np.asarray(force, dtype=float)
     if force_array.ndim == 1 and force_array.shape[0] == count and count != n:
         force_array = force_array[:, None]
     elif force_array.ndim == 1 and count == n and count != 1:
-        raise CaseError("force", f"shape {force_array.shape}", f"scalar, ({count}, 1) or ({count}, {n})",
+        raise ProblemError("force", f"shape {force_array.shape}", f"scalar, ({count}, 1) or ({count}, {n})",
                         "with as many points as intervals a 1-D force is ambiguous; pass it 2-D")
     force_array = np.ascontiguousarray(np.broadcast_to(force_array, (count, n)))
     mass_array = np.ascontiguousarray(np.broadcast_to(np.asarray(mass, dtype=float), (count,)))
     if np.any(stiffness <= 0.0) or np.any(damping < 0.0) or np.any(mass_array <= 0.0):
-        raise CaseError("stiffness/damping/mass", "non-positive value", "k > 0, c >= 0, me > 0",
+        raise ProblemError("stiffness/damping/mass", "non-positive value", "k > 0, c >= 0, me > 0",
                         "the linear mesh model needs positive stiffness and mass and non-negative damping")
     if not (np.all(np.isfinite(stiffness)) and np.all(np.isfinite(damping)) and np.all(np.isfinite(force_array))):
-        raise CaseError("stiffness/damping/force", "non-finite value", "finite numbers", "NaN has no meaning here")
+        raise ProblemError("stiffness/damping/force", "non-finite value", "finite numbers", "NaN has no meaning here")
     return _batch_kernel(mass_array, nodes, stiffness, damping, force_array)

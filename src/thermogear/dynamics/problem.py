@@ -13,7 +13,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from thermogear.errors import CaseError
+from thermogear.errors import ProblemError
 
 __all__ = ["MeshDynamicsProblem", "region_name"]
 
@@ -28,10 +28,10 @@ def region_name(contact_count: int) -> str:
 def _as_float_array(name: str, value: object, shape: tuple[int, ...]) -> np.ndarray:
     array = np.array(value, dtype=float, copy=True)
     if array.shape != shape:
-        raise CaseError(name, f"array of shape {array.shape}", f"shape {shape}",
+        raise ProblemError(name, f"array of shape {array.shape}", f"shape {shape}",
                         "one value per interval between consecutive nodes")
     if not np.all(np.isfinite(array)):
-        raise CaseError(name, f"{int(np.sum(~np.isfinite(array)))} non-finite values", "finite numbers",
+        raise ProblemError(name, f"{int(np.sum(~np.isfinite(array)))} non-finite values", "finite numbers",
                         "a NaN or infinite coefficient has no physical meaning")
     array.setflags(write=False)
     return array
@@ -61,6 +61,10 @@ class MeshDynamicsProblem:
         in proportion to the pair stiffness when a pair load including the damping force is asked for.
     face_width:
         Face width b [m], only for per-width views of loads (N/mm) in metrics.
+    pair_deviation:
+        Optional (slots, n) unloaded deviation e_i of each pair [m] (positive: material missing). The equation is
+        then me·ẍ + c·ẋ + Σ k_i·(x − e_i) = w, i.e. ``force`` = w + Σ k_i·e_i per interval, and a pair's load is
+        k_i·(x − e_i); the static load w0 is ``force`` less that excitation.
     """
 
     mass: float
@@ -72,35 +76,36 @@ class MeshDynamicsProblem:
     pair_stiffness: np.ndarray | None = None
     pair_damping: np.ndarray | None = None
     face_width: float = 1.0
+    pair_deviation: np.ndarray | None = None
     _force_array: np.ndarray = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         mass = float(self.mass)
         if not np.isfinite(mass) or mass <= 0.0:
-            raise CaseError("mass", self.mass, "> 0 kg, finite", "the equivalent mass me of Eq. (5) must be positive")
+            raise ProblemError("mass", self.mass, "> 0 kg, finite", "the equivalent mass me of Eq. (5) must be positive")
         object.__setattr__(self, "mass", mass)
         nodes = np.array(self.nodes, dtype=float, copy=True)
         if nodes.ndim != 1 or nodes.size < 2:
-            raise CaseError("nodes", f"array of shape {nodes.shape}", "1-D, at least 2 values",
+            raise ProblemError("nodes", f"array of shape {nodes.shape}", "1-D, at least 2 values",
                             "the nodes bound the intervals of one mesh period")
         if not np.all(np.isfinite(nodes)):
-            raise CaseError("nodes", "non-finite values", "finite times [s]", "a node time must be a number")
+            raise ProblemError("nodes", "non-finite values", "finite times [s]", "a node time must be a number")
         if nodes[0] != 0.0:
-            raise CaseError("nodes[0]", float(nodes[0]), "0", "the mesh period starts at τ = 0")
+            raise ProblemError("nodes[0]", float(nodes[0]), "0", "the mesh period starts at τ = 0")
         if np.any(np.diff(nodes) <= 0.0):
-            raise CaseError("nodes", "not strictly increasing", "strictly increasing times",
+            raise ProblemError("nodes", "not strictly increasing", "strictly increasing times",
                             "each interval must have a positive length")
         nodes.setflags(write=False)
         object.__setattr__(self, "nodes", nodes)
         n = nodes.size - 1
         stiffness = _as_float_array("stiffness", self.stiffness, (n,))
         if np.any(stiffness <= 0.0):
-            raise CaseError("stiffness", float(stiffness.min()), "> 0 N/m on every interval",
+            raise ProblemError("stiffness", float(stiffness.min()), "> 0 N/m on every interval",
                             "the linear mesh model needs at least one pair in contact; zero stiffness is contact "
                             "loss, which this linear model does not represent")
         damping = _as_float_array("damping", self.damping, (n,))
         if np.any(damping < 0.0):
-            raise CaseError("damping", float(damping.min()), ">= 0 N·s/m", "negative damping injects energy")
+            raise ProblemError("damping", float(damping.min()), ">= 0 N·s/m", "negative damping injects energy")
         force_value = np.array(self.force, dtype=float)
         if force_value.ndim == 0:
             force_array = np.full(n, float(force_value))
@@ -109,17 +114,17 @@ class MeshDynamicsProblem:
             force_array = _as_float_array("force", force_value, (n,))
             object.__setattr__(self, "force", force_array)
         if not np.all(np.isfinite(force_array)):
-            raise CaseError("force", self.force, "finite [N]", "the static load must be a number")
+            raise ProblemError("force", self.force, "finite [N]", "the static load must be a number")
         if np.any(force_array <= 0.0):
-            raise CaseError("force", float(force_array.min()), "> 0 N",
+            raise ProblemError("force", float(force_array.min()), "> 0 N",
                             "the mesh is modelled under a positive transmitted load")
         force_array.setflags(write=False)
         contact = np.array(self.contact_count, copy=True)
         if contact.shape != (n,):
-            raise CaseError("contact_count", f"array of shape {contact.shape}", f"shape ({n},)",
+            raise ProblemError("contact_count", f"array of shape {contact.shape}", f"shape ({n},)",
                             "one pair count per interval")
         if not np.all(np.isfinite(contact.astype(float))) or np.any(contact != np.round(contact)) or np.any(contact < 1):
-            raise CaseError("contact_count", contact.tolist()[:8], "integers >= 1",
+            raise ProblemError("contact_count", contact.tolist()[:8], "integers >= 1",
                             "the number of tooth pairs in contact on each interval")
         contact = contact.astype(np.int64)
         contact.setflags(write=False)
@@ -131,26 +136,33 @@ class MeshDynamicsProblem:
             pair_k = np.atleast_2d(np.array(self.pair_stiffness, dtype=float))
             pair_k = _as_float_array("pair_stiffness", pair_k, (pair_k.shape[0], n))
             if np.any(pair_k < 0.0):
-                raise CaseError("pair_stiffness", float(pair_k.min()), ">= 0 N/m", "0 marks a pair out of contact")
+                raise ProblemError("pair_stiffness", float(pair_k.min()), ">= 0 N/m", "0 marks a pair out of contact")
             total = pair_k.sum(axis=0)
             if not np.allclose(total, stiffness, rtol=1e-6, atol=0.0):
                 worst = float(np.max(np.abs(total - stiffness) / stiffness))
-                raise CaseError("pair_stiffness", f"sum over pairs off by {worst:.3g} (relative)",
+                raise ProblemError("pair_stiffness", f"sum over pairs off by {worst:.3g} (relative)",
                                 "sum over pairs equal to stiffness (rtol 1e-6)",
                                 "pairs in contact act in parallel, so their stiffnesses add up to the mesh stiffness")
             object.__setattr__(self, "pair_stiffness", pair_k)
         if self.pair_damping is not None:
             if self.pair_stiffness is None:
-                raise CaseError("pair_damping", "given", "only together with pair_stiffness",
+                raise ProblemError("pair_damping", "given", "only together with pair_stiffness",
                                 "pair loads need the pair stiffness")
             pair_c = np.atleast_2d(np.array(self.pair_damping, dtype=float))
             pair_c = _as_float_array("pair_damping", pair_c, self.pair_stiffness.shape)
             if np.any(pair_c < 0.0):
-                raise CaseError("pair_damping", float(pair_c.min()), ">= 0 N·s/m", "negative damping injects energy")
+                raise ProblemError("pair_damping", float(pair_c.min()), ">= 0 N·s/m", "negative damping injects energy")
             object.__setattr__(self, "pair_damping", pair_c)
+        if self.pair_deviation is not None:
+            if self.pair_stiffness is None:
+                raise ProblemError("pair_deviation", "given", "only together with pair_stiffness",
+                                   "a deviation acts through its pair's stiffness")
+            deviation = _as_float_array("pair_deviation", np.atleast_2d(np.array(self.pair_deviation, dtype=float)),
+                                        self.pair_stiffness.shape)
+            object.__setattr__(self, "pair_deviation", deviation)
         face_width = float(self.face_width)
         if not np.isfinite(face_width) or face_width <= 0.0:
-            raise CaseError("face_width", self.face_width, "> 0 m", "used to express loads per unit face width")
+            raise ProblemError("face_width", self.face_width, "> 0 m", "used to express loads per unit face width")
         object.__setattr__(self, "face_width", face_width)
 
     # ---------------------------------------------------------------- derived quantities
@@ -180,9 +192,22 @@ class MeshDynamicsProblem:
         return self._force_array
 
     @property
+    def pair_offset(self) -> np.ndarray | None:
+        """(slots, n) k_i·e_i [N]: what a pair's deviation takes off its load k_i·x; None without deviations."""
+        if self.pair_deviation is None:
+            return None
+        return self.pair_stiffness * self.pair_deviation
+
+    @property
+    def system_offset(self) -> np.ndarray:
+        """(n,) Σ k_i·e_i [N] (zeros without deviations): the mesh force is k·x + c·ẋ − Σ k_i·e_i."""
+        offset = self.pair_offset
+        return np.zeros(self.interval_count) if offset is None else offset.sum(axis=0)
+
+    @property
     def static_load(self) -> float:
-        """Time-mean static load w0 [N] (equals ``force`` for a constant load)."""
-        return float(np.dot(self._force_array, self.durations) / self.period)
+        """Time-mean static load w0 [N] (equals ``force`` for a constant load without deviations)."""
+        return float(np.dot(self._force_array - self.system_offset, self.durations) / self.period)
 
     @property
     def mean_stiffness(self) -> float:
@@ -231,7 +256,7 @@ class MeshDynamicsProblem:
         then out of contact). Meant for tests, benchmarks and quick studies; the gear chain builds its own.
         """
         if not 1.0 < contact_ratio < 2.0:
-            raise CaseError("contact_ratio", contact_ratio, "(1, 2)",
+            raise ProblemError("contact_ratio", contact_ratio, "(1, 2)",
                             "the square wave alternates one double- and one single-contact region")
         t_double = (contact_ratio - 1.0) * mesh_period
         nodes = np.array([0.0, t_double, mesh_period])

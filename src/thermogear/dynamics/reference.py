@@ -12,7 +12,7 @@ from scipy.integrate import solve_ivp
 
 from thermogear.dynamics.problem import MeshDynamicsProblem
 from thermogear.dynamics.transient import TransientHistory
-from thermogear.errors import CaseError, ModelLimitError
+from thermogear.errors import ProblemError, ModelLimitError
 
 __all__ = ["reference_solve_ivp"]
 
@@ -27,9 +27,9 @@ def reference_solve_ivp(problem: MeshDynamicsProblem, periods: int, rtol: float 
     sub-steps per interval (the same grid as the RK4 and periodic solvers) through the dense output.
     """
     if int(periods) != periods or periods < 1:
-        raise CaseError("periods", periods, "integer >= 1", "number of mesh periods to integrate")
+        raise ProblemError("periods", periods, "integer >= 1", "number of mesh periods to integrate")
     if not 0.0 < rtol < 1.0:
-        raise CaseError("rtol", rtol, "(0, 1)", "relative tolerance of solve_ivp")
+        raise ProblemError("rtol", rtol, "(0, 1)", "relative tolerance of solve_ivp")
     x_scale = float(np.max(problem.static_transmission_error))
     v_scale = x_scale * float(np.sqrt(np.max(problem.stiffness) / problem.mass))
     if atol is None:

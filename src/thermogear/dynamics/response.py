@@ -1,13 +1,14 @@
 """Dynamic response of the mesh over one period: loads, metrics (Kv, Eq. 29), spectra, plots, netCDF.
 
-Definitions (Luo & Li 2020 §4, physics.md §1.2 and §1.5):
+Definitions (Luo & Li 2020 Sect. 4, Eqs. 5 and 29):
 
 * dynamic transmission error (DTE): x(τ) [m];
 * static transmission error / equilibrium on an interval: w/k [m]; per region (single, double, … contact) the
   time-mean of w/k over the intervals of that region;
 * amplitude per region: the largest x in the region minus the region's equilibrium (the paper's "peak minus
   equilibrium") [m]; ``deviation_per_region`` gives max |x − equilibrium| as well;
-* dynamic load (the paper's definition): system k(τ)·x(τ), pair p: k_p(τ)·x(τ); with
+* dynamic load (the paper's definition): system k(τ)·x(τ), pair p: k_p(τ)·x(τ) (k_p·(x − e_p) where the pairs
+  have unloaded deviations e_p); with
   ``include_damping_force`` the damping force c·ẋ (c_p·ẋ) is added;
 * Kv = 1 + Δw/w0, Δw = max single-pair dynamic load − w0, w0 = static load w (Eq. 29), so Kv = max pair load/w0;
 * max system load ratio = max system dynamic load / w0;
@@ -29,152 +30,17 @@ from typing import Any
 
 import numpy as np
 
+from thermogear.dynamics.metrics import _load, compute_metrics
 from thermogear.dynamics.periodic import PeriodicOrbit, evaluate_orbit, floquet_multipliers
-from thermogear.dynamics.problem import MeshDynamicsProblem, region_name
+from thermogear.dynamics.problem import MeshDynamicsProblem
 from thermogear.dynamics.spectra import harmonic_spectrum, one_sided_amplitudes, uniform_period_grid
 from thermogear.dynamics.transient import TransientHistory
-from thermogear.errors import CaseError, ModelAssumptionWarning, ModelLimitError
+from thermogear.errors import ModelAssumptionWarning, ProblemError
 from thermogear.serialization import json_ready
 
 __all__ = ["DynamicResponse", "compute_metrics", "response_from_orbit", "response_from_transient"]
 
 _QUANTITIES = ("displacement", "velocity", "system_load", "pair_load")
-
-
-def _left_limit_index(interval: np.ndarray) -> np.ndarray:
-    """Sample indices where the interval changes (nodes inside the record)."""
-    return np.flatnonzero(interval[1:] != interval[:-1]) + 1
-
-
-def _load(stiffness: np.ndarray, damping: np.ndarray, interval: np.ndarray, x: np.ndarray, v: np.ndarray,
-          include_damping_force: bool) -> np.ndarray:
-    """k·x (+ c·ẋ) with coefficients taken on ``interval`` (last axis = samples)."""
-    load = stiffness[..., interval] * x
-    if include_damping_force:
-        load = load + damping[..., interval] * v
-    return load
-
-
-def _load_with_left_limits(stiffness: np.ndarray, damping: np.ndarray, interval: np.ndarray, x: np.ndarray,
-                           v: np.ndarray, include_damping_force: bool) -> np.ndarray:
-    """Loads at the samples followed by the left limits at the interior nodes (for maxima and minima)."""
-    right = _load(stiffness, damping, interval, x, v, include_damping_force)
-    nodes = _left_limit_index(interval)
-    left = _load(stiffness, damping, interval[nodes - 1], x[nodes], v[nodes], include_damping_force)
-    return np.concatenate([right, left], axis=-1)
-
-
-def _contact_loss(time: np.ndarray, force: np.ndarray, minimum: float, static_load: float) -> dict[str, Any]:
-    """Runs of negative mesh force: start times [s], durations [s], the minimum force [N]."""
-    negative = force < 0.0
-    detected = bool(minimum < 0.0)
-    starts: list[float] = []
-    durations: list[float] = []
-    if np.any(negative):
-        edges = np.diff(np.concatenate([[0], negative.astype(np.int8), [0]]))
-        first = np.flatnonzero(edges == 1)
-        last = np.flatnonzero(edges == -1) - 1
-        for a, b in zip(first, last, strict=True):
-            # the crossing lies between a sample and its neighbour: linear interpolation of the force
-            t_start = time[a]
-            if a > 0 and force[a - 1] > 0.0:
-                t_start = time[a - 1] + (time[a] - time[a - 1]) * force[a - 1] / (force[a - 1] - force[a])
-            t_end = time[b]
-            if b + 1 < time.size and force[b + 1] > 0.0:
-                t_end = time[b] + (time[b + 1] - time[b]) * force[b] / (force[b] - force[b + 1])
-            starts.append(float(t_start))
-            durations.append(float(t_end - t_start))
-    return {"detected": detected, "start_times": starts, "durations": durations,
-            "total_duration": float(sum(durations)), "min_force": float(minimum),
-            "min_force_ratio": float(minimum / static_load)}
-
-
-def compute_metrics(problem: MeshDynamicsProblem, time: np.ndarray, displacement: np.ndarray,
-                    velocity: np.ndarray, interval: np.ndarray, multipliers: np.ndarray,
-                    include_damping_force: bool = False) -> dict[str, Any]:
-    """Metrics of one steady period (time from 0 to T, both ends sampled); see the module docstring."""
-    x, v = displacement, velocity
-    w0 = problem.static_load
-    period = problem.period
-    system = _load_with_left_limits(problem.stiffness, problem.damping, interval, x, v, include_damping_force)
-    system_right = system[: x.size]
-    max_system = float(np.max(system))
-    metrics: dict[str, Any] = {"static_load": w0, "static_load_n_per_mm": w0 / problem.face_width / 1e3}
-
-    pair = problem.pair_arrays()
-    if pair is not None:
-        pair_loads = _load_with_left_limits(pair[0], pair[1], interval, x, v, include_damping_force)
-        max_pair = float(np.max(pair_loads))
-        basis = "pair_loads"
-    else:
-        single = problem.contact_count == 1
-        if np.any(single):
-            # one pair in contact carries the whole mesh force: there the pair load is the system load
-            in_single = single[interval]
-            nodes = _left_limit_index(interval)
-            in_single_left = single[interval[nodes - 1]]
-            mask = np.concatenate([in_single, in_single_left])
-            max_pair = float(np.max(system[mask]))
-            basis = "system_load_in_single_contact"
-        else:
-            max_pair = None
-            basis = "unavailable: no pair stiffness and no single-contact interval"
-    metrics["kv"] = None if max_pair is None else max_pair / w0
-    metrics["kv_basis"] = basis
-    metrics["max_pair_load"] = max_pair
-    metrics["max_pair_load_n_per_mm"] = None if max_pair is None else max_pair / problem.face_width / 1e3
-    metrics["max_system_load"] = max_system
-    metrics["max_system_load_n_per_mm"] = max_system / problem.face_width / 1e3
-    metrics["max_system_load_ratio"] = max_system / w0
-
-    static_te = problem.static_transmission_error
-    durations = problem.durations
-    equilibrium: dict[str, float] = {}
-    amplitude: dict[str, float] = {}
-    deviation: dict[str, float] = {}
-    region_of_sample = problem.contact_count[interval]
-    nodes = _left_limit_index(interval)
-    for count in problem.regions:
-        name = region_name(count)
-        in_region = problem.contact_count == count
-        level = float(np.dot(static_te[in_region], durations[in_region]) / durations[in_region].sum())
-        mask = region_of_sample == count
-        mask[nodes] |= problem.contact_count[interval[nodes - 1]] == count  # right end of a region interval
-        equilibrium[name] = level
-        amplitude[name] = float(np.max(x[mask]) - level)
-        deviation[name] = float(np.max(np.abs(x[mask] - level)))
-    metrics["equilibrium_per_region"] = equilibrium
-    metrics["amplitude_per_region"] = amplitude
-    metrics["deviation_per_region"] = deviation
-
-    mean_x = float(np.trapezoid(x, time) / period)
-    metrics["dte_mean"] = mean_x
-    metrics["dte_rms"] = float(np.sqrt(max(np.trapezoid((x - mean_x) ** 2, time) / period, 0.0)))
-    metrics["dte_peak_to_peak"] = float(np.max(x) - np.min(x))
-    metrics["max_velocity"] = float(np.max(np.abs(v)))
-    metrics["natural_frequency_hz"] = problem.natural_frequency
-    metrics["mesh_frequency_hz"] = problem.mesh_frequency
-    metrics["frequency_ratio"] = problem.frequency_ratio
-    moduli = np.sort(np.abs(np.asarray(multipliers)))[::-1]
-    metrics["floquet_multipliers_abs"] = [float(m) for m in moduli]
-    # undamped: det M = 1, so |μ|max >= 1 in exact arithmetic even where rounding puts it a hair below 1
-    metrics["stable"] = bool(moduli[0] < 1.0 and np.any(problem.damping > 0.0))
-    loss = _contact_loss(time, system_right, float(np.min(system)), w0)
-    metrics["contact_loss"] = loss
-    metrics["valid"] = bool(metrics["stable"] and not loss["detected"])
-    _check_finite(metrics)
-    return metrics
-
-
-def _check_finite(value: Any, key: str = "metrics") -> None:
-    if isinstance(value, dict):
-        for name, item in value.items():
-            _check_finite(item, f"{key}.{name}")
-    elif isinstance(value, list | tuple):
-        for item in value:
-            _check_finite(item, key)
-    elif isinstance(value, float) and not np.isfinite(value):
-        raise ModelLimitError(f"{key} is not finite ({value}); the model is out of its numerical range")
 
 
 @dataclass(frozen=True)
@@ -226,17 +92,23 @@ class DynamicResponse:
         """w/k at each sample [m] (the equilibrium the response oscillates about)."""
         return self.problem.static_transmission_error[self.interval]
 
+    @property
+    def _system_offset(self) -> np.ndarray | None:
+        return None if self.problem.pair_offset is None else self.problem.system_offset
+
     def system_load(self) -> np.ndarray:
         """System dynamic load k·x (+ c·ẋ) at each sample [N] (right-continuous at nodes)."""
-        return _load(self.problem.stiffness, self.problem.damping, self.interval, self.displacement,
-                     self.velocity, self.include_damping_force)
+        return _load(self.problem.stiffness, self.problem.damping, self._system_offset, self.interval,
+                     self.displacement, self.velocity, self.include_damping_force)
 
     def pair_loads(self) -> np.ndarray:
         """(slots, samples) pair dynamic loads k_p·x (+ c_p·ẋ) [N]; needs ``pair_stiffness`` in the problem."""
         pair = self.problem.pair_arrays()
         if pair is None:
-            raise CaseError("pair_stiffness", None, "a (slots, n) array", "pair loads need the stiffness of each pair")
-        return _load(pair[0], pair[1], self.interval, self.displacement, self.velocity, self.include_damping_force)
+            raise ProblemError("pair_stiffness", None, "a (slots, n) array",
+                               "pair loads need the stiffness of each pair")
+        return _load(pair[0], pair[1], self.problem.pair_offset, self.interval, self.displacement, self.velocity,
+                     self.include_damping_force)
 
     # ------------------------------------------------------------------ spectra
     def spectrum(self, quantity: str = "displacement", points: int = 1024) -> tuple[np.ndarray, np.ndarray]:
@@ -247,7 +119,7 @@ class DynamicResponse:
         otherwise x and ẋ are interpolated. Loads use k of the interval each grid time falls in.
         """
         if quantity not in _QUANTITIES:
-            raise CaseError("quantity", quantity, str(_QUANTITIES), "signal whose spectrum is asked for")
+            raise ProblemError("quantity", quantity, str(_QUANTITIES), "signal whose spectrum is asked for")
         period = self.problem.period
         if quantity in ("displacement", "velocity") and self.initial_state is None:
             values = self.displacement if quantity == "displacement" else self.velocity
@@ -265,12 +137,13 @@ class DynamicResponse:
         elif quantity == "velocity":
             values = v
         elif quantity == "system_load":
-            values = _load(self.problem.stiffness, self.problem.damping, interval, x, v, self.include_damping_force)
+            values = _load(self.problem.stiffness, self.problem.damping, self._system_offset, interval, x, v,
+                           self.include_damping_force)
         else:
             pair = self.problem.pair_arrays()
             if pair is None:
-                raise CaseError("pair_stiffness", None, "a (slots, n) array", "pair loads need each pair's stiffness")
-            values = _load(pair[0], pair[1], interval, x, v, self.include_damping_force)
+                raise ProblemError("pair_stiffness", None, "a (slots, n) array", "pair loads need each pair's stiffness")
+            values = _load(pair[0], pair[1], self.problem.pair_offset, interval, x, v, self.include_damping_force)
         return np.arange(grid.size // 2 + 1) / period, one_sided_amplitudes(values)
 
     # ------------------------------------------------------------------ plots (Luo & Li Figs. 9–12)

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from thermogear.errors import CaseError
+from thermogear.errors import ProblemError
 
 __all__ = ["harmonic_spectrum", "one_sided_amplitudes", "signal_spectrum", "uniform_period_grid"]
 
@@ -17,7 +17,7 @@ __all__ = ["harmonic_spectrum", "one_sided_amplitudes", "signal_spectrum", "unif
 def uniform_period_grid(period: float, points: int) -> np.ndarray:
     """``points`` equally spaced times [s] on [0, T) (the end point, equal to the start, left out)."""
     if int(points) != points or points < 4:
-        raise CaseError("points", points, "integer >= 4", "samples per period for the Fourier transform")
+        raise ProblemError("points", points, "integer >= 4", "samples per period for the Fourier transform")
     return np.arange(int(points)) * (period / int(points))
 
 
@@ -55,7 +55,7 @@ def signal_spectrum(time: np.ndarray, values: np.ndarray, points: int | None = N
     values = np.asarray(values, dtype=float)
     count = int(points) if points is not None else time.size
     if count < 4:
-        raise CaseError("points", count, ">= 4", "samples for the Fourier transform")
+        raise ProblemError("points", count, ">= 4", "samples for the Fourier transform")
     grid = np.linspace(time[0], time[-1], count)
     resampled = np.interp(grid, time, values)
     resampled = resampled - resampled.mean()

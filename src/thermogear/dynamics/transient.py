@@ -24,7 +24,7 @@ import numba
 import numpy as np
 
 from thermogear.dynamics.problem import MeshDynamicsProblem
-from thermogear.errors import CaseError, ModelLimitError
+from thermogear.errors import ProblemError, ModelLimitError
 
 __all__ = ["TransientHistory", "default_steps_per_interval", "largest_safe_step", "transient_from_rest",
            "transient_python"]
@@ -144,25 +144,25 @@ _rk4_kernel = numba.njit(cache=True)(_rk4_loop)
 
 def _prepare(problem: MeshDynamicsProblem, periods: int, steps_per_interval: int | None) -> tuple[int, int]:
     if int(periods) != periods or periods < 1:
-        raise CaseError("periods", periods, "integer >= 1", "number of mesh periods to integrate")
+        raise ProblemError("periods", periods, "integer >= 1", "number of mesh periods to integrate")
     if steps_per_interval is None:
         steps = default_steps_per_interval(problem)
     else:
         if int(steps_per_interval) != steps_per_interval or steps_per_interval < 1:
-            raise CaseError("steps_per_interval", steps_per_interval, "integer >= 1",
+            raise ProblemError("steps_per_interval", steps_per_interval, "integer >= 1",
                             "equal RK4 steps in each interval between nodes")
         steps = int(steps_per_interval)
     step = np.max(problem.durations * _eigen_moduli(problem) / steps)
     if step > SAFE_OMEGA_STEP:
         safe = largest_safe_step(problem)
         needed = int(np.max(np.ceil(problem.durations * _eigen_moduli(problem) / SAFE_OMEGA_STEP)))
-        raise CaseError("steps_per_interval", steps, f">= {needed} (largest safe step {safe:.4g} s)",
+        raise ProblemError("steps_per_interval", steps, f">= {needed} (largest safe step {safe:.4g} s)",
                         f"the RK4 step gives |λ|·h = {step:.3g} > {SAFE_OMEGA_STEP} (|λ| up to "
                         f"{np.max(_eigen_moduli(problem)):.6g} rad/s): too coarse to be accurate "
                         "(RK4 stability ends at 2.78)")
     total = int(periods) * problem.interval_count * steps + 1
     if total > MAX_STORED_SAMPLES:
-        raise CaseError("periods", periods, f"periods × intervals × steps <= {MAX_STORED_SAMPLES}",
+        raise ProblemError("periods", periods, f"periods × intervals × steps <= {MAX_STORED_SAMPLES}",
                         f"the history would hold {total} samples; use the periodic solver for the steady state")
     return int(periods), steps
 
@@ -171,7 +171,7 @@ def _run(loop, problem: MeshDynamicsProblem, periods: int, steps_per_interval: i
          method: str) -> TransientHistory:
     periods, steps = _prepare(problem, periods, steps_per_interval)
     if not (np.isfinite(x0) and np.isfinite(v0)):
-        raise CaseError("x0/v0", (x0, v0), "finite", "the initial state must be a number")
+        raise ProblemError("x0/v0", (x0, v0), "finite", "the initial state must be a number")
     total = periods * problem.interval_count * steps + 1
     time = np.empty(total)
     x = np.empty(total)
@@ -192,7 +192,7 @@ def transient_from_rest(problem: MeshDynamicsProblem, periods: int, steps_per_in
     """Transient from x = x0, ẋ = v0 (rest by default, as the paper) over ``periods`` mesh periods, numba RK4.
 
     ``steps_per_interval`` equal steps in every interval (default: |λ|·h <= 0.05). A step with |λ|·h > 1 is
-    refused with :class:`CaseError` stating the largest safe step (see the module docstring for the argument).
+    refused with :class:`ProblemError` stating the largest safe step (see the module docstring for the argument).
     """
     return _run(_rk4_kernel, problem, periods, steps_per_interval, x0, v0, "transient_rk4")
 

@@ -28,6 +28,8 @@ from thermogear.mesh_cycle import MeshCycle, MeshGrid, load_share_at, load_share
 from thermogear.stiffness.table import pair_stiffness_at
 from thermogear.thermal.case_stiffness import thermal_pair_stiffness_at
 from thermogear.thermal.temperature import TemperatureField, temperature_field_from_case
+from thermogear.thermoelastic.load_sharing import loaded_transmission_error
+from thermogear.thermoelastic.mesh import ThermoelasticMesh
 
 if TYPE_CHECKING:
     from thermogear.case import Case
@@ -45,7 +47,11 @@ class MeshModel:
     case:
         The validated case.
     model:
-        ``"elastic"`` or ``"thermal"`` (the case's ``[thermal]`` model: the paper's ``"luo2020"`` secant k_T).
+        ``"elastic"`` or ``"thermal"``: the case's ``[thermal] model``, the predictive ``"thermoelastic"`` (E(T),
+        gears and housing expanded, backlash, flank deviations: :mod:`thermogear.thermoelastic`) or the paper's
+        ``"luo2020"`` (secant k_T with X_te, Eqs. 13–23, to reproduce the paper).
+
+    Profile modifications (tip relief) are deviations of both models; the elastic model has no thermal ones.
     """
 
     case: "Case"
@@ -62,13 +68,31 @@ class MeshModel:
 
     @property
     def thermal_model(self) -> str | None:
-        """Name of the thermal mesh model in use (``"luo2020"``), None for the elastic model."""
-        return getattr(self.case.thermal, "model", "luo2020") if self.thermal else None
+        """Name of the thermal mesh model in use (``"thermoelastic"`` or ``"luo2020"``), None for the elastic one."""
+        return self.case.thermal.model if self.thermal else None
+
+    @property
+    def thermoelastic(self) -> bool:
+        return self.thermal_model == "thermoelastic"
+
+    @cached_property
+    def thermoelastic_mesh(self) -> ThermoelasticMesh | None:
+        """The thermo-elastic component of the case (hot geometry, E(T), backlash, deviations) where this model
+        needs it: the thermoelastic model, or any model of a case with profile modifications."""
+        if self.thermoelastic or self._has_profile_modifications:
+            return ThermoelasticMesh.from_case(self.case)
+        return None
+
+    @property
+    def _has_profile_modifications(self) -> bool:
+        return any(getattr(gear, "tip_relief_um", None) for gear in (self.case.gears_input.pinion,
+                                                                        self.case.gears_input.wheel))
 
     @property
     def gear_pair(self):
-        """The gear pair as it meshes under this model (geometry, path of contact A–E, contact ratio)."""
-        return self.case.gear_pair
+        """The gear pair as it meshes under this model (geometry, path of contact A–E, contact ratio): at
+        temperature for the thermoelastic model, as built otherwise."""
+        return self.thermoelastic_mesh.gear_pair if self.thermoelastic else self.case.gear_pair
 
     @property
     def face_width(self) -> float:
@@ -91,7 +115,15 @@ class MeshModel:
     @property
     def stiffness_depends_on_load(self) -> bool:
         """True where the pair stiffness changes with the normal load (the paper's secant k_T, Eq. 18)."""
-        return self.thermal
+        return self.thermal_model == "luo2020"
+
+    @property
+    def load_shares_depend_on_load(self) -> bool:
+        """True where the static load shares move with the load: pairs with unloaded deviations engage at a
+        load-dependent approach, or the paper's secant k_T is the stiffness of the friction load share."""
+        if self.thermoelastic_mesh is not None:
+            return True
+        return self.stiffness_depends_on_load and self.case.damping.stiffness == "thermal"
 
     @property
     def damping_scaling(self) -> tuple[float, float | None] | None:
@@ -102,8 +134,8 @@ class MeshModel:
         on the speed (the FE heat model) or the pairs carry deviations. Sweeps use it to reuse one mesh period."""
         if self.case.temperature.model == "fem" or getattr(self.case.thermal, "x_te_source", "") == "fem":
             return None
-        shares_move = self.thermal and self.case.damping.stiffness == "thermal" and self.stiffness_depends_on_load
-        return FRICTION_DAMPING_SPEED_EXPONENT, (None if shares_move else FRICTION_DAMPING_LOAD_EXPONENT)
+        load_exponent = None if self.load_shares_depend_on_load else FRICTION_DAMPING_LOAD_EXPONENT
+        return FRICTION_DAMPING_SPEED_EXPONENT, load_exponent
 
     @property
     def damping_rule(self) -> str:
@@ -133,6 +165,8 @@ class MeshModel:
     def pair_stiffness_at(self, roll, normal_load: float | None = None) -> np.ndarray:
         """Stiffness of one tooth pair [N/m] (total over the face width) at roll distances on [A, E]."""
         roll = np.asarray(roll, dtype=float)
+        if self.thermoelastic:
+            return np.asarray(self.thermoelastic_mesh.pair_stiffness_at(roll), dtype=float)
         if self.thermal:
             return np.asarray(thermal_pair_stiffness_at(self.case, roll, normal_load=self._load(normal_load)),
                               dtype=float)
@@ -140,8 +174,9 @@ class MeshModel:
 
     def damping_stiffness_at(self, roll, normal_load: float | None = None) -> np.ndarray:
         """The pair stiffness k of Eq. 28 and of the friction load share [N/m]: k_e unless ``[damping]
-        stiffness = "thermal"`` asks the thermal model's own."""
-        if self.thermal and self.case.damping.stiffness == "thermal":
+        stiffness = "thermal"`` asks the thermal model's own; the thermoelastic model always uses its own (its
+        path of contact is that of the hot pair, where the cold k_e is not defined)."""
+        if self.thermoelastic or (self.thermal and self.case.damping.stiffness == "thermal"):
             return self.pair_stiffness_at(roll, normal_load)
         return np.asarray(pair_stiffness_at(self.gear_pair, self.case.material, np.asarray(roll, float)), float)
 
@@ -157,13 +192,23 @@ class MeshModel:
 
     def pair_deviation_at(self, roll) -> np.ndarray:
         """Unloaded deviation of one tooth pair along the line of action [m] (positive: material missing, the
-        pair engages later). The elastic and the paper's thermal model have none."""
-        return np.zeros(np.shape(roll))
+        pair engages later): tip reliefs, and for the thermoelastic model the thermal flank distortion and the
+        base-pitch mismatch. The paper's thermal model has none."""
+        mesh = self.thermoelastic_mesh
+        if mesh is None or self.thermal_model == "luo2020":
+            return np.zeros(np.shape(roll))
+        if self.thermoelastic:
+            return np.asarray(mesh.pair_deviation_at(roll), dtype=float)
+        return np.asarray(mesh.cold_pair_deviation_at(roll), dtype=float)
 
     @property
     def backlash(self) -> float | None:
-        """Normal backlash [m]; None where the model does not carry one."""
-        return None
+        """Normal backlash [m] of the mesh as this model sees it (at temperature for the thermoelastic model, at
+        the reference temperature otherwise); None where the case carries no thermo-elastic component."""
+        mesh = self.thermoelastic_mesh
+        if mesh is None:
+            return None
+        return mesh.backlash_normal if self.thermoelastic else mesh.backlash_normal_cold
 
     def _friction(self, roll, share, stiffness, speed_rpm: float, normal_load: float) -> PairDamping:
         pair, case = self.gear_pair, self.case
@@ -224,19 +269,25 @@ class MeshModel:
             damping_stiffness = stiffness
         else:
             damping_stiffness = self._on_grid(grid, lambda roll: self.damping_stiffness_at(roll, load))
+        deviation = self._on_grid(grid, self.pair_deviation_at)
+        engaged, static, share = grid.in_contact, None, None
+        if np.any(deviation != 0.0):  # pairs engage where the static approach exceeds their deviation
+            loaded = loaded_transmission_error(stiffness, deviation, load, grid.in_contact)
+            engaged, static, share = loaded.engaged, loaded.approach, loaded.load_share
         pair_damping = np.zeros(grid.roll.shape)
         if damping:
-            share = load_shares(damping_stiffness, grid.in_contact)
+            if share is None:
+                share = load_shares(damping_stiffness, grid.in_contact)
             contact = grid.in_contact
             points = self.gear_pair.path_points
             friction = self._friction(np.clip(grid.roll[contact], points["A"], points["E"]), share[contact],
                                       damping_stiffness[contact], speed, load)
-            pair_damping[contact] = friction.damping
-        deviation = self._on_grid(grid, self.pair_deviation_at)
+            pair_damping[contact] = np.where(share[contact] > 0.0, friction.damping, 0.0)
         return MeshState(model=self.model, speed_rpm=speed, normal_load=load, mass=self.equivalent_mass, grid=grid,
                          pair_stiffness=stiffness, pair_damping=pair_damping,
                          mesh_damping=np.asarray(mesh_damping(pair_damping, grid.in_contact, self.damping_rule), float),
-                         pair_deviation=deviation, backlash=self.backlash, face_width=self.face_width,
+                         pair_deviation=deviation, pair_engaged=engaged, static_transmission_error=static,
+                         backlash=self.backlash, face_width=self.face_width,
                          mesh_frequency_hz=self.gear_pair.mesh_frequency(speed))
 
     def natural_frequency_hz(self, state: MeshState) -> float:

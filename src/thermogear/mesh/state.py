@@ -16,7 +16,10 @@ class MeshState:
 
     ``pair_stiffness``, ``pair_damping`` [N/m, N·s/m] and ``pair_deviation`` [m] are (slots, n) on the grid
     intervals, 0 where a pair slot is out of contact; ``mesh_damping`` c(τ) (n,) under the case's rule;
-    ``normal_load`` w [N]; ``mass`` me [kg]; ``backlash`` the normal backlash [m] or None.
+    ``normal_load`` w [N]; ``mass`` me [kg]; ``backlash`` the normal backlash [m] or None. ``pair_engaged``
+    (slots, n): the pairs that carry load under the static load (on the path, and where they have deviations, the
+    static approach beyond them); ``static_transmission_error`` (n,) the loaded static transmission error [m]
+    where the pairs have deviations (None otherwise: it is then w/k(τ)).
     """
 
     model: str
@@ -28,6 +31,8 @@ class MeshState:
     pair_damping: np.ndarray
     mesh_damping: np.ndarray
     pair_deviation: np.ndarray
+    pair_engaged: np.ndarray
+    static_transmission_error: np.ndarray | None
     backlash: float | None
     face_width: float
     mesh_frequency_hz: float
@@ -39,8 +44,8 @@ class MeshState:
 
     @property
     def mesh_stiffness(self) -> np.ndarray:
-        """k(τ) [N/m] (n,): the pairs in contact in parallel."""
-        return MeshCycle.total(self.pair_stiffness, self.grid.in_contact)
+        """k(τ) [N/m] (n,): the pairs that carry load, in parallel."""
+        return MeshCycle.total(self.pair_stiffness, self.pair_engaged)
 
     @property
     def mean_mesh_stiffness(self) -> float:
@@ -49,17 +54,20 @@ class MeshState:
 
     @property
     def excitation(self) -> np.ndarray:
-        """Σ_i k_i·e_i (n,) [N]: the force the unloaded deviations add to the static load in
-        me·ẍ + c·ẋ + Σ k_i·(x − e_i) = w."""
-        return MeshCycle.total(self.pair_stiffness * self.pair_deviation, self.grid.in_contact)
+        """Σ_i k_i·e_i (n,) [N] over the pairs that carry load: the force the unloaded deviations add to the static
+        load in me·ẍ + c·ẋ + Σ k_i·(x − e_i) = w."""
+        return MeshCycle.total(self.pair_stiffness * self.pair_deviation, self.pair_engaged)
 
     def problem(self) -> MeshDynamicsProblem:
-        """The linear mesh-dynamics problem me·ẍ + c(τ)ẋ + k(τ)(x − e(τ)) = w over this period."""
+        """The linear mesh-dynamics problem me·ẍ + c(τ)ẋ + k(τ)(x − e(τ)) = w over this period (the pairs that
+        carry the static load; where the dynamic response would unload one, the nonlinear model is the one)."""
         excitation = self.excitation
         force = self.normal_load + excitation if np.any(excitation) else self.normal_load
+        engaged = np.where(self.pair_engaged, self.pair_stiffness, 0.0)
+        deviation = np.where(self.pair_engaged, self.pair_deviation, 0.0) if np.any(excitation) else None
         return MeshDynamicsProblem(mass=self.mass, nodes=self.grid.nodes, stiffness=self.mesh_stiffness,
-                                   damping=self.mesh_damping, force=force, contact_count=self.grid.contact_count,
-                                   pair_stiffness=self.pair_stiffness, face_width=self.face_width)
+                                   damping=self.mesh_damping, force=force, contact_count=self.pair_engaged.sum(axis=0),
+                                   pair_stiffness=engaged, face_width=self.face_width, pair_deviation=deviation)
 
 
 __all__ = ["MeshState"]
