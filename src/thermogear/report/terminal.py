@@ -73,7 +73,7 @@ def print_summary(outcome, console: Console) -> None:
         # the quantity wraps on a narrow terminal rather than being cut; off a terminal nothing wraps
         table.add_column("quantity", overflow="fold", max_width=max(24, console.width - 58))
         for name in ("paper", "thermogear", "unit", "deviation", "status"):
-            table.add_column(name, justify="left" if name in ("unit", "status") else "right", no_wrap=True)
+            table.add_column(name, justify="left" if name in ("unit", "status") else "right", overflow="fold")
         style = {"within": Text("within", style="green"), "outside": Text("outside", style="red"),
                  "not computed": Text("not computed", style="yellow")}
         for verdict in outcome.verdicts:
@@ -102,7 +102,7 @@ def print_summary(outcome, console: Console) -> None:
         table = Table(title=f"thermogear results: {outcome.evaluation.case.name}", header_style="bold")
         table.add_column("quantity", overflow="fold", max_width=max(24, console.width - 40))
         for name in ("elastic", "thermal", "unit"):
-            table.add_column(name, justify="left" if name == "unit" else "right", no_wrap=True)
+            table.add_column(name, justify="left" if name == "unit" else "right", overflow="fold")
         for row in outcome.results:
             table.add_row(row["quantity"], format_value(row["elastic"]) if row["elastic"] is not None else "—",
                           format_value(row["thermal"]) if row["thermal"] is not None else "—", row["unit"])
