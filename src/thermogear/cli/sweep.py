@@ -24,6 +24,8 @@ def sweep(
     scheduler: str = typer.Option(None, "--scheduler", help="dask.distributed scheduler address "
                                   "(tcp://host:port); default a local cluster of all cores; 'serial' for no Dask"),
     workers: int = typer.Option(None, "--workers", min=1, help="processes of the local cluster (default: cores)"),
+    dashboard: str = typer.Option(None, "--dashboard", help="serve the local cluster's Dask dashboard at this "
+                                  "address, e.g. :8787 (default: no dashboard, no port opened)"),
     resume: bool = typer.Option(False, "--resume", help="continue an interrupted study stored at --out"),
     overwrite: bool = typer.Option(False, "--overwrite", help="replace an existing store at --out"),
     chunk_points: int = typer.Option(None, "--chunk-points", min=1, help="grid points per task and stored chunk"),
@@ -59,7 +61,7 @@ def sweep(
     existed = out.exists() or out.is_symlink()
     try:
         run = run_study(study, out, scheduler=scheduler, resume=resume, overwrite=overwrite, workers=workers,
-                        method=method, progress=progress and not as_json)
+                        method=method, progress=progress and not as_json, dashboard=dashboard)
     except (OSError, TimeoutError) as error:  # the scheduler went away, or the disk refused a write
         _remove_empty_store(out, existed)
         raise CaseError("--scheduler" if scheduler not in (None, "serial") else "--out",
