@@ -24,9 +24,9 @@ def plot_damping(summary: DampingSummary, periods: int = 3, axes=None):
     axes[0].set_xlabel("contact position Γ [–]")
     axes[0].set_ylabel("damping of one tooth pair [N·s/m]")
     axes[0].set_title("per pair along the path")
-    grid = summary.grid
-    period = grid.nodes[-1]
     for model in MODELS:
+        grid = summary.grids[model]
+        period = grid.nodes[-1]
         times = np.concatenate([grid.nodes[:-1] + j * period for j in range(periods)] + [[periods * period]])
         values = np.tile(summary.mesh[model], periods)
         axes[1].stairs(values, times * 1e3, baseline=None, color=styles[model]["color"], label=model)

@@ -25,8 +25,8 @@ PAPER_MEAN_DAMPING = {"elastic": {"single": 3.41e3, "double": 2.40e3}, "thermal"
 class DampingSummary:
     """Elastic and thermal friction damping of a case: per pair along the path and c(τ) over one mesh cycle.
 
-    ``path``: PairDamping per model on an even roll grid A–E; ``mesh``: c(τ) [N·s/m] per model on ``grid``
-    (MeshGrid); ``region_means``: time means of c(τ) over the single- and double-pair regions per model.
+    ``path``: PairDamping per model on an even roll grid A–E; ``mesh``: c(τ) [N·s/m] per model on ``grids``
+    (a MeshGrid per model: the thermoelastic model meshes on the hot pair's path); ``region_means: time means of c(τ) over the single- and double-pair regions per model.
     """
 
     case_name: str
@@ -34,7 +34,7 @@ class DampingSummary:
     stiffness: str
     lubricant: Lubricant
     path: dict
-    grid: object
+    grids: dict
     mesh: dict
     region_means: dict
     pitch: dict  # PairDamping at C per model
@@ -72,8 +72,8 @@ def damping_summary(case: "Case", count: int = 720, path_points: int = 81, rule:
     rule = case.damping.rule if rule is None else rule
     if rule not in RULES:
         raise CaseError("damping.rule", rule, " | ".join(RULES), "unknown mesh-damping rule")
-    path, mesh, means, pitch = {}, {}, {}, {}
-    grid = oil = None
+    path, mesh, means, pitch, grids = {}, {}, {}, {}, {}
+    oil = None
     for model in MODELS:
         mesh_model = MeshModel(case, model)
         oil = mesh_model.lubricant
@@ -81,11 +81,11 @@ def damping_summary(case: "Case", count: int = 720, path_points: int = 81, rule:
         path[model] = mesh_model.pair_damping_at(pair.roll_grid(path_points))
         pitch[model] = mesh_model.pair_damping_at(np.array([pair.path_points["C"]]))
         state = mesh_model.state(points_per_period=count)
-        grid = state.grid
+        grid = grids[model] = state.grid
         mesh[model] = mesh_damping(state.pair_damping, grid.in_contact, rule)
         means[model] = contact_region_means(mesh[model], grid.contact_count, grid.steps)
     return DampingSummary(case_name=case.name, rule=rule, stiffness=case.damping.stiffness, lubricant=oil,
-                          path=path, grid=grid, mesh=mesh, region_means=means, pitch=pitch)
+                          path=path, grids=grids, mesh=mesh, region_means=means, pitch=pitch)
 
 
 __all__ = ["DampingSummary", "PAPER_MEAN_DAMPING", "damping_summary"]

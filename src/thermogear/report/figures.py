@@ -97,10 +97,10 @@ def fig6(evaluation):
         left.stairs(values * scale, nodes_ms, baseline=None, lw=1.0, label=f"k_T pair {slot + 1}")
     left.stairs(simulation.mesh_stiffness * scale, nodes_ms, baseline=None, color="k", lw=1.6, label="k_T total")
     if elastic is not None:
-        left.stairs(elastic.mesh_stiffness * scale, nodes_ms, baseline=None, color="0.5", ls="--", lw=1.0,
+        left.stairs(elastic.mesh_stiffness * scale, elastic.grid.nodes * 1e3, baseline=None, color="0.5", ls="--", lw=1.0,
                     label="k_e total")
     left.set_xlabel("time τ in one mesh period [ms]")
-    left.set_ylabel("stiffness [10¹⁰ N/m per m]")
+    left.set_ylabel("stiffness per width [N/(mm·μm)]")
     left.set_title("one mesh cycle")
     left.legend(fontsize=8)
     period = grid.nodes[-1]
@@ -109,8 +109,11 @@ def fig6(evaluation):
     values = np.tile(simulation.mesh_stiffness * scale, count)
     right.stairs(values, times, baseline=None, color="k", label="k_T total")
     if elastic is not None:
-        right.stairs(np.tile(elastic.mesh_stiffness * scale, count), times, baseline=None, color="0.5", ls="--",
-                     label="k_e total")
+        elastic_nodes = elastic.grid.nodes
+        elastic_times = np.concatenate([elastic_nodes[:-1] + j * elastic_nodes[-1] for j in range(count)]
+                                       + [[count * elastic_nodes[-1]]]) * 1e3
+        right.stairs(np.tile(elastic.mesh_stiffness * scale, count), elastic_times, baseline=None, color="0.5",
+                     ls="--", label="k_e total")
     right.set_xlim(0.0, FIG6_SPAN_MS)
     right.set_xlabel("time τ [ms]")
     right.set_title(f"0–{FIG6_SPAN_MS:g} ms")
@@ -130,7 +133,7 @@ def _damping_figure(evaluation, model: str):
     left.set_ylabel("damping of one tooth pair [N·s/m]")
     left.set_title("per pair along the path")
     _mark_points(left, evaluation.case)
-    grid = summary.grid
+    grid = summary.grids[model]
     period = grid.nodes[-1]
     periods = 3
     times = np.concatenate([grid.nodes[:-1] + j * period for j in range(periods)] + [[periods * period]]) * 1e3

@@ -85,7 +85,7 @@ def curves_dataset(evaluation):
         coords[f"{model}_cycle_time"] = (f"{model}_cycle_time", np.asarray(grid.midpoints), {"units": "s"})
         data[f"{model}_cycle_pair_stiffness"] = ((f"{model}_slot", f"{model}_cycle_time"), np.asarray(pair_stiffness),
                                                 {"units": "N/m"})
-        data[f"{model}_cycle_mesh_stiffness"] = (f"{model}_cycle_time", np.asarray(pair_stiffness.sum(axis=0)),
+        data[f"{model}_cycle_mesh_stiffness"] = (f"{model}_cycle_time", np.asarray(simulation.mesh_stiffness),
                                                 {"units": "N/m"})
         data[f"{model}_cycle_mesh_damping"] = (f"{model}_cycle_time", np.asarray(mesh_damping), {"units": "N s/m"})
         data[f"{model}_cycle_contact_count"] = (f"{model}_cycle_time", np.asarray(grid.contact_count, dtype=np.int64))

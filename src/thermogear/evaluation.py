@@ -1,0 +1,177 @@
+"""The whole chain of one case, as the report and ``thermogear run`` show it.
+
+:func:`evaluate_case` runs the stages — the elastic and thermal models at the operating point, the thermal
+stiffness curves, the damping summary, the start-up transients and, for the paper's case, the rig trend and the FE
+verification — each in its own guarded step: a stage that fails does not stop the others; its reason is recorded
+and the report shows "not computed" with it. Every stage asks the mesh model, a simulation or a summary: nothing
+here computes physics by hand.
+"""
+
+from __future__ import annotations
+
+import time as _time
+import warnings
+from dataclasses import dataclass, field
+from typing import Any, Callable
+
+from thermogear.citations import cite
+
+__all__ = ["Evaluation", "MODELS", "STEPS", "evaluate_case", "is_paper_case"]
+
+MODELS = ("elastic", "thermal")
+
+#: Names of the evaluation steps, in order (for progress bars).
+STEPS = ("elastic model", "thermal model", "thermal stiffness", "damping", "start-up transients", "rig trend",
+         "FE verification")
+
+
+def is_paper_case(case) -> bool:
+    """True for the paper's own case (the report then has the paper column)."""
+    return case.name == "luo2019"
+
+
+@dataclass
+class Evaluation:
+    """Everything the report shows for one case. Stage results are None when the stage failed (``problems``)."""
+
+    case: Any
+    method: str = "periodic"
+    simulations: dict = field(default_factory=dict)  # model -> Simulation
+    responses: dict = field(default_factory=dict)  # model -> DynamicResponse (steady state, ``method``)
+    transients: dict = field(default_factory=dict)  # model -> DynamicResponse from rest
+    thermal_curves: Any = None  # thermal.summary.ThermalCurves
+    thermal_summary: dict | None = None
+    temperature_field: Any = None
+    damping: Any = None  # damping.DampingSummary
+    rig_trend: dict | None = None
+    fem: Any = None
+    problems: dict = field(default_factory=dict)  # stage -> reason it failed
+    timings: dict = field(default_factory=dict)  # stage -> seconds
+    warnings: list = field(default_factory=list)  # warning texts raised during the run (deduplicated)
+
+    @property
+    def paper(self) -> bool:
+        return is_paper_case(self.case)
+
+    def problem(self, *stages: str) -> str:
+        """The first recorded failure among ``stages`` ('' when none)."""
+        for stage in stages:
+            if stage in self.problems:
+                return f"stage '{stage}' failed: {self.problems[stage]}"
+        return ""
+
+
+def _run_stage(evaluation: Evaluation, name: str, function: Callable[[], None]) -> None:
+    """Run one stage; record its time, its warnings and, if it fails, the reason (the report goes on)."""
+    start = _time.perf_counter()
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        try:
+            function()
+        except (KeyboardInterrupt, SystemExit):
+            raise
+        except Exception as error:  # noqa: BLE001 - a failed stage becomes "not computed: reason" in the report
+            evaluation.problems[name] = f"{type(error).__name__}: {error}"
+    for item in caught:
+        text = f"{item.category.__name__}: {item.message}"
+        if text not in evaluation.warnings:
+            evaluation.warnings.append(text)
+    evaluation.timings[name] = _time.perf_counter() - start
+
+
+def evaluate_case(case, method: str = "periodic", models: tuple[str, ...] = MODELS, transient: bool = True,
+                  progress: Callable[[str], None] | None = None) -> Evaluation:
+    """Run the chain of ``case``: per model the stiffness, damping and dynamics (``method``), the Fig. 4
+    thermal-stiffness curves, the damping summary, the start-up transients (Figs. 9–11) and, for the paper's
+    case, the rig trend of Fig. 18. ``progress(step)`` is called before each step."""
+    from thermogear.simulation import Simulation
+
+    evaluation = Evaluation(case=case, method=method)
+    step = progress or (lambda name: None)
+    cite("luo2020", "iso21771", "iso53", "yang1987", "tian2004", "sainsot2004", "chaari2009")
+    if case.citation and "14635" in case.citation:
+        cite("iso14635_1")
+
+    for model in models:
+        step(f"{model} model")
+
+        def run_model(model=model):
+            simulation = Simulation(case, model)
+            evaluation.simulations[model] = simulation
+            evaluation.responses[model] = simulation.run(method)
+            cite("floquet1883" if method == "periodic" else "rk4", "den_hartog1931", "iso_tr13989_1", "astm_d341")
+            if model == "thermal":
+                cite("timoshenko1951")
+
+        _run_stage(evaluation, f"{model} model", run_model)
+
+    step("thermal stiffness")
+
+    def thermal():
+        from thermogear.thermal.summary import thermal_curves, thermal_stiffness_summary
+        from thermogear.thermal.temperature import temperature_field_from_case
+
+        evaluation.temperature_field = temperature_field_from_case(case)
+        evaluation.thermal_curves = thermal_curves(case)
+        evaluation.thermal_summary = thermal_stiffness_summary(case)
+        cite("timoshenko1951")
+
+    _run_stage(evaluation, "thermal stiffness", thermal)
+
+    step("damping")
+
+    def damping():
+        from thermogear.mesh.damping_summary import damping_summary
+
+        evaluation.damping = damping_summary(case)
+        cite("den_hartog1931", "iso_tr13989_1", "astm_d341")
+
+    _run_stage(evaluation, "damping", damping)
+
+    if transient:
+        step("start-up transients")
+
+        def transients():
+            for model in models:
+                simulation = evaluation.simulations.get(model) or Simulation(case, model)
+                evaluation.transients[model] = simulation.run("transient")
+            cite("rk4")
+
+        _run_stage(evaluation, "start-up transients", transients)
+
+    if evaluation.paper:
+        step("rig trend")
+        _run_stage(evaluation, "rig trend", lambda: setattr(evaluation, "rig_trend", _rig_trend()))
+        step("FE verification")
+        _run_stage(evaluation, "FE verification", lambda: setattr(evaluation, "fem", fem_verification(case)))
+    return evaluation
+
+
+# -------------------------------------------------------------------------------------------- stages
+def fem_verification(case):
+    """Fig. 15: thermogear's own FE verification of the elastic and thermal pair stiffness along the path,
+    ``{"gamma", "elastic", "thermal", "driving_elastic", "driving_thermal"}`` arrays [N/m]."""
+    from thermogear.fem.verification import stiffness_along_path
+
+    cite("scikit_fem")
+    return stiffness_along_path(case)
+
+
+def _rig_trend() -> dict:
+    """Fig. 18 trend: natural frequency of the FZG type C pair (thermal model) at the bulk temperatures of the
+    paper's 900 rpm run (first and last reading)."""
+    from thermogear.case import load_case
+    from thermogear.experiment.rig_data import measured_resonance_shift
+    from thermogear.simulation import Simulation
+
+    measured = measured_resonance_shift()
+    base = load_case("fzg_type_c")
+    frequencies = {}
+    for name in ("temperature_start_c", "temperature_end_c"):
+        temperature = measured[name]
+        changed = base.with_changes(**{"temperature.model": "uniform", "temperature.bulk_c": temperature})
+        frequencies[temperature] = Simulation(changed, "thermal").natural_frequency_hz
+    cite("iso14635_1", "fernandes_gearpie")
+    first, last = measured["temperature_start_c"], measured["temperature_end_c"]
+    return {"measured": measured, "natural_frequency_hz": frequencies,
+            "relative_change": frequencies[last] / frequencies[first] - 1.0}
