@@ -10,6 +10,7 @@ At zero rise (everything at 20 °C, the reference) it is the elastic model bit f
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -175,9 +176,9 @@ class ThermoelasticMesh:
         return values
 
     # ------------------------------------------------------------------------------------------- checks
-    @property
+    @cached_property
     def plausibility(self) -> tuple[str, ...]:
-        """Findings that make the thermal result doubtful, in words (empty when nothing is flagged)."""
+        """Findings that make the thermal result doubtful, in words (empty when nothing is flagged); computed once."""
         flags = []
         hot_grid, hot = self.mesh_stiffness()
         cold_grid, cold = self.mesh_stiffness(cold=True)
