@@ -1,10 +1,11 @@
 """Involute geometry of an external spur gear pair.
 
 Roll distances are measured along the line of action from T1, the point where it touches the pinion's base
-circle (physics.md §2). Point lettering A–E is ISO 6336 usage: A start of contact (wheel tip), B lowest point of
+circle (ISO 21771). Point lettering A–E is ISO 6336 usage: A start of contact (wheel tip), B lowest point of
 single contact on the pinion, C pitch point, D highest point of single contact, E end of contact (pinion tip).
 
-Sources: ISO 21771 (gear geometry), Luo & Li (2020) Eqs. 8, 24, 25; physics.md §2.
+Sources: ISO 21771 (gear geometry), Luo & Li (2020) Eqs. 8, 24, 25; the involute relations themselves are in
+:mod:`thermogear.involute`.
 """
 
 from __future__ import annotations
@@ -22,81 +23,10 @@ from thermogear.errors import CaseError
 MINIMUM_TIP_THICKNESS_MODULES = 0.2
 
 
-# ---------------------------------------------------------------------------------------------- functions
-def involute(angle):
-    """Involute function inv α = tan α − α [rad]."""
-    return np.tan(angle) - angle
-
-
-def inverse_involute(value, tolerance: float = 1e-14):
-    """Angle α [rad] with inv α = value, by Newton's method (vectorised).
-
-    tan α − α is convex and increasing on [0, π/2), and both (3v)^(1/3) and arctan(v + π/2) bound the root from
-    above, so Newton's method started at the smaller of the two converges monotonically.
-    """
-    value = np.asarray(value, dtype=float)
-    if np.any(value < 0):
-        raise ValueError("inverse_involute: the involute function is non-negative")
-    angle = np.minimum(np.cbrt(3.0 * value), np.arctan(value + np.pi / 2.0))
-    for _ in range(50):
-        step = (np.tan(angle) - angle - value) / np.tan(angle) ** 2
-        step = np.where(angle > 0, step, 0.0)
-        angle = angle - step
-        if np.all(np.abs(step) < tolerance):
-            break
-    return angle if angle.ndim else float(angle)
-
-
-def reference_tooth_thickness(module: float, pressure_angle: float, profile_shift: float) -> float:
-    """Circular tooth thickness on the reference circle s = m(π/2 + 2x·tan α) [m] (ISO 21771)."""
-    return module * (math.pi / 2.0 + 2.0 * profile_shift * math.tan(pressure_angle))
-
-
-def half_tooth_angle(radius, reference_radius: float, reference_thickness: float, pressure_angle: float,
-                     base_radius: float):
-    """Half angular tooth thickness φ_k at radius r_k [rad] (Luo & Li Eq. 8, with s the reference thickness).
-
-    φ_k = s/(2r) + inv α − inv α_k,  cos α_k = r_b / r_k.
-    """
-    radius = np.asarray(radius, dtype=float)
-    local_pressure_angle = np.arccos(np.clip(base_radius / radius, -1.0, 1.0))
-    return (reference_thickness / (2.0 * reference_radius) + involute(pressure_angle)
-            - involute(local_pressure_angle))
-
-
-def tooth_thickness_at_radius(radius, reference_radius: float, reference_thickness: float,
-                              pressure_angle: float, base_radius: float):
-    """Circular tooth thickness s_k = 2 r_k φ_k at radius r_k ≥ r_b [m] (ISO 21771)."""
-    radius = np.asarray(radius, dtype=float)
-    return 2.0 * radius * half_tooth_angle(radius, reference_radius, reference_thickness, pressure_angle,
-                                           base_radius)
-
-
-def operating_pressure_angle_from_shifts(teeth_1: int, teeth_2: int, shift_1: float, shift_2: float,
-                                         pressure_angle: float) -> float:
-    """Operating pressure angle α_w of zero-backlash mesh: inv α_w = inv α + 2 tan α (x1+x2)/(z1+z2) [rad]."""
-    return inverse_involute(involute(pressure_angle)
-                            + 2.0 * math.tan(pressure_angle) * (shift_1 + shift_2) / (teeth_1 + teeth_2))
-
-
-def gamma_from_roll(roll, pitch_point_roll: float):
-    """Dimensionless contact position Γ = (T1K − T1C)/T1C (Luo & Li Eq. 24) [–]."""
-    return (np.asarray(roll, dtype=float) - pitch_point_roll) / pitch_point_roll
-
-
-def roll_from_gamma(gamma, pitch_point_roll: float):
-    """Roll distance T1K [m] of a contact position Γ (inverse of Eq. 24)."""
-    return pitch_point_roll * (1.0 + np.asarray(gamma, dtype=float))
-
-
-def disc_polar_inertia(density: float, outer_radius: float, bore_radius: float, width: float) -> float:
-    """Polar moment of inertia of a solid disc with a bore, J = ρπb(R⁴ − r⁴)/2 [kg·m²]."""
-    return density * math.pi * width * (outer_radius**4 - bore_radius**4) / 2.0
-
-
-def equivalent_mass(inertia_1: float, inertia_2: float, base_radius_1: float, base_radius_2: float) -> float:
-    """Equivalent mass of the torsional mesh model me = J1 J2 / (J1 rb2² + J2 rb1²) [kg] (Luo & Li Eq. 5)."""
-    return inertia_1 * inertia_2 / (inertia_1 * base_radius_2**2 + inertia_2 * base_radius_1**2)
+from thermogear.involute import (disc_polar_inertia, equivalent_mass, gamma_from_roll,  # noqa: E402,F401
+                                 half_tooth_angle, involute, inverse_involute,
+                                 operating_pressure_angle_from_shifts, reference_tooth_thickness,
+                                 roll_from_gamma, tooth_thickness_at_radius)
 
 
 # --------------------------------------------------------------------------------------------- components
@@ -141,7 +71,7 @@ class Gear:
 
     @property
     def half_tooth_angle_at_base(self) -> float:
-        """α2 = π/(2z) + inv α + 2x tan α / z: half tooth angle on the base circle [rad] (physics.md §3.1)."""
+        """α2 = π/(2z) + inv α + 2x tan α / z: half tooth angle on the base circle [rad] (Tian (2004))."""
         return (math.pi / (2.0 * self.teeth) + involute(self.pressure_angle)
                 + 2.0 * self.profile_shift * math.tan(self.pressure_angle) / self.teeth)
 
@@ -263,7 +193,7 @@ class GearPair:
 
     @cached_property
     def path_points(self) -> dict[str, float]:
-        """Roll distances of A, B, C, D, E from T1 [m] (physics.md §2)."""
+        """Roll distances of A, B, C, D, E from T1 [m] (ISO 21771; ISO 6336-1 points of contact)."""
         start = self.line_of_action_length - math.sqrt(self.wheel.tip_radius**2 - self.wheel.base_radius**2)
         end = math.sqrt(self.pinion.tip_radius**2 - self.pinion.base_radius**2)
         pitch = self.pinion.base_radius * math.tan(self.operating_pressure_angle)
@@ -338,7 +268,7 @@ class GearPair:
         return (np.asarray(roll, dtype=float) - self.path_points["A"]) / (self.pinion.base_radius * omega_1)
 
     def pinion_load_angle(self, roll):
-        """Load angle ω_k = α1 = tan α_K − α2 of the pinion at the contact point [rad] (physics.md §3.1)."""
+        """Load angle ω_k = α1 = tan α_K − α2 of the pinion at the contact point [rad] (Tian (2004); Sainsot et al. (2004))."""
         return np.asarray(roll, dtype=float) / self.pinion.base_radius - self.pinion.half_tooth_angle_at_base
 
     def wheel_load_angle(self, roll):
