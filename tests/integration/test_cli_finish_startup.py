@@ -80,3 +80,15 @@ def test_a_mistyped_command_is_answered_with_the_closest_one():
 def test_first_sentence():
     assert first_sentence("Run a study. Then more.\n\nDetails.") == "Run a study."
     assert first_sentence("Two lines\nof one sentence (e.g. this).") == "Two lines of one sentence (e.g. this)."
+
+
+def test_cases_lists_what_load_case_builds():
+    from thermogear.case import load_case, parameter_set_names
+    from thermogear.cli.cases import parameter_set_headers
+
+    headers = parameter_set_headers()
+    assert [row["name"] for row in headers] == parameter_set_names()
+    for row in headers:
+        case = load_case(row["name"])
+        assert (row["title"], row["citation"], tuple(row["assumptions"])) == (case.title, case.citation,
+                                                                             tuple(case.assumptions))
