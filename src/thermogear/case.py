@@ -253,7 +253,7 @@ def case_from_document(document: dict[str, Any], source: str = "<memory>") -> Ca
                     addendum_coefficient=gears.addendum_coefficient,
                     dedendum_coefficient=gears.dedendum_coefficient,
                     tool_tip_radius_coefficient=gears.tool_tip_radius_coefficient,
-                    bore_radius=section.bore_radius_mm * 1e-3,
+                    bore_radius=0.0 if section.bore_radius_mm is None else section.bore_radius_mm * 1e-3,
                     tip_radius=None if section.tip_diameter_mm is None else section.tip_diameter_mm * 0.5e-3)
 
     centre = None if gears.centre_distance_mm is None else gears.centre_distance_mm * 1e-3

@@ -65,10 +65,12 @@ def test_fillet_compliance_hand_value():
     assert fillet_foundation_compliance(alpha_1, r_b, r_f, h_f, theta_f, 103e9, 0.5) == pytest.approx(4 * expected)
 
 
-def test_solid_gear_refused_with_key():
+def test_negative_bore_refused_with_key_and_solid_gear_is_infinite_ratio():
+    # a solid gear (bore 0) is accepted since issue 15 (tests/unit/test_solid_gear_checks.py)
     with pytest.raises(CaseError) as error:
-        root_to_bore_ratio(0.036, 0.0, "wheel")
+        root_to_bore_ratio(0.036, -0.001, "wheel")
     assert error.value.key == "gears.wheel.bore_radius_mm"
+    assert root_to_bore_ratio(0.036, 0.0) == math.inf
     assert root_to_bore_ratio(0.036, 0.015) == pytest.approx(2.4)
 
 

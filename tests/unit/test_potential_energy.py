@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 from scipy.integrate import quad
 
-from thermogear.errors import CaseError
+from thermogear.errors import ExtrapolationWarning
 from thermogear.geometry import Gear, GearPair
 from thermogear.materials import Material
 from thermogear.stiffness.potential_energy import (hertz_compliance, involute_end_angle, involute_integrals,
@@ -148,11 +148,12 @@ def test_one_to_one_pair_is_symmetric_about_the_pitch_point():
     assert points["C"] - points["A"] == pytest.approx(points["E"] - points["C"], rel=1e-12)
 
 
-def test_solid_gear_is_refused_with_the_case_key():
+def test_solid_gear_has_a_finite_compliance():
+    # issue 15: a solid gear (bore 0) is evaluated at the nominal seat 0.3 r_f (docs/stiffness.md), not refused
     pair = GearPair.create(gear(27, bore=0.0), gear(35))
-    with pytest.raises(CaseError) as error:
-        pair_compliance(pair, STEEL, pair.roll_grid(3))
-    assert error.value.key == "gears.pinion.bore_radius_mm"
+    with pytest.warns(ExtrapolationWarning, match="solid gear"):
+        compliance = pair_compliance(pair, STEEL, pair.roll_grid(3))
+    assert np.all(np.isfinite(compliance.total)) and np.all(compliance.total > 0)
 
 
 def test_profile_shift_stiffens_the_tooth():

@@ -6,6 +6,24 @@ analytical formula", J. Mech. Des. 126 (2004) 748–752. Coefficients and formul
 The root half angle θ_f of a rack-cut gear is derived here from the rack geometry (see
 :func:`root_half_angle`); the x = 0 formula is often quoted with the gear's addendum coefficient in it,
 which drops the clearance term (see docs/stiffness.md).
+
+Validity range and the solid-gear limit (docs/stiffness.md, "Small bores and solid gears"). Sainsot et al. fitted
+L*, M*, P*, Q* to finite-element results of gear bodies clamped at the bore r_int, for h_f = r_f/r_int in
+[1.4, 7] and θ_f in [0.01, 0.12] (SAINSOT_INPUT_RANGES). Evaluated as it stands, the fit's compliance grows as
+h_f² without bound, so a small bore drove the mesh stiffness to zero (luo2019: bore 10 mm → 15.2, 1 mm → 0.23,
+0.01 mm → 3e-9 N/(mm·μm)). That growth is the torsional wind-up of the gear body between its rigidly clamped
+bore and the rim: for an annulus under a torque the rim turns by T/(4πGb)·(1/r_int² − 1/r_f²), i.e. the rim
+displacement grows as h_f² − 1, the form of the fit's B h_f² + E h_f terms. It measures the clamp, not the tooth
+foundation, and diverges for a clamp shrinking to a point, which no gear has: a solid or small-bore gear takes
+its torque from a shaft over a seat whose radius the case does not describe. thermogear therefore evaluates the
+fit with the inner boundary at no less than a nominal seat radius of 0.3 r_f (NOMINAL_SEAT_RATIO, the solid-gear
+inner boundary the finite-element tooth model already uses, docs/fem.md), i.e. at h_f = min(r_f/r_int, 1/0.3):
+the two stiffness models of the project then see the same gear body, the stiffness is continuous in the bore and
+constant below 0.3 r_f, so it converges as the bore shrinks to nothing and a solid gear (no bore) has a value.
+The built-in cases (h_f 2.08 to 3.28) are unchanged. A bore between r_f/7 and 0.3 r_f is inside the fit's data
+but treated as the seat: reported as a ModelAssumptionWarning; a bore outside the fit's data (h_f > 7, a solid
+gear, or h_f < 1.4, a thin rim, evaluated at 1.4) as an ExtrapolationWarning. θ_f is not limited: its terms stay
+finite (A/θ_f², D/θ_f fall as θ_f grows) and a θ_f outside its range is only reported.
 """
 
 from __future__ import annotations
@@ -15,7 +33,7 @@ import warnings
 
 import numpy as np
 
-from thermogear.errors import CaseError, ExtrapolationWarning
+from thermogear.errors import CaseError, ExtrapolationWarning, ModelAssumptionWarning
 
 #: Sainsot et al. (2004) polynomial coefficients (A, B, C, D, E, F) of X*(h_f, θ_f) for X* ∈ {L*, M*, P*, Q*}
 #: (Sainsot et al. (2004)).
@@ -31,9 +49,23 @@ SAINSOT_OUTPUT_RANGES: dict[str, tuple[float, float]] = {
     "L": (6.82, 6.94), "M": (1.08, 3.29), "P": (2.56, 13.47), "Q": (0.141, 0.62),
 }
 
-#: Input ranges of the fit, h_f = r_f/r_int ∈ [1.4, 7] and θ_f ∈ [0.01, 0.12] rad. [R]: read from a commented-out
-#: check in ROSS (gear_element.py, ``_gear_body_polynominal``); the original paper was not opened.
+#: Input ranges of the fit, h_f = r_f/r_int ∈ [1.4, 7] and θ_f ∈ [0.01, 0.12] rad, as checked (commented out) in
+#: ROSS's gear_element.py ``_gear_body_polynominal`` (``not 1.4 <= h <= 7``, ``not 0.01 <= theta_f <= 0.12``;
+#: re-read for issue 15). The paper itself could not be opened to confirm them (docs/stiffness.md).
 SAINSOT_INPUT_RANGES: dict[str, tuple[float, float]] = {"h_f": (1.4, 7.0), "theta_f": (0.01, 0.12)}
+
+
+#: Nominal radius of the torque-carrying seat of a solid or small-bore gear as a share of its root radius [–]:
+#: the solid-gear inner boundary of the finite-element tooth model (thermogear.fem.tooth_mesh, docs/fem.md).
+NOMINAL_SEAT_RATIO = 0.3
+
+
+def evaluated_root_to_bore_ratio(root_to_bore):
+    """h_f at which the Sainsot fit is evaluated [–]: the gear's h_f = r_f/r_int limited to
+    [1.4, 1/NOMINAL_SEAT_RATIO]. A solid gear (h_f = ∞) and any bore below the nominal seat 0.3 r_f are evaluated
+    at the seat, a rim thinner than the fit's data at h_f = 1.4 (module docstring)."""
+    low = SAINSOT_INPUT_RANGES["h_f"][0]
+    return np.clip(np.asarray(root_to_bore, dtype=float), low, 1.0 / NOMINAL_SEAT_RATIO)
 
 
 def sainsot_coefficient(name: str, root_to_bore_ratio, root_half_angle):
@@ -76,8 +108,11 @@ def fillet_foundation_compliance(load_angle, base_radius: float, root_radius: fl
 
     1/k_f = cos²α1/(E L) · {L*(u_f/S_f)² + M*(u_f/S_f) + P*(1 + Q* tan²α1)}, with
     u_f = r_b / cos α1 − r_f (where the line of action crosses the tooth centreline, measured from the root
-    circle) and S_f = 2 r_f θ_f. ``load_angle`` α1 [rad] may be an array.
+    circle) and S_f = 2 r_f θ_f. ``load_angle`` α1 [rad] may be an array. ``root_to_bore_ratio`` h_f = r_f/r_int
+    [–] may be ``inf`` (a solid gear): L*, M*, P*, Q* are evaluated at :func:`evaluated_root_to_bore_ratio` (h_f
+    limited to [1.4, 1/0.3], module docstring).
     """
+    root_to_bore_ratio = evaluated_root_to_bore_ratio(root_to_bore_ratio)
     alpha_1 = np.asarray(load_angle, dtype=float)
     cos_1 = np.cos(alpha_1)
     u_over_s = (base_radius / cos_1 - root_radius) / (2.0 * root_radius * root_half_angle_rad)
@@ -90,33 +125,50 @@ def fillet_foundation_compliance(load_angle, base_radius: float, root_radius: fl
 
 
 def root_to_bore_ratio(root_radius: float, bore_radius: float, key: str = "gear") -> float:
-    """h_f = r_f / r_int [–]; refuses a solid gear (r_int = 0), for which the fit has no meaning."""
-    if not bore_radius > 0.0:
-        raise CaseError(f"gears.{key}.bore_radius_mm", bore_radius * 1e3, "> 0",
-                        "the Sainsot fillet-foundation model needs the radius of the gear body's inner boundary "
-                        "(h_f = r_f / r_int); give the bore or shaft-seat radius")
+    """h_f = r_f / r_int [–] of the gear as built: ``inf`` for a solid gear (no bore, r_int = 0); the fit is
+    evaluated at :func:`evaluated_root_to_bore_ratio` of it. Refuses a negative or non-finite bore radius."""
+    if not (math.isfinite(bore_radius) and bore_radius >= 0.0):
+        raise CaseError(f"gears.{key}.bore_radius_mm", bore_radius * 1e3, ">= 0 (0 or omitted: a solid gear)",
+                        "a bore radius is a length")
+    if bore_radius == 0.0:
+        return math.inf
     return root_radius / bore_radius
 
 
 def check_sainsot_range(root_to_bore: float, root_half_angle_rad: float, key: str = "gear",
                         warn: bool = True) -> list[str]:
     """Messages for each input or output of the Sainsot fit outside its range; with ``warn`` each is also
-    issued as an ExtrapolationWarning."""
+    issued as an ExtrapolationWarning. A bore inside the fit's data but below the nominal seat (evaluated at the
+    seat) is reported too, as a ModelAssumptionWarning. The outputs are checked at the h_f the fit is evaluated
+    at."""
     messages = []
+    assumptions = []
     low, high = SAINSOT_INPUT_RANGES["h_f"]
+    evaluated = float(evaluated_root_to_bore_ratio(root_to_bore))
+    built = ("a solid gear (no bore), h_f = ∞" if math.isinf(root_to_bore)
+             else f"h_f = r_f/r_int = {root_to_bore:.3f}")
     if not low <= root_to_bore <= high:
-        messages.append(f"{key}: h_f = r_f/r_int = {root_to_bore:.3f} outside the fitted range [{low}, {high}]")
+        treatment = ("the fit's thinnest rim" if root_to_bore < low
+                     else f"the nominal seat r_int = {NOMINAL_SEAT_RATIO:g} r_f")
+        messages.append(f"{key}: {built} outside the fitted range [{low}, {high}]; evaluated at h_f = "
+                        f"{evaluated:.3g} ({treatment}, docs/stiffness.md)")
+    elif root_to_bore > evaluated:
+        assumptions.append(f"{key}: bore below the nominal seat radius {NOMINAL_SEAT_RATIO:g} r_f ({built}): the "
+                           f"Sainsot body compliance is evaluated at the seat, h_f = {evaluated:.3g} "
+                           "(docs/stiffness.md)")
     low, high = SAINSOT_INPUT_RANGES["theta_f"]
     if not low <= root_half_angle_rad <= high:
         messages.append(f"{key}: θ_f = {root_half_angle_rad:.4f} rad outside the fitted range [{low}, {high}]")
     for name, (low, high) in SAINSOT_OUTPUT_RANGES.items():
-        value = float(sainsot_coefficient(name, root_to_bore, root_half_angle_rad))
+        value = float(sainsot_coefficient(name, evaluated, root_half_angle_rad))
         if not low <= value <= high:
             messages.append(f"{key}: {name}* = {value:.4f} outside the range of Sainsot's data [{low}, {high}]")
     for message in messages if warn else ():
         warnings.warn(f"Sainsot fillet-foundation fit extrapolated — {message}", ExtrapolationWarning,
                       stacklevel=3)
-    return messages
+    for message in assumptions if warn else ():
+        warnings.warn(message, ModelAssumptionWarning, stacklevel=3)
+    return messages + assumptions
 
 
 def gear_sainsot_messages(gear, key: str = "gear") -> list[str]:
