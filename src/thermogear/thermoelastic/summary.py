@@ -84,16 +84,18 @@ def thermoelastic_summary(case: "Case") -> dict:
                         "mean": float(cold_grid.time_average(cold_loaded.approach) * 1e6),
                         "peak_to_peak": cold_loaded.peak_to_peak * 1e6}},
         "normal_load_n": component.normal_load,
-        "assumptions": [
-            f"normal backlash at {component.reference_c:g} °C: {component.allowance.nominal * 1e6:.1f} μm "
-            f"({component.allowance.source})",
-            f"E(T) = E(20 °C)·[1 + β_E (T − 20 °C)], β_E pinion {pinion.modulus_coefficient_per_k:.3g} /K "
-            f"({pinion.modulus_source}), wheel {wheel.modulus_coefficient_per_k:.3g} /K ({wheel.modulus_source})",
-            f"housing expansion {component.housing.expansion_per_k:.3g} /K at {component.housing_c:g} °C "
-            f"({component.housing.source})",
-            "gears scaled by their equivalent bulk rise (the uniform rise with the same base-circle expansion, "
-            "Luo & Li Eq. 10); the rest of the field distorts the loaded flank (consistent Eqs. 8–12)",
-        ],
+        "assumptions": {
+            "backlash": f"normal backlash at {component.reference_c:g} °C: {component.allowance.nominal * 1e6:.1f} μm "
+                        f"({component.allowance.source})",
+            "youngs_modulus": f"E(T) = E(20 °C)·[1 + β_E (T − 20 °C)], β_E pinion "
+                              f"{pinion.modulus_coefficient_per_k:.3g} /K ({pinion.modulus_source}), wheel "
+                              f"{wheel.modulus_coefficient_per_k:.3g} /K ({wheel.modulus_source})",
+            "housing": f"housing expansion {component.housing.expansion_per_k:.3g} /K at {component.housing_c:g} °C "
+                       f"({component.housing.source})",
+            "geometry": "gears scaled by their equivalent bulk rise (the uniform rise with the same base-circle "
+                        "expansion, Luo & Li Eq. 10); the rest of the field distorts the loaded flank (consistent "
+                        "Eqs. 8–12)",
+        },
         "plausibility": flags,
         "temperature": temperature_field_from_case(case).describe(),
     }
