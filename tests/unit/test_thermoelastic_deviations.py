@@ -115,3 +115,35 @@ def test_bad_load_sharing_input_is_refused():
         loaded_transmission_error(np.ones((2, 3)), np.zeros((2, 3)), 0.0)
     with pytest.raises(ValueError, match="no tooth pair"):
         loaded_transmission_error(np.zeros((2, 3)), np.zeros((2, 3)), 1.0)
+
+
+def test_a_common_deviation_shifts_the_approach_and_keeps_the_shares():
+    # Σ k⟨δ − (e + c)⟩₊ = W is solved by δ + c: a deviation common to every pair is a rigid shift of the TE.
+    generator = np.random.default_rng(3)
+    stiffness = generator.uniform(1e8, 5e8, (3, 50))
+    deviation = generator.uniform(0.0, 20e-6, (3, 50))
+    base = loaded_transmission_error(stiffness, deviation, 4000.0)
+    shifted = loaded_transmission_error(stiffness, deviation + 7e-6, 4000.0)
+    np.testing.assert_allclose(shifted.approach - base.approach, 7e-6, rtol=0, atol=1e-17)
+    np.testing.assert_allclose(shifted.load_share, base.load_share, rtol=0, atol=1e-9)
+
+
+def test_wheel_colder_than_pinion_gives_a_base_pitch_deviation():
+    # luo2019's field with a wheel body 6 K colder than the pinion's, under the thermo-elastic model: the pinion's
+    # base pitch is larger, the entering pair (low roll) meets late: e falls along the roll, zero at C.
+    case = load_case("luo2019").with_changes(**{"thermal.model": "thermoelastic", "temperature.wheel_base_c": 70.0,
+                                                "temperature.wheel_bore_c": 66.0})
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        component = ThermoelasticMesh.from_case(case)
+    assert component.strains[0] > component.strains[1]
+    pair = component.gear_pair
+    parts = component.deviation_parts_at(np.array([pair.path_points["A"], pair.path_points["C"],
+                                                   pair.path_points["E"]]))
+    pitch = parts["base_pitch"]
+    assert pitch[0] > 0.0 > pitch[2] and abs(pitch[1]) < 1e-18
+    # one pitch apart: p_b1 − p_b2 = p_b·(ε1 − ε2)/(1 + ε1)-scaled, a few tenths of a μm for 6 K
+    step = float(component.deviation_parts_at(np.array([pair.path_points["A"]]))["base_pitch"][0]
+                 - component.deviation_parts_at(np.array([pair.path_points["A"] + pair.base_pitch]))["base_pitch"][0])
+    strain_difference = component.strains[0] - component.strains[1]
+    assert step == pytest.approx(pair.base_pitch * strain_difference / (1 + component.strains[0]), rel=1e-9)
