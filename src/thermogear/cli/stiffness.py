@@ -180,7 +180,7 @@ def stiffness(
         summary["thermal"] = thermal_module.thermal_stiffness_summary(loaded)
     if plot is not None:
         if thermal_module is not None:
-            importlib.import_module("thermogear.thermal.plots").plot_thermal_stiffness(loaded, plot)
+            thermal_module.plot_thermal_stiffness(loaded, plot)
         else:
             import matplotlib.pyplot as plt
 
