@@ -1,4 +1,5 @@
-"""The report opens in a real browser (Debian's chromium, headless) and every figure loads.
+"""The report opens in a real browser (Debian's chromium, headless): every figure loads, and the first screen
+(1280 × 800) shows the headline block (case, predictions within tolerance, known gaps, key figures).
 
 Skipped only when chromium is not installed (CI installs it: `apt-get install -y chromium`)."""
 
@@ -50,8 +51,36 @@ def test_every_image_loads(report, tmp_path):
     match = re.search(r'<pre id="tg-image-check">([^<]*)</pre>', result.stdout)
     assert match, f"the page did not finish loading in chromium: {result.stderr[-2000:]}"
     state = json.loads(match.group(1))
-    assert state["total"] == len(report.figures) >= 9
+    assert state["total"] >= len(report.figures) >= 9  # every figure, plus the key figures of the headline
     assert state["loaded"] == state["total"], f"broken images: {state['broken']}"
+
+
+_HEADLINE = ("<script>window.addEventListener('load',function(){function box(id){var e=document.getElementById(id);"
+             "if(!e){return null}var r=e.getBoundingClientRect();return {top:r.top,bottom:r.bottom,left:r.left,"
+             "right:r.right}}var d=document.createElement('pre');d.id='tg-headline-check';"
+             "d.textContent=JSON.stringify({viewport:[window.innerWidth,window.innerHeight],"
+             "headline:box('headline'),numbers:box('headline-numbers'),paper:box('paper')});"
+             "document.body.appendChild(d);});</script>")
+FIRST_SCREEN = (1280, 800)
+
+
+def test_headline_is_on_the_first_screen(report, tmp_path):
+    """Chromium lays the page out in a 1280 × 800 window: the headline block starts on the first screen and its
+    numbers (predictions within, known gaps) lie wholly inside it; the long table starts below it."""
+    page = report.report.read_text(encoding="utf-8")
+    checked = tmp_path / "headline.html"
+    checked.write_text(page.replace("</body>", _HEADLINE + "</body>"), encoding="utf-8")
+    result = _chromium(tmp_path / "profile", f"--window-size={FIRST_SCREEN[0]},{FIRST_SCREEN[1]}",
+                       "--virtual-time-budget=10000", "--dump-dom", checked.as_uri())
+    match = re.search(r'<pre id="tg-headline-check">([^<]*)</pre>', result.stdout)
+    assert match, f"the page did not finish loading in chromium: {result.stderr[-2000:]}"
+    state = json.loads(match.group(1))
+    width, height = state["viewport"]
+    assert state["headline"] is not None and state["numbers"] is not None, "no headline block in the page"
+    assert 0 <= state["headline"]["top"] < height / 2, state
+    assert 0 <= state["numbers"]["top"] and state["numbers"]["bottom"] <= height, state
+    assert state["numbers"]["right"] <= width, state
+    assert state["paper"]["top"] > height, "the long table must not push the headline off the first screen"
 
 
 def test_screenshot_shows_the_report(report, tmp_path):
@@ -59,9 +88,13 @@ def test_screenshot_shows_the_report(report, tmp_path):
     from matplotlib.image import imread
 
     shot = tmp_path / "shot.png"
-    _chromium(tmp_path / "profile", "--window-size=1280,2400", f"--screenshot={shot}", report.report.as_uri())
+    _chromium(tmp_path / "profile", "--hide-scrollbars", f"--window-size={FIRST_SCREEN[0]},{FIRST_SCREEN[1]}",
+              f"--screenshot={shot}", report.report.as_uri())
     assert shot.is_file(), "chromium wrote no screenshot"
     pixels = imread(shot)
-    assert pixels.shape[0] >= 2000 and pixels.shape[1] >= 1200
-    # not a blank page: the first screen holds text, a table and the first figure
+    assert pixels.shape[0] == FIRST_SCREEN[1] and pixels.shape[1] == FIRST_SCREEN[0]
+    # not a blank page: the first screen holds text and the key figures
     assert float(np.std(pixels[..., :3])) > 0.05
+    # the headline block's tinted background (#f7fafc) fills a good part of the first screen
+    tint = np.all(np.abs(pixels[..., :3] - np.array([0xF7, 0xFA, 0xFC]) / 255.0) < 0.01, axis=-1)
+    assert tint.mean() > 0.15, tint.mean()

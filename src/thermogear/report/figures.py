@@ -20,12 +20,15 @@ FIG6_SPAN_MS = 5.0
 FIGURES: dict[str, str] = {
     "fig3c": "Fig. 3(c) — flank temperature of the driving tooth along the path of contact Γ (temperature input).",
     "fig4": "Fig. 4 — elastic and thermal stiffness and compliance along Γ: pair and single teeth.",
-    "fig6": "Fig. 6 — per-pair and total mesh stiffness over one mesh cycle (left) and over 0–5 ms (right).",
+    "fig6": "Fig. 6 — per-pair and total mesh stiffness per width over one mesh cycle (left) and over 0–5 ms "
+            "(right).",
     "fig7": "Fig. 7 — friction damping with oil at the reference temperature (elastic model, c_e).",
     "fig8": "Fig. 8 — friction damping with oil at the flank temperature (thermal model, c_r).",
-    "fig9": "Fig. 9 — dynamic transmission error x(τ) from rest, elastic and thermal.",
+    "fig9": "Fig. 9 — dynamic transmission error: start-up from rest (left) and two steady-state mesh periods "
+            "(right), elastic and thermal, with the static transmission error (dotted).",
     "fig10": "Fig. 10 — phase portrait ẋ against x from rest, elastic and thermal.",
-    "fig11": "Fig. 11 — velocity ẋ(τ) from rest, elastic and thermal.",
+    "fig11": "Fig. 11 — velocity ẋ: start-up from rest (left) and two steady-state mesh periods (right), elastic "
+             "and thermal.",
     "fig12": "Fig. 12 — dynamic pair and system loads per unit face width in the steady state (three periods).",
     "fig15": "Fig. 15 — FE verification of the elastic and thermal stiffness along Γ.",
 }
@@ -40,11 +43,20 @@ def _pyplot():
 
 
 def _mark_points(ax, case) -> None:
+    """Vertical lines at A–E with their letters above the axes; letters closer than 6 % of the path to the
+    previous one go one row higher, so that B and C (or C and D) never overlap on a short single-contact zone."""
     pair = case.gear_pair
-    for name, roll in pair.path_points.items():
-        gamma = float(pair.gamma(roll))
+    points = sorted(((float(pair.gamma(roll)), name) for name, roll in pair.path_points.items()))
+    span = max(points[-1][0] - points[0][0], 1e-12)
+    level, previous = 0, None
+    for gamma, name in points:
+        level = level + 1 if previous is not None and gamma - previous < 0.06 * span and level < 2 else 0
+        previous = gamma
         ax.axvline(gamma, color="0.8", lw=0.7, zorder=0)
-        ax.annotate(name, (gamma, 1.0), xycoords=("data", "axes fraction"), ha="center", va="bottom", fontsize=8)
+        ax.annotate(name, (gamma, 1.0), xycoords=("data", "axes fraction"), xytext=(0, 2 + 9 * level),
+                    textcoords="offset points", ha="center", va="bottom", fontsize=8)
+    if ax.get_title():
+        ax.set_title(ax.get_title(), pad=14 + 9 * 2)  # above the letters, whatever their rows
 
 
 def fig3c(evaluation):
@@ -90,7 +102,7 @@ def fig6(evaluation):
     elastic = evaluation.simulations.get("elastic")
     grid = simulation.grid
     width = evaluation.case.gear_pair.face_width
-    scale = 1.0 / width / 1e10
+    scale = 1.0 / width * 1e-9  # N/m total → N/(mm·μm) per width
     figure, (left, right) = plt.subplots(1, 2, figsize=(11, 4.0), constrained_layout=True)
     nodes_ms = grid.nodes * 1e3
     for slot, values in enumerate(simulation.pair_stiffness):
@@ -133,7 +145,7 @@ def _damping_figure(evaluation, model: str):
     left.set_ylabel("damping of one tooth pair [N·s/m]")
     left.set_title("per pair along the path")
     _mark_points(left, evaluation.case)
-    grid = summary.grids[model]
+    grid = summary.grid
     period = grid.nodes[-1]
     periods = 3
     times = np.concatenate([grid.nodes[:-1] + j * period for j in range(periods)] + [[periods * period]]) * 1e3
@@ -171,9 +183,37 @@ def _pair(evaluation, source: str):
     return first, other
 
 
+def _start_up(ax, evaluation, quantity: str, periods: int = 6) -> None:
+    """The first ``periods`` mesh periods from rest (the transient), x [μm] or ẋ [mm/s] against time [ms]."""
+    scale = 1e6 if quantity == "displacement" else 1e3
+    for model in ("elastic", "thermal"):
+        response = evaluation.transients.get(model)
+        if response is None:
+            continue
+        history = response.history
+        count = min(history.time.size, periods * history.samples_per_period + 1)
+        ax.plot(history.time[:count] * 1e3, getattr(history, quantity)[:count] * scale, color=_COLORS[model],
+                ls="-" if model == "elastic" else "--", label=f"{model}, from rest")
+    ax.set_xlabel("time [ms]")
+    ax.set_title(f"start-up from rest (first {periods} mesh periods)", fontsize=9)
+    ax.grid(True, alpha=0.3)
+
+
+def _steady_and_start_up(evaluation, quantity: str):
+    plt = _pyplot()
+    figure, (left, right) = plt.subplots(1, 2, figsize=(11, 4.0), constrained_layout=True,
+                                         gridspec_kw={"width_ratios": (1, 1.3)})
+    _start_up(left, evaluation, quantity)
+    first, other = _pair(evaluation, "responses")
+    draw = first.plot_displacement if quantity == "displacement" else first.plot_velocity
+    draw(other=other, ax=right, periods=2)
+    right.set_title("steady state, two mesh periods", fontsize=9)
+    left.set_ylabel(right.get_ylabel())
+    return figure
+
+
 def fig9(evaluation):
-    first, other = _pair(evaluation, "transients")
-    return first.plot_displacement(other=other)
+    return _steady_and_start_up(evaluation, "displacement")
 
 
 def fig10(evaluation):
@@ -182,8 +222,7 @@ def fig10(evaluation):
 
 
 def fig11(evaluation):
-    first, other = _pair(evaluation, "transients")
-    return first.plot_velocity(other=other)
+    return _steady_and_start_up(evaluation, "velocity")
 
 
 def fig12(evaluation):
@@ -218,9 +257,9 @@ _DRAW: dict[str, tuple[Callable[[Any], Any], tuple[str, ...]]] = {
     "fig6": (fig6, ("thermal model",)),
     "fig7": (fig7, ("damping",)),
     "fig8": (fig8, ("damping",)),
-    "fig9": (fig9, ("start-up transients",)),
+    "fig9": (fig9, ("start-up transients", "elastic model", "thermal model")),
     "fig10": (fig10, ("start-up transients",)),
-    "fig11": (fig11, ("start-up transients",)),
+    "fig11": (fig11, ("start-up transients", "elastic model", "thermal model")),
     "fig12": (fig12, ("elastic model", "thermal model")),
     "fig15": (fig15, ("FE verification",)),
 }
@@ -246,20 +285,32 @@ def report_figures(evaluation) -> tuple[dict[str, Any], dict[str, str]]:
     return figures, missing
 
 
-def fix_legend_locations(figure, location: str = "upper right") -> None:
-    """Replace legends placed at "best" by a fixed corner: matplotlib's search for the best place scans every
-    data point (seconds per figure for a 60-period transient), and it reruns on every save."""
-    legends = [ax.get_legend() for ax in figure.axes] + list(getattr(figure, "legends", []))
-    for legend in legends:
-        if legend is not None and getattr(legend, "_loc", None) == 0 and hasattr(legend, "set_loc"):
-            legend.set_loc(location)
+def legends_below(figure) -> None:
+    """Gather the legends of every axes into one legend below the plots, so that no legend hides data (one entry
+    per label). Also replaces legends placed at "best": matplotlib's search scans every data point."""
+    handles, labels = [], []
+    for ax in figure.axes:
+        legend = ax.get_legend()
+        if legend is None:
+            continue
+        for handle, label in zip(*ax.get_legend_handles_labels()):
+            if label not in labels:
+                handles.append(handle)
+                labels.append(label)
+        legend.remove()
+    if not handles:
+        return
+    if figure.get_layout_engine() is None:
+        figure.set_layout_engine("constrained")
+    columns = min(len(labels), 4 if max(len(text) for text in labels) < 30 else 2)
+    figure.legend(handles, labels, loc="outside lower center", ncol=columns, fontsize=8, frameon=False)
 
 
 def save_figure(figure, folder, name: str) -> list[str]:
     """Write ``name.png`` (150 dpi) and ``name.svg`` into ``folder``; close the figure; return the file names."""
     import matplotlib.pyplot as plt
 
-    fix_legend_locations(figure)
+    legends_below(figure)
     files = []
     for suffix, options in ((".png", {"dpi": 150}), (".svg", {})):
         path = folder / f"{name}{suffix}"

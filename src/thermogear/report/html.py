@@ -29,7 +29,7 @@ details{margin:.3em 0}code{background:#f2f4f7;padding:0 .25em;border-radius:3px}
 #headline{border:2px solid #c9d4df;border-radius:8px;padding:.4em 1em;margin:.6em 0;background:#f7fafc}
 .headline{font-size:1.15em;margin:.3em 0}.big{font-size:1.5em;font-weight:700}.case-line{margin:.2em 0;color:#3b4550}
 ul.gaps{margin:.2em 0;font-size:.85em;columns:2}ul.gaps li{break-inside:avoid}ul.gaps details{display:inline}
-.key-figures{display:flex;gap:.5em}.key-figures img{width:100%;max-width:380px;height:auto;border:1px solid #e3e7eb}
+.key-figures{display:flex;gap:.5em;align-items:flex-start}.key-figures img{width:100%;max-width:380px;max-height:260px;object-fit:contain;border:1px solid #e3e7eb}
 details.section>summary{font-weight:600;cursor:pointer;padding:.2em 0}
 """
 
@@ -131,7 +131,7 @@ def _headline_section(evaluation, verdicts, pngs: dict[str, bytes]) -> str:
 
     case = evaluation.case
     pair, op = case.gear_pair, case.operating_point
-    facts = (f"{_e(case.title or case.name)} — z1/z2 {pair.pinion.teeth}/{pair.wheel.teeth}, m {pair.module * 1e3:g} mm, "
+    facts = (f"<b>{_e(case.name)}</b>: z1/z2 {pair.pinion.teeth}/{pair.wheel.teeth}, m {pair.module * 1e3:g} mm, "
              f"b {pair.face_width * 1e3:g} mm, {op.power / 1e3:.4g} kW at {op.speed_rpm:g} rpm, "
              f"ε {pair.contact_ratio:.3f}, load {case.normal_load / pair.face_width / 1e3:.4g} N/mm")
     parts = [f"<section id='headline'><p class='case-line'>{facts}</p>"]
@@ -140,7 +140,8 @@ def _headline_section(evaluation, verdicts, pngs: dict[str, bytes]) -> str:
         prediction, statement = counts["prediction"], counts["qualitative"]
         gaps = known_gaps(verdicts)
         parts.append(
-            f"<p class='headline'><span class='big'>{prediction['within']} of {prediction['total']}</span> "
+            f"<p class='headline' id='headline-numbers'><span class='big'>{prediction['within']} of "
+            f"{prediction['total']}</span> "
             f"predictions of the paper's numbers within their argued tolerance · "
             f"<span class='big'>{prediction['outside'] + prediction['not computed']}</span> known gaps · "
             f"{statement['within']} of {statement['total']} qualitative statements reproduced.</p>"
@@ -158,7 +159,7 @@ def _headline_section(evaluation, verdicts, pngs: dict[str, bytes]) -> str:
         metrics = {model: response.metrics for model, response in evaluation.responses.items()}
         kv = " · ".join(f"{model}: Kv {m['kv']:.3f}, f_n {m['natural_frequency_hz']:.0f} Hz"
                         for model, m in metrics.items() if "kv" in m)
-        parts.append(f"<p class='headline'>{_e(kv) or 'no dynamic response computed'}</p>")
+        parts.append(f"<p class='headline' id='headline-numbers'>{_e(kv) or 'no dynamic response computed'}</p>")
     keys = [name for name in ("fig4", "fig9", "fig12") if name in pngs]
     if keys:
         thumbs = "".join(f"<a href='#{name}'><img alt='{_e(FIGURES[name])}' title='{_e(FIGURES[name])}' "
