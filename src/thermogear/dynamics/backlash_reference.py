@@ -56,7 +56,10 @@ def reference_backlash_solve_ivp(problem: BacklashMeshProblem, periods: int, ini
             levels = _thresholds(problem, i)
             start, end = offset + problem.nodes[i], offset + problem.nodes[i + 1]
             grid = start + (end - start) * np.arange(int(samples_per_interval)) / int(samples_per_interval)
-            just_crossed: dict[int, float] = {}
+            # a threshold the state starts on (the previous interval ended on a switch) only watches for a crossing
+            # against the motion, as after a switch inside the interval
+            motion = float(np.sign(state[1] if state[1] != 0.0 else rhs(start, state)[1]))
+            just_crossed = {index: motion for index, level in enumerate(levels) if state[0] == level}
             t = start
             while True:
                 events = []
@@ -71,6 +74,8 @@ def reference_backlash_solve_ivp(problem: BacklashMeshProblem, periods: int, ini
                 if not solution.success:
                     raise ModelLimitError(f"solve_ivp failed on interval {i} of period {q}: {solution.message}")
                 stop = solution.t[-1]
+                if solution.status == 1 and stop <= t:
+                    raise ModelLimitError(f"solve_ivp stalled on a contact switch at t = {t!r} s (interval {i})")
                 inside = grid[(grid >= t) & (grid < stop)]
                 if inside.size:
                     values = solution.sol(inside)
@@ -81,7 +86,8 @@ def reference_backlash_solve_ivp(problem: BacklashMeshProblem, periods: int, ini
                 if solution.status == 1:
                     index = next(j for j, hit in enumerate(solution.t_events) if hit.size)
                     state[0] = levels[index]
-                    just_crossed = {index: float(np.sign(state[1]))}
+                    motion = float(np.sign(state[1] if state[1] != 0.0 else rhs(stop, state)[1]))
+                    just_crossed = {index: motion}
                     switches.append(stop)
                     times.append(stop)
                     xs.append(state[0])
