@@ -16,12 +16,16 @@ from __future__ import annotations
 import json
 import os
 import socket
+from importlib import metadata
 from pathlib import Path
 
 from thermogear.errors import CaseError
 
-__all__ = ["MARKER", "is_owned", "marker_process_alive", "read_marker", "require_owned", "resolve_output",
-           "write_marker"]
+__all__ = ["FIGURE_SUFFIXES", "MARKER", "check_figure_file", "check_output_folder", "is_owned",
+           "marker_process_alive", "read_marker", "require_owned", "resolve_output", "write_marker"]
+
+#: File types a figure option (--plot) writes.
+FIGURE_SUFFIXES = (".png", ".svg", ".pdf")
 
 #: Name of the marker file inside every output folder thermogear writes.
 MARKER = ".thermogear-owner.json"
@@ -34,10 +38,12 @@ def resolve_output(path: Path | str) -> Path:
 
 def write_marker(folder: Path | str, kind: str) -> Path:
     """Write the ownership marker of ``kind`` (``"report"``, ``"sweep-store"``) into ``folder``."""
-    from thermogear import __version__
-
+    try:
+        version = metadata.version("thermogear")
+    except metadata.PackageNotFoundError:  # a source tree that is not installed
+        version = "0+unknown"
     marker = Path(folder) / MARKER
-    marker.write_text(json.dumps({"writer": "thermogear", "kind": kind, "version": __version__,
+    marker.write_text(json.dumps({"writer": "thermogear", "kind": kind, "version": version,
                                   "pid": os.getpid(), "host": socket.gethostname()}), encoding="utf-8")
     return marker
 
@@ -91,3 +97,34 @@ def marker_process_alive(document: dict) -> bool:
     except OSError:  # it exists but belongs to someone else
         return True
     return True
+
+
+def check_figure_file(path: Path | str, option: str = "--plot", suffixes: tuple[str, ...] = FIGURE_SUFFIXES) -> Path:
+    """Check a figure file target before any work: a known suffix, not an existing folder, in an existing writable
+    folder. Returns the resolved path; raises CaseError naming the option (a file of that name is replaced)."""
+    target = resolve_output(path)
+    if target.suffix.lower() not in suffixes:
+        raise CaseError(option, str(path), "a file name ending in " + ", ".join(suffixes),
+                        "the figure format is taken from the suffix")
+    if target.is_dir():
+        raise CaseError(option, str(path), "a file name (not a folder)", "a folder of that name exists")
+    if not target.parent.is_dir():
+        raise CaseError(option, str(path), "a file in an existing folder", f"no folder {target.parent}")
+    if not os.access(target.parent, os.W_OK | os.X_OK):
+        raise CaseError(option, str(path), "a file in a writable folder", f"cannot write in {target.parent}")
+    return target
+
+
+def check_output_folder(path: Path | str, option: str = "--plot") -> Path:
+    """Check a folder that figures are written into (created if absent): not an existing file, creatable.
+    Returns the resolved path; raises CaseError naming the option."""
+    target = resolve_output(path)
+    if target.exists() and not target.is_dir():
+        raise CaseError(option, str(path), "a folder (figures are written into it)", "a file of that name exists")
+    existing = target
+    while not existing.exists() and existing != existing.parent:
+        existing = existing.parent
+    if not existing.is_dir() or not os.access(existing, os.W_OK | os.X_OK):
+        raise CaseError(option, str(path), "a folder thermogear can create and write",
+                        f"cannot write there: {existing} is not a writable folder")
+    return target

@@ -17,6 +17,7 @@ from thermogear.cli.app import app, console, error_console, print_json
 from thermogear.cli.console import print_warning
 from thermogear.cli.tables import dict_tables
 from thermogear.errors import ExtrapolationWarning, ThermogearError
+from thermogear.ownership import check_figure_file
 from thermogear.mesh.model import MeshModel
 from thermogear.stiffness.fillet_foundation import gear_sainsot_messages
 from thermogear.stiffness.iso6336 import N_PER_MM_UM, iso6336_stiffness
@@ -169,6 +170,8 @@ def stiffness(
     thermal: bool = typer.Option(False, "--thermal", help="add the thermal stiffness (thermogear.thermal)"),
 ) -> None:
     """Elastic mesh stiffness along the path of contact and over one mesh period (per mm of face width)."""
+    if plot is not None:
+        check_figure_file(plot)  # before any work: suffix, not a folder, writable folder (issue 15)
     loaded = load_case(case)
     thermal_module = importlib.import_module("thermogear.thermoelastic.summary") if thermal else None  # both models
     with warnings.catch_warnings():

@@ -10,9 +10,11 @@ import typer
 from rich.table import Table
 
 from thermogear.cli.app import app, console, print_json
+from thermogear.errors import CaseError
 from thermogear.experiment.signals import SignalError, read_signal
 from thermogear.experiment.spectrum import max_amplitude, mean_amplitude, mesh_orders, rms_amplitude, spectrum
 from thermogear.experiment.table import parse_windows, window_spectra, window_table
+from thermogear.ownership import check_output_folder
 
 DEFINITIONS = {
     "mean_amplitude": "mean of |a - mean(a)| over the record (2A/pi for a sine of amplitude A)",
@@ -55,6 +57,8 @@ def vibration(
     plot: Path | None = typer.Option(None, "--plot", help="write figures (spectrum, waterfall, table) to this folder"),
 ) -> None:
     """Vibration analysis of a measured signal (Luo & Li 2020 Table 3 / Fig. 18 style)."""
+    if plot is not None:
+        plot = check_output_folder(plot)  # before any work: a file of that name is refused, not overwritten
     signal = read_signal(file, column, rate, scale)
     band_hz = parse_band(band)
     result = spectrum(signal, method, segment)
@@ -91,7 +95,11 @@ def vibration(
 def _write_plots(folder: Path, signal, result, found, band_hz, spans, rows, method, segment) -> list[str]:
     from thermogear.experiment.plots import plot_spectrum, plot_waterfall, plot_window_table
 
-    folder.mkdir(parents=True, exist_ok=True)
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+    except OSError as error:
+        raise CaseError("--plot", str(folder), "a folder thermogear can create and write",
+                        f"cannot write there: {error.strerror or error}") from None
     written = []
     figure = plot_spectrum(result, band=band_hz, peaks=found)
     written.append(_save(figure, folder / "spectrum.png"))

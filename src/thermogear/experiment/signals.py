@@ -134,7 +134,13 @@ def read_csv_signal(path: str | Path, column: str | None = None, rate_hz: float 
         Sampling rate [Hz]. Needed when the file has no time column; when both are given they must agree to 0.1 %.
     """
     path = Path(path)
-    text = path.read_text(encoding="utf-8-sig")
+    try:
+        text = path.read_text(encoding="utf-8-sig")
+    except UnicodeDecodeError as error:
+        raise SignalError(f"{path}: not UTF-8 text (byte {error.start} cannot be decoded; a binary file, or text "
+                          "saved as latin-1? save it as UTF-8)") from None
+    except OSError as error:
+        raise SignalError(f"{path}: cannot be read ({error.strerror or error})") from None
     return parse_csv_signal(text, column, rate_hz, source=str(path))
 
 
@@ -198,6 +204,11 @@ def read_wav_signal(path: str | Path, column: str | None = None, scale: float = 
         raise SignalError(f"{path}: not a readable WAV file ({error})") from None
     if rate_hz is not None and abs(rate_hz - file_rate) > UNIFORM_SAMPLING_TOLERANCE * file_rate:
         raise SignalError(f"{path}: --rate {rate_hz} Hz disagrees with the WAV header ({file_rate} Hz)")
+    if data.ndim == 0 or data.shape[0] < 2:
+        frames = 0 if data.ndim == 0 else data.shape[0]
+        raise SignalError(f"{path}: the WAV file holds {frames} frame(s); at least 2 samples are needed")
+    if not file_rate > 0:
+        raise SignalError(f"{path}: the WAV header gives a sampling rate of {file_rate} Hz: allowed > 0")
     data = data.reshape(data.shape[0], -1)
     channels = [f"channel_{i}" for i in range(data.shape[1])]
     name = channels[0] if column is None else (f"channel_{column}" if column.isdigit() else column)
