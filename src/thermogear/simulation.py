@@ -110,29 +110,36 @@ class Simulation:
         return self.state.problem()
 
     def run(self, method: Method | None = None, include_damping_force: bool | None = None):
-        """Solve the dynamics and return a :class:`~thermogear.dynamics.response.DynamicResponse`.
+        """Solve the dynamics and return the response.
 
-        ``"periodic"``: exact periodic steady state (Floquet/monodromy). ``"transient"``: from rest
-        (x = ẋ = 0, as the paper) over the case's number of mesh periods with the compiled RK4; the response
-        keeps the whole history and reads the steady state from the last period.
+        Linear mesh (``[dynamics] mesh = "linear"``): ``"periodic"`` gives the exact periodic steady state
+        (Floquet/monodromy), ``"transient"`` the motion from rest (x = ẋ = 0, as the paper) over the case's number
+        of mesh periods with the compiled RK4 — a :class:`~thermogear.dynamics.response.DynamicResponse`.
+        Nonlinear mesh (the default): the steady response of the backlash model by shooting with the exact
+        event-driven integrator, with its branch — a :class:`~thermogear.dynamics.nonlinear_response.NonlinearResponse`.
         """
         from thermogear.dynamics.response import response_from_orbit, response_from_transient
 
-        method = method or self.case.dynamics.method
-        damping_force = (self.case.dynamics.include_damping_force if include_damping_force is None
-                         else include_damping_force)
+        dynamics = self.case.dynamics
+        method = method or dynamics.method
+        damping_force = dynamics.include_damping_force if include_damping_force is None else include_damping_force
+        if method not in ("periodic", "transient"):
+            raise CaseError("method", method, "periodic | transient", "unknown solution method")
+        if dynamics.mesh == "nonlinear" and method == "periodic":
+            from thermogear.dynamics.nonlinear_response import nonlinear_response
+
+            problem = self.state.backlash_problem(dynamics.damping_in_flight)
+            return nonlinear_response(problem, include_damping_force=damping_force, label=self.model,
+                                      samples_per_interval=dynamics.samples_per_interval)
         if method == "periodic":
             from thermogear.dynamics.periodic import periodic_steady_state
 
-            orbit = periodic_steady_state(self.problem, self.case.dynamics.samples_per_interval)
+            orbit = periodic_steady_state(self.problem, dynamics.samples_per_interval)
             return response_from_orbit(self.problem, orbit, include_damping_force=damping_force, label=self.model)
-        if method == "transient":
-            from thermogear.dynamics.transient import transient_from_rest
+        from thermogear.dynamics.transient import transient_from_rest
 
-            history = transient_from_rest(self.problem, periods=self.case.dynamics.transient_periods)
-            return response_from_transient(self.problem, history, include_damping_force=damping_force,
-                                           label=self.model)
-        raise CaseError("method", method, "periodic | transient", "unknown solution method")
+        history = transient_from_rest(self.problem, periods=dynamics.transient_periods)
+        return response_from_transient(self.problem, history, include_damping_force=damping_force, label=self.model)
 
 
 def compare(case: Case, method: Method | None = None, points_per_period: int | None = None) -> dict:

@@ -201,11 +201,14 @@ class MeshModel:
             return np.asarray(mesh.pair_deviation_at(roll), dtype=float)
         return np.asarray(mesh.cold_pair_deviation_at(roll), dtype=float)
 
-    @property
+    @cached_property
     def backlash(self) -> float | None:
         """Normal backlash [m] of the mesh as this model sees it (at temperature for the thermoelastic model, at
-        the reference temperature otherwise); None where the case carries no thermo-elastic component."""
+        the reference temperature otherwise: the paper's model does not expand the geometry); None where neither
+        the model nor a nonlinear mesh needs it."""
         mesh = self.thermoelastic_mesh
+        if mesh is None and self.case.dynamics.mesh == "nonlinear":
+            mesh = ThermoelasticMesh.from_case(self.case)
         if mesh is None:
             return None
         return mesh.backlash_normal if self.thermoelastic else mesh.backlash_normal_cold

@@ -6,7 +6,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from thermogear.dynamics.backlash_problem import BacklashMeshProblem
 from thermogear.dynamics.problem import MeshDynamicsProblem
+from thermogear.errors import CaseError
 from thermogear.mesh_cycle import MeshCycle, MeshGrid
 
 
@@ -68,6 +70,24 @@ class MeshState:
         return MeshDynamicsProblem(mass=self.mass, nodes=self.grid.nodes, stiffness=self.mesh_stiffness,
                                    damping=self.mesh_damping, force=force, contact_count=self.pair_engaged.sum(axis=0),
                                    pair_stiffness=engaged, face_width=self.face_width, pair_deviation=deviation)
+
+    def backlash_problem(self, damping_in_flight: str = "always") -> BacklashMeshProblem:
+        """The nonlinear mesh-dynamics problem over this period: every pair on the path acts only while it touches,
+        k_i⟨x − e_i⟩₊ on the driving flanks and −k_i⟨−x − j − e_i⟩₊ across the normal backlash j on the back flanks.
+
+        The back flanks of the same teeth are taken with the driving flanks' stiffness and deviation at the same
+        mesh position (symmetric teeth whose two lines of action carry the same mesh-stiffness cycle; the phase
+        between the two cycles is neglected, which matters only where the teeth strike the back flanks).
+        """
+        if self.backlash is None:
+            raise CaseError("dynamics.mesh", "nonlinear", "'linear', or a case whose backlash is known",
+                            "the nonlinear mesh needs the normal backlash")
+        stiffness = np.where(self.grid.in_contact, self.pair_stiffness, 0.0)
+        deviation = np.where(self.grid.in_contact, self.pair_deviation, 0.0)
+        return BacklashMeshProblem(mass=self.mass, nodes=self.grid.nodes, pair_stiffness=stiffness,
+                                   pair_deviation=deviation, back_pair_stiffness=stiffness,
+                                   back_pair_deviation=deviation, backlash=self.backlash, damping=self.mesh_damping,
+                                   force=self.normal_load, damping_mode=damping_in_flight, face_width=self.face_width)
 
 
 __all__ = ["MeshState"]

@@ -100,6 +100,8 @@ def model_messages(response, model: str) -> list[str]:
     instability. Empty when the linear model holds."""
     messages = []
     metrics = response.metrics
+    if metrics.get("mesh") == "nonlinear":
+        return _nonlinear_messages(metrics, model) + list(getattr(response, "warnings", ()))
     loss = metrics.get("contact_loss", {})
     period = response.problem.period
     if loss.get("detected"):
@@ -116,4 +118,22 @@ def model_messages(response, model: str) -> list[str]:
             f"{model}: UNSTABLE — the largest Floquet multiplier has |μ| = {largest:.4g} > 1 (parametric resonance): "
             "the response grows from period to period and no periodic steady state exists; the numbers above describe "
             "an unbounded solution and must not be used.")
+    return messages
+
+
+def _nonlinear_messages(metrics: dict, model: str) -> list[str]:
+    """What the nonlinear mesh found, in words: contact loss and back-side impacts (computed, not a failure), a
+    response that is not periodic, an orbit that was not found."""
+    messages = []
+    if metrics["contact_loss_fraction"] > 0.0:
+        messages.append(f"{model}: contact loss — the teeth separate for {100 * metrics['contact_loss_fraction']:.1f} % "
+                        f"of the period{' and strike the back flanks' if metrics['back_side_contact'] else ''}; the "
+                        "nonlinear mesh model computes the loads through it")
+    if metrics["response"] != "periodic":
+        kind = ("subharmonic, repeating every " f"{metrics['period_count']} mesh periods"
+                if metrics["response"] == "subharmonic" else "non-periodic (no repeating orbit was found)")
+        messages.append(f"{model}: the response is {kind}; its metrics are taken over the recorded periods")
+    if not metrics["valid"]:
+        messages.append(f"{model}: no steady orbit was found (residual {metrics['residual']:.3g}): the numbers "
+                        "above are not a steady state")
     return messages

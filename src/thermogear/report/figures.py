@@ -145,7 +145,7 @@ def _damping_figure(evaluation, model: str):
     left.set_ylabel("damping of one tooth pair [N·s/m]")
     left.set_title("per pair along the path")
     _mark_points(left, evaluation.case)
-    grid = summary.grid
+    grid = summary.grids[model]  # each model's own mesh grid (the thermoelastic one is the hot pair's)
     period = grid.nodes[-1]
     periods = 3
     times = np.concatenate([grid.nodes[:-1] + j * period for j in range(periods)] + [[periods * period]]) * 1e3

@@ -28,8 +28,20 @@ class DampingSection(Section):
 
 
 class DynamicsSection(Section):
-    """Solver settings of the torsional model me·ẍ + c(τ)ẋ + k(τ)x = w."""
+    """Solver settings of the torsional model me·ẍ + c(τ)ẋ + k(τ)x = w.
 
+    ``mesh``: ``"nonlinear"`` (default) — the teeth may separate and strike the back flanks across the backlash
+    (each pair acts only while it touches: the driving force k_i⟨x − e_i⟩₊ and the back-flank force); ``"linear"``
+    — every pair stays in contact (Luo & Li's model; the paper's set keeps it). ``damping_in_flight``: whether the
+    mesh damping also acts while no flank touches (``"always"``, the default: the oil between the flanks is
+    squeezed and the shafts' own damping acts on the same coordinate) or only in contact (``"in_contact"``).
+    """
+
+    mesh: Literal["nonlinear", "linear"] = Field(
+        "nonlinear", description="'nonlinear': contact loss and back-side contact across the backlash; 'linear': "
+                                 "permanent contact (Luo & Li)")
+    damping_in_flight: Literal["always", "in_contact"] = Field(
+        "always", description="mesh damping while the teeth fly through the backlash")
     method: Literal["periodic", "transient"] = "periodic"
     points_per_period: Annotated[int, Field(ge=64, le=100000)] = 1024
     samples_per_interval: Annotated[int, Field(ge=1, le=256, description="samples of the periodic orbit inside "

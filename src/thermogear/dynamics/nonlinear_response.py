@@ -1,0 +1,213 @@
+"""The steady response of the nonlinear (backlash) mesh model as the rest of thermogear reads a response.
+
+:func:`nonlinear_response` solves a :class:`~thermogear.dynamics.backlash_problem.BacklashMeshProblem` for its
+steady response (:func:`~thermogear.dynamics.backlash_periodic.periodic_response`, started from the linear
+periodic solution), checks for a second stable orbit started from rest (x = ẋ = 0, Luo & Li's start) and returns a
+:class:`NonlinearResponse`: the orbit, its metrics under the names of the linear response (Kv of Luo & Li Eq. 29,
+loads per width, equilibria and amplitudes per contact region, frequencies) plus what only the nonlinear model
+knows — ``contact_loss_fraction``, ``back_side_contact``, ``response`` ("periodic" | "subharmonic" |
+"non-periodic"), ``branch`` and whether two stable orbits coexist.
+
+Branch: where the two starts settle on different stable orbits, the one with the smaller DTE peak-to-peak is the
+"low" branch and the other the "high" branch (the jump phenomenon of a backlash oscillator, Kahraman & Singh
+1990); otherwise the branch is "unique".
+"""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from thermogear.dynamics.backlash_metrics import dte_spectrum, history_forces, orbit_metrics
+from thermogear.dynamics.backlash_periodic import BacklashOrbit, periodic_response
+from thermogear.dynamics.backlash_problem import BacklashMeshProblem
+from thermogear.dynamics.problem import region_name
+from thermogear.errors import ModelLimitError
+from thermogear.serialization import json_ready
+
+__all__ = ["NonlinearResponse", "nonlinear_response"]
+
+#: Two stable orbits whose DTE peak-to-peak differ by more than this fraction are distinct branches [–].
+DISTINCT_ORBITS = 1e-3
+
+
+@dataclass(frozen=True, eq=False)
+class NonlinearResponse:
+    """Steady response of the backlash mesh model (time from 0 over the orbit's N mesh periods)."""
+
+    problem: BacklashMeshProblem
+    orbit: BacklashOrbit
+    metrics: dict[str, Any]
+    include_damping_force: bool = False
+    label: str = ""
+    method: str = "nonlinear periodic (shooting)"
+    history: None = None  # a steady orbit, not a history from rest (plots repeat the orbit)
+    warnings: tuple[str, ...] = field(default=())
+
+    # ------------------------------------------------------------------ views
+    @property
+    def time(self) -> np.ndarray:
+        return self.orbit.history.time
+
+    @property
+    def displacement(self) -> np.ndarray:
+        """Dynamic transmission error x [m]."""
+        return self.orbit.history.displacement
+
+    @property
+    def velocity(self) -> np.ndarray:
+        return self.orbit.history.velocity
+
+    @property
+    def interval(self) -> np.ndarray:
+        return self.orbit.history.interval
+
+    @property
+    def valid(self) -> bool:
+        """The nonlinear model holds through contact loss; a response is valid where its orbit was found."""
+        return bool(self.metrics["valid"])
+
+    def system_load(self) -> np.ndarray:
+        """Mesh force at each record [N] (driving flanks positive, back flanks negative)."""
+        return history_forces(self.problem, self.orbit.history, self.include_damping_force)[0]
+
+    def pair_loads(self) -> np.ndarray:
+        """(slots, records) driving-flank pair forces [N]."""
+        return history_forces(self.problem, self.orbit.history, self.include_damping_force)[1]
+
+    def spectrum(self, quantity: str = "displacement", points: int = 1024) -> tuple[np.ndarray, np.ndarray]:
+        """One-sided harmonic amplitudes of the DTE over the orbit: (frequencies [Hz], amplitudes [m])."""
+        return dte_spectrum(self.orbit, points)
+
+    # ------------------------------------------------------------------ plots
+    def _lines(self, values: np.ndarray, other: "NonlinearResponse | None", ax: Any, ylabel: str, scale: float,
+               periods: int | None):
+        import matplotlib.pyplot as plt  # noqa: PLC0415
+
+        figure = ax.figure if ax is not None else plt.subplots(figsize=(8, 4), constrained_layout=True)[0]
+        ax = ax if ax is not None else figure.axes[0]
+        for number, (item, series) in enumerate(((self, values(self)),) + (((other, values(other)),) if other else ())):
+            ax.plot(item.time * 1e3, series * scale, lw=1.4, ls="-" if number == 0 else "--",
+                    label=f"{item.label or 'response'} ({item.metrics['response']}, {item.metrics['branch']} branch)")
+        ax.set_xlabel("time [ms]")
+        ax.set_ylabel(ylabel)
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize="small")
+        return figure
+
+    def plot_displacement(self, other=None, ax: Any = None, periods: int | None = None):
+        """DTE x over the orbit [μm]."""
+        return self._lines(lambda item: item.displacement, other, ax, "dynamic transmission error [μm]", 1e6, periods)
+
+    def plot_velocity(self, other=None, ax: Any = None, periods: int | None = None):
+        return self._lines(lambda item: item.velocity, other, ax, "velocity along the line of action [m/s]", 1.0,
+                           periods)
+
+    def plot_loads(self, other=None, ax: Any = None, periods: int | None = None):
+        """Mesh force per face width [N/mm]; below zero the back flanks carry it, at zero the teeth fly."""
+        scale = 1.0 / self.problem.face_width / 1e3
+        return self._lines(lambda item: item.system_load(), other, ax, "mesh force per face width [N/mm]", scale,
+                           periods)
+
+    def plot_phase(self, other=None, ax: Any = None, periods: int | None = None):
+        import matplotlib.pyplot as plt  # noqa: PLC0415
+
+        figure = ax.figure if ax is not None else plt.subplots(figsize=(5, 4), constrained_layout=True)[0]
+        ax = ax if ax is not None else figure.axes[0]
+        for item in (self, other) if other is not None else (self,):
+            ax.plot(item.displacement * 1e6, item.velocity, lw=1.2, label=item.label or "response")
+        ax.set_xlabel("x [μm]")
+        ax.set_ylabel("ẋ [m/s]")
+        ax.legend(fontsize="small")
+        return figure
+
+    # ------------------------------------------------------------------ files
+    def metrics_json(self) -> dict[str, Any]:
+        return json_ready(self.metrics)
+
+    def to_xarray(self):
+        import xarray as xr  # noqa: PLC0415
+
+        return xr.Dataset(
+            {"displacement": ("time", self.displacement, {"units": "m", "long_name": "dynamic transmission error"}),
+             "velocity": ("time", self.velocity, {"units": "m/s"}),
+             "system_load": ("time", self.system_load(), {"units": "N", "long_name": "mesh force"})},
+            coords={"time": ("time", self.time, {"units": "s"})},
+            attrs={"model": self.label, "method": self.method, "metrics": json.dumps(self.metrics_json())})
+
+
+def _region_levels(problem: BacklashMeshProblem, orbit: BacklashOrbit) -> tuple[dict, dict]:
+    """Equilibria (static TE of the linear problem, time mean per contact region) and amplitudes (largest x in the
+    region minus its equilibrium), as the linear metrics define them."""
+    linear = problem.linear_problem()
+    if linear is None:
+        return {}, {}
+    static = linear.static_transmission_error
+    durations = linear.durations
+    history = orbit.history
+    equilibrium, amplitude = {}, {}
+    for count in linear.regions:
+        inside = linear.contact_count == count
+        level = float(np.dot(static[inside], durations[inside]) / durations[inside].sum())
+        mask = linear.contact_count[history.interval] == count
+        name = region_name(count)
+        equilibrium[name] = level
+        amplitude[name] = float(np.max(history.displacement[mask]) - level) if np.any(mask) else float("nan")
+    return equilibrium, amplitude
+
+
+def _metrics(problem: BacklashMeshProblem, orbit: BacklashOrbit, include_damping_force: bool, branch: str,
+             coexisting: bool) -> dict[str, Any]:
+    values = orbit_metrics(orbit, include_damping_force=include_damping_force)
+    w0, width = problem.static_load, problem.face_width
+    equilibrium, amplitude = _region_levels(problem, orbit)
+    natural = problem.natural_frequency
+    converged = bool(orbit.converged)
+    return {
+        **values,
+        "mesh": "nonlinear",
+        "branch": branch,
+        "coexisting_orbits": coexisting,
+        "static_load": w0, "static_load_n_per_mm": w0 / width / 1e3,
+        "max_pair_load": values["max_pair_force"], "max_pair_load_n_per_mm": values["max_pair_force"] / width / 1e3,
+        "max_system_load": values["max_mesh_force"],
+        "max_system_load_n_per_mm": values["max_mesh_force"] / width / 1e3,
+        "max_system_load_ratio": values["max_mesh_force_ratio"],
+        "max_velocity": float(np.max(np.abs(orbit.history.velocity))),
+        "equilibrium_per_region": equilibrium, "amplitude_per_region": amplitude,
+        "natural_frequency_hz": natural, "mesh_frequency_hz": 1.0 / problem.period,
+        "frequency_ratio": problem.frequency_ratio,
+        "floquet_multipliers_abs": sorted((float(abs(m)) for m in orbit.multipliers), reverse=True),
+        "stable": bool(orbit.stable),
+        "contact_loss": {"detected": values["contact_loss_fraction"] > 0.0,
+                         "fraction": values["contact_loss_fraction"]},
+        "valid": converged or orbit.response == "non-periodic",
+    }
+
+
+def nonlinear_response(problem: BacklashMeshProblem, include_damping_force: bool = False, label: str = "",
+                       samples_per_interval: int = 4, check_coexistence: bool = True) -> NonlinearResponse:
+    """Steady response of the backlash model, its branch and whether a second stable orbit coexists (module
+    docstring). Raises ModelLimitError where the response grows without bound."""
+    orbit = periodic_response(problem, samples_per_interval=samples_per_interval)
+    branch, coexisting = "unique", False
+    if check_coexistence and orbit.stable:
+        try:
+            other = periodic_response(problem, initial_state=(0.0, 0.0), samples_per_interval=samples_per_interval)
+        except ModelLimitError:
+            other = None
+        if other is not None and other.stable:
+            own, theirs = np.ptp(orbit.history.displacement), np.ptp(other.history.displacement)
+            if abs(own - theirs) > DISTINCT_ORBITS * max(own, theirs):
+                coexisting = True
+                branch = "low" if own < theirs else "high"
+    metrics = _metrics(problem, orbit, include_damping_force, branch, coexisting)
+    notes = ()
+    if coexisting:
+        notes = (f"two stable orbits coexist at this operating point: the {branch} branch is reported (started from "
+                 "the linear solution); the other is reached from rest — a speed sweep up and down shows both",)
+    return NonlinearResponse(problem=problem, orbit=orbit, metrics=metrics, include_damping_force=include_damping_force,
+                             label=label, warnings=notes)
