@@ -21,6 +21,7 @@ from thermogear.dynamics.backlash_problem import BacklashMeshProblem
 from thermogear.dynamics.backlash_reference import reference_backlash_solve_ivp
 from thermogear.dynamics.periodic import periodic_steady_state_batch
 from thermogear.dynamics.response import compute_metrics
+from thermogear.dynamics.spectra import harmonic_spectrum
 from thermogear.errors import ModelLimitError
 
 MASS, K0, FORCE = 1.0, 1e8, 1e3
@@ -206,3 +207,20 @@ def test_shoot_from_a_far_state_converges_to_the_same_orbit():
     result = shoot(problem, (3.0 * X_STATIC, 0.0))
     assert result["converged"]
     np.testing.assert_allclose(result["state"], orbit.initial_state, rtol=1e-8)
+
+
+def test_dte_spectrum_equals_the_linear_one_without_contact_loss():
+    # constant stiffness, a small pitch-type error and no separation: the orbit is the linear one, so its mesh
+    # harmonics equal those of the linear orbit. Both spectra interpolate their samples onto 1024 points; the
+    # samples differ (ours add the extrema of x), a difference of order (ω·h/64)²/8 ≈ 1e-6 of the swing
+    problem = textbook(0.7, eps=0.0, deviation=0.1)
+    orbit = periodic_response(problem, samples_per_interval=64)
+    metrics = orbit_metrics(orbit)
+    assert metrics["contact_loss_fraction"] == 0.0
+    linear = problem.linear_problem()
+    reference = periodic_steady_state(linear, samples_per_interval=64)
+    _, amplitudes = harmonic_spectrum(reference.time, reference.displacement, linear.period)
+    swing = np.ptp(reference.displacement)
+    np.testing.assert_allclose(metrics["dte_mesh_harmonics"], amplitudes[:9], rtol=0, atol=1e-5 * swing)
+    assert metrics["dte_mesh_harmonics"][1] > 0.1 * swing  # the excitation's line is there
+    assert metrics["dte_mean"] == pytest.approx(amplitudes[0], rel=1e-5)
