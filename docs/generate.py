@@ -66,6 +66,12 @@ def validation_page() -> str:
         by_cause.setdefault(verdict.row.gap or verdict.reason, []).append(f"`{verdict.row.key}`")
     for cause, keys in by_cause.items():
         lines.append(f"- {', '.join(keys)}: {cause}")
+    from thermogear.report.html import fe_versus_analytical, fe_versus_analytical_text
+
+    fe_numbers = fe_versus_analytical(evaluation)
+    if fe_numbers is not None:
+        lines += ["", "**Fig. 15, the size of the thermal drop.** " + fe_versus_analytical_text(fe_numbers)
+                  + " The row `fig15.fe_kt_below_ke` checks only the direction."]
     section = None
     for verdict in verdicts:
         row = verdict.row
