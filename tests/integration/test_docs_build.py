@@ -85,3 +85,18 @@ def test_install_line_is_from_the_repository():
     assert "pip install ." in guide
     assert "pip install thermogear" not in guide  # not published on PyPI
     assert "a few seconds" not in guide
+
+
+def test_user_guide_case_file_loads(tmp_path):
+    """The minimal case file of the user guide is a valid case (loaded and checked as `thermogear check` does)."""
+    import re
+
+    from thermogear import load_case
+
+    guide = (ROOT / "docs" / "user-guide.md").read_text(encoding="utf-8")
+    match = re.search(r"A minimal file:\n\n```toml\n(.*?)```", guide, re.S)
+    assert match, "the user guide lost its minimal case file"
+    path = tmp_path / "my_pair.toml"
+    path.write_text(match.group(1), encoding="utf-8")
+    case = load_case(path)
+    assert case.name == "my_pair" and case.gear_pair.pinion.teeth == 20
