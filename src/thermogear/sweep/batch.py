@@ -38,10 +38,9 @@ from typing import Any
 
 import numpy as np
 
-from thermogear.dynamics.periodic import periodic_steady_state_batch
-from thermogear.errors import ModelLimitError
+from thermogear.errors import ModelLimitError, ProblemError
 from thermogear.mesh.model import MeshModel
-from thermogear.sweep.batch_kernel import metrics_batch
+from thermogear.sweep.batch_kernel import periodic_metrics_batch
 
 __all__ = ["MODEL_VARIABLES", "POINT_VARIABLES", "GroupTables", "empty_block_result", "evaluate_block",
            "evaluate_loads", "evaluate_point", "evaluate_speeds", "group_tables"]
@@ -132,13 +131,12 @@ def evaluate_loads(tables: GroupTables, speeds_rpm, loads, samples: int | None =
     factor = ratio ** (tables.speed_exponent + 1.0)
     if tables.load_exponent is not None:
         factor = factor * load_ratio**tables.load_exponent
-    damping = np.ascontiguousarray(tables.damping[None, :] * factor[:, None])
-    x0, v0, moduli = periodic_steady_state_batch(mass, tables.nodes, np.broadcast_to(tables.stiffness,
-                                                 damping.shape), damping, loads)
-    values = metrics_batch(np.ascontiguousarray(mass), tables.nodes, tables.stiffness, damping,
-                           np.ascontiguousarray(loads), tables.pair_stiffness, x0, v0,
-                           int(tables.samples_per_interval if samples is None else samples),
-                           tables.include_damping_force)
+    _check_coefficients(tables, mass, factor, loads)
+    moduli, values = periodic_metrics_batch(np.ascontiguousarray(mass), tables.nodes, tables.stiffness,
+                                            tables.damping, np.ascontiguousarray(factor), np.ascontiguousarray(loads),
+                                            tables.pair_stiffness,
+                                            int(tables.samples_per_interval if samples is None else samples),
+                                            tables.include_damping_force)
     stable = moduli[:, 0] < 1.0
     with np.errstate(invalid="ignore"):
         contact_loss = np.where(stable, values[:, 2] < 0.0, False)
@@ -158,6 +156,17 @@ def evaluate_loads(tables: GroupTables, speeds_rpm, loads, samples: int | None =
         "mesh_frequency_hz": tables.pinion_teeth * speeds / 60.0,
         "static_load": loads.copy(),
     }
+
+
+def _check_coefficients(tables: GroupTables, mass: np.ndarray, factor: np.ndarray, loads: np.ndarray) -> None:
+    """The linear mesh model needs k > 0, c >= 0, me > 0 and finite numbers (as the per-point solver)."""
+    if (np.any(tables.stiffness <= 0.0) or np.any(tables.damping < 0.0) or np.any(factor < 0.0)
+            or np.any(mass <= 0.0)):
+        raise ProblemError("stiffness/damping/mass", "non-positive value", "k > 0, c >= 0, me > 0",
+                           "the linear mesh model needs positive stiffness and mass and non-negative damping")
+    if not (np.all(np.isfinite(tables.stiffness)) and np.all(np.isfinite(tables.damping))
+            and np.all(np.isfinite(factor)) and np.all(np.isfinite(mass)) and np.all(np.isfinite(loads))):
+        raise ProblemError("stiffness/damping/force", "non-finite value", "finite numbers", "NaN has no meaning here")
 
 
 def evaluate_speeds(tables: GroupTables, speeds_rpm, samples: int | None = None) -> dict[str, np.ndarray]:
