@@ -235,6 +235,9 @@ def _check_thermal_inputs(case: "Case") -> None:
     if section.x_te_source == "calibrated" and section.x_te is not None:
         raise CaseError("thermal.x_te", section.x_te, "absent with x_te_source = 'calibrated'",
                         "X_te is either given or calibrated; remove one of them")
+    if section.x_te_source == "calibrated" and section.calibration_drop_percent is None:
+        raise CaseError("thermal.calibration_drop_percent", None, "(0, 100)",
+                        "x_te_source = 'calibrated' needs the target stiffness drop")
 
 
 def case_from_document(document: dict[str, Any], source: str = "<memory>") -> Case:
