@@ -34,8 +34,14 @@ def sweep(
     plot: Path = typer.Option(None, "--plot", help="write the speed-response plot (PNG/SVG/PDF) here"),
     progress: bool = typer.Option(True, "--progress/--no-progress", help="progress bar on stderr"),
     as_json: bool = typer.Option(False, "--json", help="one JSON summary on stdout"),
+    direction: str = typer.Option(None, "--direction", help="nonlinear mesh: follow the solution branch in speed "
+                                  "up | down | both (default both); the store gets a direction dimension"),
 ) -> None:
-    """Run a parameter study of a case (grid over speed, load, temperatures, geometry) into a zarr store."""
+    """Run a parameter study of a case (grid over speed, load, temperatures, geometry) into a zarr store.
+
+    A case with the nonlinear mesh ([dynamics] mesh = "nonlinear", the default) follows the solution branch from
+    speed to speed (each orbit starts from its neighbour's), up and down, in this process; a linear-mesh case runs
+    the points as independent tasks on Dask."""
     from thermogear.sweep import Study, load_study_case, run_study
     from thermogear.sweep.store import study_description
 
@@ -57,6 +63,17 @@ def sweep(
         chosen_model = chosen_model or ("both" if len(stored["models"]) == 2 else stored["models"][0])
         chunks = chunks or stored["chunk_points"]
     study = Study.define(loaded, definition, model=chosen_model or "both", chunk_points=chunks)
+    if direction is not None and direction not in ("up", "down", "both"):
+        raise CaseError("--direction", direction, "up | down | both",
+                        "a branch is followed from the lowest speed up, from the highest down, or both")
+    if loaded.dynamics.mesh == "nonlinear" and method == "batch":
+        from thermogear.cli.sweep_branches import run_branch_sweep
+
+        run_branch_sweep(study, out, direction or "both", overwrite, resume, plot, progress, as_json)
+        return
+    if direction is not None:
+        raise CaseError("--direction", direction, "only with [dynamics] mesh = \"nonlinear\"",
+                        "the linear mesh has one steady solution per point: there is no branch to follow")
     start = time.perf_counter()
     existed = out.exists() or out.is_symlink()
     try:

@@ -94,7 +94,7 @@ def group_tables(mesh: MeshModel, normal_load: float | None = None, points_per_p
     """The speed-independent tables of a mesh model at its case's speed and the load ``normal_load`` [N] (default:
     the case's); None where the fast path cannot be exact for this model (see the module docstring)."""
     scaling = mesh.damping_scaling
-    if scaling is None:
+    if scaling is None or mesh.case.dynamics.mesh == "nonlinear":  # the nonlinear mesh: sweep.branches
         return None
     state = mesh.state(normal_load=normal_load, points_per_period=points_per_period)
     if np.any(state.pair_deviation != 0.0):

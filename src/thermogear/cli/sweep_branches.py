@@ -1,0 +1,97 @@
+"""The nonlinear-mesh branch study of `thermogear sweep`: continuation in speed, up and down, one store."""
+
+from __future__ import annotations
+
+import time
+from pathlib import Path
+
+import numpy as np
+
+from thermogear.cli.app import console, error_console, print_json
+from thermogear.cli.console import print_warning
+from thermogear.errors import CaseError
+from thermogear.warning_causes import distinct_warnings
+
+
+def branch_summary(dataset, models) -> dict:
+    """Per model and direction: the largest Kv over the points whose orbit was found, how many points lost
+    contact, struck the back flanks or were not periodic, and the hysteresis between the branches."""
+    from thermogear.sweep.branches import hysteresis_bands  # noqa: PLC0415
+
+    result: dict = {"kv_max": {}, "contact_loss_points": {}, "back_side_contact_points": {},
+                    "not_periodic_points": {}, "failed_points": {}}
+    for model in models:
+        for direction in dataset["direction"].values:
+            key = f"{model}/{direction}"
+            part = dataset.sel(model=model, direction=direction)
+            found = np.asarray(part["converged"].values, dtype=float) == 1.0
+            kv = np.asarray(part["kv"].values, dtype=float)
+            result["kv_max"][key] = float(np.nanmax(kv[found])) if np.any(found) else None
+            result["contact_loss_points"][key] = int((np.asarray(part["contact_loss_fraction"].values) > 0).sum())
+            result["back_side_contact_points"][key] = int((np.asarray(part["back_side_contact"].values) == 1).sum())
+            kinds = np.asarray(part["response"].values).astype(str)
+            result["not_periodic_points"][key] = int(np.isin(kinds, ("subharmonic", "non-periodic")).sum())
+            result["failed_points"][key] = int((kinds == "failed").sum())
+    result["hysteresis"] = hysteresis_bands(dataset)
+    return result
+
+
+def run_branch_sweep(study, out: Path, direction: str, overwrite: bool, resume: bool, plot: Path | None,
+                     progress: bool, as_json: bool) -> None:
+    """Compute, store, plot and summarise a nonlinear-mesh study (``thermogear sweep`` of such a case)."""
+    import warnings  # noqa: PLC0415
+
+    from thermogear.cli.console import point_progress  # noqa: PLC0415
+    from thermogear.sweep.branches import branch_study, write_branch_store  # noqa: PLC0415
+
+    if resume:
+        raise CaseError("--resume", True, "not with the nonlinear mesh", "a branch study follows each branch "
+                        "from its start in one run and is written whole at the end; run it again")
+    if plot is not None:
+        from thermogear.ownership import check_figure_file  # noqa: PLC0415
+
+        check_figure_file(plot)
+    start = time.perf_counter()
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        with point_progress("branches", total=study.size * len(study.models), completed=0, unit="points",
+                            enabled=progress and not as_json) as advance:
+            dataset = branch_study(study, direction, progress=lambda points: advance(points * len(study.models)))
+    target = write_branch_store(dataset, out, overwrite=overwrite)
+    elapsed = time.perf_counter() - start
+    figure_path = None
+    if plot is not None and "speed_rpm" in study.dims:
+        from thermogear.sweep.branch_plots import plot_branches  # noqa: PLC0415
+
+        figure = plot_branches(dataset)
+        figure.savefig(plot, dpi=120)
+        figure_path = str(plot)
+    messages = distinct_warnings(str(item.message) for item in caught)
+    summary = {"out": str(target), "mesh": "nonlinear", "directions": list(dataset["direction"].values),
+               "dims": {name: int(size) for name, size in zip(study.dims, study.shape)},
+               "models": list(study.models), "points": study.size, "seconds": elapsed,
+               **branch_summary(dataset, study.models), "plot": figure_path, "warnings": messages}
+    if as_json:
+        for message in messages:
+            print_warning(message, error_console)
+        print_json(summary)
+        return
+    for message in messages:
+        print_warning(message, error_console)
+    console.print(f"branch study written to {summary['out']}: {summary['points']} points × "
+                  f"{len(summary['models'])} model(s) × {len(summary['directions'])} direction(s) in "
+                  f"{elapsed:.1f} s (nonlinear mesh)")
+    for key, value in summary["kv_max"].items():
+        console.print(f"  {key}: max Kv {value if value is None else f'{value:.4g}'}, contact loss at "
+                      f"{summary['contact_loss_points'][key]} points, back-flank impacts at "
+                      f"{summary['back_side_contact_points'][key]}, not periodic at "
+                      f"{summary['not_periodic_points'][key]}, no orbit found at {summary['failed_points'][key]}")
+    for model, band in summary["hysteresis"].items():
+        if band.get("differ"):
+            jumps = "; ".join(f"{way} sweep jumps " + ", ".join(f"{'up' if item['amplitude'] == 'rises' else 'down'} at "
+                                                              f"{item['speed_rpm']:.0f} rpm" for item in items)
+                              for way in ("up", "down") if (items := band.get(f"{way}_sweep_jumps")))
+            console.print(f"  {model}: up and down branches differ over {band['band_rpm'][0]:.0f}–"
+                          f"{band['band_rpm'][1]:.0f} rpm (hysteresis){'; ' + jumps if jumps else ''}")
+    if figure_path:
+        console.print(f"plot: {figure_path}")
