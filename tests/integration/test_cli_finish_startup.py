@@ -74,7 +74,15 @@ def test_a_mistyped_command_is_answered_with_the_closest_one():
     result = subprocess.run([sys.executable, "-m", "thermogear", "stifness", "luo2019"], capture_output=True,
                             text=True)
     assert result.returncode == 2
-    assert "stiffness" in result.stderr
+    assert "error: No such command 'stifness'. Did you mean 'stiffness'?" in result.stderr.splitlines()
+
+
+def test_usage_errors_use_the_one_error_format():
+    result = subprocess.run([sys.executable, "-m", "thermogear", "sweep", "luo2019", "--workers", "0", "--out", "x"],
+                            capture_output=True, text=True)
+    assert result.returncode == 2
+    assert result.stderr.splitlines()[-1].startswith("error: Invalid value for '--workers'")
+    assert "Traceback" not in result.stderr and "Error:" not in result.stderr
 
 
 def test_first_sentence():
