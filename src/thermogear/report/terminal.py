@@ -30,7 +30,8 @@ def interruptible(target) -> Iterator[None]:
     try:
         yield
     except KeyboardInterrupt:
-        Console(stderr=True).print(f"interrupted: {target} was not written or replaced", highlight=False)
+        Console(stderr=True, markup=False, emoji=False, highlight=False).print(
+            f"interrupted: {target} was not written or replaced", soft_wrap=True)
         sys.exit(130)
     finally:
         signal.signal(signal.SIGTERM, previous)
