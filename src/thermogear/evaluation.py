@@ -108,7 +108,7 @@ def evaluate_case(case, method: str = "periodic", models: tuple[str, ...] = MODE
     step("thermal stiffness")
 
     def thermal():
-        from thermogear.thermal.summary import thermal_curves, thermal_stiffness_summary
+        from thermogear.summaries.thermal import thermal_curves, thermal_stiffness_summary
         from thermogear.thermal.temperature import temperature_field_from_case
 
         evaluation.temperature_field = temperature_field_from_case(case)
@@ -121,7 +121,7 @@ def evaluate_case(case, method: str = "periodic", models: tuple[str, ...] = MODE
     step("damping")
 
     def damping():
-        from thermogear.mesh.damping_summary import damping_summary
+        from thermogear.summaries.damping import damping_summary
 
         evaluation.damping = damping_summary(case)
         cite("den_hartog1931", "iso_tr13989_1", "astm_d341")

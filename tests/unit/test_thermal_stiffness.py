@@ -14,7 +14,7 @@ from thermogear.thermal.calibration import calibrate_x_te, resolve_x_te, x_te_fo
 from thermogear.thermal.case_stiffness import thermal_pair_stiffness_at, thermal_stiffness
 from thermogear.thermal.stiffness import (pair_share_normal_load, thermal_pair_stiffness, thermal_stiffness_of_pair,
                                           thermal_stiffness_of_tooth)
-from thermogear.thermal.summary import crossing_gammas
+from thermogear.summaries.thermal import crossing_gammas
 
 # Synthetic per-tooth compliances of a pair along the path (totals, m/N) and expansions (m): orders of magnitude
 # of the luo2019 pair (δ ≈ 4e-9 m/N, Δ ≈ 5–15 μm, F_n ≈ 1e4 N).

@@ -11,7 +11,7 @@ import pytest
 
 from thermogear.case import case_from_document, load_case
 from thermogear.thermoelastic.mesh import ThermoelasticMesh
-from thermogear.thermoelastic.summary import thermal_block
+from thermogear.summaries.thermoelastic import thermal_block
 
 from test_thermoelastic_operating import document
 
@@ -51,7 +51,7 @@ def test_paper_model_keeps_its_keys_and_gets_the_prediction_beside_it():
 
 def test_figure_has_three_panels():
     pytest.importorskip("matplotlib")
-    from thermogear.thermoelastic.plots import plot_thermoelastic
+    from thermogear.summaries.thermoelastic_plots import plot_thermoelastic
 
     import matplotlib.pyplot as plt
 

@@ -8,7 +8,7 @@ import warnings
 import pytest
 from scipy.optimize import brentq
 
-from thermogear.mesh.damping_summary import PAPER_MEAN_DAMPING, damping_summary
+from thermogear.summaries.damping import PAPER_MEAN_DAMPING, damping_summary
 from thermogear.errors import ExtrapolationWarning
 from thermogear.lubricant import builtin_lubricant
 

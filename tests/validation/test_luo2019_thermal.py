@@ -15,7 +15,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from thermogear.thermal.summary import thermal_curves, thermal_stiffness_summary
+from thermogear.summaries.thermal import thermal_curves, thermal_stiffness_summary
 
 
 @pytest.fixture(scope="module")

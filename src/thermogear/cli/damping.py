@@ -11,8 +11,8 @@ from rich.table import Table
 from thermogear.case import load_case
 from thermogear.cli.app import app, console, error_console, print_json
 from thermogear.cli.console import print_warning
-from thermogear.mesh.damping_plots import plot_damping
-from thermogear.mesh.damping_summary import PAPER_MEAN_DAMPING, damping_summary
+from thermogear.summaries.damping_plots import plot_damping
+from thermogear.summaries.damping import PAPER_MEAN_DAMPING, damping_summary
 from thermogear.lubricant import builtin_lubricant, builtin_lubricant_names
 from thermogear.warning_causes import distinct_warnings
 

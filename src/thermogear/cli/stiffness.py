@@ -173,7 +173,7 @@ def stiffness(
     if plot is not None:
         check_figure_file(plot)  # before any work: suffix, not a folder, writable folder (issue 15)
     loaded = load_case(case)
-    thermal_module = importlib.import_module("thermogear.thermoelastic.summary") if thermal else None  # both models
+    thermal_module = importlib.import_module("thermogear.summaries.thermoelastic") if thermal else None  # both models
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ExtrapolationWarning)  # collected into the summary instead
         summary, _ = stiffness_summary(loaded)

@@ -78,7 +78,8 @@ def sweep(
     existed = out.exists() or out.is_symlink()
     try:
         run = run_study(study, out, scheduler=scheduler, resume=resume, overwrite=overwrite, workers=workers,
-                        method=method, progress=progress and not as_json, dashboard=dashboard)
+                        method=method, dashboard=dashboard,
+                        progress=_progress_bar if progress and not as_json else None)
     except (OSError, TimeoutError) as error:  # the scheduler went away, or the disk refused a write
         _remove_empty_store(out, existed)
         raise CaseError("--scheduler" if scheduler not in (None, "serial") else "--out",
@@ -113,6 +114,13 @@ def sweep(
         print_json(summary)
         return
     print_sweep_summary(summary, console, error_console)
+
+
+def _progress_bar(total: int, completed: int):
+    """The study's progress bar on stderr, counting grid points (shown on a terminal only)."""
+    from thermogear.cli.console import point_progress
+
+    return point_progress("sweep", total=total, completed=completed, unit="points")
 
 
 def check_scheduler(address: str | None, timeout: float = 5.0) -> None:

@@ -79,7 +79,7 @@ def fig3c(evaluation):
 
 def fig4(evaluation):
     try:
-        from thermogear.thermal.plots import plot_thermal_curves
+        from thermogear.summaries.thermal_plots import plot_thermal_curves
     except ImportError:
         plot_thermal_curves = None
     if plot_thermal_curves is not None:
@@ -135,7 +135,7 @@ def fig6(evaluation):
 
 def _damping_figure(evaluation, model: str):
     plt = _pyplot()
-    from thermogear.mesh.damping_summary import PAPER_MEAN_DAMPING
+    from thermogear.summaries.damping import PAPER_MEAN_DAMPING
 
     summary = evaluation.damping
     figure, (left, right) = plt.subplots(1, 2, figsize=(11, 4.0), constrained_layout=True)

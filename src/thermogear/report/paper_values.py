@@ -279,7 +279,7 @@ def paper_values(evaluation: Evaluation) -> dict[str, Any]:
         below = bool(np.all(np.asarray(result["thermal"]) < np.asarray(result["elastic"])))
         out = {"fig15.fe_kt_below_ke": below}
         if "driving_elastic" in result:
-            from thermogear.thermal.summary import crossing_gammas
+            from thermogear.summaries.thermal import crossing_gammas
 
             crossings = crossing_gammas(gamma, result["driving_elastic"], result["driving_thermal"])
             out["fig15.fe_single_crossing"] = bool(len(crossings) == 1 and crossings[0] < 0.0)

@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 
 from thermogear.damping import MODELS
-from thermogear.mesh.damping_summary import PAPER_MEAN_DAMPING, DampingSummary
+from thermogear.summaries.damping import PAPER_MEAN_DAMPING, DampingSummary
 
 
 def plot_damping(summary: DampingSummary, periods: int = 3, axes=None):

@@ -11,7 +11,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 
-from thermogear.thermal.summary import ThermalCurves, thermal_curves
+from thermogear.summaries.thermal import ThermalCurves, thermal_curves
 
 if TYPE_CHECKING:
     from thermogear.case import Case

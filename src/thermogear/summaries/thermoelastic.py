@@ -108,14 +108,14 @@ def _luo2020_configured(case: "Case") -> bool:
 def thermal_block(case: "Case") -> dict:
     """The ``thermal`` object of the stiffness command for the case's thermal model (module docstring)."""
     if case.thermal.model == "luo2020":
-        from thermogear.thermal.summary import thermal_stiffness_summary  # noqa: PLC0415  (the paper's model)
+        from thermogear.summaries.thermal import thermal_stiffness_summary  # noqa: PLC0415  (the paper's model)
 
         block = {"model": "luo2020", **thermal_stiffness_summary(case)}
         block["thermoelastic"] = thermoelastic_summary(case)
         return block
     block = thermoelastic_summary(case)
     if _luo2020_configured(case):
-        from thermogear.thermal.summary import thermal_stiffness_summary  # noqa: PLC0415
+        from thermogear.summaries.thermal import thermal_stiffness_summary  # noqa: PLC0415
 
         block["luo2020"] = thermal_stiffness_summary(case)
     return block
@@ -124,15 +124,15 @@ def thermal_block(case: "Case") -> dict:
 def write_thermal_plot(case: "Case", path) -> None:
     """Write the thermal figure of the stiffness command to ``path`` (atomically; format from the suffix): the
     paper's Fig. 4 for ``luo2020``, else deviation, loaded STE and load share, elastic and thermal."""
-    from thermogear.thermal.plots import save_figure_atomically  # noqa: PLC0415
+    from thermogear.summaries.thermal_plots import save_figure_atomically  # noqa: PLC0415
 
     if case.thermal.model == "luo2020":
-        from thermogear.thermal.plots import plot_thermal_curves  # noqa: PLC0415
-        from thermogear.thermal.summary import thermal_curves  # noqa: PLC0415
+        from thermogear.summaries.thermal_plots import plot_thermal_curves  # noqa: PLC0415
+        from thermogear.summaries.thermal import thermal_curves  # noqa: PLC0415
 
         figure = plot_thermal_curves(thermal_curves(case), case)
     else:
-        from thermogear.thermoelastic.plots import plot_thermoelastic  # noqa: PLC0415
+        from thermogear.summaries.thermoelastic_plots import plot_thermoelastic  # noqa: PLC0415
 
         figure = plot_thermoelastic(ThermoelasticMesh.from_case(case), title=case.name)
     save_figure_atomically(figure, path)

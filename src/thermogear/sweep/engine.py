@@ -17,9 +17,9 @@ from __future__ import annotations
 
 import os
 import warnings
-from contextlib import ExitStack
+from contextlib import ExitStack, contextmanager
 from pathlib import Path
-from typing import Any, Callable
+from typing import Any, Callable, Iterator
 
 from thermogear.errors import CaseError
 from thermogear.sweep.batch import evaluate_block
@@ -47,16 +47,13 @@ class StudyRun:
         self.path = path
 
 
-def _progress(enabled: bool, total: int, completed: int):
-    """The progress bar of a study on stderr, counting grid points (a terminal only; see
-    :func:`thermogear.cli.console.point_progress`). Yields ``advance(points)``."""
-    from thermogear.cli.console import point_progress
-
-    return point_progress("sweep", total=total, completed=completed, unit="points", enabled=enabled)
+@contextmanager
+def _no_progress(total: int, completed: int) -> Iterator:
+    yield lambda points=1: None
 
 
 def run_study(study, out: str | Path, scheduler: str | None = None, resume: bool = False, overwrite: bool = False,
-              workers: int | None = None, method: str = "batch", progress: bool = True,
+              workers: int | None = None, method: str = "batch", progress: Callable | None = None,
               on_block: Callable[[int], Any] | None = None, dashboard: str | None = None) -> StudyRun:
     """Compute a study into the zarr store ``out`` and return the dataset.
 
@@ -64,7 +61,8 @@ def run_study(study, out: str | Path, scheduler: str | None = None, resume: bool
     ``workers``: processes of the local cluster (default: all cores). ``method``: ``"batch"`` (fast path) or
     ``"simulation"`` (one Simulation per point). ``on_block(number)`` is called after each block is stored.
     ``dashboard``: address of the local cluster's Bokeh dashboard (e.g. ``":8787"``); None (default): none is
-    started, so a study opens no port unless asked.
+    started, so a study opens no port unless asked. ``progress(total, completed)``: a context manager that yields
+    ``advance(points)`` (the command line passes its progress bar; None: no progress shown).
     """
     if method not in METHODS:
         raise CaseError("method", method, " | ".join(METHODS), "unknown evaluation method")
@@ -81,8 +79,8 @@ def run_study(study, out: str | Path, scheduler: str | None = None, resume: bool
             on_block(block.number)
 
     with ExitStack() as stack:
-        advance = stack.enter_context(_progress(progress, study.size,
-                                                sum(block.size for block in blocks if block.number in done)))
+        advance = stack.enter_context((progress or _no_progress)(
+            study.size, sum(block.size for block in blocks if block.number in done)))
         if pending and scheduler == "serial":
             for block in pending:
                 finish(block, *compute_block(study, block, method))

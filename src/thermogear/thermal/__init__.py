@@ -6,7 +6,7 @@
 - :mod:`~thermogear.thermal.stiffness`: k_T, k_Ti, δ_T, δ_Ti, δ_Tp (Eqs. 13–23);
 - :mod:`~thermogear.thermal.case_stiffness`: k_T of a case at a given normal load;
 - :mod:`~thermogear.thermal.calibration`: X_te given, calibrated or from the FE model;
-- :mod:`~thermogear.thermal.summary` and :mod:`~thermogear.thermal.plots`: the CLI's JSON object and Fig. 4.
+(The CLI's JSON object and Fig. 4 are in :mod:`thermogear.summaries`.)
 """
 
 from thermogear.thermal.calibration import Calibration, calibrate_x_te, register_x_te_provider, resolve_x_te

@@ -131,7 +131,8 @@ def _resolve_x_te(case: "Case", load_basis: str | None, temperature: Temperature
     provider = _PROVIDERS.get(section.x_te_source)
     if provider is None:
         raise ThermogearError(f"thermal.x_te_source = '{section.x_te_source}': the finite-element thermo-elastic "
-                              "analysis is not registered (importing thermogear.simulation or thermogear.fem.provider registers it); use "
+                              "analysis is not registered (importing thermogear.simulation or thermogear.fem.provider "
+                              "registers it); use "
                               "'given' or 'calibrated'")
     value = float(provider(case))
     check_x_te(value)

@@ -56,13 +56,10 @@ def temperature_field_from_case(case: "Case") -> TemperatureField:
         field = temperature_field_from_section(section, case.directory)
     else:
         provider = _PROVIDERS.get(section.model)
-        if provider is None and section.model == "fem":
-            import thermogear.fem.provider  # noqa: F401  (registers thermogear's own FE provider on import)
-
-            provider = _PROVIDERS.get(section.model)
         if provider is None:
             raise ThermogearError(f"temperature.model = '{section.model}': the finite-element bulk-temperature "
-                                  "model is not available in this installation (no provider registered); use "
+                                  "model is not registered (importing thermogear.simulation or thermogear.fem.provider "
+                                  "registers it); use "
                                   "'uniform' or 'tabulated'")
         field = provider(case)
     check_temperatures(field, gamma_start, gamma_end, _lubricant_data_maximum_c(case))

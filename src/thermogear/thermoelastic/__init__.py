@@ -9,7 +9,7 @@ fitted factor (docs/thermal.md).
 - :mod:`~thermogear.thermoelastic.inputs`: the case's inputs resolved with their defaults, load-time checks;
 - :mod:`~thermogear.thermoelastic.mesh`: the component :class:`~thermogear.thermoelastic.mesh.ThermoelasticMesh`
   (``ThermoelasticMesh.from_case(case)``), the one the mesh model plugs in;
-- :mod:`~thermogear.thermoelastic.summary` and :mod:`~thermogear.thermoelastic.plots`: CLI outputs and figures.
+(Its CLI outputs and figures are in :mod:`thermogear.summaries`.)
 
 This package's ``__init__`` imports no module that imports :mod:`thermogear.case` (the case builder calls the
 load-time checks), so import the component from :mod:`thermogear.thermoelastic.mesh`.
