@@ -13,12 +13,6 @@ import pytest
 ROOT = Path(__file__).resolve().parents[2]
 SHEET = "physics" + ".md"  # spelled in two parts so that this file does not mention it
 
-#: files the lead rewrites himself (issue 16): they still cite the sheet until he does
-LEAD_FILES = {"src/thermogear/damping.py", "src/thermogear/mesh_cycle.py", "src/thermogear/simulation.py",
-              "src/thermogear/geometry.py", "src/thermogear/thermal/stiffness.py", "src/thermogear/sweep/batch.py",
-              "src/thermogear/report/evaluate.py", "src/thermogear/dynamics/response.py",
-              "src/thermogear/dynamics/problem.py", "src/thermogear/dynamics/periodic.py"}
-
 
 def _tracked_text_files() -> list[Path]:
     result = subprocess.run(["git", "ls-files", "--cached", "--others", "--exclude-standard"], cwd=ROOT,
@@ -71,13 +65,8 @@ def test_every_page_is_in_the_navigation():
 
 
 def test_no_file_cites_the_reference_sheet():
-    offenders = _citing_files() - LEAD_FILES
+    offenders = _citing_files()
     assert not offenders, f"cite the paper, the standard or a docs/ page instead: {sorted(offenders)}"
-
-
-@pytest.mark.xfail(strict=True, reason="the lead rewrites these files himself (issue 16); remove LEAD_FILES then")
-def test_lead_files_do_not_cite_the_reference_sheet():
-    assert not (_citing_files() & LEAD_FILES)
 
 
 def test_install_line_is_from_the_repository():

@@ -1,6 +1,7 @@
 """Exact periodic steady state of me·ẍ + c(τ)ẋ + k(τ)x = w with piecewise-constant coefficients.
 
-physics.md §11 (Floquet / monodromy). With y = [x, ẋ] and constant k, c, w on an interval of length h, the
+Floquet theory (Floquet 1883; the monodromy matrix of a periodic linear system, e.g. Nayfeh &
+Mook, Nonlinear Oscillations, 1979, ch. 5). With y = [x, ẋ] and constant k, c, w on an interval of length h, the
 solution is y(t) = Φ(t)·(y(0) − y_eq) + y_eq with y_eq = [w/k, 0] (the static transmission error) and
 Φ(t) = expm(A t), A = [[0, 1], [−k/me, −c/me]], in closed form for a 2×2 matrix:
 
@@ -239,7 +240,7 @@ def _problem_arrays(problem: MeshDynamicsProblem) -> tuple[float, np.ndarray, np
 
 
 def monodromy(problem: MeshDynamicsProblem) -> tuple[np.ndarray, np.ndarray]:
-    """Monodromy matrix M (2×2) and the image b of y = 0 after one period (physics.md §11)."""
+    """Monodromy matrix M (2×2) and the image b of y = 0 after one period (Floquet theory)."""
     m00, m01, m10, m11, bx, bv = _one_period(*_problem_arrays(problem))
     return np.array([[m00, m01], [m10, m11]]), np.array([bx, bv])
 
@@ -291,7 +292,7 @@ def periodic_initial_state(problem: MeshDynamicsProblem) -> tuple[tuple[float, f
 
 
 def periodic_steady_state(problem: MeshDynamicsProblem, samples_per_interval: int = 64) -> PeriodicOrbit:
-    """Exact periodic steady state over one mesh period (physics.md §11), sampled for plots and metrics.
+    """Exact periodic steady state over one mesh period (Floquet theory), sampled for plots and metrics.
 
     Parameters
     ----------

@@ -1,6 +1,6 @@
 """The mesh-cycle equation of motion as data: me·ẍ + c(τ)·ẋ + k(τ)·x = w over one mesh period.
 
-Luo & Li (2020) Eqs. (5)–(6), physics.md §1.2. The coefficients are piecewise constant on the intervals
+Luo & Li (2020) Eqs. (5)–(6). The coefficients are piecewise constant on the intervals
 between ``nodes`` (the region transitions A..E of the mesh cycle are nodes). Everything is a total over the
 face width (kg, N/m, N·s/m, N); the face width is kept only for per-width views of loads in metrics.
 

@@ -305,7 +305,7 @@ def paper_values(evaluation: Evaluation) -> dict[str, Any]:
         out["sec5.load_stage_torque"] = fzg_load_stage_torque(6)
         return out
 
-    guarded(tuple(r.key for r in PAPER_ROWS if r.kind == "measured" or r.key == "sec5.load_stage_torque"), (),
+    guarded(tuple(r.key for r in PAPER_ROWS if (r.section.startswith("§5.2") and r.kind == "input") or r.key == "sec5.load_stage_torque"), (),
             experiment)
     values["sec5.run_duration"] = (None, "the run duration is a test procedure; thermogear's bundled data holds only "
                                          "the readings at minutes 3, 5 and 10")

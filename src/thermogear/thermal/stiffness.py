@@ -66,7 +66,7 @@ def thermal_stiffness_of_pair(normal_load, elastic_stiffness, expansion_sum, x_t
 def thermal_stiffness_of_tooth(normal_load, tooth_stiffness, elastic_stiffness, expansion_sum, own_expansion, x_te):
     """Single-tooth thermal stiffness k_Ti = F_n k_ei / (F_n + (1 + X_te) k_e (Δ_t1 + Δ_t2) − k_ei Δ_ti) [N/m]
     (Luo & Li Eq. 16). ``tooth_stiffness`` k_ei [N/m] includes this tooth's share of the Hertz compliance so that
-    1/k_e = 1/k_e1 + 1/k_e2 (physics.md §1.3: only then is Eq. 17 the series sum of Eq. 16)."""
+    1/k_e = 1/k_e1 + 1/k_e2 (docs/derivations.md: only then is Eq. 17 the series sum of Eq. 16)."""
     check_x_te(x_te)
     load = _check_load(normal_load)
     tooth = np.asarray(tooth_stiffness, dtype=float)
