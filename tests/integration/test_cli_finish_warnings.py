@@ -38,7 +38,7 @@ def test_python_warnings_print_once_per_cause_without_path():
               "install_warning_printer()\n"
               "for load in (10.0, 20.0, 30.0):\n"
               "    warnings.warn(f'unit load {load} N/mm is low', UserWarning)\n"
-              "warnings.warn('another cause', DeprecationWarning)\n")
+              "warnings.warn('another cause', RuntimeWarning)\n")
     result = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True)
     assert result.returncode == 0, result.stderr
     assert result.stderr.splitlines() == ["warning: unit load 10.0 N/mm is low", "warning: another cause"]

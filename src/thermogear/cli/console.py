@@ -16,6 +16,7 @@ import warnings
 from contextlib import contextmanager
 from typing import Iterator
 
+from rich.cells import cell_len
 from rich.console import Console, ConsoleDimensions
 from rich.text import Text
 
@@ -63,7 +64,7 @@ class PlainConsole(Console):
         for item in objects:
             if isinstance(item, Table) and isinstance(item.title, str) and item.title:
                 width = Measurement.get(self, self.options, item).maximum
-                if len(item.title) > width:
+                if cell_len(item.title) > width:
                     if pending:
                         super().print(*pending, **kwargs)
                         pending = []
@@ -121,12 +122,10 @@ def _formatwarning(message, category, filename, lineno, line=None) -> str:
 
 def install_warning_printer() -> None:
     """Route Python warnings to ``warning: <message>`` lines on stderr, once per cause (command line only: the
-    library leaves :mod:`warnings` as Python has it). Every warning is let through to the printer, which does the
-    counting by cause."""
+    library leaves :mod:`warnings` as Python has it). Python's filters still decide which warnings show (third-party
+    deprecation notices stay hidden, ``-W`` options apply)."""
     warnings.showwarning = _showwarning
     warnings.formatwarning = _formatwarning
-    if not sys.warnoptions:
-        warnings.simplefilter("default")
 
 
 def progress_enabled(console: Console, quiet: bool = False) -> bool:
