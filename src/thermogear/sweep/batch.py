@@ -178,7 +178,7 @@ def evaluate_group(mesh: MeshModel, speeds_rpm) -> dict[str, np.ndarray] | None:
     """Metrics of a mesh model at many speeds [rpm], each under the mesh model's load at that speed; None where
     the fast path cannot be exact for this model (the caller runs the per-point path)."""
     speeds = np.asarray(speeds_rpm, dtype=float)
-    loads = np.array([mesh.normal_load(speed) for speed in speeds])
+    loads = _normal_loads(mesh, speeds)
     reference = group_tables(mesh)
     if reference is None:
         return None
@@ -192,6 +192,23 @@ def evaluate_group(mesh: MeshModel, speeds_rpm) -> dict[str, np.ndarray] | None:
         for name, array in values.items():
             result.setdefault(name, np.empty(speeds.shape, dtype=array.dtype))[members] = array
     return result
+
+
+def _normal_loads(mesh: MeshModel, speeds: np.ndarray) -> np.ndarray:
+    """``mesh.normal_load`` [N] at many speeds [rpm] in one pass: w = T1(n1)/r_b1, the operating point's torque, or
+    its power over ω1 away from its own speed (``OperatingPoint.torque_at``). Checked against the mesh model at
+    the first and last speeds; where they differ by a bit, every speed is asked one by one."""
+    operating = mesh.case.operating_point
+    if operating.constant_power:
+        with np.errstate(divide="ignore"):
+            torque = np.where(speeds != operating.speed_rpm, operating.power / operating.angular_speed_of(speeds),
+                              operating.torque)
+    else:
+        torque = np.full(speeds.shape, float(operating.torque))
+    loads = torque / mesh.gear_pair.pinion.base_radius
+    if speeds.size and all(loads.flat[index] == mesh.normal_load(float(speeds.flat[index])) for index in (0, -1)):
+        return loads
+    return np.array([mesh.normal_load(float(speed)) for speed in speeds.flat]).reshape(speeds.shape)
 
 
 # ------------------------------------------------------------------------------------------- slow path

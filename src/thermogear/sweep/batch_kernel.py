@@ -98,7 +98,7 @@ def _square(p00, p01, p10, p11) -> None:
 
 
 @numba.njit(cache=True, error_model="numpy")
-def _monodromy(mass, nodes, stiffness, damping, factor, force, samples, work):
+def _monodromy(mass, nodes, stiffness, damping, factor, force, samples, work, stored):
     """Monodromy (m00, m01, m10, m11 in work[12:16]) and image (bx, bv in work[16:18]) of y = 0 after one period,
     per point of a tile, and whether any interval of a point has c ≠ 0."""
     count = mass.size
@@ -114,6 +114,9 @@ def _monodromy(mass, nodes, stiffness, damping, factor, force, samples, work):
     for i in range(stiffness.size):
         step = (nodes[i + 1] - nodes[i]) / samples
         _step_transitions(stiffness[i], damping[i], mass, factor, step, p00, p01, p10, p11)
+        kept = stored[i]
+        for j in range(count):  # the walk reuses Φ(step)
+            kept[0, j], kept[1, j], kept[2, j], kept[3, j] = p00[j], p01[j], p10[j], p11[j]
         # whole interval: Q = Φ(step)^samples
         if by_squaring:
             for _ in range(squarings):
@@ -142,15 +145,15 @@ def _monodromy(mass, nodes, stiffness, damping, factor, force, samples, work):
 
 
 @numba.njit(cache=True, error_model="numpy")
-def _walk_displacement(mass, nodes, stiffness, damping, factor, force, pair_high, pair_low, x0, v0, samples,
-                       work, out) -> None:
+def _walk_displacement(nodes, stiffness, force, pair_high, pair_low, x0, v0, samples, work, stored,
+                       out) -> None:
     """:func:`_walk` without the damping force, one pass over the points per sub-step: the loads are k·x and
     k_p·x, so an interval's extreme loads are those at its extreme x (k > 0, k_p >= 0), and the largest pair
     load max_p k_p·x is pair_high·x for x >= 0 and pair_low·x for x < 0 (the largest and smallest k_p of the
     interval: the same products, so the same numbers)."""
-    count = mass.size
+    count = x0.size
     n = stiffness.size
-    p00, p01, p10, p11, x, v, xs, eq = work[0], work[1], work[2], work[3], work[4], work[5], work[6], work[7]
+    x, v, xs, eq = work[4], work[5], work[6], work[7]
     top, bottom, fastest, in1, in2, first, second = work[8], work[9], work[10], work[11], work[12], work[13], \
         work[14]
     max_pair, max_system, min_system = work[15], work[16], work[17]
@@ -162,7 +165,7 @@ def _walk_displacement(mass, nodes, stiffness, damping, factor, force, pair_high
     for i in range(n):
         k = stiffness[i]
         step = (nodes[i + 1] - nodes[i]) / samples
-        _step_transitions(k, damping[i], mass, factor, step, p00, p01, p10, p11)
+        p00, p01, p10, p11 = stored[i, 0], stored[i, 1], stored[i, 2], stored[i, 3]
         kp = stiffness[i - 1] if i > 0 else 0.0
         high = pair_high[i - 1] if i > 0 else 0.0
         low = pair_low[i - 1] if i > 0 else 0.0
@@ -375,7 +378,8 @@ def periodic_metrics_batch(mass: np.ndarray, nodes: np.ndarray, stiffness: np.nd
         tile_mass = np.ascontiguousarray(mass[start:stop])
         tile_factor = np.ascontiguousarray(factor[start:stop])
         tile_force = np.ascontiguousarray(force[start:stop])
-        damped = _monodromy(tile_mass, nodes, stiffness, damping, tile_factor, tile_force, samples, work)
+        stored = np.empty((n, 4, count))  # Φ(step) of every interval, for the walk
+        damped = _monodromy(tile_mass, nodes, stiffness, damping, tile_factor, tile_force, samples, work, stored)
         x0 = np.zeros(count)
         v0 = np.zeros(count)  # unstable points are walked harmlessly from 0 and reported as NaN
         stable = 0
@@ -396,8 +400,8 @@ def periodic_metrics_batch(mass: np.ndarray, nodes: np.ndarray, stiffness: np.nd
             _walk(tile_mass, nodes, stiffness, damping, tile_factor, tile_force, pair_stiffness, x0, v0, samples,
                   damping_force, work, metrics)
         else:
-            _walk_displacement(tile_mass, nodes, stiffness, damping, tile_factor, tile_force, pair_high, pair_low,
-                               x0, v0, samples, work, metrics)
+            _walk_displacement(nodes, stiffness, tile_force, pair_high, pair_low, x0, v0, samples, work, stored,
+                               metrics)
         for j in range(count):
             if moduli[start + j, 0] < 1.0:
                 out[start + j, :] = metrics[j, :]
