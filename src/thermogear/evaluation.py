@@ -14,15 +14,17 @@ import warnings
 from dataclasses import dataclass, field
 from typing import Any, Callable
 
+import numpy as np
+
 from thermogear.citations import cite
 
-__all__ = ["Evaluation", "MODELS", "STEPS", "evaluate_case", "is_paper_case"]
+__all__ = ["Evaluation", "MODELS", "STEPS", "evaluate_case", "is_paper_case", "thermoelastic_beside_paper"]
 
 MODELS = ("elastic", "thermal")
 
 #: Names of the evaluation steps, in order (for progress bars).
-STEPS = ("elastic model", "thermal model", "thermal stiffness", "damping", "start-up transients", "rig trend",
-         "FE verification")
+STEPS = ("elastic model", "thermal model", "thermal stiffness", "damping", "start-up transients",
+         "thermoelastic prediction", "rig trend", "FE verification")
 
 
 def is_paper_case(case) -> bool:
@@ -45,6 +47,7 @@ class Evaluation:
     damping: Any = None  # damping.DampingSummary
     rig_trend: dict | None = None
     fem: Any = None
+    thermoelastic: dict | None = None  # the predictive model beside the paper's (paper's case only)
     problems: dict = field(default_factory=dict)  # stage -> reason it failed
     timings: dict = field(default_factory=dict)  # stage -> seconds
     warnings: list = field(default_factory=list)  # warning texts raised during the run (deduplicated)
@@ -140,6 +143,9 @@ def evaluate_case(case, method: str = "periodic", models: tuple[str, ...] = MODE
         _run_stage(evaluation, "start-up transients", transients)
 
     if evaluation.paper:
+        step("thermoelastic prediction")
+        _run_stage(evaluation, "thermoelastic prediction",
+                   lambda: setattr(evaluation, "thermoelastic", thermoelastic_beside_paper(case)))
         step("rig trend")
         _run_stage(evaluation, "rig trend", lambda: setattr(evaluation, "rig_trend", _rig_trend()))
         step("FE verification")
@@ -175,3 +181,42 @@ def _rig_trend() -> dict:
     first, last = measured["temperature_start_c"], measured["temperature_end_c"]
     return {"measured": measured, "natural_frequency_hz": frequencies,
             "relative_change": frequencies[last] / frequencies[first] - 1.0}
+
+
+def thermoelastic_beside_paper(case) -> dict:
+    """The paper's own pair under the predictive thermo-elastic model beside the paper's model (``luo2020``) and
+    the elastic one, at the same operating point and temperatures: mean mesh stiffness per width [N/(mm·μm)],
+    its change against the elastic model [%], the natural frequency [Hz], Kv and the DTE peak-to-peak [μm] of the
+    steady state, the normal backlash cold and hot [μm], the loaded static transmission error [μm], the jamming
+    temperature [°C] and what the model flags. Nothing is fitted: the thermo-elastic model takes no X_te."""
+    from thermogear.mesh.model import MeshModel
+    from thermogear.simulation import Simulation
+    from thermogear.thermoelastic.mesh import ThermoelasticMesh
+
+    predictive = case.with_changes(**{"thermal.model": "thermoelastic"})
+    width = case.gear_pair.face_width
+    models = {"elastic": (case, "elastic"), "luo2020": (case, "thermal"), "thermoelastic": (predictive, "thermal")}
+    result: dict = {}
+    for name, (chosen, model) in models.items():
+        simulation = Simulation(chosen, model)
+        metrics = simulation.run("periodic").metrics
+        mesh = MeshModel(chosen, model)
+        state = simulation.state
+        static = state.static_transmission_error
+        static = state.problem().static_transmission_error if static is None else static
+        result[name] = {"mean_mesh_stiffness_n_per_mm_um": simulation.mesh_stiffness_mean / width * 1e-9,
+                        "natural_frequency_hz": simulation.natural_frequency_hz, "kv": metrics["kv"],
+                        "dte_peak_to_peak_um": metrics["dte_peak_to_peak"] * 1e6,
+                        "static_transmission_error_peak_to_peak_um": float(np.ptp(static)) * 1e6,
+                        "backlash_normal_um": None if mesh.backlash is None else mesh.backlash * 1e6}
+    elastic = result["elastic"]["mean_mesh_stiffness_n_per_mm_um"]
+    for name in ("luo2020", "thermoelastic"):
+        result[name]["stiffness_change_percent"] = 100.0 * (result[name]["mean_mesh_stiffness_n_per_mm_um"] / elastic - 1)
+    component = ThermoelasticMesh.from_case(predictive)
+    result["elastic"]["backlash_normal_um"] = component.backlash_normal_cold * 1e6  # the cold mesh's
+    result["thermoelastic"].update(
+        backlash_cold_um=component.backlash_normal_cold * 1e6, backlash_hot_um=component.backlash_normal * 1e6,
+        jamming_bulk_temperature_c=component.jamming_bulk_temperature_c, flags=list(component.plausibility),
+        youngs_modulus_gpa=[value * 1e-9 for value in component.youngs_modulus])
+    cite("luo2020")
+    return result

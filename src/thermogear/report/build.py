@@ -44,7 +44,7 @@ def report_steps(case, models=("elastic", "thermal")) -> list[str]:
     """The progress steps of :func:`build_report` for ``case`` (for a progress bar's total)."""
     steps = [f"{model} model" for model in models] + ["thermal stiffness", "damping", "start-up transients"]
     if is_paper_case(case):
-        steps += ["rig trend", "FE verification"]
+        steps += ["thermoelastic prediction", "rig trend", "FE verification"]
     return steps + ["figures", "files"]
 
 

@@ -136,6 +136,7 @@ def summary_document(evaluation, verdicts, results, messages, figures, missing_f
                               "counted here"} if verdicts else None),
         "table_counts": counts,
         "fig15_fe_versus_analytical": fe_versus_analytical(evaluation),
+        "thermoelastic_beside_paper": evaluation.thermoelastic,
         "results": results,
         "models": {model: response.metrics_json() for model, response in evaluation.responses.items()},
         "messages": messages,
