@@ -29,16 +29,12 @@ def light_load_run(luo2019, tmp_path_factory):
     recorded: dict = {"advances": []}
 
     @contextlib.contextmanager
-    def recording_progress(enabled, total, completed):
+    def recording_progress(total, completed):
         recorded["total"], recorded["completed"] = total, completed
         yield recorded["advances"].append
 
-    original = engine._progress
-    engine._progress = recording_progress
-    try:
-        run = engine.run_study(study, tmp_path_factory.mktemp("sweep") / "light.zarr", scheduler="serial")
-    finally:
-        engine._progress = original
+    run = engine.run_study(study, tmp_path_factory.mktemp("sweep") / "light.zarr", scheduler="serial",
+                           progress=recording_progress)
     return study, run, recorded
 
 
