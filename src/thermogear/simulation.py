@@ -9,7 +9,7 @@ pipeline with different per-pair stiffness and damping; nothing here knows how e
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import cached_property
 from typing import Literal
 
@@ -110,6 +110,17 @@ class Simulation:
         return self.state.problem()
 
     def run(self, method: Method | None = None, include_damping_force: bool | None = None):
+        """Solve the dynamics and return the response with the checks of a thermal result (``flags``).
+
+        See :meth:`solve` for the methods."""
+        response = self.solve(method, include_damping_force)
+        if self.model != "thermal":
+            return response
+        from thermogear.mesh.plausibility import thermal_result_flags
+
+        return replace(response, flags=thermal_result_flags(self.mesh_model, self.state, response.metrics))
+
+    def solve(self, method: Method | None = None, include_damping_force: bool | None = None):
         """Solve the dynamics and return the response.
 
         Linear mesh (``[dynamics] mesh = "linear"``): ``"periodic"`` gives the exact periodic steady state

@@ -46,6 +46,7 @@ class NonlinearResponse:
     method: str = "nonlinear periodic (shooting)"
     history: None = None  # a steady orbit, not a history from rest (plots repeat the orbit)
     warnings: tuple[str, ...] = field(default=())
+    flags: tuple[str, ...] = field(default=())  # checks of the model that produced it, in words
 
     # ------------------------------------------------------------------ views
     @property

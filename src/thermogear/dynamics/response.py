@@ -65,6 +65,7 @@ class DynamicResponse:
     initial_state: tuple[float, float] | None = None
     label: str = ""
     warnings: tuple[str, ...] = field(default=())
+    flags: tuple[str, ...] = field(default=())  # checks of the model that produced it, in words
 
     # ------------------------------------------------------------------ basic views
     @property

@@ -98,10 +98,10 @@ def _plain(value):
 def model_messages(response, model: str) -> list[str]:
     """What a user must be told in words about a response: contact loss (when, how long, how deep) and
     instability. Empty when the linear model holds."""
-    messages = []
+    messages = [f"{model}: check — {flag}" for flag in getattr(response, "flags", ())]
     metrics = response.metrics
     if metrics.get("mesh") == "nonlinear":
-        return _nonlinear_messages(metrics, model) + list(getattr(response, "warnings", ()))
+        return messages + _nonlinear_messages(metrics, model) + list(getattr(response, "warnings", ()))
     loss = metrics.get("contact_loss", {})
     period = response.problem.period
     if loss.get("detected"):

@@ -1,0 +1,57 @@
+"""Checks of a thermal result before it is shown: what heat can and cannot do to a gear mesh.
+
+A thermal model that changes the mesh stiffness by far more than Young's modulus at temperature and the operating
+geometry can (E falls by about 0.033 %/K for carbon and low-alloy steels: Roark's table of E against temperature),
+a frequency ratio near a resonance of the mesh, or a negative amplitude are said in words beside the result.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from thermogear.mesh.model import MeshModel
+from thermogear.mesh.state import MeshState
+from thermogear.thermoelastic.materials import MODULUS_TEMPERATURE_COEFFICIENTS_PER_K
+
+__all__ = ["thermal_result_flags"]
+
+#: A frequency ratio f_mesh/f_n within this fraction of 1/j (j = 1, 2, 3) is flagged as near the j-th resonance.
+RESONANCE_MARGIN = 0.10
+#: Slack on the stiffness change that E(T) explains before a thermal model's change is flagged [–]: the operating
+#: geometry (contact ratio at temperature) moves the mean stiffness by up to about 2 % for the usual rises.
+GEOMETRY_SLACK = 0.02
+
+
+def thermal_result_flags(mesh: MeshModel, state: MeshState, metrics: dict[str, Any]) -> tuple[str, ...]:
+    """Findings that make a result doubtful, in words (empty when nothing is flagged)."""
+    flags: list[str] = []
+    if mesh.thermoelastic and mesh.thermoelastic_mesh is not None:
+        flags += list(mesh.thermoelastic_mesh.plausibility)
+    if mesh.thermal_model == "luo2020":
+        field = mesh.temperature
+        gamma = np.linspace(-0.5, 0.5, 21)
+        rise = float(np.max(np.asarray(field.pinion_flank_c(gamma), float))) - field.reference_c
+        steepest = max(abs(value) for value in MODULUS_TEMPERATURE_COEFFICIENTS_PER_K.values())
+        modulus_limit = steepest * max(rise, 0.0)
+        elastic = MeshModel(mesh.case, "elastic").state(speed_rpm=state.speed_rpm, normal_load=state.normal_load,
+                                                       points_per_period=state.grid.nodes.size - 1, damping=False)
+        change = state.mean_mesh_stiffness / elastic.mean_mesh_stiffness - 1.0
+        if change < -(modulus_limit + GEOMETRY_SLACK):
+            flags.append(f"the paper's secant k_T lowers the mean mesh stiffness by {-100 * change:.1f} %, more than "
+                         f"Young's modulus at a {rise:.0f} K rise can ({100 * modulus_limit:.1f} %): it rests on the "
+                         "factor X_te; [thermal] model = \"thermoelastic\" predicts without it")
+    ratio = metrics.get("frequency_ratio")
+    if ratio is not None and np.isfinite(ratio):
+        for order in (1, 2, 3):
+            if abs(ratio * order - 1.0) < RESONANCE_MARGIN:
+                flags.append(f"the frequency ratio f_mesh/f_n = {ratio:.3f} is within {100 * RESONANCE_MARGIN:.0f} % "
+                             f"of the {'primary' if order == 1 else f'order-{order}'} resonance (f_mesh = f_n/{order})")
+    amplitudes = metrics.get("amplitude_per_region") or {}
+    negative = [name for name, value in amplitudes.items() if np.isfinite(value) and value < 0.0]
+    if negative:
+        flags.append("a negative amplitude (peak below the static equilibrium) in the " + ", ".join(negative)
+                     + " region: the response there is dominated by the jumps between regions, not by a vibration "
+                       "about the equilibrium")
+    return tuple(flags)
