@@ -198,6 +198,16 @@ def test_unwritable_parent_is_one_clear_error(tmp_path, monkeypatch):
     assert list(tmp_path.iterdir()) == []
 
 
+def test_unwritable_parent_is_refused_before_any_work(tmp_path, monkeypatch):
+    # the check runs before the computing starts (build_report calls it first): here it alone must refuse
+    def refuse(*args, **kwargs):
+        raise OSError(30, "Read-only file system")
+
+    monkeypatch.setattr("thermogear.report.writer.tempfile.mkdtemp", refuse)
+    with pytest.raises(CaseError, match="Read-only file system"):
+        OutputFolder(tmp_path / "report").check()
+
+
 @pytest.mark.parametrize("command", [("run", "luo2019"), SWEEP])
 def test_out_below_a_file_is_one_clear_error(tmp_path, command):
     blocker = tmp_path / "file.txt"

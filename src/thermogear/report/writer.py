@@ -61,6 +61,11 @@ class OutputFolder:
         if not existing.is_dir() or not os.access(existing, os.W_OK | os.X_OK):
             raise CaseError(self.option, str(self.target), "a folder thermogear can create and write",
                             f"cannot write there: {existing} is not a writable folder")
+        try:  # os.access says yes to root and knows nothing of read-only mounts: try it, before any work
+            os.rmdir(tempfile.mkdtemp(prefix=f".{self.target.name}.probe-", dir=existing))
+        except OSError as error:
+            raise CaseError(self.option, str(self.target), "a folder thermogear can create and write",
+                            f"cannot write there: {error.strerror or error}") from None
 
     def __enter__(self) -> "OutputFolder":
         self.check()
