@@ -136,10 +136,13 @@ class Simulation:
         damping_force = dynamics.include_damping_force if include_damping_force is None else include_damping_force
         if method not in ("periodic", "transient"):
             raise CaseError("method", method, "periodic | transient", "unknown solution method")
-        if dynamics.mesh == "nonlinear" and method == "periodic":
-            from thermogear.dynamics.nonlinear_response import nonlinear_response
+        if dynamics.mesh == "nonlinear":
+            from thermogear.dynamics.nonlinear_response import nonlinear_response, nonlinear_transient
 
             problem = self.state.backlash_problem(dynamics.damping_in_flight)
+            if method == "transient":
+                return nonlinear_transient(problem, dynamics.transient_periods, dynamics.samples_per_interval,
+                                           label=self.model)
             return nonlinear_response(problem, include_damping_force=damping_force, label=self.model,
                                       samples_per_interval=dynamics.samples_per_interval)
         if method == "periodic":

@@ -191,7 +191,7 @@ def _start_up(ax, evaluation, quantity: str, periods: int = 6) -> None:
         if response is None:
             continue
         history = response.history
-        count = min(history.time.size, periods * history.samples_per_period + 1)
+        count = int(np.searchsorted(history.time, periods * response.problem.period, side="right"))
         ax.plot(history.time[:count] * 1e3, getattr(history, quantity)[:count] * scale, color=_COLORS[model],
                 ls="-" if model == "elastic" else "--", label=f"{model}, from rest")
     ax.set_xlabel("time [ms]")
