@@ -1,9 +1,11 @@
 """Running a study on Dask: a local cluster by default, a ``dask.distributed`` scheduler by address, one path.
 
-Every block (chunk) of the study is one task. The driver submits the blocks that the store has not marked done,
-writes each result into the store as soon as it arrives (data first, then the block's marker) and shows a
-progress bar. The tasks are pure functions of (study, block), so where they run does not change a bit of the
-result: a local cluster, a remote scheduler and an in-process loop give the same dataset.
+Every block (chunk) of the study is one task. The driver submits the blocks that the store has not marked done;
+each task computes its block and writes the block's data into the store itself (blocks are whole zarr chunks, so
+workers never write the same file), and the driver writes the block's marker when the task has returned (data
+first, then the marker) and shows a progress bar. Nothing but the warnings travels back, so the driver stays
+idle and the workers have the cores. The tasks are pure functions of (study, block), so where they run does not
+change a bit of the result: a local cluster, a remote scheduler and an in-process loop give the same dataset.
 
 Schedulers (``scheduler`` argument, ``--scheduler`` on the command line):
 
@@ -26,7 +28,7 @@ from thermogear.sweep.batch import evaluate_block
 from thermogear.sweep.store import ResultStore
 from thermogear.warning_causes import WarningTally
 
-__all__ = ["StudyRun", "compute_block", "run_study"]
+__all__ = ["StudyRun", "compute_block", "compute_and_write_block", "run_study"]
 
 METHODS = ("batch", "simulation")
 
@@ -34,6 +36,14 @@ METHODS = ("batch", "simulation")
 def compute_block(study, block, method: str = "batch"):
     """One task: the arrays of a block and the warnings raised computing it (run on a worker)."""
     return evaluate_block(study, block, method)
+
+
+def compute_and_write_block(study, block, method: str, path: str) -> list[str]:
+    """One task of a Dask run: compute a block, write its data into the store at ``path`` (not its marker: the
+    driver writes it once this returns) and return the warnings raised computing it (run on a worker)."""
+    arrays, messages = evaluate_block(study, block, method)
+    ResultStore(path, study).write_data(block, arrays)
+    return messages
 
 
 class StudyRun:
@@ -90,14 +100,22 @@ def run_study(study, out: str | Path, scheduler: str | None = None, resume: bool
             from distributed import as_completed
 
             shared = client.scatter(study, broadcast=True, hash=False)
-            futures = {client.submit(compute_block, shared, block, method, pure=False): block for block in pending}
+            futures = {client.submit(compute_and_write_block, shared, block, method, str(store.path), pure=False):
+                       block for block in pending}
             try:
                 for future in as_completed(futures):
-                    finish(futures[future], *future.result())
-                    advance(futures[future].size)
+                    block = futures.pop(future)
+                    messages = future.result()  # raises the task's error: the block stays unmarked
+                    store.mark_done(block)
+                    tally.update(messages)
+                    if on_block is not None:
+                        on_block(block.number)
+                    advance(block.size)
             finally:
                 client.cancel(list(futures))
-    return StudyRun(store.dataset(), tally.messages(), computed=len(pending), skipped=len(done), path=Path(out))
+    # read from the store when used: a 10⁶-point study is not held in memory
+    return StudyRun(store.dataset(lazy=True), tally.messages(), computed=len(pending), skipped=len(done),
+                    path=Path(out))
 
 
 def _client(scheduler: str | None, workers: int | None, dashboard: str | None = None):

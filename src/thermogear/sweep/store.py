@@ -95,6 +95,7 @@ class ResultStore:
         self.study = study
         with _quiet_zarr():
             self._group = zarr.open_group(str(self.path), mode="r+", use_consolidated=False)
+        self._arrays: dict[str, Any] = {}
 
     # ------------------------------------------------------------------------------ opening
     @classmethod
@@ -196,28 +197,49 @@ class ResultStore:
 
     def write_block(self, block, arrays: dict[str, np.ndarray]) -> None:
         """Write a block's arrays into their region, then mark the block done (the marker goes last)."""
+        self.write_data(block, arrays)
+        self.mark_done(block)
+
+    def write_data(self, block, arrays: dict[str, np.ndarray]) -> None:
+        """Write a block's arrays into their region, without its marker (a worker writes its own block's data;
+        the driver marks the block once the worker has returned). Blocks are whole zarr chunks, so processes
+        writing different blocks never touch the same file."""
         region = tuple(block.slices)
         for name in MODEL_VARIABLES:
-            self._group[name][(slice(None), *region)] = arrays[name]
+            self._array(name)[(slice(None), *region)] = arrays[name]
         for name in POINT_VARIABLES:
-            self._group[name][region] = arrays[name]
-        self._group[_DONE][block.number] = 1
+            self._array(name)[region] = arrays[name]
+
+    def mark_done(self, block) -> None:
+        """Record a block whose data are completely written."""
+        self._array(_DONE)[block.number] = 1
+
+    def _array(self, name: str):
+        """The zarr array ``name``, opened once per store object (opening reads its metadata from disk)."""
+        if name not in self._arrays:
+            with _quiet_zarr():
+                self._arrays[name] = self._group[name]
+        return self._arrays[name]
 
     @property
     def complete(self) -> bool:
         return len(self.done_blocks()) == len(self.study.blocks())
 
-    def dataset(self, keep_record: bool = False):
-        """The results as an xarray Dataset (loaded into memory)."""
-        return open_result(self.path, keep_record=keep_record)
+    def dataset(self, keep_record: bool = False, lazy: bool = False):
+        """The results as an xarray Dataset (loaded into memory; ``lazy``: read from the store when used)."""
+        return open_result(self.path, keep_record=keep_record, lazy=lazy)
 
 
-def open_result(path: str | Path, keep_record: bool = False):
-    """Open a study's store as an xarray Dataset (loaded); ``keep_record`` keeps the ``chunk_done`` record."""
+def open_result(path: str | Path, keep_record: bool = False, lazy: bool = False):
+    """Open a study's store as an xarray Dataset, loaded; ``lazy``: each variable is read from the store when it
+    is used (no Dask; memory of the variables used, not of the whole grid). ``keep_record`` keeps the
+    ``chunk_done`` record."""
     import xarray as xr
 
     with _quiet_zarr():
-        dataset = xr.open_zarr(str(path), consolidated=None).load()
+        dataset = xr.open_zarr(str(path), consolidated=None, chunks=None)
+        if not lazy:
+            dataset = dataset.load()
     if not keep_record:
         dataset = dataset.drop_vars(_DONE)
     return dataset

@@ -64,7 +64,7 @@ COMPANION_CHANGES: dict[str, dict[str, Any]] = {
 FLANK_OFFSET_KEY = "temperature.flank_offset_c"
 
 MODEL_CHOICES = ("elastic", "thermal", "both")
-DEFAULT_CHUNK_POINTS = 256
+DEFAULT_CHUNK_POINTS = 4096  # points per task and zarr chunk: amortises the per-block cost (tables, writes)
 #: Values of one parameter checked by building a case (about 0.3 ms each; 10⁶ took minutes).
 CHECKED_VALUES = 65
 
