@@ -13,7 +13,7 @@ import pytest
 from thermogear.dynamics.backlash_continuation import follow_branch
 from thermogear.dynamics.backlash_problem import BacklashMeshProblem
 from thermogear.dynamics import periodic_steady_state
-from thermogear.errors import CaseError
+from thermogear.errors import ProblemError
 
 MASS, K0, FORCE = 1.0, 1e8, 1e3
 X_STATIC = FORCE / K0
@@ -87,5 +87,5 @@ def test_a_failed_point_is_reported_and_the_sweep_goes_on():
 
 
 def test_direction_is_checked():
-    with pytest.raises(CaseError, match="direction"):
+    with pytest.raises(ProblemError, match="direction"):
         follow_branch([textbook(1.0)], "sideways")

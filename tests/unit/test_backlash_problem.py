@@ -1,4 +1,4 @@
-"""BacklashMeshProblem: input checks (CaseError naming key, value, allowed range, reason) and its constructors."""
+"""BacklashMeshProblem: input checks (ProblemError naming key, value, allowed range, reason) and its constructors."""
 
 from __future__ import annotations
 
@@ -7,7 +7,7 @@ import pytest
 
 from thermogear.dynamics import MeshDynamicsProblem
 from thermogear.dynamics.backlash_problem import BacklashMeshProblem
-from thermogear.errors import CaseError
+from thermogear.errors import ProblemError
 
 STIFFNESS = 1e8  # [N/m]
 FORCE = 1e3  # [N]; static deflection w/k = 10 μm
@@ -34,14 +34,14 @@ def test_valid_problem_and_derived_values():
 
 @pytest.mark.parametrize("backlash", [0.0, -1e-6, np.nan, np.inf])
 def test_backlash_not_positive_is_a_jammed_mesh(backlash):
-    with pytest.raises(CaseError, match="backlash") as error:
+    with pytest.raises(ProblemError, match="backlash") as error:
         make(backlash=backlash)
-    assert error.value.key == "backlash"
+    assert error.value.quantity == "backlash"
 
 
 def test_deviations_that_close_the_backlash_are_refused():
     # e + e' = −2e-5 m closes a backlash of 1e-5 m: the pair would touch both flanks at once
-    with pytest.raises(CaseError, match="jammed"):
+    with pytest.raises(ProblemError, match="jammed"):
         make(pair_deviation=np.full((2, 4), -1e-5), back_pair_deviation=np.full((2, 4), -1e-5))
     make(pair_deviation=np.full((2, 4), -1e-5), back_pair_deviation=np.full((2, 4), 1e-5))  # pitch-type: fine
 
@@ -53,9 +53,9 @@ def test_deviations_that_close_the_backlash_are_refused():
     ("force", np.ones(2)),
 ])
 def test_shape_mismatch(key, value):
-    with pytest.raises(CaseError) as error:
+    with pytest.raises(ProblemError) as error:
         make(**{key: value})
-    assert error.value.key == key and "shape" in error.value.allowed
+    assert error.value.quantity == key and "shape" in error.value.allowed
 
 
 @pytest.mark.parametrize("key, value", [
@@ -69,9 +69,9 @@ def test_shape_mismatch(key, value):
     ("damping_mode", "sometimes"),
 ])
 def test_bad_values(key, value):
-    with pytest.raises(CaseError) as error:
+    with pytest.raises(ProblemError) as error:
         make(**{key: value})
-    assert error.value.key == key
+    assert error.value.quantity == key
 
 
 def test_from_linear_defaults_the_back_flank_to_the_driving_flank():
@@ -83,5 +83,5 @@ def test_from_linear_defaults_the_back_flank_to_the_driving_flank():
     np.testing.assert_array_equal(problem.back_pair_stiffness, linear.pair_stiffness)
     np.testing.assert_array_equal(problem.back_pair_deviation, np.full((2, 2), 1e-6))
     np.testing.assert_array_equal(problem.damping, linear.damping)
-    with pytest.raises(CaseError, match="pair_deviation"):
+    with pytest.raises(ProblemError, match="pair_deviation"):
         BacklashMeshProblem.from_linear(linear, backlash=2e-5, pair_deviation=np.zeros(3))

@@ -19,7 +19,7 @@ import numpy as np
 from thermogear.dynamics.backlash_metrics import orbit_metrics
 from thermogear.dynamics.backlash_periodic import BacklashOrbit, _orbit, _stable, periodic_response, shoot
 from thermogear.dynamics.backlash_problem import BacklashMeshProblem
-from thermogear.errors import CaseError, ModelLimitError
+from thermogear.errors import ProblemError, ModelLimitError
 
 __all__ = ["Branch", "follow_branch"]
 
@@ -68,13 +68,13 @@ def follow_branch(problems: Sequence[BacklashMeshProblem], direction: str = "up"
     limits are always recorded); only the DTE RMS and spectrum use the sampled curve.
     """
     if direction not in ("up", "down"):
-        raise CaseError("direction", direction, "up | down", "sweep from the first problem to the last or back")
+        raise ProblemError("direction", direction, "up | down", "sweep from the first problem to the last or back")
     count = len(problems)
     if count == 0:
-        raise CaseError("problems", "empty", ">= 1 problem", "nothing to follow")
+        raise ProblemError("problems", "empty", ">= 1 problem", "nothing to follow")
     labels = np.arange(count, dtype=float) if parameter is None else np.asarray(parameter, dtype=float)
     if labels.shape != (count,):
-        raise CaseError("parameter", f"shape {labels.shape}", f"({count},)", "one label per problem")
+        raise ProblemError("parameter", f"shape {labels.shape}", f"({count},)", "one label per problem")
     options = {"max_period_count": max_period_count, "tolerance": tolerance, "max_iterations": max_iterations,
                "run_in_periods": run_in_periods, "classify_periods": classify_periods,
                "samples_per_interval": samples_per_interval}

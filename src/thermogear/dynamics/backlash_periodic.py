@@ -22,7 +22,7 @@ import numpy as np
 
 from thermogear.dynamics.backlash_kernel import integrate_periods
 from thermogear.dynamics.backlash_problem import BacklashMeshProblem
-from thermogear.errors import CaseError, ModelLimitError
+from thermogear.errors import ProblemError, ModelLimitError
 
 __all__ = ["BacklashHistory", "BacklashOrbit", "backlash_flow", "backlash_transient", "linear_initial_state",
            "periodic_response", "shoot"]
@@ -118,7 +118,7 @@ def backlash_flow(problem: BacklashMeshProblem, state: tuple[float, float], peri
 def _record(problem: BacklashMeshProblem, state: tuple[float, float], periods: int,
             samples_per_interval: int) -> BacklashHistory:
     if int(samples_per_interval) != samples_per_interval or samples_per_interval < 1:
-        raise CaseError("samples_per_interval", samples_per_interval, "integer >= 1",
+        raise ProblemError("samples_per_interval", samples_per_interval, "integer >= 1",
                         "equal sub-steps per interval at which the exact motion is sampled")
     capacity = int(periods) * problem.interval_count * (int(samples_per_interval) + 4) + 16
     while True:
@@ -148,7 +148,7 @@ def backlash_transient(problem: BacklashMeshProblem, periods: int, samples_per_i
                        initial_state: tuple[float, float] = (0.0, 0.0)) -> BacklashHistory:
     """Exact transient over ``periods`` mesh periods, from rest (x = ẋ = 0, as Luo & Li) unless told otherwise."""
     if int(periods) != periods or periods < 1:
-        raise CaseError("periods", periods, "integer >= 1", "number of mesh periods to integrate")
+        raise ProblemError("periods", periods, "integer >= 1", "number of mesh periods to integrate")
     return _record(problem, initial_state, int(periods), samples_per_interval)
 
 
@@ -252,10 +252,10 @@ def periodic_response(problem: BacklashMeshProblem, initial_state: tuple[float, 
         Equal sub-steps per interval in the returned history (switches and extrema of x are always included).
     """
     if int(max_period_count) != max_period_count or max_period_count < 1:
-        raise CaseError("max_period_count", max_period_count, "integer >= 1", "largest subharmonic order tried")
+        raise ProblemError("max_period_count", max_period_count, "integer >= 1", "largest subharmonic order tried")
     start = linear_initial_state(problem) if initial_state is None else tuple(float(a) for a in initial_state)
     if not np.all(np.isfinite(start)):
-        raise CaseError("initial_state", start, "finite (x [m], v [m/s])", "Newton needs a finite start")
+        raise ProblemError("initial_state", start, "finite (x [m], v [m/s])", "Newton needs a finite start")
     total = 0
     first = shoot(problem, start, 1, tolerance, max_iterations)
     total += first["iterations"]

@@ -30,7 +30,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from thermogear.dynamics.problem import MeshDynamicsProblem
-from thermogear.errors import CaseError
+from thermogear.errors import ProblemError
 
 __all__ = ["DAMPING_MODES", "BacklashMeshProblem"]
 
@@ -42,9 +42,9 @@ def _checked(name: str, value: object, shape: tuple[int, ...], reason: str) -> n
     if array.ndim == 1 and len(shape) == 2 and shape[0] == 1:
         array = array[None, :]
     if array.shape != shape:
-        raise CaseError(name, f"array of shape {array.shape}", f"shape {shape}", reason)
+        raise ProblemError(name, f"array of shape {array.shape}", f"shape {shape}", reason)
     if not np.all(np.isfinite(array)):
-        raise CaseError(name, f"{int(np.sum(~np.isfinite(array)))} non-finite values", "finite numbers",
+        raise ProblemError(name, f"{int(np.sum(~np.isfinite(array)))} non-finite values", "finite numbers",
                         "a NaN or infinite coefficient has no physical meaning")
     array = np.ascontiguousarray(array)
     array.setflags(write=False)
@@ -95,16 +95,16 @@ class BacklashMeshProblem:
     def __post_init__(self) -> None:
         mass = float(self.mass)
         if not np.isfinite(mass) or mass <= 0.0:
-            raise CaseError("mass", self.mass, "> 0 kg, finite", "the equivalent mass me must be positive")
+            raise ProblemError("mass", self.mass, "> 0 kg, finite", "the equivalent mass me must be positive")
         object.__setattr__(self, "mass", mass)
         nodes = np.array(self.nodes, dtype=float, copy=True)
         if nodes.ndim != 1 or nodes.size < 2 or not np.all(np.isfinite(nodes)):
-            raise CaseError("nodes", f"array of shape {nodes.shape}", "1-D, >= 2 finite times [s]",
+            raise ProblemError("nodes", f"array of shape {nodes.shape}", "1-D, >= 2 finite times [s]",
                             "the nodes bound the intervals of one mesh period")
         if nodes[0] != 0.0:
-            raise CaseError("nodes[0]", float(nodes[0]), "0", "the mesh period starts at τ = 0")
+            raise ProblemError("nodes[0]", float(nodes[0]), "0", "the mesh period starts at τ = 0")
         if np.any(np.diff(nodes) <= 0.0):
-            raise CaseError("nodes", "not strictly increasing", "strictly increasing times",
+            raise ProblemError("nodes", "not strictly increasing", "strictly increasing times",
                             "each interval must have a positive length")
         nodes.setflags(write=False)
         object.__setattr__(self, "nodes", nodes)
@@ -116,9 +116,9 @@ class BacklashMeshProblem:
         back_stiffness = _checked("back_pair_stiffness", self.back_pair_stiffness, shape, per_pair)
         for name, array in (("pair_stiffness", stiffness), ("back_pair_stiffness", back_stiffness)):
             if np.any(array < 0.0):
-                raise CaseError(name, float(array.min()), ">= 0 N/m", "0 marks a pair out of mesh")
+                raise ProblemError(name, float(array.min()), ">= 0 N/m", "0 marks a pair out of mesh")
         if not np.any(stiffness > 0.0):
-            raise CaseError("pair_stiffness", "all zero", "some pair with k > 0",
+            raise ProblemError("pair_stiffness", "all zero", "some pair with k > 0",
                             "without any tooth pair the mesh transmits no load")
         object.__setattr__(self, "pair_stiffness", stiffness)
         object.__setattr__(self, "back_pair_stiffness", back_stiffness)
@@ -127,7 +127,7 @@ class BacklashMeshProblem:
                            _checked("back_pair_deviation", self.back_pair_deviation, shape, per_pair))
         backlash = float(self.backlash)
         if not np.isfinite(backlash) or backlash <= 0.0:
-            raise CaseError("backlash", self.backlash, "> 0 m, finite",
+            raise ProblemError("backlash", self.backlash, "> 0 m, finite",
                             "zero or negative backlash is a jammed mesh: both flanks would be loaded at once")
         object.__setattr__(self, "backlash", backlash)
         # the local clearance of slot s between the driving contact (x > e_s) and the back contact (x < −j − e'_s)
@@ -135,12 +135,12 @@ class BacklashMeshProblem:
         both = (stiffness > 0.0) & (back_stiffness > 0.0)
         if np.any(both & (clearance <= 0.0)):
             worst = float(np.min(np.where(both, clearance, np.inf)))
-            raise CaseError("backlash", backlash, f"> −(e_s + e'_s) for every pair (local clearance {worst:.3g} m)",
+            raise ProblemError("backlash", backlash, f"> −(e_s + e'_s) for every pair (local clearance {worst:.3g} m)",
                             "a pair whose deviations close the backlash would touch both flanks at once (jammed); "
                             "a pitch-type error shifts the flanks together (e' = −e), thinning adds to both")
         damping = _checked("damping", self.damping, (n,), "one damping value per interval")
         if np.any(damping < 0.0):
-            raise CaseError("damping", float(damping.min()), ">= 0 N·s/m", "negative damping injects energy")
+            raise ProblemError("damping", float(damping.min()), ">= 0 N·s/m", "negative damping injects energy")
         object.__setattr__(self, "damping", damping)
         force_value = np.array(self.force, dtype=float)
         if force_value.ndim == 0:
@@ -150,16 +150,16 @@ class BacklashMeshProblem:
             force_array = _checked("force", force_value, (n,), "one load per interval")
             object.__setattr__(self, "force", force_array)
         if not np.all(np.isfinite(force_array)) or np.any(force_array <= 0.0):
-            raise CaseError("force", self.force, "finite, > 0 N", "the mesh is modelled under a positive load")
+            raise ProblemError("force", self.force, "finite, > 0 N", "the mesh is modelled under a positive load")
         force_array = np.ascontiguousarray(force_array)
         force_array.setflags(write=False)
         object.__setattr__(self, "_force_array", force_array)
         if self.damping_mode not in DAMPING_MODES:
-            raise CaseError("damping_mode", self.damping_mode, " | ".join(DAMPING_MODES),
+            raise ProblemError("damping_mode", self.damping_mode, " | ".join(DAMPING_MODES),
                             "damping acts always (default) or only in proportion to the pairs in contact")
         face_width = float(self.face_width)
         if not np.isfinite(face_width) or face_width <= 0.0:
-            raise CaseError("face_width", self.face_width, "> 0 m", "used to express loads per unit face width")
+            raise ProblemError("face_width", self.face_width, "> 0 m", "used to express loads per unit face width")
         object.__setattr__(self, "face_width", face_width)
 
     # ---------------------------------------------------------------- derived quantities
@@ -249,7 +249,7 @@ class BacklashMeshProblem:
                    "backlash", "damping", "force", "damping_mode", "face_width")}
         unknown = set(changes) - set(values)
         if unknown:
-            raise CaseError("with_changes", sorted(unknown), ", ".join(values), "unknown field")
+            raise ProblemError("with_changes", sorted(unknown), ", ".join(values), "unknown field")
         values.update(changes)
         return BacklashMeshProblem(**values)
 
@@ -270,7 +270,7 @@ class BacklashMeshProblem:
         try:
             deviation = np.broadcast_to(np.asarray(pair_deviation, dtype=float), shape)
         except ValueError:
-            raise CaseError("pair_deviation", f"shape {np.shape(pair_deviation)}", f"broadcastable to {shape}",
+            raise ProblemError("pair_deviation", f"shape {np.shape(pair_deviation)}", f"broadcastable to {shape}",
                             "one deviation per tooth-pair slot and interval") from None
         back_k = pair_stiffness if back_pair_stiffness is None else back_pair_stiffness
         back_e = deviation if back_pair_deviation is None else back_pair_deviation

@@ -13,7 +13,7 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 from thermogear.dynamics.backlash_problem import BacklashMeshProblem
-from thermogear.errors import CaseError, ModelLimitError
+from thermogear.errors import ProblemError, ModelLimitError
 
 __all__ = ["reference_backlash_solve_ivp"]
 
@@ -29,7 +29,7 @@ def reference_backlash_solve_ivp(problem: BacklashMeshProblem, periods: int, ini
                                  ) -> dict[str, np.ndarray]:
     """Transient over ``periods`` mesh periods; returns time [s], x [m], v [m/s] (grid + switches) and switch times."""
     if int(periods) != periods or periods < 1:
-        raise CaseError("periods", periods, "integer >= 1", "number of mesh periods to integrate")
+        raise ProblemError("periods", periods, "integer >= 1", "number of mesh periods to integrate")
     mass, backlash = problem.mass, problem.backlash
     atol = rtol * np.array([problem.displacement_scale, problem.velocity_scale])
     present_count = np.maximum(np.sum(problem.pair_stiffness > 0.0, axis=0), 1)
