@@ -39,10 +39,12 @@ BRANCH_VARIABLES: dict[str, tuple[str, str]] = {
     "period_count": ("1", "mesh periods after which the response repeats (1 periodic, >1 subharmonic)"),
     "converged": ("1", "1 where a stable periodic or subharmonic orbit was found"),
     "floquet_multiplier_max": ("1", "largest Floquet multiplier modulus of the orbit"),
+    "residual": ("1", "scaled residual |phi_NT(y0) - y0| of the orbit's Newton iteration (large: not converged)"),
 }
 _FROM_BRANCH = {"kv": "kv", "max_pair_load": "max_pair_force", "max_system_load_ratio": "max_mesh_force",
                 "dte_mean": "dte_mean", "dte_rms": "dte_rms", "dte_peak_to_peak": "dte_peak_to_peak",
-                "contact_loss_fraction": "contact_loss_fraction", "floquet_multiplier_max": "largest_multiplier"}
+                "contact_loss_fraction": "contact_loss_fraction", "floquet_multiplier_max": "largest_multiplier",
+                "residual": "residual"}
 
 
 def _directions(direction: str) -> tuple[str, ...]:
