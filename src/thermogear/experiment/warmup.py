@@ -178,8 +178,16 @@ class WarmupResult:
 
 def state_case(case, temperature_c: float, speed_rpm: float | None = None):
     """The case at one warm-up state: uniform bulk and oil temperature ``temperature_c`` (and the speed)."""
-    changes: dict[str, Any] = {"temperature.model": "uniform", "temperature.bulk_c": float(temperature_c),
-                               "lubricant.operating_temperature_c": float(temperature_c)}
+    # the whole [temperature] section is replaced: a uniform field takes no flank table, base or bore temperatures
+    section = {"model": "uniform", "bulk_c": float(temperature_c), "reference_c": case.temperature.reference_c}
+    changes: dict[str, Any] = {"temperature": section, "lubricant.operating_temperature_c": float(temperature_c)}
+    if case.thermal.model == "luo2020" and case.thermal.x_te_source == "calibrated":
+        # the paper's X_te is calibrated once, at the case's own temperatures, and held through the warm-up: a
+        # state near the assembly temperature has no thermal interference to calibrate against
+        from thermogear.thermal.calibration import resolve_x_te  # noqa: PLC0415
+
+        changes.update({"thermal.x_te": resolve_x_te(case)[0], "thermal.x_te_source": "given",
+                        "thermal.calibration_drop_percent": None})
     if speed_rpm is not None:
         changes["operating.speed_rpm"] = float(speed_rpm)
     return case.with_changes(**changes)
