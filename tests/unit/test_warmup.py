@@ -207,3 +207,16 @@ def test_warmup_command_json_and_errors():
     assert frequencies == sorted(frequencies, reverse=True)
     completed = run("fzg_type_c")
     assert completed.returncode == 2 and "exactly one of" in " ".join(completed.stderr.split())
+
+
+def test_a_warm_up_state_of_the_papers_case_keeps_its_calibrated_x_te():
+    # luo2019 calibrates X_te at its own temperatures; a warm-up state at the assembly temperature (no thermal
+    # interference) keeps that X_te instead of failing to calibrate, and replaces the whole temperature section
+    from thermogear.case import load_case
+    from thermogear.experiment.warmup import state_case
+    from thermogear.thermal.calibration import resolve_x_te
+
+    case = load_case("luo2019")
+    cold = state_case(case, 20.0)
+    assert cold.temperature.model == "uniform" and cold.temperature.flank_c is None
+    assert cold.thermal.x_te_source == "given" and cold.thermal.x_te == resolve_x_te(case)[0]
