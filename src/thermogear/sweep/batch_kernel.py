@@ -238,11 +238,12 @@ def _walk(mass, nodes, stiffness, damping, factor, force, pair_stiffness, x0, v0
           work, out):
     """Metrics of the exact periodic orbits from (x0, v0) of a tile of points into ``out`` (count, METRIC_COUNT);
     see ``thermogear.dynamics.metrics`` for the definitions (trapezoidal mean and RMS, maxima over the samples
-    and the left limits at the nodes). Without the damping force the extreme loads of an interval are k·max x and
-    k·min x (k, k_p ≥ 0), so only the extremes of x per interval are tracked."""
+    and the left limits at the nodes; loads k·x + c·ẋ with the damping force, else k·x). The general walk: the
+    loads at every sample (:func:`_walk_displacement` is the faster one without the damping force)."""
     count = mass.size
     n = stiffness.size
     slots = pair_stiffness.shape[0]
+    weight = 1.0 if damping_force else 0.0
     p00, p01, p10, p11, x, v, xs, vs = work[0], work[1], work[2], work[3], work[4], work[5], work[6], work[7]
     top, bottom, fastest, in1, in2, first, second, eq = work[8], work[9], work[10], work[11], work[12], \
         work[13], work[14], work[15]
@@ -265,17 +266,15 @@ def _walk(mass, nodes, stiffness, damping, factor, force, pair_stiffness, x0, v0
             in1[j] = 0.5 * shifted
             in2[j] = 0.5 * shifted * shifted
         for sub in range(samples):
-            if damping_force:  # loads at the sample of this sub-step (right-continuous)
+            for j in range(count):  # loads at the sample of this sub-step (right-continuous)
+                load = k * x[j] + weight * damping[i] * factor[j] * v[j]
+                max_system[j] = max(max_system[j], load)
+                min_system[j] = min(min_system[j], load)
+            for s in range(slots):
+                pk = pair_stiffness[s, i]
+                share = pk / k
                 for j in range(count):
-                    c = damping[i] * factor[j]
-                    load = k * x[j] + c * v[j]
-                    max_system[j] = max(max_system[j], load)
-                    min_system[j] = min(min_system[j], load)
-                for s in range(slots):
-                    pk = pair_stiffness[s, i]
-                    share = pk / k
-                    for j in range(count):
-                        max_pair[j] = max(max_pair[j], pk * x[j] + share * (damping[i] * factor[j]) * v[j])
+                    max_pair[j] = max(max_pair[j], pk * x[j] + weight * share * (damping[i] * factor[j]) * v[j])
             last = sub == samples - 1
             for j in range(count):
                 dx = x[j] - eq[j]
@@ -296,35 +295,17 @@ def _walk(mass, nodes, stiffness, damping, factor, force, pair_stiffness, x0, v0
             max_x[j] = max(max_x[j], top[j])
             min_x[j] = min(min_x[j], bottom[j])
             max_v[j] = max(max_v[j], fastest[j])
-        if damping_force:
-            if i > 0:  # left limit at node i: coefficients of interval i − 1
-                kp = stiffness[i - 1]
-                for j in range(count):
-                    load = kp * xs[j] + damping[i - 1] * factor[j] * vs[j]
-                    max_system[j] = max(max_system[j], load)
-                    min_system[j] = min(min_system[j], load)
-                for s in range(slots):
-                    pk = pair_stiffness[s, i - 1]
-                    share = pk / kp
-                    for j in range(count):
-                        max_pair[j] = max(max_pair[j], pk * xs[j] + share * (damping[i - 1] * factor[j]) * vs[j])
-        else:
+        if i > 0:  # left limit at node i: coefficients of interval i − 1
+            kp = stiffness[i - 1]
             for j in range(count):
-                max_system[j] = max(max_system[j], k * top[j])
-                min_system[j] = min(min_system[j], k * bottom[j])
+                load = kp * xs[j] + weight * damping[i - 1] * factor[j] * vs[j]
+                max_system[j] = max(max_system[j], load)
+                min_system[j] = min(min_system[j], load)
             for s in range(slots):
-                pk = pair_stiffness[s, i]
+                pk = pair_stiffness[s, i - 1]
+                share = pk / kp
                 for j in range(count):
-                    max_pair[j] = max(max_pair[j], pk * top[j])
-            if i > 0:
-                kp = stiffness[i - 1]
-                for j in range(count):
-                    max_system[j] = max(max_system[j], kp * xs[j])
-                    min_system[j] = min(min_system[j], kp * xs[j])
-                for s in range(slots):
-                    pk = pair_stiffness[s, i - 1]
-                    for j in range(count):
-                        max_pair[j] = max(max_pair[j], pk * xs[j])
+                    max_pair[j] = max(max_pair[j], pk * xs[j] + weight * share * (damping[i - 1] * factor[j]) * vs[j])
     # the last sample, τ = T, belongs to the last interval
     k = stiffness[n - 1]
     period = nodes[n] - nodes[0]
@@ -370,15 +351,19 @@ def periodic_metrics_batch(mass: np.ndarray, nodes: np.ndarray, stiffness: np.nd
             pair_high[i] = max(pair_high[i], pair_stiffness[s, i])
             pair_low[i] = min(pair_low[i], pair_stiffness[s, i])
     moduli = np.empty((total, 2))
+    full_work = np.empty((22, TILE))  # per-point state of a tile
+    full_stored = np.empty((n, 4, TILE))  # Φ(step) of every interval of a tile, for the walk
     out = np.full((total, METRIC_COUNT), np.nan)
     for start in range(0, total, TILE):
         stop = min(start + TILE, total)
         count = stop - start
-        work = np.empty((22, count))
+        if count == TILE:  # full tiles share one set of buffers (allocated once: large blocks cost page faults)
+            work, stored = full_work, full_stored
+        else:
+            work, stored = np.empty((22, count)), np.empty((n, 4, count))
         tile_mass = np.ascontiguousarray(mass[start:stop])
         tile_factor = np.ascontiguousarray(factor[start:stop])
         tile_force = np.ascontiguousarray(force[start:stop])
-        stored = np.empty((n, 4, count))  # Φ(step) of every interval, for the walk
         damped = _monodromy(tile_mass, nodes, stiffness, damping, tile_factor, tile_force, samples, work, stored)
         x0 = np.zeros(count)
         v0 = np.zeros(count)  # unstable points are walked harmlessly from 0 and reported as NaN

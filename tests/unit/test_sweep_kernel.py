@@ -1,0 +1,75 @@
+"""The sweep's fused kernel: its series transition against the closed form, and its other branches (the damping
+force in the loads, a sample count that is not a power of two, speeds where the series does not hold) against one
+Simulation per point."""
+
+from __future__ import annotations
+
+import warnings
+
+import numpy as np
+import pytest
+
+from thermogear.case import load_case
+from thermogear.dynamics.periodic import _transition
+from thermogear.sweep.batch import MODEL_VARIABLES, POINT_VARIABLES, evaluate_block
+from thermogear.sweep.batch_kernel import _SERIES_DECAY, _SERIES_U, _step_transitions
+from thermogear.sweep.study import Study
+
+
+def test_series_transition_equals_the_closed_form_to_rounding():
+    # me = 1, h = 1: u = σ² − k spans the series range on both sides (under- and over-damped), σh up to its limit
+    mass = np.ones(1)
+    rows = []
+    for sigma in np.linspace(0.0, _SERIES_DECAY, 9):
+        for u in np.linspace(-_SERIES_U, _SERIES_U, 41):
+            stiffness = sigma * sigma - u
+            if stiffness <= 0.0:
+                continue
+            out = [np.empty(1) for _ in range(4)]
+            _step_transitions(stiffness, 2.0 * sigma, mass, np.ones(1), 1.0, *out)
+            rows.append((np.array([o[0] for o in out]), np.array(_transition(stiffness, 2.0 * sigma, 1.0, 1.0))))
+    assert len(rows) > 150  # k > 0 leaves out part of the over-damped side
+    for series, closed in rows:
+        # both are within a few ulp of expm(A h) (entries of order 1: |u|, σh <= 1/4): 1e-14 absolute is ~50 ulp
+        assert np.all(np.abs(series - closed) <= 1e-14), (series, closed)
+
+
+def test_outside_the_series_range_the_closed_form_is_taken():
+    mass = np.ones(3)
+    factor = np.array([1.0, 1.0, 1.0])
+    out = [np.empty(3) for _ in range(4)]
+    _step_transitions(4.0, 0.1, mass, factor, 1.0, *out)  # u = 0.0025 − 4: far outside, cos/sin of 2 rad
+    expected = _transition(4.0, 0.1, 1.0, 1.0)
+    for entry, value in zip(out, expected):
+        assert np.all(entry == value)  # the same function, bit for bit
+
+
+def _compare(study):
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        fast, _ = evaluate_block(study, study.blocks()[0], "batch")
+        slow, _ = evaluate_block(study, study.blocks()[0], "simulation")
+    for variable in (*MODEL_VARIABLES, *POINT_VARIABLES):
+        a, b = np.asarray(fast[variable], float), np.asarray(slow[variable], float)
+        assert np.array_equal(np.isfinite(a), np.isfinite(b)), variable
+        finite = np.isfinite(b)
+        # only rounding separates the paths (measured below 1e-13): 1e-9 relative is the issue's bound
+        assert np.all(np.abs(a[finite] - b[finite]) <= 1e-9 * np.maximum(np.abs(b[finite]), 1e-300)), variable
+    return fast
+
+
+@pytest.mark.parametrize("changes", [{"dynamics.include_damping_force": True},
+                                     {"dynamics.samples_per_interval": 3},
+                                     {"dynamics.include_damping_force": True, "dynamics.samples_per_interval": 5}])
+def test_other_kernel_branches_equal_one_simulation_per_point(changes):
+    case = load_case("luo2019").with_changes(**changes)
+    study = Study.define(case, ["torque_nm=250,400", "speed_rpm=1500,4000,9000"], model="both", chunk_points=64)
+    _compare(study)
+
+
+def test_very_low_and_high_speeds_equal_one_simulation_per_point():
+    # at 20 rpm a sub-step spans a large part of a natural period (|u| > 1/4: the closed form), at 20 000 rpm a
+    # tiny one (the series)
+    study = Study.define(load_case("luo2019"), ["speed_rpm=20,300,20000"], model="both", chunk_points=64)
+    fast = _compare(study)
+    assert np.all(fast["stable"] == 1), "unstable points would leave the comparison to NaN"
