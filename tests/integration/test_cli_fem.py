@@ -51,7 +51,7 @@ def test_fem_temperature_and_x_te_drive_the_chain():
 
     case = load_case("luo2019").with_changes(**{
         "temperature": {"model": "fem", "reference_c": 20.0},
-        "thermal": {"x_te_source": "fem", "load_basis": "external"}})
+        "thermal": {"model": "luo2020", "x_te_source": "fem", "load_basis": "external"}})
     points = case.gear_pair.path_points
     result = thermal_stiffness(case, np.array([points[name] for name in "ACE"]))
     analysis = cached_analysis(case)

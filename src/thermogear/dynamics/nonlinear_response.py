@@ -224,6 +224,7 @@ class NonlinearTransient:
     history: Any  # BacklashHistory
     label: str = ""
     method: str = "nonlinear transient from rest"
+    flags: tuple[str, ...] = field(default=())  # checks of the model that produced it, in words
 
     @property
     def time(self) -> np.ndarray:
@@ -244,6 +245,15 @@ class NonlinearTransient:
                 "contact_loss_fraction": self.history.free_flight_time / span,
                 "back_side_contact": bool(self.history.back_contact_time > 0.0),
                 "max_velocity": float(np.max(np.abs(self.history.velocity)))}
+
+    def to_xarray(self):
+        import xarray as xr  # noqa: PLC0415
+
+        return xr.Dataset(
+            {"displacement": ("time", self.displacement, {"units": "m", "long_name": "dynamic transmission error"}),
+             "velocity": ("time", self.velocity, {"units": "m/s"})},
+            coords={"time": ("time", self.time, {"units": "s"})},
+            attrs={"model": self.label, "method": self.method, "metrics": json.dumps(json_ready(self.metrics))})
 
     def plot_phase(self, other=None, ax: Any = None, periods: int | None = None):
         """x–ẋ trajectory from rest [μm, m/s]."""

@@ -180,6 +180,18 @@ class MeshModel:
             return self.pair_stiffness_at(roll, normal_load)
         return np.asarray(pair_stiffness_at(self.gear_pair, self.case.material, np.asarray(roll, float)), float)
 
+    def flank_gamma(self, roll) -> np.ndarray:
+        """Contact position Γ on the flanks as built (where the temperature field is given) of the contact at roll
+        distances [m] of the pair as it meshes: the same as its Γ except for the thermo-elastic model, whose hot
+        pinion has grown by its strain (the material point at pinion radius r is at r/(1 + ε) cold)."""
+        roll = np.asarray(roll, dtype=float)
+        if not self.thermoelastic:
+            return np.asarray(self.gear_pair.gamma(roll), dtype=float)
+        hot, cold = self.gear_pair, self.case.gear_pair
+        radius = np.hypot(hot.pinion.base_radius, roll) / (1.0 + self.thermoelastic_mesh.strains[0])
+        cold_roll = np.sqrt(np.maximum(radius**2 - cold.pinion.base_radius**2, 0.0))
+        return np.asarray(cold.gamma(cold_roll), dtype=float)
+
     def friction_temperature_c(self, gamma) -> np.ndarray:
         """Oil temperature of the friction formula [°C]: the lubricant's reference temperature (elastic) or the
         mean of the pinion and wheel flank temperatures at the contact (thermal)."""
@@ -216,7 +228,7 @@ class MeshModel:
     def _friction(self, roll, share, stiffness, speed_rpm: float, normal_load: float) -> PairDamping:
         pair, case = self.gear_pair, self.case
         gamma = np.asarray(pair.gamma(roll), dtype=float)
-        temperature = self.friction_temperature_c(gamma)
+        temperature = self.friction_temperature_c(self.flank_gamma(roll))
         viscosity = np.asarray(self.lubricant.dynamic_viscosity(temperature), dtype=float)
         rolling_1, rolling_2 = pair.rolling_speeds(roll, speed_rpm)
         factor = case.damping.lubricant_factor
