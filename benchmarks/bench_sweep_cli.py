@@ -1,0 +1,134 @@
+"""Benchmark: parameter-study throughput a user gets from the command line (issue #12, item 3).
+
+Run: python benchmarks/bench_sweep_cli.py [--quick] [--million]
+Prints a table and writes benchmarks/results/bench_sweep_cli.json.
+
+Every figure runs the real command line in a subprocess,
+
+    thermogear sweep luo2019 --vary torque_nm=200:400:T --vary speed_rpm=1000:10000:S --out X.zarr --json
+
+with the store written, the default ``--model both`` (a grid point is both models) and the default chunking, and
+takes the command's own ``seconds`` (store creation, computing, writing, opening the result) beside the wall
+time of the process (interpreter start-up and imports included). Peak resident memory comes from
+``/usr/bin/time -v`` where it exists (else the children's ``ru_maxrss``); for Dask runs it is the driver's only.
+
+Figures (targets of the issue in brackets):
+
+1. serial (``--scheduler serial``) on a 10⁵-point speed × torque grid [>= 10 000 points/s on one core];
+2. a local Dask cluster of two workers (``--workers 2``) on the same grid vs 1. [>= 1.6×];
+3. the fast path (1.) vs one Simulation per point (``--method simulation``, serial, on a small grid of the same
+   study: it runs at ~10² points/s, so 10⁵ points would take a quarter of an hour) [>= 10×];
+4. peak memory at 10⁴, 10⁵ (and 10⁶ points with ``--million``, a few minutes) [flat].
+
+``--quick`` runs a 2·10⁴-point grid instead of 10⁵ (a smoke test of the script, not the issue's figures).
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import platform
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+RESULTS = HERE / "results"
+TIME = Path("/usr/bin/time")
+
+
+def run_cli(out: Path, torques: int, speeds: int, *extra: str) -> dict:
+    """Run one study through the command line; returns its JSON summary plus wall time and peak memory."""
+    command = [sys.executable, "-m", "thermogear", "sweep", "luo2019", "--vary", f"torque_nm=200:400:{torques}",
+               "--vary", f"speed_rpm=1000:10000:{speeds}", "--out", str(out), "--json", *extra]
+    timed = [str(TIME), "-v", *command] if TIME.exists() else command
+    start = time.perf_counter()
+    completed = subprocess.run(timed, capture_output=True, text=True, cwd=HERE.parent)
+    wall = time.perf_counter() - start
+    if completed.returncode != 0:
+        raise RuntimeError(f"{' '.join(command)} failed ({completed.returncode}):\n{completed.stderr[-3000:]}")
+    summary = json.loads(completed.stdout[completed.stdout.index("{"):])
+    match = re.search(r"Maximum resident set size \(kbytes\): (\d+)", completed.stderr)
+    if match:
+        peak_mb = int(match.group(1)) / 1024.0
+    else:
+        import resource
+
+        peak_mb = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss / 1024.0  # max over children so far
+    shutil.rmtree(out, ignore_errors=True)
+    points = int(summary["points"])
+    return {"points": points, "seconds": float(summary["seconds"]), "wall_s": wall, "peak_rss_mb": peak_mb,
+            "points_per_second": points / float(summary["seconds"]), "chunks": int(summary["chunks"]),
+            "valid_points": summary.get("valid_points"), "arguments": " ".join(extra)}
+
+
+def main(quick: bool = False, million: bool = False) -> dict:
+    folder = Path(tempfile.mkdtemp(prefix="bench_sweep_cli_"))
+    torques = 20 if quick else 100
+    runs: dict[str, dict] = {}
+    try:
+        run_cli(folder / "warm.zarr", 2, 10, "--scheduler", "serial")  # numba's cache and the OS file cache
+        runs["serial_1e4"] = run_cli(folder / "a.zarr", 10, 1000, "--scheduler", "serial")
+        runs["serial_main"] = run_cli(folder / "b.zarr", torques, 1000, "--scheduler", "serial")
+        runs["workers_2_main"] = run_cli(folder / "c.zarr", torques, 1000, "--workers", "2")
+        runs["simulation_small"] = run_cli(folder / "d.zarr", 2, 20, "--scheduler", "serial", "--method",
+                                           "simulation")
+        runs["batch_small"] = run_cli(folder / "e.zarr", 2, 20, "--scheduler", "serial")
+        if million:
+            runs["serial_1e6"] = run_cli(folder / "f.zarr", 1000, 1000, "--scheduler", "serial")
+    finally:
+        shutil.rmtree(folder, ignore_errors=True)
+    serial, workers = runs["serial_main"], runs["workers_2_main"]
+    simulation = runs["simulation_small"]
+    size = serial["points"]
+    figures = [
+        {"name": f"CLI serial, {size:,} points (speed x torque, both models)", "value": serial["points_per_second"],
+         "baseline": 10_000.0, "ratio": serial["points_per_second"] / 10_000.0, "unit": "points/s (target 10 000)"},
+        {"name": f"CLI local Dask, 2 workers vs serial, {size:,} points", "value": workers["points_per_second"],
+         "baseline": serial["points_per_second"], "ratio": workers["points_per_second"] / serial["points_per_second"],
+         "unit": "points/s (target ratio 1.6)"},
+        {"name": "CLI fast path (serial, above) vs --method simulation (serial, 40 points)",
+         "value": serial["points_per_second"], "baseline": simulation["points_per_second"],
+         "ratio": serial["points_per_second"] / simulation["points_per_second"], "unit": "points/s (target ratio 10)"},
+        {"name": "CLI fast path vs --method simulation on the same 40 points (fixed costs included)",
+         "value": runs["batch_small"]["points_per_second"], "baseline": simulation["points_per_second"],
+         "ratio": runs["batch_small"]["points_per_second"] / simulation["points_per_second"], "unit": "points/s"},
+        {"name": f"CLI serial peak memory, {size:,} vs 10,000 points", "value": serial["peak_rss_mb"],
+         "baseline": runs["serial_1e4"]["peak_rss_mb"],
+         "ratio": serial["peak_rss_mb"] / runs["serial_1e4"]["peak_rss_mb"], "unit": "MB"},
+    ]
+    if million:
+        big = runs["serial_1e6"]
+        figures.append({"name": f"CLI serial peak memory, 1,000,000 vs {size:,} points", "value": big["peak_rss_mb"],
+                        "baseline": serial["peak_rss_mb"], "ratio": big["peak_rss_mb"] / serial["peak_rss_mb"],
+                        "unit": "MB"})
+    result = {
+        "benchmark": "bench_sweep_cli",
+        "case": "luo2019, torque 200-400 N m x speed 1000-10000 rpm, both models, 1024 intervals per mesh period",
+        "measured": "the command's own JSON 'seconds' (store written); wall_s adds interpreter start-up",
+        "figures": figures,
+        "runs": runs,
+        "cores": os.cpu_count(),
+        "load_average_at_end": os.getloadavg() if hasattr(os, "getloadavg") else None,
+        "quick": quick,
+        "python": platform.python_version(),
+        "machine": platform.machine(),
+    }
+    RESULTS.mkdir(parents=True, exist_ok=True)
+    (RESULTS / "bench_sweep_cli.json").write_text(json.dumps(result, indent=2) + "\n", encoding="utf-8")
+    print(f"{'figure':78s} {'value':>10s} {'baseline':>10s} {'ratio':>7s}")
+    for figure in figures:
+        print(f"{figure['name'][:78]:78s} {figure['value']:10.1f} {figure['baseline']:10.1f} "
+              f"{figure['ratio']:7.2f}  {figure['unit']}")
+    for name, run in runs.items():
+        print(f"  {name:18s} {run['points']:>9,} points {run['seconds']:7.2f} s (wall {run['wall_s']:6.2f} s) "
+              f"{run['points_per_second']:9.0f} points/s, peak {run['peak_rss_mb']:6.0f} MB {run['arguments']}")
+    return result
+
+
+if __name__ == "__main__":
+    main(quick="--quick" in sys.argv[1:], million="--million" in sys.argv[1:])
