@@ -69,6 +69,13 @@ class OutputFolder:
 
     def __enter__(self) -> "OutputFolder":
         self.check()
+        # the handlers go in before the partial folder exists: a signal between the two would otherwise end the
+        # process with its default action and leave the folder behind
+        for signum in _SIGNALS:
+            try:
+                self._previous_handlers[signum] = signal.signal(signum, self._on_signal)
+            except ValueError:  # not the main thread: the signal keeps its handler
+                pass
         try:
             self.target.parent.mkdir(parents=True, exist_ok=True)
             self.remove_stale_partials()
@@ -77,17 +84,12 @@ class OutputFolder:
             os.umask(umask)
             os.chmod(self.path, 0o777 & ~umask)  # mkdtemp makes it private; the report folder is an ordinary one
             write_marker(self.path, "report")
-        except OSError as error:
-            if self.path is not None:
-                shutil.rmtree(self.path, ignore_errors=True)
-                self.path = None
-            raise CaseError(self.option, str(self.target), "a folder thermogear can create and write",
-                            f"cannot write there: {error.strerror or error}") from None
-        for signum in _SIGNALS:
-            try:
-                self._previous_handlers[signum] = signal.signal(signum, self._on_signal)
-            except ValueError:  # not the main thread: the signal keeps its handler
-                pass
+        except BaseException as error:  # an OSError, or a signal while the folder is being made
+            self.__exit__(type(error), error, None)
+            if isinstance(error, OSError):
+                raise CaseError(self.option, str(self.target), "a folder thermogear can create and write",
+                                f"cannot write there: {error.strerror or error}") from None
+            raise
         return self
 
     def remove_stale_partials(self) -> list[Path]:
