@@ -47,7 +47,8 @@ def compute_and_write_block(study, block, method: str, path: str) -> list[str]:
 
 
 class StudyRun:
-    """What a finished :func:`run_study` returns: the dataset, the warnings, and how much was computed."""
+    """What a finished :func:`run_study` returns: the dataset (read from the store when used, so a study of 10⁶
+    points is not held in memory), the warnings, and how much was computed."""
 
     def __init__(self, dataset, messages: list[str], computed: int, skipped: int, path: Path) -> None:
         self.dataset = dataset
