@@ -61,16 +61,12 @@ def _stage_times(case, repeat: int) -> dict[str, float]:
     from thermogear.simulation import Simulation
 
     stages: dict[str, list[float]] = {name: [] for name in
-                                      ("mesh cycle grid", "pair stiffness", "damping", "problem",
+                                      ("mesh state (grid, pair stiffness, damping)", "problem",
                                        "periodic orbit (64 samples/interval)", "metrics")}
     for _ in range(repeat):
         simulation = Simulation(case, "thermal")
         marks = [time.perf_counter()]
-        _ = simulation.grid
-        marks.append(time.perf_counter())
-        _ = simulation.pair_stiffness
-        marks.append(time.perf_counter())
-        _ = simulation.mesh_damping
+        _ = simulation.state
         marks.append(time.perf_counter())
         problem = simulation.problem
         marks.append(time.perf_counter())
@@ -100,6 +96,7 @@ def main(quick: bool = False) -> dict:
                                      transient_python)
     from thermogear.dynamics.periodic import periodic_initial_state
     from thermogear.simulation import Simulation
+    from thermogear.mesh.model import MeshModel
     from thermogear.sweep.batch import evaluate_speeds, group_tables
 
     case = load_case("luo2019")
@@ -150,12 +147,12 @@ def main(quick: bool = False) -> dict:
     kv_fine = whole_point().metrics["kv"]
     kv_coarse = whole_point_coarse().metrics["kv"]
     profile_text = _profile(whole_point)
-    tables = group_tables(case, "thermal")
+    tables = group_tables(MeshModel(case, "thermal"))
     speeds = np.linspace(500.0, 12000.0, 200 if quick else 2000)
     evaluate_speeds(tables, speeds[:4])
     batch = _times(lambda: evaluate_speeds(tables, speeds), 3)
     batch_ms = float(np.min(batch)) / speeds.size * 1e3
-    tables_ms = float(np.median(_times(lambda: group_tables(case, "thermal"), 5 if quick else 10))) * 1e3
+    tables_ms = float(np.median(_times(lambda: group_tables(MeshModel(case, "thermal")), 5 if quick else 10))) * 1e3
     figures.append({"name": "whole operating point (Simulation → metrics) vs sweep fast path (ratio: times slower)",
                     "value": whole_ms, "baseline": batch_ms, "unit": "ms per point",
                     "ratio": whole_ms / batch_ms})
