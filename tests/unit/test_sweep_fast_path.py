@@ -69,3 +69,14 @@ def test_an_axis_that_changes_nothing_is_named(luo):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # the paper's 30 °C reference oil is below the oil's fitted range
         assert inert_parameters(study) == ["oil_temperature_c"]
+
+
+def test_the_sweep_command_warns_about_an_inert_axis(tmp_path):
+    import subprocess
+    import sys
+
+    result = subprocess.run([sys.executable, "-m", "thermogear", "sweep", "luo2019", "--vary", "oil_temperature_c=40,70",
+                             "--vary", "speed_rpm=1000,2000", "--scheduler", "serial", "--out",
+                             str(tmp_path / "s.zarr"), "--json"], capture_output=True, text=True, timeout=300)
+    assert result.returncode == 0, result.stderr
+    assert "warning: sweep axis 'oil_temperature_c' changes nothing" in result.stderr

@@ -66,6 +66,7 @@ def sweep(
     if direction is not None and direction not in ("up", "down", "both"):
         raise CaseError("--direction", direction, "up | down | both",
                         "a branch is followed from the lowest speed up, from the highest down, or both")
+    _warn_inert_axes(study)
     if loaded.dynamics.mesh == "nonlinear" and method == "batch":
         from thermogear.cli.sweep_branches import run_branch_sweep
 
@@ -114,6 +115,21 @@ def sweep(
         print_json(summary)
         return
     print_sweep_summary(summary, console, error_console)
+
+
+def _warn_inert_axes(study) -> None:
+    """Say, before computing, which swept parameters change nothing either model sees (identical columns)."""
+    import warnings as _warnings
+
+    from thermogear.sweep.inert import inert_parameters
+
+    with _warnings.catch_warnings():
+        _warnings.simplefilter("ignore")  # the model's own warnings come with the study's results
+        inert = inert_parameters(study)
+    for name in inert:
+        print_warning(f"sweep axis '{name}' changes nothing that either model sees for this case (every value gives "
+                      "the same mesh stiffness, damping, deviations, load and mass): its columns will be identical",
+                      error_console)
 
 
 def _progress_bar(total: int, completed: int):
