@@ -29,6 +29,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from thermogear.dynamics.mesh_period import MeshPeriod
 from thermogear.dynamics.problem import MeshDynamicsProblem
 from thermogear.errors import ProblemError
 
@@ -52,7 +53,7 @@ def _checked(name: str, value: object, shape: tuple[int, ...], reason: str) -> n
 
 
 @dataclass(frozen=True)
-class BacklashMeshProblem:
+class BacklashMeshProblem(MeshPeriod):
     """Torsional mesh model with contact loss and back-side contact over one mesh period.
 
     Parameters
@@ -169,49 +170,14 @@ class BacklashMeshProblem:
         return int(self.pair_stiffness.shape[0])
 
     @property
-    def interval_count(self) -> int:
-        """Number of intervals n."""
-        return int(self.nodes.size - 1)
-
-    @property
-    def durations(self) -> np.ndarray:
-        """(n,) interval lengths [s]."""
-        return np.diff(self.nodes)
-
-    @property
-    def period(self) -> float:
-        """Mesh period T [s]."""
-        return float(self.nodes[-1])
-
-    @property
-    def force_per_interval(self) -> np.ndarray:
-        """(n,) static load w on each interval [N]."""
-        return self._force_array
-
-    @property
     def static_load(self) -> float:
         """Time-mean static load w0 [N] (the denominator of Kv, as in the linear metrics)."""
-        return float(np.dot(self._force_array, self.durations) / self.period)
+        return self.time_mean(self._force_array)
 
     @property
     def mesh_stiffness(self) -> np.ndarray:
         """(n,) driving-flank stiffness with every present pair in contact, Σ_s k_s [N/m]."""
         return self.pair_stiffness.sum(axis=0)
-
-    @property
-    def mean_stiffness(self) -> float:
-        """Time-mean of Σ_s k_s [N/m]."""
-        return float(np.dot(self.mesh_stiffness, self.durations) / self.period)
-
-    @property
-    def natural_frequency(self) -> float:
-        """f_n = sqrt(mean Σk / me)/2π [Hz]."""
-        return float(np.sqrt(self.mean_stiffness / self.mass) / (2.0 * np.pi))
-
-    @property
-    def frequency_ratio(self) -> float:
-        """Mesh frequency over natural frequency λ = (1/T)/f_n [-]."""
-        return 1.0 / self.period / self.natural_frequency
 
     @property
     def displacement_scale(self) -> float:

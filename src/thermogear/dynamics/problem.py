@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from thermogear.dynamics.mesh_period import MeshPeriod
 from thermogear.errors import ProblemError
 
 __all__ = ["MeshDynamicsProblem", "region_name"]
@@ -38,7 +39,7 @@ def _as_float_array(name: str, value: object, shape: tuple[int, ...]) -> np.ndar
 
 
 @dataclass(frozen=True)
-class MeshDynamicsProblem:
+class MeshDynamicsProblem(MeshPeriod):
     """Linear time-periodic torsional model of a gear mesh over one mesh period (Luo & Li Eqs. 5–6).
 
     Parameters
@@ -167,29 +168,9 @@ class MeshDynamicsProblem:
 
     # ---------------------------------------------------------------- derived quantities
     @property
-    def interval_count(self) -> int:
-        """Number of intervals n."""
-        return int(self.nodes.size - 1)
-
-    @property
-    def durations(self) -> np.ndarray:
-        """(n,) interval lengths [s]."""
-        return np.diff(self.nodes)
-
-    @property
-    def period(self) -> float:
-        """Mesh period T [s]."""
-        return float(self.nodes[-1])
-
-    @property
-    def mesh_frequency(self) -> float:
-        """Mesh frequency f_m = 1/T [Hz]."""
-        return 1.0 / self.period
-
-    @property
-    def force_per_interval(self) -> np.ndarray:
-        """(n,) static load w on each interval [N]."""
-        return self._force_array
+    def mesh_stiffness(self) -> np.ndarray:
+        """(n,) mesh stiffness k on each interval [N/m] (the ``stiffness`` field)."""
+        return self.stiffness
 
     @property
     def pair_offset(self) -> np.ndarray | None:
@@ -207,22 +188,7 @@ class MeshDynamicsProblem:
     @property
     def static_load(self) -> float:
         """Time-mean static load w0 [N] (equals ``force`` for a constant load without deviations)."""
-        return float(np.dot(self._force_array - self.system_offset, self.durations) / self.period)
-
-    @property
-    def mean_stiffness(self) -> float:
-        """Time-mean mesh stiffness over one period [N/m]."""
-        return float(np.dot(self.stiffness, self.durations) / self.period)
-
-    @property
-    def natural_frequency(self) -> float:
-        """Natural frequency f_n = sqrt(mean k / me) / 2π [Hz] (from the time-mean stiffness)."""
-        return float(np.sqrt(self.mean_stiffness / self.mass) / (2.0 * np.pi))
-
-    @property
-    def frequency_ratio(self) -> float:
-        """Frequency ratio λ = f_m / f_n [-] (the paper's 0.153)."""
-        return self.mesh_frequency / self.natural_frequency
+        return self.time_mean(self._force_array - self.system_offset)
 
     @property
     def static_transmission_error(self) -> np.ndarray:
