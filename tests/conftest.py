@@ -20,3 +20,24 @@ def fzg_type_c():
     from thermogear import load_case
 
     return load_case("fzg_type_c")
+
+
+def mesh_stiffness_of(pair, material, speed_rpm: float, count: int):
+    """(grid, per-pair k (slots, n), k(τ)) of a bare gear pair (no case) from the primitives the mesh model uses:
+    for the stiffness tests of pairs that exist only as GearPair objects."""
+    import numpy as np
+
+    from thermogear.mesh_cycle import MeshCycle
+    from thermogear.stiffness.table import pair_stiffness_at
+
+    grid = MeshCycle(pair, speed_rpm).grid(count)
+    per_pair = np.zeros(grid.roll.shape)
+    end = pair.path_points["E"]
+    per_pair[grid.in_contact] = pair_stiffness_at(pair, material, np.minimum(grid.roll[grid.in_contact], end))
+    return grid, per_pair, MeshCycle.total(per_pair, grid.in_contact)
+
+
+@pytest.fixture(scope="session")
+def mesh_stiffness():
+    return mesh_stiffness_of
+

@@ -16,7 +16,7 @@ ANGLE = math.radians(20.0)
 
 
 @pytest.mark.parametrize("name, expected", [("L", 6.89), ("M", 1.24), ("P", 3.21), ("Q", 0.44)])
-def test_coefficients_match_the_values_derived_in_physics_md(name, expected):
+def test_coefficients_match_the_hand_values_of_the_derivations_page(name, expected):
     # docs/derivations.md: pinion of luo2019 evaluated with h_f = 2.45, θ_f = 0.1048 rad (two decimals given)
     assert float(sainsot_coefficient(name, 2.45, 0.1048)) == pytest.approx(expected, abs=0.006)
 

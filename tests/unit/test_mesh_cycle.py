@@ -11,15 +11,6 @@ import pytest
 from thermogear.geometry import Gear, GearPair
 from thermogear.materials import Material
 from thermogear.mesh_cycle import MeshCycle, load_shares
-from thermogear.stiffness.table import pair_stiffness_at
-
-def mesh_stiffness(pair, material, speed_rpm, count):
-    """(grid, per-pair k (slots, n), k(τ)) of a bare gear pair from the primitives the mesh model uses."""
-    grid = MeshCycle(pair, speed_rpm).grid(count)
-    per_pair = np.zeros(grid.roll.shape)
-    end = pair.path_points["E"]
-    per_pair[grid.in_contact] = pair_stiffness_at(pair, material, np.minimum(grid.roll[grid.in_contact], end))
-    return grid, per_pair, MeshCycle.total(per_pair, grid.in_contact)
 
 
 def high_contact_ratio_pair() -> GearPair:
@@ -56,7 +47,7 @@ def test_positions_are_periodic(luo2019):
                                atol=1e-12)
 
 
-def test_contact_ratio_above_two():
+def test_contact_ratio_above_two(mesh_stiffness):
     pair = high_contact_ratio_pair()
     assert pair.contact_ratio > 2.5
     cycle = MeshCycle(pair, 1000.0)
@@ -80,7 +71,7 @@ def test_total_and_load_share():
     np.testing.assert_allclose(share.sum(axis=0), 1.0)
 
 
-def test_mesh_stiffness_jumps_at_the_transitions(luo2019):
+def test_mesh_stiffness_jumps_at_the_transitions(luo2019, mesh_stiffness):
     grid, per_pair, total = mesh_stiffness(luo2019.gear_pair, luo2019.material, 2000.0, 512)
     double = grid.contact_count == 2
     assert total[double].min() > total[~double].max()

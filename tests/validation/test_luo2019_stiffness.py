@@ -11,17 +11,8 @@ import numpy as np
 import pytest
 
 import thermogear.stiffness.potential_energy as potential_energy
-from thermogear.mesh_cycle import MeshCycle
 from thermogear.stiffness.iso6336 import iso6336_stiffness
 from thermogear.stiffness.table import pair_stiffness_at
-
-def mesh_stiffness(pair, material, speed_rpm, count):
-    """(grid, per-pair k (slots, n), k(τ)) of a bare gear pair from the primitives the mesh model uses."""
-    grid = MeshCycle(pair, speed_rpm).grid(count)
-    per_pair = np.zeros(grid.roll.shape)
-    end = pair.path_points["E"]
-    per_pair[grid.in_contact] = pair_stiffness_at(pair, material, np.minimum(grid.roll[grid.in_contact], end))
-    return grid, per_pair, MeshCycle.total(per_pair, grid.in_contact)
 
 
 @pytest.fixture(scope="module")
@@ -63,11 +54,11 @@ def test_fzg_type_c_geometry():
 
 
 # docs/derivations.md pair stiffness per m of face width (three or four figures given)
-PHYSICS_PAIR = {"A": 9.27e9, "B": 1.323e10, "C": 1.345e10, "D": 1.327e10, "E": 9.25e9}
+HAND_PAIR = {"A": 9.27e9, "B": 1.323e10, "C": 1.345e10, "D": 1.327e10, "E": 9.25e9}
 
 
-@pytest.mark.parametrize("point", list(PHYSICS_PAIR))
-def test_physics_md_numbers_with_its_root_angle(luo2019, point, monkeypatch):
+@pytest.mark.parametrize("point", list(HAND_PAIR))
+def test_hand_values_with_the_gear_addendum_root_angle(luo2019, point, monkeypatch):
     """docs/derivations.md was computed with θ_f from the gear's addendum (h* = 1 in the θ_f formula, 0.1048 rad).
     With that θ_f every other part of our PEM reproduces its numbers to the figures given (±0.3 %)."""
     original = potential_energy.root_half_angle
@@ -75,19 +66,19 @@ def test_physics_md_numbers_with_its_root_angle(luo2019, point, monkeypatch):
                         lambda teeth, angle, tool_addendum, rho: original(teeth, angle, 1.0, rho))
     pair = luo2019.gear_pair
     value = potential_energy.pair_compliance(pair, luo2019.material, pair.path_points[point], 1.0).stiffness
-    assert float(value) == pytest.approx(PHYSICS_PAIR[point], rel=0.003)
+    assert float(value) == pytest.approx(HAND_PAIR[point], rel=0.003)
 
 
-@pytest.mark.parametrize("point", list(PHYSICS_PAIR))
-def test_physics_md_numbers_with_the_rack_derived_root_angle(luo2019, point):
+@pytest.mark.parametrize("point", list(HAND_PAIR))
+def test_hand_values_with_the_rack_derived_root_angle(luo2019, point):
     """With θ_f derived from the rack (tool addendum 1.25, θ_f = 0.1116 rad; docs/stiffness.md) the fillet
     foundation is stiffer and the pair 2–3 % stiffer than docs/derivations.md: assert the size and sign of that gap."""
     pair = luo2019.gear_pair
     value = float(pair_stiffness_at(pair, luo2019.material, pair.path_points[point])) / pair.face_width
-    assert 1.015 < value / PHYSICS_PAIR[point] < 1.03
+    assert 1.015 < value / HAND_PAIR[point] < 1.03
 
 
-def test_mesh_stiffness_against_physics_md(luo2019):
+def test_mesh_stiffness_against_the_hand_values(luo2019, mesh_stiffness):
     # docs/derivations.md: min 1.32e10, mean 1.99e10, max 2.36e10 per m (with its θ_f); ours 2–3 % higher
     grid, _, total = mesh_stiffness(luo2019.gear_pair, luo2019.material, 2000.0, 2048)
     width = luo2019.gear_pair.face_width
