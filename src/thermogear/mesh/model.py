@@ -131,7 +131,8 @@ class MeshModel:
         model keeps the conditions under which the friction damping is such a power law (geometry, oil
         temperature and load shares independent of speed and load; thermogear.damping); the load exponent is
         None where the load shares move with the load, and the whole is None where the temperature input depends
-        on the speed (the FE heat model) or the pairs carry deviations. Sweeps use it to reuse one mesh period."""
+        on the speed (the FE heat model). Sweeps use it to reuse one mesh period (and do not where the pairs carry
+        deviations: the excitation is not part of their batch kernel)."""
         if self.case.temperature.model == "fem" or getattr(self.case.thermal, "x_te_source", "") == "fem":
             return None
         load_exponent = None if self.load_shares_depend_on_load else FRICTION_DAMPING_LOAD_EXPONENT
