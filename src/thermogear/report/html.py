@@ -221,7 +221,9 @@ def render_report(evaluation, *, version: str, toml_text: str, pngs: dict[str, b
              f"<h1>{_e(title)}</h1><p class='meta'>case <b>{_e(case.name)}</b> · thermogear {_e(version)} · "
              f"{_e(generated)} · method {_e(evaluation.method)}</p>"]
     for message in messages:
-        parts.append(f"<div class='alert'>{_e(message)}</div>")
+        # a model check (a result the user should weigh) is a note; contact loss or instability an alert
+        kind = "warn" if ": check — " in message else "alert"
+        parts.append(f"<div class='{kind}'>{_e(message)}</div>")
     nav = ["<a href='#case'>case</a>", "<a href='#figures'>figures</a>", "<a href='#results'>results</a>"]
     if verdicts:
         nav += ["<a href='#paper'>paper vs thermogear</a>"]
