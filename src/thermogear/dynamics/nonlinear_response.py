@@ -91,13 +91,23 @@ class NonlinearResponse:
         figure = ax.figure if ax is not None else plt.subplots(figsize=(8, 4), constrained_layout=True)[0]
         ax = ax if ax is not None else figure.axes[0]
         for number, (item, series) in enumerate(((self, values(self)),) + (((other, values(other)),) if other else ())):
-            ax.plot(item.time * 1e3, series * scale, lw=1.4, ls="-" if number == 0 else "--",
+            time, series = item._repeated(series, periods)
+            ax.plot(time * 1e3, series * scale, lw=1.4, ls="-" if number == 0 else "--",
                     label=f"{item.label or 'response'} ({item.metrics['response']}, {item.metrics['branch']} branch)")
         ax.set_xlabel("time [ms]")
         ax.set_ylabel(ylabel)
         ax.grid(True, alpha=0.3)
         ax.legend(fontsize="small")
         return figure
+
+    def _repeated(self, values: np.ndarray, periods: int | None) -> tuple[np.ndarray, np.ndarray]:
+        """The orbit's record repeated to cover at least ``periods`` mesh periods (its own N periods if None)."""
+        span = float(self.time[-1])
+        copies = 1 if periods is None else max(1, int(np.ceil(periods * self.problem.period / span - 1e-9)))
+        body = slice(0, -1)
+        time = np.concatenate([self.time[body] + q * span for q in range(copies)] + [[copies * span]])
+        repeated = np.concatenate([np.tile(np.asarray(values)[body], copies), np.asarray(values)[-1:]])
+        return time, repeated
 
     def plot_displacement(self, other=None, ax: Any = None, periods: int | None = None):
         """DTE x over the orbit [μm]."""
