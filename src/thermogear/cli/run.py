@@ -135,7 +135,15 @@ def _print_table(case, responses, console) -> None:
     for region in regions:
         table.add_row(f"amplitude, {region}", *(format_value(d["amplitude_um"].get(region)) for d in data.values()),
                       "μm")
+    table.add_row("DTE peak-to-peak", *(format_value(d["dte_peak_to_peak_um"]) for d in data.values()), "μm")
     table.add_row("largest |Floquet multiplier|", *(format_value(d["floquet_multipliers_abs"][0])
                                                     for d in data.values()), "–")
-    table.add_row("linear model valid", *("yes" if d["valid"] else "NO" for d in data.values()), "")
+    if any(d["mesh"] == "nonlinear" for d in data.values()):
+        table.add_row("time without contact", *(format_value(100.0 * d["contact_loss_fraction"])
+                                                for d in data.values()), "%")
+        table.add_row("back flanks struck", *("yes" if d["back_side_contact"] else "no" for d in data.values()), "")
+        table.add_row("response (branch)", *(f"{d['response']} ({d['branch']})" for d in data.values()), "")
+        table.add_row("steady orbit found", *("yes" if d["valid"] else "NO" for d in data.values()), "")
+    else:
+        table.add_row("linear model valid", *("yes" if d["valid"] else "NO" for d in data.values()), "")
     console.print(table)
