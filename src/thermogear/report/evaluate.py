@@ -74,6 +74,14 @@ def key_results(evaluation: Evaluation) -> list[dict]:
         metric("thermal", "max_system_load_ratio"))
     add("largest |Floquet multiplier|", "–", *(metric(m, "floquet_multipliers_abs")[0]
                                               if metric(m, "floquet_multipliers_abs") else None for m in MODELS))
+    add("DTE peak-to-peak", "μm", metric("elastic", "dte_peak_to_peak", scale=1e6),
+        metric("thermal", "dte_peak_to_peak", scale=1e6))
+    if any(m.get("mesh") == "nonlinear" for m in metrics.values()):
+        add("time without contact (nonlinear mesh)", "%", metric("elastic", "contact_loss_fraction", scale=100.0),
+            metric("thermal", "contact_loss_fraction", scale=100.0),
+            note="; ".join(f"{m}: {metrics[m]['response']}, {metrics[m]['branch']} branch"
+                           + (", back flanks struck" if metrics[m]["back_side_contact"] else "")
+                           for m in MODELS if m in metrics))
     if evaluation.damping is not None:
         means = evaluation.damping.region_means
         for region in ("single", "double"):
