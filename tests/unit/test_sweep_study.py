@@ -184,3 +184,13 @@ def test_luo2019_resonance_where_the_natural_frequency_predicts_it(luo, tmp_path
     figure = plot_speed_response(data)
     assert len(figure.axes) == 4
     matplotlib.pyplot.close(figure)
+
+
+def test_default_chunks_grow_with_the_study():
+    # small studies keep 4096-point chunks; a 10⁶-point study gets about 50 tasks of 20 000 points (two local
+    # workers reached 1.68× of serial with them against 1.55× with 4096), never more than 65 536 points a chunk
+    from thermogear.sweep.study import default_chunk_points
+
+    assert default_chunk_points(100) == 4096 and default_chunk_points(100_000) == 4096
+    assert default_chunk_points(1_000_000) == 20_000
+    assert default_chunk_points(100_000_000) == 65_536
