@@ -30,26 +30,12 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from thermogear.dynamics.mesh_period import MeshPeriod
-from thermogear.dynamics.problem import MeshDynamicsProblem
+from thermogear.dynamics.problem import MeshDynamicsProblem, checked_array
 from thermogear.errors import ProblemError
 
 __all__ = ["DAMPING_MODES", "BacklashMeshProblem"]
 
 DAMPING_MODES = ("always", "in_contact")
-
-
-def _checked(name: str, value: object, shape: tuple[int, ...], reason: str) -> np.ndarray:
-    array = np.array(value, dtype=float, copy=True)
-    if array.ndim == 1 and len(shape) == 2 and shape[0] == 1:
-        array = array[None, :]
-    if array.shape != shape:
-        raise ProblemError(name, f"array of shape {array.shape}", f"shape {shape}", reason)
-    if not np.all(np.isfinite(array)):
-        raise ProblemError(name, f"{int(np.sum(~np.isfinite(array)))} non-finite values", "finite numbers",
-                        "a NaN or infinite coefficient has no physical meaning")
-    array = np.ascontiguousarray(array)
-    array.setflags(write=False)
-    return array
 
 
 @dataclass(frozen=True)
@@ -113,8 +99,8 @@ class BacklashMeshProblem(MeshPeriod):
         stiffness = np.atleast_2d(np.array(self.pair_stiffness, dtype=float))
         shape = (stiffness.shape[0], n)
         per_pair = "one row per tooth-pair slot, one column per interval between nodes"
-        stiffness = _checked("pair_stiffness", stiffness, shape, per_pair)
-        back_stiffness = _checked("back_pair_stiffness", self.back_pair_stiffness, shape, per_pair)
+        stiffness = checked_array("pair_stiffness", stiffness, shape, per_pair)
+        back_stiffness = checked_array("back_pair_stiffness", self.back_pair_stiffness, shape, per_pair)
         for name, array in (("pair_stiffness", stiffness), ("back_pair_stiffness", back_stiffness)):
             if np.any(array < 0.0):
                 raise ProblemError(name, float(array.min()), ">= 0 N/m", "0 marks a pair out of mesh")
@@ -123,9 +109,9 @@ class BacklashMeshProblem(MeshPeriod):
                             "without any tooth pair the mesh transmits no load")
         object.__setattr__(self, "pair_stiffness", stiffness)
         object.__setattr__(self, "back_pair_stiffness", back_stiffness)
-        object.__setattr__(self, "pair_deviation", _checked("pair_deviation", self.pair_deviation, shape, per_pair))
+        object.__setattr__(self, "pair_deviation", checked_array("pair_deviation", self.pair_deviation, shape, per_pair))
         object.__setattr__(self, "back_pair_deviation",
-                           _checked("back_pair_deviation", self.back_pair_deviation, shape, per_pair))
+                           checked_array("back_pair_deviation", self.back_pair_deviation, shape, per_pair))
         backlash = float(self.backlash)
         if not np.isfinite(backlash) or backlash <= 0.0:
             raise ProblemError("backlash", self.backlash, "> 0 m, finite",
@@ -139,7 +125,7 @@ class BacklashMeshProblem(MeshPeriod):
             raise ProblemError("backlash", backlash, f"> −(e_s + e'_s) for every pair (local clearance {worst:.3g} m)",
                             "a pair whose deviations close the backlash would touch both flanks at once (jammed); "
                             "a pitch-type error shifts the flanks together (e' = −e), thinning adds to both")
-        damping = _checked("damping", self.damping, (n,), "one damping value per interval")
+        damping = checked_array("damping", self.damping, (n,), "one damping value per interval")
         if np.any(damping < 0.0):
             raise ProblemError("damping", float(damping.min()), ">= 0 N·s/m", "negative damping injects energy")
         object.__setattr__(self, "damping", damping)
@@ -148,7 +134,7 @@ class BacklashMeshProblem(MeshPeriod):
             force_array = np.full(n, float(force_value))
             object.__setattr__(self, "force", float(force_value))
         else:
-            force_array = _checked("force", force_value, (n,), "one load per interval")
+            force_array = checked_array("force", force_value, (n,), "one load per interval")
             object.__setattr__(self, "force", force_array)
         if not np.all(np.isfinite(force_array)) or np.any(force_array <= 0.0):
             raise ProblemError("force", self.force, "finite, > 0 N", "the mesh is modelled under a positive load")

@@ -26,16 +26,22 @@ def region_name(contact_count: int) -> str:
     return _REGION_NAMES.get(int(contact_count), f"{int(contact_count)}_pairs")
 
 
-def _as_float_array(name: str, value: object, shape: tuple[int, ...]) -> np.ndarray:
+def checked_array(name: str, value: object, shape: tuple[int, ...],
+                  reason: str = "one value per interval between consecutive nodes") -> np.ndarray:
+    """A read-only, contiguous float copy of a solver input of the given shape (a 1-D array is taken as one row
+    where one row is asked for); ProblemError naming the quantity otherwise, or where it is not finite."""
     array = np.array(value, dtype=float, copy=True)
+    if array.ndim == 1 and len(shape) == 2 and shape[0] == 1:
+        array = array[None, :]
     if array.shape != shape:
-        raise ProblemError(name, f"array of shape {array.shape}", f"shape {shape}",
-                        "one value per interval between consecutive nodes")
+        raise ProblemError(name, f"array of shape {array.shape}", f"shape {shape}", reason)
     if not np.all(np.isfinite(array)):
         raise ProblemError(name, f"{int(np.sum(~np.isfinite(array)))} non-finite values", "finite numbers",
-                        "a NaN or infinite coefficient has no physical meaning")
+                           "a NaN or infinite coefficient has no physical meaning")
+    array = np.ascontiguousarray(array)
     array.setflags(write=False)
     return array
+
 
 
 @dataclass(frozen=True)
@@ -99,12 +105,12 @@ class MeshDynamicsProblem(MeshPeriod):
         nodes.setflags(write=False)
         object.__setattr__(self, "nodes", nodes)
         n = nodes.size - 1
-        stiffness = _as_float_array("stiffness", self.stiffness, (n,))
+        stiffness = checked_array("stiffness", self.stiffness, (n,))
         if np.any(stiffness <= 0.0):
             raise ProblemError("stiffness", float(stiffness.min()), "> 0 N/m on every interval",
                             "the linear mesh model needs at least one pair in contact; zero stiffness is contact "
                             "loss, which this linear model does not represent")
-        damping = _as_float_array("damping", self.damping, (n,))
+        damping = checked_array("damping", self.damping, (n,))
         if np.any(damping < 0.0):
             raise ProblemError("damping", float(damping.min()), ">= 0 N·s/m", "negative damping injects energy")
         force_value = np.array(self.force, dtype=float)
@@ -112,7 +118,7 @@ class MeshDynamicsProblem(MeshPeriod):
             force_array = np.full(n, float(force_value))
             object.__setattr__(self, "force", float(force_value))
         else:
-            force_array = _as_float_array("force", force_value, (n,))
+            force_array = checked_array("force", force_value, (n,))
             object.__setattr__(self, "force", force_array)
         if not np.all(np.isfinite(force_array)):
             raise ProblemError("force", self.force, "finite [N]", "the static load must be a number")
@@ -135,7 +141,7 @@ class MeshDynamicsProblem(MeshPeriod):
         object.__setattr__(self, "_force_array", force_array)
         if self.pair_stiffness is not None:
             pair_k = np.atleast_2d(np.array(self.pair_stiffness, dtype=float))
-            pair_k = _as_float_array("pair_stiffness", pair_k, (pair_k.shape[0], n))
+            pair_k = checked_array("pair_stiffness", pair_k, (pair_k.shape[0], n))
             if np.any(pair_k < 0.0):
                 raise ProblemError("pair_stiffness", float(pair_k.min()), ">= 0 N/m", "0 marks a pair out of contact")
             total = pair_k.sum(axis=0)
@@ -150,7 +156,7 @@ class MeshDynamicsProblem(MeshPeriod):
                 raise ProblemError("pair_damping", "given", "only together with pair_stiffness",
                                 "pair loads need the pair stiffness")
             pair_c = np.atleast_2d(np.array(self.pair_damping, dtype=float))
-            pair_c = _as_float_array("pair_damping", pair_c, self.pair_stiffness.shape)
+            pair_c = checked_array("pair_damping", pair_c, self.pair_stiffness.shape)
             if np.any(pair_c < 0.0):
                 raise ProblemError("pair_damping", float(pair_c.min()), ">= 0 N·s/m", "negative damping injects energy")
             object.__setattr__(self, "pair_damping", pair_c)
@@ -158,7 +164,7 @@ class MeshDynamicsProblem(MeshPeriod):
             if self.pair_stiffness is None:
                 raise ProblemError("pair_deviation", "given", "only together with pair_stiffness",
                                    "a deviation acts through its pair's stiffness")
-            deviation = _as_float_array("pair_deviation", np.atleast_2d(np.array(self.pair_deviation, dtype=float)),
+            deviation = checked_array("pair_deviation", np.atleast_2d(np.array(self.pair_deviation, dtype=float)),
                                         self.pair_stiffness.shape)
             object.__setattr__(self, "pair_deviation", deviation)
         face_width = float(self.face_width)
