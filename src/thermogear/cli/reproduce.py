@@ -25,7 +25,8 @@ def reproduce(
     in one self-contained report.html (+ figures/, results.nc, summary.json)."""
     from thermogear.case import load_case
     from thermogear.report.build import build_report, report_steps
-    from thermogear.report.terminal import print_summary, step_progress
+    from thermogear.cli.console import step_progress
+    from thermogear.report.terminal import print_summary
 
     if paper not in PAPERS:
         from thermogear.errors import closest_key
@@ -35,7 +36,7 @@ def reproduce(
                         "no such paper" + (f" (did you mean '{suggestion}'?)" if suggestion else ""))
     case = load_case(PAPERS[paper])
     target = out if out is not None else Path(f"thermogear-{paper}")
-    with interruptible(target), step_progress(report_steps(case), error_console, quiet) as advance:
+    with interruptible(target), step_progress(report_steps(case), quiet, error_console) as advance:
         outcome = build_report(case, target, force=force, paper=True, progress=advance)
     if not quiet:
         print_summary(outcome, console)

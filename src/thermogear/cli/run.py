@@ -62,7 +62,8 @@ def run(
     Contact loss and instability are said in words (when, how long, how deep)."""
     from thermogear.case import load_case
     from thermogear.report.evaluate import model_messages
-    from thermogear.report.terminal import print_messages, print_summary, step_progress
+    from thermogear.cli.console import step_progress
+    from thermogear.report.terminal import print_messages, print_summary
 
     if model not in _MODELS:
         raise CaseError("--model", model, "elastic | thermal | both", "unknown model")
@@ -74,7 +75,7 @@ def run(
     if out is not None:
         from thermogear.report.build import build_report, report_steps
 
-        with interruptible(out), step_progress(report_steps(case), error_console, quiet or as_json) as advance:
+        with interruptible(out), step_progress(report_steps(case), quiet or as_json, error_console) as advance:
             outcome = build_report(case, out, force=force, method=method, paper=False, progress=advance)
         responses = {name: outcome.evaluation.responses[name] for name in models
                      if name in outcome.evaluation.responses}
@@ -84,7 +85,7 @@ def run(
         from thermogear.simulation import Simulation
 
         responses, failed = {}, {}
-        with step_progress([f"{name} model" for name in models], error_console, quiet or as_json) as advance:
+        with step_progress([f"{name} model" for name in models], quiet or as_json, error_console) as advance:
             for name in models:
                 advance(f"{name} model")
                 responses[name] = Simulation(case, name).run(method)

@@ -11,7 +11,7 @@ from rich.text import Text
 
 from thermogear.report.paper_table import format_value
 
-__all__ = ["interruptible", "step_progress", "print_summary", "print_messages"]
+__all__ = ["interruptible", "print_summary", "print_messages"]
 
 
 @contextmanager
@@ -35,30 +35,6 @@ def interruptible(target) -> Iterator[None]:
         sys.exit(130)
     finally:
         signal.signal(signal.SIGTERM, previous)
-
-
-@contextmanager
-def step_progress(steps: list[str], console: Console, quiet: bool = False) -> Iterator:
-    """A progress bar over ``steps`` on ``console`` (stderr); yields ``advance(step_name)``. Quiet: no output."""
-    if quiet:
-        yield lambda name: None
-        return
-    from rich.progress import BarColumn, Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
-
-    with Progress(SpinnerColumn(), TextColumn("{task.description:<22}", style="bold", markup=False), BarColumn(),
-                  TextColumn("{task.completed}/{task.total}"), TimeElapsedColumn(), console=console,
-                  transient=True) as progress:
-        task = progress.add_task("starting", total=len(steps))
-        seen: list[str] = []
-
-        def advance(name: str) -> None:
-            if seen:
-                progress.advance(task)
-            seen.append(name)
-            progress.update(task, description=name)
-
-        yield advance
-        progress.update(task, completed=len(steps))
 
 
 def print_messages(messages: list[str], console: Console) -> None:
