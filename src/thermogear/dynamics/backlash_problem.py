@@ -30,7 +30,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from thermogear.dynamics.mesh_period import MeshPeriod
-from thermogear.dynamics.problem import MeshDynamicsProblem, checked_array
+from thermogear.dynamics.problem import MeshDynamicsProblem, checked_array, checked_mass, checked_nodes
 from thermogear.errors import ProblemError
 
 __all__ = ["DAMPING_MODES", "BacklashMeshProblem"]
@@ -80,20 +80,8 @@ class BacklashMeshProblem(MeshPeriod):
     _force_array: np.ndarray = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
-        mass = float(self.mass)
-        if not np.isfinite(mass) or mass <= 0.0:
-            raise ProblemError("mass", self.mass, "> 0 kg, finite", "the equivalent mass me must be positive")
-        object.__setattr__(self, "mass", mass)
-        nodes = np.array(self.nodes, dtype=float, copy=True)
-        if nodes.ndim != 1 or nodes.size < 2 or not np.all(np.isfinite(nodes)):
-            raise ProblemError("nodes", f"array of shape {nodes.shape}", "1-D, >= 2 finite times [s]",
-                            "the nodes bound the intervals of one mesh period")
-        if nodes[0] != 0.0:
-            raise ProblemError("nodes[0]", float(nodes[0]), "0", "the mesh period starts at τ = 0")
-        if np.any(np.diff(nodes) <= 0.0):
-            raise ProblemError("nodes", "not strictly increasing", "strictly increasing times",
-                            "each interval must have a positive length")
-        nodes.setflags(write=False)
+        object.__setattr__(self, "mass", checked_mass(self.mass))
+        nodes = checked_nodes(self.nodes)
         object.__setattr__(self, "nodes", nodes)
         n = nodes.size - 1
         stiffness = np.atleast_2d(np.array(self.pair_stiffness, dtype=float))

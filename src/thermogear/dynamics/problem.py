@@ -44,6 +44,31 @@ def checked_array(name: str, value: object, shape: tuple[int, ...],
 
 
 
+def checked_mass(value: object) -> float:
+    """The equivalent mass me [kg] (Luo & Li Eq. 5): finite and positive, else ProblemError."""
+    mass = float(value)
+    if not np.isfinite(mass) or mass <= 0.0:
+        raise ProblemError("mass", value, "> 0 kg, finite", "the equivalent mass me of Eq. (5) must be positive")
+    return mass
+
+
+def checked_nodes(value: object) -> np.ndarray:
+    """Read-only interval boundaries of one mesh period [s]: 1-D, finite, from 0, strictly increasing."""
+    nodes = np.array(value, dtype=float, copy=True)
+    if nodes.ndim != 1 or nodes.size < 2:
+        raise ProblemError("nodes", f"array of shape {nodes.shape}", "1-D, at least 2 values",
+                           "the nodes bound the intervals of one mesh period")
+    if not np.all(np.isfinite(nodes)):
+        raise ProblemError("nodes", "non-finite values", "finite times [s]", "a node time must be a number")
+    if nodes[0] != 0.0:
+        raise ProblemError("nodes[0]", float(nodes[0]), "0", "the mesh period starts at τ = 0")
+    if np.any(np.diff(nodes) <= 0.0):
+        raise ProblemError("nodes", "not strictly increasing", "strictly increasing times",
+                           "each interval must have a positive length")
+    nodes.setflags(write=False)
+    return nodes
+
+
 @dataclass(frozen=True)
 class MeshDynamicsProblem(MeshPeriod):
     """Linear time-periodic torsional model of a gear mesh over one mesh period (Luo & Li Eqs. 5–6).
@@ -87,22 +112,8 @@ class MeshDynamicsProblem(MeshPeriod):
     _force_array: np.ndarray = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
-        mass = float(self.mass)
-        if not np.isfinite(mass) or mass <= 0.0:
-            raise ProblemError("mass", self.mass, "> 0 kg, finite", "the equivalent mass me of Eq. (5) must be positive")
-        object.__setattr__(self, "mass", mass)
-        nodes = np.array(self.nodes, dtype=float, copy=True)
-        if nodes.ndim != 1 or nodes.size < 2:
-            raise ProblemError("nodes", f"array of shape {nodes.shape}", "1-D, at least 2 values",
-                            "the nodes bound the intervals of one mesh period")
-        if not np.all(np.isfinite(nodes)):
-            raise ProblemError("nodes", "non-finite values", "finite times [s]", "a node time must be a number")
-        if nodes[0] != 0.0:
-            raise ProblemError("nodes[0]", float(nodes[0]), "0", "the mesh period starts at τ = 0")
-        if np.any(np.diff(nodes) <= 0.0):
-            raise ProblemError("nodes", "not strictly increasing", "strictly increasing times",
-                            "each interval must have a positive length")
-        nodes.setflags(write=False)
+        object.__setattr__(self, "mass", checked_mass(self.mass))
+        nodes = checked_nodes(self.nodes)
         object.__setattr__(self, "nodes", nodes)
         n = nodes.size - 1
         stiffness = checked_array("stiffness", self.stiffness, (n,))
