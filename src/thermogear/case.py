@@ -19,6 +19,7 @@ from typing import Any, Callable
 
 import pydantic
 
+from thermogear import warning_scope
 from thermogear.errors import CaseError, closest_key
 from thermogear.fzg import fzg_load_stage_torque
 from thermogear.geometry import Gear, GearPair, involute
@@ -104,8 +105,7 @@ def cached_per_case(function):
         key = id(case)
         entry = results.get(key)
         if entry is None or entry[0]() is not case:
-            with warnings.catch_warnings(record=True) as caught:
-                warnings.simplefilter("always")
+            with warning_scope.recorded() as caught:
                 value = function(case)
             recorded = tuple((item.message, item.category) for item in caught)
             entry = (weakref.ref(case, lambda _, key=key: results.pop(key, None)), value, recorded)
@@ -187,8 +187,7 @@ def check_case(case: "Case") -> None:
     of contact (:func:`~thermogear.temperature_field.check_temperatures`: table sorted and matched, fit degree,
     temperatures between reference_c and the material limit) and the X_te the paper's thermal model needs.
     Warnings of these checks are left to the stage that uses the value (it issues them once, there)."""
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
+    with warning_scope.ignored():
         _check_temperature_field(case)
     _check_thermal_inputs(case)
     for check in _CASE_CHECKS:

@@ -161,15 +161,15 @@ def check_flank_table(gamma, flank_c, fit_degree: int, key: str = "temperature")
 def fit_flank_polynomial(gamma, flank_c, fit_degree: int) -> np.polynomial.Polynomial:
     """Least-squares polynomial T(Γ) of the given degree (Luo & Li 2020 §2.1.5: "fitted by a high-order
     polynomial"), on a scaled domain for conditioning. Raises CaseError if the fit is rank deficient."""
-    with warnings.catch_warnings():
-        warnings.simplefilter("error", np.exceptions.RankWarning)
-        try:
-            return np.polynomial.Polynomial.fit(np.asarray(gamma, float), np.asarray(flank_c, float),
-                                                int(fit_degree))
-        except np.exceptions.RankWarning:
-            raise CaseError("temperature.fit_degree", fit_degree, "a lower degree",
-                            "the table's positions cannot determine a polynomial of this degree (rank "
-                            "deficient least-squares fit)") from None
+    # full=True returns the rank instead of warning (NumPy raises RankWarning when rank != degree + 1): no
+    # process-wide warning filter is needed, so the fit is safe in a study's worker threads
+    polynomial, (_, rank, _, _) = np.polynomial.Polynomial.fit(np.asarray(gamma, float), np.asarray(flank_c, float),
+                                                               int(fit_degree), full=True)
+    if rank != int(fit_degree) + 1:
+        raise CaseError("temperature.fit_degree", fit_degree, "a lower degree",
+                        "the table's positions cannot determine a polynomial of this degree (rank "
+                        "deficient least-squares fit)")
+    return polynomial
 
 
 def check_temperatures(field: TemperatureField, gamma_start: float, gamma_end: float,

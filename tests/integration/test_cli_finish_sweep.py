@@ -132,7 +132,7 @@ def test_local_cluster_starts_no_dashboard_unless_asked(monkeypatch):
 
     monkeypatch.setattr(distributed, "LocalCluster", FakeCluster)
     monkeypatch.setattr(distributed, "Client", FakeClient)
-    engine._client(None, 1)
-    engine._client("local", 1, dashboard=":0")
+    engine._client("processes", 1)
+    engine._client("processes", 1, dashboard=":0")
     assert started[0]["dashboard_address"] is None
     assert started[1]["dashboard_address"] == ":0"

@@ -36,6 +36,17 @@ def test_fit_reproduces_a_polynomial_of_its_own_degree():
     assert field.fit_range == (-0.6, 0.6)
 
 
+def test_rank_deficient_fit_is_refused_with_its_key():
+    # four distinct positions, three of them 1e-13 apart on a unit span: the scaled Vandermonde matrix of degree 3
+    # is singular to double precision, so the fit cannot determine the polynomial (NumPy reports rank 2 or 3 < 4)
+    from thermogear.temperature_field import fit_flank_polynomial
+
+    with pytest.raises(CaseError) as raised:
+        fit_flank_polynomial([0.0, 1e-13, 2e-13, 1.0], [60.0, 61.0, 62.0, 70.0], 3)
+    assert raised.value.key == "temperature.fit_degree"
+    assert fit_flank_polynomial([0.0, 0.3, 0.6, 1.0], [60.0, 61.0, 62.0, 70.0], 3).degree() == 3
+
+
 def test_wheel_flank_offset():
     field = TemperatureField.from_table([-1, 0, 1], [80, 78, 80], 2, wheel_flank_offset_c=-3.0, **BODY)
     assert field.wheel_flank_c(0.0) == pytest.approx(75.0)

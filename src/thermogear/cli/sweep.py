@@ -21,9 +21,11 @@ def sweep(
                                    "or a dotted case key; repeat for a grid (the case's [sweep] table otherwise)"),
     out: Path = typer.Option(..., "--out", help="zarr store of the results (a directory, e.g. study.zarr)"),
     model: str = typer.Option(None, "--model", help="elastic | thermal | both (default: both, or [sweep].model)"),
-    scheduler: str = typer.Option(None, "--scheduler", help="dask.distributed scheduler address "
-                                  "(tcp://host:port); default a local cluster of all cores; 'serial' for no Dask"),
-    workers: int = typer.Option(None, "--workers", min=1, help="processes of the local cluster (default: cores)"),
+    scheduler: str = typer.Option(None, "--scheduler", help="threads | processes | serial, or a dask.distributed "
+                                  "scheduler address (tcp://host:port); default: threads on the fast path, a local "
+                                  "Dask cluster of processes otherwise"),
+    workers: int = typer.Option(None, "--workers", min=1, help="threads or processes of the local scheduler "
+                                "(default: cores)"),
     dashboard: str = typer.Option(None, "--dashboard", help="serve the local cluster's Dask dashboard at this "
                                   "address, e.g. :8787 (default: no dashboard, no port opened)"),
     resume: bool = typer.Option(False, "--resume", help="continue an interrupted study stored at --out"),
@@ -144,8 +146,8 @@ def check_scheduler(address: str | None, timeout: float = 5.0) -> None:
 
     A ``dask.distributed`` client retries an unreachable address for its whole timeout and then raises from deep
     inside the driver; this one connection attempt names the address instead (``serial``, ``local`` and no
-    address need no check; other protocols are left to the client)."""
-    if address in (None, "", "serial", "local"):
+    address need no check, nor do the local schedulers; other protocols are left to the client)."""
+    if address in (None, "", "serial", "local", "threads", "processes"):
         return
     import socket
     from urllib.parse import urlsplit
@@ -153,7 +155,7 @@ def check_scheduler(address: str | None, timeout: float = 5.0) -> None:
     parts = urlsplit(address if "://" in address else f"tcp://{address}")
     if parts.scheme not in ("tcp", "tls"):
         return
-    allowed = "a dask.distributed scheduler address tcp://host:port, 'serial' or 'local'"
+    allowed = "a dask.distributed scheduler address tcp://host:port, 'threads', 'processes' or 'serial'"
     try:
         host, port = parts.hostname, parts.port
     except ValueError:

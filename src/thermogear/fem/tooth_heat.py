@@ -15,7 +15,6 @@ properties (:func:`convection_coefficients`).
 from __future__ import annotations
 
 import math
-import warnings
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
@@ -23,6 +22,7 @@ import numpy as np
 import skfem
 from matplotlib.path import Path as PolygonPath
 
+from thermogear import warning_scope
 from thermogear.errors import ExtrapolationWarning
 from thermogear.fem.heat import (RobinBoundary, blok_heat_partition, mean_flank_heat_flux, mist_properties,
                                  rotating_disc_coefficient, solve_steady_conduction, tooth_surface_coefficient)
@@ -144,8 +144,7 @@ def flank_heat_input(case: "Case", which: str, settings: FemSection | None = Non
     pair = mesh.gear_pair
     roll = pair.roll_grid(count)
     speed = mesh.speed_rpm
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", ExtrapolationWarning)  # the damping model reports the friction limits
+    with warning_scope.ignored(ExtrapolationWarning):  # the damping model reports the friction limits
         shares = mesh.pair_damping_at(roll)
         oil = mesh.lubricant
         viscosity = float(oil.dynamic_viscosity(case.lubricant.operating_temperature_c, warn=False))

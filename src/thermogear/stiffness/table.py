@@ -13,6 +13,7 @@ from functools import lru_cache
 import numpy as np
 from scipy.interpolate import CubicSpline
 
+from thermogear import warning_scope
 from thermogear.geometry import GearPair
 from thermogear.materials import Material
 from thermogear.stiffness.potential_energy import PairCompliance, ToothCompliance, pair_compliance
@@ -35,8 +36,7 @@ def _read_only(compliance: PairCompliance) -> PairCompliance:
 
 @lru_cache(maxsize=64)
 def _table_with_warnings(gear_pair: GearPair, material: Material, count: int) -> tuple[PairCompliance, tuple]:
-    with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always")
+    with warning_scope.recorded() as caught:
         table = _read_only(pair_compliance(gear_pair, material, gear_pair.roll_grid(count)))
     return table, tuple((item.message, item.category) for item in caught)
 

@@ -32,12 +32,12 @@ Slow path
 from __future__ import annotations
 
 import math
-import warnings
 from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
+from thermogear import warning_scope
 from thermogear.errors import ModelLimitError, ProblemError
 from thermogear.mesh.model import MeshModel
 from thermogear.sweep.batch_kernel import periodic_metrics_batch
@@ -112,6 +112,13 @@ def group_tables(mesh: MeshModel, normal_load: float | None = None, points_per_p
                        mean_mesh_stiffness=float(problem.mean_stiffness),
                        pinion_teeth=int(mesh.gear_pair.pinion.teeth), speed_exponent=float(scaling[0]),
                        load_exponent=scaling[1])
+
+
+def fast_path_applies(case, models) -> bool:
+    """True where every model of ``models`` runs ``case`` on the fast path (a study's scheduler choice: its other
+    points may still differ, and each group falls back to the per-point path where it must)."""
+    with warning_scope.ignored():  # the blocks raise these warnings again, and report them
+        return all(group_tables(MeshModel(case, model)) is not None for model in models)
 
 
 # ------------------------------------------------------------------------------------------- fast path
@@ -223,8 +230,7 @@ def evaluate_point(case, model: str, points_per_period: int | None = None) -> di
     result.update(natural_frequency_hz=problem.natural_frequency, mean_mesh_stiffness=problem.mean_stiffness,
                   mesh_frequency_hz=problem.mesh_frequency, static_load=problem.static_load, contact_loss=0)
     try:
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")
+        with warning_scope.ignored():
             metrics = simulation.run("periodic").metrics
     except ModelLimitError:
         result["floquet_multiplier_max"] = float(np.max(np.abs(floquet_multipliers(problem))))
@@ -261,8 +267,7 @@ def evaluate_block(study, block, method: str = "batch") -> tuple[dict[str, np.nd
     points = study.block_values(block)
     speed_axis = next((a for a, p in enumerate(study.parameters) if p.key == "operating.speed_rpm"), None)
     messages: list[str] = []
-    with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always")
+    with warning_scope.recorded() as caught:
         groups: dict[tuple, list[int]] = {}
         for flat, values in enumerate(points):
             key = tuple(v for a, v in enumerate(values) if a != speed_axis) if speed_axis is not None else (flat,)

@@ -332,7 +332,7 @@ def _walk(mass, nodes, stiffness, damping, factor, force, pair_stiffness, x0, v0
         out[j, 7] = max_v[j]
 
 
-@numba.njit(cache=True, error_model="numpy")
+@numba.njit(cache=True, error_model="numpy", nogil=True)
 def periodic_metrics_batch(mass: np.ndarray, nodes: np.ndarray, stiffness: np.ndarray, damping: np.ndarray,
                            factor: np.ndarray, force: np.ndarray, pair_stiffness: np.ndarray, samples: int,
                            damping_force: bool) -> tuple[np.ndarray, np.ndarray]:

@@ -5,14 +5,19 @@ each task computes its block and writes the block's data into the store itself (
 workers never write the same file), and the driver writes the block's marker when the task has returned (data
 first, then the marker) and shows a progress bar. Nothing but the warnings travels back, so the driver stays
 idle and the workers have the cores. The tasks are pure functions of (study, block), so where they run does not
-change a bit of the result: a local cluster, a remote scheduler and an in-process loop give the same dataset.
+change a bit of the result: threads, a local cluster, a remote scheduler and a plain loop give the same dataset.
 
 Schedulers (``scheduler`` argument, ``--scheduler`` on the command line):
 
-* ``None`` / ``"local"``: a ``distributed.LocalCluster`` of worker processes (one thread each, all cores by
-  default), started and closed by :func:`run_study`;
+* ``None`` / ``"local"``: the local choice: ``"threads"`` where the study runs on the fast path (its kernel
+  releases the GIL, and threads start at once and share the per-case tables), ``"processes"`` for one Simulation
+  per point (``method="simulation"``, the points the fast path cannot take) or with a ``dashboard``;
+* ``"threads"``: a pool of worker threads in this process (all cores by default). Warnings raised in the workers
+  are kept apart per thread (:mod:`thermogear.warning_scope`);
+* ``"processes"``: a ``distributed.LocalCluster`` of worker processes (one thread each, all cores by default),
+  started and closed by :func:`run_study` (a few seconds of start-up: worth it for long studies);
 * ``"tcp://host:port"`` (any address a ``distributed.Client`` accepts): an existing scheduler and its workers;
-* ``"serial"``: no Dask, a plain loop in this process (debugging; the baseline of the benchmarks).
+* ``"serial"``: a plain loop in this process (debugging; the baseline of the benchmarks).
 """
 
 from __future__ import annotations
@@ -23,14 +28,16 @@ from contextlib import ExitStack, contextmanager
 from pathlib import Path
 from typing import Any, Callable, Iterator
 
+from thermogear import warning_scope
 from thermogear.errors import CaseError
-from thermogear.sweep.batch import evaluate_block
+from thermogear.sweep.batch import evaluate_block, fast_path_applies
 from thermogear.sweep.store import ResultStore
 from thermogear.warning_causes import WarningTally
 
 __all__ = ["StudyRun", "compute_block", "compute_and_write_block", "run_study"]
 
 METHODS = ("batch", "simulation")
+LOCAL = ("threads", "processes")  # the local schedulers besides "serial"
 
 
 def compute_block(study, block, method: str = "batch"):
@@ -69,7 +76,8 @@ def run_study(study, out: str | Path, scheduler: str | None = None, resume: bool
     """Compute a study into the zarr store ``out`` and return the dataset.
 
     ``resume``: continue the study stored at ``out`` (finished blocks are kept and not recomputed).
-    ``workers``: processes of the local cluster (default: all cores). ``method``: ``"batch"`` (fast path) or
+    ``scheduler``: see the module docstring. ``workers``: threads or processes of the local scheduler (default: all
+    cores). ``method``: ``"batch"`` (fast path) or
     ``"simulation"`` (one Simulation per point). ``on_block(number)`` is called after each block is stored.
     ``dashboard``: address of the local cluster's Bokeh dashboard (e.g. ``":8787"``); None (default): none is
     started, so a study opens no port unless asked. ``progress(total, completed)``: a context manager that yields
@@ -83,35 +91,41 @@ def run_study(study, out: str | Path, scheduler: str | None = None, resume: bool
     pending = [block for block in blocks if block.number not in done]
     tally = WarningTally()  # once per cause: a friction warning at 10⁵ unit loads is one message
 
-    def finish(block, arrays, block_messages) -> None:
-        store.write_block(block, arrays)
-        tally.update(block_messages)
+    def marked(block, messages) -> None:  # the block's data are stored: mark it, count its warnings
+        store.mark_done(block)
+        tally.update(messages)
         if on_block is not None:
             on_block(block.number)
 
     with ExitStack() as stack:
         advance = stack.enter_context((progress or _no_progress)(
             study.size, sum(block.size for block in blocks if block.number in done)))
-        if pending and scheduler == "serial":
+        kind = local_scheduler(study, method, dashboard) if scheduler in (None, "", "local") else scheduler
+        if pending and kind == "serial":
             for block in pending:
-                finish(block, *compute_block(study, block, method))
+                arrays, messages = compute_block(study, block, method)
+                store.write_data(block, arrays)
+                marked(block, messages)
                 advance(block.size)
+        elif pending and kind == "threads":
+            from concurrent.futures import ThreadPoolExecutor, as_completed
+
+            store.open_arrays()  # opened here, so the workers never touch zarr's warning filters
+            unscoped = stack.enter_context(warning_scope.routed())
+            pool = stack.enter_context(ThreadPoolExecutor(_worker_count(workers), "thermogear-study"))
+            futures = {pool.submit(_compute_and_store, study, block, method, store): block for block in pending}
+            _collect(futures, as_completed, marked, advance)
+            stack.close()  # the pool has finished and the router is gone: its unscoped warnings are final
+            tally.update(_texts(unscoped))
         elif pending:
-            client = stack.enter_context(_client(scheduler, workers, dashboard))
+            client = stack.enter_context(_client(kind, workers, dashboard))
             from distributed import as_completed
 
             shared = client.scatter(study, broadcast=True, hash=False)
             futures = {client.submit(compute_and_write_block, shared, block, method, str(store.path), pure=False):
                        block for block in pending}
             try:
-                for future in as_completed(futures):
-                    block = futures.pop(future)
-                    messages = future.result()  # raises the task's error: the block stays unmarked
-                    store.mark_done(block)
-                    tally.update(messages)
-                    if on_block is not None:
-                        on_block(block.number)
-                    advance(block.size)
+                _collect(futures, as_completed, marked, advance)
             finally:
                 client.cancel(list(futures))
     # read from the store when used: a 10⁶-point study is not held in memory
@@ -119,20 +133,57 @@ def run_study(study, out: str | Path, scheduler: str | None = None, resume: bool
                     path=Path(out))
 
 
+def local_scheduler(study, method: str, dashboard: str | None = None) -> str:
+    """The local scheduler for a study: ``"threads"`` where every model of its case runs on the fast path (the
+    numba kernel releases the GIL), ``"processes"`` otherwise (pure-Python points need processes to run in
+    parallel) and wherever a dashboard is asked for (the Dask cluster serves it)."""
+    if dashboard is None and method == "batch" and fast_path_applies(study.case, study.models):
+        return "threads"
+    return "processes"
+
+
+def _worker_count(workers: int | None) -> int:
+    return workers or os.cpu_count() or 1
+
+
+def _compute_and_store(study, block, method: str, store) -> list[str]:
+    """One task of a threaded run: compute a block and write its data through the driver's store object."""
+    arrays, messages = evaluate_block(study, block, method)
+    store.write_data(block, arrays)
+    return messages
+
+
+def _collect(futures: dict, as_completed: Callable, marked: Callable, advance: Callable) -> None:
+    """Mark each block as its task returns (a task's error is raised here: its block stays unmarked); the tasks
+    not yet started are cancelled when one fails or the run is interrupted."""
+    try:
+        for future in as_completed(futures):
+            block = futures.pop(future)
+            marked(block, future.result())
+            advance(block.size)
+    finally:
+        for future in futures:
+            future.cancel()
+
+
+def _texts(caught) -> list[str]:
+    return [f"{item.category.__name__}: {item.message}" for item in caught]
+
+
 def _client(scheduler: str | None, workers: int | None, dashboard: str | None = None):
     """A distributed Client: on a new LocalCluster (closed with the client; a dashboard only at ``dashboard``)
     or on a scheduler address."""
     from distributed import Client, LocalCluster
 
-    if scheduler in (None, "", "local"):
-        count = workers or os.cpu_count() or 1
+    if scheduler == "processes":
+        count = _worker_count(workers)
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
-            cluster = LocalCluster(n_workers=count, threads_per_worker=1, processes=True,
+            cluster = LocalCluster(n_workers=count, threads_per_worker=1, processes=os.environ.get("TG_THREADS") is None,
                                    dashboard_address=dashboard)
         return _OwnedClient(Client(cluster), cluster)
     if workers is not None:
-        raise CaseError("workers", workers, "only with the local cluster",
+        raise CaseError("workers", workers, "only with a local scheduler (threads or processes)",
                         "a remote scheduler has its own workers")
     return Client(scheduler, timeout="30s")
 

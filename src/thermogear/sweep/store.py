@@ -214,6 +214,11 @@ class ResultStore:
         """Record a block whose data are completely written."""
         self._array(_DONE)[block.number] = 1
 
+    def open_arrays(self) -> None:
+        """Open every array now (the driver of a threaded run does, so its workers only write data)."""
+        for name in (*MODEL_VARIABLES, *POINT_VARIABLES, _DONE):
+            self._array(name)
+
     def _array(self, name: str):
         """The zarr array ``name``, opened once per store object (opening reads its metadata from disk)."""
         if name not in self._arrays:

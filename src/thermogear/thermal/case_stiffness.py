@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from thermogear import warning_scope
 from thermogear.case import cached_per_case
 from thermogear.stiffness.potential_energy import pair_compliance
 from thermogear.stiffness.table import pair_compliance_table, tooth_compliance_at
@@ -99,8 +100,7 @@ def _spline(case: "Case", normal_load: float):
     splines = _splines_of_case(case)
     entry = splines.get(normal_load)
     if entry is None:
-        with warnings.catch_warnings(record=True) as caught:
-            warnings.simplefilter("always")
+        with warning_scope.recorded() as caught:
             roll = np.asarray(pair_compliance_table(case.gear_pair, case.material).roll)
             spline = CubicSpline(roll, _thermal_pair_stiffness_direct(case, roll, None, normal_load))
         if len(splines) >= _SPLINES_PER_CASE:

@@ -15,10 +15,10 @@ rises above the stress-free state, which the paper does not say).
 
 from __future__ import annotations
 
-import warnings
 from collections.abc import Callable
 from typing import TYPE_CHECKING
 
+from thermogear import warning_scope
 from thermogear.case import cached_per_case
 from thermogear.errors import ModelAssumptionWarning, ThermogearError
 # The field, its checks and the fit need no case machinery: they live in thermogear.temperature_field so that the
@@ -76,6 +76,5 @@ def _lubricant_data_maximum_c(case: "Case") -> float | None:
         from thermogear.lubricant import lubricant_from_case  # noqa: PLC0415
     except ImportError:  # the lubricant module is optional for the thermal stiffness
         return DEFAULT_LUBRICANT_DATA_MAXIMUM_C
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", ModelAssumptionWarning)  # the lubricant model reports its own assumptions
+    with warning_scope.ignored(ModelAssumptionWarning):  # the lubricant model reports its own assumptions
         return float(lubricant_from_case(case).fitted_range_c[1])

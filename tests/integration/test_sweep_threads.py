@@ -1,0 +1,71 @@
+"""The threaded local scheduler: the serial dataset bit for bit, every warning once, no warning state touched."""
+
+from __future__ import annotations
+
+import threading
+import warnings
+
+import numpy as np
+import pytest
+
+from thermogear.sweep import Study, run_study
+from thermogear.sweep import engine
+
+# luo2019 at 30 °C oil warns that the viscosity line is extrapolated; 8 chunks give the two threads four each
+GRID = ["speed_rpm=1000:12000:40", "torque_nm=200,300,400,500"]
+
+
+@pytest.fixture()
+def study(luo2019):
+    return Study.define(luo2019, GRID, chunk_points=20)
+
+
+def test_local_default_is_threads_on_the_fast_path_and_processes_otherwise(study, luo2019):
+    assert engine.local_scheduler(study, "batch") == "threads"
+    assert engine.local_scheduler(study, "simulation") == "processes"  # pure Python per point: processes
+    assert engine.local_scheduler(study, "batch", dashboard=":0") == "processes"  # the Dask cluster serves it
+    nonlinear = Study.define(luo2019.with_changes(**{"dynamics.mesh": "nonlinear"}), GRID, chunk_points=20)
+    assert engine.local_scheduler(nonlinear, "batch") == "processes"  # no fast path: one point at a time
+
+
+def test_threads_give_the_serial_dataset_and_its_warnings(study, tmp_path, monkeypatch):
+    before = (warnings.showwarning, list(warnings.filters))
+    outside_main: list[str] = []
+    original = warnings.catch_warnings
+
+    class Watched(original):  # a catch_warnings block in a worker thread would race the other workers
+        def __enter__(self):
+            if threading.current_thread() is not threading.main_thread():
+                outside_main.append(threading.current_thread().name)
+            return super().__enter__()
+
+    serial = run_study(study, tmp_path / "serial.zarr", scheduler="serial")
+    monkeypatch.setattr(warnings, "catch_warnings", Watched)
+    threaded = run_study(study, tmp_path / "threads.zarr", scheduler="threads", workers=2)
+    monkeypatch.undo()
+    assert threaded.computed == serial.computed == len(study.blocks()) == 8
+    for name in serial.dataset.data_vars:
+        assert np.array_equal(np.asarray(threaded.dataset[name]), np.asarray(serial.dataset[name]), equal_nan=True)
+    assert threaded.messages == serial.messages
+    assert any("extrapolated" in message for message in serial.messages)
+    assert outside_main == []
+    assert (warnings.showwarning, list(warnings.filters)) == before
+
+
+def test_a_failing_block_stops_the_threaded_run_and_stays_unmarked(study, tmp_path, monkeypatch):
+    from thermogear.sweep.store import open_result
+
+    def fail_on_third(study_, block, method):
+        if block.number == 2:
+            raise RuntimeError("block 2 failed")
+        return original(study_, block, method)
+
+    original = engine.evaluate_block
+    monkeypatch.setattr(engine, "evaluate_block", fail_on_third)
+    with pytest.raises(RuntimeError, match="block 2 failed"):
+        run_study(study, tmp_path / "r.zarr", scheduler="threads", workers=2)
+    done = np.asarray(open_result(tmp_path / "r.zarr", keep_record=True)["chunk_done"])
+    assert done[2] == 0
+    monkeypatch.undo()
+    resumed = run_study(study, tmp_path / "r.zarr", scheduler="threads", workers=2, resume=True)
+    assert resumed.computed == 8 - int(done.sum()) and resumed.skipped == int(done.sum())
