@@ -264,28 +264,33 @@ def evaluate_block(study, block, method: str = "batch") -> tuple[dict[str, np.nd
     """
     shape = block.shape
     result = empty_block_result(study.models, shape)
-    points = study.block_values(block)
+    axes = [parameter.values[part] for parameter, part in zip(study.parameters, block.slices)]
     speed_axis = next((a for a, p in enumerate(study.parameters) if p.key == "operating.speed_rpm"), None)
     messages: list[str] = []
     with warning_scope.recorded() as caught:
-        groups: dict[tuple, list[int]] = {}
-        for flat, values in enumerate(points):
-            key = tuple(v for a, v in enumerate(values) if a != speed_axis) if speed_axis is not None else (flat,)
-            groups.setdefault(key, []).append(flat)
-        for members in groups.values():
-            group_case = study.case_at(points[members[0]])
-            indices = np.unravel_index(np.array(members), shape)
-            speeds = np.array([points[m][speed_axis] if speed_axis is not None
-                               else group_case.operating_point.speed_rpm for m in members], dtype=float)
+        # a group: the points of the block that differ only in speed (a row along the speed axis); without a
+        # speed axis every point is a group of one at the case's speed
+        rows = [axis for axis in range(len(shape)) if axis != speed_axis]
+        members = len(axes[speed_axis]) if speed_axis is not None else 1
+        for row in np.ndindex(*(shape[axis] for axis in rows)):
+            position = dict(zip(rows, row))
+            values = [axes[axis][position[axis]] if axis != speed_axis else axes[axis][0] for axis in range(len(shape))]
+            group_case = study.case_at(tuple(values))
+            speeds = (np.array(axes[speed_axis], dtype=float) if speed_axis is not None
+                      else np.array([group_case.operating_point.speed_rpm], dtype=float))
+            indices = tuple(np.arange(members) if axis == speed_axis else np.full(members, position[axis])
+                            for axis in range(len(shape)))
             for model_index, model in enumerate(study.models):
-                values = (evaluate_group(MeshModel(group_case, model), speeds) if method == "batch" else None)
-                if values is not None:
-                    _store(result, values, model_index, indices)
+                group = evaluate_group(MeshModel(group_case, model), speeds) if method == "batch" else None
+                if group is not None:
+                    _store(result, group, model_index, indices)
                     continue
-                for member, position in zip(members, zip(*indices)):
-                    point_case = group_case if member == members[0] else study.case_at(points[member])
+                for member in range(members):
+                    if member:
+                        values[speed_axis] = axes[speed_axis][member]
+                    point_case = group_case if member == 0 else study.case_at(tuple(values))
                     one = {k: np.array([v]) for k, v in evaluate_point(point_case, model).items()}
-                    _store(result, one, model_index, tuple(np.array([p]) for p in position))
+                    _store(result, one, model_index, tuple(np.array([index[member]]) for index in indices))
     for item in caught:
         text = f"{item.category.__name__}: {item.message}"
         if text not in messages:
