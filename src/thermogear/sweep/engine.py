@@ -114,6 +114,8 @@ def run_study(study, out: str | Path, scheduler: str | None = None, resume: bool
             unscoped = stack.enter_context(warning_scope.routed())
             pool = stack.enter_context(ThreadPoolExecutor(_worker_count(workers), "thermogear-study"))
             futures = {pool.submit(_compute_and_store, study, block, method, store): block for block in pending}
+            import xarray  # noqa: F401, PLC0415  (opens the result; imported while the workers compute)
+
             _collect(futures, as_completed, marked, advance)
             stack.close()  # the pool has finished and the router is gone: its unscoped warnings are final
             tally.update(_texts(unscoped))
