@@ -170,11 +170,19 @@ class ResultStore:
         """Write a block's arrays into their region, without its marker (a worker writes its own block's data;
         the driver marks the block once the worker has returned). Blocks are whole zarr chunks, so processes
         writing different blocks never touch the same file."""
+        import asyncio
+
+        from zarr.core.sync import sync
+
         region = tuple(block.slices)
-        for name in MODEL_VARIABLES:
-            self._array(name)[(slice(None), *region)] = arrays[name]
-        for name in POINT_VARIABLES:
-            self._array(name)[region] = arrays[name]
+        writes = [self._array(name).async_array.setitem((slice(None), *region), arrays[name])
+                  for name in MODEL_VARIABLES]
+        writes += [self._array(name).async_array.setitem(region, arrays[name]) for name in POINT_VARIABLES]
+
+        async def write_all() -> None:  # one trip to zarr's event loop for all arrays, written concurrently
+            await asyncio.gather(*writes)
+
+        sync(write_all())
 
     def mark_done(self, block) -> None:
         """Record a block whose data are completely written."""
