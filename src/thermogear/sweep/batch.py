@@ -122,6 +122,9 @@ def fast_path_applies(case, models) -> bool:
 
 
 # ------------------------------------------------------------------------------------------- fast path
+LOAD_KEYS = ("operating.torque_nm", "operating.power_kw", "operating.fzg_load_stage")  # keys that set the load
+
+
 def evaluate_loads(tables: GroupTables, speeds_rpm, loads, samples: int | None = None) -> dict[str, np.ndarray]:
     """Metrics of one group at many (speed [rpm], normal load [N]) points; arrays of the shape of ``speeds_rpm``.
     Loads other than the table's need its ``load_exponent``. Unstable points (a Floquet multiplier modulus >= 1)
@@ -181,15 +184,24 @@ def evaluate_speeds(tables: GroupTables, speeds_rpm, samples: int | None = None)
     return evaluate_loads(tables, speeds_rpm, tables.normal_load, samples)
 
 
-def evaluate_group(mesh: MeshModel, speeds_rpm) -> dict[str, np.ndarray] | None:
+def load_scaled_tables(mesh: MeshModel) -> bool:
+    """True where one GroupTables serves every load of this model by its damping's load exponent (its stiffness
+    and load shares do not move with the load): the points that differ only in speed and load share one."""
+    scaling = mesh.damping_scaling
+    return scaling is not None and scaling[1] is not None and not mesh.stiffness_depends_on_load
+
+
+def evaluate_group(mesh: MeshModel, speeds_rpm, reference: GroupTables | None = None
+                   ) -> dict[str, np.ndarray] | None:
     """Metrics of a mesh model at many speeds [rpm], each under the mesh model's load at that speed; None where
-    the fast path cannot be exact for this model (the caller runs the per-point path)."""
+    the fast path cannot be exact for this model (the caller runs the per-point path). ``reference``: tables of
+    the same case at another load, where :func:`load_scaled_tables` lets them serve this one."""
     speeds = np.asarray(speeds_rpm, dtype=float)
     loads = _normal_loads(mesh, speeds)
-    reference = group_tables(mesh)
+    reference = reference if reference is not None else group_tables(mesh)
     if reference is None:
         return None
-    if reference.load_exponent is not None and not mesh.stiffness_depends_on_load:
+    if load_scaled_tables(mesh):
         return evaluate_loads(reference, speeds, loads)
     result: dict[str, np.ndarray] = {}
     for load in np.unique(loads):
@@ -266,6 +278,8 @@ def evaluate_block(study, block, method: str = "batch") -> tuple[dict[str, np.nd
     result = empty_block_result(study.models, shape)
     axes = [parameter.values[part] for parameter, part in zip(study.parameters, block.slices)]
     speed_axis = next((a for a, p in enumerate(study.parameters) if p.key == "operating.speed_rpm"), None)
+    load_axes = {a for a, p in enumerate(study.parameters) if p.key in LOAD_KEYS}
+    shared: dict[tuple, GroupTables] = {}  # tables of the rows that differ only in load, per model
     messages: list[str] = []
     with warning_scope.recorded() as caught:
         # a group: the points of the block that differ only in speed (a row along the speed axis); without a
@@ -281,7 +295,15 @@ def evaluate_block(study, block, method: str = "batch") -> tuple[dict[str, np.nd
             indices = tuple(np.arange(members) if axis == speed_axis else np.full(members, position[axis])
                             for axis in range(len(shape)))
             for model_index, model in enumerate(study.models):
-                group = evaluate_group(MeshModel(group_case, model), speeds) if method == "batch" else None
+                group = None
+                if method == "batch":
+                    mesh = MeshModel(group_case, model)
+                    key = (model, *(values[a] for a in range(len(shape)) if a != speed_axis and a not in load_axes))
+                    if key not in shared and load_scaled_tables(mesh):
+                        tables = group_tables(mesh)
+                        if tables is not None:
+                            shared[key] = tables
+                    group = evaluate_group(mesh, speeds, shared.get(key))
                 if group is not None:
                     _store(result, group, model_index, indices)
                     continue
