@@ -69,3 +69,13 @@ def test_a_failing_block_stops_the_threaded_run_and_stays_unmarked(study, tmp_pa
     monkeypatch.undo()
     resumed = run_study(study, tmp_path / "r.zarr", scheduler="threads", workers=2, resume=True)
     assert resumed.computed == 8 - int(done.sum()) and resumed.skipped == int(done.sum())
+
+
+def test_a_dashboard_needs_the_dask_cluster_and_is_refused_before_writing(study, tmp_path):
+    from thermogear.errors import CaseError
+
+    for scheduler in ("threads", "serial"):
+        with pytest.raises(CaseError) as raised:
+            run_study(study, tmp_path / "r.zarr", scheduler=scheduler, dashboard=":0")
+        assert raised.value.key == "--dashboard"
+    assert not (tmp_path / "r.zarr").exists()

@@ -85,6 +85,10 @@ def run_study(study, out: str | Path, scheduler: str | None = None, resume: bool
     """
     if method not in METHODS:
         raise CaseError("method", method, " | ".join(METHODS), "unknown evaluation method")
+    kind = local_scheduler(study, method, dashboard) if scheduler in (None, "", "local") else scheduler
+    if dashboard is not None and kind != "processes":  # refused before anything is written
+        raise CaseError("--dashboard", dashboard, "only with the local Dask cluster (--scheduler processes)",
+                        f"the {kind} scheduler serves no dashboard of its own")
     store = ResultStore.resume(out, study) if resume else ResultStore.create(out, study, overwrite=overwrite)
     blocks = study.blocks()
     done = store.done_blocks()
@@ -100,7 +104,6 @@ def run_study(study, out: str | Path, scheduler: str | None = None, resume: bool
     with ExitStack() as stack:
         advance = stack.enter_context((progress or _no_progress)(
             study.size, sum(block.size for block in blocks if block.number in done)))
-        kind = local_scheduler(study, method, dashboard) if scheduler in (None, "", "local") else scheduler
         if pending and kind == "serial":
             for block in pending:
                 arrays, messages = compute_block(study, block, method)
