@@ -191,22 +191,24 @@ def load_scaled_tables(mesh: MeshModel) -> bool:
     return scaling is not None and scaling[1] is not None and not mesh.stiffness_depends_on_load
 
 
-def evaluate_group(mesh: MeshModel, speeds_rpm, reference: GroupTables | None = None
+def evaluate_group(mesh: MeshModel, speeds_rpm, reference: GroupTables | None = None, loads=None
                    ) -> dict[str, np.ndarray] | None:
-    """Metrics of a mesh model at many speeds [rpm], each under the mesh model's load at that speed; None where
-    the fast path cannot be exact for this model (the caller runs the per-point path). ``reference``: tables of
-    the same case at another load, where :func:`load_scaled_tables` lets them serve this one."""
+    """Metrics of a mesh model at many speeds [rpm]; None where the fast path cannot be exact for this model (the
+    caller runs the per-point path). ``loads``: the normal load [N] at each speed (default: the mesh model's at
+    that speed); the mesh model takes them as arguments, so the model of one case serves the points of cases that
+    differ from it only in load. ``reference``: tables of the same case at another load, where
+    :func:`load_scaled_tables` lets them serve every load."""
     speeds = np.asarray(speeds_rpm, dtype=float)
-    loads = _normal_loads(mesh, speeds)
-    reference = reference if reference is not None else group_tables(mesh)
-    if reference is None:
-        return None
+    loads = _normal_loads(mesh, speeds) if loads is None else np.asarray(loads, dtype=float)
     if load_scaled_tables(mesh):
-        return evaluate_loads(reference, speeds, loads)
+        reference = reference if reference is not None else group_tables(mesh)
+        return None if reference is None else evaluate_loads(reference, speeds, loads)
     result: dict[str, np.ndarray] = {}
     for load in np.unique(loads):
         members = np.flatnonzero(loads == load)
-        tables = reference if load == reference.normal_load else group_tables(mesh, float(load))
+        tables = group_tables(mesh, float(load))
+        if tables is None:
+            return None
         values = evaluate_loads(tables, speeds[members], loads[members])
         for name, array in values.items():
             result.setdefault(name, np.empty(speeds.shape, dtype=array.dtype))[members] = array
@@ -279,7 +281,9 @@ def evaluate_block(study, block, method: str = "batch") -> tuple[dict[str, np.nd
     axes = [parameter.values[part] for parameter, part in zip(study.parameters, block.slices)]
     speed_axis = next((a for a, p in enumerate(study.parameters) if p.key == "operating.speed_rpm"), None)
     load_axes = {a for a, p in enumerate(study.parameters) if p.key in LOAD_KEYS}
-    shared: dict[tuple, GroupTables] = {}  # tables of the rows that differ only in load, per model
+    # per model, the mesh model (and for a load-scaled model its tables) of the first row of the rows that differ
+    # only in load: the mesh model takes the load as an argument, so it serves them all
+    shared: dict[tuple, tuple[MeshModel, GroupTables | None]] = {}
     messages: list[str] = []
     with warning_scope.recorded() as caught:
         # a group: the points of the block that differ only in speed (a row along the speed axis); without a
@@ -299,11 +303,10 @@ def evaluate_block(study, block, method: str = "batch") -> tuple[dict[str, np.nd
                 if method == "batch":
                     mesh = MeshModel(group_case, model)
                     key = (model, *(values[a] for a in range(len(shape)) if a != speed_axis and a not in load_axes))
-                    if key not in shared and load_scaled_tables(mesh):
-                        tables = group_tables(mesh)
-                        if tables is not None:
-                            shared[key] = tables
-                    group = evaluate_group(mesh, speeds, shared.get(key))
+                    if key not in shared:
+                        shared[key] = (mesh, group_tables(mesh) if load_scaled_tables(mesh) else None)
+                    first, tables = shared[key]
+                    group = evaluate_group(first, speeds, tables, loads=_normal_loads(mesh, speeds))
                 if group is not None:
                     _store(result, group, model_index, indices)
                     continue
