@@ -34,10 +34,9 @@ from thermogear.sweep.batch import evaluate_block, fast_path_applies
 from thermogear.sweep.store import ResultStore
 from thermogear.warning_causes import WarningTally
 
-__all__ = ["StudyRun", "compute_block", "compute_and_write_block", "run_study"]
+__all__ = ["StudyRun", "compute_block", "compute_and_write_block", "local_scheduler", "run_study"]
 
 METHODS = ("batch", "simulation")
-LOCAL = ("threads", "processes")  # the local schedulers besides "serial"
 
 
 def compute_block(study, block, method: str = "batch"):
@@ -77,8 +76,7 @@ def run_study(study, out: str | Path, scheduler: str | None = None, resume: bool
 
     ``resume``: continue the study stored at ``out`` (finished blocks are kept and not recomputed).
     ``scheduler``: see the module docstring. ``workers``: threads or processes of the local scheduler (default: all
-    cores). ``method``: ``"batch"`` (fast path) or
-    ``"simulation"`` (one Simulation per point). ``on_block(number)`` is called after each block is stored.
+    cores). ``method``: ``"batch"`` (fast path) or ``"simulation"`` (one Simulation per point). ``on_block(number)`` is called after each block is stored.
     ``dashboard``: address of the local cluster's Bokeh dashboard (e.g. ``":8787"``); None (default): none is
     started, so a study opens no port unless asked. ``progress(total, completed)``: a context manager that yields
     ``advance(points)`` (the command line passes its progress bar; None: no progress shown).

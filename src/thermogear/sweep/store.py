@@ -161,11 +161,6 @@ class ResultStore:
         marks = np.asarray(self._group[_DONE][:])
         return {int(i) for i in np.flatnonzero(marks == 1)}
 
-    def write_block(self, block, arrays: dict[str, np.ndarray]) -> None:
-        """Write a block's arrays into their region, then mark the block done (the marker goes last)."""
-        self.write_data(block, arrays)
-        self.mark_done(block)
-
     def write_data(self, block, arrays: dict[str, np.ndarray]) -> None:
         """Write a block's arrays into their region, without its marker (a worker writes its own block's data;
         the driver marks the block once the worker has returned). Blocks are whole zarr chunks, so processes
