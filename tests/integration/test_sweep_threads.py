@@ -20,6 +20,24 @@ def study(luo2019):
     return Study.define(luo2019, GRID, chunk_points=20)
 
 
+@pytest.fixture()
+def catch_warnings_in_workers(monkeypatch):
+    """Names of the non-main threads that open a catch_warnings block (it would race the other workers); the
+    watch is on while the test sets ``watch[0] = True``."""
+    entered: list[str] = []
+    watch = [False]
+    original = warnings.catch_warnings
+
+    class Watched(original):
+        def __enter__(self):
+            if watch[0] and threading.current_thread() is not threading.main_thread():
+                entered.append(threading.current_thread().name)
+            return super().__enter__()
+
+    monkeypatch.setattr(warnings, "catch_warnings", Watched)
+    return entered, watch
+
+
 def test_local_default_is_threads_on_the_fast_path_and_processes_otherwise(study, luo2019):
     assert engine.local_scheduler(study, "batch") == "threads"
     assert engine.local_scheduler(study, "simulation") == "processes"  # pure Python per point: processes
@@ -28,21 +46,13 @@ def test_local_default_is_threads_on_the_fast_path_and_processes_otherwise(study
     assert engine.local_scheduler(nonlinear, "batch") == "processes"  # no fast path: one point at a time
 
 
-def test_threads_give_the_serial_dataset_and_its_warnings(study, tmp_path, monkeypatch):
+def test_threads_give_the_serial_dataset_and_its_warnings(study, tmp_path, catch_warnings_in_workers):
+    outside_main, watch = catch_warnings_in_workers
     before = (warnings.showwarning, list(warnings.filters))
-    outside_main: list[str] = []
-    original = warnings.catch_warnings
-
-    class Watched(original):  # a catch_warnings block in a worker thread would race the other workers
-        def __enter__(self):
-            if threading.current_thread() is not threading.main_thread():
-                outside_main.append(threading.current_thread().name)
-            return super().__enter__()
-
     serial = run_study(study, tmp_path / "serial.zarr", scheduler="serial")
-    monkeypatch.setattr(warnings, "catch_warnings", Watched)
+    watch[0] = True
     threaded = run_study(study, tmp_path / "threads.zarr", scheduler="threads", workers=2)
-    monkeypatch.undo()
+    watch[0] = False
     assert threaded.computed == serial.computed == len(study.blocks()) == 8
     for name in serial.dataset.data_vars:
         assert np.array_equal(np.asarray(threaded.dataset[name]), np.asarray(serial.dataset[name]), equal_nan=True)
@@ -79,3 +89,17 @@ def test_a_dashboard_needs_the_dask_cluster_and_is_refused_before_writing(study,
             run_study(study, tmp_path / "r.zarr", scheduler=scheduler, dashboard=":0")
         assert raised.value.key == "--dashboard"
     assert not (tmp_path / "r.zarr").exists()
+
+
+def test_per_point_path_on_threads_touches_no_warning_state(luo2019, tmp_path, catch_warnings_in_workers):
+    # one Simulation per point (the path of points the fast path cannot take), two blocks of four points
+    outside_main, watch = catch_warnings_in_workers
+    small = Study.define(luo2019, ["speed_rpm=2000,4000,6000,8000", "torque_nm=200,400"], chunk_points=4)
+    serial = run_study(small, tmp_path / "serial.zarr", scheduler="serial", method="simulation")
+    watch[0] = True
+    threaded = run_study(small, tmp_path / "threads.zarr", scheduler="threads", workers=2, method="simulation")
+    watch[0] = False
+    for name in serial.dataset.data_vars:
+        assert np.array_equal(np.asarray(threaded.dataset[name]), np.asarray(serial.dataset[name]), equal_nan=True)
+    assert threaded.messages == serial.messages
+    assert outside_main == []
