@@ -28,6 +28,7 @@ from thermogear.operating import OperatingPoint
 from thermogear.schema import (CaseFile, DampingSection, DynamicsSection, FemSection, GearsSection, HousingSection,
                                LubricantSection, MaterialSection, TemperatureSection, ThermalSection)
 from thermogear.temperature_field import check_temperatures, temperature_field_from_section
+from thermogear.text_files import read_user_text
 from thermogear.thermoelastic.inputs import check_thermoelastic_inputs
 
 
@@ -140,13 +141,7 @@ def load_case(name_or_path: str | Path) -> Case:
         if not path.is_file():
             raise CaseError("case", text_source, "an existing .toml file or a built-in name "
                             f"({', '.join(parameter_set_names())})", "no such file")
-        try:
-            text = path.read_text(encoding="utf-8")
-        except UnicodeDecodeError as error:
-            raise CaseError("case", text_source, "a UTF-8 text file (TOML)",
-                            f"byte {error.start} cannot be read as UTF-8 (a binary or latin-1 file?)") from None
-        except OSError as error:
-            raise CaseError("case", text_source, "a readable .toml file", error.strerror or str(error)) from None
+        text = read_user_text(path, "case", text_source, "TOML")
     elif text_source in parameter_set_names():
         text = parameter_set_path(text_source).read_text(encoding="utf-8")
     else:

@@ -21,6 +21,7 @@ from pathlib import Path
 import numpy as np
 
 from thermogear.errors import CaseError, ExtrapolationWarning, ModelAssumptionWarning
+from thermogear.text_files import read_user_text
 
 #: Highest tooth temperature the material data cover [°C]. The case holds room-temperature E, ν and a constant
 #: expansion coefficient; case-carburised and through-hardened gear steels are tempered at about 150–200 °C, above
@@ -304,13 +305,7 @@ def read_flank_table_csv(name: str, directory: Path | None = None) -> tuple[list
     if not path.is_file():
         raise CaseError("temperature.csv", name, "an existing CSV file (relative to the case file)",
                         f"no such file ({path})")
-    try:
-        text = path.read_text(encoding="utf-8")
-    except UnicodeDecodeError as error:
-        raise CaseError("temperature.csv", name, "a UTF-8 text file",
-                        f"byte {error.start} cannot be read as UTF-8 (a binary or latin-1 file?)") from None
-    except OSError as error:
-        raise CaseError("temperature.csv", name, "a readable CSV file", error.strerror or str(error)) from None
+    text = read_user_text(path, "temperature.csv", name, "CSV")
     lines = [row for row in text.splitlines() if row.strip() and not row.lstrip().startswith("#")]
     reader = csv.DictReader(lines)
     columns = [c.strip() for c in (reader.fieldnames or [])]

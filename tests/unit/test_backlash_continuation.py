@@ -11,23 +11,15 @@ import numpy as np
 import pytest
 
 from thermogear.dynamics.backlash_continuation import follow_branch
-from thermogear.dynamics.backlash_problem import BacklashMeshProblem
 from thermogear.dynamics import periodic_steady_state
 from thermogear.errors import ProblemError
 
-MASS, K0, FORCE = 1.0, 1e8, 1e3
-X_STATIC = FORCE / K0
+from backlash_textbook import X_STATIC, textbook_problem
 
 
-def textbook(ratio, zeta=0.03, eps=0.1, deviation=0.1, backlash=1.0, n=32):
-    period = 2.0 * np.pi / (ratio * np.sqrt(K0 / MASS))
-    tau = (np.arange(n) + 0.5) / n
-    stiffness = K0 * (1.0 + eps * np.cos(2.0 * np.pi * tau))
-    error = deviation * X_STATIC * np.sin(2.0 * np.pi * tau)
-    return BacklashMeshProblem(mass=MASS, nodes=np.linspace(0.0, period, n + 1), pair_stiffness=stiffness[None],
-                               pair_deviation=error[None], back_pair_stiffness=stiffness[None],
-                               back_pair_deviation=-error[None], backlash=backlash * X_STATIC,
-                               damping=np.full(n, 2.0 * zeta * np.sqrt(K0 * MASS)), force=FORCE)
+def textbook(ratio, zeta=0.03, **options):
+    """The textbook oscillator (module ``backlash_textbook``) with this file's damping ratio 0.03."""
+    return textbook_problem(ratio, zeta, **options)
 
 
 @pytest.fixture(scope="module")

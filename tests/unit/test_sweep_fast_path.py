@@ -15,9 +15,11 @@ import numpy as np
 import pytest
 
 from thermogear.case import load_case
-from thermogear.sweep.batch import MODEL_VARIABLES, POINT_VARIABLES, evaluate_block
+from thermogear.sweep.batch import evaluate_block
 from thermogear.sweep.inert import inert_parameters
 from thermogear.sweep.study import Study
+
+from sweep_paths import assert_fast_path_equals_simulation
 
 GRIDS = {
     "speed x power": ["power_kw=40,80", "speed_rpm=1000:4000:4"],
@@ -39,16 +41,7 @@ def luo():
 def test_fast_path_equals_one_simulation_per_point(luo, name):
     case = luo.with_changes(**{"gears.centre_distance_mm": None}) if name == "module" else luo
     study = Study.define(case, GRIDS[name], model="both", chunk_points=64)
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        fast, _ = evaluate_block(study, study.blocks()[0], "batch")
-        slow, _ = evaluate_block(study, study.blocks()[0], "simulation")
-    for variable in (*MODEL_VARIABLES, *POINT_VARIABLES):
-        a, b = np.asarray(fast[variable], float), np.asarray(slow[variable], float)
-        assert np.array_equal(np.isfinite(a), np.isfinite(b)), variable
-        finite = np.isfinite(b)
-        scale = np.maximum(np.abs(b[finite]), 1e-300)
-        assert np.all(np.abs(a[finite] - b[finite]) <= 1e-9 * scale), (name, variable)
+    assert_fast_path_equals_simulation(study, name)
 
 
 def test_power_sweep_keeps_the_power_so_the_load_falls_with_the_speed(luo):

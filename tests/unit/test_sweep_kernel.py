@@ -4,16 +4,16 @@ Simulation per point."""
 
 from __future__ import annotations
 
-import warnings
 
 import numpy as np
 import pytest
 
 from thermogear.case import load_case
 from thermogear.dynamics.periodic import _transition
-from thermogear.sweep.batch import MODEL_VARIABLES, POINT_VARIABLES, evaluate_block
 from thermogear.sweep.batch_kernel import _SERIES_DECAY, _SERIES_U, _step_transitions
 from thermogear.sweep.study import Study
+
+from sweep_paths import assert_fast_path_equals_simulation
 
 
 def test_series_transition_equals_the_closed_form_to_rounding():
@@ -44,32 +44,18 @@ def test_outside_the_series_range_the_closed_form_is_taken():
         assert np.all(entry == value)  # the same function, bit for bit
 
 
-def _compare(study):
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        fast, _ = evaluate_block(study, study.blocks()[0], "batch")
-        slow, _ = evaluate_block(study, study.blocks()[0], "simulation")
-    for variable in (*MODEL_VARIABLES, *POINT_VARIABLES):
-        a, b = np.asarray(fast[variable], float), np.asarray(slow[variable], float)
-        assert np.array_equal(np.isfinite(a), np.isfinite(b)), variable
-        finite = np.isfinite(b)
-        # only rounding separates the paths (measured below 1e-13): 1e-9 relative is the issue's bound
-        assert np.all(np.abs(a[finite] - b[finite]) <= 1e-9 * np.maximum(np.abs(b[finite]), 1e-300)), variable
-    return fast
-
-
 @pytest.mark.parametrize("changes", [{"dynamics.include_damping_force": True},
                                      {"dynamics.samples_per_interval": 3},
                                      {"dynamics.include_damping_force": True, "dynamics.samples_per_interval": 5}])
 def test_other_kernel_branches_equal_one_simulation_per_point(changes):
     case = load_case("luo2019").with_changes(**changes)
     study = Study.define(case, ["torque_nm=250,400", "speed_rpm=1500,4000,9000"], model="both", chunk_points=64)
-    _compare(study)
+    assert_fast_path_equals_simulation(study)
 
 
 def test_very_low_and_high_speeds_equal_one_simulation_per_point():
     # at 20 rpm a sub-step spans a large part of a natural period (|u| > 1/4: the closed form), at 20 000 rpm a
     # tiny one (the series)
     study = Study.define(load_case("luo2019"), ["speed_rpm=20,300,20000"], model="both", chunk_points=64)
-    fast = _compare(study)
+    fast = assert_fast_path_equals_simulation(study)
     assert np.all(fast["stable"] == 1), "unstable points would leave the comparison to NaN"
