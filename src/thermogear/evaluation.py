@@ -17,6 +17,7 @@ from typing import Any, Callable
 import numpy as np
 
 from thermogear.citations import cite
+from thermogear.warning_causes import warning_text
 
 __all__ = ["Evaluation", "MODELS", "STEPS", "evaluate_case", "is_paper_case", "thermoelastic_beside_paper"]
 
@@ -76,7 +77,7 @@ def _run_stage(evaluation: Evaluation, name: str, function: Callable[[], None]) 
         except Exception as error:  # noqa: BLE001 - a failed stage becomes "not computed: reason" in the report
             evaluation.problems[name] = f"{type(error).__name__}: {error}"
     for item in caught:
-        text = f"{item.category.__name__}: {item.message}"
+        text = warning_text(item)
         if text not in evaluation.warnings:
             evaluation.warnings.append(text)
     evaluation.timings[name] = _time.perf_counter() - start

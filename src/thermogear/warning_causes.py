@@ -12,10 +12,15 @@ from __future__ import annotations
 import re
 from collections.abc import Iterable
 
-__all__ = ["distinct_warnings", "warning_cause", "WarningTally"]
+__all__ = ["distinct_warnings", "warning_cause", "warning_text", "WarningTally"]
 
 # A number as printed by Python or NumPy: sign, digits, decimal point, exponent ("-1.5e+03", "312.4", "7").
 _NUMBER = re.compile(r"[-+−]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
+
+
+def warning_text(item) -> str:
+    """A recorded warning (``warnings.WarningMessage``) as one line: ``"Category: message"``."""
+    return f"{item.category.__name__}: {item.message}"
 
 
 def warning_cause(message: str) -> str:

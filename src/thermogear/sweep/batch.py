@@ -41,6 +41,7 @@ from thermogear import warning_scope
 from thermogear.errors import ModelLimitError, ProblemError
 from thermogear.mesh.model import MeshModel
 from thermogear.sweep.batch_kernel import periodic_metrics_batch
+from thermogear.warning_causes import warning_text
 
 __all__ = ["MODEL_VARIABLES", "POINT_VARIABLES", "GroupTables", "empty_block_result", "evaluate_block",
            "evaluate_loads", "evaluate_point", "evaluate_speeds", "group_tables"]
@@ -317,7 +318,7 @@ def evaluate_block(study, block, method: str = "batch") -> tuple[dict[str, np.nd
                     one = {k: np.array([v]) for k, v in evaluate_point(point_case, model).items()}
                     _store(result, one, model_index, tuple(np.array([index[member]]) for index in indices))
     for item in caught:
-        text = f"{item.category.__name__}: {item.message}"
+        text = warning_text(item)
         if text not in messages:
             messages.append(text)
     return result, messages

@@ -32,7 +32,7 @@ from thermogear import warning_scope
 from thermogear.errors import CaseError
 from thermogear.sweep.batch import evaluate_block, fast_path_applies
 from thermogear.sweep.store import ResultStore
-from thermogear.warning_causes import WarningTally
+from thermogear.warning_causes import WarningTally, warning_text
 
 __all__ = ["StudyRun", "compute_block", "compute_and_write_block", "local_scheduler", "run_study"]
 
@@ -47,9 +47,7 @@ def compute_block(study, block, method: str = "batch"):
 def compute_and_write_block(study, block, method: str, path: str) -> list[str]:
     """One task of a Dask run: compute a block, write its data into the store at ``path`` (not its marker: the
     driver writes it once this returns) and return the warnings raised computing it (run on a worker)."""
-    arrays, messages = evaluate_block(study, block, method)
-    ResultStore(path, study).write_data(block, arrays)
-    return messages
+    return _compute_and_store(study, block, method, ResultStore(path, study))
 
 
 class StudyRun:
@@ -76,7 +74,8 @@ def run_study(study, out: str | Path, scheduler: str | None = None, resume: bool
 
     ``resume``: continue the study stored at ``out`` (finished blocks are kept and not recomputed).
     ``scheduler``: see the module docstring. ``workers``: threads or processes of the local scheduler (default: all
-    cores). ``method``: ``"batch"`` (fast path) or ``"simulation"`` (one Simulation per point). ``on_block(number)`` is called after each block is stored.
+    cores). ``method``: ``"batch"`` (fast path) or ``"simulation"`` (one Simulation per point).
+    ``on_block(number)`` is called after each block is stored.
     ``dashboard``: address of the local cluster's Bokeh dashboard (e.g. ``":8787"``); None (default): none is
     started, so a study opens no port unless asked. ``progress(total, completed)``: a context manager that yields
     ``advance(points)`` (the command line passes its progress bar; None: no progress shown).
@@ -119,7 +118,7 @@ def run_study(study, out: str | Path, scheduler: str | None = None, resume: bool
 
             _collect(futures, as_completed, marked, advance)
             stack.close()  # the pool has finished and the router is gone: its unscoped warnings are final
-            tally.update(_texts(unscoped))
+            tally.update(warning_text(item) for item in unscoped)
         elif pending:
             client = stack.enter_context(_client(kind, workers, dashboard))
             from distributed import as_completed
@@ -150,7 +149,7 @@ def _worker_count(workers: int | None) -> int:
 
 
 def _compute_and_store(study, block, method: str, store) -> list[str]:
-    """One task of a threaded run: compute a block and write its data through the driver's store object."""
+    """Compute a block and write its data (not its marker) through ``store``; returns its warnings."""
     arrays, messages = evaluate_block(study, block, method)
     store.write_data(block, arrays)
     return messages
@@ -169,10 +168,6 @@ def _collect(futures: dict, as_completed: Callable, marked: Callable, advance: C
             future.cancel()
 
 
-def _texts(caught) -> list[str]:
-    return [f"{item.category.__name__}: {item.message}" for item in caught]
-
-
 def _client(scheduler: str | None, workers: int | None, dashboard: str | None = None):
     """A distributed Client: on a new LocalCluster (closed with the client; a dashboard only at ``dashboard``)
     or on a scheduler address."""
@@ -182,8 +177,7 @@ def _client(scheduler: str | None, workers: int | None, dashboard: str | None = 
         count = _worker_count(workers)
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
-            cluster = LocalCluster(n_workers=count, threads_per_worker=1, processes=os.environ.get("TG_THREADS") is None,
-                                   dashboard_address=dashboard)
+            cluster = LocalCluster(n_workers=count, threads_per_worker=1, processes=True, dashboard_address=dashboard)
         return _OwnedClient(Client(cluster), cluster)
     if workers is not None:
         raise CaseError("workers", workers, "only with a local scheduler (threads or processes)",
