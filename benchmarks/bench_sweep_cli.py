@@ -28,6 +28,12 @@ Figures (targets of the issue in brackets):
    shared virtual machine two virtual cores do not give twice one, so the study's ratio is also given as a
    fraction of the kernel's ratio measured in the same minute (its parallel efficiency on this machine).
 
+6. the fixed cost of one study and the two-thread ratio per point: each repeat also runs a 10⁴-point grid on
+   both schedulers, and ``seconds = fixed + points × per point`` through the two sizes separates what a study
+   costs however small (run once, on one thread: numba's first-use set-up, the store's creation, opening the
+   result, the last block) from what scales with the points. The ratio at 10⁵ points lies between the per-point
+   ratio and 1, the nearer the ratio the larger the study.
+
 ``--quick`` runs a 2·10⁴-point grid instead of 10⁵ (a smoke test of the script, not the issue's figures).
 """
 
@@ -46,6 +52,7 @@ from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
 REPEATS = 5
+SMALL_TORQUES = 10  # the 10⁴-point grid (x 1000 speeds) beside the main one: fixed cost vs cost per point
 RESULTS = HERE / "results"
 TIME = Path("/usr/bin/time")
 
@@ -82,6 +89,19 @@ def run_ceiling() -> dict:
     return json.loads(completed.stdout)
 
 
+def _fixed_and_per_point(runs: dict, repeat: int) -> dict[str, tuple[float, float]]:
+    """Per scheduler, (fixed seconds, seconds per point) of ``seconds = fixed + points·per_point`` through the
+    small and the main run of one repeat (the same minutes): the fixed part is what a study costs however small
+    (numba's first-use set-up, creating the store, opening the result, the last block's tail), and it runs on one
+    thread whatever the scheduler."""
+    split = {}
+    for scheduler, name in (("serial", "serial"), ("threads", "workers_2")):
+        small, main = runs[f"{name}_small_{repeat}"], runs[f"{name}_main_{repeat}"]
+        per_point = (main["seconds"] - small["seconds"]) / (main["points"] - small["points"])
+        split[scheduler] = (small["seconds"] - small["points"] * per_point, per_point)
+    return split
+
+
 def _median_run(runs: list[dict]) -> dict:
     """The run of median time among repeated runs of one command."""
     return sorted(runs, key=lambda run: run["seconds"])[len(runs) // 2]
@@ -94,14 +114,15 @@ def main(quick: bool = False, million: bool = False) -> dict:
     ceilings: list[dict] = []
     try:
         run_cli(folder / "warm.zarr", 2, 10, "--scheduler", "serial")  # numba's cache and the OS file cache
-        runs["serial_1e4"] = run_cli(folder / "a.zarr", 10, 1000, "--scheduler", "serial")
-        for repeat in range(REPEATS):  # interleaved, so that a slow spell of the machine hits all three
+        for repeat in range(REPEATS):  # interleaved, so that a slow spell of the machine hits all of them
             runs[f"serial_main_{repeat}"] = run_cli(folder / "b.zarr", torques, 1000, "--scheduler", "serial")
             runs[f"workers_2_main_{repeat}"] = run_cli(folder / "c.zarr", torques, 1000, "--workers", "2")
+            runs[f"serial_small_{repeat}"] = run_cli(folder / "a.zarr", SMALL_TORQUES, 1000, "--scheduler", "serial")
+            runs[f"workers_2_small_{repeat}"] = run_cli(folder / "a.zarr", SMALL_TORQUES, 1000, "--workers", "2")
             runs[f"processes_2_main_{repeat}"] = run_cli(folder / "c.zarr", torques, 1000, "--scheduler",
                                                          "processes", "--workers", "2")
             ceilings.append(run_ceiling())
-        for name in ("serial_main", "workers_2_main", "processes_2_main"):
+        for name in ("serial_main", "workers_2_main", "processes_2_main", "serial_small", "workers_2_small"):
             runs[name] = _median_run([runs[f"{name}_{repeat}"] for repeat in range(REPEATS)])
         runs["simulation_small"] = run_cli(folder / "d.zarr", 2, 20, "--scheduler", "serial", "--method",
                                            "simulation")
@@ -121,6 +142,11 @@ def main(quick: bool = False, million: bool = False) -> dict:
     arithmetic = sorted(ceiling["arithmetic"]["ratio"] for ceiling in ceilings)
     efficiency = sorted(runs[f"serial_main_{repeat}"]["seconds"] / runs[f"workers_2_main_{repeat}"]["seconds"]
                         / ceilings[repeat]["kernel"]["ratio"] for repeat in range(REPEATS))
+    split = [_fixed_and_per_point(runs, repeat) for repeat in range(REPEATS)]
+    fixed_serial = sorted(item["serial"][0] for item in split)
+    fixed_threads = sorted(item["threads"][0] for item in split)
+    per_point = sorted(item["serial"][1] / item["threads"][1] for item in split)
+    middle = REPEATS // 2
     figures = [
         {"name": f"CLI serial, {size:,} points (speed x torque, both models)", "value": serial["points_per_second"],
          "baseline": 10_000.0, "ratio": serial["points_per_second"] / 10_000.0,
@@ -137,6 +163,14 @@ def main(quick: bool = False, million: bool = False) -> dict:
         {"name": "CLI 2 threads vs serial as a fraction of the kernel alone on 2 threads (same minute)",
          "value": efficiency[len(efficiency) // 2], "baseline": 1.0, "ratio": efficiency[len(efficiency) // 2],
          "unit": f"(median of pairs; {efficiency[0]:.2f}-{efficiency[-1]:.2f})"},
+        {"name": "CLI 2 threads vs serial, per point (fixed cost of a study taken out: 10^4 and 10^5 runs)",
+         "value": per_point[middle], "baseline": 1.0, "ratio": per_point[middle],
+         "unit": f"x (median of the {REPEATS} repeats; {per_point[0]:.2f}-{per_point[-1]:.2f})"},
+        {"name": "CLI fixed cost of one study (seconds at 0 points): serial; baseline 2 threads",
+         "value": fixed_serial[middle], "baseline": fixed_threads[middle],
+         "ratio": fixed_serial[middle] / fixed_threads[middle],
+         "unit": f"s (serial {fixed_serial[0]:.2f}-{fixed_serial[-1]:.2f}, threads {fixed_threads[0]:.2f}-"
+                 f"{fixed_threads[-1]:.2f})"},
         {"name": f"CLI local Dask cluster, 2 worker processes vs serial, {size:,} points",
          "value": processes["points_per_second"], "baseline": serial["points_per_second"],
          "ratio": processes["points_per_second"] / serial["points_per_second"], "unit": "points/s"},
@@ -147,8 +181,8 @@ def main(quick: bool = False, million: bool = False) -> dict:
          "value": runs["batch_small"]["points_per_second"], "baseline": simulation["points_per_second"],
          "ratio": runs["batch_small"]["points_per_second"] / simulation["points_per_second"], "unit": "points/s"},
         {"name": f"CLI serial peak memory, {size:,} vs 10,000 points", "value": serial["peak_rss_mb"],
-         "baseline": runs["serial_1e4"]["peak_rss_mb"],
-         "ratio": serial["peak_rss_mb"] / runs["serial_1e4"]["peak_rss_mb"], "unit": "MB"},
+         "baseline": runs["serial_small"]["peak_rss_mb"],
+         "ratio": serial["peak_rss_mb"] / runs["serial_small"]["peak_rss_mb"], "unit": "MB"},
     ]
     if million:
         big, big_workers = runs["serial_1e6"], runs["workers_2_1e6"]
@@ -179,7 +213,7 @@ def main(quick: bool = False, million: bool = False) -> dict:
         print(f"{figure['name'][:78]:78s} {figure['value']:10.1f} {figure['baseline']:10.1f} "
               f"{figure['ratio']:7.2f}  {figure['unit']}")
     for name, run in runs.items():
-        if name.endswith("_main"):
+        if name.endswith(("_main", "_small")):
             continue  # the medians, printed among the repeats
         print(f"  {name:18s} {run['points']:>9,} points {run['seconds']:7.2f} s (wall {run['wall_s']:6.2f} s) "
               f"{run['points_per_second']:9.0f} points/s, peak {run['peak_rss_mb']:6.0f} MB {run['arguments']}")

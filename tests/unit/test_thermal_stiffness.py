@@ -166,3 +166,33 @@ def test_calibration_at_another_point(luo2019):
     calibration = calibrate_x_te(luo2019, drop_percent=10.0, point="A")
     result = thermal_stiffness(luo2019, np.array([luo2019.gear_pair.path_points["A"]]), x_te=calibration.x_te)
     assert float(result.drop_percent[0]) == pytest.approx(10.0, rel=1e-9)
+
+
+# At 1 kN the wheel's single-tooth compliance of Eq. 23 turns negative towards E (the warning's case, tested
+# above); the pair stiffness these tests check is defined all the same.
+@pytest.mark.filterwarnings("ignore::thermogear.errors.ModelAssumptionWarning")
+@pytest.mark.parametrize("basis", ["external", "pair_share"])
+def test_a_calibrated_x_te_makes_k_t_the_same_at_every_load(luo2019, basis):
+    # The calibration is solved at the load asked for (Eq. 18 for X_te): X_te = g·F_n(P)/(k_e(P)·ΣΔ_t(P)), so
+    # X_te·δ_Tp = X_te·ΣΔ_t/F_n does not depend on the load and neither does k_T (F_n(s)/F_n(P) is a ratio of
+    # elastic shares under 'pair_share'). The two loads differ by 8×; the spline of each load is built on its own.
+    case = luo2019.with_changes(thermal=dict(luo2019.document["thermal"], load_basis=basis))
+    pair = case.gear_pair
+    roll = np.linspace(pair.path_points["A"], pair.path_points["E"], 23)
+    light, heavy = (thermal_pair_stiffness_at(case, roll, normal_load=load) for load in (1.0e3, 8.0e3))
+    # equal to rounding: X_te is one multiplication and one division by the load away from the other's
+    np.testing.assert_allclose(light, heavy, rtol=1e-13, atol=0.0)
+    drop = 1.0 - thermal_pair_stiffness_at(case, np.array([pair.path_points["C"]]), normal_load=1.0e3) / (
+        thermal_stiffness(case, np.array([pair.path_points["C"]]), x_te=0.0).stiffness)
+    assert float(drop[0]) == pytest.approx(0.1452, rel=1e-6)  # the calibration target at C, at the other load too
+
+
+@pytest.mark.filterwarnings("ignore::thermogear.errors.ModelAssumptionWarning")
+def test_a_given_x_te_makes_the_secant_k_t_depend_on_the_load(luo2019):
+    # k_T = F_n·k_e/(F_n + X_te·k_e·ΣΔ_t) (Eq. 17): the drop shrinks as the load grows
+    case = luo2019.with_changes(thermal={"x_te_source": "given", "x_te": 0.2166})
+    roll = np.array([case.gear_pair.path_points["C"]])
+    elastic = thermal_stiffness(case, roll, x_te=0.0).stiffness
+    drops = [float(1.0 - thermal_pair_stiffness_at(case, roll, normal_load=load)[0] / elastic[0])
+             for load in (1.0e3, 8.0e3)]
+    assert drops[0] > 2.0 * drops[1] > 0.0

@@ -114,7 +114,9 @@ class MeshModel:
 
     @property
     def stiffness_depends_on_load(self) -> bool:
-        """True where the pair stiffness changes with the normal load (the paper's secant k_T, Eq. 18)."""
+        """True where the pair stiffness is computed per normal load: the paper's secant k_T (Eq. 18). With a
+        calibrated X_te its value is the same at every load (X_te ∝ F_n), but its single-tooth check (Eq. 23, a
+        warning) is not, so a sweep still asks for it load by load."""
         return self.thermal_model == "luo2020"
 
     @property
