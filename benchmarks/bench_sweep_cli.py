@@ -26,8 +26,7 @@ Figures (targets of the issue in brackets):
 5. the machine's own two-thread ceiling, measured beside each repeat of 2. (``parallel_ceiling.py``): the sweep's
    compiled kernel alone (no Python between points) and a pure arithmetic loop, each on two threads vs one. On a
    shared virtual machine two virtual cores do not give twice one, so the study's ratio is also given as a
-   fraction of the kernel's ratio measured in the same minute (its parallel efficiency on this machine).
-
+   fraction of the kernel's ratio measured in the same minute (its parallel efficiency on this machine);
 6. the fixed cost of one study and the two-thread ratio per point: each repeat also runs a 10⁴-point grid on
    both schedulers, and ``seconds = fixed + points × per point`` through the two sizes separates what a study
    costs however small (run once, on one thread: numba's first-use set-up, the store's creation, opening the

@@ -4,7 +4,6 @@ Simulation per point."""
 
 from __future__ import annotations
 
-
 import numpy as np
 import pytest
 
