@@ -100,3 +100,12 @@ def test_cases_lists_what_load_case_builds():
         case = load_case(row["name"])
         assert (row["title"], row["citation"], tuple(row["assumptions"])) == (case.title, case.citation,
                                                                              tuple(case.assumptions))
+
+
+def test_a_sweep_without_a_plot_imports_neither_xarray_nor_the_reference_integrator(tmp_path):
+    # its summary reads the store with zarr (xarray and pandas: about 0.5 s); solve_ivp is for tests and benchmarks
+    modules = imported_modules(tmp_path, "sweep", "luo2019", "--vary", "speed_rpm=1000:3000:2", "--out",
+                               str(tmp_path / "study.zarr"), "--json")
+    assert "zarr" in modules and "thermogear.sweep.engine" in modules  # the study ran and wrote its store
+    assert not {m for m in modules if m.split(".")[0] in ("xarray", "pandas")}
+    assert "scipy.integrate" not in modules

@@ -97,7 +97,6 @@ def sweep(
         plot.parent.mkdir(parents=True, exist_ok=True)
         figure.savefig(plot, dpi=120)
         figure_path = str(plot)
-    dataset = run.dataset
     summary = {
         "out": str(out),
         "dims": {name: int(size) for name, size in zip(study.dims, study.shape)},
@@ -107,7 +106,7 @@ def sweep(
         "chunks_computed": run.computed,
         "chunks_kept": run.skipped,
         "seconds": elapsed,
-        **response_summary(dataset, study.models),
+        **response_summary(run, study.models),
         "plot": figure_path,
         "warnings": run.messages,
     }

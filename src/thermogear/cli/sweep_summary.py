@@ -19,25 +19,27 @@ from thermogear.cli.console import print_warning
 __all__ = ["print_sweep_summary", "response_summary"]
 
 
-def response_summary(dataset, models) -> dict:
+def response_summary(run, models) -> dict:
     """Counts of unstable and contact-loss points and, per model, the largest Kv over the valid points
-    (None when none is valid) beside the largest over every point."""
+    (None when none is valid) beside the largest over every point. ``run``: a finished study
+    (:class:`thermogear.sweep.StudyRun`), read as NumPy arrays, so the command imports no xarray for its summary."""
     import numpy as np  # noqa: PLC0415
 
     from thermogear.sweep.plots import linear_model_valid  # noqa: PLC0415
 
-    valid = linear_model_valid(dataset)
+    arrays = {name: run.read(name) for name in ("kv", "stable", "contact_loss")}  # dims (model, *parameters)
+    valid = linear_model_valid(arrays)
     kv_max, kv_max_all, valid_points = {}, {}, {}
-    for model in models:
-        kv = np.asarray(dataset["kv"].sel(model=model), dtype=float)
-        holds = np.asarray(valid.sel(model=model), dtype=bool) & np.isfinite(kv)
+    for index, model in enumerate(models):
+        kv = np.asarray(arrays["kv"][index], dtype=float)
+        holds = valid[index] & np.isfinite(kv)
         valid_points[model] = int(holds.sum())
         kv_max[model] = float(kv[holds].max()) if holds.any() else None
         finite = kv[np.isfinite(kv)]
         kv_max_all[model] = float(finite.max()) if finite.size else None
     return {
-        "unstable_points": int((dataset["stable"] == 0).sum()),
-        "contact_loss_points": int((dataset["contact_loss"] == 1).sum()),
+        "unstable_points": int((arrays["stable"] == 0).sum()),
+        "contact_loss_points": int((arrays["contact_loss"] == 1).sum()),
         "valid_points": valid_points,
         "kv_max": kv_max,
         "kv_max_note": "largest Kv over the points where the linear model holds (stable, no contact loss); "

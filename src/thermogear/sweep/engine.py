@@ -25,8 +25,11 @@ from __future__ import annotations
 import os
 import warnings
 from contextlib import ExitStack, contextmanager
+from functools import cached_property
 from pathlib import Path
 from typing import Any, Callable, Iterator
+
+import numpy as np
 
 from thermogear import warning_scope
 from thermogear.errors import CaseError
@@ -51,15 +54,25 @@ def compute_and_write_block(study, block, method: str, path: str) -> list[str]:
 
 
 class StudyRun:
-    """What a finished :func:`run_study` returns: the dataset (read from the store when used, so a study of 10⁶
-    points is not held in memory), the warnings, and how much was computed."""
+    """What a finished :func:`run_study` returns: the dataset (opened with xarray when first asked for, each
+    variable read from the store when used, so a study of 10⁶ points is not held in memory), single variables as
+    NumPy arrays (:meth:`read`: no xarray), the warnings, and how much was computed."""
 
-    def __init__(self, dataset, messages: list[str], computed: int, skipped: int, path: Path) -> None:
-        self.dataset = dataset
+    def __init__(self, store: ResultStore, messages: list[str], computed: int, skipped: int, path: Path) -> None:
+        self.store = store
         self.messages = messages
         self.computed = computed
         self.skipped = skipped
         self.path = path
+
+    @cached_property
+    def dataset(self):
+        """The results as a lazily loaded xarray Dataset (xarray is imported here, not by the run)."""
+        return self.store.dataset(lazy=True)
+
+    def read(self, name: str) -> np.ndarray:
+        """The variable ``name`` as a NumPy array, dims ``(model, *parameters)`` or ``(*parameters)``."""
+        return self.store.read(name)
 
 
 @contextmanager
@@ -114,8 +127,6 @@ def run_study(study, out: str | Path, scheduler: str | None = None, resume: bool
             unscoped = stack.enter_context(warning_scope.routed())
             pool = stack.enter_context(ThreadPoolExecutor(_worker_count(workers), "thermogear-study"))
             futures = {pool.submit(_compute_and_store, study, block, method, store): block for block in pending}
-            import xarray  # noqa: F401, PLC0415  (opens the result; imported while the workers compute)
-
             _collect(futures, as_completed, marked, advance)
             stack.close()  # the pool has finished and the router is gone: its unscoped warnings are final
             tally.update(warning_text(item) for item in unscoped)
@@ -130,9 +141,7 @@ def run_study(study, out: str | Path, scheduler: str | None = None, resume: bool
                 _collect(futures, as_completed, marked, advance)
             finally:
                 client.cancel(list(futures))
-    # read from the store when used: a 10⁶-point study is not held in memory
-    return StudyRun(store.dataset(lazy=True), tally.messages(), computed=len(pending), skipped=len(done),
-                    path=Path(out))
+    return StudyRun(store, tally.messages(), computed=len(pending), skipped=len(done), path=Path(out))
 
 
 def local_scheduler(study, method: str, dashboard: str | None = None) -> str:

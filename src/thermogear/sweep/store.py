@@ -195,6 +195,12 @@ class ResultStore:
                 self._arrays[name] = self._group[name]
         return self._arrays[name]
 
+    def read(self, name: str) -> np.ndarray:
+        """The whole array ``name`` as NumPy (dims ``(model, *parameters)`` or ``(*parameters)``), read with zarr:
+        a summary of the study needs neither xarray nor the coordinates."""
+        with _quiet_zarr():
+            return np.asarray(self._array(name)[...])
+
     @property
     def complete(self) -> bool:
         return len(self.done_blocks()) == len(self.study.blocks())
