@@ -8,9 +8,10 @@ Every figure runs the real command line in a subprocess,
     thermogear sweep luo2019 --vary torque_nm=200:400:T --vary speed_rpm=1000:10000:S --out X.zarr --json
 
 with the store written, the default ``--model both`` (a grid point is both models) and the default chunking, and
-takes the command's own ``seconds`` (store creation, computing, writing, opening the result) beside the wall
-time of the process (interpreter start-up and imports included). Peak resident memory comes from
-``/usr/bin/time -v`` where it exists (else the children's ``ru_maxrss``); for Dask runs it is the driver's only.
+takes the command's own ``seconds`` (store creation, computing, writing; the summary it prints reads the store with
+zarr after its clock stops) beside the wall time of the process (interpreter start-up, imports and the summary
+included). Peak resident memory comes from ``/usr/bin/time -v`` where it exists (else the children's
+``ru_maxrss``); for Dask runs it is the driver's only.
 
 Figures (targets of the issue in brackets):
 
@@ -29,9 +30,12 @@ Figures (targets of the issue in brackets):
    fraction of the kernel's ratio measured in the same minute (its parallel efficiency on this machine);
 6. the fixed cost of one study and the two-thread ratio per point: each repeat also runs a 10⁴-point grid on
    both schedulers, and ``seconds = fixed + points × per point`` through the two sizes separates what a study
-   costs however small (run once, on one thread: numba's first-use set-up, the store's creation, opening the
-   result, the last block) from what scales with the points. The ratio at 10⁵ points lies between the per-point
-   ratio and 1, the nearer the ratio the larger the study.
+   costs however small (run once, on one thread: numba's first-use set-up, the store's creation, the last
+   block) from what scales with the points. The ratio at 10⁵ points lies between the per-point
+   ratio and 1, the nearer the ratio the larger the study;
+7. the CPU time (user + system) of the whole command, two threads vs serial, paired per repeat: near 1, the two
+   threads do the serial run's work and no more, so what keeps the wall-clock ratio from 2 is the part of a study
+   that runs on one thread (6.) and how much of two cores the machine gives (5.), not work added by the threads.
 
 ``--quick`` runs a 2·10⁴-point grid instead of 10⁵ (a smoke test of the script, not the issue's figures).
 """
@@ -39,6 +43,7 @@ Figures (targets of the issue in brackets):
 from __future__ import annotations
 
 import json
+import math
 import os
 import platform
 import re
@@ -61,9 +66,12 @@ def run_cli(out: Path, torques: int, speeds: int, *extra: str) -> dict:
     command = [sys.executable, "-m", "thermogear", "sweep", "luo2019", "--vary", f"torque_nm=200:400:{torques}",
                "--vary", f"speed_rpm=1000:10000:{speeds}", "--out", str(out), "--json", *extra]
     timed = [str(TIME), "-v", *command] if TIME.exists() else command
+    before = _children_usage()
     start = time.perf_counter()
     completed = subprocess.run(timed, capture_output=True, text=True, cwd=HERE.parent)
     wall = time.perf_counter() - start
+    after = _children_usage()  # the finished (waited-for) command's CPU time is added to its parent's record
+    cpu = after[0] - before[0]
     if completed.returncode != 0:
         raise RuntimeError(f"{' '.join(command)} failed ({completed.returncode}):\n{completed.stderr[-3000:]}")
     summary = json.loads(completed.stdout[completed.stdout.index("{"):])
@@ -71,14 +79,24 @@ def run_cli(out: Path, torques: int, speeds: int, *extra: str) -> dict:
     if match:
         peak_mb = int(match.group(1)) / 1024.0
     else:
-        import resource
-
-        peak_mb = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss / 1024.0  # max over children so far
+        peak_mb = after[1] / 1024.0  # max over children so far
     shutil.rmtree(out, ignore_errors=True)
     points = int(summary["points"])
-    return {"points": points, "seconds": float(summary["seconds"]), "wall_s": wall, "peak_rss_mb": peak_mb,
+    return {"points": points, "seconds": float(summary["seconds"]), "wall_s": wall, "cpu_s": cpu,
+            "peak_rss_mb": peak_mb,
             "points_per_second": points / float(summary["seconds"]), "chunks": int(summary["chunks"]),
             "valid_points": summary.get("valid_points"), "arguments": " ".join(extra)}
+
+
+def _children_usage() -> tuple[float, float]:
+    """CPU seconds (user + system) of this process's finished children so far, and their largest resident set
+    [kB]; NaN where the platform has no ``resource`` module."""
+    try:
+        import resource
+    except ImportError:  # not on Windows
+        return math.nan, math.nan
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return usage.ru_utime + usage.ru_stime, float(usage.ru_maxrss)
 
 
 def run_ceiling() -> dict:
@@ -145,6 +163,8 @@ def main(quick: bool = False, million: bool = False) -> dict:
     fixed_serial = sorted(item["serial"][0] for item in split)
     fixed_threads = sorted(item["threads"][0] for item in split)
     per_point = sorted(item["serial"][1] / item["threads"][1] for item in split)
+    cpu = sorted(runs[f"workers_2_main_{repeat}"]["cpu_s"] / runs[f"serial_main_{repeat}"]["cpu_s"]
+                 for repeat in range(REPEATS))
     middle = REPEATS // 2
     figures = [
         {"name": f"CLI serial, {size:,} points (speed x torque, both models)", "value": serial["points_per_second"],
@@ -170,6 +190,10 @@ def main(quick: bool = False, million: bool = False) -> dict:
          "ratio": fixed_serial[middle] / fixed_threads[middle],
          "unit": f"s (serial {fixed_serial[0]:.2f}-{fixed_serial[-1]:.2f}, threads {fixed_threads[0]:.2f}-"
                  f"{fixed_threads[-1]:.2f})"},
+        {"name": f"CLI 2 threads vs serial, CPU time of the whole command (user + system), {size:,} points",
+         "value": cpu[middle], "baseline": 1.0, "ratio": cpu[middle],
+         "unit": f"x (median of the {REPEATS} pairs; {cpu[0]:.2f}-{cpu[-1]:.2f}; 1: two threads spend the CPU "
+                 "time of one)"},
         {"name": f"CLI local Dask cluster, 2 worker processes vs serial, {size:,} points",
          "value": processes["points_per_second"], "baseline": serial["points_per_second"],
          "ratio": processes["points_per_second"] / serial["points_per_second"], "unit": "points/s"},
@@ -220,4 +244,11 @@ def main(quick: bool = False, million: bool = False) -> dict:
 
 
 if __name__ == "__main__":
-    main(quick="--quick" in sys.argv[1:], million="--million" in sys.argv[1:])
+    import argparse
+
+    parser = argparse.ArgumentParser(description="Parameter-study throughput through the command line "
+                                     "(writes benchmarks/results/bench_sweep_cli.json).")
+    parser.add_argument("--quick", action="store_true", help="a 2·10⁴-point grid instead of 10⁵ (a smoke test)")
+    parser.add_argument("--million", action="store_true", help="also the 10⁶-point pair (a few minutes more)")
+    arguments, _ = parser.parse_known_args()  # run_all.py passes its extra arguments to every benchmark
+    main(quick=arguments.quick, million=arguments.million)
