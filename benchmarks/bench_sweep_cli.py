@@ -31,8 +31,8 @@ Figures (targets of the issue in brackets):
 6. the fixed cost of one study and the two-thread ratio per point: each repeat also runs a 10⁴-point grid on
    both schedulers, and ``seconds = fixed + points × per point`` through the two sizes separates what a study
    costs however small (run once, on one thread: numba's first-use set-up, the store's creation, the last
-   block) from what scales with the points. The ratio at 10⁵ points lies between the per-point
-   ratio and 1, the nearer the ratio the larger the study;
+   block) from what scales with the points. The ratio at 10⁵ points lies between the per-point ratio and 1, the
+   nearer the ratio the larger the study;
 7. the CPU time (user + system) of the whole command, two threads vs serial, paired per repeat: near 1, the two
    threads do the serial run's work and no more, so what keeps the wall-clock ratio from 2 is the part of a study
    that runs on one thread (6.) and how much of two cores the machine gives (5.), not work added by the threads.

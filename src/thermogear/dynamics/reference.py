@@ -25,7 +25,7 @@ def reference_solve_ivp(problem: MeshDynamicsProblem, periods: int, rtol: float 
     for x, and that times the largest ω_n [m/s] for ẋ. The output is sampled at ``samples_per_interval`` equal
     sub-steps per interval (the same grid as the RK4 and periodic solvers) through the dense output.
     """
-    from scipy.integrate import solve_ivp  # noqa: PLC0415  (imported when used: 0.5 s that a sweep never needs)
+    from scipy.integrate import solve_ivp  # noqa: PLC0415  (imported when used: ~0.3 s a sweep never needs)
 
     if int(periods) != periods or periods < 1:
         raise ProblemError("periods", periods, "integer >= 1", "number of mesh periods to integrate")
