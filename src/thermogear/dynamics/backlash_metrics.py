@@ -24,7 +24,7 @@ import numpy as np
 
 from thermogear.dynamics.backlash_periodic import BacklashHistory, BacklashOrbit
 from thermogear.dynamics.backlash_problem import BacklashMeshProblem
-from thermogear.dynamics.spectra import harmonic_spectrum
+from thermogear.dynamics.spectra import harmonic_spectrum, time_mean_and_rms
 
 __all__ = ["dte_spectrum", "history_forces", "orbit_metrics"]
 
@@ -52,12 +52,6 @@ def history_forces(problem: BacklashMeshProblem, history: BacklashHistory, inclu
     return total, driving
 
 
-def _mean_and_rms(time: np.ndarray, values: np.ndarray) -> tuple[float, float]:
-    span = time[-1] - time[0]
-    mean = float(np.trapezoid(values, time) / span)
-    return mean, float(np.sqrt(max(np.trapezoid((values - mean) ** 2, time) / span, 0.0)))
-
-
 def dte_spectrum(orbit: BacklashOrbit, points: int = 1024) -> tuple[np.ndarray, np.ndarray]:
     """Harmonic amplitudes of x over the orbit's N periods: (frequencies j/(N·T) [Hz], amplitudes [m])."""
     history = orbit.history
@@ -70,7 +64,7 @@ def orbit_metrics(orbit: BacklashOrbit, include_damping_force: bool = False, har
     total, pairs = history_forces(problem, history, include_damping_force)
     w0 = problem.static_load
     span = history.time[-1] - history.time[0]
-    mean, rms = _mean_and_rms(history.time, history.displacement)
+    mean, rms = time_mean_and_rms(history.time, history.displacement)
     max_pair = float(np.max(pairs))
     frequencies, amplitudes = dte_spectrum(orbit)
     mesh_lines = amplitudes[::orbit.period_count][: harmonics + 1]

@@ -33,7 +33,8 @@ import numpy as np
 from thermogear.dynamics.metrics import _load, compute_metrics
 from thermogear.dynamics.periodic import PeriodicOrbit, evaluate_orbit, floquet_multipliers
 from thermogear.dynamics.problem import MeshDynamicsProblem
-from thermogear.dynamics.spectra import harmonic_spectrum, one_sided_amplitudes, uniform_period_grid
+from thermogear.dynamics.spectra import (harmonic_spectrum, one_sided_amplitudes, right_continuous,
+                                         uniform_period_grid)
 from thermogear.dynamics.transient import TransientHistory
 from thermogear.errors import ModelAssumptionWarning, ProblemError
 from thermogear.serialization import json_ready
@@ -129,8 +130,8 @@ class DynamicResponse:
         if self.initial_state is not None:
             x, v = evaluate_orbit(self.problem, self.initial_state, grid)
         else:
-            x = np.interp(grid, self.time, self.displacement)
-            v = np.interp(grid, self.time, self.velocity)
+            x = np.interp(grid, *right_continuous(self.time, self.displacement))
+            v = np.interp(grid, *right_continuous(self.time, self.velocity))
         interval = np.clip(np.searchsorted(self.problem.nodes, grid, side="right") - 1, 0,
                            self.problem.interval_count - 1)
         if quantity == "displacement":

@@ -11,7 +11,37 @@ import numpy as np
 
 from thermogear.errors import ProblemError
 
-__all__ = ["harmonic_spectrum", "one_sided_amplitudes", "signal_spectrum", "uniform_period_grid"]
+__all__ = ["harmonic_spectrum", "one_sided_amplitudes", "right_continuous", "signal_spectrum", "time_mean_and_rms",
+           "uniform_period_grid"]
+
+
+def right_continuous(time: np.ndarray, values: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The samples of a piecewise-smooth signal with strictly increasing times, ready for ``np.interp``.
+
+    The solvers sample both sides of every jump of the mesh stiffness at the same time (the value before and the
+    value after). ``np.interp`` is only defined for increasing abscissae; with repeated ones its result depends on
+    how ties are ordered, which is not part of NumPy's contract (and ``period=`` sorts them with an unstable
+    sort). Of each group of equal times only the last sample (the value after the jump) is kept, so the signal
+    is read right-continuously, the same on every NumPy version and CPU. ``values`` may be (…, len(time)).
+    """
+    time = np.asarray(time, dtype=float)
+    values = np.asarray(values, dtype=float)
+    if time.size < 2:
+        return time, values
+    keep = np.append(np.diff(time) > 0.0, True)
+    return time[keep], values[..., keep]
+
+
+def time_mean_and_rms(time: np.ndarray, values: np.ndarray) -> tuple[float, float]:
+    """Time mean and RMS about it [unit of ``values``] of a signal sampled on increasing ``time`` [s].
+
+    Trapezoidal rule on the samples as they are: a jump sampled twice at one time is a segment of zero width and
+    carries no weight, so the integral of a piecewise-smooth signal converges as O(h²) whatever the jumps."""
+    time = np.asarray(time, dtype=float)
+    values = np.asarray(values, dtype=float)
+    span = time[-1] - time[0]
+    mean = float(np.trapezoid(values, time) / span)
+    return mean, float(np.sqrt(max(np.trapezoid((values - mean) ** 2, time) / span, 0.0)))
 
 
 def uniform_period_grid(period: float, points: int) -> np.ndarray:
@@ -40,7 +70,8 @@ def harmonic_spectrum(time: np.ndarray, values: np.ndarray, period: float, point
     ``points`` uniform samples. Returns (frequencies [Hz] = j/T, amplitudes), j = 0 … points/2.
     """
     grid = uniform_period_grid(period, points)
-    resampled = np.interp(grid, np.asarray(time, dtype=float), np.asarray(values, dtype=float))
+    time, values = right_continuous(time, values)
+    resampled = np.interp(grid, time, values)
     return np.arange(grid.size // 2 + 1) / period, one_sided_amplitudes(resampled)
 
 
@@ -57,7 +88,7 @@ def signal_spectrum(time: np.ndarray, values: np.ndarray, points: int | None = N
     if count < 4:
         raise ProblemError("points", count, ">= 4", "samples for the Fourier transform")
     grid = np.linspace(time[0], time[-1], count)
-    resampled = np.interp(grid, time, values)
+    resampled = np.interp(grid, *right_continuous(time, values))
     resampled = resampled - resampled.mean()
     window = np.hanning(count)
     amplitude = 2.0 * np.abs(np.fft.rfft(resampled * window)) / window.sum()

@@ -24,6 +24,7 @@ from typing import Any, Callable
 
 import numpy as np
 
+from thermogear.dynamics.spectra import right_continuous, time_mean_and_rms
 from thermogear.errors import CaseError
 from thermogear.experiment.rig_data import (CITATION, measured_resonance_shift, measurements_at, rig_speeds_rpm)
 from thermogear.experiment.signals import Signal
@@ -75,11 +76,12 @@ def mesh_transfer_path(simulation) -> SdofTransferPath:
 def periodic_force_harmonics(time_s: np.ndarray, force: np.ndarray, period_s: float,
                              harmonics: int, samples: int = 4096) -> np.ndarray:
     """Complex one-sided Fourier coefficients c_n (n = 0 … harmonics) of a periodic force sampled over one period,
-    F(t) = Re Σ c_n exp(i n 2π t / T) [N]. The samples (possibly non-uniform, e.g. with mesh-cycle nodes) are
-    interpolated linearly onto ``samples`` uniform points first."""
-    time = np.asarray(time_s, dtype=float)
+    F(t) = Re Σ c_n exp(i n 2π t / T) [N]. The samples (on [t0, t0 + T], possibly non-uniform with both sides of
+    every stiffness jump at one time) are read right-continuously and interpolated linearly onto ``samples``
+    uniform points first."""
+    time, values = right_continuous(time_s, force)
     uniform = time[0] + np.arange(samples) * period_s / samples
-    values = np.interp(uniform, time, np.asarray(force, dtype=float), period=period_s)
+    values = np.interp(uniform, time, values)
     coefficients = np.fft.rfft(values) / samples
     coefficients[1:] *= 2.0
     phase = np.exp(-2j * np.pi * np.arange(coefficients.size) * time[0] / period_s)  # start of period at t = 0
@@ -197,10 +199,14 @@ class RigComparison:
         return plot_resonance_comparison(self, ax=ax)
 
 
-def dynamic_force_rms(response, period_s: float, samples: int = 4096) -> float:
-    """RMS of the dynamic mesh force k·x about its mean over one period [N] (Parseval on the harmonics)."""
-    harmonics = periodic_force_harmonics(response.time, response.system_load(), period_s, samples // 2 - 1, samples)
-    return float(np.sqrt(0.5 * np.sum(np.abs(harmonics[1:]) ** 2)))
+def dynamic_force_rms(response) -> float:
+    """RMS of the dynamic mesh force k·x about its mean over one period [N].
+
+    Integrated on the solver's own samples (trapezoidal rule; a stiffness jump is a segment of zero width), so it
+    converges as O(h²) in the samples per interval: 334.4183 N on the FZG stand-in at 1400 rpm and 52.1 °C with 4
+    samples per interval, 334.4183 with 64. Resampling onto a uniform grid first, as before, put a first-order
+    error on every jump (332.8–333.2 N for the same orbit, moving with the sampling)."""
+    return time_mean_and_rms(response.time, response.system_load())[1]
 
 
 def compare_with_rig(case=STAND_IN_CASE, model: str = "thermal", dynamics: bool = True,
@@ -219,7 +225,7 @@ def compare_with_rig(case=STAND_IN_CASE, model: str = "thermal", dynamics: bool 
         run = []
         for measurement in measurements_at(speed):
             sim = simulation(state_case(base, measurement.temperature_c, speed), model)
-            force = (dynamic_force_rms(sim.run(method="periodic"), 1.0 / sim.mesh_frequency_hz) if dynamics
+            force = (dynamic_force_rms(sim.run(method="periodic")) if dynamics
                      else None)
             run.append(ComparisonRow(speed, measurement.minute, measurement.temperature_c, sim.mesh_stiffness_mean,
                                      sim.natural_frequency_hz, force, measurement.mean_acceleration_m_s2,
