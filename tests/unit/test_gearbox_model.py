@@ -70,7 +70,9 @@ def test_warm_up_ends_at_the_steady_state(model):
     duration = 20.0 * float(np.max(steady.time_constants))
     history = model.warm_up(LOAD_STAGE_6, duration, points=41)
     assert history.temperatures_c[:, -1] == pytest.approx(steady.temperatures_c, abs=1e-3)
-    assert history.energy_residual < 1e-6  # ∫P dt = ΔΣCT + ∫Q_out dt (integration tolerance rtol 1e-8)
+    # ∫P dt = ΔΣCT + ∫Q_out dt: the energy integrals are states and implicit Runge–Kutta keeps linear invariants,
+    # so this holds to rounding and checks the assembly (symmetric exchange, the boundary flux), not the accuracy
+    assert history.energy_residual < 1e-9
     assert history.backlash[-1] == pytest.approx(steady.backlash, abs=1e-9)
 
 

@@ -106,8 +106,8 @@ class AirProperties:
 def air_properties(film_c: float) -> AirProperties:
     """Air at 1 atm from Sutherland's laws (White, Viscous Fluid Flow, 3rd ed. 2006, Eqs. 1-36, 1-41 and
     Table 1-2: μ0 = 1.716e-5 Pa·s, S = 110.4 K; k0 = 0.0241 W/(m·K), S = 194 K; T0 = 273.15 K), ideal gas
-    (R = 287.05 J/(kg·K)) and c_p = 1006 J/(kg·K); within about 3 % of tabulated air for −40…200 °C (k at 20 °C 0.0257 against
-    0.0251 W/(m·K) tabulated)."""
+    (R = 287.05 J/(kg·K)) and c_p = 1006 J/(kg·K); within about 3 % of tabulated air for −40…200 °C (k at
+    20 °C 0.0257 against 0.0251 W/(m·K) tabulated)."""
     temperature = film_c + KELVIN
     if not 150.0 < temperature < 1000.0:
         raise CaseError("air film temperature", film_c, "(−123, 727) °C", "Sutherland's laws for air")

@@ -23,6 +23,7 @@ from thermogear.gearbox.description import GearboxDescription, GearboxOperatingP
 from thermogear.gearbox.mesh_loss import mesh_power_loss, pair_gear_loss_factor
 
 NODES = ("pinion", "wheel", "shafts", "oil", "housing")
+REFERENCE_VISCOSITY = 0.01  # [Pa·s], where the friction coefficient is evaluated once (any value would do)
 
 
 @dataclass(frozen=True)
@@ -80,6 +81,18 @@ class LossModel:
         object.__setattr__(self, "_loss_factor",
                            pair_gear_loss_factor(pair) if loss_factor is None else float(loss_factor))
         object.__setattr__(self, "_dipped", (_dipped(self.description, False), _dipped(self.description, True)))
+        object.__setattr__(self, "_reference_friction", self._friction_at_viscosity(REFERENCE_VISCOSITY))
+
+    def _friction_at_viscosity(self, viscosity: float) -> float:
+        pair, description = self.description.gear_pair, self.description
+        if self.operating.torque == 0.0:
+            return 0.0
+        pitch = pair.path_points["C"]
+        rolling_1, rolling_2 = pair.rolling_speeds(pitch, self.operating.speed_rpm)
+        return float(mean_friction_coefficient(self.normal_force / pair.face_width, description.roughness,
+                                               viscosity, float(rolling_1 + rolling_2),
+                                               float(pair.relative_radius_of_curvature(pitch)),
+                                               description.lubricant_factor, check_limits=False))
 
     @property
     def loss_factor(self) -> float:
@@ -92,17 +105,10 @@ class LossModel:
         return self.operating.torque / self.description.gear_pair.pinion.base_radius
 
     def friction_coefficient(self, oil_c: float) -> float:
-        """DIN 3990-4 μ_m at the pitch point with the oil's viscosity at ``oil_c`` [–]."""
-        pair, description = self.description.gear_pair, self.description
-        if self.operating.torque == 0.0:
-            return 0.0
-        pitch = pair.path_points["C"]
-        rolling_1, rolling_2 = pair.rolling_speeds(pitch, self.operating.speed_rpm)
-        viscosity = float(description.lubricant.dynamic_viscosity(oil_c, warn=False))
-        return float(mean_friction_coefficient(self.normal_force / pair.face_width, description.roughness,
-                                               viscosity, float(rolling_1 + rolling_2),
-                                               float(pair.relative_radius_of_curvature(pitch)),
-                                               description.lubricant_factor, check_limits=False))
+        """DIN 3990-4 μ_m at the pitch point with the oil's viscosity at ``oil_c`` [–]: the formula is the power
+        law μ ∝ η^−0.25 at a given load and speed, so it is evaluated once at a reference viscosity and scaled."""
+        viscosity = float(self.description.lubricant.dynamic_viscosity(oil_c, warn=False))
+        return self._reference_friction * (viscosity / REFERENCE_VISCOSITY)**-0.25
 
     def at(self, temperatures_c) -> PowerLosses:
         """Losses with the pinion, wheel, shafts, oil, housing at ``temperatures_c`` [°C]."""

@@ -72,9 +72,9 @@ def path_friction_power(roll, normal_load, sliding_speed, friction, base_pitch: 
     """P_VZP = (1/p_b) ∫ μ·F_n·v_g ds [W] (module docstring) by the trapezoidal rule over one pair's roll.
 
     ``roll`` [m] non-decreasing from A to E (repeat a position to mark a jump: the rule is then exact for a
-    piecewise-linear integrand with its kinks at nodes); ``normal_load`` F_n of that pair [N], ``sliding_speed`` v_g [m/s] and
-    ``friction`` μ [–] at those positions (scalars broadcast); ``base_pitch`` p_b [m]. Take F_n, μ from the mesh
-    model's own load sharing and friction coefficient (:func:`mesh_model_friction_power`).
+    piecewise-linear integrand with its kinks at nodes); ``normal_load`` F_n of that pair [N], ``sliding_speed``
+    v_g [m/s] and ``friction`` μ [–] at those positions (scalars broadcast); ``base_pitch`` p_b [m]. Take F_n, μ
+    from the mesh model's own load sharing and friction coefficient (:func:`mesh_model_friction_power`).
     """
     roll = np.asarray(roll, dtype=float)
     if roll.ndim != 1 or roll.size < 2 or np.any(np.diff(roll) < 0.0) or not roll[-1] > roll[0]:
