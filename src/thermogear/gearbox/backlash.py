@@ -55,6 +55,11 @@ class ColdStart:
         return self.backlash - self.nominal
 
     @property
+    def margin_to_jamming(self) -> float:
+        """What is left before the flanks touch on both sides: the backlash itself [m]."""
+        return self.backlash
+
+    @property
     def jammed(self) -> bool:
         return self.backlash <= 0.0
 

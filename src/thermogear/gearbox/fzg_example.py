@@ -36,12 +36,13 @@ def illustrative_fzg_gearbox(**changes) -> GearboxDescription:
         gear_pair=pair, lubricant=builtin_lubricant("iso_vg_100_mineral"),
         housing=Housing(length=0.45, width=0.30, height=0.40, mass=40.0, air_speed=1.0, oil_wetted_area=0.10),
         oil_volume=1.25e-3, pinion_mass=disc_mass(pair.pinion), wheel_mass=disc_mass(pair.wheel), shaft_mass=4.0,
-        wheel_immersion=pair.wheel.tip_radius,
+        wheel_immersion=pair.operating_pitch_radii[1],
         bearings=tuple(MountedBearing(bearing, on_wheel) for on_wheel in (False, False, True, True)),
         seals=(LipSeal(30.0, False), LipSeal(30.0, True)), roughness=0.355e-6,
         notes=("housing 0.45 × 0.30 × 0.40 m, 40 kg grey cast iron, painted (ε 0.9), standing on a foundation "
                "(bottom adiabatic), air at 1 m/s along the walls (the rig's motor fan): assumed",
-               "oil 1.25 L ISO VG 100 mineral (the rig's volume), wheel dipped to its centre: assumed level",
+               "oil 1.25 L ISO VG 100 mineral (the rig's volume), wheel dipped to its centre (h = its operating pitch "
+               "radius): assumed level",
                "four NJ 406 bearings (each half the tooth normal force), two 30 mm lip seals: assumed arrangement",
                "shafts with bearings 4 kg steel; internal coefficients the description's defaults: assumed"),
     )

@@ -12,13 +12,15 @@ the oil.
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass
 
 import numpy as np
 
-from thermogear.friction import mean_friction_coefficient
+from thermogear.errors import ExtrapolationWarning
+from thermogear.friction import friction_validity_warnings, mean_friction_coefficient
 from thermogear.gearbox.bearing_loss import seal_power_loss
-from thermogear.gearbox.churning import DippedGear, churning_power_loss
+from thermogear.gearbox.churning import DippedGear, churning_power_loss, churning_validity
 from thermogear.gearbox.description import GearboxDescription, GearboxOperatingPoint
 from thermogear.gearbox.mesh_loss import mesh_power_loss, pair_gear_loss_factor
 
@@ -82,6 +84,10 @@ class LossModel:
                            pair_gear_loss_factor(pair) if loss_factor is None else float(loss_factor))
         object.__setattr__(self, "_dipped", (_dipped(self.description, False), _dipped(self.description, True)))
         object.__setattr__(self, "_reference_friction", self._friction_at_viscosity(REFERENCE_VISCOSITY))
+        for gear in self._dipped:
+            message = None if gear is None else churning_validity(gear)
+            if message:
+                warnings.warn(message, ExtrapolationWarning, stacklevel=3)
 
     def _friction_at_viscosity(self, viscosity: float) -> float:
         pair, description = self.description.gear_pair, self.description
@@ -89,6 +95,7 @@ class LossModel:
             return 0.0
         pitch = pair.path_points["C"]
         rolling_1, rolling_2 = pair.rolling_speeds(pitch, self.operating.speed_rpm)
+        friction_validity_warnings(self.normal_force / pair.face_width, float(rolling_1 + rolling_2), stacklevel=4)
         return float(mean_friction_coefficient(self.normal_force / pair.face_width, description.roughness,
                                                viscosity, float(rolling_1 + rolling_2),
                                                float(pair.relative_radius_of_curvature(pitch)),
