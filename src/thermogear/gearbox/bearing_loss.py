@@ -182,9 +182,10 @@ def seal_power_loss(shaft_diameter_mm: float, speed_rpm: float) -> float:
         "speed_rpm", speed_rpm, allow_zero=True)
 
 
-#: NJ 406 cylindrical roller bearing (d 30, D 90, B 23 mm): R1, S1, S2, K_Z, K_L from SKF's tables for the
-#: NJ 4 series as used by Fernandes et al. (2015), Tribology International 90:306 (Part I) for the FZG rig's
-#: bearings; V_M 1.49e-4 read from SKF's diagram at their oil level (not re-read here).
+#: NJ 406 cylindrical roller bearing (d 30, D 90, B 23 mm): R1, S1, S2, K_Z, K_L from SKF's tables for the NJ 4
+#: series as used for the FZG rig's bearings by Fernandes, Marques, Martins & Seabra (2015), "Gearbox power loss.
+#: Part I: losses in rolling bearings", Tribology International; V_M 1.49e-4 read from SKF's diagram at their oil
+#: level (not re-read here).
 NJ406_CONSTANTS = dict(bore_mm=30.0, outside_mm=90.0, width_mm=23.0, rolling_constant=1.00e-6,
                        sliding_constants=(0.16, 0.0015), geometry_constant=5.1, roller_drag_constant=0.65,
                        replenishment_constant=3e-8, drag_variable=1.49e-4)

@@ -4,14 +4,15 @@ Each function states its primary source and range of validity; docs/gearbox-temp
 values and the measurements that would validate them. Properties of air: :func:`air_properties`.
 
 * Vertical wall, natural convection, any Rayleigh number: Churchill & Chu (1975), Int. J. Heat Mass Transfer
-  18(11):1323, Eq. 4 — Nu_H = [0.825 + 0.387·Ra^(1/6)/(1 + (0.492/Pr)^(9/16))^(8/27)]², 1e-1 ≤ Ra ≤ 1e12.
+  18(11):1323 — Nu_H = [0.825 + 0.387·Ra^(1/6)/(1 + (0.492/Pr)^(9/16))^(8/27)]², 1e-1 ≤ Ra ≤ 1e12.
 * Horizontal plate (length A/P): hot face up Nu = 0.54·Ra^(1/4) (1e4 ≤ Ra ≤ 1e7), 0.15·Ra^(1/3) (1e7 ≤ Ra ≤ 1e11);
   hot face down Nu = 0.27·Ra^(1/4) (1e5 ≤ Ra ≤ 1e10) (McAdams 1954, Heat Transmission, 3rd ed.; with L = A/P as
-  Lloyd & Moran (1974) ASME 74-WA/HT-66; Incropera et al., Fundamentals of Heat and Mass Transfer, 6th ed.,
-  Eqs. 9.30–9.32). The two hot-up branches differ by 6.4 % at Ra = 1e7 (the correlations are not continuous there).
+  Lloyd & Moran (1974) ASME 74-WA/HT-66; as tabulated in Incropera et al., Fundamentals of Heat and Mass
+  Transfer, ch. 9). The two hot-up branches differ by 6.4 % at Ra = 1e7 (the correlations are not continuous
+  there).
 * Plate in parallel flow, average: laminar Nu = 0.664·Re^(1/2)·Pr^(1/3) (Re ≤ 5e5, Pr ≥ 0.6, Pohlhausen);
-  mixed laminar–turbulent Nu = (0.037·Re^(4/5) − 871)·Pr^(1/3) (5e5 < Re ≤ 1e8, 0.6 ≤ Pr ≤ 60; Incropera
-  Eq. 7.38). The two meet at Re = 5e5 to 0.1 %.
+  mixed laminar–turbulent Nu = (0.037·Re^(4/5) − 871)·Pr^(1/3) (5e5 < Re ≤ 1e8, 0.6 ≤ Pr ≤ 60;
+  Incropera et al., ch. 7). The two meet at Re = 5e5 to 0.1 %.
 * Natural and forced together: Nu = (Nu_N³ + Nu_F³)^(1/3) (Churchill 1977, AIChE J. 23(1):10, assisting flows) —
   recalled, unverified here.
 * Radiation of a grey surface to large surroundings: h_r = ε·σ·(T_s² + T_∞²)(T_s + T_∞) [W/(m²K)], so that
@@ -41,14 +42,14 @@ def _check(key: str, value: float, low: float = 0.0) -> float:
 
 
 def churchill_chu_vertical(rayleigh: float, prandtl: float) -> float:
-    """Average Nusselt number Nu_H of a vertical wall of height H, any Ra (Churchill & Chu 1975 Eq. 4) [–]."""
+    """Average Nusselt number Nu_H of a vertical wall of height H, any Ra (Churchill & Chu 1975) [–]."""
     rayleigh = max(float(rayleigh), 0.0)
     _check("prandtl", prandtl)
     return (0.825 + 0.387 * rayleigh**(1.0 / 6.0) / (1.0 + (0.492 / prandtl)**(9.0 / 16.0))**(8.0 / 27.0))**2
 
 
 def horizontal_plate(rayleigh: float, hot_face_up: bool) -> float:
-    """Average Nusselt number of a horizontal plate, length L = A/P (McAdams; Incropera Eqs. 9.30–9.32) [–].
+    """Average Nusselt number of a horizontal plate, length L = A/P (McAdams; Lloyd & Moran) [–].
 
     ``hot_face_up``: a hot top face (or a cold bottom face); False: a hot bottom face. Below the correlations'
     lower Ra limit the branch is extrapolated (small ΔT: its heat flow is small anyway)."""
@@ -59,7 +60,7 @@ def horizontal_plate(rayleigh: float, hot_face_up: bool) -> float:
 
 
 def flat_plate_forced(reynolds: float, prandtl: float) -> float:
-    """Average Nusselt number Nu_L of a plate in parallel flow, laminar or mixed (Incropera Eqs. 7.30, 7.38) [–]."""
+    """Average Nusselt number Nu_L of a plate in parallel flow, laminar or mixed (Incropera et al., ch. 7) [–]."""
     reynolds = max(float(reynolds), 0.0)
     _check("prandtl", prandtl)
     if reynolds <= 5e5:
@@ -104,8 +105,8 @@ class AirProperties:
 
 
 def air_properties(film_c: float) -> AirProperties:
-    """Air at 1 atm from Sutherland's laws (White, Viscous Fluid Flow, 3rd ed. 2006, Eqs. 1-36, 1-41 and
-    Table 1-2: μ0 = 1.716e-5 Pa·s, S = 110.4 K; k0 = 0.0241 W/(m·K), S = 194 K; T0 = 273.15 K), ideal gas
+    """Air at 1 atm from Sutherland's laws (White, Viscous Fluid Flow, 3rd ed. 2006, ch. 1: μ0 = 1.716e-5 Pa·s,
+    k0 = 0.0241 W/(m·K) at 273 K, S = 194 K for k; S = 110.4 K for μ as in the U.S. Standard Atmosphere), ideal gas
     (R = 287.05 J/(kg·K)) and c_p = 1006 J/(kg·K); within about 3 % of tabulated air for −40…200 °C (k at
     20 °C 0.0257 against 0.0251 W/(m·K) tabulated)."""
     temperature = film_c + KELVIN
