@@ -171,3 +171,26 @@ def test_smallest_backlash_during_a_warm_up_comes_before_the_steady_state():
     smallest, when = history.smallest_backlash
     assert 0.0 < when < history.times[-1]
     assert smallest < history.backlash[-1] and smallest < history.backlash[0]
+
+
+@pytest.mark.parametrize("changes, key", [
+    ({"oil_volume": 0.0}, "oil_volume"),
+    ({"pinion_mass": -1.0}, "pinion_mass"),
+    ({"wheel_mass": True}, "wheel_mass"),  # a boolean is not a number
+    ({"gear_oil_coefficient": float("nan")}, "gear_oil_coefficient"),
+    ({"pinion_heat_share": 1.5}, "pinion_heat_share"),
+    ({"wheel_immersion": 1.0}, "wheel_immersion"),
+])
+def test_description_refuses_bad_inputs_by_name(changes, key):
+    with pytest.raises(CaseError, match=key):
+        illustrative_fzg_gearbox(**changes)
+
+
+@pytest.mark.parametrize("changes, key", [
+    ({"length": 0.0}, "housing.length"), ({"emissivity": 1.5}, "housing.emissivity"),
+    ({"air_speed": -1.0}, "housing.air_speed")])
+def test_housing_refuses_bad_inputs_by_name(changes, key):
+    fields = dict(length=0.4, width=0.3, height=0.3, mass=30.0)
+    fields.update(changes)
+    with pytest.raises(CaseError, match=key):
+        Housing(**fields)

@@ -20,7 +20,8 @@ from thermogear.lubricant import Lubricant
 
 
 def _check_positive(key: str, value: float, allow_zero: bool = False) -> None:
-    if not (isinstance(value, (int, float)) and math.isfinite(value) and (value >= 0.0 if allow_zero else value > 0.0)):
+    if (isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value)
+            or not (value >= 0.0 if allow_zero else value > 0.0)):
         raise CaseError(key, value, ">= 0" if allow_zero else "> 0", "a size, mass, coefficient or conductance")
 
 
