@@ -16,7 +16,9 @@ from thermogear.gearbox.bulk_temperature import (BLOK_SEMI_ELLIPTIC, flash_metho
 from thermogear.gearbox.fzg_example import fzg_type_c_pair
 
 # (case, power per mesh path [W], μ_m, H_V, a [m], b [m], θ_oil [°C], θ_M printed [°C]); inputs as printed (3
-# digits for μ and H_V), the planetary stages at the power of one planet path (5000 kW / 3)
+# digits for μ and H_V), the planetary stages at the power of one planet path (5000 kW / 3). The ISO/TR 15144 blocks
+# of stages 2 and 3 (θ_M, μ_m, H_V, b) were read for this test; the stage-1 rows are transcribed from the same
+# report set and not re-read
 KISSSOFT_ISO_15144 = [
     ("stage 1 sun-planet", 5000e3 / 3, 0.040, 0.181, 0.86265, 0.491, 75.0, 78.3),
     ("stage 1 planet-ring", 5000e3 / 3, 0.040, 0.161, 0.86396, 0.491, 75.0, 78.0),
