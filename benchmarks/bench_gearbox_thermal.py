@@ -1,0 +1,110 @@
+"""Benchmark: the gearbox thermal network (issue 28) — a steady state and a 20-minute warm-up — against baselines
+measured in the same run.
+
+Run: python benchmarks/bench_gearbox_thermal.py
+Prints a table and writes benchmarks/results/bench_gearbox_thermal.json.
+
+The illustrative FZG-type gearbox (thermogear.gearbox.fzg_example) at load stage 6 (2175 rpm, 135.3 N·m, air
+20 °C):
+
+- steady: the nonlinear steady state (losses and housing conductance following the temperatures; scipy root);
+  baseline: one linear solve of the same network with conductances and losses frozen at the ambient temperature;
+- warm-up: 20 minutes from the ambient temperature, 121 output times (Radau), with the losses and backlash at
+  every output time; baseline: the same integration with conductances and losses frozen (the linear network).
+
+Targets (issue 28): a steady state ≤ 50 ms; a 20-minute warm-up coupled to the mesh ≤ 2 s (the coupling to the mesh
+is not part of this benchmark: the thermal part alone is timed).
+"""
+
+from __future__ import annotations
+
+import json
+import platform
+import sys
+import time
+import warnings
+from pathlib import Path
+
+import numpy as np
+
+RESULTS = Path(__file__).resolve().parent / "results"
+STEADY_TARGET_S = 0.050
+WARM_UP_TARGET_S = 2.0
+
+
+def _median_time(function, repeat: int) -> float:
+    values = []
+    for _ in range(repeat):
+        start = time.perf_counter()
+        function()
+        values.append(time.perf_counter() - start)
+    return float(np.median(values))
+
+
+def main(repeat: int = 21) -> dict:
+    from thermogear.gearbox.description import GearboxOperatingPoint
+    from thermogear.gearbox.fzg_example import illustrative_fzg_gearbox
+    from thermogear.gearbox.model import GearboxThermalModel
+    from thermogear.gearbox.network import ThermalNetwork, integrate_transient, solve_steady_state
+
+    warnings.simplefilter("ignore")
+    model = GearboxThermalModel(illustrative_fzg_gearbox())
+    operating = GearboxOperatingPoint(2175.0, 135.3, 20.0)
+    network = model.network(operating)
+    ambient = np.full(5, 20.0)
+    internal, boundary = network.exchange(ambient)
+    sources = network.sources(ambient, 0.0)
+    frozen = ThermalNetwork(network.capacities, lambda t: (internal, boundary), lambda t, time: sources,
+                            lambda time: 20.0)
+    times = np.linspace(0.0, 1200.0, 121)
+
+    def linear_steady():
+        return solve_steady_state(frozen, ambient)
+
+    def steady():
+        return model.steady_state(operating)
+
+    def linear_warm_up():
+        return integrate_transient(frozen, ambient, times)
+
+    def warm_up():
+        return model.warm_up(operating, 1200.0, points=121)
+
+    for function in (linear_steady, steady, linear_warm_up, warm_up):
+        function()  # imports and caches
+    linear_steady_s = _median_time(linear_steady, repeat)
+    steady_s = _median_time(steady, repeat)
+    linear_warm_up_s = _median_time(linear_warm_up, max(5, repeat // 4))
+    warm_up_s = _median_time(warm_up, max(5, repeat // 4))
+    state, history = steady(), warm_up()
+    figures = [
+        {"name": "steady state (nonlinear) vs frozen-linear solve", "value": steady_s, "baseline": linear_steady_s,
+         "ratio": steady_s / linear_steady_s, "unit": "s"},
+        {"name": "20-min warm-up (nonlinear) vs frozen-linear warm-up", "value": warm_up_s,
+         "baseline": linear_warm_up_s, "ratio": warm_up_s / linear_warm_up_s, "unit": "s"},
+        {"name": "steady state vs 50 ms target", "value": steady_s, "baseline": STEADY_TARGET_S,
+         "ratio": steady_s / STEADY_TARGET_S, "unit": "s"},
+        {"name": "20-min warm-up vs 2 s target", "value": warm_up_s, "baseline": WARM_UP_TARGET_S,
+         "ratio": warm_up_s / WARM_UP_TARGET_S, "unit": "s"},
+    ]
+    result = {
+        "benchmark": "bench_gearbox_thermal", "figures": figures,
+        "steady_temperatures_c": [round(float(value), 2) for value in state.temperatures_c],
+        "steady_losses_w": {"mesh": state.losses.mesh, "bearings": state.losses.bearings, "seals": state.losses.seals,
+                            "churning": state.losses.churning},
+        "warm_up_end_temperatures_c": [round(float(value), 2) for value in history.temperatures_c[:, -1]],
+        "python": sys.version.split()[0], "numpy": np.__version__, "machine": platform.machine(),
+        "processor": platform.processor(),
+    }
+    print(f"{'figure':<56}{'value':>12}{'baseline':>12}{'ratio':>9}")
+    for figure in figures:
+        print(f"{figure['name']:<56}{figure['value'] * 1e3:>10.2f}ms{figure['baseline'] * 1e3:>10.2f}ms"
+              f"{figure['ratio']:>9.2f}")
+    RESULTS.mkdir(exist_ok=True)
+    out = RESULTS / "bench_gearbox_thermal.json"
+    out.write_text(json.dumps(result, indent=2) + "\n", encoding="utf-8")
+    return result
+
+
+if __name__ == "__main__":
+    main()

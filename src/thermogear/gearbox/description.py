@@ -1,0 +1,156 @@
+"""The gearbox as resolved, frozen inputs: gear pair, oil, housing, bearings, seals, capacities and the internal
+heat-transfer coefficients, plus the operating point. Everything in SI (temperatures in °C).
+
+The internal coefficients (gear–oil, oil–housing, conductances through shafts and bearings) have no general
+correlation that this project could verify: they are inputs with stated defaults of the usual order of magnitude
+for a dip-lubricated spur gearbox (gear–oil 100–1000 W/(m²K) where dipped, oil–wall 50–300 W/(m²K); Changenet,
+Oviedo-Marlot & Velex 2006 fit theirs to measurements). They are the first thing to calibrate on a measured
+warm-up (docs/gearbox-temperature.md, "What would validate it").
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+from thermogear.errors import CaseError
+from thermogear.gearbox.bearing_loss import RollingBearing
+from thermogear.geometry import GearPair
+from thermogear.lubricant import Lubricant
+
+
+def _check_positive(key: str, value: float, allow_zero: bool = False) -> None:
+    if (isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value)
+            or not (value >= 0.0 if allow_zero else value > 0.0)):
+        raise CaseError(key, value, ">= 0" if allow_zero else "> 0", "a size, mass, coefficient or conductance")
+
+
+@dataclass(frozen=True)
+class MountedBearing:
+    """A rolling bearing on the pinion shaft (``on_wheel_shaft`` False) or the wheel shaft, carrying
+    ``load_fraction`` of the tooth normal force as radial load (0.5 for a gear centred between two bearings)."""
+
+    bearing: RollingBearing
+    on_wheel_shaft: bool
+    load_fraction: float = 0.5
+
+
+@dataclass(frozen=True)
+class LipSeal:
+    """A radial lip seal on a shaft of diameter [mm]."""
+
+    shaft_diameter_mm: float
+    on_wheel_shaft: bool
+
+
+@dataclass(frozen=True)
+class Housing:
+    """Outer box of the housing (length, width, height [m]), its mass [kg], specific heat [J/(kg·K)], emissivity
+    [–], linear expansion [1/K], air speed along the walls [m/s] (0: still air), the inner area wetted by the
+    oil [m²] and whether the bottom face sheds heat (False: it stands on a foundation, taken as adiabatic)."""
+
+    length: float
+    width: float
+    height: float
+    mass: float
+    specific_heat: float = 500.0  # grey cast iron [J/(kg·K)]
+    emissivity: float = 0.9  # painted [–]
+    expansion: float = 10.5e-6  # grey cast iron [1/K]
+    air_speed: float = 0.0
+    oil_wetted_area: float = 0.05
+    bottom_cooled: bool = False
+
+    def __post_init__(self) -> None:
+        for key in ("length", "width", "height", "mass", "specific_heat", "oil_wetted_area"):
+            _check_positive(f"housing.{key}", getattr(self, key))
+        _check_positive("housing.air_speed", self.air_speed, allow_zero=True)
+        if not 0.0 <= self.emissivity <= 1.0:
+            raise CaseError("housing.emissivity", self.emissivity, "[0, 1]", "a grey-body emissivity")
+
+
+@dataclass(frozen=True)
+class GearboxDescription:
+    """One spur gear stage in a dip-lubricated housing (see the module docstring for the internal coefficients).
+
+    Masses [kg] of the pinion, wheel and of the shafts with their bearings (one node), oil volume [m³],
+    immersion depths [m] of the wheel and pinion (0: above the oil), composite roughness R_a [m], the friction
+    formula's lubricant factor X_L, the pinion's share of the tooth friction heat, the gear loss factor (None:
+    Ohlendorf's H_V of the pair; give the mesh model's H_VL to use its load sharing), the cold normal backlash
+    [m] (None: the AGMA 2002 minimum) and the assembly temperature [°C] at which it holds.
+    """
+
+    gear_pair: GearPair
+    lubricant: Lubricant
+    housing: Housing
+    oil_volume: float
+    pinion_mass: float
+    wheel_mass: float
+    shaft_mass: float
+    wheel_immersion: float
+    pinion_immersion: float = 0.0
+    bearings: tuple[MountedBearing, ...] = ()
+    seals: tuple[LipSeal, ...] = ()
+    roughness: float = 0.5e-6
+    lubricant_factor: float = 1.0
+    pinion_heat_share: float = 0.5
+    loss_factor: float | None = None
+    steel_specific_heat: float = 465.0  # [J/(kg·K)]
+    oil_specific_heat: float = 2000.0  # [J/(kg·K)]
+    gear_expansion: float = 11.5e-6  # [1/K]
+    gear_oil_coefficient: float = 200.0  # [W/(m²·K)] over each gear's whole surface (assumed: calibrate)
+    oil_housing_coefficient: float = 150.0  # [W/(m²·K)] over the wetted inner wall (assumed: calibrate)
+    gear_shaft_conductance: float = 3.0  # [W/K] each gear to the shaft node (assumed: calibrate)
+    shaft_oil_conductance: float = 4.0  # [W/K] (assumed: calibrate)
+    shaft_housing_conductance: float = 8.0  # [W/K] through the bearing seats (assumed: calibrate)
+    backlash: float | None = None
+    assembly_c: float = 20.0
+    notes: tuple[str, ...] = field(default=(), compare=False)
+
+    def __post_init__(self) -> None:
+        for key in ("oil_volume", "pinion_mass", "wheel_mass", "shaft_mass", "steel_specific_heat",
+                    "oil_specific_heat", "lubricant_factor"):
+            _check_positive(key, getattr(self, key))
+        for key in ("wheel_immersion", "pinion_immersion", "roughness", "gear_expansion", "gear_oil_coefficient",
+                    "oil_housing_coefficient", "gear_shaft_conductance", "shaft_oil_conductance",
+                    "shaft_housing_conductance"):
+            _check_positive(key, getattr(self, key), allow_zero=True)
+        if not 0.0 <= self.pinion_heat_share <= 1.0:
+            raise CaseError("pinion_heat_share", self.pinion_heat_share, "[0, 1]", "a share of the friction heat")
+        for key, depth, gear in (("wheel_immersion", self.wheel_immersion, self.gear_pair.wheel),
+                                 ("pinion_immersion", self.pinion_immersion, self.gear_pair.pinion)):
+            if depth > 2.0 * gear.tip_radius:
+                raise CaseError(key, depth, f"[0, {2.0 * gear.tip_radius:.4g}] m", "at most the tip diameter")
+
+    def gear_surface(self, wheel: bool) -> float:
+        """Outer surface of a gear body [m²]: two faces (tip circle less the bore) and the rim (tip cylinder)."""
+        gear = self.gear_pair.wheel if wheel else self.gear_pair.pinion
+        return (2.0 * math.pi * (gear.tip_radius**2 - gear.bore_radius**2)
+                + 2.0 * math.pi * gear.tip_radius * gear.face_width)
+
+    @property
+    def capacities(self) -> tuple[float, float, float, float, float]:
+        """C = m·c of pinion, wheel, shafts, oil (ρ at 15 °C·V0), housing [J/K]."""
+        oil_mass = float(self.lubricant.density(15.0)) * self.oil_volume
+        steel = self.steel_specific_heat
+        return (self.pinion_mass * steel, self.wheel_mass * steel, self.shaft_mass * steel,
+                oil_mass * self.oil_specific_heat, self.housing.mass * self.housing.specific_heat)
+
+
+@dataclass(frozen=True)
+class GearboxOperatingPoint:
+    """Pinion speed [rpm], pinion torque [N·m] and ambient air temperature [°C]."""
+
+    speed_rpm: float
+    torque: float
+    ambient_c: float = 20.0
+
+    def __post_init__(self) -> None:
+        _check_positive("operating.speed_rpm", self.speed_rpm)
+        _check_positive("operating.torque_nm", self.torque, allow_zero=True)
+        if not -60.0 <= self.ambient_c <= 80.0:
+            raise CaseError("operating.ambient_c", self.ambient_c, "[-60, 80] °C", "air around a gearbox")
+
+    @property
+    def input_power(self) -> float:
+        """T1·ω1 [W]."""
+        return self.torque * self.speed_rpm * math.pi / 30.0

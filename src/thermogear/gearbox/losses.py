@@ -1,0 +1,142 @@
+"""Power losses of the gearbox at node temperatures, each source on its own, and the efficiency.
+
+Tooth friction P_VZP = P_in·μ_m·H_V (Niemann & Winter §21.6) with the project's DIN 3990-4 mean friction
+coefficient (thermogear.friction) at the oil temperature, evaluated at the pitch point (sum of rolling speeds
+2·v_t·sin α_w, relative radius of curvature at C, unit load F_bt/b); bearings by the SKF model at the viscosity
+of the oil at the shaft node's temperature, radial load a fraction of the tooth normal force; lip seals; churning
+of the dipped gears at the oil temperature (:mod:`~thermogear.gearbox.churning`). Heat goes to the nodes as:
+tooth friction to pinion and wheel by the description's share, bearings and seals to the shaft node, churning to
+the oil.
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+from dataclasses import dataclass
+
+import numpy as np
+
+from thermogear.errors import ExtrapolationWarning
+from thermogear.friction import friction_validity_warnings, mean_friction_coefficient
+from thermogear.gearbox.bearing_loss import seal_power_loss
+from thermogear.gearbox.churning import DippedGear, churning_power_loss, churning_validity
+from thermogear.gearbox.description import GearboxDescription, GearboxOperatingPoint
+from thermogear.gearbox.mesh_loss import mesh_power_loss, pair_gear_loss_factor
+
+NODES = ("pinion", "wheel", "shafts", "oil", "housing")
+REFERENCE_VISCOSITY = 0.01  # [Pa·s], where the friction coefficient is evaluated once (any value would do)
+
+
+@dataclass(frozen=True)
+class PowerLosses:
+    """Losses by source [W] at one state, the mean friction coefficient and the input power [W]."""
+
+    mesh: float
+    bearings: float
+    seals: float
+    churning: float
+    friction_coefficient: float
+    input_power: float
+    pinion_heat_share: float
+
+    @property
+    def total(self) -> float:
+        """Σ losses [W]."""
+        return self.mesh + self.bearings + self.seals + self.churning
+
+    @property
+    def efficiency(self) -> float:
+        """η = 1 − P_loss/P_in [–] (0 input power: 0)."""
+        return 1.0 - self.total / self.input_power if self.input_power > 0.0 else 0.0
+
+    @property
+    def node_sources(self) -> np.ndarray:
+        """Heat into pinion, wheel, shafts, oil, housing [W]."""
+        share = self.pinion_heat_share
+        return np.array([share * self.mesh, (1.0 - share) * self.mesh, self.bearings + self.seals,
+                         self.churning, 0.0])
+
+
+def _dipped(description: GearboxDescription, wheel: bool) -> DippedGear | None:
+    depth = description.wheel_immersion if wheel else description.pinion_immersion
+    if depth <= 0.0:
+        return None
+    pair = description.gear_pair
+    gear = pair.wheel if wheel else pair.pinion
+    pitch_radius = pair.operating_pitch_radii[1 if wheel else 0]
+    height = (gear.addendum_coefficient + gear.dedendum_coefficient) * gear.module
+    return DippedGear(pitch_radius, gear.face_width, gear.module, gear.teeth, height, min(depth, 2 * pitch_radius),
+                      description.oil_volume, gear.pressure_angle)
+
+
+@dataclass(frozen=True, eq=False)
+class LossModel:
+    """The losses of one gearbox at one operating point, as functions of the node temperatures [°C]."""
+
+    description: GearboxDescription
+    operating: GearboxOperatingPoint
+
+    def __post_init__(self) -> None:
+        pair = self.description.gear_pair
+        loss_factor = self.description.loss_factor
+        object.__setattr__(self, "_loss_factor",
+                           pair_gear_loss_factor(pair) if loss_factor is None else float(loss_factor))
+        object.__setattr__(self, "_dipped", (_dipped(self.description, False), _dipped(self.description, True)))
+        object.__setattr__(self, "_reference_friction", self._friction_at_viscosity(REFERENCE_VISCOSITY))
+        for gear in self._dipped:
+            message = None if gear is None else churning_validity(gear)
+            if message:
+                warnings.warn(message, ExtrapolationWarning, stacklevel=3)
+
+    def _friction_at_viscosity(self, viscosity: float) -> float:
+        pair, description = self.description.gear_pair, self.description
+        if self.operating.torque == 0.0:
+            return 0.0
+        pitch = pair.path_points["C"]
+        rolling_1, rolling_2 = pair.rolling_speeds(pitch, self.operating.speed_rpm)
+        friction_validity_warnings(self.normal_force / pair.face_width, float(rolling_1 + rolling_2), stacklevel=4)
+        return float(mean_friction_coefficient(self.normal_force / pair.face_width, description.roughness,
+                                               viscosity, float(rolling_1 + rolling_2),
+                                               float(pair.relative_radius_of_curvature(pitch)),
+                                               description.lubricant_factor, check_limits=False))
+
+    @property
+    def loss_factor(self) -> float:
+        """H_V used [–]."""
+        return self._loss_factor
+
+    @property
+    def normal_force(self) -> float:
+        """Tooth normal force F_bn = T1/r_b1 [N]."""
+        return self.operating.torque / self.description.gear_pair.pinion.base_radius
+
+    def friction_coefficient(self, oil_c: float) -> float:
+        """DIN 3990-4 μ_m at the pitch point with the oil's viscosity at ``oil_c`` [–]: the formula is the power
+        law μ ∝ η^−0.25 at a given load and speed, so it is evaluated once at a reference viscosity and scaled."""
+        viscosity = float(self.description.lubricant.dynamic_viscosity(oil_c, warn=False))
+        return self._reference_friction * (viscosity / REFERENCE_VISCOSITY)**-0.25
+
+    def at(self, temperatures_c) -> PowerLosses:
+        """Losses with the pinion, wheel, shafts, oil, housing at ``temperatures_c`` [°C]."""
+        temperatures = np.asarray(temperatures_c, dtype=float)
+        shaft_c, oil_c = float(temperatures[2]), float(temperatures[3])
+        description, operating = self.description, self.operating
+        friction = self.friction_coefficient(oil_c)
+        mesh = mesh_power_loss(operating.input_power, friction, self.loss_factor)
+        pinion_rpm = operating.speed_rpm
+        wheel_rpm = pinion_rpm / description.gear_pair.gear_ratio
+        bearing_viscosity = float(description.lubricant.kinematic_viscosity(shaft_c, warn=False)) * 1e6
+        bearings = sum(mounted.bearing.moments(wheel_rpm if mounted.on_wheel_shaft else pinion_rpm,
+                                               bearing_viscosity, mounted.load_fraction * self.normal_force).power
+                       for mounted in description.bearings)
+        seals = sum(seal_power_loss(seal.shaft_diameter_mm, wheel_rpm if seal.on_wheel_shaft else pinion_rpm)
+                    for seal in description.seals)
+        oil_viscosity = float(description.lubricant.kinematic_viscosity(oil_c, warn=False))
+        density = float(description.lubricant.density(oil_c))
+        churning = 0.0
+        for gear, rpm in zip(self._dipped, (pinion_rpm, wheel_rpm)):
+            if gear is not None:
+                churning += churning_power_loss(gear, rpm * math.pi / 30.0, oil_viscosity, density)
+        return PowerLosses(mesh, float(bearings), float(seals), churning, friction, operating.input_power,
+                           description.pinion_heat_share)

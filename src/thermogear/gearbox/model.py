@@ -1,0 +1,181 @@
+"""The gearbox thermal model: losses and conductances following the node temperatures, steady state and warm-up.
+
+Nodes: pinion, wheel, shafts with bearings, oil, housing; the ambient air is the boundary
+(:mod:`~thermogear.gearbox.network`). Losses (:mod:`~thermogear.gearbox.losses`) follow the oil and shaft
+temperatures through the viscosity (tooth friction, bearings, churning); the housing's outer conductance follows
+the housing and air temperatures (natural convection, radiation). :meth:`GearboxThermalModel.steady_state` gives
+the predicted gear and oil temperatures of an operating point; :meth:`GearboxThermalModel.warm_up` the history of
+temperatures, losses and backlash from a cold start.
+"""
+
+from __future__ import annotations
+
+import warnings
+from dataclasses import dataclass
+from functools import cached_property
+
+import numpy as np
+
+from thermogear.errors import CaseError, ExtrapolationWarning
+from thermogear.gearbox.backlash import backlash_allowance, backlash_at_temperatures
+from thermogear.gearbox.description import GearboxDescription, GearboxOperatingPoint
+from thermogear.gearbox.heat_paths import housing_outer_conductance, internal_conductances
+from thermogear.gearbox.losses import NODES, LossModel, PowerLosses
+from thermogear.gearbox.network import ThermalNetwork, integrate_transient, solve_steady_state
+
+#: Coldest start the model accepts [°C] (the brief's −40 °C; the oil's fit is extrapolated there, with a warning).
+COLDEST_START_C = -40.0
+#: A steady state above this [°C] is reported as none (runaway): no gear oil survives it. The property laws are
+#: evaluated with temperatures clipped to EVALUATION_RANGE_C, wider than any accepted result, so that the
+#: solver's trial points outside the physical range do not stop it.
+HOTTEST_STEADY_C = 400.0
+EVALUATION_RANGE_C = (-100.0, 600.0)
+
+
+@dataclass(frozen=True)
+class GearboxState:
+    """Temperatures of the nodes [°C] at one instant with the losses and backlash there."""
+
+    temperatures_c: np.ndarray  # pinion, wheel, shafts, oil, housing
+    losses: PowerLosses
+    backlash: float  # normal backlash [m]
+
+    @property
+    def pinion_c(self) -> float:
+        return float(self.temperatures_c[0])
+
+    @property
+    def wheel_c(self) -> float:
+        return float(self.temperatures_c[1])
+
+    @property
+    def shafts_c(self) -> float:
+        return float(self.temperatures_c[2])
+
+    @property
+    def oil_c(self) -> float:
+        return float(self.temperatures_c[3])
+
+    @property
+    def housing_c(self) -> float:
+        return float(self.temperatures_c[4])
+
+
+@dataclass(frozen=True)
+class GearboxSteadyState(GearboxState):
+    """A steady state: also the heat shed to the air [W], |ΣP − Q_out|/ΣP and the network's time constants [s]."""
+
+    heat_out: float
+    energy_residual: float
+    time_constants: np.ndarray
+
+
+@dataclass(frozen=True)
+class WarmUpHistory:
+    """Temperatures (5, m) [°C], losses by source (m,) [W], backlash (m,) [m] against times (m,) [s]."""
+
+    times: np.ndarray
+    temperatures_c: np.ndarray
+    mesh_loss: np.ndarray
+    bearing_loss: np.ndarray
+    seal_loss: np.ndarray
+    churning_loss: np.ndarray
+    backlash: np.ndarray
+    energy_residual: float  # identity ∫ΣP dt = ΔΣCT + ∫Q_out dt, relative
+
+    @property
+    def total_loss(self) -> np.ndarray:
+        return self.mesh_loss + self.bearing_loss + self.seal_loss + self.churning_loss
+
+    def node(self, name: str) -> np.ndarray:
+        """Temperature history of one node [°C] (``"pinion"``, ``"wheel"``, ``"shafts"``, ``"oil"``, ``"housing"``)."""
+        if name not in NODES:
+            raise CaseError("node", name, f"one of {', '.join(NODES)}", "the nodes of the gearbox network")
+        return self.temperatures_c[NODES.index(name)]
+
+    @property
+    def smallest_backlash(self) -> tuple[float, float]:
+        """(smallest normal backlash [m], the time it occurs [s]); a value ≤ 0 means the gears jam."""
+        index = int(np.argmin(self.backlash))
+        return float(self.backlash[index]), float(self.times[index])
+
+
+@dataclass(frozen=True, eq=False)
+class GearboxThermalModel:
+    """The thermal network of one gearbox (see the module docstring)."""
+
+    description: GearboxDescription
+
+    @cached_property
+    def internal(self) -> np.ndarray:
+        return internal_conductances(self.description)
+
+    @cached_property
+    def allowance(self):
+        return backlash_allowance(self.description.gear_pair, self.description.backlash)
+
+    def losses(self, operating: GearboxOperatingPoint) -> LossModel:
+        return LossModel(self.description, operating)
+
+    def network(self, operating: GearboxOperatingPoint) -> ThermalNetwork:
+        """The network at an operating point: sources and outer conductance follow the temperatures."""
+        loss_model, housing, internal = self.losses(operating), self.description.housing, self.internal
+        ambient = float(operating.ambient_c)
+
+        def conductances(temperatures):
+            boundary = np.zeros(5)
+            boundary[4] = housing_outer_conductance(housing, float(np.clip(temperatures[4], *EVALUATION_RANGE_C)),
+                                                    ambient)
+            return internal, boundary
+
+        def sources(temperatures, time):
+            return loss_model.at(np.clip(temperatures, *EVALUATION_RANGE_C)).node_sources
+
+        return ThermalNetwork(np.array(self.description.capacities), conductances, sources, lambda time: ambient)
+
+    def backlash(self, temperatures_c) -> float:
+        """Normal backlash [m] with the pinion, wheel and housing at the node temperatures."""
+        description = self.description
+        return backlash_at_temperatures(description.gear_pair, self.allowance, description.gear_expansion,
+                                        description.housing.expansion, temperatures_c[0], temperatures_c[1],
+                                        temperatures_c[4], description.assembly_c)
+
+    def _warn_viscosity_range(self, low_c: float, high_c: float) -> None:
+        fitted = self.description.lubricant.fitted_range_c
+        if low_c < fitted[0] - 1e-9 or high_c > fitted[1] + 1e-9:
+            warnings.warn(f"gearbox: oil temperatures {low_c:.1f}…{high_c:.1f} °C leave the viscosity fit's range "
+                          f"{fitted[0]:g}…{fitted[1]:g} °C (ASTM D341 extrapolated)", ExtrapolationWarning,
+                          stacklevel=3)
+
+    def steady_state(self, operating: GearboxOperatingPoint) -> GearboxSteadyState:
+        """Steady temperatures of an operating point (raises NoSteadyStateError on thermal runaway)."""
+        network = self.network(operating)
+        steady = solve_steady_state(network, np.full(5, float(operating.ambient_c)),
+                                    temperature_limit=HOTTEST_STEADY_C)
+        temperatures = steady.temperatures
+        self._warn_viscosity_range(float(np.min(temperatures[2:4])), float(np.max(temperatures[2:4])))
+        return GearboxSteadyState(temperatures, self.losses(operating).at(temperatures), self.backlash(temperatures),
+                                  steady.heat_out, steady.energy_residual, steady.time_constants)
+
+    def warm_up(self, operating: GearboxOperatingPoint, duration: float, points: int = 121,
+                initial_c=None, method: str = "Radau") -> WarmUpHistory:
+        """Temperatures, losses and backlash over ``duration`` [s] at ``points`` evenly spaced times, from the
+        ambient temperature (default) or ``initial_c`` (one value or five, [°C], down to −40 °C)."""
+        if not duration > 0.0:
+            raise CaseError("warm_up.duration_s", duration, "> 0 s", "a warm-up takes time")
+        start = np.full(5, float(operating.ambient_c)) if initial_c is None else np.broadcast_to(
+            np.asarray(initial_c, dtype=float), (5,)).copy()
+        if not np.all(np.isfinite(start)) or np.min(start) < COLDEST_START_C:
+            raise CaseError("warm_up.initial_c", start.tolist(), f">= {COLDEST_START_C:g} °C",
+                            "the coldest start the model supports")
+        times = np.linspace(0.0, float(duration), int(points))
+        transient = integrate_transient(self.network(operating), start, times, method=method)
+        temperatures = transient.temperatures
+        self._warn_viscosity_range(float(np.min(temperatures[2:4])), float(np.max(temperatures[2:4])))
+        loss_model = self.losses(operating)
+        states = [loss_model.at(temperatures[:, index]) for index in range(times.size)]
+        return WarmUpHistory(times, temperatures, np.array([s.mesh for s in states]),
+                             np.array([s.bearings for s in states]), np.array([s.seals for s in states]),
+                             np.array([s.churning for s in states]),
+                             np.array([self.backlash(temperatures[:, index]) for index in range(times.size)]),
+                             transient.energy_residual)
