@@ -14,7 +14,6 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Callable
 
 from thermogear.errors import CaseError
 
@@ -115,6 +114,3 @@ class CrossSection:
     def diameter_ratio(self) -> float:
         """m = d_i/d_o [-]."""
         return self.inner_diameter / self.outer_diameter
-
-
-ShearCoefficientLaw = Callable[[float, float], float]
