@@ -35,10 +35,12 @@ def plane_matrices(assembled, fixed_positions: tuple[float, ...]) -> tuple[np.nd
 def geared_pair(bearing_x: float = 2e8, bearing_y: float = 2e8, pressure_angle: float = math.radians(20.0),
                 centre_line_angle: float = 0.0, rotation_sense: int = 1, mesh_stiffness: float = 3e8,
                 material: Material = STEEL, pinion_inertia: tuple[float, float, float] | None = None,
-                wheel_inertia: tuple[float, float, float] | None = None, elements: int = 4) -> Drivetrain:
+                wheel_inertia: tuple[float, float, float] | None = None, elements: int = 4,
+                bearing_damping: float = 0.0, material_damping: float = 0.0) -> Drivetrain:
     """Two 0.2 m shafts (d = 40 mm) with a gear at mid-span and bearings at both ends; gear bodies as annuli
     (pitch diameters 81 mm and 105 mm, width 20 mm) unless (m, I_p, I_d) are given."""
-    shafts = tuple(Shaft(name, (ShaftSegment(0.2, CrossSection(0.04), material),), 0.2 / elements * (1 + 1e-12))
+    shafts = tuple(Shaft(name, (ShaftSegment(0.2, CrossSection(0.04), material),), 0.2 / elements * (1 + 1e-12),
+                         material_damping=material_damping)
                    for name in ("pinion shaft", "wheel shaft"))
     pinion, wheel = NodeLocation("pinion shaft", 0.1), NodeLocation("wheel shaft", 0.1)
     disks = []
@@ -48,7 +50,8 @@ def geared_pair(bearing_x: float = 2e8, bearing_y: float = 2e8, pressure_angle: 
             disks.append(RigidDisk.annulus(name, location, 7810.0, 0.02, diameter, 0.04))
         else:
             disks.append(RigidDisk(name, location, *inertia))
-    bearings = tuple(Bearing(f"{shaft} bearing {end}", NodeLocation(shaft, position), bearing_x, bearing_y, 1e9)
+    bearings = tuple(Bearing(f"{shaft} bearing {end}", NodeLocation(shaft, position), bearing_x, bearing_y, 1e9,
+                             bearing_damping, bearing_damping, bearing_damping)
                      for shaft in ("pinion shaft", "wheel shaft") for end, position in (("A", 0.0), ("B", 0.2)))
     mesh = GearMesh("mesh", pinion, wheel, base_radius_1=0.0381, base_radius_2=0.0493,
                     operating_pressure_angle=pressure_angle, stiffness=mesh_stiffness,

@@ -109,6 +109,8 @@ class Drivetrain:
                 mass[block] += element.mass()
                 gyroscopic[block] += ratios[shaft.name] * element.gyroscopic()
             groups[shaft.name] = stiffness
+            if shaft.material_damping:
+                damping += shaft.material_damping * stiffness
         for disk in self.disks:
             block = np.ix_(dofs(disk.location), dofs(disk.location))
             mass[block] += disk.mass_matrix()
@@ -202,6 +204,13 @@ class AssembledDrivetrain:
         """Total stiffness K + Σ k̄ w wᵀ [SI]."""
         values = self._mesh_values(mesh_stiffness)
         return self.structure_stiffness + (self.mesh_vectors.T * values) @ self.mesh_vectors
+
+    def connection_stiffness(self, mesh_stiffness: np.ndarray | None = None) -> np.ndarray:
+        """The stiffness that joins the shafts to each other and to ground (total less the shafts' own): what
+        the shafts' rigid motions can strain, for finding the rigid-body modes."""
+        shafts = sum((self.stiffness_groups[shaft.name] for shaft in self.drivetrain.shafts),
+                     np.zeros((self.size, self.size)))
+        return self.stiffness(mesh_stiffness) - shafts
 
     def damping(self, speed: float = 0.0, mesh_damping: np.ndarray | None = None) -> np.ndarray:
         """Total velocity matrix C + Σ c̄ w wᵀ + Ω·G at reference speed Ω [rad/s]."""

@@ -41,6 +41,8 @@ class Shaft:
 
     ``shear_coefficient`` None takes Cowper's κ per segment; ``shear_deformation`` False gives Euler–Bernoulli
     elements; ``rotary_inertia`` False drops rotary and spin inertia of the shaft (not of disks).
+    ``material_damping`` β [s] adds stiffness-proportional damping β·K_shaft (internal damping of the shaft
+    material; it damps every elastic mode of the shaft, ζ = βω/2, and leaves rigid motions free).
     """
 
     name: str
@@ -49,9 +51,13 @@ class Shaft:
     shear_coefficient: float | None = None
     shear_deformation: bool = True
     rotary_inertia: bool = True
+    material_damping: float = 0.0
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "segments", tuple(self.segments))
+        if not math.isfinite(float(self.material_damping)) or self.material_damping < 0.0:
+            raise CaseError(f"{self.name}.material_damping", self.material_damping, ">= 0 s",
+                            "stiffness-proportional damping β must not inject energy")
         if not self.segments:
             raise CaseError(f"{self.name}.segments", [], "at least one segment", "a shaft needs a length")
         if not math.isfinite(float(self.maximum_element_length)) or self.maximum_element_length <= 0.0:

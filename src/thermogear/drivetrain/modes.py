@@ -60,7 +60,8 @@ def drivetrain_modes(assembled: AssembledDrivetrain, speed: float = 0.0, mesh_st
     """
     stiffness = assembled.stiffness(mesh_stiffness)
     damping = assembled.damping(speed)
-    reduction = rigid_body_reduction(assembled.mass, stiffness, assembled.rigid_candidates())
+    reduction = rigid_body_reduction(assembled.mass, assembled.connection_stiffness(mesh_stiffness),
+                                     assembled.rigid_candidates())
     mass_q, stiffness_q = reduction.project(assembled.mass), reduction.project(stiffness)
     if damped or speed != 0.0:
         modes = damped_modes(mass_q, reduction.project(damping), stiffness_q)

@@ -66,7 +66,8 @@ def static_state(assembled: AssembledDrivetrain, normal_loads: np.ndarray | floa
               else np.asarray(external_forces, dtype=float).copy())
     forces = forces + assembled.mesh_vectors.T @ (stiffness_values * deviation)
     stiffness = assembled.stiffness(stiffness_values)
-    reduction = rigid_body_reduction(assembled.mass, stiffness, assembled.rigid_candidates())
+    reduction = rigid_body_reduction(assembled.mass, assembled.connection_stiffness(stiffness_values),
+                                     assembled.rigid_candidates())
     if reduction.rigid_modes.shape[1]:
         work = np.abs(reduction.rigid_modes.T @ forces).max()
         if work > 1e-9 * max(np.abs(forces).max(), 1e-300):

@@ -17,26 +17,37 @@ from thermogear.errors import ProblemError
 
 __all__ = ["RigidBodyReduction", "rigid_body_modes", "rigid_body_reduction"]
 
-_NULL_TOLERANCE = 1e-10  # relative to the largest stiffness entry: shaft strain of a rigid motion is rounding (~1e-16)
+_NULL_TOLERANCE = 1e-9  # on the diagonally scaled matrix: rigid combinations give rounding (~1e-16), a connection O(1)
 
 
-def rigid_body_modes(stiffness: np.ndarray, candidates: np.ndarray, tolerance: float = _NULL_TOLERANCE) -> np.ndarray:
-    """Columns r (DOFs, count) spanning the rigid-body motions K r = 0 inside the span of ``candidates``.
+def rigid_body_modes(connection_stiffness: np.ndarray, candidates: np.ndarray,
+                     tolerance: float = _NULL_TOLERANCE) -> np.ndarray:
+    """Columns r (DOFs, count), orthonormal, spanning the rigid-body motions K r = 0 inside the span of
+    ``candidates``.
 
-    ``candidates`` are motions known to strain no element of one body (rigid motions of each shaft); the null space
-    of the small matrix RᵀKR is found with eigenvalues below ``tolerance``·max|K|·max|R|².
+    ``candidates`` are motions that strain no body on its own (the rigid motions of each shaft), and
+    ``connection_stiffness`` the stiffness of what joins the bodies to each other and to ground (bearings,
+    couplings, meshes): the bodies' own stiffness is left out, since it does no work on the candidates. The null
+    space is that of S = RᵀKR scaled by its diagonal (S_ij/√(S_ii S_jj)), whose eigenvalues are O(1) for a
+    connected combination whatever the stiffness magnitudes; a candidate with S_ii = 0 is free.
     """
-    stiffness = np.asarray(stiffness, dtype=float)
+    stiffness = np.asarray(connection_stiffness, dtype=float)
     candidates = np.asarray(candidates, dtype=float)
     if candidates.size == 0:
         return np.zeros((stiffness.shape[0], 0))
-    scale = np.abs(candidates).max(axis=0)
-    basis = candidates / scale
-    small = basis.T @ stiffness @ basis
-    values, vectors = np.linalg.eigh(0.5 * (small + small.T))
-    limit = tolerance * np.abs(stiffness).max() * np.abs(basis).max() ** 2
-    null = vectors[:, np.abs(values) <= limit]
-    modes = basis @ null
+    small = candidates.T @ stiffness @ candidates
+    small = 0.5 * (small + small.T)
+    diagonal = np.diag(small).copy()
+    touched = diagonal > 0.0
+    null_columns = [np.eye(candidates.shape[1])[:, ~touched]]
+    if np.any(touched):
+        scale = 1.0 / np.sqrt(diagonal[touched])
+        scaled = small[np.ix_(touched, touched)] * np.outer(scale, scale)
+        values, vectors = np.linalg.eigh(scaled)
+        free = np.zeros((candidates.shape[1], int(np.sum(values <= tolerance))))
+        free[touched] = vectors[:, values <= tolerance] * scale[:, None]
+        null_columns.append(free)
+    modes = candidates @ np.hstack(null_columns)
     if modes.shape[1]:
         modes, _ = np.linalg.qr(modes)
     return modes
@@ -62,9 +73,10 @@ class RigidBodyReduction:
         return self.basis @ reduced
 
 
-def rigid_body_reduction(mass: np.ndarray, stiffness: np.ndarray, candidates: np.ndarray,
+def rigid_body_reduction(mass: np.ndarray, connection_stiffness: np.ndarray, candidates: np.ndarray,
                          damping: np.ndarray | None = None) -> RigidBodyReduction:
-    """The reduction onto the complement of the rigid modes (identity basis when there are none).
+    """The reduction onto the complement of the rigid modes (identity basis when there are none); the rigid modes
+    are found from the candidates and the connection stiffness as in :func:`rigid_body_modes`.
 
     ProblemError when the damping acts on a rigid mode (C r ≠ 0): then the rigid motion does not decouple (an
     absolute damper on a free rotation needs a spring to ground: a speed-controlled motor).
@@ -73,7 +85,7 @@ def rigid_body_reduction(mass: np.ndarray, stiffness: np.ndarray, candidates: np
 
     mass = np.asarray(mass, dtype=float)
     size = mass.shape[0]
-    rigid = rigid_body_modes(stiffness, candidates)
+    rigid = rigid_body_modes(connection_stiffness, candidates)
     if rigid.shape[1] == 0:
         return RigidBodyReduction(rigid, np.eye(size))
     if damping is not None:
