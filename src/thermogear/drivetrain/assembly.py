@@ -181,12 +181,12 @@ class AssembledDrivetrain:
     def dof_mask(self, names: tuple[str, ...], shaft: str | None = None) -> np.ndarray:
         """Boolean mask (DOFs,) of the named DOF kinds, on one shaft or all."""
         mask = np.zeros(self.size, dtype=bool)
+        kinds = [DOF_NAMES.index(name) for name in names]
         for shaft_name, offset in self.node_offsets.items():
             if shaft is not None and shaft_name != shaft:
                 continue
-            for node in range(self.node_positions[shaft_name].size):
-                for name in names:
-                    mask[6 * (offset + node) + DOF_NAMES.index(name)] = True
+            nodes = offset + np.arange(self.node_positions[shaft_name].size)
+            mask[(6 * nodes[:, None] + np.array(kinds)[None, :]).ravel()] = True
         return mask
 
     def mesh_stiffness_groups(self, mesh_stiffness: np.ndarray | None = None) -> dict[str, np.ndarray]:

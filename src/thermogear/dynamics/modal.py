@@ -118,7 +118,7 @@ def strain_energy_shares(shapes: np.ndarray, element_stiffness: Mapping[str, np.
     e_ij = φ_iᴴK_jφ_i / Σ_j φ_iᴴK_jφ_i; the shares of a mode add up to 1 (ProblemError for a rigid-body mode,
     which stores no strain energy)."""
     shapes = np.asarray(shapes)
-    energies = {name: np.real(np.einsum("ij,ik,kj->j", shapes.conj(), np.asarray(matrix, dtype=float), shapes))
+    energies = {name: np.real(np.sum(shapes.conj() * (np.asarray(matrix, dtype=float) @ shapes), axis=0))
                 for name, matrix in element_stiffness.items()}
     total = sum(energies.values())
     if np.any(total <= 0.0):
@@ -133,9 +133,9 @@ def kinetic_energy_fractions(shapes: np.ndarray, mass: np.ndarray,
     groups partition the DOFs and M does not couple them (shaft torsion, bending and axial motion are uncoupled)."""
     shapes = np.asarray(shapes)
     mass = np.asarray(mass, dtype=float)
-    total = np.real(np.einsum("ij,ik,kj->j", shapes.conj(), mass, shapes))
+    total = np.real(np.sum(shapes.conj() * (mass @ shapes), axis=0))
     fractions = {}
     for name, mask in masks.items():
         part = shapes[mask]
-        fractions[name] = np.real(np.einsum("ij,ik,kj->j", part.conj(), mass[np.ix_(mask, mask)], part)) / total
+        fractions[name] = np.real(np.sum(part.conj() * (mass[np.ix_(mask, mask)] @ part), axis=0)) / total
     return fractions
