@@ -43,10 +43,12 @@ class DrivetrainModes:
         return self.strain_energy_shares[mesh]
 
 
-def _label(motion: dict[str, float], shafts: dict[str, float]) -> str:
+def _label(motion: dict[str, float], by_shaft: dict[tuple[str, str], float]) -> str:
+    """"torsional", or the dominant motion and the shaft that carries most of its kinetic energy."""
     kind = max(motion, key=motion.get)
     if kind == "torsional":
         return "torsional"
+    shafts = {shaft: value for (motion_kind, shaft), value in by_shaft.items() if motion_kind == kind}
     return f"{kind} {max(shafts, key=shafts.get)}"
 
 
@@ -75,13 +77,14 @@ def drivetrain_modes(assembled: AssembledDrivetrain, speed: float = 0.0, mesh_st
     full = reduction.expand(shapes)
     masks = {kind: assembled.dof_mask(names) for kind, names in _MOTIONS.items()}
     kinetic = kinetic_energy_fractions(full, assembled.mass, masks)
-    lateral = _MOTIONS["lateral"]
-    per_shaft = kinetic_energy_fractions(full, assembled.mass, {
-        name: assembled.dof_mask(lateral, name) for name in assembled.node_offsets})
+    by_shaft = kinetic_energy_fractions(full, assembled.mass, {
+        (kind, name): assembled.dof_mask(names, name) for kind, names in _MOTIONS.items()
+        for name in assembled.node_offsets})
+    per_shaft = {name: sum(by_shaft[(kind, name)] for kind in _MOTIONS) for name in assembled.node_offsets}
     groups = dict(assembled.stiffness_groups)
     groups.update(assembled.mesh_stiffness_groups(mesh_stiffness))
     shares = strain_energy_shares(full, groups)
     labels = tuple(_label({kind: kinetic[kind][i] for kind in kinetic},
-                          {name: per_shaft[name][i] for name in per_shaft}) for i in range(frequencies.size))
+                          {key: value[i] for key, value in by_shaft.items()}) for i in range(frequencies.size))
     return DrivetrainModes(frequencies, ratios, full, labels, kinetic, per_shaft, shares,
                            reduction.rigid_modes.shape[1])
