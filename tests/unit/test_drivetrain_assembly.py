@@ -7,7 +7,7 @@ import math
 
 import numpy as np
 import pytest
-from drivetrain_builders import geared_pair
+from drivetrain_builders import STEEL, geared_pair
 
 from thermogear.drivetrain import Material, NodeLocation
 from thermogear.drivetrain.modes import drivetrain_modes
@@ -121,3 +121,42 @@ def test_unknown_shaft_and_duplicate_names_are_refused():
     with pytest.raises(CaseError, match="position"):
         replace(drivetrain, bearings=drivetrain.bearings + (replace(drivetrain.bearings[0], name="far",
                 location=NodeLocation("pinion shaft", 0.5)),)).assemble()
+
+
+def _with_motor(support_stiffness: float | None):
+    """The pair with a motor shaft (a rigid disk on a short shaft) coupled to the pinion shaft's end."""
+    from dataclasses import replace
+
+    from thermogear.drivetrain import (Bearing, Coupling, CrossSection, RigidDisk, Shaft, ShaftSegment,
+                                       TorsionalSupport)
+
+    drivetrain = geared_pair()
+    motor = Shaft("motor shaft", (ShaftSegment(0.1, CrossSection(0.03), STEEL),), 0.05)
+    end = NodeLocation("motor shaft", 0.1)
+    coupling = Coupling("coupling", end, NodeLocation("pinion shaft", 0.0), torsional_stiffness=2e3,
+                        torsional_damping=0.5)
+    supports = () if support_stiffness is None else (
+        TorsionalSupport("speed control", NodeLocation("motor shaft", 0.0), support_stiffness, 1.0),)
+    return replace(drivetrain, shafts=(motor,) + drivetrain.shafts,
+                   disks=drivetrain.disks + (RigidDisk("rotor", NodeLocation("motor shaft", 0.05), 5.0, 0.02, 0.01),),
+                   bearings=drivetrain.bearings + tuple(Bearing(f"motor bearing {z}", NodeLocation("motor shaft", z),
+                                                                1e8, 1e8, 1e8) for z in (0.0, 0.1)),
+                   couplings=(coupling,), torsional_supports=supports)
+
+
+def test_a_coupled_motor_shares_the_rigid_rotation_and_a_speed_control_removes_it():
+
+    free = _with_motor(None)
+    assembled = free.assemble()
+    # the coupling carries the pinion's speed to the motor shaft; the wheel turns the other way
+    assert assembled.speed_ratios["motor shaft"] == pytest.approx(1.0)
+    modes = drivetrain_modes(assembled, count=4)
+    assert modes.rigid_mode_count == 1  # motor, pinion and wheel turn together: one free rotation
+    # a torsional spring to ground (motor held at speed) leaves no rigid mode: the lowest mode is now the motor
+    # rotor on the coupling and the speed-control spring
+    held = drivetrain_modes(_with_motor(1e3).assemble(), count=4)
+    assert held.rigid_mode_count == 0
+    assert held.labels[0] == "torsional" and held.angular_frequencies[0] > 0.0
+    # and the static state needs no torque balance any more: the support reacts the driving torque
+    state = static_state(_with_motor(1e3).assemble(), 1000.0)
+    assert state.mesh_force[0] == pytest.approx(1000.0, rel=1e-6)
