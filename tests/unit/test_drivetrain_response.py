@@ -97,3 +97,24 @@ def test_bearing_forces_balance_the_mesh_force_on_each_shaft():
     assert amplitudes[:2, 0] == pytest.approx(np.abs(0.5 * mean_force * u), rel=1e-3)
     assert np.all(amplitudes[:2, 1] > 0.0)  # the mesh harmonics reach the housing
     assert response.kv > 1.0
+
+
+@pytest.mark.slow
+def test_backlash_drivetrain_in_permanent_contact_equals_the_linear_drivetrain():
+    # load large against the vibration at a speed far from resonance: the teeth never separate, so the backlash
+    # orbit is the linear one (same flow, no switch): 1e-9 relative
+    from dataclasses import replace
+
+    from thermogear.drivetrain.response import drivetrain_backlash_system, drivetrain_periodic_system
+    from thermogear.dynamics.backlash_ndof import backlash_periodic_orbit
+    from thermogear.dynamics.periodic_ndof import periodic_response
+
+    drivetrain = geared_pair(bearing_damping=2e3, material_damping=1e-6, elements=2)
+    state = replace(_mesh_state(0.5, speed_rpm=600.0), backlash=50e-6)
+    assembled = drivetrain.assemble()
+    system, _ = drivetrain_backlash_system(assembled, state)
+    orbit = backlash_periodic_orbit(system, substeps=4)
+    linear, _ = drivetrain_periodic_system(assembled, state)
+    reference = periodic_response(linear, 1).initial_state
+    assert orbit.converged and orbit.switches == 0
+    assert np.abs(orbit.initial_state - reference).max() < 1e-9 * np.abs(reference).max()

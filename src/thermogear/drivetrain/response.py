@@ -24,6 +24,7 @@ import numpy as np
 
 from thermogear.drivetrain.assembly import AssembledDrivetrain
 from thermogear.drivetrain.static_state import mesh_torque_forces
+from thermogear.dynamics.backlash_ndof import BacklashSystem
 from thermogear.dynamics.metrics import compute_metrics
 from thermogear.dynamics.periodic_ndof import PiecewiseLinearSystem, periodic_response
 from thermogear.dynamics.rigid_body import RigidBodyReduction, rigid_body_reduction
@@ -31,7 +32,8 @@ from thermogear.dynamics.spectra import harmonic_spectrum
 from thermogear.errors import CaseError
 from thermogear.mesh.state import MeshState
 
-__all__ = ["DrivetrainResponse", "drivetrain_periodic_system", "drivetrain_periodic_response"]
+__all__ = ["DrivetrainResponse", "drivetrain_backlash_system", "drivetrain_periodic_system",
+           "drivetrain_periodic_response"]
 
 
 def drivetrain_periodic_system(assembled: AssembledDrivetrain,
@@ -66,6 +68,23 @@ def drivetrain_periodic_system(assembled: AssembledDrivetrain,
         damping_pattern=pattern, damping_factor=problem.damping, force_pattern=reduced_w,
         force_factor=problem.force_per_interval - load)
     return system, reduction
+
+
+def drivetrain_backlash_system(assembled: AssembledDrivetrain,
+                               state: MeshState) -> tuple[BacklashSystem, RigidBodyReduction]:
+    """The drivetrain with the backlash mesh: one dead-zone coordinate g = wᵀq − ē_j of the normal backlash of the
+    state (solve with :func:`thermogear.dynamics.backlash_ndof.backlash_periodic_orbit`).
+
+    The pairs' deviations enter as their load-weighted mean on each interval, ē_j = Σk_i·e_i / Σk_i, so the whole
+    mesh separates at once (unlike the 1-DOF backlash model, where each pair leaves contact on its own); the back
+    flanks take the driving flanks' stiffness. Without deviations the two descriptions coincide.
+    """
+    if state.backlash is None:
+        raise CaseError("backlash", None, "a mesh state whose backlash is known", "the dead zone needs its width")
+    linear, reduction = drivetrain_periodic_system(assembled, state)
+    excitation = linear.force_factor
+    deviation = excitation / linear.stiffness_factor
+    return BacklashSystem(linear, linear.force_pattern, deviation, state.backlash), reduction
 
 
 @dataclass(frozen=True, eq=False)
