@@ -1,0 +1,238 @@
+"""Assembly of a drivetrain: shafts, disks, bearings, couplings, torsional supports and gear meshes → global
+matrices M, K, C, G, the mesh vectors and the per-element stiffness groups for modal strain-energy shares.
+
+Global DOF numbering: 6 per node (x, y, z, α, β, θ), the nodes of each shaft in turn, in the order the shafts are
+given. Angles are global (about +x, +y, +z). Each shaft spins at ``speed_ratio × Ω`` (signed, about +z) where Ω is the
+reference speed, the speed of the first shaft taken positive in gear 1's turning sense; the ratios follow from the
+meshes (ω₂/ω₁ = −r_b1/r_b2) and couplings (equal speeds). The gyroscopic matrix returned is Σ_k ratio_k·G_k, to be
+multiplied by Ω [rad/s] (Friswell et al. 2010, Eq. 5.88: M q̈ + (C + ΩG) q̇ + K q = f).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from thermogear.drivetrain.layout import Shaft, node_index, shaft_mesh
+from thermogear.drivetrain.mesh_element import GearMesh
+from thermogear.drivetrain.point_elements import Bearing, Coupling, NodeLocation, RigidDisk, TorsionalSupport
+from thermogear.errors import CaseError
+
+__all__ = ["Drivetrain", "AssembledDrivetrain", "DOF_NAMES"]
+
+DOF_NAMES = ("x", "y", "z", "alpha", "beta", "theta")
+
+
+@dataclass(frozen=True)
+class Drivetrain:
+    """The description of a drivetrain (inputs only; :meth:`assemble` builds the matrices)."""
+
+    shafts: tuple[Shaft, ...]
+    disks: tuple[RigidDisk, ...] = ()
+    bearings: tuple[Bearing, ...] = ()
+    couplings: tuple[Coupling, ...] = ()
+    meshes: tuple[GearMesh, ...] = ()
+    torsional_supports: tuple[TorsionalSupport, ...] = ()
+
+    def __post_init__(self) -> None:
+        for key in ("shafts", "disks", "bearings", "couplings", "meshes", "torsional_supports"):
+            object.__setattr__(self, key, tuple(getattr(self, key)))
+        names = [shaft.name for shaft in self.shafts]
+        if not names or len(set(names)) != len(names):
+            raise CaseError("shafts", names, "at least one shaft, unique names", "shafts are found by name")
+        element_names = [item.name for group in (self.disks, self.bearings, self.couplings, self.meshes,
+                                                 self.torsional_supports) for item in group]
+        duplicated = sorted({name for name in element_names if element_names.count(name) > 1} | (set(element_names) & set(names)))
+        if duplicated:
+            raise CaseError("element names", duplicated, "unique names (and not a shaft's name)",
+                            "energy shares and bearing forces are reported by name")
+        for location in self._locations():
+            if location.shaft not in names:
+                raise CaseError("shaft", location.shaft, f"one of {names}", "an element sits on a named shaft")
+
+    def _locations(self) -> list[NodeLocation]:
+        points = [item.location for group in (self.disks, self.bearings, self.torsional_supports) for item in group]
+        points += [point for coupling in self.couplings for point in (coupling.first, coupling.second)]
+        points += [point for mesh in self.meshes for point in (mesh.gear_1, mesh.gear_2)]
+        return points
+
+    def speed_ratios(self) -> dict[str, float]:
+        """Signed spin speed of each shaft over the reference speed (first shaft: +1, or the first mesh's
+        rotation sense when the first shaft carries its gear 1), propagated through meshes and couplings."""
+        names = [shaft.name for shaft in self.shafts]
+        first = names[0]
+        start = 1.0
+        for mesh in self.meshes:
+            if mesh.gear_1.shaft == first:
+                start = float(mesh.rotation_sense)
+                break
+        ratios = {first: start}
+        links = [(m.gear_1.shaft, m.gear_2.shaft, m.speed_ratio) for m in self.meshes]
+        links += [(c.first.shaft, c.second.shaft, 1.0) for c in self.couplings if c.first.shaft != c.second.shaft]
+        changed = True
+        while changed:
+            changed = False
+            for one, two, ratio in links:
+                if one in ratios and two not in ratios:
+                    ratios[two], changed = ratios[one] * ratio, True
+                elif two in ratios and one not in ratios:
+                    ratios[one], changed = ratios[two] / ratio, True
+        return {name: ratios.get(name, 1.0) for name in names}
+
+    def assemble(self) -> AssembledDrivetrain:
+        """Global matrices of the drivetrain (see :class:`AssembledDrivetrain`)."""
+        attachments: dict[str, list[float]] = {shaft.name: [] for shaft in self.shafts}
+        for location in self._locations():
+            attachments[location.shaft].append(float(location.position))
+        nodes, offsets, elements = {}, {}, {}
+        count = 0
+        for shaft in self.shafts:
+            nodes[shaft.name], elements[shaft.name] = shaft_mesh(shaft, attachments[shaft.name])
+            offsets[shaft.name] = count
+            count += nodes[shaft.name].size
+        size = 6 * count
+
+        def dofs(location: NodeLocation) -> np.ndarray:
+            node = offsets[location.shaft] + node_index(nodes[location.shaft], location.shaft, location.position)
+            return np.arange(6 * node, 6 * node + 6)
+
+        mass, damping, gyroscopic = np.zeros((size, size)), np.zeros((size, size)), np.zeros((size, size))
+        groups: dict[str, np.ndarray] = {}
+        ratios = self.speed_ratios()
+        for shaft in self.shafts:
+            stiffness = np.zeros((size, size))
+            for number, element in enumerate(elements[shaft.name]):
+                first = 6 * (offsets[shaft.name] + number)
+                block = np.ix_(np.arange(first, first + 12), np.arange(first, first + 12))
+                stiffness[block] += element.stiffness()
+                mass[block] += element.mass()
+                gyroscopic[block] += ratios[shaft.name] * element.gyroscopic()
+            groups[shaft.name] = stiffness
+            if shaft.material_damping:
+                damping += shaft.material_damping * stiffness
+        for disk in self.disks:
+            block = np.ix_(dofs(disk.location), dofs(disk.location))
+            mass[block] += disk.mass_matrix()
+            gyroscopic[block] += ratios[disk.location.shaft] * disk.gyroscopic()
+        for bearing in self.bearings:
+            stiffness = np.zeros((size, size))
+            block = np.ix_(dofs(bearing.location), dofs(bearing.location))
+            stiffness[block] = bearing.stiffness_matrix()
+            damping[block] += bearing.damping_matrix()
+            groups[bearing.name] = stiffness
+        for support in self.torsional_supports:
+            stiffness = np.zeros((size, size))
+            theta = dofs(support.location)[5]
+            stiffness[theta, theta] = support.stiffness
+            damping[theta, theta] += support.damping
+            groups[support.name] = stiffness
+        for coupling in self.couplings:
+            stiffness = np.zeros((size, size))
+            both = np.concatenate([dofs(coupling.first), dofs(coupling.second)])
+            stiffness[np.ix_(both, both)] += coupling.stiffness_matrix()
+            damping[np.ix_(both, both)] += coupling.damping_matrix()
+            groups[coupling.name] = stiffness
+        mesh_vectors = np.zeros((len(self.meshes), size))
+        for number, mesh in enumerate(self.meshes):
+            both = np.concatenate([dofs(mesh.gear_1), dofs(mesh.gear_2)])
+            mesh_vectors[number, both] += mesh.vector()
+        structure = sum(groups.values(), np.zeros((size, size)))
+        return AssembledDrivetrain(
+            drivetrain=self, node_positions=nodes, node_offsets=offsets, mass=mass, structure_stiffness=structure,
+            structure_damping=damping, gyroscopic=gyroscopic, mesh_vectors=mesh_vectors, stiffness_groups=groups,
+            speed_ratios=ratios)
+
+
+@dataclass(frozen=True, eq=False)
+class AssembledDrivetrain:
+    """Global matrices [SI] of a drivetrain on its 6·nodes DOFs.
+
+    ``structure_stiffness`` and ``structure_damping`` hold shafts, bearings, couplings and torsional supports (no
+    mesh); ``mesh_vectors`` (meshes, DOFs) the w of each mesh; ``stiffness_groups`` one matrix per shaft, bearing,
+    coupling and support by name (they add up to ``structure_stiffness``); ``gyroscopic`` is per unit reference
+    speed [rad/s].
+    """
+
+    drivetrain: Drivetrain
+    node_positions: dict[str, np.ndarray]
+    node_offsets: dict[str, int]
+    mass: np.ndarray
+    structure_stiffness: np.ndarray
+    structure_damping: np.ndarray
+    gyroscopic: np.ndarray
+    mesh_vectors: np.ndarray
+    stiffness_groups: dict[str, np.ndarray]
+    speed_ratios: dict[str, float]
+    _cache: dict = field(default_factory=dict, repr=False, compare=False)
+
+    @property
+    def size(self) -> int:
+        """Number of DOFs."""
+        return self.mass.shape[0]
+
+    def dof(self, location: NodeLocation, name: str) -> int:
+        """Global index of one DOF (``name`` in x, y, z, alpha, beta, theta) at a shaft node."""
+        if name not in DOF_NAMES:
+            raise CaseError("dof", name, f"one of {DOF_NAMES}", "the six DOFs of a node")
+        local = node_index(self.node_positions[location.shaft], location.shaft, location.position)
+        return 6 * (self.node_offsets[location.shaft] + local) + DOF_NAMES.index(name)
+
+    def dof_mask(self, names: tuple[str, ...], shaft: str | None = None) -> np.ndarray:
+        """Boolean mask (DOFs,) of the named DOF kinds, on one shaft or all."""
+        mask = np.zeros(self.size, dtype=bool)
+        kinds = [DOF_NAMES.index(name) for name in names]
+        for shaft_name, offset in self.node_offsets.items():
+            if shaft is not None and shaft_name != shaft:
+                continue
+            nodes = offset + np.arange(self.node_positions[shaft_name].size)
+            mask[(6 * nodes[:, None] + np.array(kinds)[None, :]).ravel()] = True
+        return mask
+
+    def mesh_stiffness_groups(self, mesh_stiffness: np.ndarray | None = None) -> dict[str, np.ndarray]:
+        """k̄·w wᵀ of each mesh by name (the meshes' own stiffness where none is given)."""
+        values = self._mesh_values(mesh_stiffness)
+        return {mesh.name: value * np.outer(w, w)
+                for mesh, w, value in zip(self.drivetrain.meshes, self.mesh_vectors, values)}
+
+    def _mesh_values(self, mesh_stiffness: np.ndarray | None) -> np.ndarray:
+        if mesh_stiffness is None:
+            return np.array([mesh.stiffness for mesh in self.drivetrain.meshes])
+        return np.broadcast_to(np.asarray(mesh_stiffness, dtype=float), (len(self.drivetrain.meshes),))
+
+    def stiffness(self, mesh_stiffness: np.ndarray | None = None) -> np.ndarray:
+        """Total stiffness K + Σ k̄ w wᵀ [SI]."""
+        values = self._mesh_values(mesh_stiffness)
+        return self.structure_stiffness + (self.mesh_vectors.T * values) @ self.mesh_vectors
+
+    def connection_stiffness(self, mesh_stiffness: np.ndarray | None = None) -> np.ndarray:
+        """The stiffness that joins the shafts to each other and to ground (total less the shafts' own): what
+        the shafts' rigid motions can strain, for finding the rigid-body modes."""
+        shafts = sum((self.stiffness_groups[shaft.name] for shaft in self.drivetrain.shafts),
+                     np.zeros((self.size, self.size)))
+        return self.stiffness(mesh_stiffness) - shafts
+
+    def damping(self, speed: float = 0.0, mesh_damping: np.ndarray | None = None) -> np.ndarray:
+        """Total velocity matrix C + Σ c̄ w wᵀ + Ω·G at reference speed Ω [rad/s]."""
+        values = (np.array([mesh.damping for mesh in self.drivetrain.meshes]) if mesh_damping is None
+                  else np.broadcast_to(np.asarray(mesh_damping, dtype=float), (len(self.drivetrain.meshes),)))
+        return self.structure_damping + (self.mesh_vectors.T * values) @ self.mesh_vectors + speed * self.gyroscopic
+
+    def rigid_candidates(self) -> np.ndarray:
+        """(DOFs, 6·shafts) rigid motions of each shaft on its own: translations x, y, z, rotations about x, y
+        (with the slopes dy/dz = −α, dx/dz = +β) and torsion."""
+        columns = []
+        for shaft_name, offset in self.node_offsets.items():
+            positions = self.node_positions[shaft_name]
+            for kind in range(6):
+                vector = np.zeros(self.size)
+                for node, z in enumerate(positions):
+                    base = 6 * (offset + node)
+                    if kind in (0, 1, 2, 5):
+                        vector[base + kind] = 1.0
+                    elif kind == 3:
+                        vector[base + 3], vector[base + 1] = 1.0, -z
+                    else:
+                        vector[base + 4], vector[base] = 1.0, z
+                columns.append(vector)
+        return np.array(columns).T

@@ -1,0 +1,172 @@
+"""Rigid disks, bearings and couplings: the lumped elements that sit at shaft nodes (6 DOF: x, y, z, α, β, θ).
+
+Rigid disk: mass matrix diag(m, m, m, I_d, I_d, I_p) and gyroscopic block G[α, β] = +I_p, G[β, α] = −I_p per unit
+spin speed, from the angular momentum of a disk spinning about a tilted axis (Friswell, Penny, Garvey & Lees,
+Dynamics of Rotating Machines, CUP 2010, §5.3: I_d α̈ + I_pΩβ̇ = M_x, I_d β̈ − I_pΩα̇ = M_y). Annulus of bore d_i,
+outer diameter d_o and width b: m = ρπb(d_o² − d_i²)/4, I_p = m(d_o² + d_i²)/8, I_d = I_p/2 + m b²/12.
+Bearing: linear springs and dashpots from a node to ground on x, y (and z); coupling: springs and dashpots between
+two nodes, [[K, −K], [−K, K]] (Friswell et al. 2010 §5.5).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from thermogear.errors import CaseError
+
+__all__ = ["NodeLocation", "RigidDisk", "Bearing", "Coupling", "TorsionalSupport"]
+
+
+def _non_negative(key: str, value: float) -> float:
+    number = float(value)
+    if not math.isfinite(number) or number < 0.0:
+        raise CaseError(key, value, ">= 0, finite", "stiffness, damping, mass and inertia cannot be negative")
+    return number
+
+
+@dataclass(frozen=True)
+class NodeLocation:
+    """A point on a shaft: the shaft's name and the axial position [m] from the shaft's first end."""
+
+    shaft: str
+    position: float
+
+    def __post_init__(self) -> None:
+        position = float(self.position)
+        if not math.isfinite(position) or position < 0.0:
+            raise CaseError(f"{self.shaft}.position", self.position, ">= 0 m from the shaft's first end",
+                            "positions are measured along the shaft")
+
+
+@dataclass(frozen=True)
+class RigidDisk:
+    """A rigid body on a shaft node: mass [kg], polar and diametral moments of inertia [kg·m²]."""
+
+    name: str
+    location: NodeLocation
+    mass: float
+    polar_inertia: float
+    diametral_inertia: float
+
+    def __post_init__(self) -> None:
+        for key in ("mass", "polar_inertia", "diametral_inertia"):
+            _non_negative(f"{self.name}.{key}", getattr(self, key))
+
+    @classmethod
+    def annulus(cls, name: str, location: NodeLocation, density: float, width: float, outer_diameter: float,
+                inner_diameter: float = 0.0) -> RigidDisk:
+        """A uniform annulus [kg/m³, m] (Friswell et al. 2010 App. 1). For a gear body take the pitch
+        diameter as the outer diameter and the face width as the width (the teeth fill about half the tooth zone)."""
+        if not 0.0 <= inner_diameter < outer_diameter or width <= 0.0 or density <= 0.0:
+            raise CaseError(f"{name}.outer_diameter", outer_diameter,
+                            f"> inner diameter {inner_diameter} m, with width and density > 0",
+                            "an annulus needs a positive radial thickness, width and density")
+        mass = density * math.pi * width * (outer_diameter**2 - inner_diameter**2) / 4.0
+        polar = mass * (outer_diameter**2 + inner_diameter**2) / 8.0
+        return cls(name, location, mass, polar, polar / 2.0 + mass * width**2 / 12.0)
+
+    def mass_matrix(self) -> np.ndarray:
+        """6×6 mass matrix on the node's DOFs."""
+        m = self.mass
+        return np.diag([m, m, m, self.diametral_inertia, self.diametral_inertia, self.polar_inertia])
+
+    def gyroscopic(self) -> np.ndarray:
+        """6×6 skew gyroscopic matrix per unit spin speed."""
+        matrix = np.zeros((6, 6))
+        matrix[3, 4] = self.polar_inertia
+        matrix[4, 3] = -self.polar_inertia
+        return matrix
+
+
+@dataclass(frozen=True)
+class Bearing:
+    """A linear bearing from a shaft node to rigid ground: stiffness [N/m] and damping [N·s/m] in x, y and z.
+
+    ``stiffness_xy``/``damping_xy`` are cross-coupling terms (k_xy = k_yx; non-symmetric bearings are out of scope).
+    ``stiffness_z`` > 0 locates the shaft axially (otherwise the shaft has an axial rigid-body mode).
+    """
+
+    name: str
+    location: NodeLocation
+    stiffness_x: float
+    stiffness_y: float
+    stiffness_z: float = 0.0
+    damping_x: float = 0.0
+    damping_y: float = 0.0
+    damping_z: float = 0.0
+    stiffness_xy: float = 0.0
+    damping_xy: float = 0.0
+
+    def __post_init__(self) -> None:
+        for key in ("stiffness_x", "stiffness_y", "stiffness_z", "damping_x", "damping_y", "damping_z"):
+            _non_negative(f"{self.name}.{key}", getattr(self, key))
+
+    def stiffness_matrix(self) -> np.ndarray:
+        """6×6 stiffness on the node's DOFs (ground is rigid)."""
+        matrix = np.zeros((6, 6))
+        matrix[:3, :3] = [[self.stiffness_x, self.stiffness_xy, 0.0], [self.stiffness_xy, self.stiffness_y, 0.0],
+                          [0.0, 0.0, self.stiffness_z]]
+        return matrix
+
+    def damping_matrix(self) -> np.ndarray:
+        """6×6 damping on the node's DOFs."""
+        matrix = np.zeros((6, 6))
+        matrix[:3, :3] = [[self.damping_x, self.damping_xy, 0.0], [self.damping_xy, self.damping_y, 0.0],
+                          [0.0, 0.0, self.damping_z]]
+        return matrix
+
+
+@dataclass(frozen=True)
+class Coupling:
+    """Springs and dashpots between two nodes (on different shafts, or a node and another on the same line).
+
+    ``torsional_stiffness`` [N·m/rad] and ``torsional_damping`` [N·m·s/rad] act on θ; the optional
+    ``lateral_stiffness`` [N/m] on x and y, ``angular_stiffness`` [N·m/rad] on α and β, ``axial_stiffness`` on z.
+    """
+
+    name: str
+    first: NodeLocation
+    second: NodeLocation
+    torsional_stiffness: float
+    torsional_damping: float = 0.0
+    lateral_stiffness: float = 0.0
+    angular_stiffness: float = 0.0
+    axial_stiffness: float = 0.0
+
+    def __post_init__(self) -> None:
+        for key in ("torsional_stiffness", "torsional_damping", "lateral_stiffness", "angular_stiffness",
+                    "axial_stiffness"):
+            _non_negative(f"{self.name}.{key}", getattr(self, key))
+
+    @staticmethod
+    def _two_node(diagonal: np.ndarray) -> np.ndarray:
+        block = np.diag(diagonal)
+        return np.block([[block, -block], [-block, block]])
+
+    def stiffness_matrix(self) -> np.ndarray:
+        """12×12 stiffness on (first node DOFs, second node DOFs)."""
+        k_l, k_a = self.lateral_stiffness, self.angular_stiffness
+        return self._two_node(np.array([k_l, k_l, self.axial_stiffness, k_a, k_a, self.torsional_stiffness]))
+
+    def damping_matrix(self) -> np.ndarray:
+        """12×12 damping on (first node DOFs, second node DOFs)."""
+        return self._two_node(np.array([0.0, 0.0, 0.0, 0.0, 0.0, self.torsional_damping]))
+
+
+@dataclass(frozen=True)
+class TorsionalSupport:
+    """A torsional spring and dashpot from a node to ground: a motor held at speed by its speed controller
+    (stiffness [N·m/rad] and damping [N·m·s/rad] from the drive's speed-loop gains). It removes the torsional
+    rigid-body mode of the train physically, instead of reducing the equations on its complement."""
+
+    name: str
+    location: NodeLocation
+    stiffness: float
+    damping: float = 0.0
+
+    def __post_init__(self) -> None:
+        _non_negative(f"{self.name}.stiffness", self.stiffness)
+        _non_negative(f"{self.name}.damping", self.damping)

@@ -1,0 +1,181 @@
+"""Exact periodic steady state of an n-DOF linear time-periodic system with piecewise-constant coefficients.
+
+M q̈ + C_j q̇ + K_j q = f_j on piece j, t in [t_j, t_{j+1}), of one period T = t_N. With z = [q; q̇] the piece is
+ż = A_j z + b_j, A_j = [[0, I], [−M⁻¹K_j, −M⁻¹C_j]], b_j = [0; M⁻¹f_j], solved exactly by the exponential of the
+augmented matrix (Van Loan, "Computing integrals involving the matrix exponential", IEEE TAC 23 (1978) 395–404):
+
+    expm([[A_j, b_j], [0, 0]]·h_j) = [[Φ_j, p_j], [0, 1]],   z(t_{j+1}) = Φ_j z(t_j) + p_j.
+
+The monodromy Φ_T = Φ_{N−1}···Φ_0 and the image p of z = 0 after one period give the periodic state
+z₀ = (I − Φ_T)⁻¹ p, unique and attracting iff every Floquet multiplier (eigenvalue of Φ_T) lies inside the unit
+circle (Floquet 1883; Nayfeh & Mook, Nonlinear Oscillations, 1979, §5.2). scipy's expm uses the scaling-and-squaring
+algorithm of Al-Mohy & Higham (2009). Knows nothing of gears: matrices only. With a rigid-body mode (K r = 0) a
+multiplier is 1 and I − Φ_T is singular: remove such modes first (``rigid_body.rigid_body_reduction``).
+
+``K_j = K₀ + k_j·P_K``, ``C_j = C₀ + c_j·P_C`` and ``f_j = f₀ + g_j·P_f``: a constant part plus a pattern scaled per piece
+(a gear mesh: P_K = P_C = w wᵀ, P_f = w), which is how the pieces are stored.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from thermogear.dynamics.problem import checked_array, checked_nodes
+from thermogear.errors import ModelLimitError, ProblemError
+
+__all__ = ["PiecewiseLinearSystem", "PeriodicResponse", "monodromy", "periodic_response"]
+
+
+@dataclass(frozen=True, eq=False)
+class PiecewiseLinearSystem:
+    """M q̈ + (C₀ + c_j P_C) q̇ + (K₀ + k_j P_K) q = f₀ + g_j P_f on the pieces between ``nodes`` [s].
+
+    ``mass``, ``stiffness``, ``damping``, ``stiffness_pattern``, ``damping_pattern``: (n, n) [SI];
+    ``force``, ``force_pattern``: (n,); ``stiffness_factor``, ``damping_factor``, ``force_factor``: (N,) one per
+    piece; ``nodes`` (N+1,) from 0 to the period.
+    """
+
+    mass: np.ndarray
+    stiffness: np.ndarray
+    damping: np.ndarray
+    force: np.ndarray
+    nodes: np.ndarray
+    stiffness_pattern: np.ndarray
+    stiffness_factor: np.ndarray
+    damping_pattern: np.ndarray
+    damping_factor: np.ndarray
+    force_pattern: np.ndarray
+    force_factor: np.ndarray
+
+    def __post_init__(self) -> None:
+        mass = np.asarray(self.mass, dtype=float)
+        if mass.ndim != 2 or mass.shape[0] != mass.shape[1]:
+            raise ProblemError("mass", f"array of shape {mass.shape}", "a square matrix", "M of the system")
+        size = mass.shape[0]
+        nodes = checked_nodes(self.nodes)
+        object.__setattr__(self, "nodes", nodes)
+        pieces = nodes.size - 1
+        square = (size, size)
+        for name in ("mass", "stiffness", "damping", "stiffness_pattern", "damping_pattern"):
+            object.__setattr__(self, name, checked_array(name, getattr(self, name), square, "one row/column per DOF"))
+        for name in ("force", "force_pattern"):
+            object.__setattr__(self, name, checked_array(name, getattr(self, name), (size,), "one value per DOF"))
+        for name in ("stiffness_factor", "damping_factor", "force_factor"):
+            object.__setattr__(self, name, checked_array(name, getattr(self, name), (pieces,)))
+
+    @property
+    def size(self) -> int:
+        """Number of DOFs n."""
+        return self.mass.shape[0]
+
+    @property
+    def period(self) -> float:
+        """T [s]."""
+        return float(self.nodes[-1])
+
+    def piece(self, index: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """(K_j, C_j, f_j) of one piece."""
+        return (self.stiffness + self.stiffness_factor[index] * self.stiffness_pattern,
+                self.damping + self.damping_factor[index] * self.damping_pattern,
+                self.force + self.force_factor[index] * self.force_pattern)
+
+    def augmented(self, index: int, mass_inverse: np.ndarray) -> np.ndarray:
+        """The (2n+1)² matrix [[A_j, b_j], [0, 0]] of one piece."""
+        n = self.size
+        stiffness, damping, force = self.piece(index)
+        matrix = np.zeros((2 * n + 1, 2 * n + 1))
+        matrix[:n, n:2 * n] = np.eye(n)
+        matrix[n:2 * n, :n] = -mass_inverse @ stiffness
+        matrix[n:2 * n, n:2 * n] = -mass_inverse @ damping
+        matrix[n:2 * n, 2 * n] = mass_inverse @ force
+        return matrix
+
+
+@dataclass(frozen=True, eq=False)
+class PeriodicResponse:
+    """The periodic orbit: ``time`` (S,) [s] with ``samples_per_piece`` equal steps per piece plus the period's
+    end; ``displacement``, ``velocity`` (S, n); Floquet ``multipliers`` (2n,) complex, largest modulus first;
+    ``initial_state`` z₀ (2n,)."""
+
+    time: np.ndarray
+    displacement: np.ndarray
+    velocity: np.ndarray
+    multipliers: np.ndarray
+    initial_state: np.ndarray
+
+    @property
+    def spectral_radius(self) -> float:
+        """max |μ| [-] (< 1: stable)."""
+        return float(np.abs(self.multipliers).max())
+
+
+def _mass_inverse(system: PiecewiseLinearSystem) -> np.ndarray:
+    from scipy.linalg import LinAlgError, cho_factor, cho_solve
+
+    try:
+        factor = cho_factor(system.mass)
+    except LinAlgError as error:
+        raise ProblemError("mass", "not positive definite", "a symmetric positive definite matrix",
+                           "every DOF needs inertia") from error
+    return cho_solve(factor, np.eye(system.size))
+
+
+def _piece_steps(system: PiecewiseLinearSystem, samples: int) -> list[np.ndarray]:
+    """expm of each augmented piece over one sub-step h_j/samples."""
+    from scipy.linalg import expm
+
+    inverse = _mass_inverse(system)
+    widths = np.diff(system.nodes) / samples
+    return [expm(system.augmented(j, inverse) * widths[j]) for j in range(widths.size)]
+
+
+def _power(matrix: np.ndarray, count: int) -> np.ndarray:
+    return matrix if count == 1 else np.linalg.matrix_power(matrix, count)
+
+
+def monodromy(system: PiecewiseLinearSystem) -> tuple[np.ndarray, np.ndarray]:
+    """Monodromy Φ_T (2n, 2n) and the image p (2n,) of z = 0 after one period."""
+    total = np.eye(2 * system.size + 1)
+    for step in _piece_steps(system, 1):
+        total = step @ total
+    return total[:-1, :-1], total[:-1, -1]
+
+
+def periodic_response(system: PiecewiseLinearSystem, samples_per_piece: int = 16) -> PeriodicResponse:
+    """The exact periodic steady state, sampled at ``samples_per_piece`` equal steps per piece.
+
+    Raises ModelLimitError when a Floquet multiplier has modulus >= 1 (parametric instability, an undamped mode or
+    a rigid-body mode left in the system): there is then no attracting periodic orbit.
+    """
+    if int(samples_per_piece) != samples_per_piece or samples_per_piece < 1:
+        raise ProblemError("samples_per_piece", samples_per_piece, "integer >= 1", "sub-steps per piece")
+    samples = int(samples_per_piece)
+    steps = _piece_steps(system, samples)
+    full = [_power(step, samples) for step in steps]
+    total = np.eye(2 * system.size + 1)
+    for step in full:
+        total = step @ total
+    transition, image = total[:-1, :-1], total[:-1, -1]
+    multipliers = np.linalg.eigvals(transition)
+    multipliers = multipliers[np.argsort(-np.abs(multipliers))]
+    radius = float(np.abs(multipliers).max())
+    if not np.isfinite(radius) or radius >= 1.0:
+        raise ModelLimitError(f"a Floquet multiplier has modulus {radius:.6g} >= 1: parametric instability, an "
+                              "undamped or a rigid-body mode; there is no attracting periodic orbit")
+    initial = np.linalg.solve(np.eye(transition.shape[0]) - transition, image)
+    n, pieces = system.size, len(steps)
+    states = np.empty((pieces * samples + 1, 2 * n + 1))
+    state = np.append(initial, 1.0)
+    row = 0
+    for step in steps:
+        for _ in range(samples):
+            states[row] = state
+            state = step @ state
+            row += 1
+    states[row] = state
+    offsets = np.arange(samples) / samples
+    time = np.concatenate([(system.nodes[:-1, None] + np.diff(system.nodes)[:, None] * offsets).ravel(),
+                           [system.period]])
+    return PeriodicResponse(time, states[:, :n], states[:, n:2 * n], multipliers, initial)

@@ -1,0 +1,120 @@
+"""The mesh state drives the drivetrain: in the limit of rigid shafts and bearings the n-DOF periodic response is
+the 1-DOF one of the same mesh state (DTE, Kv, multipliers); bearing forces balance the mesh force."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from drivetrain_builders import geared_pair
+
+from thermogear.drivetrain import Material
+from thermogear.drivetrain.response import drivetrain_periodic_response
+from thermogear.dynamics.periodic import periodic_steady_state
+from thermogear.mesh.state import MeshState
+from thermogear.mesh_cycle import MeshGrid
+
+R_B1, R_B2 = 0.0381, 0.0493
+SHAFT_POLAR = 7810.0 * math.pi * 0.04**4 / 32 * 0.2  # ρ J_p L of one 0.2 m, d = 40 mm shaft [kg·m²]
+J_1, J_2 = 4e-3 + SHAFT_POLAR, 9e-3 + SHAFT_POLAR
+
+
+def _mesh_state(mass: float, speed_rpm: float = 1500.0, teeth: int = 20, deviation: float = 0.0) -> MeshState:
+    """A square-wave mesh period (contact ratio 1.6) as a mesh model would hand it over: two pair slots."""
+    period = 60.0 / (teeth * speed_rpm)
+    nodes = np.array([0.0, 0.3 * period, 0.6 * period, period])
+    in_contact = np.array([[True, True, True], [True, True, False]])
+    pair_stiffness = np.array([[1.9e7, 2.1e7, 2.7e7], [2.0e7, 1.8e7, 0.0]])
+    pair_damping = np.array([[900.0, 1000.0, 1500.0], [1000.0, 900.0, 0.0]])
+    grid = MeshGrid(nodes=nodes, midpoints=0.5 * (nodes[1:] + nodes[:-1]), roll=np.zeros((2, 3)),
+                    in_contact=in_contact, contact_count=in_contact.sum(axis=0))
+    return MeshState(model="test", speed_rpm=speed_rpm, normal_load=3000.0, mass=mass, grid=grid,
+                     pair_stiffness=pair_stiffness, pair_damping=pair_damping,
+                     mesh_damping=pair_damping.sum(axis=0), pair_deviation=np.where(in_contact, deviation, 0.0),
+                     pair_engaged=in_contact, static_transmission_error=None, backlash=None, face_width=0.02,
+                     mesh_frequency_hz=1.0 / period)
+
+
+def _stiffened_pair(scale: float):
+    """The pair with shafts ``scale`` times stiffer than steel and bearings of 1e8·scale N/m; material (β = 1e-2/scale
+    s) and bearing damping damp the support modes so that every multiplier is inside the unit circle."""
+    stiff = Material(youngs_modulus=211e9 * scale, density=7810.0, poisson_ratio=0.3)
+    return geared_pair(bearing_x=1e8 * scale, bearing_y=1e8 * scale, material=stiff, pinion_inertia=(1.0, 4e-3, 2e-3),
+                       wheel_inertia=(1.5, 9e-3, 4.5e-3), bearing_damping=1e3, material_damping=1e-2 / scale)
+
+
+@pytest.mark.slow
+def test_rigid_supports_reproduce_the_one_dof_periodic_result():
+    mass = J_1 * J_2 / (J_1 * R_B2**2 + J_2 * R_B1**2)
+    state = _mesh_state(mass, deviation=3e-6)
+    orbit = periodic_steady_state(state.problem(), samples_per_interval=16)
+    scale = np.abs(orbit.displacement).max()
+    errors, responses = [], []
+    for stiffening in (1e4, 1e5):
+        response = drivetrain_periodic_response(_stiffened_pair(stiffening).assemble(), state, samples_per_piece=16)
+        errors.append(np.abs(response.transmission_error - orbit.displacement).max() / scale)
+        responses.append(response)
+    # the supports' compliance lowers the mesh mode by ~k_m/k_support: the difference falls ~10× per decade of
+    # stiffness (measured 3.2e-5 → 4.0e-6), i.e. the drivetrain tends to the 1-DOF orbit. At 1e5× steel it is within
+    # 1e-5; the issue's 1e-6 needs supports ≥ 1e15 N/m, where the stiffness contrast (1e13) costs double precision
+    # about 1e-6 in the exponentials, so the limit is checked by its rate here rather than at one extreme point
+    assert errors[1] < 1e-5
+    assert errors[0] / errors[1] > 5.0
+    from thermogear.dynamics.metrics import compute_metrics
+    interval = np.minimum(np.arange(orbit.time.size) // 16, 2)
+    one_dof = compute_metrics(state.problem(), orbit.time, orbit.displacement, orbit.velocity, interval,
+                              orbit.multipliers)
+    stiffest = responses[1]
+    assert stiffest.kv == pytest.approx(one_dof["kv"], rel=1e-5)
+    assert stiffest.metrics["dte_rms"] == pytest.approx(one_dof["dte_rms"], rel=1e-5)
+    # the pair's two multipliers are among the n-DOF system's (the support modes add their own); a multiplier's
+    # phase is ω·T ≈ 7 rad here, so the ~4e-6 relative shift of ω moves it by ~3e-5 of |μ|: 1e-4 of |μ|
+    for multiplier in orbit.multipliers:
+        assert np.abs(stiffest.multipliers - multiplier).min() < 1e-4 * abs(multiplier)
+
+
+def test_bearing_forces_balance_the_mesh_force_on_each_shaft():
+    # flexible pair: the shaft's two bearings carry the gear's force less the inertia forces, which average to zero
+    # over a period; gear at mid-span, so each pinion bearing carries −½·mean(F)·u on average (harmonic 0)
+    drivetrain = geared_pair(bearing_damping=2e3, material_damping=1e-6)
+    assembled = drivetrain.assemble()
+    response = drivetrain_periodic_response(assembled, _mesh_state(0.5), samples_per_piece=16)
+    u = drivetrain.meshes[0].line_of_action
+    frequencies, amplitudes = response.bearing_spectrum("pinion shaft bearing A")
+    assert frequencies[1] == pytest.approx(500.0, rel=1e-12)  # 20 teeth at 1500 rpm
+    # F jumps with k(τ) at the nodes: integrate it piece by piece, the end of each piece at its left limit
+    problem = _mesh_state(0.5).problem()
+    excitation = problem.force_per_interval - problem.static_load
+    integral = 0.0
+    for piece in range(3):
+        rows = np.arange(16 * piece, 16 * piece + 17)
+        values = (problem.stiffness[piece] * response.transmission_error[rows] - excitation[piece]
+                  + problem.damping[piece] * response.transmission_error_rate[rows])
+        integral += np.trapezoid(values, response.time[rows])
+    mean_force = integral / response.period
+    # both means come from 16 samples per piece (trapezoid vs resampled FFT): 1e-3 covers their quadrature error
+    assert amplitudes[:2, 0] == pytest.approx(np.abs(0.5 * mean_force * u), rel=1e-3)
+    assert np.all(amplitudes[:2, 1] > 0.0)  # the mesh harmonics reach the housing
+    assert response.kv > 1.0
+
+
+@pytest.mark.slow
+def test_backlash_drivetrain_in_permanent_contact_equals_the_linear_drivetrain():
+    # load large against the vibration at a speed far from resonance: the teeth never separate, so the backlash
+    # orbit is the linear one (same flow, no switch): 1e-9 relative
+    from dataclasses import replace
+
+    from thermogear.drivetrain.response import drivetrain_backlash_system, drivetrain_periodic_system
+    from thermogear.dynamics.backlash_ndof import backlash_periodic_orbit
+    from thermogear.dynamics.periodic_ndof import periodic_response
+
+    drivetrain = geared_pair(bearing_damping=2e3, material_damping=1e-6, elements=2)
+    state = replace(_mesh_state(0.5, speed_rpm=600.0), backlash=50e-6)
+    assembled = drivetrain.assemble()
+    system, _ = drivetrain_backlash_system(assembled, state)
+    orbit = backlash_periodic_orbit(system, substeps=4)
+    linear, _ = drivetrain_periodic_system(assembled, state)
+    reference = periodic_response(linear, 1).initial_state
+    assert orbit.converged and orbit.switches == 0
+    assert np.abs(orbit.initial_state - reference).max() < 1e-9 * np.abs(reference).max()

@@ -1,0 +1,116 @@
+"""The exact periodic state of an n-DOF linear time-periodic system: against the 1-DOF monodromy solver, against
+solve_ivp run to steady state, and the Floquet multipliers of a constant system."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from thermogear.dynamics.modal import damped_modes
+from thermogear.dynamics.periodic import periodic_steady_state
+from thermogear.dynamics.periodic_ndof import PiecewiseLinearSystem, monodromy, periodic_response
+from thermogear.dynamics.problem import MeshDynamicsProblem
+from thermogear.errors import ModelLimitError, ProblemError
+
+
+def _chain(size: int, period: float, stiffness_levels=(1.3e8, 0.9e8), double_fraction=0.6) -> PiecewiseLinearSystem:
+    """A chain of masses and springs to ground at both ends, one parametric spring (a square wave) between DOFs
+    0 and 1 and Rayleigh damping C = aM + bK₀."""
+    rng = np.random.default_rng(7)
+    masses = rng.uniform(0.5, 2.0, size)
+    springs = rng.uniform(0.5e8, 2e8, size + 1)
+    stiffness = np.zeros((size, size))
+    for i in range(size + 1):
+        for a in (i - 1, i):
+            if 0 <= a < size:
+                stiffness[a, a] += springs[i]
+        if 0 < i < size:
+            stiffness[i - 1, i] -= springs[i]
+            stiffness[i, i - 1] -= springs[i]
+    mass = np.diag(masses)
+    pattern = np.zeros((size, size))
+    pattern[np.ix_([0, 1], [0, 1])] = [[1.0, -1.0], [-1.0, 1.0]]
+    force_pattern = np.zeros(size)
+    force_pattern[[0, 1]] = [1.0, -1.0]
+    force = np.zeros(size)
+    force[0], force[-1] = 500.0, -200.0
+    return PiecewiseLinearSystem(
+        mass=mass, stiffness=stiffness, damping=200.0 * mass + 2e-6 * stiffness, force=force,
+        nodes=np.array([0.0, double_fraction * period, period]), stiffness_pattern=pattern,
+        stiffness_factor=np.array(stiffness_levels), damping_pattern=pattern, damping_factor=np.array([200.0, 150.0]),
+        force_pattern=force_pattern, force_factor=np.array([1e8 * 2e-6, 0.0]))
+
+
+def test_one_dof_case_equals_the_existing_monodromy_solver():
+    problem = MeshDynamicsProblem.square_wave(mass=0.35, mesh_period=1 / 3000, contact_ratio=1.6,
+                                              single_stiffness=2.6e8, double_stiffness=4.1e8, single_damping=180.0,
+                                              double_damping=230.0, force=3000.0)
+    one = np.ones((1, 1))
+    system = PiecewiseLinearSystem(mass=[[0.35]], stiffness=np.zeros((1, 1)), damping=np.zeros((1, 1)),
+                                   force=[0.0], nodes=problem.nodes, stiffness_pattern=one,
+                                   stiffness_factor=problem.stiffness, damping_pattern=one,
+                                   damping_factor=problem.damping, force_pattern=[1.0],
+                                   force_factor=problem.force_per_interval)
+    response = periodic_response(system, samples_per_piece=32)
+    orbit = periodic_steady_state(problem, samples_per_interval=32)
+    scale = np.abs(orbit.displacement).max()
+    # two exact solutions (closed-form 2×2 exponential vs scaled-and-squared expm): agree to rounding, 1e-9
+    assert np.allclose(response.time, orbit.time, rtol=1e-12, atol=0)
+    assert np.abs(response.displacement[:, 0] - orbit.displacement).max() < 1e-9 * scale
+    assert np.abs(response.velocity[:, 0] - orbit.velocity).max() < 1e-9 * np.abs(orbit.velocity).max()
+    assert np.sort(np.abs(response.multipliers)) == pytest.approx(np.sort(np.abs(orbit.multipliers)), rel=1e-9)
+
+
+def test_constant_coefficients_give_multipliers_exp_lambda_t():
+    period = 2e-4
+    system = _chain(6, period, stiffness_levels=(1e8, 1e8))
+    system = PiecewiseLinearSystem(**{**system.__dict__, "damping_factor": np.array([150.0, 150.0])})
+    transition, _ = monodromy(system)
+    stiffness, damping, _ = system.piece(0)
+    modes = damped_modes(system.mass, damping, stiffness)
+    expected = np.exp(np.concatenate([modes.eigenvalues, modes.eigenvalues.conj()]) * period)
+    found = np.linalg.eigvals(transition)
+    # match each e^{λT} to its nearest multiplier; both are exact to rounding (1e-10 of |μ| ≤ 1)
+    for value in expected:
+        assert np.abs(found - value).min() < 1e-10
+
+
+@pytest.mark.slow
+def test_thirty_dof_orbit_equals_solve_ivp_run_to_steady_state():
+    from scipy.integrate import solve_ivp
+
+    period = 1e-3
+    system = _chain(30, period)
+    response = periodic_response(system, samples_per_piece=8)
+    n = system.size
+    inverse = np.linalg.inv(system.mass)
+
+    def field(piece):
+        stiffness, damping, force = system.piece(piece)
+        matrix = np.block([[np.zeros((n, n)), np.eye(n)], [-inverse @ stiffness, -inverse @ damping]])
+        load = np.concatenate([np.zeros(n), inverse @ force])
+        return lambda t, z: matrix @ z + load
+
+    fields = [field(0), field(1)]
+    state = np.zeros(2 * n)
+    # every mode decays at least as e^{−at/2} (a = 200 1/s of the mass-proportional damping): 200 periods = 0.2 s
+    # leave e^{−20} ≈ 2e-9 of the start-up transient, far below the 1e-6 compared
+    for _ in range(200):
+        for piece in (0, 1):
+            start, stop = system.nodes[piece], system.nodes[piece + 1]
+            state = solve_ivp(fields[piece], (start, stop), state, method="DOP853", rtol=1e-10,
+                              atol=1e-17).y[:, -1]
+    scale = np.abs(response.displacement).max()
+    # the integration's end state against the orbit's z₀: 1e-6 relative (the issue's criterion)
+    assert np.abs(state[:n] - response.initial_state[:n]).max() < 1e-6 * scale
+    assert response.spectral_radius < 1.0
+
+
+def test_unstable_or_undamped_systems_are_refused():
+    system = _chain(4, 1e-3)
+    undamped = PiecewiseLinearSystem(**{**system.__dict__, "damping": np.zeros((4, 4)),
+                                        "damping_factor": np.zeros(2)})
+    with pytest.raises(ModelLimitError, match="modulus"):
+        periodic_response(undamped)
+    with pytest.raises(ProblemError, match="stiffness_factor"):
+        PiecewiseLinearSystem(**{**system.__dict__, "stiffness_factor": np.ones(3)})
