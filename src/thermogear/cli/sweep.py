@@ -72,7 +72,8 @@ def sweep(
     if loaded.dynamics.mesh == "nonlinear" and method == "batch":
         from thermogear.cli.sweep_branches import run_branch_sweep
 
-        run_branch_sweep(study, out, direction or "both", overwrite, resume, plot, progress, as_json)
+        run_branch_sweep(study, out, direction or "both", overwrite, resume, plot, progress, as_json,
+                         scheduler=scheduler, workers=workers)
         return
     if direction is not None:
         raise CaseError("--direction", direction, "only with [dynamics] mesh = \"nonlinear\"",

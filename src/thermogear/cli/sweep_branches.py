@@ -16,10 +16,10 @@ from thermogear.warning_causes import distinct_warnings
 def branch_summary(dataset, models) -> dict:
     """Per model and direction: the largest Kv over the points whose orbit was found, how many points lost
     contact, struck the back flanks or were not periodic, and the hysteresis between the branches."""
-    from thermogear.sweep.branches import hysteresis_bands  # noqa: PLC0415
+    from thermogear.sweep.hysteresis import hysteresis_bands  # noqa: PLC0415
 
     result: dict = {"kv_max": {}, "contact_loss_points": {}, "back_side_contact_points": {},
-                    "not_periodic_points": {}, "failed_points": {}}
+                    "not_periodic_points": {}, "failed_points": {}, "jammed_points": {}}
     for model in models:
         for direction in dataset["direction"].values:
             key = f"{model}/{direction}"
@@ -32,12 +32,13 @@ def branch_summary(dataset, models) -> dict:
             kinds = np.asarray(part["response"].values).astype(str)
             result["not_periodic_points"][key] = int(np.isin(kinds, ("subharmonic", "non-periodic")).sum())
             result["failed_points"][key] = int((kinds == "failed").sum())
+            result["jammed_points"][key] = int((kinds == "jammed").sum())
     result["hysteresis"] = hysteresis_bands(dataset)
     return result
 
 
 def run_branch_sweep(study, out: Path, direction: str, overwrite: bool, resume: bool, plot: Path | None,
-                     progress: bool, as_json: bool) -> None:
+                     progress: bool, as_json: bool, scheduler: str | None = None, workers: int | None = None) -> None:
     """Compute, store, plot and summarise a nonlinear-mesh study (``thermogear sweep`` of such a case)."""
     import warnings  # noqa: PLC0415
 
@@ -47,6 +48,10 @@ def run_branch_sweep(study, out: Path, direction: str, overwrite: bool, resume: 
     if resume:
         raise CaseError("--resume", True, "not with the nonlinear mesh", "a branch study follows each branch "
                         "from its start in one run and is written whole at the end; run it again")
+    if scheduler not in (None, "", "local", "threads", "serial"):
+        raise CaseError("--scheduler", scheduler, "threads | serial (or none: threads)",
+                        "a nonlinear-mesh study runs its groups (one per combination of the parameters other than "
+                        "speed) on threads in this process; Dask schedulers take the linear mesh's independent points")
     if plot is not None:
         from thermogear.ownership import check_figure_file  # noqa: PLC0415
 
@@ -56,7 +61,8 @@ def run_branch_sweep(study, out: Path, direction: str, overwrite: bool, resume: 
         warnings.simplefilter("always")
         with point_progress("branches", total=study.size * len(study.models), completed=0, unit="points",
                             enabled=progress and not as_json) as advance:
-            dataset = branch_study(study, direction, progress=lambda points: advance(points * len(study.models)))
+            dataset = branch_study(study, direction, progress=lambda points: advance(points * len(study.models)),
+                                   workers=1 if scheduler == "serial" else workers)
     target = write_branch_store(dataset, out, overwrite=overwrite)
     elapsed = time.perf_counter() - start
     figure_path = None
@@ -85,13 +91,16 @@ def run_branch_sweep(study, out: Path, direction: str, overwrite: bool, resume: 
         console.print(f"  {key}: max Kv {value if value is None else f'{value:.4g}'}, contact loss at "
                       f"{summary['contact_loss_points'][key]} points, back-flank impacts at "
                       f"{summary['back_side_contact_points'][key]}, not periodic at "
-                      f"{summary['not_periodic_points'][key]}, no orbit found at {summary['failed_points'][key]}")
+                      f"{summary['not_periodic_points'][key]}, no orbit found at {summary['failed_points'][key]}"
+                      + (f", jammed (backlash closed, no result) at {summary['jammed_points'][key]}"
+                         if summary["jammed_points"][key] else ""))
     for model, band in summary["hysteresis"].items():
         if band.get("differ"):
             jumps = "; ".join(f"{way} sweep jumps " + ", ".join(f"{'up' if item['amplitude'] == 'rises' else 'down'} at "
                                                               f"{item['speed_rpm']:.0f} rpm" for item in items)
                               for way in ("up", "down") if (items := band.get(f"{way}_sweep_jumps")))
-            console.print(f"  {model}: up and down branches differ over {band['band_rpm'][0]:.0f}–"
-                          f"{band['band_rpm'][1]:.0f} rpm (hysteresis){'; ' + jumps if jumps else ''}")
+            spans = ", ".join(f"{low:.0f}–{high:.0f}" for low, high in band["bands_rpm"])
+            console.print(f"  {model}: up and down branches differ over {spans} rpm (hysteresis)"
+                          f"{'; ' + jumps if jumps else ''}")
     if figure_path:
         console.print(f"plot: {figure_path}")

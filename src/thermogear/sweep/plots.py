@@ -43,10 +43,14 @@ def _select(dataset, select: dict[str, Any] | None, keep: tuple[str, ...]):
 
 def linear_model_valid(dataset):
     """Per model and point: True where the linear mesh model holds (a stable periodic steady state and no contact
-    loss). ``dataset``: a study's Dataset, or a mapping of its ``stable`` and ``contact_loss`` NumPy arrays.
+    loss, gears not jammed). ``dataset``: a study's Dataset, or a mapping of its ``stable``, ``contact_loss`` and
+    ``jammed`` NumPy arrays.
     Elsewhere Kv and the other responses are those of teeth that would separate or of an unstable solution (Kv of
     several hundred), not of the gear pair: summaries leave them out and plots mark them."""
-    return (dataset["stable"] == 1) & (dataset["contact_loss"] == 0)
+    valid = (dataset["stable"] == 1) & (dataset["contact_loss"] == 0)
+    if "jammed" in dataset:  # stores written before the flag existed have none
+        valid = valid & (dataset["jammed"] == 0)
+    return valid
 
 
 def _pinion_teeth(dataset) -> float:
