@@ -38,7 +38,8 @@ def branch_summary(dataset, models) -> dict:
 
 
 def run_branch_sweep(study, out: Path, direction: str, overwrite: bool, resume: bool, plot: Path | None,
-                     progress: bool, as_json: bool, scheduler: str | None = None, workers: int | None = None) -> None:
+                     progress: bool, as_json: bool, scheduler: str | None = None, workers: int | None = None,
+                     multistart: int = 0) -> None:
     """Compute, store, plot and summarise a nonlinear-mesh study (``thermogear sweep`` of such a case)."""
     import warnings  # noqa: PLC0415
 
@@ -62,7 +63,7 @@ def run_branch_sweep(study, out: Path, direction: str, overwrite: bool, resume: 
         with point_progress("branches", total=study.size * len(study.models), completed=0, unit="points",
                             enabled=progress and not as_json) as advance:
             dataset = branch_study(study, direction, progress=lambda points: advance(points * len(study.models)),
-                                   workers=1 if scheduler == "serial" else workers)
+                                   workers=1 if scheduler == "serial" else workers, multistart=multistart)
     target = write_branch_store(dataset, out, overwrite=overwrite)
     elapsed = time.perf_counter() - start
     figure_path = None
@@ -77,6 +78,8 @@ def run_branch_sweep(study, out: Path, direction: str, overwrite: bool, resume: 
                "dims": {name: int(size) for name, size in zip(study.dims, study.shape)},
                "models": list(study.models), "points": study.size, "seconds": elapsed,
                **branch_summary(dataset, study.models), "plot": figure_path, "warnings": messages}
+    if multistart:
+        summary["multistart"] = {"starts": multistart, "points": orbit_listing(dataset)}
     if as_json:
         for message in messages:
             print_warning(message, error_console)
@@ -102,5 +105,50 @@ def run_branch_sweep(study, out: Path, direction: str, overwrite: bool, resume: 
             spans = ", ".join(f"{low:.0f}–{high:.0f}" for low, high in band["bands_rpm"])
             console.print(f"  {model}: up and down branches differ over {spans} rpm (hysteresis)"
                           f"{'; ' + jumps if jumps else ''}")
+    if multistart:
+        _print_orbits(summary["multistart"], console)
     if figure_path:
         console.print(f"plot: {figure_path}")
+
+
+def orbit_listing(dataset) -> list[dict]:
+    """Per point and model of a multi-start study: its parameter values, and every stable orbit found (period
+    count, DTE peak-to-peak [μm], Kv, back-flank contact, basin share), the largest basin share first."""
+    listing = []
+    count = dataset["stable_orbit_count"]
+    for index in np.ndindex(*count.shape):
+        if not np.isfinite(count.values[index]):
+            continue  # jammed: no orbit
+        point = {dim: (str(count[dim].values[i]) if dim == "model" else float(count[dim].values[i]))
+                 for dim, i in zip(count.dims, index)}
+        orbits = []
+        for number in range(int(count.values[index])):
+            where = (*index, number)
+            orbits.append({
+                "period_count": int(dataset["orbit_period_count"].values[where]),
+                "dte_peak_to_peak_um": round(float(dataset["orbit_dte_peak_to_peak"].values[where]) * 1e6, 2),
+                "kv": round(float(dataset["orbit_kv"].values[where]), 4),
+                "back_side_contact": bool(dataset["orbit_back_contact_fraction"].values[where] > 0.0),
+                "basin_share": round(float(dataset["orbit_basin_share"].values[where]), 4)})
+        listing.append({**point, "orbits": orbits,
+                        "unsettled_start_share": round(float(dataset["unsettled_start_share"].values[index]), 4)})
+    return listing
+
+
+def _print_orbits(search: dict, console, limit: int = 40) -> None:
+    """One line per point: every stable orbit found from the starts (the rest of a long study in the store)."""
+    console.print(f"stable orbits found from {search['starts']} starts per point (more may exist; the store holds "
+                  "them all):")
+    for point in search["points"][:limit]:
+        where = ", ".join(f"{key} {value:g}" for key, value in point.items()
+                          if key not in ("model", "orbits", "unsettled_start_share"))
+        orbits = "; ".join(f"{item['dte_peak_to_peak_um']:.1f} μm p-p, {item['period_count']} period"
+                           f"{'s' if item['period_count'] > 1 else ''}"
+                           f"{', both flanks' if item['back_side_contact'] else ''}, Kv {item['kv']:.3g}, "
+                           f"{100 * item['basin_share']:.0f} % of starts" for item in point["orbits"])
+        unsettled = (f" ({100 * point['unsettled_start_share']:.0f} % of starts settled on none)"
+                     if point["unsettled_start_share"] else "")
+        console.print(f"  {point['model']} at {where}: {len(point['orbits'])} stable orbit"
+                      f"{'s' if len(point['orbits']) != 1 else ''}: {orbits}{unsettled}")
+    if len(search["points"]) > limit:
+        console.print(f"  … {len(search['points']) - limit} more points in the store")

@@ -74,6 +74,7 @@ class _Group:
     jammed: np.ndarray
     static_load: np.ndarray
     mesh_frequency_hz: np.ndarray
+    orbits: np.ndarray | None = None  # (models, speeds) multi-start results (sweep.multistart), None: jammed
 
 
 def _group_values(study, rest: tuple[int, ...], speed_axis: int | None) -> tuple[list, tuple]:
@@ -86,9 +87,11 @@ def _group_values(study, rest: tuple[int, ...], speed_axis: int | None) -> tuple
     return values, tuple(index)
 
 
-def _solve_group(study, rest: tuple[int, ...], speed_axis: int | None, directions: tuple[str, ...]) -> _Group:
-    """Both branches of every model of one group. A case whose gears jam (the thermal expansion closes the
-    backlash) gives NaN results marked ``jammed``, never an error: the other groups are computed."""
+def _solve_group(study, rest: tuple[int, ...], speed_axis: int | None, directions: tuple[str, ...],
+                 multistart: int = 0) -> _Group:
+    """Both branches of every model of one group (and with ``multistart`` the stable orbits that many starts find
+    at each point). A case whose gears jam (the thermal expansion closes the backlash) gives NaN results marked
+    ``jammed``, never an error: the other groups are computed."""
     values, _ = _group_values(study, rest, speed_axis)
     speeds = (np.asarray(study.parameters[speed_axis].values, dtype=float) if speed_axis is not None else None)
     count = 1 if speeds is None else speeds.size
@@ -98,11 +101,12 @@ def _solve_group(study, rest: tuple[int, ...], speed_axis: int | None, direction
     response = np.full(shape, "jammed", dtype=object)
     jammed = np.zeros(len(study.models), dtype=bool)
     static_load, frequency = np.full(count, np.nan), np.full(count, np.nan)
+    orbits = np.full((len(study.models), count), None, dtype=object) if multistart else None
     try:
         group_case = study.case_at(tuple(values))
     except JammingError:
         jammed[:] = True
-        return _Group(arrays, response, jammed, static_load, frequency)
+        return _Group(arrays, response, jammed, static_load, frequency, orbits)
     if speeds is None:
         speeds = np.array([group_case.operating_point.speed_rpm], dtype=float)
     frequency[:] = group_case.gear_pair.pinion.teeth * speeds / 60.0
@@ -126,17 +130,23 @@ def _solve_group(study, rest: tuple[int, ...], speed_axis: int | None, direction
             arrays["period_count"][target] = branch.period_count.astype(float)
             arrays["converged"][target] = branch.converged.astype(float)
             response[target] = branch.response
-    return _Group(arrays, response, jammed, static_load, frequency)
+        if multistart:
+            from thermogear.sweep.multistart import point_orbits  # noqa: PLC0415
+
+            for number, problem in enumerate(problems):
+                orbits[model_index, number] = point_orbits(problem, multistart,
+                                                           group_case.dynamics.include_damping_force)
+    return _Group(arrays, response, jammed, static_load, frequency, orbits)
 
 
-def _solve_recorded(study, rest, speed_axis, directions) -> tuple[_Group, list]:
+def _solve_recorded(study, rest, speed_axis, directions, multistart) -> tuple[_Group, list]:
     """:func:`_solve_group` on a worker thread, its warnings recorded in the thread's own scope."""
     with warning_scope.recorded() as caught:
-        group = _solve_group(study, rest, speed_axis, directions)
+        group = _solve_group(study, rest, speed_axis, directions, multistart)
     return group, list(caught)
 
 
-def branch_study(study, direction: str = "both", progress=None, workers: int | None = None):
+def branch_study(study, direction: str = "both", progress=None, workers: int | None = None, multistart: int = 0):
     """The xarray Dataset of a nonlinear-mesh study: dims ``(direction, model, *parameters)`` for the variables of
     :data:`BRANCH_VARIABLES` and ``response`` ("periodic" | "subharmonic" | "non-periodic" | "failed" | "jammed"),
     ``jammed`` with dims ``(model, *parameters)`` (1 where the thermal expansion closes the backlash: no result,
@@ -147,6 +157,11 @@ def branch_study(study, direction: str = "both", progress=None, workers: int | N
     one per core; 1: in the calling thread): the backlash integrator releases Python's global interpreter lock.
     The numbers do not depend on the thread count. Warnings raised by the tasks are raised again in the calling
     thread, once each. ``progress(points)`` is called as each group finishes (``points``: its speeds).
+
+    ``multistart`` N > 0: at every point and model also the multi-start search of
+    :func:`~thermogear.dynamics.backlash_orbits.stable_orbits` from N starts (about 0.1 s per start and point):
+    the variables of :data:`thermogear.sweep.multistart.ORBIT_VARIABLES` with an extra ``orbit`` dimension (the
+    largest basin share first), ``stable_orbit_count`` and ``unsettled_start_share``.
     """
     import xarray as xr  # noqa: PLC0415
 
@@ -159,6 +174,9 @@ def branch_study(study, direction: str = "both", progress=None, workers: int | N
     jammed = np.zeros((len(study.models), *shape), dtype=np.int8)
     static_load = np.full(shape, np.nan)
     frequency = np.full(shape, np.nan)
+    if int(multistart) != multistart or multistart < 0:
+        raise CaseError("multistart", multistart, "an integer >= 0 (0: no search)", "number of starts per point")
+    censuses = np.full((len(study.models), *shape), None, dtype=object) if multistart else None
     others = [p.size for a, p in enumerate(study.parameters) if a != speed_axis]
     groups = list(np.ndindex(*others)) if others else [()]
 
@@ -171,10 +189,12 @@ def branch_study(study, direction: str = "both", progress=None, workers: int | N
         jammed[(slice(None), *where)] = group.jammed[:, None] if speed_axis is not None else group.jammed
         static_load[where] = pick(group.static_load)
         frequency[where] = pick(group.mesh_frequency_hz)
+        if censuses is not None:
+            censuses[(slice(None), *where)] = pick(group.orbits)
         if progress is not None:
             progress(int(group.static_load.size))
 
-    _run_groups(study, groups, speed_axis, directions, place, workers)
+    _run_groups(study, groups, speed_axis, directions, place, workers, int(multistart))
     coords: dict[str, Any] = {"direction": ("direction", np.array(directions, dtype=str)),
                               "model": ("model", np.array(study.models, dtype=str))}
     for parameter in study.parameters:
@@ -189,11 +209,15 @@ def branch_study(study, direction: str = "both", progress=None, workers: int | N
                                                   "no result, NaN"})
     data["static_load"] = (study.dims, static_load, {"units": "N", "long_name": "static normal load w"})
     data["mesh_frequency_hz"] = (study.dims, frequency, {"units": "Hz", "long_name": "mesh frequency z1 n1 / 60"})
+    if censuses is not None:
+        from thermogear.sweep.multistart import orbit_dataset_variables  # noqa: PLC0415
+
+        data.update(orbit_dataset_variables(censuses, study.models, study.dims, int(multistart)))
     return xr.Dataset(data, coords=coords, attrs={"mesh": "nonlinear", "directions": ",".join(directions),
                                                    "case": study.case.name, "load": "constant torque"})
 
 
-def _run_groups(study, groups, speed_axis, directions, place, workers: int | None) -> None:
+def _run_groups(study, groups, speed_axis, directions, place, workers: int | None, multistart: int) -> None:
     """Solve every group, serially (``workers`` = 1) or on a pool of threads; ``place(rest, group)`` is called in
     the calling thread as each finishes."""
     import os  # noqa: PLC0415
@@ -201,14 +225,15 @@ def _run_groups(study, groups, speed_axis, directions, place, workers: int | Non
     count = min(workers or os.cpu_count() or 1, len(groups))
     if count <= 1:
         for rest in groups:
-            place(rest, _solve_group(study, rest, speed_axis, directions))
+            place(rest, _solve_group(study, rest, speed_axis, directions, multistart))
         return
     from concurrent.futures import ThreadPoolExecutor, as_completed  # noqa: PLC0415
 
     caught: list = []
     with warning_scope.routed() as unscoped:
         with ThreadPoolExecutor(count, "thermogear-branches") as pool:
-            futures = {pool.submit(_solve_recorded, study, rest, speed_axis, directions): rest for rest in groups}
+            futures = {pool.submit(_solve_recorded, study, rest, speed_axis, directions, multistart): rest
+                       for rest in groups}
             try:
                 for future in as_completed(futures):
                     group, messages = future.result()
