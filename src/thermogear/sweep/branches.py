@@ -74,6 +74,7 @@ class _Group:
     jammed: np.ndarray
     static_load: np.ndarray
     mesh_frequency_hz: np.ndarray
+    natural_frequency_hz: np.ndarray  # (models,) of the linear mesh with every pair in contact [Hz]
     orbits: np.ndarray | None = None  # (models, speeds) multi-start results (sweep.multistart), None: jammed
 
 
@@ -102,11 +103,12 @@ def _solve_group(study, rest: tuple[int, ...], speed_axis: int | None, direction
     jammed = np.zeros(len(study.models), dtype=bool)
     static_load, frequency = np.full(count, np.nan), np.full(count, np.nan)
     orbits = np.full((len(study.models), count), None, dtype=object) if multistart else None
+    natural = np.full(len(study.models), np.nan)
     try:
         group_case = study.case_at(tuple(values))
     except JammingError:
         jammed[:] = True
-        return _Group(arrays, response, jammed, static_load, frequency, orbits)
+        return _Group(arrays, response, jammed, static_load, frequency, natural, orbits)
     if speeds is None:
         speeds = np.array([group_case.operating_point.speed_rpm], dtype=float)
     frequency[:] = group_case.gear_pair.pinion.teeth * speeds / 60.0
@@ -120,6 +122,7 @@ def _solve_group(study, rest: tuple[int, ...], speed_axis: int | None, direction
             jammed[model_index] = True
             continue
         static_load[:] = loads
+        natural[model_index] = problems[0].natural_frequency  # k and me do not change with the speed
         for direction_index, way in enumerate(directions):
             branch = follow_branch(problems, way, parameter=speeds,
                                    include_damping_force=group_case.dynamics.include_damping_force)
@@ -136,7 +139,7 @@ def _solve_group(study, rest: tuple[int, ...], speed_axis: int | None, direction
             for number, problem in enumerate(problems):
                 orbits[model_index, number] = point_orbits(problem, multistart,
                                                            group_case.dynamics.include_damping_force)
-    return _Group(arrays, response, jammed, static_load, frequency, orbits)
+    return _Group(arrays, response, jammed, static_load, frequency, natural, orbits)
 
 
 def _solve_recorded(study, rest, speed_axis, directions, multistart) -> tuple[_Group, list]:
@@ -172,6 +175,7 @@ def branch_study(study, direction: str = "both", progress=None, workers: int | N
     arrays = {name: np.full(full, np.nan) for name in BRANCH_VARIABLES}
     response = np.full(full, "", dtype=object)
     jammed = np.zeros((len(study.models), *shape), dtype=np.int8)
+    natural = np.full((len(study.models), *shape), np.nan)
     static_load = np.full(shape, np.nan)
     frequency = np.full(shape, np.nan)
     if int(multistart) != multistart or multistart < 0:
@@ -187,6 +191,8 @@ def branch_study(study, direction: str = "both", progress=None, workers: int | N
             arrays[name][(slice(None), slice(None), *where)] = pick(group.arrays[name])
         response[(slice(None), slice(None), *where)] = pick(group.response)
         jammed[(slice(None), *where)] = group.jammed[:, None] if speed_axis is not None else group.jammed
+        natural[(slice(None), *where)] = (group.natural_frequency_hz[:, None] if speed_axis is not None
+                                          else group.natural_frequency_hz)
         static_load[where] = pick(group.static_load)
         frequency[where] = pick(group.mesh_frequency_hz)
         if censuses is not None:
@@ -207,6 +213,9 @@ def branch_study(study, direction: str = "both", progress=None, workers: int | N
     data["jammed"] = (("model", *study.dims), jammed,
                       {"units": "1", "long_name": "1 where the gears jam (the thermal expansion closes the backlash): "
                                                   "no result, NaN"})
+    data["natural_frequency_hz"] = (("model", *study.dims), natural,
+                                    {"units": "Hz", "long_name": "natural frequency of the linear mesh with every "
+                                                                 "pair in contact, sqrt(mean k / me) / 2 pi"})
     data["static_load"] = (study.dims, static_load, {"units": "N", "long_name": "static normal load w"})
     data["mesh_frequency_hz"] = (study.dims, frequency, {"units": "Hz", "long_name": "mesh frequency z1 n1 / 60"})
     if censuses is not None:
