@@ -167,6 +167,7 @@ def evaluate_loads(tables: GroupTables, speeds_rpm, loads, samples: int | None =
         "floquet_multiplier_max": moduli[:, 0].copy(),
         "stable": stable.astype(np.int8),
         "contact_loss": contact_loss.astype(np.int8),
+        "jammed": np.zeros(speeds.shape, dtype=np.int8),  # a jammed point never reaches the fast path
         "mesh_frequency_hz": tables.pinion_teeth * speeds / 60.0,
         "static_load": loads.copy(),
     }
@@ -246,7 +247,8 @@ def evaluate_point(case, model: str, points_per_period: int | None = None) -> di
     problem = simulation.problem
     result = {name: math.nan for name in MODEL_VARIABLES}
     result.update(natural_frequency_hz=problem.natural_frequency, mean_mesh_stiffness=problem.mean_stiffness,
-                  mesh_frequency_hz=problem.mesh_frequency, static_load=problem.static_load, contact_loss=0)
+                  mesh_frequency_hz=problem.mesh_frequency, static_load=problem.static_load, contact_loss=0,
+                  jammed=0)
     try:
         with warning_scope.ignored():
             metrics = simulation.run("periodic").metrics
@@ -349,8 +351,6 @@ def _evaluate_model(study, method, shared, group_case, model, model_index, value
 
 def _store(result: dict[str, np.ndarray], values: dict[str, Any], model_index: int, indices) -> None:
     for name in MODEL_VARIABLES:
-        if name == "jammed":  # computed: not jammed (0, as created)
-            continue
         result[name][(model_index, *indices)] = values[name]
     for name in POINT_VARIABLES:
         result[name][indices] = values[name]
