@@ -108,3 +108,10 @@ def test_the_store_keeps_the_back_contact_fraction():
     assert np.all((fraction > 0.0) == (flag == 1))
     assert flag[1, 0] == 1 and 0.1 < fraction[1, 0] < 0.5  # direction down, 8000 rpm
     assert data["back_contact_fraction"].attrs["units"] == "1"
+
+
+def test_the_backlash_integrator_releases_the_gil():
+    # the branch study's threads compute in parallel only if the compiled integrator releases Python's GIL
+    from thermogear.dynamics.backlash_kernel import integrate_periods
+
+    assert integrate_periods.targetoptions.get("nogil") is True

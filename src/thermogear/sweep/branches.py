@@ -75,7 +75,6 @@ class _Group:
     static_load: np.ndarray
     mesh_frequency_hz: np.ndarray
     natural_frequency_hz: np.ndarray  # (models,) of the linear mesh with every pair in contact [Hz]
-    orbits: np.ndarray | None = None  # (models, speeds) multi-start results (sweep.multistart), None: jammed
 
 
 def _group_values(study, rest: tuple[int, ...], speed_axis: int | None) -> tuple[list, tuple]:
@@ -88,11 +87,18 @@ def _group_values(study, rest: tuple[int, ...], speed_axis: int | None) -> tuple
     return values, tuple(index)
 
 
-def _solve_group(study, rest: tuple[int, ...], speed_axis: int | None, directions: tuple[str, ...],
-                 multistart: int = 0) -> _Group:
-    """Both branches of every model of one group (and with ``multistart`` the stable orbits that many starts find
-    at each point). A case whose gears jam (the thermal expansion closes the backlash) gives NaN results marked
-    ``jammed``, never an error: the other groups are computed."""
+def _problems(group_case, model: str, speeds: np.ndarray) -> tuple[list, np.ndarray]:
+    """The backlash problem of every speed [rpm] of one model of a group's case, and the static loads [N]."""
+    mesh = MeshModel(group_case, model)
+    loads = np.array([mesh.normal_load(speed) for speed in speeds])
+    problems = [mesh.state(speed_rpm=speed, normal_load=load).backlash_problem(group_case.dynamics.damping_in_flight)
+                for speed, load in zip(speeds, loads)]
+    return problems, loads
+
+
+def _solve_group(study, rest: tuple[int, ...], speed_axis: int | None, directions: tuple[str, ...]) -> _Group:
+    """Both branches of every model of one group. A case whose gears jam (the thermal expansion closes the
+    backlash) gives NaN results marked ``jammed``, never an error: the other groups are computed."""
     values, _ = _group_values(study, rest, speed_axis)
     speeds = (np.asarray(study.parameters[speed_axis].values, dtype=float) if speed_axis is not None else None)
     count = 1 if speeds is None else speeds.size
@@ -102,22 +108,18 @@ def _solve_group(study, rest: tuple[int, ...], speed_axis: int | None, direction
     response = np.full(shape, "jammed", dtype=object)
     jammed = np.zeros(len(study.models), dtype=bool)
     static_load, frequency = np.full(count, np.nan), np.full(count, np.nan)
-    orbits = np.full((len(study.models), count), None, dtype=object) if multistart else None
     natural = np.full(len(study.models), np.nan)
     try:
         group_case = study.case_at(tuple(values))
     except JammingError:
         jammed[:] = True
-        return _Group(arrays, response, jammed, static_load, frequency, natural, orbits)
+        return _Group(arrays, response, jammed, static_load, frequency, natural)
     if speeds is None:
         speeds = np.array([group_case.operating_point.speed_rpm], dtype=float)
     frequency[:] = group_case.gear_pair.pinion.teeth * speeds / 60.0
     for model_index, model in enumerate(study.models):
         try:
-            mesh = MeshModel(group_case, model)
-            loads = np.array([mesh.normal_load(speed) for speed in speeds])
-            problems = [mesh.state(speed_rpm=speed, normal_load=load).backlash_problem(
-                group_case.dynamics.damping_in_flight) for speed, load in zip(speeds, loads)]
+            problems, loads = _problems(group_case, model, speeds)
         except JammingError:  # a temperature the model computes closes the backlash
             jammed[model_index] = True
             continue
@@ -133,20 +135,38 @@ def _solve_group(study, rest: tuple[int, ...], speed_axis: int | None, direction
             arrays["period_count"][target] = branch.period_count.astype(float)
             arrays["converged"][target] = branch.converged.astype(float)
             response[target] = branch.response
-        if multistart:
-            from thermogear.sweep.multistart import point_orbits  # noqa: PLC0415
-
-            for number, problem in enumerate(problems):
-                orbits[model_index, number] = point_orbits(problem, multistart,
-                                                           group_case.dynamics.include_damping_force)
-    return _Group(arrays, response, jammed, static_load, frequency, natural, orbits)
+    return _Group(arrays, response, jammed, static_load, frequency, natural)
 
 
-def _solve_recorded(study, rest, speed_axis, directions, multistart) -> tuple[_Group, list]:
-    """:func:`_solve_group` on a worker thread, its warnings recorded in the thread's own scope."""
+def _search_point(study, rest: tuple[int, ...], speed_axis: int | None, model_index: int, speed_index: int,
+                  starts: int) -> dict | None:
+    """The multi-start orbit search at one point and model (:func:`thermogear.sweep.multistart.point_orbits`);
+    None where the gears jam."""
+    from thermogear.sweep.multistart import point_orbits  # noqa: PLC0415
+
+    values, _ = _group_values(study, rest, speed_axis)
+    try:
+        group_case = study.case_at(tuple(values))
+        speeds = (np.asarray(study.parameters[speed_axis].values, dtype=float)[[speed_index]]
+                  if speed_axis is not None else np.array([group_case.operating_point.speed_rpm], dtype=float))
+        problems, _ = _problems(group_case, study.models[model_index], speeds)
+    except JammingError:
+        return None
+    return point_orbits(problems[0], starts, group_case.dynamics.include_damping_force)
+
+
+def _execute(study, task: tuple, speed_axis, directions, starts: int):
+    """One task: ("group", rest) → :func:`_solve_group`; ("orbits", rest, model, speed) → :func:`_search_point`."""
+    if task[0] == "group":
+        return _solve_group(study, task[1], speed_axis, directions)
+    return _search_point(study, task[1], speed_axis, task[2], task[3], starts)
+
+
+def _execute_recorded(study, task, speed_axis, directions, starts) -> tuple[Any, list]:
+    """:func:`_execute` on a worker thread, its warnings recorded in the thread's own scope."""
     with warning_scope.recorded() as caught:
-        group = _solve_group(study, rest, speed_axis, directions, multistart)
-    return group, list(caught)
+        result = _execute(study, task, speed_axis, directions, starts)
+    return result, list(caught)
 
 
 def branch_study(study, direction: str = "both", progress=None, workers: int | None = None, multistart: int = 0):
@@ -184,8 +204,14 @@ def branch_study(study, direction: str = "both", progress=None, workers: int | N
     others = [p.size for a, p in enumerate(study.parameters) if a != speed_axis]
     groups = list(np.ndindex(*others)) if others else [()]
 
-    def place(rest, group: _Group) -> None:
+    def place(task: tuple, result) -> None:
+        rest = task[1]
         _, where = _group_values(study, rest, speed_axis)
+        if task[0] == "orbits":  # the census of one point and model
+            point = tuple(task[3] if isinstance(i, slice) else i for i in where)
+            censuses[(task[2], *point)] = result
+            return
+        group = result
         pick = (lambda a: a) if speed_axis is not None else (lambda a: a[..., 0])
         for name in BRANCH_VARIABLES:
             arrays[name][(slice(None), slice(None), *where)] = pick(group.arrays[name])
@@ -195,12 +221,15 @@ def branch_study(study, direction: str = "both", progress=None, workers: int | N
                                           else group.natural_frequency_hz)
         static_load[where] = pick(group.static_load)
         frequency[where] = pick(group.mesh_frequency_hz)
-        if censuses is not None:
-            censuses[(slice(None), *where)] = pick(group.orbits)
         if progress is not None:
             progress(int(group.static_load.size))
 
-    _run_groups(study, groups, speed_axis, directions, place, workers, int(multistart))
+    tasks = [("group", rest) for rest in groups]
+    if multistart:  # one task per point and model: a few speeds searched on every thread
+        speed_count = study.parameters[speed_axis].size if speed_axis is not None else 1
+        tasks += [("orbits", rest, model, speed) for rest in groups for model in range(len(study.models))
+                  for speed in range(speed_count)]
+    _run_tasks(study, tasks, speed_axis, directions, place, workers, int(multistart))
     coords: dict[str, Any] = {"direction": ("direction", np.array(directions, dtype=str)),
                               "model": ("model", np.array(study.models, dtype=str))}
     for parameter in study.parameters:
@@ -226,28 +255,28 @@ def branch_study(study, direction: str = "both", progress=None, workers: int | N
                                                    "case": study.case.name, "load": "constant torque"})
 
 
-def _run_groups(study, groups, speed_axis, directions, place, workers: int | None, multistart: int) -> None:
-    """Solve every group, serially (``workers`` = 1) or on a pool of threads; ``place(rest, group)`` is called in
+def _run_tasks(study, tasks, speed_axis, directions, place, workers: int | None, starts: int) -> None:
+    """Run every task, serially (``workers`` = 1) or on a pool of threads; ``place(task, result)`` is called in
     the calling thread as each finishes."""
     import os  # noqa: PLC0415
 
-    count = min(workers or os.cpu_count() or 1, len(groups))
+    count = min(workers or os.cpu_count() or 1, len(tasks))
     if count <= 1:
-        for rest in groups:
-            place(rest, _solve_group(study, rest, speed_axis, directions, multistart))
+        for task in tasks:
+            place(task, _execute(study, task, speed_axis, directions, starts))
         return
     from concurrent.futures import ThreadPoolExecutor, as_completed  # noqa: PLC0415
 
     caught: list = []
     with warning_scope.routed() as unscoped:
         with ThreadPoolExecutor(count, "thermogear-branches") as pool:
-            futures = {pool.submit(_solve_recorded, study, rest, speed_axis, directions, multistart): rest
-                       for rest in groups}
+            futures = {pool.submit(_execute_recorded, study, task, speed_axis, directions, starts): task
+                       for task in tasks}
             try:
                 for future in as_completed(futures):
-                    group, messages = future.result()
+                    result, messages = future.result()
                     caught.extend(messages)
-                    place(futures[future], group)
+                    place(futures[future], result)
             finally:
                 for future in futures:
                     future.cancel()
