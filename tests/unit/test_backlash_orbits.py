@@ -58,3 +58,20 @@ def test_the_start_grid_spans_both_flanks_and_refuses_bad_counts():
         stable_orbits(problem, starts=0)
     with pytest.raises(ProblemError, match="start_states"):
         stable_orbits(problem, start_states=np.array([[np.nan, 0.0]]))
+
+
+def test_the_coexistence_note_never_implies_at_most_two_orbits(monkeypatch):
+    # the linear start and the start from rest settling on different orbits show that several coexist, never
+    # how many: the note says "at least two" and points to the search (it said "two stable orbits coexist")
+    from thermogear.dynamics import nonlinear_response as module
+
+    problem = textbook_problem(0.9, ZETA)
+    low, high = sorted((item.orbit for item in stable_orbits(problem, starts=36).orbits),
+                       key=lambda orbit: np.ptp(orbit.history.displacement))
+    answers = iter((low, high))
+    monkeypatch.setattr(module, "periodic_response", lambda *args, **kwargs: next(answers))
+    response = module.nonlinear_response(problem)
+    assert response.metrics["coexisting_orbits"] and response.metrics["branch"] == "low"
+    (note,) = response.warnings
+    assert "at least two stable orbits" in note and "--multistart" in note
+    assert "two stable orbits coexist" not in note
