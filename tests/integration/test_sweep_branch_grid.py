@@ -115,3 +115,22 @@ def test_the_backlash_integrator_releases_the_gil():
     from thermogear.dynamics.backlash_kernel import integrate_periods
 
     assert integrate_periods.targetoptions.get("nogil") is True
+
+
+def test_resuming_a_store_written_before_the_jammed_flag_is_refused_clearly(tmp_path):
+    # a store of an earlier version lacks `jammed`; resuming it would fail on the first write (KeyError): refuse it
+    # before computing, naming the variable and what to do
+    import shutil
+
+    import zarr
+
+    from thermogear.errors import CaseError
+    from thermogear.sweep.store import ResultStore
+
+    study = Study.define(load_case("luo2019"), {"speed_rpm": "1000:3000:3"})
+    out = tmp_path / "old.zarr"
+    _quiet(run_study, study, out, scheduler="serial")
+    shutil.rmtree(out / "jammed")
+    _quiet(zarr.consolidate_metadata, str(out))
+    with pytest.raises(CaseError, match="lacks jammed.*--overwrite"):
+        _quiet(ResultStore.resume, out, study)

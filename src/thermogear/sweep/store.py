@@ -153,7 +153,13 @@ class ResultStore:
             raise CaseError("out", str(target), "a store of the same study (case, parameters, models, chunks)",
                             "--resume continues the study that created this store; this study differs "
                             f"(stored: {json.dumps(stored)[:300]})")
-        return cls(target, study)
+        store = cls(target, study)
+        missing = [name for name in (*MODEL_VARIABLES, *POINT_VARIABLES) if name not in store._group]
+        if missing:  # written by an earlier thermogear, before these variables existed
+            raise CaseError("--resume", str(target), "a store with every variable of this version",
+                            f"the store lacks {', '.join(missing)} (an earlier thermogear wrote it); run the study "
+                            "again with --overwrite")
+        return store
 
     # ------------------------------------------------------------------------------ blocks
     def done_blocks(self) -> set[int]:
