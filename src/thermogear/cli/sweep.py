@@ -98,6 +98,10 @@ def sweep(
                         "writable --out", f"the study could not run: {error}") from None
     elapsed = time.perf_counter() - start
     figure_path = None
+    if plot is not None and "speed_rpm" not in study.dims:
+        print_warning(f"no plot written to {plot}: the plot draws the responses against speed, and this study does "
+                      "not vary speed_rpm (add --vary speed_rpm=..., or draw a map with thermogear.sweep.plots."
+                      "plot_map)", error_console)
     if plot is not None and "speed_rpm" in study.dims:
         from thermogear.sweep.plots import plot_speed_response
 

@@ -67,6 +67,9 @@ def run_branch_sweep(study, out: Path, direction: str, overwrite: bool, resume: 
     target = write_branch_store(dataset, out, overwrite=overwrite)
     elapsed = time.perf_counter() - start
     figure_path = None
+    if plot is not None and "speed_rpm" not in study.dims:
+        print_warning(f"no plot written to {plot}: the plot draws the responses against speed, and this study does "
+                      "not vary speed_rpm (add --vary speed_rpm=...)", error_console)
     if plot is not None and "speed_rpm" in study.dims:
         from thermogear.sweep.branch_plots import plot_branches  # noqa: PLC0415
 
