@@ -2,8 +2,8 @@
 
 A piecewise-linear oscillator with clearance can hold several stable steady responses at one operating point:
 the no-impact and the single-sided-impact orbits of the primary resonance, a double-sided-impact orbit, and
-subharmonic orbits (Kahraman & Singh 1990, J. Sound Vib. 142(1):49–75; Theodossiades & Natsiavas 2000, J. Sound
-Vib. 229(2):287–310). Continuation in speed (:mod:`thermogear.dynamics.backlash_continuation`) follows one branch
+subharmonic orbits (Kahraman & Singh 1990, J. Sound Vib. 142(1):49–75; measured on a rig: Kahraman & Blankenship
+1997, ASME J. Appl. Mech. 64:217–226). Continuation in speed (:mod:`thermogear.dynamics.backlash_continuation`) follows one branch
 from its neighbour and meets at most the branches its path runs along, so it cannot see an orbit whose basin its
 path never enters. :func:`stable_orbits` searches the state plane instead (a multi-start search):
 
