@@ -18,7 +18,10 @@ _PANELS = (("dte_peak_to_peak", "DTE peak-to-peak [μm]", 1e6), ("kv", "Kv [–]
 
 
 def _natural_speeds(part, model: str, orders) -> dict[int, float]:
-    """n_j = 60·f_n/(z1·j) [rpm] of a model (f_n of the linear mesh with every pair in contact)."""
+    """n_j = 60·f_n/(z1·j) [rpm] of a model (f_n of the linear mesh with every pair in contact); none for a store
+    written before f_n was kept."""
+    if "natural_frequency_hz" not in part:
+        return {}
     natural = np.asarray(part["natural_frequency_hz"].sel(model=model), dtype=float)
     ratio = np.asarray(part["mesh_frequency_hz"] / part["speed_rpm"] * 60.0, dtype=float)
     if not (np.isfinite(natural).any() and np.isfinite(ratio).any()):
