@@ -37,6 +37,11 @@ class CaseError(ThermogearError, ValueError):
         super().__init__(f"{key} = {value!r}: allowed {allowed}; {reason}")
 
 
+class JammingError(CaseError):
+    """A case whose gears jam: the thermal expansion closes the backlash at its operating temperatures. A study
+    marks such points (``jammed``) and computes the others instead of refusing the whole grid."""
+
+
 class ProblemError(ThermogearError, ValueError):
     """An invalid input to a solver: the arrays a mesh model hands over, or what a user passes to a solver
     directly. It names the solver's quantity (``"nodes"``, ``"stiffness"``), not a case-file key: a solver

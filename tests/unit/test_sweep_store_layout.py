@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from thermogear.sweep import Study
-from thermogear.sweep.batch import MODEL_VARIABLES, POINT_VARIABLES
+from thermogear.sweep.batch import FLAG_VARIABLES, MODEL_VARIABLES, POINT_VARIABLES
 from thermogear.sweep.store import ResultStore, _attributes, open_result
 
 
@@ -24,7 +24,7 @@ def _xarray_layout(target, study) -> None:
         coords[parameter.name] = (parameter.name, np.array(parameter.values), {"case_key": parameter.key})
     data_vars, encoding = {}, {}
     for name, (units, long_name) in MODEL_VARIABLES.items():
-        dtype = np.int8 if name in ("stable", "contact_loss") else np.float64
+        dtype = np.int8 if name in FLAG_VARIABLES else np.float64
         data = da.full((len(study.models), *study.shape), 0 if dtype is np.int8 else np.nan, dtype=dtype, chunks=-1)
         data_vars[name] = (("model", *study.dims), data, {"units": units, "long_name": long_name})
         encoding[name] = {"chunks": (len(study.models), *study.chunk_shape)}

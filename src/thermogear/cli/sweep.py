@@ -36,6 +36,9 @@ def sweep(
     plot: Path = typer.Option(None, "--plot", help="write the speed-response plot (PNG/SVG/PDF) here"),
     progress: bool = typer.Option(True, "--progress/--no-progress", help="progress bar on stderr"),
     as_json: bool = typer.Option(False, "--json", help="one JSON summary on stdout"),
+    multistart: int = typer.Option(0, "--multistart", min=0, help="nonlinear mesh: at every point also search "
+                                   "the state plane from N starts and list every stable orbit found with its basin "
+                                   "share (about 0.1 s per start, point and model; default 0: branches only)"),
     direction: str = typer.Option(None, "--direction", help="nonlinear mesh: follow the solution branch in speed "
                                   "up | down | both (default both); the store gets a direction dimension"),
 ) -> None:
@@ -72,8 +75,13 @@ def sweep(
     if loaded.dynamics.mesh == "nonlinear" and method == "batch":
         from thermogear.cli.sweep_branches import run_branch_sweep
 
-        run_branch_sweep(study, out, direction or "both", overwrite, resume, plot, progress, as_json)
+        run_branch_sweep(study, out, direction or "both", overwrite, resume, plot, progress, as_json,
+                         scheduler=scheduler, workers=workers, multistart=multistart)
         return
+    if multistart:
+        raise CaseError("--multistart", multistart, "only with [dynamics] mesh = \"nonlinear\"",
+                        "the linear mesh has one periodic steady state per point (or none): there is no other "
+                        "orbit to search for")
     if direction is not None:
         raise CaseError("--direction", direction, "only with [dynamics] mesh = \"nonlinear\"",
                         "the linear mesh has one steady solution per point: there is no branch to follow")
@@ -90,6 +98,10 @@ def sweep(
                         "writable --out", f"the study could not run: {error}") from None
     elapsed = time.perf_counter() - start
     figure_path = None
+    if plot is not None and "speed_rpm" not in study.dims:
+        print_warning(f"no plot written to {plot}: the plot draws the responses against speed, and this study does "
+                      "not vary speed_rpm (add --vary speed_rpm=..., or draw a map with thermogear.sweep.plots."
+                      "plot_map)", error_console)
     if plot is not None and "speed_rpm" in study.dims:
         from thermogear.sweep.plots import plot_speed_response
 

@@ -20,15 +20,16 @@ __all__ = ["print_sweep_summary", "response_summary"]
 
 
 def response_summary(run, models) -> dict:
-    """Counts of unstable and contact-loss points and, per model, the largest Kv over the valid points
+    """Counts of unstable, contact-loss and jammed points and, per model, the largest Kv over the valid points
     (None when none is valid) beside the largest over every point. ``run``: a finished study
     (:class:`thermogear.sweep.StudyRun`), read as NumPy arrays, so the command imports no xarray for its summary."""
     import numpy as np  # noqa: PLC0415
 
     from thermogear.sweep.plots import linear_model_valid  # noqa: PLC0415
 
-    arrays = {name: run.read(name) for name in ("kv", "stable", "contact_loss")}  # dims (model, *parameters)
+    arrays = {name: run.read(name) for name in ("kv", "stable", "contact_loss", "jammed")}  # (model, *parameters)
     valid = linear_model_valid(arrays)
+    jammed = arrays["jammed"] == 1
     kv_max, kv_max_all, valid_points = {}, {}, {}
     for index, model in enumerate(models):
         kv = np.asarray(arrays["kv"][index], dtype=float)
@@ -38,7 +39,8 @@ def response_summary(run, models) -> dict:
         finite = kv[np.isfinite(kv)]
         kv_max_all[model] = float(finite.max()) if finite.size else None
     return {
-        "unstable_points": int((arrays["stable"] == 0).sum()),
+        "unstable_points": int(((arrays["stable"] == 0) & ~jammed).sum()),
+        "jammed_points": int(jammed.sum()),
         "contact_loss_points": int((arrays["contact_loss"] == 1).sum()),
         "valid_points": valid_points,
         "kv_max": kv_max,
@@ -70,6 +72,9 @@ def print_sweep_summary(summary: dict, console: Console, error_console: Console)
         left_out.append(f"{summary['contact_loss_points']} with contact loss")
     if summary["unstable_points"]:
         left_out.append(f"{summary['unstable_points']} parametrically unstable (NaN metrics, stable = 0)")
+    if summary.get("jammed_points"):
+        left_out.append(f"{summary['jammed_points']} jammed (the thermal expansion closes the backlash: no result, "
+                        "jammed = 1)")
     if left_out:
         console.print(Text("left out of the maxima (model × point): " + ", ".join(left_out) + "; max Kv over every "
                            "point: " + ", ".join(f"{m} {_number(v)}" for m, v in summary["kv_max_all_points"].items()),

@@ -168,7 +168,7 @@ def _crossing(x_start: float, x_end: float, lower: float, upper: float) -> int:
     return 0
 
 
-@numba.njit(cache=True)
+@numba.njit(cache=True, nogil=True)  # releases the GIL: branch studies run their groups on threads
 def integrate_periods(mass, nodes, pair_k, pair_e, back_k, back_e, backlash, damping, force, mode, x0, v0,
                       periods, scan_fraction, record, samples, out_time, out_x, out_v, out_driving, out_back,
                       out_interval, out_kind):

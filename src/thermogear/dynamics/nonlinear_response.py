@@ -6,7 +6,8 @@ periodic solution), checks for a second stable orbit started from rest (x = ẋ 
 :class:`NonlinearResponse`: the orbit, its metrics under the names of the linear response (Kv of Luo & Li Eq. 29,
 loads per width, equilibria and amplitudes per contact region, frequencies) plus what only the nonlinear model
 knows — ``contact_loss_fraction``, ``back_side_contact``, ``response`` ("periodic" | "subharmonic" |
-"non-periodic"), ``branch`` and whether two stable orbits coexist.
+"non-periodic"), ``branch`` and whether more than one stable orbit coexists (two starts can show that there
+are several, never how many: :func:`~thermogear.dynamics.backlash_orbits.stable_orbits` searches for them all).
 
 Branch: where the two starts settle on different stable orbits, the one with the smaller DTE peak-to-peak is the
 "low" branch and the other the "high" branch (the jump phenomenon of a backlash oscillator, Kahraman & Singh
@@ -218,8 +219,10 @@ def nonlinear_response(problem: BacklashMeshProblem, include_damping_force: bool
     metrics = _metrics(problem, orbit, include_damping_force, branch, coexisting)
     notes = ()
     if coexisting:
-        notes = (f"two stable orbits coexist at this operating point: the {branch} branch is reported (started from "
-                 "the linear solution); the other is reached from rest — a speed sweep up and down shows both",)
+        notes = (f"at least two stable orbits coexist at this operating point (started from the linear solution and "
+                 f"from rest, the motion settles on different ones): the {branch} branch is reported; `thermogear "
+                 "sweep CASE --vary speed_rpm=N --multistart 64` lists every stable orbit a search of the state plane "
+                 "finds, with its basin share",)
     return NonlinearResponse(problem=problem, orbit=orbit, metrics=metrics, include_damping_force=include_damping_force,
                              label=label, warnings=notes)
 

@@ -2,12 +2,17 @@
 
 ``Study.define(case, {"speed_rpm": "500:12000:240"})`` defines the grid, :func:`run_study` computes it (local
 cluster, a scheduler address, or serially) into a resumable zarr store, :mod:`thermogear.sweep.plots` draws it.
-See docs/sweeps.md.
+A case with the nonlinear mesh is studied by :func:`branch_study` (the solution branches up and down in speed, one
+pair per combination of the other parameters; optionally every stable orbit a multi-start search finds),
+:func:`hysteresis_bands` and :func:`plot_branches`. See docs/sweeps.md.
 """
 
+from thermogear.sweep.branch_plots import plot_branches
+from thermogear.sweep.branches import branch_study, write_branch_store
 from thermogear.sweep.engine import StudyRun, run_study
+from thermogear.sweep.hysteresis import hysteresis_bands
 from thermogear.sweep.store import ResultStore, open_result
 from thermogear.sweep.study import ALIASES, Parameter, Study, load_study_case, parse_values
 
-__all__ = ["ALIASES", "Parameter", "ResultStore", "Study", "StudyRun", "load_study_case", "open_result",
-           "parse_values", "run_study"]
+__all__ = ["ALIASES", "Parameter", "ResultStore", "Study", "StudyRun", "branch_study", "hysteresis_bands",
+           "load_study_case", "open_result", "parse_values", "plot_branches", "run_study", "write_branch_store"]

@@ -38,12 +38,12 @@ from typing import Any
 import numpy as np
 
 from thermogear import warning_scope
-from thermogear.errors import ModelLimitError, ProblemError
+from thermogear.errors import JammingError, ModelLimitError, ProblemError
 from thermogear.mesh.model import MeshModel
 from thermogear.sweep.batch_kernel import periodic_metrics_batch
 from thermogear.warning_causes import warning_text
 
-__all__ = ["MODEL_VARIABLES", "POINT_VARIABLES", "GroupTables", "empty_block_result", "evaluate_block",
+__all__ = ["FLAG_VARIABLES", "MODEL_VARIABLES", "POINT_VARIABLES", "GroupTables", "empty_block_result", "evaluate_block",
            "evaluate_loads", "evaluate_point", "evaluate_speeds", "group_tables"]
 
 #: Per-model result variables: name → (units, long name).
@@ -60,7 +60,10 @@ MODEL_VARIABLES: dict[str, tuple[str, str]] = {
     "floquet_multiplier_max": ("1", "largest Floquet multiplier modulus (>= 1: parametric instability)"),
     "stable": ("1", "1 where a periodic steady state exists (all Floquet multipliers inside the unit circle)"),
     "contact_loss": ("1", "1 where the mesh force turns negative (the teeth would separate; linear model invalid)"),
+    "jammed": ("1", "1 where the gears jam (the thermal expansion closes the backlash): no result, NaN metrics"),
 }
+#: The per-model flags, stored as int8 (0 where unwritten); every other variable is a float (NaN where unwritten).
+FLAG_VARIABLES = ("stable", "contact_loss", "jammed")
 #: Per-point result variables (the same for every model).
 POINT_VARIABLES: dict[str, tuple[str, str]] = {
     "mesh_frequency_hz": ("Hz", "mesh frequency z1 n1 / 60"),
@@ -164,6 +167,7 @@ def evaluate_loads(tables: GroupTables, speeds_rpm, loads, samples: int | None =
         "floquet_multiplier_max": moduli[:, 0].copy(),
         "stable": stable.astype(np.int8),
         "contact_loss": contact_loss.astype(np.int8),
+        "jammed": np.zeros(speeds.shape, dtype=np.int8),  # a jammed point never reaches the fast path
         "mesh_frequency_hz": tables.pinion_teeth * speeds / 60.0,
         "static_load": loads.copy(),
     }
@@ -243,7 +247,8 @@ def evaluate_point(case, model: str, points_per_period: int | None = None) -> di
     problem = simulation.problem
     result = {name: math.nan for name in MODEL_VARIABLES}
     result.update(natural_frequency_hz=problem.natural_frequency, mean_mesh_stiffness=problem.mean_stiffness,
-                  mesh_frequency_hz=problem.mesh_frequency, static_load=problem.static_load, contact_loss=0)
+                  mesh_frequency_hz=problem.mesh_frequency, static_load=problem.static_load, contact_loss=0,
+                  jammed=0)
     try:
         with warning_scope.ignored():
             metrics = simulation.run("periodic").metrics
@@ -264,7 +269,7 @@ def empty_block_result(models: tuple[str, ...], shape: tuple[int, ...]) -> dict[
     """Arrays of a block: per-model variables (models, *shape), per-point variables (*shape)."""
     result: dict[str, np.ndarray] = {}
     for name in MODEL_VARIABLES:
-        dtype = np.int8 if name in ("stable", "contact_loss") else float
+        dtype = np.int8 if name in FLAG_VARIABLES else float
         result[name] = np.full((len(models), *shape), 0 if dtype is np.int8 else np.nan, dtype=dtype)
     for name in POINT_VARIABLES:
         result[name] = np.full(shape, np.nan)
@@ -294,34 +299,54 @@ def evaluate_block(study, block, method: str = "batch") -> tuple[dict[str, np.nd
         for row in np.ndindex(*(shape[axis] for axis in rows)):
             position = dict(zip(rows, row))
             values = [axes[axis][position[axis]] if axis != speed_axis else axes[axis][0] for axis in range(len(shape))]
-            group_case = study.case_at(tuple(values))
-            speeds = (np.array(axes[speed_axis], dtype=float) if speed_axis is not None
-                      else np.array([group_case.operating_point.speed_rpm], dtype=float))
             indices = tuple(np.arange(members) if axis == speed_axis else np.full(members, position[axis])
                             for axis in range(len(shape)))
+            try:
+                group_case = study.case_at(tuple(values))
+            except JammingError:  # the gears jam at these values (at every speed): marked, NaN, never refused
+                result["jammed"][(slice(None), *indices)] = 1
+                continue
+            speeds = (np.array(axes[speed_axis], dtype=float) if speed_axis is not None
+                      else np.array([group_case.operating_point.speed_rpm], dtype=float))
             for model_index, model in enumerate(study.models):
-                group = None
-                if method == "batch":
-                    mesh = MeshModel(group_case, model)
-                    key = (model, *(values[a] for a in range(len(shape)) if a != speed_axis and a not in load_axes))
-                    if key not in shared:
-                        shared[key] = (mesh, group_tables(mesh) if load_scaled_tables(mesh) else None)
-                    first, tables = shared[key]
-                    group = evaluate_group(first, speeds, tables, loads=_normal_loads(mesh, speeds))
-                if group is not None:
-                    _store(result, group, model_index, indices)
-                    continue
-                for member in range(members):
-                    if member:
-                        values[speed_axis] = axes[speed_axis][member]
-                    point_case = group_case if member == 0 else study.case_at(tuple(values))
-                    one = {k: np.array([v]) for k, v in evaluate_point(point_case, model).items()}
-                    _store(result, one, model_index, tuple(np.array([index[member]]) for index in indices))
+                try:
+                    _evaluate_model(study, method, shared, group_case, model, model_index, values, axes,
+                                    (speed_axis, load_axes, members), speeds, indices, result)
+                except JammingError:  # a temperature the model computes closes the backlash
+                    result["jammed"][(model_index, *indices)] = 1
+                    for name in MODEL_VARIABLES:
+                        if name not in FLAG_VARIABLES:
+                            result[name][(model_index, *indices)] = np.nan
+                    result["stable"][(model_index, *indices)] = 0
+                    result["contact_loss"][(model_index, *indices)] = 0
     for item in caught:
         text = warning_text(item)
         if text not in messages:
             messages.append(text)
     return result, messages
+
+
+def _evaluate_model(study, method, shared, group_case, model, model_index, values, axes, layout, speeds, indices,
+                    result) -> None:
+    """One model over one group of a block: the fast path where it is exact, else one Simulation per point."""
+    speed_axis, load_axes, members = layout
+    if method == "batch":
+        mesh = MeshModel(group_case, model)
+        key = (model, *(values[a] for a in range(len(values)) if a != speed_axis and a not in load_axes))
+        if key not in shared:
+            shared[key] = (mesh, group_tables(mesh) if load_scaled_tables(mesh) else None)
+        first, tables = shared[key]
+        group = evaluate_group(first, speeds, tables, loads=_normal_loads(mesh, speeds))
+        if group is not None:
+            _store(result, group, model_index, indices)
+            return
+    values = list(values)
+    for member in range(members):
+        if member:
+            values[speed_axis] = axes[speed_axis][member]
+        point_case = group_case if member == 0 else study.case_at(tuple(values))
+        one = {k: np.array([v]) for k, v in evaluate_point(point_case, model).items()}
+        _store(result, one, model_index, tuple(np.array([index[member]]) for index in indices))
 
 
 def _store(result: dict[str, np.ndarray], values: dict[str, Any], model_index: int, indices) -> None:

@@ -7,20 +7,26 @@ has one result per sweep direction. For every combination of the other parameter
 one backlash problem per speed and :func:`~thermogear.dynamics.backlash_continuation.follow_branch` solves them in
 order, each from its neighbour's orbit, ``up`` (lowest speed first), ``down`` or both.
 
-Continuation is sequential along the speed axis: these studies run in one process and write one zarr store at
-the end (no chunked resume and no Dask; a few seconds per thousand speeds and model).
+Continuation is sequential along the speed axis, but the groups are independent: they run in parallel on a pool
+of threads (the backlash integrator releases Python's global interpreter lock) and the study is written as one
+zarr store at the end (no chunked resume and no Dask; a few seconds per thousand speeds and model). A group whose
+gears jam (the thermal expansion closes the backlash) is marked ``jammed`` and the others are computed.
 """
 
 from __future__ import annotations
 
+import warnings
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
+from thermogear import warning_scope
 from thermogear.dynamics.backlash_continuation import follow_branch
-from thermogear.errors import CaseError
+from thermogear.errors import CaseError, JammingError
 from thermogear.mesh.model import MeshModel
+from thermogear.sweep.hysteresis import hysteresis_bands
 
 __all__ = ["DIRECTIONS", "BRANCH_VARIABLES", "branch_study", "hysteresis_bands", "write_branch_store"]
 
@@ -36,6 +42,7 @@ BRANCH_VARIABLES: dict[str, tuple[str, str]] = {
     "dte_peak_to_peak": ("m", "peak-to-peak dynamic transmission error"),
     "contact_loss_fraction": ("1", "fraction of the period without driving-flank contact"),
     "back_side_contact": ("1", "1 where a back flank is struck"),
+    "back_contact_fraction": ("1", "fraction of the period with a back flank in contact"),
     "period_count": ("1", "mesh periods after which the response repeats (1 periodic, >1 subharmonic)"),
     "converged": ("1", "1 where a stable periodic or subharmonic orbit was found"),
     "floquet_multiplier_max": ("1", "largest Floquet multiplier modulus of the orbit"),
@@ -43,7 +50,8 @@ BRANCH_VARIABLES: dict[str, tuple[str, str]] = {
 }
 _FROM_BRANCH = {"kv": "kv", "max_pair_load": "max_pair_force", "max_system_load_ratio": "max_mesh_force",
                 "dte_mean": "dte_mean", "dte_rms": "dte_rms", "dte_peak_to_peak": "dte_peak_to_peak",
-                "contact_loss_fraction": "contact_loss_fraction", "floquet_multiplier_max": "largest_multiplier",
+                "contact_loss_fraction": "contact_loss_fraction", "back_contact_fraction": "back_contact_fraction",
+                "floquet_multiplier_max": "largest_multiplier",
                 "residual": "residual"}
 
 
@@ -54,102 +62,231 @@ def _directions(direction: str) -> tuple[str, ...]:
     return ("up", "down") if direction == "both" else (direction,)
 
 
-def branch_study(study, direction: str = "both", progress=None):
+@dataclass(frozen=True)
+class _Group:
+    """The results of one group (one combination of the parameters other than speed), all speeds of it.
+
+    Arrays ``(directions, models, speeds)`` per variable, ``jammed`` (models,), ``static_load`` and
+    ``mesh_frequency_hz`` (speeds,)."""
+
+    arrays: dict[str, np.ndarray]
+    response: np.ndarray
+    jammed: np.ndarray
+    static_load: np.ndarray
+    mesh_frequency_hz: np.ndarray
+    natural_frequency_hz: np.ndarray  # (models,) of the linear mesh with every pair in contact [Hz]
+
+
+def _group_values(study, rest: tuple[int, ...], speed_axis: int | None) -> tuple[list, tuple]:
+    """The parameter values of a group's first point and the index of the group in the grid (a slice along the
+    speed axis)."""
+    index: list[Any] = list(rest)
+    if speed_axis is not None:
+        index.insert(speed_axis, slice(None))
+    values = [p.values[i] if not isinstance(i, slice) else p.values[0] for p, i in zip(study.parameters, index)]
+    return values, tuple(index)
+
+
+def _problems(group_case, model: str, speeds: np.ndarray) -> tuple[list, np.ndarray]:
+    """The backlash problem of every speed [rpm] of one model of a group's case, and the static loads [N]."""
+    mesh = MeshModel(group_case, model)
+    loads = np.array([mesh.normal_load(speed) for speed in speeds])
+    problems = [mesh.state(speed_rpm=speed, normal_load=load).backlash_problem(group_case.dynamics.damping_in_flight)
+                for speed, load in zip(speeds, loads)]
+    return problems, loads
+
+
+def _solve_group(study, rest: tuple[int, ...], speed_axis: int | None, directions: tuple[str, ...]) -> _Group:
+    """Both branches of every model of one group. A case whose gears jam (the thermal expansion closes the
+    backlash) gives NaN results marked ``jammed``, never an error: the other groups are computed."""
+    values, _ = _group_values(study, rest, speed_axis)
+    speeds = (np.asarray(study.parameters[speed_axis].values, dtype=float) if speed_axis is not None else None)
+    count = 1 if speeds is None else speeds.size
+    shape = (len(directions), len(study.models), count)
+    arrays = {name: np.full(shape, np.nan) for name in BRANCH_VARIABLES}
+    arrays["converged"][:] = 0.0  # a jammed point has no orbit: never labelled converged (nor NaN)
+    response = np.full(shape, "jammed", dtype=object)
+    jammed = np.zeros(len(study.models), dtype=bool)
+    static_load, frequency = np.full(count, np.nan), np.full(count, np.nan)
+    natural = np.full(len(study.models), np.nan)
+    try:
+        group_case = study.case_at(tuple(values))
+    except JammingError:
+        jammed[:] = True
+        return _Group(arrays, response, jammed, static_load, frequency, natural)
+    if speeds is None:
+        speeds = np.array([group_case.operating_point.speed_rpm], dtype=float)
+    frequency[:] = group_case.gear_pair.pinion.teeth * speeds / 60.0
+    for model_index, model in enumerate(study.models):
+        try:
+            problems, loads = _problems(group_case, model, speeds)
+        except JammingError:  # a temperature the model computes closes the backlash
+            jammed[model_index] = True
+            continue
+        static_load[:] = loads
+        natural[model_index] = problems[0].natural_frequency  # k and me do not change with the speed
+        for direction_index, way in enumerate(directions):
+            branch = follow_branch(problems, way, parameter=speeds,
+                                   include_damping_force=group_case.dynamics.include_damping_force)
+            target = (direction_index, model_index)
+            for name, source in _FROM_BRANCH.items():
+                arrays[name][target] = branch[source] / loads if name == "max_system_load_ratio" else branch[source]
+            arrays["back_side_contact"][target] = branch["back_side_contact"].astype(float)
+            arrays["period_count"][target] = branch.period_count.astype(float)
+            arrays["converged"][target] = branch.converged.astype(float)
+            response[target] = branch.response
+    return _Group(arrays, response, jammed, static_load, frequency, natural)
+
+
+def _search_point(study, rest: tuple[int, ...], speed_axis: int | None, model_index: int, speed_index: int,
+                  starts: int) -> dict | None:
+    """The multi-start orbit search at one point and model (:func:`thermogear.sweep.multistart.point_orbits`);
+    None where the gears jam."""
+    from thermogear.sweep.multistart import point_orbits  # noqa: PLC0415
+
+    values, _ = _group_values(study, rest, speed_axis)
+    try:
+        group_case = study.case_at(tuple(values))
+        speeds = (np.asarray(study.parameters[speed_axis].values, dtype=float)[[speed_index]]
+                  if speed_axis is not None else np.array([group_case.operating_point.speed_rpm], dtype=float))
+        problems, _ = _problems(group_case, study.models[model_index], speeds)
+    except JammingError:
+        return None
+    return point_orbits(problems[0], starts, group_case.dynamics.include_damping_force)
+
+
+def _execute(study, task: tuple, speed_axis, directions, starts: int):
+    """One task: ("group", rest) → :func:`_solve_group`; ("orbits", rest, model, speed) → :func:`_search_point`."""
+    if task[0] == "group":
+        return _solve_group(study, task[1], speed_axis, directions)
+    return _search_point(study, task[1], speed_axis, task[2], task[3], starts)
+
+
+def _execute_recorded(study, task, speed_axis, directions, starts) -> tuple[Any, list]:
+    """:func:`_execute` on a worker thread, its warnings recorded in the thread's own scope."""
+    with warning_scope.recorded() as caught:
+        result = _execute(study, task, speed_axis, directions, starts)
+    return result, list(caught)
+
+
+def branch_study(study, direction: str = "both", progress=None, workers: int | None = None, multistart: int = 0):
     """The xarray Dataset of a nonlinear-mesh study: dims ``(direction, model, *parameters)`` for the variables of
-    :data:`BRANCH_VARIABLES` and ``response`` ("periodic" | "subharmonic" | "non-periodic" | "failed"), plus the
-    per-point ``static_load`` and ``mesh_frequency_hz``. ``progress(points)`` is called after each group."""
+    :data:`BRANCH_VARIABLES` and ``response`` ("periodic" | "subharmonic" | "non-periodic" | "failed" | "jammed"),
+    ``jammed`` with dims ``(model, *parameters)`` (1 where the thermal expansion closes the backlash: no result,
+    NaN there), plus the per-point ``static_load`` [N] and ``mesh_frequency_hz`` [Hz].
+
+    Each combination of the parameters other than the speed (a group) is one task: its up and down branches in
+    speed (one point at the case's speed without a speed axis). The tasks run on ``workers`` threads (default:
+    one per core; 1: in the calling thread): the backlash integrator releases Python's global interpreter lock.
+    The numbers do not depend on the thread count. Warnings raised by the tasks are raised again in the calling
+    thread, once each. ``progress(points)`` is called as each group finishes (``points``: its speeds).
+
+    ``multistart`` N > 0: at every point and model also the multi-start search of
+    :func:`~thermogear.dynamics.backlash_orbits.stable_orbits` from N starts (about 0.1 s per start and point):
+    the variables of :data:`thermogear.sweep.multistart.ORBIT_VARIABLES` with an extra ``orbit`` dimension (the
+    largest basin share first), ``stable_orbit_count`` and ``unsettled_start_share``.
+    """
     import xarray as xr  # noqa: PLC0415
 
     directions = _directions(direction)
-    parameters = study.parameters
-    speed_axis = next((a for a, p in enumerate(parameters) if p.key == "operating.speed_rpm"), None)
+    speed_axis = next((a for a, p in enumerate(study.parameters) if p.key == "operating.speed_rpm"), None)
     shape = study.shape
     full = (len(directions), len(study.models), *shape)
     arrays = {name: np.full(full, np.nan) for name in BRANCH_VARIABLES}
     response = np.full(full, "", dtype=object)
+    jammed = np.zeros((len(study.models), *shape), dtype=np.int8)
+    natural = np.full((len(study.models), *shape), np.nan)
     static_load = np.full(shape, np.nan)
     frequency = np.full(shape, np.nan)
-    others = [range(p.size) for a, p in enumerate(parameters) if a != speed_axis]
-    for rest in np.ndindex(*[len(r) for r in others]) if others else [()]:
-        index = list(rest)
-        if speed_axis is not None:
-            index.insert(speed_axis, slice(None))
-        values = [p.values[i] if not isinstance(i, slice) else p.values[0] for p, i in zip(parameters, index)]
-        group_case = study.case_at(tuple(values))
-        speeds = (np.asarray(parameters[speed_axis].values, dtype=float) if speed_axis is not None
-                  else np.array([group_case.operating_point.speed_rpm]))
-        for model_index, model in enumerate(study.models):
-            mesh = MeshModel(group_case, model)
-            loads = np.array([mesh.normal_load(speed) for speed in speeds])
-            problems = [mesh.state(speed_rpm=speed, normal_load=load).backlash_problem(
-                group_case.dynamics.damping_in_flight) for speed, load in zip(speeds, loads)]
-            where = tuple(index)
-            static_load[where] = loads if speed_axis is not None else loads[0]
-            frequency[where] = (mesh.gear_pair.pinion.teeth * speeds / 60.0 if speed_axis is not None
-                                else mesh.gear_pair.pinion.teeth * speeds[0] / 60.0)
-            for direction_index, way in enumerate(directions):
-                branch = follow_branch(problems, way, parameter=speeds,
-                                       include_damping_force=group_case.dynamics.include_damping_force)
-                target = (direction_index, model_index, *where)
-                for name, source in _FROM_BRANCH.items():
-                    values = branch[source] / loads if name == "max_system_load_ratio" else branch[source]
-                    arrays[name][target] = values if speed_axis is not None else values[0]
-                arrays["back_side_contact"][target] = branch["back_side_contact"].astype(float)
-                arrays["period_count"][target] = branch.period_count.astype(float)
-                arrays["converged"][target] = branch.converged.astype(float)
-                response[target] = branch.response if speed_axis is not None else branch.response[0]
+    if int(multistart) != multistart or multistart < 0:
+        raise CaseError("multistart", multistart, "an integer >= 0 (0: no search)", "number of starts per point")
+    censuses = np.full((len(study.models), *shape), None, dtype=object) if multistart else None
+    others = [p.size for a, p in enumerate(study.parameters) if a != speed_axis]
+    groups = list(np.ndindex(*others)) if others else [()]
+
+    def place(task: tuple, result) -> None:
+        rest = task[1]
+        _, where = _group_values(study, rest, speed_axis)
+        if task[0] == "orbits":  # the census of one point and model
+            point = tuple(task[3] if isinstance(i, slice) else i for i in where)
+            censuses[(task[2], *point)] = result
+            return
+        group = result
+        pick = (lambda a: a) if speed_axis is not None else (lambda a: a[..., 0])
+        for name in BRANCH_VARIABLES:
+            arrays[name][(slice(None), slice(None), *where)] = pick(group.arrays[name])
+        response[(slice(None), slice(None), *where)] = pick(group.response)
+        jammed[(slice(None), *where)] = group.jammed[:, None] if speed_axis is not None else group.jammed
+        natural[(slice(None), *where)] = (group.natural_frequency_hz[:, None] if speed_axis is not None
+                                          else group.natural_frequency_hz)
+        static_load[where] = pick(group.static_load)
+        frequency[where] = pick(group.mesh_frequency_hz)
         if progress is not None:
-            progress(int(speeds.size))
+            progress(int(group.static_load.size))
+
+    tasks = [("group", rest) for rest in groups]
+    if multistart:  # one task per point and model: a few speeds searched on every thread
+        speed_count = study.parameters[speed_axis].size if speed_axis is not None else 1
+        tasks += [("orbits", rest, model, speed) for rest in groups for model in range(len(study.models))
+                  for speed in range(speed_count)]
+    _run_tasks(study, tasks, speed_axis, directions, place, workers, int(multistart))
     coords: dict[str, Any] = {"direction": ("direction", np.array(directions, dtype=str)),
                               "model": ("model", np.array(study.models, dtype=str))}
-    for parameter in parameters:
+    for parameter in study.parameters:
         coords[parameter.name] = (parameter.name, np.asarray(parameter.values))
     dims = ("direction", "model", *study.dims)
     data = {name: (dims, values, {"units": BRANCH_VARIABLES[name][0], "long_name": BRANCH_VARIABLES[name][1]})
             for name, values in arrays.items()}
-    data["response"] = (dims, response.astype(str), {"long_name": "periodic | subharmonic | non-periodic | failed"})
+    data["response"] = (dims, response.astype(str),
+                        {"long_name": "periodic | subharmonic | non-periodic | failed | jammed"})
+    data["jammed"] = (("model", *study.dims), jammed,
+                      {"units": "1", "long_name": "1 where the gears jam (the thermal expansion closes the backlash): "
+                                                  "no result, NaN"})
+    data["natural_frequency_hz"] = (("model", *study.dims), natural,
+                                    {"units": "Hz", "long_name": "natural frequency of the linear mesh with every "
+                                                                 "pair in contact, sqrt(mean k / me) / 2 pi"})
     data["static_load"] = (study.dims, static_load, {"units": "N", "long_name": "static normal load w"})
     data["mesh_frequency_hz"] = (study.dims, frequency, {"units": "Hz", "long_name": "mesh frequency z1 n1 / 60"})
+    if censuses is not None:
+        from thermogear.sweep.multistart import orbit_dataset_variables  # noqa: PLC0415
+
+        data.update(orbit_dataset_variables(censuses, study.models, study.dims, int(multistart)))
     return xr.Dataset(data, coords=coords, attrs={"mesh": "nonlinear", "directions": ",".join(directions),
-                                                   "case": study.case.name})
+                                                   "case": study.case.name, "load": "constant torque"})
 
 
-def hysteresis_bands(dataset, variable: str = "dte_peak_to_peak", tolerance: float = 0.02,
-                     jump: float = 0.5) -> dict[str, Any]:
-    """Where the up and the down branch differ (the jump phenomenon), per model: the speed band [rpm] in which
-    ``variable`` differs by more than ``tolerance`` (relative to the larger), and per sweep direction its jumps —
-    the changes of ``variable`` between neighbouring speeds larger than ``jump`` (relative to the smaller), each
-    with the speed midway between them, in the order the sweep meets them, and whether the amplitude rises or falls
-    there (a smooth branch has none). Empty without a speed axis or without both directions."""
-    if "speed_rpm" not in dataset.dims or list(dataset["direction"].values) != ["up", "down"]:
-        return {}
-    result = {}
-    speeds = np.asarray(dataset["speed_rpm"].values, dtype=float)
-    for model in dataset["model"].values:
-        selected = dataset[variable].sel(model=model)
-        extra = [d for d in selected.dims if d not in ("direction", "speed_rpm")]
-        if extra:  # one band per study: take the first value of any other parameter
-            selected = selected.isel({d: 0 for d in extra})
-        branches = {d: np.asarray(selected.sel(direction=d).values, dtype=float) for d in ("up", "down")}
-        up, down = branches["up"], branches["down"]
-        differ = np.abs(up - down) > tolerance * np.maximum(np.abs(up), np.abs(down))
-        entry: dict[str, Any] = {"differ": bool(np.any(differ))}
-        if np.any(differ):
-            entry["band_rpm"] = [float(speeds[differ].min()), float(speeds[differ].max())]
-        for way, values in branches.items():
-            if way == "down":  # the down sweep visits the speeds from the highest
-                values, order = values[::-1], speeds[::-1]
-            else:
-                order = speeds
-            smaller = np.maximum(np.minimum(np.abs(values[:-1]), np.abs(values[1:])), 1e-300)
-            change = np.abs(np.diff(values)) / smaller
-            jumps = np.flatnonzero(np.nan_to_num(change) > jump)
-            entry[f"{way}_sweep_jumps"] = [
-                {"speed_rpm": float(0.5 * (order[i] + order[i + 1])),
-                 "amplitude": "rises" if values[i + 1] > values[i] else "falls", "ratio": float(change[i] + 1.0)}
-                for i in jumps]
-        result[str(model)] = entry
-    return result
+def _run_tasks(study, tasks, speed_axis, directions, place, workers: int | None, starts: int) -> None:
+    """Run every task, serially (``workers`` = 1) or on a pool of threads; ``place(task, result)`` is called in
+    the calling thread as each finishes."""
+    import os  # noqa: PLC0415
+
+    count = min(workers or os.cpu_count() or 1, len(tasks))
+    if count <= 1:
+        for task in tasks:
+            place(task, _execute(study, task, speed_axis, directions, starts))
+        return
+    from concurrent.futures import ThreadPoolExecutor, as_completed  # noqa: PLC0415
+
+    caught: list = []
+    with warning_scope.routed() as unscoped:
+        with ThreadPoolExecutor(count, "thermogear-branches") as pool:
+            futures = {pool.submit(_execute_recorded, study, task, speed_axis, directions, starts): task
+                       for task in tasks}
+            try:
+                for future in as_completed(futures):
+                    result, messages = future.result()
+                    caught.extend(messages)
+                    place(futures[future], result)
+            finally:
+                for future in futures:
+                    future.cancel()
+        caught.extend(unscoped)
+    seen = set()
+    for item in caught:  # raised again in the calling thread, once per text
+        key = (item.category, str(item.message))
+        if key not in seen:
+            seen.add(key)
+            warnings.warn_explicit(str(item.message), item.category, item.filename, item.lineno)
 
 
 def write_branch_store(dataset, path, overwrite: bool = False):

@@ -12,6 +12,8 @@ from typing import Any
 
 import numpy as np
 
+from thermogear.sweep.plot_layout import label_speeds, mark_invalid, scale_to_valid
+
 __all__ = ["QUANTITY_LABELS", "find_resonance", "linear_model_valid", "plot_map", "plot_speed_response",
            "resonance_peaks", "resonance_speeds", "unstable_bands"]
 
@@ -43,10 +45,14 @@ def _select(dataset, select: dict[str, Any] | None, keep: tuple[str, ...]):
 
 def linear_model_valid(dataset):
     """Per model and point: True where the linear mesh model holds (a stable periodic steady state and no contact
-    loss). ``dataset``: a study's Dataset, or a mapping of its ``stable`` and ``contact_loss`` NumPy arrays.
+    loss, gears not jammed). ``dataset``: a study's Dataset, or a mapping of its ``stable``, ``contact_loss`` and
+    ``jammed`` NumPy arrays.
     Elsewhere Kv and the other responses are those of teeth that would separate or of an unstable solution (Kv of
     several hundred), not of the gear pair: summaries leave them out and plots mark them."""
-    return (dataset["stable"] == 1) & (dataset["contact_loss"] == 0)
+    valid = (dataset["stable"] == 1) & (dataset["contact_loss"] == 0)
+    if "jammed" in dataset:  # stores written before the flag existed have none
+        valid = valid & (dataset["jammed"] == 0)
+    return valid
 
 
 def _pinion_teeth(dataset) -> float:
@@ -153,37 +159,52 @@ def plot_speed_response(dataset, quantities=("kv", "dte_rms", "dte_peak_to_peak"
         figure = axes[0].figure
     speeds = np.asarray(picked[SPEED], dtype=float)
     valid = linear_model_valid(picked)
+    marks = []
+    for model in picked["model"].values:
+        color = _MODEL_STYLE.get(str(model), {}).get("color", "grey")
+        for order, speed in resonance_speeds(dataset, str(model), orders, select=chosen).items():
+            marks.append((speed, f"j={order} {str(model)[0]}", color))
     for axis, quantity in zip(axes, quantities):
         label, scale = QUANTITY_LABELS.get(quantity, (quantity, 1.0))
+        holds_values = []
+        for model in picked["model"].values:
+            values = np.asarray(picked[quantity].sel(model=model), dtype=float) * scale
+            holds = np.asarray(valid.sel(model=model), dtype=bool)
+            holds_values.append(values[holds])
+        limits = scale_to_valid(axis, np.concatenate(holds_values) if holds_values else [])
         for model in picked["model"].values:
             style = _MODEL_STYLE.get(str(model), {})
             values = np.asarray(picked[quantity].sel(model=model), dtype=float) * scale
             holds = np.asarray(valid.sel(model=model), dtype=bool)
             axis.plot(speeds, np.where(holds, values, np.nan), label=str(model), **style)
             lost = ~holds & np.isfinite(values)
-            if lost.any():  # contact loss: the linear model's number, marked and not joined to the curve
-                axis.plot(speeds[lost], values[lost], linestyle="none", marker="x", markersize=3, alpha=0.5,
-                          color=style.get("color", "grey"),
-                          label=f"{model}: contact loss (linear model invalid)")
+            if lost.any():  # contact loss: the linear model's number, greyed (on the edge beyond the valid range)
+                mark_invalid(axis, speeds[lost], values[lost], limits,
+                             label=f"{model}: contact loss (linear model invalid)", color=style.get("color", "grey"))
             for low, high in unstable_bands(dataset, str(model), select=chosen):
                 axis.axvspan(low, high, color=style.get("color", "grey"), alpha=0.12, linewidth=0)
-            for order, speed in resonance_speeds(dataset, str(model), orders, select=chosen).items():
-                if speeds.min() <= speed <= speeds.max():
-                    axis.axvline(speed, color=style.get("color", "grey"), linewidth=0.6, alpha=0.5, linestyle=":")
-                    axis.annotate(f"{order}·f_m = f_n", (speed, 1.0), xycoords=("data", "axes fraction"),
-                                  rotation=90, va="top", ha="right", fontsize=7, color=style.get("color", "grey"))
         axis.set_ylabel(label)
-        finite = np.asarray(picked[quantity].where(valid), dtype=float)
-        finite = finite[np.isfinite(finite) & (finite > 0)]
-        if finite.size and finite.max() > 50.0 * np.median(finite):
-            axis.set_yscale("log")
         axis.grid(True, alpha=0.3)
-    axes[0].legend(loc="upper left", fontsize=8, title="shaded: unstable", title_fontsize=7)
+        axis.set_xlim(speeds.min(), speeds.max())
+    label_speeds(axes[0], marks)
+    for axis in axes[1:]:
+        for speed, _, color in marks:
+            if speeds.min() <= speed <= speeds.max():
+                axis.axvline(speed, color=color, linewidth=0.7, alpha=0.6, linestyle=":")
+    handles, labels = axes[0].get_legend_handles_labels()
+    unique = dict(zip(labels, handles))
+    figure.legend(unique.values(), unique.keys(), loc="lower center", ncol=2, fontsize=8, frameon=False,
+                  title="shaded: no stable periodic response (parametric instability); pale x: the linear model "
+                        "does not hold (▲: beyond the axis)\ndotted, j=…: mesh-frequency order j meets the natural "
+                        "frequency, j·f_m = f_n (e elastic, t thermal)",
+                  title_fontsize=7)
     axes[-1].set_xlabel("pinion speed [rpm]")
+    title = "load: constant torque"
     if chosen:
-        axes[0].set_title(", ".join(f"{k} = {v:g}" if isinstance(v, (int, float, np.number)) else f"{k} = {v}"
-                                    for k, v in chosen.items()), fontsize=9)
-    figure.tight_layout()
+        title += "; " + ", ".join(f"{k} = {v:g}" if isinstance(v, (int, float, np.number)) else f"{k} = {v}"
+                                  for k, v in chosen.items())
+    figure.suptitle(title, fontsize=9)
+    figure.tight_layout(rect=(0, 0.09, 1, 1))
     return figure
 
 

@@ -38,7 +38,7 @@ import numpy as np
 
 from thermogear.errors import CaseError
 from thermogear.ownership import is_owned, require_owned, resolve_output, write_marker
-from thermogear.sweep.batch import MODEL_VARIABLES, POINT_VARIABLES
+from thermogear.sweep.batch import FLAG_VARIABLES, MODEL_VARIABLES, POINT_VARIABLES
 
 __all__ = ["ResultStore", "open_result", "study_description"]
 
@@ -153,7 +153,13 @@ class ResultStore:
             raise CaseError("out", str(target), "a store of the same study (case, parameters, models, chunks)",
                             "--resume continues the study that created this store; this study differs "
                             f"(stored: {json.dumps(stored)[:300]})")
-        return cls(target, study)
+        store = cls(target, study)
+        missing = [name for name in (*MODEL_VARIABLES, *POINT_VARIABLES) if name not in store._group]
+        if missing:  # written by an earlier thermogear, before these variables existed
+            raise CaseError("--resume", str(target), "a store with every variable of this version",
+                            f"the store lacks {', '.join(missing)} (an earlier thermogear wrote it); run the study "
+                            "again with --overwrite")
+        return store
 
     # ------------------------------------------------------------------------------ blocks
     def done_blocks(self) -> set[int]:
@@ -228,7 +234,7 @@ def _write_layout(target: Path, study) -> None:
                            attributes={"case_key": parameter.key, **_fill_attribute(values.dtype)})
     model_shape = (len(study.models), *study.shape)
     for name, (units, long_name) in MODEL_VARIABLES.items():
-        dtype = np.dtype(np.int8 if name in ("stable", "contact_loss") else np.float64)
+        dtype = np.dtype(np.int8 if name in FLAG_VARIABLES else np.float64)
         group.create_array(name, shape=model_shape, chunks=(len(study.models), *study.chunk_shape), dtype=dtype,
                            fill_value=0 if dtype.kind == "i" else np.nan, dimension_names=("model", *study.dims),
                            attributes={"units": units, "long_name": long_name, **_fill_attribute(dtype)})

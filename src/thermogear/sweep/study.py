@@ -28,7 +28,7 @@ from typing import Any
 import numpy as np
 import pydantic
 
-from thermogear.errors import CaseError, closest_key
+from thermogear.errors import CaseError, JammingError, closest_key
 from thermogear.schema.values import MAX_POINTS, parse_values
 
 __all__ = ["ALIASES", "Block", "Parameter", "Study", "load_study_case", "parse_values", "resolve_key"]
@@ -246,7 +246,8 @@ class Study:
 
     def check_values(self) -> None:
         """Build the case of each value of each parameter alone (others at the case's values); a bad one raises
-        CaseError naming the parameter and value. Above :data:`CHECKED_VALUES` values, the smallest, the largest
+        CaseError naming the parameter and value (except where the gears jam: the study marks those points
+        ``jammed`` and computes the others). Above :data:`CHECKED_VALUES` values, the smallest, the largest
         and evenly spaced ones between are checked: the case checks are bounds and conditions that change once
         along one parameter (undercut, contact ratio), which the ends and the samples catch."""
         for parameter in self.parameters:
@@ -257,6 +258,8 @@ class Study:
             for value in values:
                 try:
                     self.case.with_changes(**self._changes_for(((parameter, value),)))
+                except JammingError:  # a point whose gears jam is computed as such (marked, no result)
+                    continue
                 except CaseError as error:
                     raise CaseError(f"vary.{parameter.name}", value, error.allowed,
                                     f"{error.key}: {error.reason}") from None

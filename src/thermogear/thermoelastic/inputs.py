@@ -9,7 +9,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from thermogear.errors import CaseError
+from thermogear.errors import CaseError, JammingError
 from thermogear.geometry import GearPair
 from thermogear.thermoelastic.materials import HOUSING_EXPANSION_PER_K, MODULUS_TEMPERATURE_COEFFICIENTS_PER_K
 from thermogear.thermoelastic.operating import (BacklashAllowance, agma_minimum_backlash, backlash_at,
@@ -125,17 +125,18 @@ def bulk_temperatures_c(temperature_section) -> tuple[float, float] | None:
 def check_not_jammed(pair: GearPair, allowance: BacklashAllowance, pinion: GearInputs, wheel: GearInputs,
                      housing: HousingInputs, reference_c: float, bulk_c: tuple[float, float],
                      key: str = "temperature.bulk_c") -> float:
-    """The hot normal backlash [m]; raises CaseError when it is closed at the operating temperatures."""
+    """The hot normal backlash [m]; raises JammingError (a CaseError) when it is closed at the operating
+    temperatures."""
     housing_strain = housing.expansion_per_k * (housing.temperature_c - reference_c)
     hot = backlash_at(pair, allowance, pinion.expansion_per_k * (bulk_c[0] - reference_c),
                       wheel.expansion_per_k * (bulk_c[1] - reference_c), housing_strain)
     if hot <= 0.0:
         rise = jamming_rise(pair, allowance, pinion.expansion_per_k, wheel.expansion_per_k, housing_strain)
         at = "" if rise is None else f" (it closes at a bulk temperature of {reference_c + rise:.1f} °C)"
-        raise CaseError(key, round(max(bulk_c), 4), "a temperature at which the backlash stays open",
-                        f"the gears jam: the normal backlash is {hot * 1e6:.1f} μm at {bulk_c[0]:g}/{bulk_c[1]:g} °C "
-                        f"with the housing at {housing.temperature_c:g} °C{at}; give more backlash "
-                        "(gears.backlash_normal_um) or a warmer housing")
+        raise JammingError(key, round(max(bulk_c), 4), "a temperature at which the backlash stays open",
+                           f"the gears jam: the normal backlash is {hot * 1e6:.1f} μm at {bulk_c[0]:g}/{bulk_c[1]:g} "
+                           f"°C with the housing at {housing.temperature_c:g} °C{at}; give more backlash "
+                           "(gears.backlash_normal_um) or a warmer housing")
     return hot
 
 
