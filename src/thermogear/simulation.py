@@ -142,7 +142,7 @@ class Simulation:
             problem = self.state.backlash_problem(dynamics.damping_in_flight)
             if method == "transient":
                 return nonlinear_transient(problem, dynamics.transient_periods, dynamics.samples_per_interval,
-                                           label=self.model)
+                                           label=self.model, include_damping_force=damping_force)
             return nonlinear_response(problem, include_damping_force=damping_force, label=self.model,
                                       samples_per_interval=dynamics.samples_per_interval)
         if method == "periodic":

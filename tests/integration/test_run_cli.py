@@ -7,6 +7,7 @@ import json
 import math
 import subprocess
 import sys
+from pathlib import Path
 from types import SimpleNamespace
 
 import pytest
@@ -15,6 +16,10 @@ from thermogear.report.evaluate import model_messages
 
 KEYS = ("kv", "max_pair_load_n_per_mm", "max_system_load_ratio", "equilibrium_um", "amplitude_um",
         "natural_frequency_hz", "frequency_ratio", "floquet_multipliers_abs")
+
+
+DATA = Path(__file__).resolve().parents[1] / "data"
+USER_PAIR = DATA / "user_pair.toml"  # a user's own pair under the default (thermo-elastic) thermal model
 
 
 def _run(*args: str, cwd=None) -> subprocess.CompletedProcess:
@@ -107,3 +112,30 @@ def test_user_guide_case_file_runs(tmp_path):
     result = _run(str(case_file), "--json")
     assert result.returncode == 0, result.stderr
     assert set(json.loads(result.stdout)["models"]) == {"elastic", "thermal"}
+
+
+def test_nonlinear_transient_runs_as_table_and_json():
+    # fzg_type_c uses the nonlinear mesh (the default): `--method transient` used to end in KeyError 'response'
+    table = _run("fzg_type_c", "--method", "transient")
+    assert table.returncode == 0, table.stderr
+    assert "Traceback" not in table.stderr and "equilibrium, single" in table.stdout and "from rest" in table.stdout
+    result = _run("fzg_type_c", "--method", "transient", "--json", "--model", "elastic")
+    assert result.returncode == 0, result.stderr
+    elastic = json.loads(result.stdout)["models"]["elastic"]
+    assert elastic["method"] == "nonlinear transient from rest" and elastic["branch"] == "from rest"
+    assert set(elastic["equilibrium_um"]) == {"single", "double"} and elastic["kv"] > 1.0
+
+
+def test_transient_method_in_the_case_writes_the_report(tmp_path):
+    # `method = "transient"` in the case and --out used to fail with KeyError 'equilibrium_per_region' and write
+    # no folder
+    text = USER_PAIR.read_text(encoding="utf-8") + '\n[dynamics]\nmethod = "transient"\n'
+    case_file = tmp_path / "transient.toml"
+    case_file.write_text(text, encoding="utf-8")
+    out = tmp_path / "report"
+    result = _run(str(case_file), "--out", str(out), "--quiet")
+    assert result.returncode == 0, result.stderr
+    summary = json.loads((out / "summary.json").read_text())
+    assert (out / "report.html").exists() and summary["not_computed_stages"] == {}
+    kv = next(row for row in summary["results"] if row["quantity"] == "dynamic load factor Kv (Eq. 29)")
+    assert kv["elastic"] > 1.0 and kv["thermal"] > 1.0

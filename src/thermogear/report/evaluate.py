@@ -137,6 +137,12 @@ def _nonlinear_messages(metrics: dict, model: str) -> list[str]:
         messages.append(f"{model}: contact loss — the teeth separate for {100 * metrics['contact_loss_fraction']:.1f} % "
                         f"of the period{' and strike the back flanks' if metrics['back_side_contact'] else ''}; the "
                         "nonlinear mesh model computes the loads through it")
+    if metrics["response"] == "not settled":
+        messages.append(f"{model}: the motion from rest has not settled after {metrics['transient_periods']} mesh "
+                        f"periods (scaled change over the last period {metrics['residual']:.3g}): the numbers above "
+                        "are those of its last period, not of a steady state; raise [dynamics] transient_periods or "
+                        "use --method periodic")
+        return messages
     if metrics["response"] != "periodic":
         kind = ("subharmonic, repeating every " f"{metrics['period_count']} mesh periods"
                 if metrics["response"] == "subharmonic" else "non-periodic (no repeating orbit was found)")
