@@ -81,6 +81,7 @@ def run(
                      if name in outcome.evaluation.responses}
         failed = {name: outcome.evaluation.problems[f"{name} model"] for name in models
                   if f"{name} model" in outcome.evaluation.problems}
+        thermoelastic = outcome.evaluation.thermoelastic_summary if "thermal" in models else None
     else:
         from thermogear.simulation import Simulation
 
@@ -89,11 +90,14 @@ def run(
             for name in models:
                 advance(f"{name} model")
                 responses[name] = Simulation(case, name).run(method)
+        thermoelastic = _thermoelastic_summary(case) if "thermal" in models else None
     messages = [text for name, response in responses.items() for text in model_messages(response, name)]
     if as_json:
         payload = {"case": case.name, "method": method,
                    "models": {name: {**model_json(response), "messages": model_messages(response, name)}
                               for name, response in responses.items()}}
+        if thermoelastic is not None:
+            payload["thermoelastic"] = thermoelastic
         if failed:
             payload["not_computed"] = failed
         if out is not None:
@@ -109,11 +113,23 @@ def run(
         for name, reason in failed.items():
             error_console.print(f"{name} model not computed: {reason}", highlight=False)
         return
-    _print_table(case, responses, console)
+    _print_table(case, responses, console, thermoelastic)
     print_messages(messages, console)
 
 
-def _print_table(case, responses, console) -> None:
+def _thermoelastic_summary(case) -> dict | None:
+    """What the thermo-elastic model is for (operating geometry, backlash, jamming, E(T), loaded STE), where it is
+    the case's thermal model; None under the paper's model (its k_T has none of these)."""
+    from thermogear.evaluation import uses_paper_thermal_stiffness
+
+    if uses_paper_thermal_stiffness(case):
+        return None
+    from thermogear.summaries.thermoelastic import thermoelastic_summary
+
+    return thermoelastic_summary(case)
+
+
+def _print_table(case, responses, console, thermoelastic: dict | None = None) -> None:
     from rich.table import Table
 
     from thermogear.report.paper_table import format_value
@@ -147,4 +163,12 @@ def _print_table(case, responses, console) -> None:
         table.add_row("steady orbit found", *("yes" if d["valid"] else "NO" for d in data.values()), "")
     else:
         table.add_row("linear model valid", *("yes" if d["valid"] else "NO" for d in data.values()), "")
+    if thermoelastic is not None:
+        from thermogear.report.thermoelastic_rows import thermoelastic_rows
+
+        table.add_section()
+        for label, unit, elastic, thermal, _ in thermoelastic_rows(thermoelastic):
+            cells = {"elastic": elastic, "thermal": thermal}
+            table.add_row(label, *(format_value(cells[name]) if cells[name] is not None else "—" for name in responses),
+                          unit)
     console.print(table)

@@ -40,7 +40,9 @@ def key_results(evaluation: Evaluation) -> list[dict]:
                      "note": note})
 
     pair = evaluation.case.gear_pair
-    add("contact ratio ε", "–", pair.contact_ratio, pair.contact_ratio)
+    thermal_pair = (evaluation.simulations["thermal"].mesh_model.gear_pair if "thermal" in evaluation.simulations
+                    else pair)  # at temperature under the thermo-elastic model
+    add("contact ratio ε", "–", pair.contact_ratio, thermal_pair.contact_ratio)
     metrics = {model: response.metrics for model, response in evaluation.responses.items()}
 
     def metric(model, *path, scale=1.0):
@@ -86,6 +88,11 @@ def key_results(evaluation: Evaluation) -> list[dict]:
         means = evaluation.damping.region_means
         for region in ("single", "double"):
             add(f"mean mesh damping, {region} region", "N·s/m", means["elastic"].get(region), means["thermal"].get(region))
+    if evaluation.thermoelastic_summary is not None:
+        from thermogear.report.thermoelastic_rows import thermoelastic_rows
+
+        for quantity, unit, elastic, thermal, note in thermoelastic_rows(evaluation.thermoelastic_summary):
+            add(quantity, unit, elastic, thermal, note=note)
     if evaluation.thermal_summary is not None:
         summary = evaluation.thermal_summary
         add("X_te (thermo-elastic correction factor)", "–", None, summary["x_te"], note=str(summary["x_te_source"]))
