@@ -27,7 +27,8 @@ from thermogear.materials import Material
 from thermogear.operating import OperatingPoint
 from thermogear.schema import (CaseFile, DampingSection, DynamicsSection, FemSection, GearsSection, HousingSection,
                                LubricantSection, MaterialSection, TemperatureSection, ThermalSection)
-from thermogear.temperature_field import check_temperatures, temperature_field_from_section
+from thermogear.temperature_field import (check_temperatures, default_bulk_temperature,
+                                         temperature_field_from_section)
 from thermogear.text_files import read_user_text
 from thermogear.thermoelastic.inputs import check_thermoelastic_inputs
 
@@ -61,6 +62,8 @@ class Case:
     housing: HousingSection = HousingSection()
     gears_input: GearsSection | None = None
     material_input: MaterialSection = MaterialSection()
+    # what thermogear assumed for keys the case left out, in words (every command prints them as "note: …")
+    notes: tuple[str, ...] = ()
 
     @property
     def directory(self) -> Path | None:
@@ -264,6 +267,7 @@ def case_from_document(document: dict[str, Any], source: str = "<memory>") -> Ca
     else:
         torque = op.torque_nm if op.torque_nm is not None else fzg_load_stage_torque(op.fzg_load_stage)
         operating = OperatingPoint(op.speed_rpm, torque)
+    temperature, notes = default_bulk_temperature(model.temperature, model.lubricant)
     inertias = None
     if (gears.pinion.inertia_kg_m2 is None) != (gears.wheel.inertia_kg_m2 is None):
         raise CaseError("gears.wheel.inertia_kg_m2", gears.wheel.inertia_kg_m2, "given for both gears or neither",
@@ -278,9 +282,9 @@ def case_from_document(document: dict[str, Any], source: str = "<memory>") -> Ca
                           thermal_conductivity=material.thermal_conductivity_w_per_m_k,
                           thermal_expansion=material.thermal_expansion_per_k),
         operating_point=operating, roughness_ra=gears.roughness_ra_um * 1e-6, inertias=inertias,
-        lubricant=model.lubricant, temperature=model.temperature, thermal=model.thermal, damping=model.damping,
+        lubricant=model.lubricant, temperature=temperature, thermal=model.thermal, damping=model.damping,
         dynamics=model.dynamics, fem=model.fem, source=source, document=document, housing=model.housing,
-        gears_input=gears, material_input=material)
+        gears_input=gears, material_input=material, notes=notes)
     check_case(case)
     return case
 

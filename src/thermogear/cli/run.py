@@ -62,7 +62,7 @@ def run(
     Contact loss and instability are said in words (when, how long, how deep)."""
     from thermogear.case import load_case
     from thermogear.report.evaluate import model_messages
-    from thermogear.cli.console import step_progress
+    from thermogear.cli.console import print_notes, step_progress
     from thermogear.report.terminal import print_messages, print_summary
 
     if model not in _MODELS:
@@ -96,6 +96,7 @@ def run(
         payload = {"case": case.name, "method": method,
                    "models": {name: {**model_json(response), "messages": model_messages(response, name)}
                               for name, response in responses.items()}}
+        payload["notes"] = list(case.notes)
         if thermoelastic is not None:
             payload["thermoelastic"] = thermoelastic
         if failed:
@@ -110,10 +111,12 @@ def run(
             print_messages(messages, error_console)
         else:
             print_summary(outcome, console)
+            print_notes(case.notes, console)
         for name, reason in failed.items():
             error_console.print(f"{name} model not computed: {reason}", highlight=False)
         return
     _print_table(case, responses, console, thermoelastic)
+    print_notes(case.notes, console)
     print_messages(messages, console)
 
 

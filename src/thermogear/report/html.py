@@ -61,7 +61,7 @@ def _case_section(evaluation, toml_text: str) -> str:
         ("solution method", evaluation.method),
     ]
     rows = "".join(f"<tr><th>{_e(k)}</th><td>{_e(v)}</td></tr>" for k, v in facts)
-    assumptions = "".join(f"<li>{_e(item)}</li>" for item in case.assumptions) or "<li>none stated</li>"
+    assumptions = "".join(f"<li>{_e(item)}</li>" for item in (*case.assumptions, *case.notes)) or "<li>none stated</li>"
     return (f"<h2 id='case'>The case</h2><p><b>{_e(case.title or case.name)}</b><br>"
             f"<span class='small'>source: {_e(case.citation or case.source)}</span></p>"
             f"<table style='width:auto'>{rows}</table><h3>Assumptions (what the source leaves open)</h3>"

@@ -127,7 +127,7 @@ def summary_document(evaluation, verdicts, results, messages, figures, missing_f
         "thermogear_version": __version__,
         "generated": datetime.now(timezone.utc).isoformat(timespec="seconds"),
         "case": {"name": case.name, "title": case.title, "source": str(case.source), "citation": case.citation,
-                 "assumptions": list(case.assumptions)},
+                 "assumptions": list(case.assumptions), "notes": list(case.notes)},
         "paper": "Luo & Li (2020), doi:10.1016/j.engfailanal.2020.104724" if verdicts else None,
         "table": table,
         "headline": ({"predictions": counts["prediction"], "qualitative": counts["qualitative"],
