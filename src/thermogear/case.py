@@ -20,6 +20,7 @@ from typing import Any, Callable
 import pydantic
 
 from thermogear import warning_scope
+from thermogear.case_keys import warn_keys_without_effect
 from thermogear.errors import CaseError, closest_key
 from thermogear.fzg import fzg_load_stage_torque
 from thermogear.geometry import Gear, GearPair, involute
@@ -286,6 +287,7 @@ def case_from_document(document: dict[str, Any], source: str = "<memory>") -> Ca
         dynamics=model.dynamics, fem=model.fem, source=source, document=document, housing=model.housing,
         gears_input=gears, material_input=material, notes=notes)
     check_case(case)
+    warn_keys_without_effect(case)
     return case
 
 

@@ -39,3 +39,39 @@ def test_every_command_says_the_default_temperature(command):
     assert result.returncode == 0, result.stderr
     (note,) = json.loads(result.stdout)["notes"]
     assert "oil's operating temperature" in note
+
+
+def _with(tmp_path, text: str) -> Path:
+    path = tmp_path / "case.toml"
+    path.write_text(USER_PAIR.read_text(encoding="utf-8") + text, encoding="utf-8")
+    return path
+
+
+def test_keys_of_another_model_are_named_once_by_check(tmp_path):
+    # `x_te_source = "given"` without x_te under the default model passed check silently, and `stiffness --thermal`
+    # then failed on it
+    case = _with(tmp_path, '\n[thermal]\nx_te_source = "given"\nload_basis = "pair_share"\n'
+                           '\n[dynamics]\nmesh = "linear"\ndamping_in_flight = "in_contact"\n')
+    result = _cli("check", str(case))
+    assert result.returncode == 0, result.stderr
+    lines = [line for line in result.stderr.splitlines() if line.startswith("warning: ")]
+    thermal = [line for line in lines if "thermal.x_te_source, thermal.load_basis: no effect" in line]
+    flight = [line for line in lines if "dynamics.damping_in_flight: no effect" in line]
+    assert len(thermal) == 1 and "thermal.model = 'luo2020'" in thermal[0]
+    assert len(flight) == 1 and "dynamics.mesh = 'nonlinear'" in flight[0]
+    stiffness = _cli("stiffness", str(case), "--thermal", "--json")
+    assert stiffness.returncode == 0, stiffness.stderr
+    assert "luo2020" not in json.loads(stiffness.stdout)["thermal"]  # incomplete: the paper's model is not beside
+
+
+@pytest.mark.parametrize("name", ["luo2019", "fzg_type_c"])
+def test_keys_read_by_some_output_are_not_named(name):
+    # luo2019 runs the paper's model; fzg_type_c gives a complete X_te that `stiffness --thermal` shows beside
+    import warnings
+
+    from thermogear.errors import IneffectiveKeyWarning
+
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        load_case(name)
+    assert not [item for item in caught if issubclass(item.category, IneffectiveKeyWarning)]

@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from thermogear.case_keys import LUO2020_KEYS, luo2020_complete
 from thermogear.errors import ExtrapolationWarning
 from thermogear.thermal.temperature import temperature_field_from_case
 from thermogear.thermoelastic.mesh import ThermoelasticMesh
@@ -27,9 +28,6 @@ if TYPE_CHECKING:
 #: N/m per metre of face width → N/(mm·μm)
 PER_WIDTH_TO_N_PER_MM_UM = 1e-9
 
-#: [thermal] keys that belong to the paper's model; a case that sets any of them gets its result beside ours.
-LUO2020_KEYS = frozenset({"x_te", "x_te_source", "calibration_drop_percent", "calibration_point", "load_basis",
-                          "expansion_model"})
 
 #: Roll positions along the path for the deviation's peak-to-peak [–].
 PATH_POINT_COUNT = 401
@@ -107,7 +105,9 @@ def thermoelastic_summary(case: "Case") -> dict:
 
 
 def _luo2020_configured(case: "Case") -> bool:
-    return bool(LUO2020_KEYS & case.thermal.model_fields_set)
+    """The case sets the paper's keys and they define X_te completely (else they are named as having no effect
+    when the case loads, :mod:`thermogear.case_keys`)."""
+    return bool(set(LUO2020_KEYS) & case.thermal.model_fields_set) and luo2020_complete(case.thermal)
 
 
 def thermal_block(case: "Case") -> dict:
