@@ -140,3 +140,18 @@ def test_an_unsettled_transient_says_so(nonlinear_luo):
     response = _quiet(Simulation(case, "elastic").run, "transient")
     assert response.metrics["response"] == "not settled" and not response.valid
     assert any("transient_periods" in text for text in model_messages(response, "elastic"))
+
+
+def test_the_papers_secant_stiffness_in_the_nonlinear_mesh_is_flagged(nonlinear_luo):
+    # luo2019 runs the paper's k_T (a secant stiffness at the static load, Eq. 18): as the contact stiffness of the
+    # nonlinear mesh it is flagged with the reason, and with the separation where the teeth fly (13 000 rpm)
+    quiet = _quiet(Simulation(nonlinear_luo, "thermal").run)
+    (flag,) = [text for text in quiet.flags if "secant stiffness at the static" in text]
+    assert "near the static load" in flag and "thermal.model = 'thermoelastic'" in flag
+    flying = _quiet(Simulation(nonlinear_luo.with_changes(**{"operating.speed_rpm": 13000.0}), "thermal").run)
+    (flag,) = [text for text in flying.flags if "secant stiffness at the static" in text]
+    assert f"{100 * flying.metrics['contact_loss_fraction']:.1f} % of the period" in flag
+    # the thermo-elastic model and the linear mesh are not flagged
+    assert not [text for text in _quiet(Simulation(nonlinear_luo, "elastic").run).flags if "secant stiffness at the static" in text]
+    linear = _quiet(Simulation(load_case("luo2019"), "thermal").run)
+    assert not [text for text in linear.flags if "secant stiffness at the static" in text]

@@ -42,6 +42,8 @@ def thermal_result_flags(mesh: MeshModel, state: MeshState, metrics: dict[str, A
             flags.append(f"the paper's secant k_T lowers the mean mesh stiffness by {-100 * change:.1f} %, more than "
                          f"Young's modulus at a {rise:.0f} K rise can ({100 * modulus_limit:.1f} %): it rests on the "
                          "factor X_te; [thermal] model = \"thermoelastic\" predicts without it")
+    if mesh.thermal_model == "luo2020" and metrics.get("mesh") == "nonlinear":
+        flags.append(secant_stiffness_in_nonlinear_mesh(metrics.get("contact_loss_fraction") or 0.0))
     ratio = metrics.get("frequency_ratio")
     if ratio is not None and np.isfinite(ratio):
         for order in (1, 2, 3):
@@ -55,3 +57,19 @@ def thermal_result_flags(mesh: MeshModel, state: MeshState, metrics: dict[str, A
                      + " region: the response there is dominated by the jumps between regions, not by a vibration "
                        "about the equilibrium")
     return tuple(flags)
+
+
+def secant_stiffness_in_nonlinear_mesh(contact_loss_fraction: float) -> str:
+    """Why the paper's k_T has no meaning as the contact stiffness of the nonlinear mesh.
+
+    k_T = F_n/Δ_te (Luo & Li 2020 Eqs. 17–18) is a secant stiffness, computed at the static load: it falls to 0 as
+    F_n → 0 and rises to k_e as F_n → ∞. The nonlinear mesh uses it as the slope of the contact force at every
+    deflection; as the mesh force swings away from the static load that slope is no longer the secant the paper
+    defines, and once the teeth separate (force 0) the secant at that load would be 0, not the static value."""
+    where = (f"here the teeth separate for {100 * contact_loss_fraction:.1f} % of the period, where it has no "
+             "meaning at all" if contact_loss_fraction > 0.0 else
+             "it holds only while the mesh force stays near the static load")
+    return ("the paper's k_T (thermal.model = 'luo2020') is a secant stiffness at the static load (Luo & Li Eq. 18), "
+            f"used by the nonlinear mesh as the contact stiffness at every deflection: {where}; use thermal.model = "
+            "'thermoelastic' (a tangent stiffness with E(T) and the backlash at temperature) for the nonlinear mesh, "
+            "or dynamics.mesh = 'linear' to reproduce the paper")
