@@ -113,12 +113,14 @@ class Simulation:
         """Solve the dynamics and return the response with the checks of a thermal result (``flags``).
 
         See :meth:`solve` for the methods."""
-        response = self.solve(method, include_damping_force)
-        if self.model != "thermal":
-            return response
-        from thermogear.mesh.plausibility import thermal_result_flags
+        from thermogear.mesh.plausibility import damping_ratio_flags, thermal_result_flags
 
-        return replace(response, flags=thermal_result_flags(self.mesh_model, self.state, response.metrics))
+        response = self.solve(method, include_damping_force)
+        response.metrics["damping_ratio"] = self.state.damping_ratio  # the solver's fresh dict: a gear quantity
+        flags = damping_ratio_flags(self.state)
+        if self.model == "thermal":
+            flags += thermal_result_flags(self.mesh_model, self.state, response.metrics)
+        return replace(response, flags=flags)
 
     def solve(self, method: Method | None = None, include_damping_force: bool | None = None):
         """Solve the dynamics and return the response.

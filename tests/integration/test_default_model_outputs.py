@@ -75,3 +75,44 @@ def test_keys_read_by_some_output_are_not_named(name):
         warnings.simplefilter("always")
         load_case(name)
     assert not [item for item in caught if issubclass(item.category, IneffectiveKeyWarning)]
+
+
+def test_run_names_the_load_held_and_flags_damping_no_mesh_has(tmp_path):
+    # the mesh model holds the power of a case that gives power_kw, the torque otherwise (a sweep over speed holds
+    # the torque): every output of run says which, in the same words ("load held: constant torque|power")
+    result = _cli("run", str(USER_PAIR), "--json")
+    assert result.returncode == 0, result.stderr
+    payload = json.loads(result.stdout)
+    assert payload["load_held"] == "constant torque"
+    # Eq. 28's friction damping grows as 1/speed: at 1500 rpm this pair's mean ζ is far above measured gear meshes
+    # (0.03–0.17); the result is kept and the ratio is flagged in words, per model
+    for name, model in payload["models"].items():
+        assert model["damping_ratio"] > 0.34 and model["kv"] > 1.0, name
+        assert any("damping ratio ζ" in text and "is above 0.34" in text for text in model["messages"]), name
+    power = _with(tmp_path, "").read_text(encoding="utf-8").replace("torque_nm = 100.0", "power_kw = 15.0")
+    (tmp_path / "power.toml").write_text(power, encoding="utf-8")
+    table = _cli("run", str(tmp_path / "power.toml"), "--model", "elastic")
+    assert table.returncode == 0, table.stderr
+    assert "load held: constant power" in table.stdout and "damping ratio ζ (mean)" in table.stdout
+
+
+def test_damping_ratio_is_that_of_the_mean_oscillator_and_flagged_only_above_the_limit():
+    import warnings
+
+    import numpy as np
+
+    from thermogear.mesh.plausibility import DAMPING_RATIO_LIMIT, damping_ratio_flags
+    from thermogear.simulation import Simulation
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        slow = Simulation(load_case("fzg_type_c").with_changes(**{"operating.speed_rpm": 900.0}), "elastic").state
+        paper = Simulation(load_case("luo2019"), "thermal").state
+    # identity: ζ = mean c / (2 sqrt(mean k · me)), time means over the grid intervals
+    durations = np.diff(slow.grid.nodes)
+    mean_c = float(np.dot(slow.mesh_damping, durations) / durations.sum())
+    mean_k = float(np.dot(slow.mesh_stiffness, durations) / durations.sum())
+    assert slow.damping_ratio == pytest.approx(mean_c / (2.0 * np.sqrt(mean_k * slow.mass)), rel=1e-12)
+    # the issue's FZG case at 900 rpm (ζ ≈ 0.7 elastic) is flagged; the paper's own thermal damping (≈ 0.30) is not
+    assert slow.damping_ratio > DAMPING_RATIO_LIMIT and len(damping_ratio_flags(slow)) == 1
+    assert 0.25 < paper.damping_ratio < DAMPING_RATIO_LIMIT and damping_ratio_flags(paper) == ()

@@ -28,6 +28,7 @@ def model_json(response) -> dict:
         "equilibrium_um": {region: m["equilibrium_per_region"][region] * 1e6 for region in regions},
         "amplitude_um": {region: m["amplitude_per_region"][region] * 1e6 for region in regions},
         "natural_frequency_hz": m["natural_frequency_hz"],
+        "damping_ratio": m.get("damping_ratio"),
         "mesh_frequency_hz": m["mesh_frequency_hz"],
         "frequency_ratio": m["frequency_ratio"],
         "floquet_multipliers_abs": m["floquet_multipliers_abs"],
@@ -93,7 +94,7 @@ def run(
         thermoelastic = _thermoelastic_summary(case) if "thermal" in models else None
     messages = [text for name, response in responses.items() for text in model_messages(response, name)]
     if as_json:
-        payload = {"case": case.name, "method": method,
+        payload = {"case": case.name, "method": method, "load_held": case.operating_point.load_held,
                    "models": {name: {**model_json(response), "messages": model_messages(response, name)}
                               for name, response in responses.items()}}
         payload["notes"] = list(case.notes)
@@ -111,13 +112,22 @@ def run(
             print_messages(messages, error_console)
         else:
             print_summary(outcome, console)
+            console.print(_load_held_line(case))
             print_notes(case.notes, console)
         for name, reason in failed.items():
             error_console.print(f"{name} model not computed: {reason}", highlight=False)
         return
     _print_table(case, responses, console, thermoelastic)
+    console.print(_load_held_line(case))
     print_notes(case.notes, console)
     print_messages(messages, console)
+
+
+def _load_held_line(case) -> str:
+    """``load held: constant torque|power`` with where it comes from (the same words as the sweep's)."""
+    held = case.operating_point.load_held
+    source = "the case gives power_kw" if held == "constant power" else "the case gives the torque"
+    return f"load held: {held} ({source})"
 
 
 def _thermoelastic_summary(case) -> dict | None:
@@ -145,7 +155,8 @@ def _print_table(case, responses, console, thermoelastic: dict | None = None) ->
     data = {name: model_json(response) for name, response in responses.items()}
     rows = [("Kv (Eq. 29)", "kv", "–"), ("max pair load", "max_pair_load_n_per_mm", "N/mm"),
             ("max system load / static", "max_system_load_ratio", "–"),
-            ("natural frequency", "natural_frequency_hz", "Hz"), ("frequency ratio λ", "frequency_ratio", "–")]
+            ("natural frequency", "natural_frequency_hz", "Hz"), ("frequency ratio λ", "frequency_ratio", "–"),
+            ("damping ratio ζ (mean)", "damping_ratio", "–")]
     for label, key, unit in rows:
         table.add_row(label, *(format_value(d[key]) if d[key] is not None else "—" for d in data.values()), unit)
     regions = list(next(iter(data.values()))["equilibrium_um"])

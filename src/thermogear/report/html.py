@@ -52,7 +52,7 @@ def _case_section(evaluation, toml_text: str) -> str:
         ("module", f"{pair.module * 1e3:g} mm"), ("face width", f"{pair.face_width * 1e3:g} mm"),
         ("centre distance", f"{pair.centre_distance * 1e3:g} mm"), ("contact ratio ε", f"{pair.contact_ratio:.4f}"),
         ("pinion speed", f"{op.speed_rpm:g} rpm"), ("torque", f"{op.torque:.4g} N·m"),
-        ("power", f"{op.power / 1e3:.4g} kW"), ("static normal load", f"{case.normal_load:.5g} N "
+        ("power", f"{op.power / 1e3:.4g} kW"), ("load held", op.load_held), ("static normal load", f"{case.normal_load:.5g} N "
                                                                       f"({case.normal_load / pair.face_width / 1e3:.4g} N/mm)"),
         ("equivalent mass me", f"{case.equivalent_mass:.4g} kg"),
         ("mesh frequency", f"{pair.mesh_frequency(op.speed_rpm):.5g} Hz"),
