@@ -112,11 +112,9 @@ def cached_per_case(function):
         if entry is None or entry[0]() is not case:
             with warning_scope.recorded() as caught:
                 value = function(case)
-            recorded = tuple((item.message, item.category) for item in caught)
-            entry = (weakref.ref(case, lambda _, key=key: results.pop(key, None)), value, recorded)
+            entry = (weakref.ref(case, lambda _, key=key: results.pop(key, None)), value, warning_scope.kept(caught))
             results[key] = entry
-        for message, category in entry[2]:
-            warnings.warn(message if isinstance(message, Warning) else str(message), category, stacklevel=2)
+        warning_scope.raise_again(entry[2])
         return entry[1]
 
     cached.cache_clear = results.clear

@@ -116,3 +116,29 @@ def test_damping_ratio_is_that_of_the_mean_oscillator_and_flagged_only_above_the
     # the FZG case at 900 rpm (ζ ≈ 0.7 elastic) is flagged; the paper's own thermal damping (≈ 0.30) is not
     assert slow.damping_ratio > DAMPING_RATIO_LIMIT and len(damping_ratio_flags(slow)) == 1
     assert 0.25 < paper.damping_ratio < DAMPING_RATIO_LIMIT and damping_ratio_flags(paper) == ()
+
+
+def test_the_sainsot_warning_has_one_wording_once_per_call_with_advice():
+    # z = 21: θ_f = 0.1435 rad is outside the fit's recorded input range [0.01, 0.12] (≥ about 26 teeth for a
+    # standard tooth) while L*, M*, P*, Q* stay in its data: said once, in one wording, with what to do
+    import warnings
+
+    from thermogear.simulation import Simulation
+
+    case = load_case(str(USER_PAIR))
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("default")  # Python's own filter: each cause once per place
+        for model in ("elastic", "thermal"):
+            Simulation(case, model).run()
+    sainsot = [str(item.message) for item in caught if "Sainsot" in str(item.message)]
+    assert len(sainsot) == 1, sainsot  # was 4 (two tables per model, raised again from two caches)
+    (text,) = sainsot
+    assert "pinion: θ_f = 0.1435 rad" in text and "mild extrapolation" in text and "thermogear fem" in text
+    lines = []
+    for command in ("stiffness", "run"):
+        result = _cli(command, str(USER_PAIR))
+        assert result.returncode == 0, result.stderr
+        found = [line for line in result.stderr.splitlines() if "Sainsot" in line]
+        assert len(found) == 1, (command, found)
+        lines += found
+    assert lines[0] == lines[1] == f"warning: {text}"
