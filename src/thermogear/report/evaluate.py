@@ -60,6 +60,7 @@ def key_results(evaluation: Evaluation) -> list[dict]:
         *(simulations[m].mesh_stiffness_mean / pair.face_width * 1e-9 if m in simulations else None for m in MODELS))
     add("natural frequency f_n", "Hz", metric("elastic", "natural_frequency_hz"), metric("thermal", "natural_frequency_hz"))
     add("frequency ratio λ = f_mesh / f_n", "–", metric("elastic", "frequency_ratio"), metric("thermal", "frequency_ratio"))
+    add("mean damping ratio ζ", "–", metric("elastic", "damping_ratio"), metric("thermal", "damping_ratio"))
     counts = sorted({region for m in metrics.values() for region in m["equilibrium_per_region"]},
                     key=lambda name: ("single", "double", "triple").index(name) if name in ("single", "double", "triple")
                     else 9)
