@@ -10,7 +10,6 @@ from __future__ import annotations
 import functools
 import math
 import tomllib
-import warnings
 import weakref
 from dataclasses import dataclass, field
 from importlib import resources

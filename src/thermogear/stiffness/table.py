@@ -7,7 +7,6 @@ keys on them directly. Cached arrays are read-only.
 
 from __future__ import annotations
 
-import warnings
 from functools import lru_cache
 
 import numpy as np

@@ -9,7 +9,6 @@ operating point and sweep at that load reuses it.
 
 from __future__ import annotations
 
-import warnings
 from typing import TYPE_CHECKING
 
 import numpy as np
