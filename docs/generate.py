@@ -178,7 +178,8 @@ REQUIRED_WHEN = {
     "operating.fzg_load_stage": "give exactly one of power_kw, torque_nm, fzg_load_stage",
     "lubricant.name": "a built-in oil, or give viscosity_points (then name is only a label)",
     "lubricant.viscosity_points": "required unless name is a built-in oil",
-    "temperature.bulk_c": "required with model = 'uniform'",
+    "temperature.bulk_c": "with model = 'uniform'; not set: the oil's operating temperature "
+                          "(lubricant.operating_temperature_c), said in a note",
     "temperature.gamma": "with flank_c, or csv, required with model = 'tabulated'",
     "temperature.flank_c": "with gamma, or csv, required with model = 'tabulated'",
     "thermal.x_te": "required with model = 'luo2020' and x_te_source = 'given'",

@@ -10,7 +10,6 @@ from __future__ import annotations
 import functools
 import math
 import tomllib
-import warnings
 import weakref
 from dataclasses import dataclass, field
 from importlib import resources
@@ -20,6 +19,7 @@ from typing import Any, Callable
 import pydantic
 
 from thermogear import warning_scope
+from thermogear.case_keys import warn_keys_without_effect
 from thermogear.errors import CaseError, closest_key
 from thermogear.fzg import fzg_load_stage_torque
 from thermogear.geometry import Gear, GearPair, involute
@@ -27,7 +27,8 @@ from thermogear.materials import Material
 from thermogear.operating import OperatingPoint
 from thermogear.schema import (CaseFile, DampingSection, DynamicsSection, FemSection, GearsSection, HousingSection,
                                LubricantSection, MaterialSection, TemperatureSection, ThermalSection)
-from thermogear.temperature_field import check_temperatures, temperature_field_from_section
+from thermogear.temperature_field import (check_temperatures, default_bulk_temperature,
+                                         temperature_field_from_section)
 from thermogear.text_files import read_user_text
 from thermogear.thermoelastic.inputs import check_thermoelastic_inputs
 
@@ -61,6 +62,8 @@ class Case:
     housing: HousingSection = HousingSection()
     gears_input: GearsSection | None = None
     material_input: MaterialSection = MaterialSection()
+    # what thermogear assumed for keys the case left out, in words (every command prints them as "note: …")
+    notes: tuple[str, ...] = ()
 
     @property
     def directory(self) -> Path | None:
@@ -108,11 +111,9 @@ def cached_per_case(function):
         if entry is None or entry[0]() is not case:
             with warning_scope.recorded() as caught:
                 value = function(case)
-            recorded = tuple((item.message, item.category) for item in caught)
-            entry = (weakref.ref(case, lambda _, key=key: results.pop(key, None)), value, recorded)
+            entry = (weakref.ref(case, lambda _, key=key: results.pop(key, None)), value, warning_scope.kept(caught))
             results[key] = entry
-        for message, category in entry[2]:
-            warnings.warn(message if isinstance(message, Warning) else str(message), category, stacklevel=2)
+        warning_scope.raise_again(entry[2])
         return entry[1]
 
     cached.cache_clear = results.clear
@@ -264,6 +265,7 @@ def case_from_document(document: dict[str, Any], source: str = "<memory>") -> Ca
     else:
         torque = op.torque_nm if op.torque_nm is not None else fzg_load_stage_torque(op.fzg_load_stage)
         operating = OperatingPoint(op.speed_rpm, torque)
+    temperature, notes = default_bulk_temperature(model.temperature, model.lubricant)
     inertias = None
     if (gears.pinion.inertia_kg_m2 is None) != (gears.wheel.inertia_kg_m2 is None):
         raise CaseError("gears.wheel.inertia_kg_m2", gears.wheel.inertia_kg_m2, "given for both gears or neither",
@@ -278,10 +280,11 @@ def case_from_document(document: dict[str, Any], source: str = "<memory>") -> Ca
                           thermal_conductivity=material.thermal_conductivity_w_per_m_k,
                           thermal_expansion=material.thermal_expansion_per_k),
         operating_point=operating, roughness_ra=gears.roughness_ra_um * 1e-6, inertias=inertias,
-        lubricant=model.lubricant, temperature=model.temperature, thermal=model.thermal, damping=model.damping,
+        lubricant=model.lubricant, temperature=temperature, thermal=model.thermal, damping=model.damping,
         dynamics=model.dynamics, fem=model.fem, source=source, document=document, housing=model.housing,
-        gears_input=gears, material_input=material)
+        gears_input=gears, material_input=material, notes=notes)
     check_case(case)
+    warn_keys_without_effect(case)
     return case
 
 

@@ -68,6 +68,10 @@ class ModelAssumptionWarning(UserWarning):
     """The result rests on an assumption that the user should know about."""
 
 
+class IneffectiveKeyWarning(UserWarning):
+    """A case sets keys that have no effect under the model it chooses (they belong to another model)."""
+
+
 def closest_key(key: str, valid: Iterable[str]) -> str | None:
     """Closest valid key to a misspelt one, or None when nothing is close."""
     matches = difflib.get_close_matches(key, list(valid), n=1, cutoff=0.5)

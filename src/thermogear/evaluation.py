@@ -19,13 +19,22 @@ import numpy as np
 from thermogear.citations import cite
 from thermogear.warning_causes import warning_text
 
-__all__ = ["Evaluation", "MODELS", "STEPS", "evaluate_case", "is_paper_case", "thermoelastic_beside_paper"]
+__all__ = ["Evaluation", "MODELS", "STEPS", "evaluate_case", "is_paper_case", "thermoelastic_beside_paper",
+           "uses_paper_thermal_stiffness"]
 
 MODELS = ("elastic", "thermal")
 
 #: Names of the evaluation steps, in order (for progress bars).
 STEPS = ("elastic model", "thermal model", "thermal stiffness", "damping", "start-up transients",
          "thermoelastic prediction", "rig trend", "FE verification")
+
+
+def uses_paper_thermal_stiffness(case) -> bool:
+    """True when the case's thermal model is the paper's k_T (Luo & Li 2020 Eqs. 13–23, ``thermal.model =
+    "luo2020"``): only then do its X_te, its stiffness curves along the path (Fig. 4) and its stiffness drop exist."""
+    from thermogear.mesh.model import MeshModel
+
+    return MeshModel(case, "thermal").thermal_model == "luo2020"
 
 
 def is_paper_case(case) -> bool:
@@ -43,7 +52,8 @@ class Evaluation:
     responses: dict = field(default_factory=dict)  # model -> DynamicResponse (steady state, ``method``)
     transients: dict = field(default_factory=dict)  # model -> DynamicResponse from rest
     thermal_curves: Any = None  # thermal.summary.ThermalCurves
-    thermal_summary: dict | None = None
+    thermal_summary: dict | None = None  # the paper's k_T (thermal.model = "luo2020")
+    thermoelastic_summary: dict | None = None  # the thermo-elastic model's (summaries.thermoelastic), when in use
     temperature_field: Any = None
     damping: Any = None  # damping.DampingSummary
     rig_trend: dict | None = None
@@ -112,13 +122,19 @@ def evaluate_case(case, method: str = "periodic", models: tuple[str, ...] = MODE
     step("thermal stiffness")
 
     def thermal():
-        from thermogear.summaries.thermal import thermal_curves, thermal_stiffness_summary
         from thermogear.thermal.temperature import temperature_field_from_case
 
         evaluation.temperature_field = temperature_field_from_case(case)
-        evaluation.thermal_curves = thermal_curves(case)
-        evaluation.thermal_summary = thermal_stiffness_summary(case)
-        cite("timoshenko1951")
+        if uses_paper_thermal_stiffness(case):  # the paper's k_T curves (Fig. 4) belong to its model only
+            from thermogear.summaries.thermal import thermal_curves, thermal_stiffness_summary
+
+            evaluation.thermal_curves = thermal_curves(case)
+            evaluation.thermal_summary = thermal_stiffness_summary(case)
+            cite("timoshenko1951")
+        else:
+            from thermogear.summaries.thermoelastic import thermoelastic_summary
+
+            evaluation.thermoelastic_summary = thermoelastic_summary(case)
 
     _run_stage(evaluation, "thermal stiffness", thermal)
 

@@ -29,6 +29,12 @@ class OperatingPoint:
             return self.power / self.angular_speed_of(speed_rpm)
         return self.torque
 
+    @property
+    def load_held(self) -> str:
+        """Which load the mesh model keeps when the speed changes: ``"constant power"`` (the load was given as a
+        power: T1 = P/ω1) or ``"constant torque"``; every output of ``thermogear run`` names it ("load held: …")."""
+        return "constant power" if self.constant_power else "constant torque"
+
     @staticmethod
     def angular_speed_of(speed_rpm: float) -> float:
         return speed_rpm * math.pi / 30.0

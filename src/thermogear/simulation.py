@@ -113,12 +113,14 @@ class Simulation:
         """Solve the dynamics and return the response with the checks of a thermal result (``flags``).
 
         See :meth:`solve` for the methods."""
-        response = self.solve(method, include_damping_force)
-        if self.model != "thermal":
-            return response
-        from thermogear.mesh.plausibility import thermal_result_flags
+        from thermogear.mesh.plausibility import damping_ratio_flags, thermal_result_flags
 
-        return replace(response, flags=thermal_result_flags(self.mesh_model, self.state, response.metrics))
+        response = self.solve(method, include_damping_force)
+        response.metrics["damping_ratio"] = self.state.damping_ratio  # the solver's fresh dict: a gear quantity
+        flags = damping_ratio_flags(self.state)
+        if self.model == "thermal":
+            flags += thermal_result_flags(self.mesh_model, self.state, response.metrics)
+        return replace(response, flags=flags)
 
     def solve(self, method: Method | None = None, include_damping_force: bool | None = None):
         """Solve the dynamics and return the response.
@@ -142,7 +144,7 @@ class Simulation:
             problem = self.state.backlash_problem(dynamics.damping_in_flight)
             if method == "transient":
                 return nonlinear_transient(problem, dynamics.transient_periods, dynamics.samples_per_interval,
-                                           label=self.model)
+                                           label=self.model, include_damping_force=damping_force)
             return nonlinear_response(problem, include_damping_force=damping_force, label=self.model,
                                       samples_per_interval=dynamics.samples_per_interval)
         if method == "periodic":

@@ -239,6 +239,24 @@ def check_temperatures(field: TemperatureField, gamma_start: float, gamma_end: f
                           ExtrapolationWarning, stacklevel=2)
 
 
+def default_bulk_temperature(section, lubricant) -> tuple[object, tuple[str, ...]]:
+    """The ``[temperature]`` section with its default made physical, and the note that says so.
+
+    A case that gives no tooth temperature (no ``[temperature]`` section, or ``model = "uniform"`` without
+    ``bulk_c``) has its gears at the oil's operating temperature (``lubricant.operating_temperature_c``): gear
+    bodies and oil in thermal equilibrium, no frictional heating of the teeth above the oil. The bulk temperature of
+    a running pair lies at or above its oil temperature, so this is its lower bound. Returns ``(section, notes)``;
+    the section unchanged and no note when the case gives a temperature."""
+    if section.model != "uniform" or section.bulk_c is not None:
+        return section, ()
+    oil = lubricant.operating_temperature_c
+    note = (f"temperature: no bulk temperature given ([temperature] bulk_c): the gears are taken at the oil's "
+            f"operating temperature, {oil:g} °C (lubricant.operating_temperature_c) — gears and oil in equilibrium, "
+            "no frictional heating of the teeth above the oil (a lower bound); give [temperature] bulk_c for hotter "
+            "gears")
+    return section.model_copy(update={"bulk_c": float(oil)}), (note,)
+
+
 def temperature_field_from_section(section, directory: Path | None = None) -> TemperatureField:
     """The TemperatureField of a ``uniform`` or ``tabulated`` ``[temperature]`` section (CSV paths relative to
     ``directory``). Raises CaseError for bad input."""

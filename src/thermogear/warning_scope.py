@@ -12,12 +12,13 @@ plain ``catch_warnings`` blocks, exactly as before.
 
 from __future__ import annotations
 
+import sys
 import threading
 import warnings
 from collections.abc import Iterator
 from contextlib import contextmanager
 
-__all__ = ["ignored", "recorded", "routed"]
+__all__ = ["ignored", "kept", "raise_again", "recorded", "routed"]
 
 _local = threading.local()  # .scopes: this thread's open scopes, innermost last
 _router = threading.Lock()  # held while a router is installed: one at a time
@@ -56,6 +57,59 @@ def recorded() -> Iterator[list[warnings.WarningMessage]]:
         yield scope.caught
     finally:
         scopes.remove(scope)
+
+
+def kept(caught: list[warnings.WarningMessage]) -> tuple:
+    """Recorded warnings as ``(message, category, filename, lineno)`` to keep beside a cached result."""
+    return tuple((item.message, item.category, item.filename, item.lineno) for item in caught)
+
+
+_registries: dict[str, dict] = {}
+
+
+def _registry(filename: str) -> dict:
+    """The warning registry of the module that ``filename`` is (Python's per-module "already shown" record)."""
+    registry = _registries.get(filename)
+    if registry is None:
+        module = next((item for item in list(sys.modules.values())
+                       if getattr(item, "__file__", None) == filename), None)
+        registry = module.__dict__.setdefault("__warningregistry__", {}) if module is not None else {}
+        _registries[filename] = registry
+    return registry
+
+
+#: Filter contexts seen by :func:`raise_again`, newest last: id → (the filter list, its contents, causes raised).
+_raised: dict[int, tuple[list, tuple, set]] = {}
+_RAISED_CONTEXTS = 32
+
+
+def _raised_in_context() -> set:
+    """The warnings already raised again under the current filter context. A context is the list object
+    ``warnings.filters`` with its contents: every ``catch_warnings`` block (a test's, a recording scope's) has its
+    own copy, and changing the filters in place starts afresh. The lists are kept referenced, so an id is never
+    reused for another context while it is remembered."""
+    context = warnings.filters
+    contents = tuple(context)
+    entry = _raised.get(id(context))
+    if entry is None or entry[0] is not context or entry[1] != contents:
+        entry = _raised[id(context)] = (context, contents, set())
+        while len(_raised) > _RAISED_CONTEXTS:
+            _raised.pop(next(iter(_raised)))
+    return entry[2]
+
+
+def raise_again(recorded: tuple) -> None:
+    """Raise warnings kept with a cached result (:func:`kept`) again, attributed to where they were first raised
+    (same file, line and module registry), each once per filter context: one call through the API that asks
+    several cached components (two models, two stiffness tables of one gear) shows each cause once, while every
+    new ``catch_warnings`` block (a recording scope, a test) receives them again."""
+    raised = set() if _routing else _raised_in_context()  # under a router each thread's scope gets every one
+    for message, category, filename, lineno in recorded:
+        cause = (str(message), category)
+        if cause in raised:
+            continue
+        raised.add(cause)
+        warnings.warn_explicit(message, category, filename, lineno, registry=_registry(filename))
 
 
 @contextmanager

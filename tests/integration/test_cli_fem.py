@@ -60,3 +60,33 @@ def test_fem_temperature_and_x_te_drive_the_chain():
     assert np.all(result.drop_percent > 0)
     simulation = Simulation(case, "thermal").run()
     assert simulation is not None
+
+
+def test_a_user_pair_is_told_what_x_te_and_the_drop_mean():
+    # `fem` on a user's pair printed X_te and a drop of tens of per cent without a word: now it says what they are,
+    # how much E(T) can explain, and that the paper's model is not predictive for this pair (from the case's
+    # content: its X_te is not calibrated); the paper's case, which calibrates X_te, is told the calibration instead
+    from pathlib import Path
+
+    user = Path(__file__).resolve().parents[1] / "data" / "user_pair.toml"
+    result = subprocess.run([sys.executable, "-m", "thermogear", "fem", str(user), "--no-refinement"],
+                            capture_output=True, text=True, timeout=600)
+    assert result.returncode == 0, result.stderr
+    notes = [line for line in result.stdout.splitlines() if line.startswith("note: ")]
+    assert len(notes) == 3, notes
+    assert "Eqs. 17–18" in notes[0] and "no unique definition" in notes[0]
+    import re
+
+    # |β_E| 3.37e-4 /K × the FE flank rise ≈ 59 K ≈ 2.0 %; 0.1 % allows the FE temperature to move by 3 K
+    limit = float(re.search(r"at most ([0-9.]+) %", notes[1]).group(1))
+    assert limit == pytest.approx(2.0, abs=0.1)
+    assert "not predictive for this pair" in notes[2]
+
+
+def test_the_calibrated_paper_case_is_told_its_calibration(run_json):
+    data, _ = run_json
+    notes = data["interpretation"]["notes"]
+    assert any("calibrates X_te" in text and "by construction" in text for text in notes)
+    assert not any("not predictive" in text for text in notes)
+    # E(T) explains at most |β_E|·ΔT of the drop; the paper's 14.52 % drop is several times that
+    assert 0.0 < data["interpretation"]["youngs_modulus_change_limit_percent"] < 5.0

@@ -27,7 +27,9 @@ def render(data: dict) -> str:
     ("normal_load_n_per_mm", "normal load", "N/mm"),
     ("expansion_pinion_um", "expansion pinion", "μm"),
     ("stiffness_drop_percent_range", "stiffness drop range", "%"),
-    ("x_te", "x te", None),
+    ("x_te", "X_te", None),
+    ("youngs_modulus_gpa", "Young's modulus", "GPa"),
+    ("backlash_normal_um", "normal backlash", "μm"),
     ("load_basis", "load basis", None),
 ])
 def test_units_come_from_the_key(key, label, unit):
@@ -38,7 +40,9 @@ def test_values_are_short():
     assert format_value(14.52000000000001) == "14.52"
     assert format_value(0.21662311627157446) == "0.21662"
     assert format_value(True) == "yes" and format_value(None) == "—"
-    assert format_value([-0.6, 0.55]) == "[-0.6, 0.55]"
+    assert format_value([-0.6, 0.55]) == "-0.6, 0.55" and format_value([]) == "none"
+    # a long list of numbers would widen the table: summarised
+    assert format_value([0.1 * i for i in range(21)]) == "21 values, 0 to 2"
 
 
 def test_nested_summary_gives_rows_and_a_matrix():
@@ -53,7 +57,7 @@ def test_nested_summary_gives_rows_and_a_matrix():
     assert "stiffness drop, A" in text and "10.448" in text and "%" in text
     assert re.search(r"flank temperature\s*│\s*80\.577\s*│\s*77\.069\s*│\s*°C", text)  # one column per point
     assert "mPa·s" in text  # a key nobody told the table about
-    assert "x te source: calibrated: X_te=0.21662 gives 14.52 % drop at C [external basis]" in text
+    assert "X_te source: calibrated: X_te=0.21662 gives 14.52 % drop at C [external basis]" in text
 
 
 def test_stiffness_thermal_prints_tables_not_dicts():
@@ -68,3 +72,27 @@ def test_stiffness_thermal_prints_tables_not_dicts():
     data = json.loads(subprocess.run([sys.executable, "-m", "thermogear", "stiffness", "luo2019", "--thermal",
                                       "--json"], capture_output=True, text=True).stdout)
     assert format_value(data["thermal"]["stiffness_drop_percent"]["C"]) in text
+
+
+def test_lists_of_sentences_are_lines_and_every_number_has_a_unit(tmp_path):
+    # a plausibility flag (a sentence) in a list used to be printed as a Python list in a cell, widening the table
+    # past 200 characters; "youngs modulus gpa" had an empty unit column
+    case = tmp_path / "tight.toml"
+    from pathlib import Path
+
+    source = Path(__file__).resolve().parents[1] / "data" / "user_pair.toml"
+    case.write_text(source.read_text(encoding="utf-8").replace("module_mm = 3.0", "module_mm = 3.0\n"
+                                                                "backlash_normal_um = 20.0"), encoding="utf-8")
+    result = subprocess.run([sys.executable, "-m", "thermogear", "stiffness", str(case), "--thermal"],
+                            capture_output=True, text=True, timeout=300)
+    assert result.returncode == 0, result.stderr
+    text = result.stdout
+    table = [line for line in text.splitlines() if line[:1] in "┏┃┡│└"]
+    assert table and max(len(line) for line in table) < 120
+    assert "plausibility: the backlash closes at a bulk temperature" in text  # a line of its own
+    assert re.search(r"Young's modulus, pinion\s*│\s*[0-9.]+\s*│\s*GPa", text)
+    assert "youngs" not in text and "['" not in text
+    for line in table:  # every number has a unit or – (dimensionless)
+        cells = [cell.strip() for cell in line.strip("│").split("│")]
+        if len(cells) == 3 and re.fullmatch(r"-?[0-9.]+(e[-+]?[0-9]+)?", cells[1]):
+            assert cells[2], line

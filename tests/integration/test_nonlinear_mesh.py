@@ -112,3 +112,46 @@ def test_start_up_from_rest_settles_on_the_orbit_the_shooting_finds(nonlinear_lu
     last = history.time >= history.time[-1] - simulation.state.period
     assert np.ptp(history.displacement[last]) == pytest.approx(orbit.metrics["dte_peak_to_peak"], rel=1e-6)
     assert start_up.metrics["contact_loss_fraction"] > 0.0
+
+
+@pytest.mark.parametrize("speed_rpm", [2000.0, 13000.0])
+def test_a_transient_is_read_like_a_steady_response(nonlinear_luo, speed_rpm):
+    # `run --method transient` on the nonlinear mesh used to fail (KeyError 'response'): the transient from rest now
+    # carries the metrics of its last mesh period under the names of the steady response. After 400 periods it has
+    # settled on the orbit the shooting finds (with contact loss at 13 000 rpm), so Kv, the DTE and the per-region
+    # levels agree to 1e-6 (the settling tolerance is 1e-6 of the static deflection; both use the exact integrator)
+    case = nonlinear_luo.with_changes(**{"operating.speed_rpm": speed_rpm, "dynamics.transient_periods": 400})
+    simulation = Simulation(case, "elastic")
+    transient = _quiet(simulation.run, "transient").metrics
+    orbit = _quiet(simulation.run).metrics
+    assert transient["response"] == "periodic" and transient["valid"] and transient["branch"] == "from rest"
+    assert transient["transient_last_period_change"] <= 1e-6
+    for name in ("kv", "dte_peak_to_peak", "max_system_load_ratio", "contact_loss_fraction"):
+        assert transient[name] == pytest.approx(orbit[name], rel=1e-6, abs=1e-9), name
+    assert transient["equilibrium_per_region"] == pytest.approx(orbit["equilibrium_per_region"], rel=1e-9)
+
+
+def test_an_unsettled_transient_says_so(nonlinear_luo):
+    # two mesh periods from rest are far from settled (the damping ratio is a few per cent: e-folding over tens of
+    # natural periods): the response is "not settled", not valid, and the words say what to do
+    from thermogear.report.evaluate import model_messages
+
+    case = nonlinear_luo.with_changes(**{"dynamics.transient_periods": 2})
+    response = _quiet(Simulation(case, "elastic").run, "transient")
+    assert response.metrics["response"] == "not settled" and not response.valid
+    assert any("transient_periods" in text for text in model_messages(response, "elastic"))
+
+
+def test_the_papers_secant_stiffness_in_the_nonlinear_mesh_is_flagged(nonlinear_luo):
+    # luo2019 runs the paper's k_T (a secant stiffness at the static load, Eq. 18): as the contact stiffness of the
+    # nonlinear mesh it is flagged with the reason, and with the separation where the teeth fly (13 000 rpm)
+    quiet = _quiet(Simulation(nonlinear_luo, "thermal").run)
+    (flag,) = [text for text in quiet.flags if "secant stiffness at the static" in text]
+    assert "near the static load" in flag and "thermal.model = 'thermoelastic'" in flag
+    flying = _quiet(Simulation(nonlinear_luo.with_changes(**{"operating.speed_rpm": 13000.0}), "thermal").run)
+    (flag,) = [text for text in flying.flags if "secant stiffness at the static" in text]
+    assert f"{100 * flying.metrics['contact_loss_fraction']:.1f} % of the period" in flag
+    # the thermo-elastic model and the linear mesh are not flagged
+    assert not [text for text in _quiet(Simulation(nonlinear_luo, "elastic").run).flags if "secant stiffness at the static" in text]
+    linear = _quiet(Simulation(load_case("luo2019"), "thermal").run)
+    assert not [text for text in linear.flags if "secant stiffness at the static" in text]

@@ -7,6 +7,7 @@ import json
 import math
 import subprocess
 import sys
+from pathlib import Path
 from types import SimpleNamespace
 
 import pytest
@@ -15,6 +16,10 @@ from thermogear.report.evaluate import model_messages
 
 KEYS = ("kv", "max_pair_load_n_per_mm", "max_system_load_ratio", "equilibrium_um", "amplitude_um",
         "natural_frequency_hz", "frequency_ratio", "floquet_multipliers_abs")
+
+
+DATA = Path(__file__).resolve().parents[1] / "data"
+USER_PAIR = DATA / "user_pair.toml"  # a user's own pair under the default (thermo-elastic) thermal model
 
 
 def _run(*args: str, cwd=None) -> subprocess.CompletedProcess:
@@ -107,3 +112,75 @@ def test_user_guide_case_file_runs(tmp_path):
     result = _run(str(case_file), "--json")
     assert result.returncode == 0, result.stderr
     assert set(json.loads(result.stdout)["models"]) == {"elastic", "thermal"}
+
+
+def test_nonlinear_transient_runs_as_table_and_json():
+    # fzg_type_c uses the nonlinear mesh (the default): `--method transient` used to end in KeyError 'response'
+    table = _run("fzg_type_c", "--method", "transient")
+    assert table.returncode == 0, table.stderr
+    assert "Traceback" not in table.stderr and "equilibrium, single" in table.stdout and "from rest" in table.stdout
+    result = _run("fzg_type_c", "--method", "transient", "--json", "--model", "elastic")
+    assert result.returncode == 0, result.stderr
+    elastic = json.loads(result.stdout)["models"]["elastic"]
+    assert elastic["method"] == "nonlinear transient from rest" and elastic["branch"] == "from rest"
+    assert set(elastic["equilibrium_um"]) == {"single", "double"} and elastic["kv"] > 1.0
+
+
+def test_transient_method_in_the_case_writes_the_report(tmp_path):
+    # `method = "transient"` in the case and --out used to fail with KeyError 'equilibrium_per_region' and write
+    # no folder
+    text = USER_PAIR.read_text(encoding="utf-8") + '\n[dynamics]\nmethod = "transient"\n'
+    case_file = tmp_path / "transient.toml"
+    case_file.write_text(text, encoding="utf-8")
+    out = tmp_path / "report"
+    result = _run(str(case_file), "--out", str(out), "--quiet")
+    assert result.returncode == 0, result.stderr
+    summary = json.loads((out / "summary.json").read_text())
+    assert (out / "report.html").exists() and summary["not_computed_stages"] == {}
+    kv = next(row for row in summary["results"] if row["quantity"] == "dynamic load factor Kv (Eq. 29)")
+    assert kv["elastic"] > 1.0 and kv["thermal"] > 1.0
+
+
+def test_check_and_run_agree_on_a_user_pair_under_the_default_model(tmp_path):
+    # check accepted the case, then run reported "figures not drawn: fig3c, fig4 (stage 'thermal stiffness' failed:
+    # thermal.x_te = None …)": the paper's k_T stages ran for a model that does not use X_te
+    check = subprocess.run([sys.executable, "-m", "thermogear", "check", str(USER_PAIR)], capture_output=True,
+                           text=True, timeout=300)
+    assert check.returncode == 0, check.stderr
+    out = tmp_path / "user"
+    result = _run(str(USER_PAIR), "--out", str(out), "--quiet")
+    assert result.returncode == 0, result.stderr
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["not_computed_stages"] == {}, summary["not_computed_stages"]
+    assert set(summary["figures"]["missing"]) <= {"fig15"}, summary["figures"]["missing"]  # fig15: FE of the paper
+    quantities = {row["quantity"]: row for row in summary["results"]}
+    assert "X_te (thermo-elastic correction factor)" not in quantities  # the paper's model is not in use
+    backlash = quantities["normal backlash"]
+    assert backlash["thermal"] < backlash["elastic"]  # gears hotter than the housing: the backlash closes
+
+
+def test_run_gives_what_the_thermoelastic_model_is_for():
+    # the numbers are the summary's (summaries.thermoelastic), not recomputed by the command
+    from thermogear.case import load_case
+    from thermogear.summaries.thermoelastic import thermoelastic_summary
+
+    result = _run(str(USER_PAIR), "--json")
+    assert result.returncode == 0, result.stderr
+    block = json.loads(result.stdout)["thermoelastic"]
+    expected = json.loads(json.dumps(thermoelastic_summary(load_case(str(USER_PAIR)))))
+    for path in (("operating", "centre_distance_mm"), ("operating", "pressure_angle_deg"), ("operating", "contact_ratio"),
+                 ("cold", "backlash_normal_um"), ("operating", "backlash_normal_um"), ("jamming_bulk_temperature_c",),
+                 ("jamming_margin_k",), ("youngs_modulus_gpa", "pinion"), ("loaded_transmission_error_um", "mean"),
+                 ("loaded_transmission_error_um", "peak_to_peak"), ("elastic", "loaded_transmission_error_um", "mean")):
+        value, reference = block, expected
+        for key in path:
+            value, reference = value[key], reference[key]
+        assert value == pytest.approx(reference, rel=1e-12), path
+    # the hotter gears (85 °C) in a housing at the oil temperature (70 °C): margin = jamming − bulk temperature
+    assert block["jamming_margin_k"] == pytest.approx(block["jamming_bulk_temperature_c"] - 85.0, rel=1e-9)
+    table = _run(str(USER_PAIR))
+    assert table.returncode == 0, table.stderr
+    for label in ("operating centre distance", "operating pressure angle", "normal backlash", "jamming bulk temperature",
+                  "jamming margin", "Young's modulus E(T), pinion", "loaded static transmission error, mean",
+                  "loaded static transmission error, peak-to-peak"):
+        assert label in table.stdout, label

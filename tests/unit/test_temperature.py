@@ -145,8 +145,13 @@ def test_case_uniform_refuses_table_keys(luo2019):
     # refused when the case is loaded (issue 15: one set of checks, at load time)
     with pytest.raises(CaseError, match="pinion_base_c"):
         luo2019.with_changes(temperature={"model": "uniform", "bulk_c": 60.0, "pinion_base_c": 50.0})
-    with pytest.raises(CaseError, match="bulk_c"):
-        luo2019.with_changes(temperature={"model": "uniform"})
+    # without bulk_c the gears are at the oil's operating temperature (issue 24: the documented-optional section
+    # used to be refused), and the case says so in a note
+    defaulted = luo2019.with_changes(temperature={"model": "uniform"})
+    assert defaulted.temperature.bulk_c == luo2019.lubricant.operating_temperature_c
+    assert temperature_field_from_case(defaulted).pinion_flank_c(0.0) == pytest.approx(
+        luo2019.lubricant.operating_temperature_c, rel=1e-12)
+    assert len(defaulted.notes) == 1 and "lubricant.operating_temperature_c" in defaulted.notes[0]
 
 
 def test_case_table_from_csv(luo2019, tmp_path):

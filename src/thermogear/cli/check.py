@@ -9,6 +9,7 @@ from rich.table import Table
 
 from thermogear.case import load_case
 from thermogear.cli.app import app, console, print_json
+from thermogear.cli.console import print_notes
 
 
 @app.command()
@@ -32,6 +33,7 @@ def check(case: str = typer.Argument(..., metavar="CASE",
         "pinion_torque_nm": loaded.operating_point.torque,
         "mesh_frequency_hz": pair.mesh_frequency(loaded.operating_point.speed_rpm),
     }
+    payload["notes"] = list(loaded.notes)
     if as_json:
         print_json(payload)
         return
@@ -49,4 +51,5 @@ def check(case: str = typer.Argument(..., metavar="CASE",
     table.add_row("normal load F_bt [N]", f"{loaded.normal_load:.1f}")
     table.add_row("mesh frequency [Hz]", f"{payload['mesh_frequency_hz']:.2f}")
     console.print(table)
+    print_notes(loaded.notes, console)
     console.print("case is valid", style="green")

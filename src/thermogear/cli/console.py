@@ -22,7 +22,8 @@ from rich.text import Text
 
 from thermogear.warning_causes import WarningTally
 
-__all__ = ["PIPE_WIDTH", "PlainConsole", "error_console", "output_console", "print_error", "print_warning",
+__all__ = ["PIPE_WIDTH", "PlainConsole", "error_console", "output_console", "print_error", "print_notes",
+           "print_warning",
            "install_warning_printer", "progress_enabled", "point_progress", "step_progress", "warning_text"]
 
 #: Width of a console that is not a terminal: wider than any table or message thermogear prints, so nothing is
@@ -103,6 +104,14 @@ def print_warning(message: str, console: Console | None = None) -> None:
         return
     target = console if console is not None else error_console
     target.print(Text.assemble(("warning:", "yellow"), " ", warning_text(message)), soft_wrap=True)
+
+
+def print_notes(notes, console: Console | None = None) -> None:
+    """``note: <text>`` for each of a case's notes (what thermogear assumed for keys the case left out), on stdout
+    (or ``console``), each on one line."""
+    target = console if console is not None else output_console
+    for note in notes:
+        target.print(Text.assemble(("note:", "cyan"), " ", str(note)), soft_wrap=True)
 
 
 def print_error(message: str, console: Console | None = None) -> None:

@@ -20,6 +20,7 @@ from thermogear.cli.console import step_progress
 def fem_summary(case_name: str, refine: bool = True, progress=None) -> tuple[dict, object]:
     """(JSON summary, FemAnalysis) of a case; with ``refine`` the study at twice the refinement is added.
     ``progress(step_name)`` is called as each step starts (see :data:`FEM_STEPS`)."""
+    from thermogear.fem.interpretation import fem_interpretation  # noqa: PLC0415
     from thermogear.fem.verification import cached_analysis, fem_analysis, refinement_change_percent  # noqa: PLC0415
 
     advance = progress or (lambda name: None)
@@ -35,6 +36,7 @@ def fem_summary(case_name: str, refine: bool = True, progress=None) -> tuple[dic
         summary["refinement_change_percent"] = changes["max"]
         summary["refinement_change_by_quantity_percent"] = changes
         summary["refinement_compared"] = [analysis.refinement, fine.refinement]
+    summary["interpretation"] = fem_interpretation(case, summary)
     summary["wall_time_s"] = time.perf_counter() - start
     if case.name == "luo2019":
         summary["paper"] = {"flank_temperature_c": [77.0, 81.0], "stiffness_drop_percent": {"A": 8.53, "C": 14.52,
@@ -113,3 +115,5 @@ def _print_table(summary: dict) -> None:
     for row in rows:
         table.add_row(*row)
     console.print(table)
+    for note in summary["interpretation"]["notes"]:
+        console.print(f"note: {note}", soft_wrap=True)

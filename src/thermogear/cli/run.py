@@ -28,6 +28,7 @@ def model_json(response) -> dict:
         "equilibrium_um": {region: m["equilibrium_per_region"][region] * 1e6 for region in regions},
         "amplitude_um": {region: m["amplitude_per_region"][region] * 1e6 for region in regions},
         "natural_frequency_hz": m["natural_frequency_hz"],
+        "damping_ratio": m.get("damping_ratio"),
         "mesh_frequency_hz": m["mesh_frequency_hz"],
         "frequency_ratio": m["frequency_ratio"],
         "floquet_multipliers_abs": m["floquet_multipliers_abs"],
@@ -62,7 +63,7 @@ def run(
     Contact loss and instability are said in words (when, how long, how deep)."""
     from thermogear.case import load_case
     from thermogear.report.evaluate import model_messages
-    from thermogear.cli.console import step_progress
+    from thermogear.cli.console import print_notes, step_progress
     from thermogear.report.terminal import print_messages, print_summary
 
     if model not in _MODELS:
@@ -81,6 +82,7 @@ def run(
                      if name in outcome.evaluation.responses}
         failed = {name: outcome.evaluation.problems[f"{name} model"] for name in models
                   if f"{name} model" in outcome.evaluation.problems}
+        thermoelastic = outcome.evaluation.thermoelastic_summary if "thermal" in models else None
     else:
         from thermogear.simulation import Simulation
 
@@ -89,11 +91,15 @@ def run(
             for name in models:
                 advance(f"{name} model")
                 responses[name] = Simulation(case, name).run(method)
+        thermoelastic = _thermoelastic_summary(case) if "thermal" in models else None
     messages = [text for name, response in responses.items() for text in model_messages(response, name)]
     if as_json:
-        payload = {"case": case.name, "method": method,
+        payload = {"case": case.name, "method": method, "load_held": case.operating_point.load_held,
                    "models": {name: {**model_json(response), "messages": model_messages(response, name)}
                               for name, response in responses.items()}}
+        payload["notes"] = list(case.notes)
+        if thermoelastic is not None:
+            payload["thermoelastic"] = thermoelastic
         if failed:
             payload["not_computed"] = failed
         if out is not None:
@@ -106,14 +112,37 @@ def run(
             print_messages(messages, error_console)
         else:
             print_summary(outcome, console)
+            console.print(_load_held_line(case))
+            print_notes(case.notes, console)
         for name, reason in failed.items():
             error_console.print(f"{name} model not computed: {reason}", highlight=False)
         return
-    _print_table(case, responses, console)
+    _print_table(case, responses, console, thermoelastic)
+    console.print(_load_held_line(case))
+    print_notes(case.notes, console)
     print_messages(messages, console)
 
 
-def _print_table(case, responses, console) -> None:
+def _load_held_line(case) -> str:
+    """``load held: constant torque|power`` with where it comes from (the same words as the sweep's)."""
+    held = case.operating_point.load_held
+    source = "the case gives power_kw" if held == "constant power" else "the case gives the torque"
+    return f"load held: {held} ({source})"
+
+
+def _thermoelastic_summary(case) -> dict | None:
+    """What the thermo-elastic model is for (operating geometry, backlash, jamming, E(T), loaded STE), where it is
+    the case's thermal model; None under the paper's model (its k_T has none of these)."""
+    from thermogear.evaluation import uses_paper_thermal_stiffness
+
+    if uses_paper_thermal_stiffness(case):
+        return None
+    from thermogear.summaries.thermoelastic import thermoelastic_summary
+
+    return thermoelastic_summary(case)
+
+
+def _print_table(case, responses, console, thermoelastic: dict | None = None) -> None:
     from rich.table import Table
 
     from thermogear.report.paper_table import format_value
@@ -126,7 +155,8 @@ def _print_table(case, responses, console) -> None:
     data = {name: model_json(response) for name, response in responses.items()}
     rows = [("Kv (Eq. 29)", "kv", "–"), ("max pair load", "max_pair_load_n_per_mm", "N/mm"),
             ("max system load / static", "max_system_load_ratio", "–"),
-            ("natural frequency", "natural_frequency_hz", "Hz"), ("frequency ratio λ", "frequency_ratio", "–")]
+            ("natural frequency", "natural_frequency_hz", "Hz"), ("frequency ratio λ", "frequency_ratio", "–"),
+            ("damping ratio ζ (mean)", "damping_ratio", "–")]
     for label, key, unit in rows:
         table.add_row(label, *(format_value(d[key]) if d[key] is not None else "—" for d in data.values()), unit)
     regions = list(next(iter(data.values()))["equilibrium_um"])
@@ -147,4 +177,12 @@ def _print_table(case, responses, console) -> None:
         table.add_row("steady orbit found", *("yes" if d["valid"] else "NO" for d in data.values()), "")
     else:
         table.add_row("linear model valid", *("yes" if d["valid"] else "NO" for d in data.values()), "")
+    if thermoelastic is not None:
+        from thermogear.report.thermoelastic_rows import thermoelastic_rows
+
+        table.add_section()
+        for label, unit, elastic, thermal, _ in thermoelastic_rows(thermoelastic):
+            cells = {"elastic": elastic, "thermal": thermal}
+            table.add_row(label, *(format_value(cells[name]) if cells[name] is not None else "—" for name in responses),
+                          unit)
     console.print(table)

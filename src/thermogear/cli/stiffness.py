@@ -13,7 +13,7 @@ from rich.table import Table
 
 from thermogear.case import load_case
 from thermogear.cli.app import app, console, error_console, print_json
-from thermogear.cli.console import print_warning
+from thermogear.cli.console import print_notes, print_warning
 from thermogear.cli.tables import dict_tables
 from thermogear.errors import ExtrapolationWarning, ThermogearError
 from thermogear.ownership import check_figure_file
@@ -98,6 +98,7 @@ def stiffness(
             finally:
                 plt.close(figure)
         summary["plot"] = str(plot)
+    summary["notes"] = list(loaded.notes)
     if as_json:
         print_json(summary)
         return
@@ -105,5 +106,6 @@ def stiffness(
     if thermal_module is not None:
         for table in dict_tables(f"Thermal mesh (model {summary['thermal']['model']})", summary["thermal"]):
             console.print(table)
+    print_notes(loaded.notes, console)
     if plot is not None:
         console.print(f"figure written to {plot}")

@@ -14,28 +14,49 @@ from typing import Any
 from rich.table import Table
 from rich.text import Text
 
-__all__ = ["UNIT_SUFFIXES", "dict_tables", "format_value", "split_unit"]
+__all__ = ["DIMENSIONLESS", "PROPER_NAMES", "UNIT_SUFFIXES", "dict_tables", "format_value", "split_unit"]
 
 #: Key suffix → unit, longest first (a key ending in ``_n_per_mm_um`` is not read as ``_um``).
 UNIT_SUFFIXES: tuple[tuple[str, str], ...] = (
     ("_n_per_mm_um", "N/(mm·μm)"), ("_n_s_per_m", "N·s/m"), ("_n_per_mm", "N/mm"), ("_n_per_m", "N/m"),
+    ("_gpa", "GPa"),
     ("_mm2_s", "mm²/s"), ("_mpa_s", "mPa·s"), ("_kg_m3", "kg/m³"), ("_per_k", "1/K"), ("_percent", "%"),
     ("_deg", "°"), ("_rpm", "rpm"), ("_kw", "kW"), ("_nm", "N·m"), ("_hz", "Hz"), ("_um", "μm"), ("_mm", "mm"),
     ("_c", "°C"), ("_k", "K"), ("_s", "s"), ("_m", "m"), ("_n", "N"), ("_w", "W"), ("_pa", "Pa"),
 )
 
 
+#: Words of key names as a reader writes them (whole words only, applied in order).
+PROPER_NAMES: tuple[tuple[str, str], ...] = (
+    ("youngs modulus", "Young's modulus"), ("x te", "X_te"), ("backlash normal", "normal backlash"),
+    ("peak to peak", "peak-to-peak"), ("gamma", "Γ"), ("single tooth", "single-tooth"),
+)
+
+#: Unit column of a number whose key names no unit: a ratio, a factor, a count.
+DIMENSIONLESS = "–"
+
+#: Number lists longer than this are summarised (count, smallest and largest) instead of listed in a cell.
+LIST_ITEMS_SHOWN = 4
+
+
+def _proper(label: str) -> str:
+    text = f" {label} "
+    for words, name in PROPER_NAMES:
+        text = text.replace(f" {words} ", f" {name} ")
+    return text.strip()
+
+
 def split_unit(key: str) -> tuple[str, str | None]:
     """(label in words, unit) of a key: ``"flank_temperature_c"`` → ``("flank temperature", "°C")``; a unit of
     three letters or more also inside the key: ``"stiffness_drop_percent_range"`` → ``("stiffness drop range",
-    "%")``."""
+    "%")``; words named as a reader writes them (``"youngs_modulus_gpa"`` → ``("Young's modulus", "GPa")``)."""
     for suffix, unit in UNIT_SUFFIXES:
         if key.endswith(suffix) and len(key) > len(suffix):
-            return key[: -len(suffix)].replace("_", " "), unit
+            return _proper(key[: -len(suffix)].replace("_", " ")), unit
     for suffix, unit in UNIT_SUFFIXES:
         if len(suffix) >= 4 and f"{suffix}_" in key[1:]:
-            return key.replace(f"{suffix}_", "_", 1).replace("_", " "), unit
-    return key.replace("_", " "), None
+            return _proper(key.replace(f"{suffix}_", "_", 1).replace("_", " ")), unit
+    return _proper(key.replace("_", " ")), None
 
 
 def format_value(value: Any) -> str:
@@ -49,7 +70,12 @@ def format_value(value: Any) -> str:
     if isinstance(value, float):
         return f"{value:.5g}" if math.isfinite(value) else str(value)
     if isinstance(value, (list, tuple)):
-        return "[" + ", ".join(format_value(item) for item in value) + "]"
+        if not value:
+            return "none"
+        numbers = [item for item in value if isinstance(item, (int, float)) and not isinstance(item, bool)]
+        if len(value) > LIST_ITEMS_SHOWN and len(numbers) == len(value):
+            return f"{len(value)} values, {format_value(min(numbers))} to {format_value(max(numbers))}"
+        return ", ".join(format_value(item) for item in value)
     try:  # NumPy scalars
         return format_value(value.item())
     except AttributeError:
@@ -87,11 +113,21 @@ def dict_tables(title: str, data: dict) -> list[Table | Text]:
                 walk(_join(prefix, label), own_unit or unit, item)
         elif isinstance(value, str) and len(value) > 24:
             notes.append(Text(f"{prefix}: {value}"))
+        elif isinstance(value, (list, tuple)) and any(isinstance(item, str) for item in value):
+            notes.extend(Text(f"{prefix}: {item}") for item in value)  # sentences: one line each, not a cell
         else:
-            main.add_row(prefix, format_value(value), unit or "")
+            main.add_row(prefix, format_value(value), unit or _unit_of_unnamed(value))
 
     walk("", None, data)
     return ([main] if main.row_count else []) + matrices + notes
+
+
+def _unit_of_unnamed(value: Any) -> str:
+    """The unit cell of a value whose key names no unit: – for a number, nothing for text or yes/no."""
+    numbers = value if isinstance(value, (list, tuple)) else [value]
+    if numbers and all(isinstance(item, (int, float)) and not isinstance(item, bool) for item in numbers):
+        return DIMENSIONLESS
+    return ""
 
 
 def _matrix(label: str, unit: str | None, value: dict) -> Table:
@@ -102,7 +138,9 @@ def _matrix(label: str, unit: str | None, value: dict) -> Table:
     table.add_column("unit")
     for key in next(iter(value.values())):
         row_label, row_unit = split_unit(str(key))
-        table.add_row(row_label, *(format_value(item[key]) for item in value.values()), row_unit or unit or "")
+        cells = [item[key] for item in value.values()]
+        table.add_row(row_label, *(format_value(cell) for cell in cells),
+                      row_unit or unit or (DIMENSIONLESS if any(_unit_of_unnamed(cell) for cell in cells) else ""))
     return table
 
 

@@ -23,7 +23,8 @@ from typing import Any
 import numpy as np
 
 from thermogear.dynamics.backlash_metrics import dte_spectrum, history_forces, orbit_metrics
-from thermogear.dynamics.backlash_periodic import BacklashOrbit, periodic_response
+from thermogear.dynamics.backlash_periodic import (BacklashOrbit, backlash_flow, backlash_transient,
+                                                   periodic_response)
 from thermogear.dynamics.backlash_problem import BacklashMeshProblem
 from thermogear.dynamics.problem import region_name
 from thermogear.errors import ModelLimitError
@@ -235,9 +236,50 @@ class NonlinearTransient:
 
     problem: BacklashMeshProblem
     history: Any  # BacklashHistory
+    steady: NonlinearResponse  # the last mesh period, read as a steady response (:func:`nonlinear_transient`)
     label: str = ""
     method: str = "nonlinear transient from rest"
     flags: tuple[str, ...] = field(default=())  # checks of the model that produced it, in words
+
+    @property
+    def metrics(self) -> dict[str, Any]:
+        """The metrics of the last mesh period, under the names of the steady response."""
+        return self.steady.metrics
+
+    @property
+    def warnings(self) -> tuple[str, ...]:
+        return self.steady.warnings
+
+    @property
+    def include_damping_force(self) -> bool:
+        return self.steady.include_damping_force
+
+    @property
+    def valid(self) -> bool:
+        """True when the motion from rest has settled on a one-period orbit by its last period."""
+        return self.steady.valid
+
+    def metrics_json(self) -> dict[str, Any]:
+        return json_ready(self.metrics)
+
+    # the steady-state views and plots are those of the last period (as the linear transient's)
+    def system_load(self) -> np.ndarray:
+        return self.steady.system_load()
+
+    def pair_loads(self) -> np.ndarray:
+        return self.steady.pair_loads()
+
+    def spectrum(self, quantity: str = "displacement", points: int = 1024) -> tuple[np.ndarray, np.ndarray]:
+        return self.steady.spectrum(quantity, points)
+
+    def plot_displacement(self, other=None, ax: Any = None, periods: int | None = None):
+        return self.steady.plot_displacement(getattr(other, "steady", other), ax, periods)
+
+    def plot_velocity(self, other=None, ax: Any = None, periods: int | None = None):
+        return self.steady.plot_velocity(getattr(other, "steady", other), ax, periods)
+
+    def plot_loads(self, other=None, ax: Any = None, periods: int | None = None):
+        return self.steady.plot_loads(getattr(other, "steady", other), ax, periods)
 
     @property
     def time(self) -> np.ndarray:
@@ -251,13 +293,6 @@ class NonlinearTransient:
     def velocity(self) -> np.ndarray:
         return self.history.velocity
 
-    @property
-    def metrics(self) -> dict[str, Any]:
-        span = float(self.history.time[-1])
-        return {"mesh": "nonlinear", "periods": self.history.periods,
-                "contact_loss_fraction": self.history.free_flight_time / span,
-                "back_side_contact": bool(self.history.back_contact_time > 0.0),
-                "max_velocity": float(np.max(np.abs(self.history.velocity)))}
 
     def to_xarray(self):
         import xarray as xr  # noqa: PLC0415
@@ -282,10 +317,35 @@ class NonlinearTransient:
         return figure
 
 
-def nonlinear_transient(problem: BacklashMeshProblem, periods: int, samples_per_interval: int = 4,
-                        label: str = "") -> NonlinearTransient:
-    """The backlash model from rest over ``periods`` mesh periods."""
-    from thermogear.dynamics.backlash_periodic import backlash_transient  # noqa: PLC0415
+#: Scaled change of the state over the last mesh period below which a transient has settled [–] (x by the static
+#: deflection, ẋ by it times ω_n: 1e-6 is far below anything a plot or a printed metric shows, and far above the
+#: exact integrator's rounding).
+SETTLED = 1e-6
 
-    return NonlinearTransient(problem=problem, history=backlash_transient(problem, periods, samples_per_interval),
-                              label=label)
+
+def nonlinear_transient(problem: BacklashMeshProblem, periods: int, samples_per_interval: int = 4,
+                        label: str = "", include_damping_force: bool = False) -> NonlinearTransient:
+    """The backlash model from rest over ``periods`` mesh periods, with the metrics of its last mesh period under
+    the names of the steady response (as the linear transient gives them), so that a transient is read like any
+    other response. ``metrics["response"]`` is "periodic" when the state repeats over the last period to
+    :data:`SETTLED` ("not settled" otherwise, and ``valid`` False); the Floquet multipliers are those of the last
+    period's monodromy (the orbit's own once settled); ``transient_last_period_change`` is the scaled change."""
+    history = backlash_transient(problem, periods, samples_per_interval)
+    start = (0.0, 0.0)
+    if periods > 1:
+        start = tuple(float(a) for a in backlash_flow(problem, start, int(periods) - 1)[0])
+    end, monodromy, _ = backlash_flow(problem, start, 1)
+    change = float(np.hypot((end[0] - start[0]) / problem.displacement_scale,
+                            (end[1] - start[1]) / problem.velocity_scale))
+    multipliers = np.linalg.eigvals(monodromy)
+    multipliers = multipliers[np.argsort(-np.abs(multipliers))]
+    settled = bool(change <= SETTLED)
+    last = BacklashOrbit(problem=problem, response="periodic" if settled else "not settled", period_count=1,
+                         converged=settled, residual=change, multipliers=multipliers, initial_state=start,
+                         history=backlash_transient(problem, 1, samples_per_interval, start), iterations=0)
+    metrics = _metrics(problem, last, include_damping_force, "from rest", False)
+    metrics.update(transient_periods=int(periods), transient_last_period_change=change, valid=settled,
+                   max_velocity_from_rest=float(np.max(np.abs(history.velocity))))
+    steady = NonlinearResponse(problem=problem, orbit=last, metrics=metrics, include_damping_force=include_damping_force,
+                               label=label, method="nonlinear transient from rest (last period)")
+    return NonlinearTransient(problem=problem, history=history, steady=steady, label=label)

@@ -55,6 +55,15 @@ class MeshState:
         return float(self.grid.time_average(self.mesh_stiffness))
 
     @property
+    def damping_ratio(self) -> float:
+        """Mean damping ratio ζ = c̄ / (2·sqrt(k̄·me)) [–] of the period: time means of c(τ) and k(τ) (the viscous
+        damping ratio of the mean oscillator, Den Hartog 1956 §2.6)."""
+        stiffness = self.mean_mesh_stiffness
+        if not stiffness > 0.0:
+            return float("nan")
+        return float(self.grid.time_average(self.mesh_damping)) / (2.0 * float(np.sqrt(stiffness * self.mass)))
+
+    @property
     def excitation(self) -> np.ndarray:
         """Σ_i k_i·e_i (n,) [N] over the pairs that carry load: the force the unloaded deviations add to the static
         load in me·ẍ + c·ẋ + Σ k_i·(x − e_i) = w."""

@@ -40,7 +40,9 @@ def key_results(evaluation: Evaluation) -> list[dict]:
                      "note": note})
 
     pair = evaluation.case.gear_pair
-    add("contact ratio ε", "–", pair.contact_ratio, pair.contact_ratio)
+    thermal_pair = (evaluation.simulations["thermal"].mesh_model.gear_pair if "thermal" in evaluation.simulations
+                    else pair)  # at temperature under the thermo-elastic model
+    add("contact ratio ε", "–", pair.contact_ratio, thermal_pair.contact_ratio)
     metrics = {model: response.metrics for model, response in evaluation.responses.items()}
 
     def metric(model, *path, scale=1.0):
@@ -58,6 +60,7 @@ def key_results(evaluation: Evaluation) -> list[dict]:
         *(simulations[m].mesh_stiffness_mean / pair.face_width * 1e-9 if m in simulations else None for m in MODELS))
     add("natural frequency f_n", "Hz", metric("elastic", "natural_frequency_hz"), metric("thermal", "natural_frequency_hz"))
     add("frequency ratio λ = f_mesh / f_n", "–", metric("elastic", "frequency_ratio"), metric("thermal", "frequency_ratio"))
+    add("mean damping ratio ζ", "–", metric("elastic", "damping_ratio"), metric("thermal", "damping_ratio"))
     counts = sorted({region for m in metrics.values() for region in m["equilibrium_per_region"]},
                     key=lambda name: ("single", "double", "triple").index(name) if name in ("single", "double", "triple")
                     else 9)
@@ -86,6 +89,11 @@ def key_results(evaluation: Evaluation) -> list[dict]:
         means = evaluation.damping.region_means
         for region in ("single", "double"):
             add(f"mean mesh damping, {region} region", "N·s/m", means["elastic"].get(region), means["thermal"].get(region))
+    if evaluation.thermoelastic_summary is not None:
+        from thermogear.report.thermoelastic_rows import thermoelastic_rows
+
+        for quantity, unit, elastic, thermal, note in thermoelastic_rows(evaluation.thermoelastic_summary):
+            add(quantity, unit, elastic, thermal, note=note)
     if evaluation.thermal_summary is not None:
         summary = evaluation.thermal_summary
         add("X_te (thermo-elastic correction factor)", "–", None, summary["x_te"], note=str(summary["x_te_source"]))
@@ -137,6 +145,12 @@ def _nonlinear_messages(metrics: dict, model: str) -> list[str]:
         messages.append(f"{model}: contact loss — the teeth separate for {100 * metrics['contact_loss_fraction']:.1f} % "
                         f"of the period{' and strike the back flanks' if metrics['back_side_contact'] else ''}; the "
                         "nonlinear mesh model computes the loads through it")
+    if metrics["response"] == "not settled":
+        messages.append(f"{model}: the motion from rest has not settled after {metrics['transient_periods']} mesh "
+                        f"periods (scaled change over the last period {metrics['residual']:.3g}): the numbers above "
+                        "are those of its last period, not of a steady state; raise [dynamics] transient_periods or "
+                        "use --method periodic")
+        return messages
     if metrics["response"] != "periodic":
         kind = ("subharmonic, repeating every " f"{metrics['period_count']} mesh periods"
                 if metrics["response"] == "subharmonic" else "non-periodic (no repeating orbit was found)")

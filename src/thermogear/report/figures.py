@@ -19,7 +19,9 @@ FIG6_SPAN_MS = 5.0
 #: Figure name → caption.
 FIGURES: dict[str, str] = {
     "fig3c": "Fig. 3(c) — flank temperature of the driving tooth along the path of contact Γ (temperature input).",
-    "fig4": "Fig. 4 — elastic and thermal stiffness and compliance along Γ: pair and single teeth.",
+    "fig4": "Fig. 4 — elastic and thermal stiffness and compliance along Γ: pair and single teeth (the paper's "
+            "model); under the thermo-elastic model: unloaded deviation along Γ, loaded static transmission error "
+            "and load share over one mesh period, elastic (dashed) and thermal (solid).",
     "fig6": "Fig. 6 — per-pair and total mesh stiffness per width over one mesh cycle (left) and over 0–5 ms "
             "(right).",
     "fig7": "Fig. 7 — friction damping with oil at the reference temperature (elastic model, c_e).",
@@ -78,6 +80,11 @@ def fig3c(evaluation):
 
 
 def fig4(evaluation):
+    if evaluation.thermal_curves is None:  # the thermo-elastic model: deviation, loaded STE and load share
+        from thermogear.summaries.thermoelastic_plots import plot_thermoelastic
+        from thermogear.thermoelastic.mesh import ThermoelasticMesh
+
+        return plot_thermoelastic(ThermoelasticMesh.from_case(evaluation.case))
     try:
         from thermogear.summaries.thermal_plots import plot_thermal_curves
     except ImportError:

@@ -52,7 +52,7 @@ def _case_section(evaluation, toml_text: str) -> str:
         ("module", f"{pair.module * 1e3:g} mm"), ("face width", f"{pair.face_width * 1e3:g} mm"),
         ("centre distance", f"{pair.centre_distance * 1e3:g} mm"), ("contact ratio ε", f"{pair.contact_ratio:.4f}"),
         ("pinion speed", f"{op.speed_rpm:g} rpm"), ("torque", f"{op.torque:.4g} N·m"),
-        ("power", f"{op.power / 1e3:.4g} kW"), ("static normal load", f"{case.normal_load:.5g} N "
+        ("power", f"{op.power / 1e3:.4g} kW"), ("load held", op.load_held), ("static normal load", f"{case.normal_load:.5g} N "
                                                                       f"({case.normal_load / pair.face_width / 1e3:.4g} N/mm)"),
         ("equivalent mass me", f"{case.equivalent_mass:.4g} kg"),
         ("mesh frequency", f"{pair.mesh_frequency(op.speed_rpm):.5g} Hz"),
@@ -61,7 +61,7 @@ def _case_section(evaluation, toml_text: str) -> str:
         ("solution method", evaluation.method),
     ]
     rows = "".join(f"<tr><th>{_e(k)}</th><td>{_e(v)}</td></tr>" for k, v in facts)
-    assumptions = "".join(f"<li>{_e(item)}</li>" for item in case.assumptions) or "<li>none stated</li>"
+    assumptions = "".join(f"<li>{_e(item)}</li>" for item in (*case.assumptions, *case.notes)) or "<li>none stated</li>"
     return (f"<h2 id='case'>The case</h2><p><b>{_e(case.title or case.name)}</b><br>"
             f"<span class='small'>source: {_e(case.citation or case.source)}</span></p>"
             f"<table style='width:auto'>{rows}</table><h3>Assumptions (what the source leaves open)</h3>"

@@ -51,9 +51,17 @@ SAINSOT_OUTPUT_RANGES: dict[str, tuple[float, float]] = {
 
 #: Input ranges of the fit, h_f = r_f/r_int ∈ [1.4, 7] and θ_f ∈ [0.01, 0.12] rad, as checked (commented out) in
 #: ROSS's gear_element.py ``_gear_body_polynominal`` (``not 1.4 <= h <= 7``, ``not 0.01 <= theta_f <= 0.12``;
-#: re-read for issue 15). The paper itself could not be opened to confirm them (docs/stiffness.md).
+#: re-read for issue 15). The paper itself could not be opened to confirm them (docs/stiffness.md). For a
+#: standard 20° tooth (h_a* 1, h_f* 1.25, ρ* 0.38, no shift) θ_f ≤ 0.12 rad means at least about 26 teeth
+#: (θ_f = 0.1435 at z = 21, 0.1255 at z = 24, 0.1205 at z = 25): ordinary pinions lie just outside this range,
+#: while L*, M*, P*, Q* stay within the fit's data there, which the message then says.
 SAINSOT_INPUT_RANGES: dict[str, tuple[float, float]] = {"h_f": (1.4, 7.0), "theta_f": (0.01, 0.12)}
 
+
+#: The words every Sainsot extrapolation message starts with, and what to do about it.
+SAINSOT_WARNING = "Sainsot fillet-foundation fit extrapolated"
+SAINSOT_ADVICE = ("the gear-body part of the tooth compliance is less certain there: where the stiffness matters, "
+                  "compare it with the finite-element tooth model (`thermogear fem CASE`, FE vs PEM tooth compliance)")
 
 #: Nominal radius of the torque-carrying seat of a solid or small-bore gear as a share of its root radius [–]:
 #: the solid-gear inner boundary of the finite-element tooth model (thermogear.fem.tooth_mesh, docs/fem.md).
@@ -159,15 +167,23 @@ def check_sainsot_range(root_to_bore: float, root_half_angle_rad: float, key: st
     low, high = SAINSOT_INPUT_RANGES["theta_f"]
     if not low <= root_half_angle_rad <= high:
         messages.append(f"{key}: θ_f = {root_half_angle_rad:.4f} rad outside the fitted range [{low}, {high}]")
+    outputs_inside = True
     for name, (low, high) in SAINSOT_OUTPUT_RANGES.items():
         value = float(sainsot_coefficient(name, evaluated, root_half_angle_rad))
         if not low <= value <= high:
+            outputs_inside = False
             messages.append(f"{key}: {name}* = {value:.4f} outside the range of Sainsot's data [{low}, {high}]")
+    if messages and outputs_inside:  # only an input outside: the coefficients stay within what the fit was made on
+        messages = [f"{text} (the coefficients L*, M*, P*, Q* stay within the fit's data: a mild extrapolation)"
+                    for text in messages]
+    messages = [f"{SAINSOT_WARNING} — {text}; {SAINSOT_ADVICE}" for text in messages]
+    # One wording for every command (stiffness, run, sweeps) and one place the warning comes from: warnings are
+    # attributed to the single call in potential_energy.tooth_compliance (stacklevel 2), so Python's default filter
+    # shows each gear's message once however many stiffness tables a call builds.
     for message in messages if warn else ():
-        warnings.warn(f"Sainsot fillet-foundation fit extrapolated — {message}", ExtrapolationWarning,
-                      stacklevel=3)
+        warnings.warn(message, ExtrapolationWarning, stacklevel=2)
     for message in assumptions if warn else ():
-        warnings.warn(message, ModelAssumptionWarning, stacklevel=3)
+        warnings.warn(message, ModelAssumptionWarning, stacklevel=2)
     return messages + assumptions
 
 

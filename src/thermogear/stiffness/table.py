@@ -7,7 +7,6 @@ keys on them directly. Cached arrays are read-only.
 
 from __future__ import annotations
 
-import warnings
 from functools import lru_cache
 
 import numpy as np
@@ -38,7 +37,7 @@ def _read_only(compliance: PairCompliance) -> PairCompliance:
 def _table_with_warnings(gear_pair: GearPair, material: Material, count: int) -> tuple[PairCompliance, tuple]:
     with warning_scope.recorded() as caught:
         table = _read_only(pair_compliance(gear_pair, material, gear_pair.roll_grid(count)))
-    return table, tuple((item.message, item.category) for item in caught)
+    return table, warning_scope.kept(caught)
 
 
 def pair_compliance_table(gear_pair: GearPair, material: Material, count: int = TABLE_POINT_COUNT) -> PairCompliance:
@@ -48,8 +47,7 @@ def pair_compliance_table(gear_pair: GearPair, material: Material, count: int = 
     if count < 4:
         raise ValueError("pair_compliance_table: count must be at least 4")
     table, recorded = _table_with_warnings(gear_pair, material, count)
-    for message, category in recorded:
-        warnings.warn(message, category, stacklevel=2)
+    warning_scope.raise_again(recorded)
     return table
 
 
@@ -64,8 +62,7 @@ def _spline_set(gear_pair: GearPair, material: Material) -> tuple[dict[str, Cubi
 def _splines(gear_pair: GearPair, material: Material) -> dict[str, CubicSpline]:
     """The cached splines of a pair's table; re-raises the warnings of the table's computation."""
     splines, recorded = _spline_set(gear_pair, material)
-    for message, category in recorded:
-        warnings.warn(message, category, stacklevel=3)
+    warning_scope.raise_again(recorded)
     return splines
 
 

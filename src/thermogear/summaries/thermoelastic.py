@@ -2,7 +2,8 @@
 
 :func:`thermal_block` answers for either thermal model: the thermo-elastic model's keys (``model``, ``operating``,
 ``cold``, ``youngs_modulus_gpa``, ``mesh_stiffness_n_per_mm_um``, ``deviation_um``,
-``loaded_transmission_error_um``, ``jamming_bulk_temperature_c``, …) and, where the case configures X_te, the
+``loaded_transmission_error_um``, ``jamming_bulk_temperature_c``, ``jamming_margin_k`` — the jamming
+temperature above the hotter gear's operating bulk temperature —, …) and, where the case configures X_te, the
 paper's model (Luo & Li 2020) beside it — at the top level for ``model = "luo2020"`` (today's keys, unchanged) with
 the thermo-elastic prediction under ``thermoelastic``, else under ``luo2020``. Plain floats; stiffness per unit face
 width in N/(mm·μm), lengths in μm and mm, temperatures in °C.
@@ -16,6 +17,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from thermogear.case_keys import LUO2020_KEYS, luo2020_complete
 from thermogear.errors import ExtrapolationWarning
 from thermogear.thermal.temperature import temperature_field_from_case
 from thermogear.thermoelastic.mesh import ThermoelasticMesh
@@ -26,9 +28,6 @@ if TYPE_CHECKING:
 #: N/m per metre of face width → N/(mm·μm)
 PER_WIDTH_TO_N_PER_MM_UM = 1e-9
 
-#: [thermal] keys that belong to the paper's model; a case that sets any of them gets its result beside ours.
-LUO2020_KEYS = frozenset({"x_te", "x_te_source", "calibration_drop_percent", "calibration_point", "load_basis",
-                          "expansion_model"})
 
 #: Roll positions along the path for the deviation's peak-to-peak [–].
 PATH_POINT_COUNT = 401
@@ -79,7 +78,11 @@ def thermoelastic_summary(case: "Case") -> dict:
         "loaded_transmission_error_um": {"mean": float(grid.time_average(loaded.approach) * 1e6),
                                          "peak_to_peak": loaded.peak_to_peak * 1e6},
         "jamming_bulk_temperature_c": component.jamming_bulk_temperature_c,
-        "elastic": {"mesh_stiffness_n_per_mm_um": _statistics(cold_grid, cold_stiffness, cold_scale),
+        "jamming_margin_k": (None if component.jamming_bulk_temperature_c is None
+                             else component.jamming_bulk_temperature_c - max(component.bulk_c)),
+        "elastic": {"youngs_modulus_gpa": {"pinion": component.youngs_modulus_cold[0] * 1e-9,
+                                           "wheel": component.youngs_modulus_cold[1] * 1e-9},
+                    "mesh_stiffness_n_per_mm_um": _statistics(cold_grid, cold_stiffness, cold_scale),
                     "loaded_transmission_error_um": {
                         "mean": float(cold_grid.time_average(cold_loaded.approach) * 1e6),
                         "peak_to_peak": cold_loaded.peak_to_peak * 1e6}},
@@ -102,7 +105,9 @@ def thermoelastic_summary(case: "Case") -> dict:
 
 
 def _luo2020_configured(case: "Case") -> bool:
-    return bool(LUO2020_KEYS & case.thermal.model_fields_set)
+    """The case sets the paper's keys and they define X_te completely (else they are named as having no effect
+    when the case loads, :mod:`thermogear.case_keys`)."""
+    return bool(set(LUO2020_KEYS) & case.thermal.model_fields_set) and luo2020_complete(case.thermal)
 
 
 def thermal_block(case: "Case") -> dict:

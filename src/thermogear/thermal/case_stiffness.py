@@ -9,7 +9,6 @@ operating point and sweep at that load reuses it.
 
 from __future__ import annotations
 
-import warnings
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -105,9 +104,8 @@ def _spline(case: "Case", normal_load: float):
             spline = CubicSpline(roll, _thermal_pair_stiffness_direct(case, roll, None, normal_load))
         if len(splines) >= _SPLINES_PER_CASE:
             splines.pop(next(iter(splines)))
-        entry = splines[normal_load] = (spline, tuple((item.message, item.category) for item in caught))
-    for message, category in entry[1]:  # the cache never swallows a warning the second time
-        warnings.warn(message, category, stacklevel=3)
+        entry = splines[normal_load] = (spline, warning_scope.kept(caught))
+    warning_scope.raise_again(entry[1])  # the cache never swallows a warning the second time
     return entry[0]
 
 

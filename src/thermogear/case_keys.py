@@ -1,0 +1,62 @@
+"""Keys of a case that have no effect under the models it chooses.
+
+A case file may hold keys of a model it does not run: the paper's thermal stiffness (``thermal.model =
+"luo2020"``, Luo & Li 2020 Eqs. 13–23) reads X_te and how it is found; the thermo-elastic model (the default) reads
+none of them. Such keys are accepted (a case may carry the paper's settings to show that model beside the
+default, as ``thermogear stiffness --thermal`` does when X_te is complete), but a key that no output reads is named
+at load time, with the model that would read it, as one :class:`~thermogear.errors.IneffectiveKeyWarning`.
+
+Rules (each from what the code reads, not from a case's name):
+
+* ``thermal.model = "thermoelastic"``: the paper's keys (:data:`LUO2020_KEYS`) have no effect unless they make a
+  complete X_te (given with ``x_te``, calibrated with ``calibration_drop_percent``, or from the FE model): only then
+  is the paper's model computed beside the default;
+* ``dynamics.mesh = "linear"``: ``dynamics.damping_in_flight`` (teeth in flight through the backlash) has no effect,
+  since the linear mesh keeps every pair in contact.
+"""
+
+from __future__ import annotations
+
+import warnings
+
+from thermogear.errors import IneffectiveKeyWarning
+
+__all__ = ["LUO2020_KEYS", "keys_without_effect", "luo2020_complete", "warn_keys_without_effect"]
+
+#: [thermal] keys read only by the paper's thermal stiffness (thermal.model = "luo2020").
+LUO2020_KEYS = ("x_te", "x_te_source", "calibration_drop_percent", "calibration_point", "load_basis",
+                "expansion_model")
+
+
+def luo2020_complete(thermal) -> bool:
+    """True when the [thermal] section defines X_te completely (the paper's model can be computed from it)."""
+    if thermal.x_te_source == "given":
+        return thermal.x_te is not None
+    if thermal.x_te_source == "calibrated":
+        return thermal.x_te is None and thermal.calibration_drop_percent is not None
+    return True  # "fem": the FE model computes it
+
+
+def keys_without_effect(case) -> list[tuple[list[str], str]]:
+    """``[(keys, reason)]`` of a :class:`~thermogear.case.Case`: the keys the case sets that no output reads under its models (module docstring)."""
+    found = []
+    thermal = case.thermal
+    paper_keys = [f"thermal.{key}" for key in LUO2020_KEYS if key in thermal.model_fields_set]
+    if thermal.model != "luo2020" and paper_keys and not luo2020_complete(thermal):
+        found.append((paper_keys, f"keys of the paper's thermal stiffness (thermal.model = 'luo2020'), not of "
+                                  f"thermal.model = '{thermal.model}', and they do not define X_te completely (x_te, "
+                                  "or x_te_source = 'calibrated' with calibration_drop_percent, or 'fem'), so nothing "
+                                  "reads them; remove them, or complete them and set thermal.model = 'luo2020' to "
+                                  "run the paper's model"))
+    dynamics = case.dynamics
+    if dynamics.mesh == "linear" and "damping_in_flight" in dynamics.model_fields_set:
+        found.append((["dynamics.damping_in_flight"], "the linear mesh keeps every pair in contact, so the teeth "
+                                                      "never fly; it acts with dynamics.mesh = 'nonlinear'"))
+    return found
+
+
+def warn_keys_without_effect(case) -> None:
+    """One IneffectiveKeyWarning per rule that finds keys (module docstring)."""
+    for keys, reason in keys_without_effect(case):
+        warnings.warn(f"{', '.join(keys)}: no effect under this case's model — {reason}", IneffectiveKeyWarning,
+                      stacklevel=3)
