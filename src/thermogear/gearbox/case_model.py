@@ -39,7 +39,7 @@ BEARING_TYPES = {"cylindrical_roller": RollingBearing.cylindrical_roller,
                  "deep_groove_ball": RollingBearing.deep_groove_ball}
 
 
-def _section(case: "Case"):
+def gearbox_section(case: "Case"):
     section = getattr(case, "gearbox", None)
     if section is None:
         raise CaseError("gearbox", None, "a [gearbox] section (housing, oil, bearings, seals)",
@@ -58,13 +58,13 @@ def housing_expansion(case: "Case") -> float:
     ``[housing]`` when it is given there, else that of ``[gearbox.housing]``."""
     if case.housing.thermal_expansion_per_k is not None:
         return float(case.housing.thermal_expansion_per_k)
-    material = case.housing.material if "material" in case.housing.model_fields_set else _section(
+    material = case.housing.material if "material" in case.housing.model_fields_set else gearbox_section(
         case).housing.material
     return HOUSING_EXPANSION_PER_K[material]
 
 
 def _housing(case: "Case") -> Housing:
-    section = _section(case)
+    section = gearbox_section(case)
     housing = section.housing
     if housing.outer_area_m2 is not None:
         side = math.sqrt(housing.outer_area_m2 / (6.0 if housing.bottom_cooled else 5.0))
@@ -108,7 +108,7 @@ def gearbox_description_from_case(case: "Case") -> GearboxDescription:
     """The :class:`GearboxDescription` of a case with a ``[gearbox]`` section (module docstring)."""
     from thermogear.lubricant import lubricant_from_case  # noqa: PLC0415
 
-    section = _section(case)
+    section = gearbox_section(case)
     pair, material = case.gear_pair, case.material
 
     def disc_mass(gear) -> float:
@@ -140,7 +140,7 @@ def gearbox_operating_point(case: "Case", speed_rpm: float | None = None,
     """The case's pinion speed and torque (or the ones given) with the ``[gearbox]`` ambient temperature."""
     speed = case.operating_point.speed_rpm if speed_rpm is None else float(speed_rpm)
     load = case.operating_point.torque_at(speed) if torque is None else float(torque)
-    return GearboxOperatingPoint(speed, load, _section(case).ambient_c)
+    return GearboxOperatingPoint(speed, load, gearbox_section(case).ambient_c)
 
 
 @cached_per_case
@@ -171,14 +171,14 @@ def with_predicted_temperatures(case: "Case") -> "Case":
     as ``lubricant.operating_temperature_c`` (viscosity, damping), the housing node's as ``housing.temperature_c``
     (centre distance, backlash) and the prediction added to the assumptions. The gear temperatures come from the
     ``"gearbox"`` temperature provider (:mod:`thermogear.gearbox.provider`)."""
-    _section(case)
+    gearbox_section(case)
     if case.housing.temperature_c is not None:
         raise CaseError("housing.temperature_c", case.housing.temperature_c, "absent with temperature.model = "
                         "'gearbox'", "the gearbox model predicts the housing temperature")
     state = predicted_steady_state(case)
     housing_update = {"temperature_c": round(state.housing_c, 6)}
     if "material" not in case.housing.model_fields_set:
-        housing_update["material"] = _section(case).housing.material
+        housing_update["material"] = gearbox_section(case).housing.material
     return replace(case,
                    lubricant=case.lubricant.model_copy(update={"operating_temperature_c": round(state.oil_c, 6)}),
                    housing=case.housing.model_copy(update=housing_update),
