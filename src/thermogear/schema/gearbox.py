@@ -168,14 +168,21 @@ class GearboxInternalSection(Section):
 
 
 class GearboxSection(Section):
-    """The gearbox around the gear pair (module docstring)."""
+    """The gearbox around the gear pair, for the gearbox thermal model (``[temperature].model = "gearbox"``,
+    ``thermogear warmup --model gearbox``, ``thermogear gearbox``): optional."""
 
     ambient_c: Annotated[float, Field(ge=AMBIENT_RANGE_C[0], le=AMBIENT_RANGE_C[1], allow_inf_nan=False)] = Field(
         20.0, description="ambient air temperature [°C]")
     housing: GearboxHousingSection
     oil: GearboxOilSection
-    bearings: list[GearboxBearingSection] = Field(default_factory=list)
-    seals: list[GearboxSealSection] = Field(default_factory=list)
+    bearings: list[GearboxBearingSection] = Field(
+        default_factory=list, description="[[gearbox.bearings]] tables: shaft (pinion | wheel), count, and a "
+                                          "designation (NJ406) or type, bore_mm, outside_mm, width_mm and the SKF "
+                                          "constants rolling_constant, sliding_constants, geometry_constant, "
+                                          "drag_variable; load_fraction")
+    seals: list[GearboxSealSection] = Field(
+        default_factory=list, description="[[gearbox.seals]] tables: shaft (pinion | wheel), diameter_mm (radial "
+                                          "lip seals)")
     internal: GearboxInternalSection = GearboxInternalSection()
     shaft_mass_kg: Annotated[float, Field(gt=0.0, le=1e5, allow_inf_nan=False)] = Field(
         4.0, description="mass of the shafts with their bearings [kg]")
