@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import json
 import tomllib
 from pathlib import Path
 
@@ -148,3 +149,16 @@ def test_gearbox_model_needs_the_section():
     with pytest.raises(CaseError) as error:
         case_from_document(bad)
     assert error.value.key == "gearbox"
+
+
+def test_run_says_the_temperatures_were_predicted():
+    from typer.testing import CliRunner
+
+    import thermogear.cli.run  # noqa: F401
+    from thermogear.cli.app import app
+
+    result = CliRunner().invoke(app, ["run", str(CASE), "--model", "thermal", "--json"])
+    assert result.exit_code == 0, result.output
+    payload = json.loads(result.stdout[result.stdout.index("{"):])
+    assert payload["temperatures"].startswith("temperatures predicted by the gearbox thermal model")
+    assert "mesh" in payload["temperatures"] and "churning" in payload["temperatures"]

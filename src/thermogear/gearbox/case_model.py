@@ -166,6 +166,13 @@ def describe_prediction(state: "GearboxSteadyState") -> str:
             f"{losses.seals:.1f}, churning {losses.churning:.1f} W)")
 
 
+def prediction_note(case: "Case") -> str | None:
+    """What the outputs of a case say about its temperatures when the gearbox model predicted them (else None)."""
+    if case.temperature.model != "gearbox":
+        return None
+    return describe_prediction(predicted_steady_state(case))
+
+
 def with_predicted_temperatures(case: "Case") -> "Case":
     """The case as every command sees it under ``temperature.model = "gearbox"``: the predicted oil temperature
     as ``lubricant.operating_temperature_c`` (viscosity, damping), the housing node's as ``housing.temperature_c``
