@@ -110,7 +110,8 @@ def test_other_temperature_model_keeps_given_temperatures_and_the_gearbox_still_
     ("gearbox.oil.lubrication", "injection", "gearbox.oil.lubrication"),
     ("gearbox.ambient_c", 120.0, "gearbox.ambient_c"),
     ("gearbox.internal.gear_oil_w_per_m2_k", -1.0, "gearbox.internal.gear_oil_w_per_m2_k"),
-    ("gearbox.oil.wheel_immersion_mm", 500.0, "wheel_immersion"),
+    ("gearbox.oil.wheel_immersion_mm", 500.0, "gearbox.oil.wheel_immersion_mm"),
+    ("gearbox.oil.pinion_immersion_mm", 90.0, "gearbox.oil.pinion_immersion_mm"),
     ("gearbox.housing.speed", 3.0, "gearbox.housing.speed"),
     ("housing.temperature_c", 50.0, "housing.temperature_c"),
 ])
@@ -162,3 +163,11 @@ def test_run_says_the_temperatures_were_predicted():
     payload = json.loads(result.stdout[result.stdout.index("{"):])
     assert payload["temperatures"].startswith("temperatures predicted by the gearbox thermal model")
     assert "mesh" in payload["temperatures"] and "churning" in payload["temperatures"]
+
+
+def test_gearbox_section_is_checked_under_another_temperature_model():
+    bad = changed("gearbox.oil.wheel_immersion_mm", 500.0)
+    bad["temperature"] = {"model": "uniform", "bulk_c": 70.0, "reference_c": 20.0}
+    with pytest.raises(CaseError) as error:
+        case_from_document(bad)
+    assert error.value.key == "gearbox.oil.wheel_immersion_mm"

@@ -117,6 +117,11 @@ def gearbox_description_from_case(case: "Case") -> GearboxDescription:
     oil = lubricant_from_case(case)
     wheel_immersion = (pair.operating_pitch_radii[1] if section.oil.wheel_immersion_mm is None
                        else section.oil.wheel_immersion_mm * 1e-3)
+    for key, depth, gear in (("wheel_immersion_mm", wheel_immersion, pair.wheel),
+                             ("pinion_immersion_mm", section.oil.pinion_immersion_mm * 1e-3, pair.pinion)):
+        if depth > 2.0 * gear.tip_radius:
+            raise CaseError(f"gearbox.oil.{key}", round(depth * 1e3, 6), f"<= the tip diameter "
+                            f"{2e3 * gear.tip_radius:.4g} mm", "a gear cannot dip deeper than it is tall")
     backlash_um = None if case.gears_input is None else case.gears_input.backlash_normal_um
     return GearboxDescription(
         gear_pair=pair, lubricant=oil, housing=_housing(case), oil_volume=section.oil.volume_l * 1e-3,
