@@ -13,8 +13,8 @@ neither the test gears nor the gearbox, nor what its temperature sensor measures
   :mod:`thermogear.gearbox.fzg_example` (0.45 × 0.30 × 0.40 m, 40 kg cast iron, air 1 m/s, four NJ 406, two lip
   seals), none of it verified for the paper's rig;
 * the measured temperature is compared with the predicted oil (sump) temperature: the FZG test method controls
-  the oil temperature with a sensor in the side wall of the gearbox (ASTM D4998 §6.4 places it 60 mm above the
-  bottom, in the oil); the pinion bulk temperature is reported beside it;
+  the oil temperature with a sensor in the side of the test gearbox (ASTM D5182 §6.1.3); whether the paper's
+  sensor did the same is not said; the pinion bulk temperature is reported beside it;
 * ambient 20 °C; two starts, both without measurements: every run from a cold gearbox at the ambient, or the runs
   in the paper's order 400 → 900 → 1400 rpm, each starting where the previous 20-minute run ended.
 """
@@ -35,8 +35,8 @@ RIG_ASSUMPTIONS = (
     "gears: FZG type C (ISO 14635-1) as a stand-in for the paper's unidentified test gears; 138 N·m pinion torque",
     "oil: 1.25 L ISO VG 100 mineral, dip lubrication, wheel dipped to its centre (FZG fill: ASTM D5182 §9.4)",
     "housing, bearings, seals, internal coefficients: the illustrative FZG-type gearbox (assumed, not the rig's)",
-    "measured temperature compared with the predicted oil temperature (FZG method: oil sensor in the side wall, "
-    "ASTM D4998 §6.4); the pinion bulk temperature is given beside it",
+    "measured temperature compared with the predicted oil temperature (FZG method: the oil temperature sensed in "
+    "the side of the test gearbox, ASTM D5182 §6.1.3); the pinion bulk temperature is given beside it",
     f"ambient {RIG_AMBIENT_C:g} °C; cold start at the ambient, or the runs chained in the paper's order",
 )
 
