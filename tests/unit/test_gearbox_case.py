@@ -114,6 +114,7 @@ def test_other_temperature_model_keeps_given_temperatures_and_the_gearbox_still_
     ("gearbox.oil.pinion_immersion_mm", 90.0, "gearbox.oil.pinion_immersion_mm"),
     ("gearbox.housing.speed", 3.0, "gearbox.housing.speed"),
     ("housing.temperature_c", 50.0, "housing.temperature_c"),
+    ("lubricant.operating_temperature_c", 60.0, "lubricant.operating_temperature_c"),
 ])
 def test_bad_values_name_key_value_and_range(dotted, value, key):
     with pytest.raises(CaseError) as error:

@@ -187,6 +187,9 @@ def with_predicted_temperatures(case: "Case") -> "Case":
     if case.housing.temperature_c is not None:
         raise CaseError("housing.temperature_c", case.housing.temperature_c, "absent with temperature.model = "
                         "'gearbox'", "the gearbox model predicts the housing temperature")
+    if "operating_temperature_c" in case.lubricant.model_fields_set:
+        raise CaseError("lubricant.operating_temperature_c", case.lubricant.operating_temperature_c,
+                        "absent with temperature.model = 'gearbox'", "the gearbox model predicts the oil temperature")
     state = predicted_steady_state(case)
     housing_update = {"temperature_c": round(state.housing_c, 6)}
     if "material" not in case.housing.model_fields_set:
