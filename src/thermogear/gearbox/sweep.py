@@ -95,7 +95,10 @@ def steady_sweep(model, speeds_rpm, torques, ambient_c: float = 20.0) -> SteadyS
                                     ("churning", losses.churning), ("efficiency", losses.efficiency),
                                     ("backlash", state.backlash)):
                     outputs[name][i, j] = value
-    if temperatures.count():
-        model._warn_viscosity_range(float(temperatures[2:4].min()), float(temperatures[2:4].max()))
+    fitted = model.description.lubricant.fitted_range_c
+    if temperatures.count() and (temperatures[2:4].min() < fitted[0] or temperatures[2:4].max() > fitted[1]):
+        warnings.warn(f"gearbox: oil temperatures {float(temperatures[2:4].min()):.1f}…"
+                      f"{float(temperatures[2:4].max()):.1f} °C over the grid leave the viscosity fit's range "
+                      f"{fitted[0]:g}…{fitted[1]:g} °C (ASTM D341 extrapolated)", ExtrapolationWarning, stacklevel=2)
     return SteadySweep(speeds, loads, float(ambient_c), temperatures, outputs["mesh"], outputs["bearings"],
                        outputs["seals"], outputs["churning"], outputs["efficiency"], outputs["backlash"])
