@@ -37,6 +37,10 @@ if TYPE_CHECKING:
 Model = Literal["elastic", "thermal"]
 MODELS: tuple[str, ...] = ("elastic", "thermal")
 
+#: Temperature sources whose temperatures depend on the operating point (speed and load): the FE heat model and
+#: the gearbox thermal model. A sweep cannot reuse one mesh period across their speeds or loads.
+OPERATING_POINT_TEMPERATURE_MODELS = ("fem", "gearbox")
+
 
 @dataclass(frozen=True, eq=False)
 class MeshModel:
@@ -133,9 +137,10 @@ class MeshModel:
         model keeps the conditions under which the friction damping is such a power law (geometry, oil
         temperature and load shares independent of speed and load; thermogear.damping); the load exponent is
         None where the load shares move with the load, and the whole is None where the temperature input depends
-        on the speed (the FE heat model). Sweeps use it to reuse one mesh period (and do not where the pairs carry
+        on the speed (the FE heat model; the gearbox model, whose predicted temperatures follow speed and load). Sweeps use it to reuse one mesh period (and do not where the pairs carry
         deviations: the excitation is not part of their batch kernel)."""
-        if self.case.temperature.model == "fem" or getattr(self.case.thermal, "x_te_source", "") == "fem":
+        if (self.case.temperature.model in OPERATING_POINT_TEMPERATURE_MODELS
+                or getattr(self.case.thermal, "x_te_source", "") == "fem"):
             return None
         load_exponent = None if self.load_shares_depend_on_load else FRICTION_DAMPING_LOAD_EXPONENT
         return FRICTION_DAMPING_SPEED_EXPONENT, load_exponent
