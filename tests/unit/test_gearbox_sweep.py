@@ -87,3 +87,20 @@ def test_study_of_a_gearbox_case_predicts_at_every_point():
     # and each point saw its own predicted temperatures: the natural frequency falls as the gears get hotter
     frequency = batch["natural_frequency_hz"][1]  # the thermal model
     assert frequency[1, 1] < frequency[0, 1] and frequency[1, 1] < frequency[1, 0]
+
+
+def test_thermal_mesh_of_a_gearbox_case_is_refused_at_another_operating_point():
+    # its temperatures are the steady state at its own speed and load: the branch study of the nonlinear mesh,
+    # which asks one case's mesh model at every speed, is refused instead of mixing two operating points
+    from thermogear.case import load_case
+    import thermogear.simulation  # noqa: F401
+    from thermogear.errors import CaseError
+    from thermogear.mesh.model import MeshModel
+
+    case = load_case(CASE)
+    thermal, elastic = MeshModel(case, "thermal"), MeshModel(case, "elastic")
+    assert thermal.state().speed_rpm == 1400.0  # its own point
+    with pytest.raises(CaseError) as error:
+        thermal.state(speed_rpm=900.0)
+    assert error.value.key == "operating.speed_rpm"
+    assert elastic.state(speed_rpm=900.0).speed_rpm == 900.0  # the elastic model reads no temperature
