@@ -25,7 +25,8 @@ from thermogear.fzg import fzg_load_stage_torque
 from thermogear.geometry import Gear, GearPair, involute
 from thermogear.materials import Material
 from thermogear.operating import OperatingPoint
-from thermogear.schema import (CaseFile, DampingSection, DynamicsSection, FemSection, GearsSection, HousingSection,
+from thermogear.schema import (CaseFile, DampingSection, DynamicsSection, FemSection, GearboxSection, GearsSection,
+                               HousingSection,
                                LubricantSection, MaterialSection, TemperatureSection, ThermalSection)
 from thermogear.temperature_field import (check_temperatures, default_bulk_temperature,
                                          temperature_field_from_section)
@@ -64,6 +65,7 @@ class Case:
     material_input: MaterialSection = MaterialSection()
     # what thermogear assumed for keys the case left out, in words (every command prints them as "note: …")
     notes: tuple[str, ...] = ()
+    gearbox: GearboxSection | None = None  # the gearbox around the pair (thermogear.gearbox), optional
 
     @property
     def directory(self) -> Path | None:
@@ -282,10 +284,36 @@ def case_from_document(document: dict[str, Any], source: str = "<memory>") -> Ca
         operating_point=operating, roughness_ra=gears.roughness_ra_um * 1e-6, inertias=inertias,
         lubricant=model.lubricant, temperature=temperature, thermal=model.thermal, damping=model.damping,
         dynamics=model.dynamics, fem=model.fem, source=source, document=document, housing=model.housing,
-        gears_input=gears, material_input=material, notes=notes)
+        gears_input=gears, material_input=material, notes=notes, gearbox=model.gearbox)
+    if case.temperature.model not in ("uniform", "tabulated", "fem"):  # predicted at load time (see below)
+        case = _resolve_temperature_model(case)
     check_case(case)
     warn_keys_without_effect(case)
     return case
+
+
+# --------------------------------------------------------------------------------------------- predicted temperatures
+CaseResolver = Callable[["Case"], "Case"]
+_TEMPERATURE_MODELS: dict[str, CaseResolver] = {}
+
+
+def register_temperature_model(name: str, resolver: CaseResolver) -> None:
+    """Plug in a temperature model that predicts the case's temperatures at load time, selectable as
+    ``[temperature].model = name``: ``resolver(case)`` returns the case with the predicted oil and housing
+    temperatures (the gearbox thermal model registers ``"gearbox"`` from the composition root,
+    :mod:`thermogear.simulation`). Its gear temperatures come from the temperature provider of the same name."""
+    if not callable(resolver):
+        raise TypeError("a temperature model must be callable: resolver(case) -> Case")
+    _TEMPERATURE_MODELS[name] = resolver
+
+
+def _resolve_temperature_model(case: "Case") -> "Case":
+    resolver = _TEMPERATURE_MODELS.get(case.temperature.model)
+    if resolver is None:
+        raise CaseError("temperature.model", case.temperature.model, "a registered model (import "
+                        "thermogear.simulation, which registers it)",
+                        "this temperature model is predicted by a model that is not loaded")
+    return resolver(case)
 
 
 # --------------------------------------------------------------------------------------------- errors

@@ -63,6 +63,9 @@ COMMANDS: dict[str, CommandEntry] = {
                                               "compliance, flank expansion, X_te."),
     "warmup": CommandEntry("thermogear.cli.warmup", "Warm-up of a test rig as a sequence of steady operating "
                                                     "states."),
+    "gearbox": CommandEntry("thermogear.cli.gearbox", "Steady temperatures, power losses by source, efficiency "
+                                                      "and backlash of the case's gearbox, at its operating point "
+                                                      "or over speeds × torques."),
     "vibration": CommandEntry("thermogear.cli.vibration", "Vibration analysis of a measured signal (Luo & Li "
                                                           "2020 Table 3 / Fig. 18 style)."),
 }

@@ -9,6 +9,10 @@ import typer
 from thermogear.cli.app import app, console, error_console, print_json
 from thermogear.report.terminal import interruptible
 from thermogear.errors import CaseError
+from thermogear.gearbox.case_model import prediction_note
+from thermogear.gearbox.provider import register as register_gearbox_model
+
+register_gearbox_model()  # [temperature].model = "gearbox" (the CLI is a composition root, as thermogear.simulation)
 
 _MODELS = {"elastic": ("elastic",), "thermal": ("thermal",), "both": ("elastic", "thermal")}
 
@@ -102,6 +106,8 @@ def run(
             payload["thermoelastic"] = thermoelastic
         if failed:
             payload["not_computed"] = failed
+        if prediction_note(case):
+            payload["temperatures"] = prediction_note(case)
         if out is not None:
             payload["report"] = str(outcome.report)
         print_messages(messages, error_console)
@@ -120,6 +126,8 @@ def run(
     _print_table(case, responses, console, thermoelastic)
     console.print(_load_held_line(case))
     print_notes(case.notes, console)
+    if prediction_note(case):
+        console.print(prediction_note(case), highlight=False)
     print_messages(messages, console)
 
 

@@ -11,8 +11,11 @@ from rich.table import Table
 from thermogear.case import load_case
 from thermogear.cli.app import app, console, print_json
 from thermogear.errors import CaseError
+from thermogear.gearbox.provider import register as register_gearbox_model
 
-WARMUP_MODELS = ("first-order",)
+register_gearbox_model()  # [temperature].model = "gearbox" (the CLI is a composition root, as thermogear.simulation)
+
+WARMUP_MODELS = ("first-order", "gearbox")
 
 
 @app.command()
@@ -22,11 +25,15 @@ def warmup(
     temperature_history: str | None = typer.Option(
         None, "--temperature-history",
         help="CSV with time_s|time_min and temperature_c, or luo2019:RPM (the paper's Table 3 run)"),
-    model: str | None = typer.Option(None, "--model", help="warm-up model instead of a history: 'first-order'"),
-    start_c: float = typer.Option(20.0, "--start-c", help="first-order model: start temperature [°C]"),
+    model: str | None = typer.Option(None, "--model", help="warm-up model instead of a history: 'first-order', or 'gearbox' (predicted "
+                                     "by the case's [gearbox] thermal network)"),
+    start_c: float | None = typer.Option(None, "--start-c", help="start temperature [°C] (first-order: default "
+                                         "20; gearbox: every node, default the ambient, down to -40)"),
     final_c: float = typer.Option(60.0, "--final-c", help="first-order model: final temperature [°C]"),
     time_constant_s: float = typer.Option(600.0, "--time-constant-s", help="first-order model: τ [s]"),
-    duration_s: float = typer.Option(1200.0, "--duration-s", help="first-order model: duration [s]"),
+    duration_s: float = typer.Option(1200.0, "--duration-s", help="first-order or gearbox model: duration [s]"),
+    interval_s: float = typer.Option(10.0, "--interval-s", help="gearbox model: time between mesh "
+                                     "re-evaluations [s]"),
     states: int = typer.Option(7, "--states", min=1, max=500, help="first-order model: number of states"),
     gear_model: str = typer.Option("thermal", "--gear-model", help="'thermal' (k_T, c_r) or 'elastic' (k_e, c_e)"),
     speed_rpm: float | None = typer.Option(None, "--speed-rpm", help="pinion speed [rpm] (default: the case's, "
@@ -51,7 +58,14 @@ def warmup(
     if model is not None:
         if model not in WARMUP_MODELS:
             raise CaseError("--model", model, " | ".join(WARMUP_MODELS), "unknown warm-up model")
-        history = first_order_history(start_c, final_c, time_constant_s, duration_s, states)
+        if model == "gearbox":
+            from thermogear.cli.gearbox_warmup import run_gearbox_warmup  # noqa: PLC0415
+
+            run_gearbox_warmup(base, duration_s, start_c, interval_s, gear_model, speed_rpm, dynamics, as_json,
+                               plot, _save)
+            return
+        history = first_order_history(20.0 if start_c is None else start_c, final_c, time_constant_s, duration_s,
+                                      states)
     else:
         history = read_temperature_history(temperature_history)
         if speed_rpm is None and temperature_history.startswith("luo2019:"):

@@ -37,6 +37,13 @@ if TYPE_CHECKING:
 Model = Literal["elastic", "thermal"]
 MODELS: tuple[str, ...] = ("elastic", "thermal")
 
+#: Temperature sources whose temperatures depend on the operating point (speed and load): the FE heat model and
+#: the gearbox thermal model. A sweep cannot reuse one mesh period across their speeds or loads.
+OPERATING_POINT_TEMPERATURE_MODELS = ("fem", "gearbox")
+#: Of those, the ones whose temperatures are predicted when the case is loaded, for the case's own speed and load
+#: only: the thermal mesh of such a case is refused at any other operating point.
+PREDICTED_AT_LOAD_TEMPERATURE_MODELS = ("gearbox",)
+
 
 @dataclass(frozen=True, eq=False)
 class MeshModel:
@@ -133,9 +140,10 @@ class MeshModel:
         model keeps the conditions under which the friction damping is such a power law (geometry, oil
         temperature and load shares independent of speed and load; thermogear.damping); the load exponent is
         None where the load shares move with the load, and the whole is None where the temperature input depends
-        on the speed (the FE heat model). Sweeps use it to reuse one mesh period (and do not where the pairs carry
+        on the speed (the FE heat model; the gearbox model, whose predicted temperatures follow speed and load). Sweeps use it to reuse one mesh period (and do not where the pairs carry
         deviations: the excitation is not part of their batch kernel)."""
-        if self.case.temperature.model == "fem" or getattr(self.case.thermal, "x_te_source", "") == "fem":
+        if (self.case.temperature.model in OPERATING_POINT_TEMPERATURE_MODELS
+                or getattr(self.case.thermal, "x_te_source", "") == "fem"):
             return None
         load_exponent = None if self.load_shares_depend_on_load else FRICTION_DAMPING_LOAD_EXPONENT
         return FRICTION_DAMPING_SPEED_EXPONENT, load_exponent
@@ -274,6 +282,17 @@ class MeshModel:
         values[grid.in_contact] = evaluate(roll)
         return values
 
+    def _check_predicted_operating_point(self, speed: float, load: float) -> None:
+        """The temperatures of a ``"gearbox"`` case are the steady state at its own speed and load: its thermal mesh
+        at another operating point would mix the two (make a case at that point: ``Case.with_changes``)."""
+        if not (self.thermal and self.case.temperature.model in PREDICTED_AT_LOAD_TEMPERATURE_MODELS):
+            return
+        own_speed, own_load = self.speed_rpm, self.normal_load(self.speed_rpm)
+        if not (math.isclose(speed, own_speed, rel_tol=1e-12) and math.isclose(load, own_load, rel_tol=1e-12)):
+            raise CaseError("operating.speed_rpm", speed, f"the case's own operating point ({own_speed:g} rpm, "
+                            f"{own_load:.6g} N)", "its temperatures were predicted by the gearbox model there; "
+                            "evaluate another speed or load on a case made at it (Case.with_changes)")
+
     def state(self, speed_rpm: float | None = None, normal_load: float | None = None,
               points_per_period: int | None = None, damping: bool = True) -> MeshState:
         """Everything the dynamics need over one mesh period at a pinion speed [rpm] and normal load [N]
@@ -281,6 +300,7 @@ class MeshModel:
         callers that need the stiffness only."""
         speed = self.speed_rpm if speed_rpm is None else float(speed_rpm)
         load = self.normal_load(speed) if normal_load is None else float(normal_load)
+        self._check_predicted_operating_point(speed, load)
         grid = self.grid(speed, points_per_period)
         stiffness = self._on_grid(grid, lambda roll: self.pair_stiffness_at(roll, load))
         if (self.thermal and self.case.damping.stiffness == "thermal") or not damping:

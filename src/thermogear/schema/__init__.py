@@ -7,6 +7,7 @@ from pydantic import Field
 from thermogear.schema.base import Section
 from thermogear.schema.dynamics import DampingSection, DynamicsSection
 from thermogear.schema.fem import FemSection
+from thermogear.schema.gearbox import GearboxSection
 from thermogear.schema.housing import HousingSection
 from thermogear.schema.gears import GearSection, GearsSection, MaterialSection, OperatingSection
 from thermogear.schema.lubricant import LubricantSection
@@ -39,7 +40,8 @@ class CaseFile(Section):
     dynamics: DynamicsSection = DynamicsSection()
     fem: FemSection = FemSection()
     sweep: SweepSection | None = None
+    gearbox: GearboxSection | None = None
 
 
-__all__ = ["CaseFile", "CaseInfo", "DampingSection", "DynamicsSection", "FemSection", "GearSection", "GearsSection", "HousingSection",
+__all__ = ["CaseFile", "CaseInfo", "DampingSection", "DynamicsSection", "FemSection", "GearboxSection", "GearSection", "GearsSection", "HousingSection",
            "LubricantSection", "MaterialSection", "OperatingSection", "SweepSection", "TemperatureSection", "ThermalSection"]

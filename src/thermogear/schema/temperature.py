@@ -25,10 +25,12 @@ class TemperatureSection(Section):
     - ``"uniform"``: one bulk temperature for the whole gear body (``bulk_c``);
     - ``"tabulated"``: flank temperature along Γ (``gamma`` and ``flank_c``, or ``csv``) fitted by a polynomial
       of ``fit_degree``, with base-circle and bore temperatures per gear;
-    - ``"fem"``: the finite-element bulk-temperature model computes everything.
+    - ``"fem"``: the finite-element bulk-temperature model computes everything;
+    - ``"gearbox"``: the gearbox thermal model (``[gearbox]`` section) predicts the gear, oil and housing
+      temperatures at the operating point (steady state of its network).
     """
 
-    model: Literal["uniform", "tabulated", "fem"] = "uniform"
+    model: Literal["uniform", "tabulated", "fem", "gearbox"] = "uniform"
     reference_c: Celsius = Field(20.0, description="stress-free (assembly) temperature [°C]")
     bulk_c: Celsius | None = Field(None, description="uniform bulk temperature [°C]")
     gamma: list[Annotated[float, Field(allow_inf_nan=False)]] | None = Field(

@@ -1,0 +1,52 @@
+"""`thermogear gearbox CASE`: steady temperatures, losses and backlash of the case's [gearbox], at its operating
+point or over a grid of speeds × torques."""
+
+from __future__ import annotations
+
+import typer
+from rich.table import Table
+
+from thermogear.case import load_case
+from thermogear.cli.app import app, console, print_json
+from thermogear.gearbox.provider import register as register_gearbox_model
+
+register_gearbox_model()  # [temperature].model = "gearbox" (the CLI is a composition root, as thermogear.simulation)
+
+
+@app.command()
+def gearbox(case: str = typer.Argument(..., metavar="CASE", help="built-in parameter set or a .toml file with a "
+                                                                  "[gearbox] section"),
+            speeds: str | None = typer.Option(None, "--speeds", help="pinion speeds [rpm]: 'a:b:n' or 'v1,v2,...' "
+                                                                     "(default the case's)"),
+            torques: str | None = typer.Option(None, "--torques", help="pinion torques [N·m]: 'a:b:n' or "
+                                                                       "'v1,v2,...' (default the case's)"),
+            as_json: bool = typer.Option(False, "--json", help="one JSON object on stdout")) -> None:
+    """Steady temperatures, power losses by source, efficiency and backlash of the case's gearbox, at its
+    operating point or over speeds × torques."""
+    from thermogear.gearbox.case_model import gearbox_model_from_case, gearbox_operating_point  # noqa: PLC0415
+    from thermogear.gearbox.sweep import steady_sweep  # noqa: PLC0415
+    from thermogear.schema.values import parse_values  # noqa: PLC0415
+
+    loaded = load_case(case)
+    operating = gearbox_operating_point(loaded)
+    speed_values = [operating.speed_rpm] if speeds is None else parse_values(speeds, "--speeds")
+    torque_values = [operating.torque] if torques is None else parse_values(torques, "--torques")
+    result = steady_sweep(gearbox_model_from_case(loaded), speed_values, torque_values, operating.ambient_c)
+    if as_json:
+        print_json({"case": loaded.name, **result.as_dict()})
+        return
+    table = Table(title=f"steady state of the gearbox of {loaded.name} (ambient {operating.ambient_c:g} °C)")
+    for name in ("n [rpm]", "T [N·m]", "pinion [°C]", "wheel [°C]", "oil [°C]", "housing [°C]", "mesh [W]",
+                 "bearings [W]", "seals [W]", "churning [W]", "η [%]", "j_bn [μm]"):
+        table.add_column(name, justify="right")
+    for i, speed in enumerate(result.speeds_rpm):
+        for j, torque in enumerate(result.torques):
+            if result.runaway[i, j]:
+                table.add_row(f"{speed:g}", f"{torque:g}", *(["—"] * 9), "no steady state (runaway)")
+                continue
+            table.add_row(f"{speed:g}", f"{torque:g}",
+                          *(f"{result.node(name)[i, j]:.1f}" for name in ("pinion", "wheel", "oil", "housing")),
+                          f"{result.mesh_loss[i, j]:.1f}", f"{result.bearing_loss[i, j]:.1f}",
+                          f"{result.seal_loss[i, j]:.1f}", f"{result.churning_loss[i, j]:.1f}",
+                          f"{result.efficiency[i, j] * 100:.2f}", f"{result.backlash[i, j] * 1e6:.1f}")
+    console.print(table)

@@ -1,0 +1,58 @@
+"""`thermogear warmup CASE --model gearbox`: the warm-up predicted by the gearbox thermal model (table, JSON,
+figure). Called by :mod:`thermogear.cli.warmup`; registers no command of its own."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from rich.table import Table
+
+from thermogear.cli.app import console, print_json
+
+
+def run_gearbox_warmup(base, duration_s: float, start_c: float | None, interval_s: float, gear_model: str,
+                       speed_rpm: float | None, dynamics: bool, as_json: bool, plot: Path | None, save) -> None:
+    """Predict the warm-up and print it (``save(figure, path)`` writes the figure)."""
+    from thermogear.experiment.gearbox_warmup import gearbox_warmup  # noqa: PLC0415
+
+    result = gearbox_warmup(base, duration_s=duration_s, start_c=start_c, interval_s=interval_s,
+                            gear_model=gear_model, dynamics=dynamics, speed_rpm=speed_rpm)
+    payload = result.as_dict()
+    if plot is not None:
+        save(result.plot(), plot)
+        payload["plot"] = str(plot)
+    if as_json:
+        print_json(payload)
+        return
+    history = result.history
+    table = Table(title=f"predicted warm-up of {result.case_name} at {result.speed_rpm:g} rpm, {result.torque:g} N·m "
+                        f"(gearbox model, {result.gear_model} mesh; start {result.start_c:g} °C, ambient "
+                        f"{result.ambient_c:g} °C)")
+    for name in ("t [s]", "pinion [°C]", "wheel [°C]", "oil [°C]", "housing [°C]", "mesh [W]", "bearings [W]",
+                 "seals [W]", "churning [W]", "j_bn [μm]", "k̄ [N/μm]", "f_n [Hz]", "Kv"):
+        table.add_column(name, justify="right")
+    rows = len(result.states)
+    shown = sorted(set(range(0, rows, max(1, rows // 12))) | {rows - 1})
+    per_state = max(1, (history.times.size - 1) // max(1, rows - 1))
+    for index in shown:
+        state, column = result.states[index], index * per_state
+        table.add_row(f"{state.time_s:.0f}", *(f"{history.node(name)[column]:.1f}"
+                                               for name in ("pinion", "wheel", "oil", "housing")),
+                      f"{history.mesh_loss[column]:.1f}", f"{history.bearing_loss[column]:.1f}",
+                      f"{history.seal_loss[column]:.1f}", f"{history.churning_loss[column]:.1f}",
+                      f"{history.backlash[column] * 1e6:.1f}",
+                      "—" if state.mesh_stiffness_mean is None else f"{state.mesh_stiffness_mean * 1e-6:.1f}",
+                      "—" if state.natural_frequency_hz is None else f"{state.natural_frequency_hz:.1f}",
+                      "—" if state.kv is None else f"{state.kv:.4f}")
+    console.print(table)
+    smallest, at = result.smallest_backlash
+    cold = result.cold_start
+    console.print(f"smallest backlash during the warm-up: {smallest * 1e6:.1f} μm at {at:.0f} s "
+                  f"({'JAMMED' if smallest <= 0 else 'margin to jamming ' + format(smallest * 1e6, '.1f') + ' μm'})")
+    console.print(f"cold start at {cold.soak_c:g} °C (everything soaked): backlash {cold.backlash * 1e6:.1f} μm "
+                  f"(nominal {cold.nominal * 1e6:.1f} μm at assembly), margin to jamming "
+                  f"{cold.margin_to_jamming * 1e6:.1f} μm{' — JAMMED' if cold.jammed else ''}")
+    console.print(f"energy balance of the integration: {history.energy_residual:.1e} (relative)")
+    console.print(payload["assumption"])
+    if plot is not None:
+        console.print(f"figure written to {plot}")

@@ -1,0 +1,173 @@
+"""Warm-up predicted by the gearbox thermal model, coupled to the mesh: ``thermogear warmup CASE --model gearbox``.
+
+The network of the case's ``[gearbox]`` (:mod:`thermogear.gearbox.model`) is integrated from a cold start (every
+node at ``start_c``, default the ambient) over ``duration_s``; every ``interval_s`` the gear pair is re-evaluated
+at the network's state: pinion and wheel bodies at their node temperatures (uniform over each gear), the oil
+(viscosity, damping) at the oil node's, the housing (centre distance) at the housing node's. At each state: the
+mean mesh stiffness, the natural frequency, the mesh frequency and, optionally, the periodic steady response (Kv).
+Losses by source and the backlash come from the network at every output time.
+
+Coupling is one-way and quasi-static: the losses follow the temperatures (viscosity), the mesh follows the
+temperatures, but the mesh's dynamic response does not feed back into the losses (its Kv changes the tooth loads
+by a few per cent), and the thermal time constants (minutes) are far longer than a mesh period (milliseconds).
+The thermal mesh model describes heating from the stress-free (assembly) state: a state with a gear colder than
+``temperature.reference_c`` (a cold start below the assembly temperature) gets the network's backlash and losses
+but no mesh evaluation (reported as such).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, replace
+from typing import Any, Callable
+
+from thermogear.errors import CaseError
+from thermogear.gearbox.backlash import ColdStart, cold_start_backlash
+from thermogear.gearbox.case_model import gearbox_model_from_case, gearbox_operating_point, gearbox_section
+from thermogear.gearbox.model import COLDEST_START_C, WarmUpHistory
+from thermogear.schema.temperature import TemperatureSection
+
+#: Longest warm-up accepted [s] (a day: the network's slowest time constants are hours at most).
+LONGEST_WARM_UP_S = 86400.0
+#: Most mesh re-evaluations in one warm-up (each costs tens of ms with its periodic response).
+MOST_STATES = 2000
+
+
+@dataclass(frozen=True)
+class MeshState:
+    """The gear pair at one time of the warm-up: mean mesh stiffness [N/m] (total over the face width), natural
+    and mesh frequency [Hz], Kv [–] (None without the dynamics), or why it was not evaluated."""
+
+    time_s: float
+    mesh_stiffness_mean: float | None
+    natural_frequency_hz: float | None
+    mesh_frequency_hz: float | None
+    kv: float | None
+    note: str = ""
+
+
+@dataclass(frozen=True)
+class GearboxWarmupResult:
+    """A predicted warm-up: the network's history (temperatures, losses, backlash at every output time) and the
+    mesh states every ``interval_s``, with the cold-start backlash at the start temperature."""
+
+    case_name: str
+    gear_model: str
+    speed_rpm: float
+    torque: float
+    ambient_c: float
+    start_c: float
+    interval_s: float
+    history: WarmUpHistory
+    states: tuple[MeshState, ...]
+    cold_start: ColdStart
+
+    @property
+    def smallest_backlash(self) -> tuple[float, float]:
+        """(smallest normal backlash during the warm-up [m], its time [s])."""
+        return self.history.smallest_backlash
+
+    def as_dict(self) -> dict[str, Any]:
+        """JSON view (temperatures °C, losses W, backlash μm, stiffness N/(mm·μm) per mm of face width)."""
+        history = self.history
+        smallest, at = self.smallest_backlash
+        return {
+            "case": self.case_name, "model": "gearbox", "gear_model": self.gear_model, "speed_rpm": self.speed_rpm,
+            "torque_nm": self.torque, "ambient_c": self.ambient_c, "start_c": self.start_c,
+            "interval_s": self.interval_s,
+            "assumption": "temperatures predicted by the gearbox thermal network from a cold start; the mesh is "
+                          "re-evaluated at the network's state every interval (gears uniform at their node "
+                          "temperatures, oil and housing at theirs)",
+            "energy_residual": history.energy_residual,
+            "smallest_backlash_um": smallest * 1e6, "smallest_backlash_time_s": at,
+            "cold_start": {"soak_c": self.cold_start.soak_c, "backlash_um": self.cold_start.backlash * 1e6,
+                           "nominal_um": self.cold_start.nominal * 1e6,
+                           "margin_to_jamming_um": self.cold_start.margin_to_jamming * 1e6,
+                           "jammed": self.cold_start.jammed},
+            "history": {"time_s": history.times.tolist(),
+                        **{f"{name}_c": history.node(name).tolist()
+                           for name in ("pinion", "wheel", "shafts", "oil", "housing")},
+                        "mesh_loss_w": history.mesh_loss.tolist(), "bearing_loss_w": history.bearing_loss.tolist(),
+                        "seal_loss_w": history.seal_loss.tolist(), "churning_loss_w": history.churning_loss.tolist(),
+                        "backlash_um": (history.backlash * 1e6).tolist()},
+            "states": [{"time_s": state.time_s, "mesh_stiffness_mean_n_per_m": state.mesh_stiffness_mean,
+                        "natural_frequency_hz": state.natural_frequency_hz,
+                        "mesh_frequency_hz": state.mesh_frequency_hz, "kv": state.kv, "note": state.note}
+                       for state in self.states],
+        }
+
+    def plot(self):
+        from thermogear.experiment.gearbox_warmup_plots import plot_gearbox_warmup  # noqa: PLC0415
+
+        return plot_gearbox_warmup(self)
+
+
+def state_case(case, temperatures_c):
+    """The case at one state of the network: pinion and wheel uniform at their node temperatures (a flat flank
+    table over the path, wheel offset), oil and housing at theirs. Built without re-reading the case file: the
+    sections are validated one by one."""
+    pinion, wheel, _, oil, housing = (round(float(value), 6) for value in temperatures_c)
+    pair = case.gear_pair
+    points = pair.path_points
+    # a flat table a unit of Γ beyond both ends of the path (degree 0: the same value wherever it is read)
+    span = [float(pair.gamma(points["A"])) - 1.0, float(pair.gamma(points["E"])) + 1.0]
+    temperature = TemperatureSection(model="tabulated", reference_c=case.temperature.reference_c, gamma=span,
+                                     flank_c=[pinion, pinion], fit_degree=0, pinion_base_c=pinion,
+                                     pinion_bore_c=pinion, wheel_base_c=wheel, wheel_bore_c=wheel,
+                                     wheel_flank_offset_c=round(wheel - pinion, 6))
+    housing_update: dict[str, Any] = {"temperature_c": housing}
+    if "material" not in case.housing.model_fields_set:
+        housing_update["material"] = gearbox_section(case).housing.material
+    changes: dict[str, Any] = dict(
+        temperature=temperature, lubricant=case.lubricant.model_copy(update={"operating_temperature_c": oil}),
+        housing=case.housing.model_copy(update=housing_update))
+    if case.thermal.model == "luo2020" and case.thermal.x_te_source == "calibrated":
+        from thermogear.thermal.calibration import resolve_x_te  # noqa: PLC0415
+
+        changes["thermal"] = case.thermal.model_copy(update={"x_te": resolve_x_te(case)[0], "x_te_source": "given",
+                                                             "calibration_drop_percent": None})
+    return replace(case, **changes)
+
+
+def gearbox_warmup(case, duration_s: float = 1200.0, start_c: float | None = None, interval_s: float = 10.0,
+                   gear_model: str = "thermal", dynamics: bool = True, speed_rpm: float | None = None,
+                   points_per_interval: int = 1, simulation: Callable | None = None) -> GearboxWarmupResult:
+    """Predict a warm-up (module docstring). ``start_c``: every node's start temperature [°C] (default the
+    ambient, down to −40 °C); ``interval_s``: time between mesh re-evaluations [s]; ``points_per_interval``:
+    network output times per interval (losses and backlash are reported at each)."""
+    if simulation is None:
+        from thermogear.simulation import Simulation as simulation  # noqa: PLC0415
+    if not (math.isfinite(duration_s) and 0.0 < duration_s <= LONGEST_WARM_UP_S):
+        raise CaseError("--duration-s", duration_s, f"(0, {LONGEST_WARM_UP_S:g}] s", "the warm-up's duration")
+    if not (math.isfinite(interval_s) and 0.0 < interval_s <= duration_s):
+        raise CaseError("--interval-s", interval_s, f"(0, duration = {duration_s:g}] s",
+                        "the time between mesh re-evaluations")
+    count = int(round(duration_s / interval_s))
+    if count + 1 > MOST_STATES or abs(count * interval_s - duration_s) > 1e-9 * duration_s:
+        raise CaseError("--interval-s", interval_s, f"a divisor of the duration giving at most {MOST_STATES} states",
+                        "the mesh is re-evaluated at evenly spaced times that end at the duration")
+    operating = gearbox_operating_point(case, speed_rpm)
+    start = operating.ambient_c if start_c is None else float(start_c)
+    if not (math.isfinite(start) and COLDEST_START_C <= start <= 150.0):
+        raise CaseError("--start-c", start, f"[{COLDEST_START_C:g}, 150] °C", "the start temperature of every node")
+    model = gearbox_model_from_case(case)
+    history = model.warm_up(operating, duration_s, points=count * int(points_per_interval) + 1, initial_c=start)
+    description = model.description
+    cold = cold_start_backlash(description.gear_pair, model.allowance, description.gear_expansion,
+                               description.housing.expansion, start, description.assembly_c)
+    states = []
+    reference = case.temperature.reference_c
+    base = case.with_changes(**{"operating.speed_rpm": operating.speed_rpm}) if speed_rpm is not None else case
+    for index in range(0, history.times.size, int(points_per_interval)):
+        time, temperatures = float(history.times[index]), history.temperatures_c[:, index]
+        if min(temperatures[0], temperatures[1]) < reference:
+            states.append(MeshState(time, None, None, None, None, f"gears below the stress-free reference "
+                                                                 f"{reference:g} °C: mesh not evaluated"))
+            continue
+        sim = simulation(state_case(base, temperatures), gear_model)
+        kv = float(sim.run(method="periodic").metrics["kv"]) if dynamics else None
+        states.append(MeshState(time, float(sim.mesh_stiffness_mean), float(sim.natural_frequency_hz),
+                                float(sim.mesh_frequency_hz), kv))
+    return GearboxWarmupResult(case.name, gear_model, operating.speed_rpm, operating.torque, operating.ambient_c,
+                               start, float(interval_s), history, tuple(states), cold)
+

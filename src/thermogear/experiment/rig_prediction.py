@@ -1,0 +1,101 @@
+"""The paper's rig runs predicted by the gearbox thermal model, beside the measured temperatures of Luo & Li (2020)
+Table 3. Predictions, not fits: nothing here is adjusted to the measurements.
+
+The rig (Luo & Li 2020 §5.2) is an FZG-type back-to-back rig heated only by its own losses; the paper identifies
+neither the test gears nor the gearbox, nor what its temperature sensor measures. Stated assumptions
+(:data:`RIG_ASSUMPTIONS`):
+
+* gears: FZG type C (ISO 14635-1) as a stand-in (the case ``fzg_type_c``), 138 N·m on the pinion as the paper
+  states, pinion speeds 400 / 900 / 1400 rpm;
+* oil: 1.25 L (the FZG test gearbox's fill, ASTM D5182 §9.4, technically equivalent to ISO 14635-1) of ISO VG 100
+  mineral oil, dip lubrication, the wheel dipped to its centre;
+* housing, bearings, seals and internal coefficients: the illustrative gearbox of
+  :mod:`thermogear.gearbox.fzg_example` (0.45 × 0.30 × 0.40 m, 40 kg cast iron, air 1 m/s, four NJ 406, two lip
+  seals), none of it verified for the paper's rig;
+* the measured temperature is compared with the predicted oil (sump) temperature: the FZG test method controls
+  the oil temperature with a sensor in the side of the test gearbox (ASTM D5182 §6.1.3); whether the paper's
+  sensor did the same is not said; the pinion bulk temperature is reported beside it;
+* ambient 20 °C; two starts, both without measurements: every run from a cold gearbox at the ambient, or the runs
+  in the paper's order 400 → 900 → 1400 rpm, each starting where the previous 20-minute run ended.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from thermogear.experiment.rig_data import CITATION, STATED_TORQUE_NM, measurements_at, rig_speeds_rpm
+
+RIG_AMBIENT_C = 20.0
+RUN_DURATION_S = 1200.0
+#: Output step of the predicted runs [s]: the measured minutes 3, 5, 10 fall on it.
+OUTPUT_STEP_S = 3.0
+RIG_ASSUMPTIONS = (
+    "gears: FZG type C (ISO 14635-1) as a stand-in for the paper's unidentified test gears; 138 N·m pinion torque",
+    "oil: 1.25 L ISO VG 100 mineral, dip lubrication, wheel dipped to its centre (FZG fill: ASTM D5182 §9.4)",
+    "housing, bearings, seals, internal coefficients: the illustrative FZG-type gearbox (assumed, not the rig's)",
+    "measured temperature compared with the predicted oil temperature (FZG method: the oil temperature sensed in "
+    "the side of the test gearbox, ASTM D5182 §6.1.3); the pinion bulk temperature is given beside it",
+    f"ambient {RIG_AMBIENT_C:g} °C; cold start at the ambient, or the runs chained in the paper's order",
+)
+
+
+@dataclass(frozen=True)
+class RigPrediction:
+    """One Table 3 row beside its prediction [°C]: measured, predicted oil, pinion, wheel and housing."""
+
+    speed_rpm: float
+    minute: float
+    start: str  # "cold" or "chained"
+    measured_c: float
+    oil_c: float
+    pinion_c: float
+    wheel_c: float
+    housing_c: float
+
+    @property
+    def deviation(self) -> float:
+        """Predicted oil − measured [K]."""
+        return self.oil_c - self.measured_c
+
+
+def rig_gearbox_description():
+    """The gearbox description of the assumptions (module docstring)."""
+    from thermogear.gearbox.fzg_example import illustrative_fzg_gearbox  # noqa: PLC0415
+
+    return illustrative_fzg_gearbox()
+
+
+def predict_table3(chained: bool = False) -> list[RigPrediction]:
+    """Predicted temperatures at the measured minutes of every run of Table 3 (module docstring), in the
+    paper's order of speeds. ``chained``: each run starts from the previous run's end state."""
+    from thermogear.gearbox.description import GearboxOperatingPoint  # noqa: PLC0415
+    from thermogear.gearbox.model import GearboxThermalModel  # noqa: PLC0415
+
+    model = GearboxThermalModel(rig_gearbox_description())
+    points = int(round(RUN_DURATION_S / OUTPUT_STEP_S)) + 1
+    start = np.full(5, RIG_AMBIENT_C)
+    rows = []
+    for speed in rig_speeds_rpm():
+        history = model.warm_up(GearboxOperatingPoint(speed, STATED_TORQUE_NM, RIG_AMBIENT_C), RUN_DURATION_S,
+                                points=points, initial_c=start)
+        for measured in measurements_at(speed):
+            index = int(round(measured.minute * 60.0 / OUTPUT_STEP_S))
+            pinion, wheel, _, oil, housing = history.temperatures_c[:, index]
+            rows.append(RigPrediction(speed, measured.minute, "chained" if chained else "cold",
+                                      measured.temperature_c, float(oil), float(pinion), float(wheel),
+                                      float(housing)))
+        if chained:
+            start = history.temperatures_c[:, -1].copy()
+    return rows
+
+
+def table3_markdown(rows: list[RigPrediction]) -> str:
+    """A Markdown table of predictions beside measurements (0.1 K: the paper prints 0.1 °C)."""
+    lines = ["| rpm | minute | start | measured [°C] | predicted oil [°C] | oil − measured [K] | pinion [°C] |",
+             "|---|---|---|---|---|---|---|"]
+    for row in rows:
+        lines.append(f"| {row.speed_rpm:g} | {row.minute:g} | {row.start} | {row.measured_c:.1f} | {row.oil_c:.1f} | "
+                     f"{row.deviation:+.1f} | {row.pinion_c:.1f} |")
+    return "\n".join(lines) + f"\n\nMeasured: {CITATION}. Predictions, not fitted to the measurements.\n"

@@ -1,0 +1,200 @@
+"""The gearbox of a case: its ``[gearbox]`` section resolved into a :class:`GearboxDescription`, the operating point,
+and the predicted steady temperatures that ``[temperature].model = "gearbox"`` hands to every command.
+
+What comes from where: the gear pair, its material (density, specific heat, expansion), roughness, cold backlash
+(``gears.backlash_normal_um``) and assembly temperature (``temperature.reference_c``) from the case; the oil from
+``[lubricant]`` (its X_L from the base oil); housing, oil volume and immersion, bearings, seals, ambient and the
+internal coefficients from ``[gearbox]``. Gear masses are those of solid discs (tip circle less the bore, face
+width) of the material's density.
+
+Housing specific heats where the case gives none: grey cast iron 500, carbon steel 434, aluminium 903 J/(kg·K)
+(room-temperature handbook values, e.g. Incropera et al., Fundamentals of Heat and Mass Transfer, Table A.1; the
+cast-iron value is the description's default). A housing given by its cooled area A is a cube of side
+√(A/5) (four walls and the top; √(A/6) with the bottom cooled). The oil-wetted inner area defaults to the floor
+L·W plus the walls up to the oil level V/(L·W).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import replace
+from typing import TYPE_CHECKING
+
+from thermogear.case import cached_per_case
+from thermogear.errors import CaseError
+from thermogear.gearbox.bearing_loss import NJ406_CONSTANTS, RollingBearing
+from thermogear.gearbox.description import (GearboxDescription, GearboxOperatingPoint, Housing, LipSeal,
+                                            MountedBearing)
+from thermogear.thermoelastic.materials import HOUSING_EXPANSION_PER_K
+
+if TYPE_CHECKING:
+    from thermogear.case import Case
+    from thermogear.gearbox.model import GearboxSteadyState
+
+#: Specific heats of the housing materials [J/(kg·K)] (module docstring).
+HOUSING_SPECIFIC_HEAT = {"cast_iron": 500.0, "steel": 434.0, "aluminium": 903.0}
+#: Built-in bearing constants by designation (SKF model, catalogue units).
+BEARING_CONSTANTS = {"NJ406": (RollingBearing.cylindrical_roller, NJ406_CONSTANTS)}
+BEARING_TYPES = {"cylindrical_roller": RollingBearing.cylindrical_roller,
+                 "deep_groove_ball": RollingBearing.deep_groove_ball}
+
+
+def gearbox_section(case: "Case"):
+    section = getattr(case, "gearbox", None)
+    if section is None:
+        raise CaseError("gearbox", None, "a [gearbox] section (housing, oil, bearings, seals)",
+                        "the gearbox thermal model needs the gearbox around the gear pair")
+    return section
+
+
+def check_gearbox_section(case: "Case") -> None:
+    """Load-time check of a ``[gearbox]`` section under any temperature model: the description builds."""
+    if getattr(case, "gearbox", None) is not None:
+        gearbox_description_from_case(case)
+
+
+def housing_expansion(case: "Case") -> float:
+    """Linear expansion of the housing [1/K]: ``[housing].thermal_expansion_per_k``, else the material of
+    ``[housing]`` when it is given there, else that of ``[gearbox.housing]``."""
+    if case.housing.thermal_expansion_per_k is not None:
+        return float(case.housing.thermal_expansion_per_k)
+    material = case.housing.material if "material" in case.housing.model_fields_set else gearbox_section(
+        case).housing.material
+    return HOUSING_EXPANSION_PER_K[material]
+
+
+def _housing(case: "Case") -> Housing:
+    section = gearbox_section(case)
+    housing = section.housing
+    if housing.outer_area_m2 is not None:
+        side = math.sqrt(housing.outer_area_m2 / (6.0 if housing.bottom_cooled else 5.0))
+        length = width = height = side
+    else:
+        length, width, height = housing.length_mm * 1e-3, housing.width_mm * 1e-3, housing.height_mm * 1e-3
+    wetted = housing.oil_wetted_area_m2
+    if wetted is None:
+        level = section.oil.volume_l * 1e-3 / (length * width)
+        if level >= height:
+            raise CaseError("gearbox.oil.volume_l", section.oil.volume_l,
+                            f"< {length * width * height * 1e3:.4g} L", "the oil would fill the housing")
+        wetted = length * width + 2.0 * (length + width) * level
+    specific_heat = housing.specific_heat_j_per_kg_k or HOUSING_SPECIFIC_HEAT[housing.material]
+    return Housing(length=length, width=width, height=height, mass=housing.mass_kg, specific_heat=specific_heat,
+                   emissivity=housing.emissivity, expansion=housing_expansion(case), air_speed=housing.air_speed_m_s,
+                   oil_wetted_area=wetted, bottom_cooled=housing.bottom_cooled)
+
+
+def _bearings(section) -> tuple[MountedBearing, ...]:
+    mounted = []
+    for entry in section.bearings:
+        if entry.designation is not None:
+            factory, constants = BEARING_CONSTANTS[entry.designation]
+            bearing = factory(**constants)
+        else:
+            factory = BEARING_TYPES[entry.type]
+            constants = dict(bore_mm=entry.bore_mm, outside_mm=entry.outside_mm, width_mm=entry.width_mm,
+                             rolling_constant=entry.rolling_constant, geometry_constant=entry.geometry_constant,
+                             drag_variable=entry.drag_variable)
+            if entry.type == "deep_groove_ball":
+                bearing = factory(sliding_constant=entry.sliding_constants[0], **constants)
+            else:
+                bearing = factory(sliding_constants=tuple(entry.sliding_constants), **constants)
+        fraction = 1.0 / entry.count if entry.load_fraction is None else entry.load_fraction
+        mounted.extend(MountedBearing(bearing, entry.shaft == "wheel", fraction) for _ in range(entry.count))
+    return tuple(mounted)
+
+
+def gearbox_description_from_case(case: "Case") -> GearboxDescription:
+    """The :class:`GearboxDescription` of a case with a ``[gearbox]`` section (module docstring)."""
+    from thermogear.lubricant import lubricant_from_case  # noqa: PLC0415
+
+    section = gearbox_section(case)
+    pair, material = case.gear_pair, case.material
+
+    def disc_mass(gear) -> float:
+        return material.density * math.pi * (gear.tip_radius**2 - gear.bore_radius**2) * gear.face_width
+
+    oil = lubricant_from_case(case)
+    wheel_immersion = (pair.operating_pitch_radii[1] if section.oil.wheel_immersion_mm is None
+                       else section.oil.wheel_immersion_mm * 1e-3)
+    for key, depth, gear in (("wheel_immersion_mm", wheel_immersion, pair.wheel),
+                             ("pinion_immersion_mm", section.oil.pinion_immersion_mm * 1e-3, pair.pinion)):
+        if depth > 2.0 * gear.tip_radius:
+            raise CaseError(f"gearbox.oil.{key}", round(depth * 1e3, 6), f"<= the tip diameter "
+                            f"{2e3 * gear.tip_radius:.4g} mm", "a gear cannot dip deeper than it is tall")
+    backlash_um = None if case.gears_input is None else case.gears_input.backlash_normal_um
+    return GearboxDescription(
+        gear_pair=pair, lubricant=oil, housing=_housing(case), oil_volume=section.oil.volume_l * 1e-3,
+        pinion_mass=disc_mass(pair.pinion), wheel_mass=disc_mass(pair.wheel), shaft_mass=section.shaft_mass_kg,
+        wheel_immersion=wheel_immersion, pinion_immersion=section.oil.pinion_immersion_mm * 1e-3,
+        bearings=_bearings(section),
+        seals=tuple(LipSeal(seal.diameter_mm, seal.shaft == "wheel") for seal in section.seals),
+        roughness=case.roughness_ra, lubricant_factor=oil.lubricant_factor,
+        pinion_heat_share=section.pinion_heat_share, steel_specific_heat=material.specific_heat,
+        oil_specific_heat=section.oil.specific_heat_j_per_kg_k, gear_expansion=material.thermal_expansion,
+        gear_oil_coefficient=section.internal.gear_oil_w_per_m2_k,
+        oil_housing_coefficient=section.internal.oil_housing_w_per_m2_k,
+        gear_shaft_conductance=section.internal.gear_shaft_w_per_k,
+        shaft_oil_conductance=section.internal.shaft_oil_w_per_k,
+        shaft_housing_conductance=section.internal.shaft_housing_w_per_k,
+        backlash=None if backlash_um is None else backlash_um * 1e-6, assembly_c=case.temperature.reference_c)
+
+
+def gearbox_operating_point(case: "Case", speed_rpm: float | None = None,
+                            torque: float | None = None) -> GearboxOperatingPoint:
+    """The case's pinion speed and torque (or the ones given) with the ``[gearbox]`` ambient temperature."""
+    speed = case.operating_point.speed_rpm if speed_rpm is None else float(speed_rpm)
+    load = case.operating_point.torque_at(speed) if torque is None else float(torque)
+    return GearboxOperatingPoint(speed, load, gearbox_section(case).ambient_c)
+
+
+@cached_per_case
+def gearbox_model_from_case(case: "Case"):
+    """The :class:`~thermogear.gearbox.model.GearboxThermalModel` of a case (memoised per case)."""
+    from thermogear.gearbox.model import GearboxThermalModel  # noqa: PLC0415
+
+    return GearboxThermalModel(gearbox_description_from_case(case))
+
+
+@cached_per_case
+def predicted_steady_state(case: "Case") -> "GearboxSteadyState":
+    """The steady state of the case's gearbox at its operating point (raises NoSteadyStateError on runaway)."""
+    return gearbox_model_from_case(case).steady_state(gearbox_operating_point(case))
+
+
+def describe_prediction(state: "GearboxSteadyState") -> str:
+    """One line: the predicted temperatures and the losses that made them (rounded to 0.1 K and 0.1 W)."""
+    losses = state.losses
+    return (f"temperatures predicted by the gearbox thermal model (steady state): pinion {state.pinion_c:.1f} °C, "
+            f"wheel {state.wheel_c:.1f} °C, oil {state.oil_c:.1f} °C, housing {state.housing_c:.1f} °C, from "
+            f"losses {losses.total:.1f} W (mesh {losses.mesh:.1f}, bearings {losses.bearings:.1f}, seals "
+            f"{losses.seals:.1f}, churning {losses.churning:.1f} W)")
+
+
+def prediction_note(case: "Case") -> str | None:
+    """What the outputs of a case say about its temperatures when the gearbox model predicted them (else None)."""
+    if case.temperature.model != "gearbox":
+        return None
+    return describe_prediction(predicted_steady_state(case))
+
+
+def with_predicted_temperatures(case: "Case") -> "Case":
+    """The case as every command sees it under ``temperature.model = "gearbox"``: the predicted oil temperature
+    as ``lubricant.operating_temperature_c`` (viscosity, damping), the housing node's as ``housing.temperature_c``
+    (centre distance, backlash) and the prediction added to the assumptions. The gear temperatures come from the
+    ``"gearbox"`` temperature provider (:mod:`thermogear.gearbox.provider`)."""
+    gearbox_section(case)
+    if case.housing.temperature_c is not None:
+        raise CaseError("housing.temperature_c", case.housing.temperature_c, "absent with temperature.model = "
+                        "'gearbox'", "the gearbox model predicts the housing temperature")
+    if "operating_temperature_c" in case.lubricant.model_fields_set:
+        raise CaseError("lubricant.operating_temperature_c", case.lubricant.operating_temperature_c,
+                        "absent with temperature.model = 'gearbox'", "the gearbox model predicts the oil temperature")
+    state = predicted_steady_state(case)
+    housing_update = {"temperature_c": round(state.housing_c, 6)}
+    if "material" not in case.housing.model_fields_set:
+        housing_update["material"] = gearbox_section(case).housing.material
+    return replace(case,
+                   lubricant=case.lubricant.model_copy(update={"operating_temperature_c": round(state.oil_c, 6)}),
+                   housing=case.housing.model_copy(update=housing_update),
+                   assumptions=case.assumptions + (describe_prediction(state),))

@@ -1,0 +1,45 @@
+"""The ``"gearbox"`` source of the tooth temperature field (``[temperature].model = "gearbox"``): each gear at its
+predicted steady bulk temperature (the network's pinion and wheel nodes), uniform over the gear body.
+
+Registered explicitly by the composition root :mod:`thermogear.simulation` (beside the finite-element
+provider) with :func:`register`; importing this module registers nothing. A ``[gearbox]`` section is checked at
+load time once registered.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from thermogear.case import register_case_check, register_temperature_model
+from thermogear.gearbox.case_model import check_gearbox_section, predicted_steady_state, with_predicted_temperatures
+from thermogear.temperature_field import TemperatureField
+from thermogear.thermal.temperature import register_temperature_provider
+
+if TYPE_CHECKING:
+    from thermogear.case import Case
+
+#: The name of this source in ``[temperature].model``.
+MODEL_NAME = "gearbox"
+
+
+def gearbox_temperature_field(case: "Case") -> TemperatureField:
+    """Pinion flank, base circle and bore at the pinion node's temperature, the wheel's at the wheel node's
+    (``wheel_flank_offset_c`` = wheel − pinion) [°C], stress-free at ``temperature.reference_c``."""
+    state = predicted_steady_state(case)
+    pinion, wheel = round(state.pinion_c, 6), round(state.wheel_c, 6)
+    losses = state.losses
+    source = (f"gearbox (predicted steady state: oil {state.oil_c:.1f} °C, housing {state.housing_c:.1f} °C; "
+              f"losses mesh {losses.mesh:.1f} W, bearings {losses.bearings:.1f} W, seals {losses.seals:.1f} W, "
+              f"churning {losses.churning:.1f} W)")
+    return TemperatureField(reference_c=case.temperature.reference_c, pinion_base_c=pinion, pinion_bore_c=pinion,
+                            wheel_base_c=wheel, wheel_bore_c=wheel, flank_coefficients=(pinion,),
+                            wheel_flank_offset_c=wheel - pinion, source=source)
+
+
+def register() -> None:
+    """Plug the gearbox model in: ``[temperature].model = "gearbox"`` (the case's oil and housing temperatures
+    predicted at load time, the gear temperatures by :func:`gearbox_temperature_field`) and the load-time check
+    of a ``[gearbox]`` section under any temperature model."""
+    register_temperature_model(MODEL_NAME, with_predicted_temperatures)
+    register_temperature_provider(MODEL_NAME, gearbox_temperature_field)
+    register_case_check(check_gearbox_section)

@@ -1,0 +1,104 @@
+"""Steady temperatures, losses and backlash of a gearbox over a grid of pinion speeds × torques.
+
+Each grid point is one steady solve of the network (:meth:`GearboxThermalModel.steady_state`, about 20 ms), in a
+plain loop: the study machinery (:mod:`thermogear.sweep`) stores the outputs of the dynamics and would need new
+variables and a new kernel for these, so this sweep is a function of its own (the dynamics of a case with
+``temperature.model = "gearbox"`` does run on the study machinery: every point's case predicts its own
+temperatures). A point without a steady state (thermal runaway) is masked, never a number.
+"""
+
+from __future__ import annotations
+
+import warnings
+from dataclasses import dataclass
+
+import numpy as np
+
+from thermogear.errors import CaseError, ExtrapolationWarning
+from thermogear.gearbox.description import GearboxOperatingPoint
+from thermogear.gearbox.losses import NODES
+from thermogear.gearbox.network import NoSteadyStateError
+
+#: Largest grid accepted (each point is one nonlinear solve).
+MOST_POINTS = 10_000
+
+
+@dataclass(frozen=True)
+class SteadySweep:
+    """Speeds (m,) [rpm] × torques (k,) [N·m]; masked arrays (m, k): losses by source [W], efficiency [–],
+    normal backlash [m], and temperatures (5, m, k) [°C] of pinion, wheel, shafts, oil, housing. Masked where the
+    network has no steady state (``runaway``)."""
+
+    speeds_rpm: np.ndarray
+    torques: np.ndarray
+    ambient_c: float
+    temperatures_c: np.ma.MaskedArray
+    mesh_loss: np.ma.MaskedArray
+    bearing_loss: np.ma.MaskedArray
+    seal_loss: np.ma.MaskedArray
+    churning_loss: np.ma.MaskedArray
+    efficiency: np.ma.MaskedArray
+    backlash: np.ma.MaskedArray
+
+    @property
+    def runaway(self) -> np.ndarray:
+        """True where no steady state exists (m, k)."""
+        return np.ma.getmaskarray(self.mesh_loss)
+
+    @property
+    def total_loss(self) -> np.ma.MaskedArray:
+        return self.mesh_loss + self.bearing_loss + self.seal_loss + self.churning_loss
+
+    def node(self, name: str) -> np.ma.MaskedArray:
+        """Temperatures of one node (m, k) [°C]."""
+        if name not in NODES:
+            raise CaseError("node", name, f"one of {', '.join(NODES)}", "the nodes of the gearbox network")
+        return self.temperatures_c[NODES.index(name)]
+
+    def as_dict(self) -> dict:
+        """JSON view: nested lists [speed][torque], None where there is no steady state."""
+        def listed(values):
+            return [[None if value is np.ma.masked else float(value) for value in row] for row in values]
+
+        return {"speeds_rpm": self.speeds_rpm.tolist(), "torques_nm": self.torques.tolist(),
+                "ambient_c": self.ambient_c,
+                **{f"{name}_c": listed(self.node(name)) for name in NODES},
+                "mesh_loss_w": listed(self.mesh_loss), "bearing_loss_w": listed(self.bearing_loss),
+                "seal_loss_w": listed(self.seal_loss), "churning_loss_w": listed(self.churning_loss),
+                "efficiency": listed(self.efficiency), "backlash_um": listed(self.backlash * 1e6),
+                "runaway": self.runaway.tolist()}
+
+
+def steady_sweep(model, speeds_rpm, torques, ambient_c: float = 20.0) -> SteadySweep:
+    """Steady states of ``model`` (a :class:`~thermogear.gearbox.model.GearboxThermalModel`) on the grid."""
+    speeds = np.atleast_1d(np.asarray(speeds_rpm, dtype=float))
+    loads = np.atleast_1d(np.asarray(torques, dtype=float))
+    if speeds.ndim != 1 or loads.ndim != 1 or speeds.size * loads.size > MOST_POINTS:
+        raise CaseError("speeds/torques", (speeds.size, loads.size), f"1-D, at most {MOST_POINTS} points in all",
+                        "each point is one nonlinear steady solve")
+    shape = (speeds.size, loads.size)
+    temperatures = np.ma.masked_all((5,) + shape)
+    outputs = {name: np.ma.masked_all(shape) for name in ("mesh", "bearings", "seals", "churning", "efficiency",
+                                                          "backlash")}
+    with warnings.catch_warnings():
+        # the viscosity-range warning of each point is raised once below for the whole grid
+        warnings.simplefilter("ignore", ExtrapolationWarning)
+        for i, speed in enumerate(speeds):
+            for j, torque in enumerate(loads):
+                try:
+                    state = model.steady_state(GearboxOperatingPoint(float(speed), float(torque), ambient_c))
+                except NoSteadyStateError:
+                    continue
+                temperatures[:, i, j] = state.temperatures_c
+                losses = state.losses
+                for name, value in (("mesh", losses.mesh), ("bearings", losses.bearings), ("seals", losses.seals),
+                                    ("churning", losses.churning), ("efficiency", losses.efficiency),
+                                    ("backlash", state.backlash)):
+                    outputs[name][i, j] = value
+    fitted = model.description.lubricant.fitted_range_c
+    if temperatures.count() and (temperatures[2:4].min() < fitted[0] or temperatures[2:4].max() > fitted[1]):
+        warnings.warn(f"gearbox: oil temperatures {float(temperatures[2:4].min()):.1f}…"
+                      f"{float(temperatures[2:4].max()):.1f} °C over the grid leave the viscosity fit's range "
+                      f"{fitted[0]:g}…{fitted[1]:g} °C (ASTM D341 extrapolated)", ExtrapolationWarning, stacklevel=2)
+    return SteadySweep(speeds, loads, float(ambient_c), temperatures, outputs["mesh"], outputs["bearings"],
+                       outputs["seals"], outputs["churning"], outputs["efficiency"], outputs["backlash"])
