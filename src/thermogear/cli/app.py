@@ -39,8 +39,8 @@ class CommandEntry:
 #: Every command, in the order ``thermogear --help`` lists them.
 COMMANDS: dict[str, CommandEntry] = {
     "cases": CommandEntry("thermogear.cli.cases", "List the built-in parameter sets with their sources."),
-    "schema": CommandEntry("thermogear.cli.cases", "Print the JSON schema of case files (every key, its unit and "
-                                                   "range)."),
+    "schema": CommandEntry("thermogear.cli.cases", "Print every case-file key with its unit, type, allowed range, "
+                                                   "default and meaning (one table per section)."),
     "oils": CommandEntry("thermogear.cli.damping", "List the built-in oils with their viscosities, density, base "
                                                    "oil and source."),
     "check": CommandEntry("thermogear.cli.check", "Validate a case and print its gear-pair geometry (exit status "
@@ -136,8 +136,18 @@ app = typer.Typer(
 )
 
 
+def _print_version(value: bool) -> None:
+    """``--version``: the installed thermogear version, then exit (reads package metadata only)."""
+    if value:
+        from thermogear import __version__  # noqa: PLC0415
+
+        sys.stdout.write(f"thermogear {__version__}\n")
+        raise typer.Exit()
+
+
 @app.callback()
-def _group() -> None:
+def _group(version: bool = typer.Option(False, "--version", is_eager=True, callback=_print_version,
+                                        help="print the thermogear version and exit")) -> None:
     """Thermo-elastic dynamics of spur gear pairs: thermal mesh stiffness, friction damping, transmission error
     and dynamic load (after Luo & Li 2020)."""
 
