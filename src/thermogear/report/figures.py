@@ -183,20 +183,32 @@ def _pair(evaluation, source: str):
     return first, other
 
 
+#: Axis label and scale of the start-up panels (the units of Luo & Li Figs. 9 and 11 and of the steady panels).
+_START_UP_AXES = {"displacement": ("transmission error x [μm]", 1e6), "velocity": ("velocity ẋ [mm/s]", 1e3)}
+
+
 def _start_up(ax, evaluation, quantity: str, periods: int = 6) -> None:
-    """The first ``periods`` mesh periods from rest (the transient), x [μm] or ẋ [mm/s] against time [ms]."""
-    scale = 1e6 if quantity == "displacement" else 1e3
-    for model in ("elastic", "thermal"):
-        response = evaluation.transients.get(model)
-        if response is None:
-            continue
+    """The first ``periods`` mesh periods from rest (the transient), x [μm] or ẋ [mm/s] against time [ms], in the
+    colours and line styles of the steady panel beside it (elastic first, as :func:`_pair` orders them)."""
+    label, scale = _START_UP_AXES[quantity]
+    models = [model for model in ("elastic", "thermal") if evaluation.transients.get(model) is not None]
+    for number, model in enumerate(models):
+        response = evaluation.transients[model]
         history = response.history
         count = int(np.searchsorted(history.time, periods * response.problem.period, side="right"))
-        ax.plot(history.time[:count] * 1e3, getattr(history, quantity)[:count] * scale, color=_COLORS[model],
-                ls="-" if model == "elastic" else "--", label=f"{model}, from rest")
+        ax.plot(history.time[:count] * 1e3, getattr(history, quantity)[:count] * scale,
+                label=f"{model}, from rest", **_model_style(number))
     ax.set_xlabel("time [ms]")
+    ax.set_ylabel(label)
     ax.set_title(f"start-up from rest (first {periods} mesh periods)", fontsize=9)
     ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=8)
+
+
+def _model_style(number: int) -> dict:
+    from thermogear.dynamics.plots import MODEL_STYLES  # noqa: PLC0415
+
+    return MODEL_STYLES[number % 2]
 
 
 def _steady_and_start_up(evaluation, quantity: str):
@@ -208,7 +220,6 @@ def _steady_and_start_up(evaluation, quantity: str):
     draw = first.plot_displacement if quantity == "displacement" else first.plot_velocity
     draw(other=other, ax=right, periods=2)
     right.set_title("steady state, two mesh periods", fontsize=9)
-    left.set_ylabel(right.get_ylabel())
     return figure
 
 
