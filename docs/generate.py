@@ -24,7 +24,7 @@ def _cell(text) -> str:
 def validation_page() -> str:
     from thermogear.case import load_case
     from thermogear.report.evaluate import evaluate_case, paper_verdicts
-    from thermogear.report.paper_table import KIND_MEANING, format_value, known_gaps, table_counts
+    from thermogear.report.paper_table import KIND_MEANING, format_value, known_gaps, known_gaps_text, table_counts
 
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
@@ -47,7 +47,8 @@ def validation_page() -> str:
         "",
         f"**Predictions: {prediction['within']} of {prediction['total']} within their argued tolerance, "
         f"{prediction['outside']} outside, {prediction['not computed']} not computed.** "
-        f"Qualitative statements: {statement['within']} of {statement['total']} reproduced.",
+        f"Qualitative statements: {statement['within']} of {statement['total']} reproduced. "
+        f"{known_gaps_text(verdicts)[:1].upper() + known_gaps_text(verdicts)[1:]}, listed below with their causes.",
         "",
         f"Not counted in the headline: {counts['input']['total']} *input* rows ({counts['input']['within']} exact "
         f"transcriptions) and {counts['calibration']['total']} *calibration* row (X_te is set so that the drop at "
@@ -56,8 +57,9 @@ def validation_page() -> str:
         "Kinds: " + "; ".join(f"*{kind}* — {text}" for kind, text in KIND_MEANING.items()) + ". Each tolerance is "
         "the paper's own precision (digits given, or a value read off a figure) plus the model's uncertainty from "
         "what the paper leaves open, argued in one sentence below; a row outside it is a known gap with its cause, "
-        "never a wider band. Deviation = (thermogear − paper)/|paper|; where the paper gives only a range or an "
-        "order of magnitude the table says 'inside the range'.",
+        "never a wider band. Deviation = (thermogear − paper)/|paper|. Where the paper gives only a range or an "
+        "order of magnitude (an axis limit, 1 < ε < 2) the row is a statement, not a prediction, and the table says "
+        "'inside the range'.",
         "",
         "## Known gaps and their causes",
         "",
