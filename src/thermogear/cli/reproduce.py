@@ -23,6 +23,12 @@ def reproduce(
 ) -> None:
     """Reproduce a paper: every figure, every number beside the paper's, the assumptions and the differences,
     in one self-contained report.html (+ figures/, results.nc, summary.json)."""
+    import time  # noqa: PLC0415
+
+    from thermogear.cli.timing import seconds_since_process_start  # noqa: PLC0415
+
+    start_up = seconds_since_process_start()
+    begin = time.perf_counter()
     from thermogear.case import load_case
     from thermogear.report.build import build_report, report_steps
     from thermogear.cli.console import step_progress
@@ -37,6 +43,7 @@ def reproduce(
     case = load_case(PAPERS[paper])
     target = out if out is not None else Path(f"thermogear-{paper}")
     with interruptible(target), step_progress(report_steps(case), quiet, error_console) as advance:
-        outcome = build_report(case, target, force=force, paper=True, progress=advance)
+        outcome = build_report(case, target, force=force, paper=True, progress=advance,
+                               timings={"start-up": start_up, "imports": time.perf_counter() - begin})
     if not quiet:
         print_summary(outcome, console)

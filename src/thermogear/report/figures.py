@@ -327,5 +327,8 @@ def save_figure(figure, folder, name: str) -> list[str]:
         path = folder / f"{name}{suffix}"
         figure.savefig(path, **options)
         files.append(path.name)
+        # the layout is done: the PNG's constrained layout placed every axes in figure coordinates, which do not
+        # depend on the resolution, so the SVG keeps it (a second layout pass is a third of a figure's time)
+        figure.set_layout_engine("none")
     plt.close(figure)
     return files

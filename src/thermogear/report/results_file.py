@@ -144,6 +144,7 @@ def summary_document(evaluation, verdicts, results, messages, figures, missing_f
         "not_computed_stages": dict(evaluation.problems),
         "figures": {"drawn": sorted(figures), "missing": missing_figures},
         "timings_s": dict(evaluation.timings),
+        "timings_background_s": dict(evaluation.background_timings),
         "references": [{"key": ref.key, "text": ref.formatted()} for ref in citations],
     }, non_finite="null")
 
