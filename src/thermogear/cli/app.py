@@ -59,6 +59,9 @@ COMMANDS: dict[str, CommandEntry] = {
                                                           "summary.json)."),
     "sweep": CommandEntry("thermogear.cli.sweep", "Run a parameter study of a case (grid over speed, load, "
                                                   "temperatures, geometry) into a zarr store."),
+    "export": CommandEntry("thermogear.cli.export", "Write a sweep store or a report's results file as CSV: one row "
+                                                    "per point or per time sample, the units in the column names, "
+                                                    "the case and the version in comment lines (# …) on top."),
     "fem": CommandEntry("thermogear.cli.fem", "Finite-element verification: bulk temperature, FE vs PEM tooth "
                                               "compliance, flank expansion, X_te."),
     "warmup": CommandEntry("thermogear.cli.warmup", "Warm-up of a test rig as a sequence of steady operating "

@@ -60,10 +60,9 @@ def build_report(case, out: Path | str, *, force: bool = False, method: str = "p
     """
     begin = time.perf_counter()
     from thermogear import __version__, forked
-    from thermogear.report.figures import report_figures, save_figure
+    from thermogear.report.figures import FIGURES, SECOND_PROCESS_FIGURES, write_figures
     from thermogear.report.html import render_report
-    from thermogear.report.results_file import (case_toml_text, summary_document, write_results_netcdf,
-                                                write_summary_json)
+    from thermogear.report.results_file import case_toml_text, summary_document, write_summary_json
 
     before = dict(timings or {})
     before["imports"] = before.get("imports", 0.0) + time.perf_counter() - begin
@@ -79,24 +78,24 @@ def build_report(case, out: Path | str, *, force: bool = False, method: str = "p
     results = key_results(evaluation)
     messages = [text for model, response in evaluation.responses.items() for text in model_messages(response, model)]
     with folder:
-        results_file = forked.start("results file", write_results_netcdf, evaluation, folder.path / "results.nc")
+        step("figures")
+        figure_start = time.perf_counter()
+        figure_folder = folder.path / "figures"
+        figure_folder.mkdir()
+        second = forked.start("figures and results file", _second_process_work, evaluation, folder.path)
         try:
-            step("figures")
-            figure_start = time.perf_counter()
-            figures, missing = report_figures(evaluation)
-            figure_folder = folder.path / "figures"
-            figure_folder.mkdir()
-            pngs = {}
-            for name, figure in figures.items():
-                save_figure(figure, figure_folder, name)
-                pngs[name] = (figure_folder / f"{name}.png").read_bytes()
-            evaluation.timings["figures"] = time.perf_counter() - figure_start
-            step("files")
-            write_start = time.perf_counter()
-            results_file.result()
+            missing = write_figures(evaluation, figure_folder,
+                                    [name for name in FIGURES if name not in SECOND_PROCESS_FIGURES])
+            missing.update(second.result())
         finally:
-            results_file.cancel()
-        evaluation.background_timings["results file"] = results_file.seconds
+            second.cancel()
+        missing = {name: missing[name] for name in FIGURES if name in missing}
+        figures = [name for name in FIGURES if name not in missing]
+        pngs = {name: (figure_folder / f"{name}.png").read_bytes() for name in figures}
+        evaluation.timings["figures"] = time.perf_counter() - figure_start
+        evaluation.background_timings["figures and results file"] = second.seconds
+        step("files")
+        write_start = time.perf_counter()
         citations = citations_used()
         page = render_report(evaluation, version=__version__, toml_text=case_toml_text(case), pngs=pngs,
                              missing_figures=missing, results=results, verdicts=verdicts, messages=messages,
@@ -108,3 +107,13 @@ def build_report(case, out: Path | str, *, force: bool = False, method: str = "p
     return ReportOutcome(folder=folder.target, evaluation=evaluation, verdicts=verdicts, results=results,
                          messages=messages, figures=sorted(figures), missing_figures=missing,
                          seconds=time.perf_counter() - start + sum(before.values()), timings=dict(evaluation.timings))
+
+
+def _second_process_work(evaluation, folder: Path) -> dict[str, str]:
+    """What the second process does while the first draws its figures: results.nc, then its share of the
+    figures. Returns the missing figures with their reasons."""
+    from thermogear.report.figures import SECOND_PROCESS_FIGURES, write_figures
+    from thermogear.report.results_file import write_results_netcdf
+
+    write_results_netcdf(evaluation, folder / "results.nc")
+    return write_figures(evaluation, folder / "figures", SECOND_PROCESS_FIGURES)

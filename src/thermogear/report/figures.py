@@ -11,7 +11,8 @@ from typing import Any, Callable
 
 import numpy as np
 
-__all__ = ["FIG6_SPAN_MS", "FIGURES", "report_figures", "save_figure"]
+__all__ = ["FIG6_SPAN_MS", "FIGURES", "SECOND_PROCESS_FIGURES", "report_figures", "save_figure",
+           "write_figures"]
 
 #: Time span of the right panel of Fig. 6 [ms] (the paper's 0–5 ms).
 FIG6_SPAN_MS = 5.0
@@ -276,10 +277,12 @@ _DRAW: dict[str, tuple[Callable[[Any], Any], tuple[str, ...]]] = {
 }
 
 
-def report_figures(evaluation) -> tuple[dict[str, Any], dict[str, str]]:
-    """Draw every figure: ``({name: matplotlib figure}, {name: reason it is missing})``."""
+def report_figures(evaluation, names=None) -> tuple[dict[str, Any], dict[str, str]]:
+    """Draw every figure (or those in ``names``): ``({name: matplotlib figure}, {name: reason it is missing})``."""
     figures, missing = {}, {}
     for name, (draw, stages) in _DRAW.items():
+        if names is not None and name not in names:
+            continue
         if name == "fig15" and evaluation.fem is None:
             missing[name] = evaluation.problem("FE verification") or "the FE verification was not run"
             continue
@@ -332,3 +335,17 @@ def save_figure(figure, folder, name: str) -> list[str]:
         figure.set_layout_engine("none")
     plt.close(figure)
     return files
+
+
+#: The figures a second process draws while the first draws the rest (the results file is written there too):
+#: about half of the drawing time each on two cores (fig. 4's four panels are the slowest figure).
+SECOND_PROCESS_FIGURES = ("fig4", "fig9", "fig10")
+
+
+def write_figures(evaluation, folder, names=None) -> dict[str, str]:
+    """Draw the figures ``names`` (all: None) and save each as PNG and SVG into ``folder``; returns the missing
+    ones with their reasons."""
+    figures, missing = report_figures(evaluation, names)
+    for name, figure in figures.items():
+        save_figure(figure, folder, name)
+    return missing
