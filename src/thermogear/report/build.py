@@ -16,6 +16,7 @@ from typing import Callable
 from thermogear.citations import citations_used, clear_citations
 from thermogear.report.evaluate import (Evaluation, evaluate_case, is_paper_case, key_results, model_messages,
                                         paper_verdicts)
+from thermogear.report.steps import steps_of_report
 from thermogear.report.writer import OutputFolder
 
 __all__ = ["ReportOutcome", "build_report", "report_steps"]
@@ -42,10 +43,7 @@ class ReportOutcome:
 
 def report_steps(case, models=("elastic", "thermal")) -> list[str]:
     """The progress steps of :func:`build_report` for ``case`` (for a progress bar's total)."""
-    steps = [f"{model} model" for model in models] + ["thermal stiffness", "damping", "start-up transients"]
-    if is_paper_case(case):
-        steps += ["thermoelastic prediction", "rig trend", "FE verification"]
-    return steps + ["figures", "files"]
+    return steps_of_report(is_paper_case(case), models)
 
 
 def build_report(case, out: Path | str, *, force: bool = False, method: str = "periodic", paper: bool | None = None,
