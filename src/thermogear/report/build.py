@@ -80,6 +80,8 @@ def build_report(case, out: Path | str, *, force: bool = False, method: str = "p
         figure_start = time.perf_counter()
         figure_folder = folder.path / "figures"
         figure_folder.mkdir()
+        import matplotlib.pyplot  # noqa: F401, PLC0415  (once, before the fork: both processes draw with it)
+
         second = forked.start("figures and results file", _second_process_work, evaluation, folder.path)
         try:
             missing = write_figures(evaluation, figure_folder,

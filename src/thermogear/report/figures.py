@@ -43,6 +43,14 @@ def _pyplot():
     return plt
 
 
+def _stairs(ax, values, edges, **style):
+    """A piecewise-constant curve (``values`` between ``edges``) drawn as one line with vertical jumps: the shape
+    of :meth:`~matplotlib.axes.Axes.stairs` without a patch, whose data limits matplotlib updates segment by
+    segment in Python (seconds for the 0–5 ms panel of Fig. 6)."""
+    edges, values = np.asarray(edges), np.asarray(values)
+    return ax.plot(np.repeat(edges, 2)[1:-1], np.repeat(values, 2), **style)
+
+
 def _mark_points(ax, case) -> None:
     """Vertical lines at A–E with their letters above the axes; letters closer than 6 % of the path to the
     previous one go one row higher, so that B and C (or C and D) never overlap on a short single-contact zone."""
@@ -107,10 +115,10 @@ def fig6(evaluation):
     figure, (left, right) = plt.subplots(1, 2, figsize=(11, 4.0), constrained_layout=True)
     nodes_ms = grid.nodes * 1e3
     for slot, values in enumerate(simulation.pair_stiffness):
-        left.stairs(values * scale, nodes_ms, baseline=None, lw=1.0, label=f"k_T pair {slot + 1}")
-    left.stairs(simulation.mesh_stiffness * scale, nodes_ms, baseline=None, color="k", lw=1.6, label="k_T total")
+        _stairs(left, values * scale, nodes_ms, lw=1.0, label=f"k_T pair {slot + 1}")
+    _stairs(left, simulation.mesh_stiffness * scale, nodes_ms, color="k", lw=1.6, label="k_T total")
     if elastic is not None:
-        left.stairs(elastic.mesh_stiffness * scale, elastic.grid.nodes * 1e3, baseline=None, color="0.5", ls="--", lw=1.0,
+        _stairs(left, elastic.mesh_stiffness * scale, elastic.grid.nodes * 1e3, color="0.5", ls="--", lw=1.0,
                     label="k_e total")
     left.set_xlabel("time τ in one mesh period [ms]")
     left.set_ylabel("stiffness per width [N/(mm·μm)]")
@@ -120,12 +128,12 @@ def fig6(evaluation):
     count = int(np.ceil(FIG6_SPAN_MS * 1e-3 / period))
     times = np.concatenate([grid.nodes[:-1] + j * period for j in range(count)] + [[count * period]]) * 1e3
     values = np.tile(simulation.mesh_stiffness * scale, count)
-    right.stairs(values, times, baseline=None, color="k", label="k_T total")
+    _stairs(right, values, times, color="k", label="k_T total")
     if elastic is not None:
         elastic_nodes = elastic.grid.nodes
         elastic_times = np.concatenate([elastic_nodes[:-1] + j * elastic_nodes[-1] for j in range(count)]
                                        + [[count * elastic_nodes[-1]]]) * 1e3
-        right.stairs(np.tile(elastic.mesh_stiffness * scale, count), elastic_times, baseline=None, color="0.5",
+        _stairs(right, np.tile(elastic.mesh_stiffness * scale, count), elastic_times, color="0.5",
                      ls="--", label="k_e total")
     right.set_xlim(0.0, FIG6_SPAN_MS)
     right.set_xlabel("time τ [ms]")
@@ -150,7 +158,7 @@ def _damping_figure(evaluation, model: str):
     period = grid.nodes[-1]
     periods = 3
     times = np.concatenate([grid.nodes[:-1] + j * period for j in range(periods)] + [[periods * period]]) * 1e3
-    right.stairs(np.tile(summary.mesh[model], periods), times, baseline=None, color=_COLORS[model],
+    _stairs(right, np.tile(summary.mesh[model], periods), times, color=_COLORS[model],
                  label=f"c(τ), rule '{summary.rule}'")
     means = summary.region_means[model]
     for region, style in (("single", "-."), ("double", ":")):
