@@ -144,12 +144,16 @@ class NonlinearResponse:
     def to_xarray(self):
         import xarray as xr  # noqa: PLC0415
 
-        return xr.Dataset(
-            {"displacement": ("time", self.displacement, {"units": "m", "long_name": "dynamic transmission error"}),
-             "velocity": ("time", self.velocity, {"units": "m/s"}),
-             "system_load": ("time", self.system_load(), {"units": "N", "long_name": "mesh force"})},
-            coords={"time": ("time", self.time, {"units": "s"})},
-            attrs={"model": self.label, "method": self.method, "metrics": json.dumps(self.metrics_json())})
+        data_vars, coords, attrs = self.dataset_parts()
+        return xr.Dataset(data_vars, coords=coords, attrs=attrs)
+
+    def dataset_parts(self) -> tuple[dict, dict, dict]:
+        """(data variables, coordinates, attributes) of :meth:`to_xarray` (``name → (dims, values, attrs)``)."""
+        return ({"displacement": ("time", self.displacement, {"units": "m", "long_name": "dynamic transmission error"}),
+                 "velocity": ("time", self.velocity, {"units": "m/s"}),
+                 "system_load": ("time", self.system_load(), {"units": "N", "long_name": "mesh force"})},
+                {"time": ("time", self.time, {"units": "s"})},
+                {"model": self.label, "method": self.method, "metrics": json.dumps(self.metrics_json())})
 
 
 def _region_levels(problem: BacklashMeshProblem, orbit: BacklashOrbit) -> tuple[dict, dict]:
@@ -261,11 +265,15 @@ class NonlinearTransient:
     def to_xarray(self):
         import xarray as xr  # noqa: PLC0415
 
-        return xr.Dataset(
-            {"displacement": ("time", self.displacement, {"units": "m", "long_name": "dynamic transmission error"}),
-             "velocity": ("time", self.velocity, {"units": "m/s"})},
-            coords={"time": ("time", self.time, {"units": "s"})},
-            attrs={"model": self.label, "method": self.method, "metrics": json.dumps(json_ready(self.metrics))})
+        data_vars, coords, attrs = self.dataset_parts()
+        return xr.Dataset(data_vars, coords=coords, attrs=attrs)
+
+    def dataset_parts(self) -> tuple[dict, dict, dict]:
+        """(data variables, coordinates, attributes) of :meth:`to_xarray` (``name → (dims, values, attrs)``)."""
+        return ({"displacement": ("time", self.displacement, {"units": "m", "long_name": "dynamic transmission error"}),
+                 "velocity": ("time", self.velocity, {"units": "m/s"})},
+                {"time": ("time", self.time, {"units": "s"})},
+                {"model": self.label, "method": self.method, "metrics": json.dumps(json_ready(self.metrics))})
 
     def plot_phase(self, other=None, ax: Any = None, periods: int | None = None):
         """x–ẋ trajectory from rest [μm, mm/s]."""
