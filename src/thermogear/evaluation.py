@@ -20,7 +20,8 @@ from thermogear import forked
 from thermogear.citations import cite
 from thermogear.warning_causes import warning_text
 
-__all__ = ["Evaluation", "MODELS", "STEPS", "evaluate_case", "is_paper_case", "thermoelastic_beside_paper"]
+__all__ = ["Evaluation", "MODELS", "STEPS", "evaluate_case", "finish_evaluation", "is_paper_case",
+           "thermoelastic_beside_paper"]
 
 MODELS = ("elastic", "thermal")
 
@@ -53,6 +54,7 @@ class Evaluation:
     problems: dict = field(default_factory=dict)  # stage -> reason it failed
     timings: dict = field(default_factory=dict)  # stage -> seconds, one after the other (they add up to the run)
     background_timings: dict = field(default_factory=dict)  # stage run beside the others -> its own seconds
+    pending: dict = field(default_factory=dict)  # stage -> forked.Background still running (finish_evaluation)
     warnings: list = field(default_factory=list)  # warning texts raised during the run (deduplicated)
 
     @property
@@ -88,10 +90,12 @@ def _run_stage(evaluation: Evaluation, name: str, function: Callable[[], None]) 
 
 
 def evaluate_case(case, method: str = "periodic", models: tuple[str, ...] = MODELS, transient: bool = True,
-                  progress: Callable[[str], None] | None = None) -> Evaluation:
+                  progress: Callable[[str], None] | None = None, wait: bool = True) -> Evaluation:
     """Run the chain of ``case``: per model the stiffness, damping and dynamics (``method``), the Fig. 4
     thermal-stiffness curves, the damping summary, the start-up transients (Figs. 9–11) and, for the paper's
-    case, the rig trend of Fig. 18. ``progress(step)`` is called before each step."""
+    case, the rig trend of Fig. 18 and the FE verification (Fig. 15, in a child process from the start).
+    ``progress(step)`` is called before each step. ``wait=False``: return without waiting for the FE
+    verification; :func:`finish_evaluation` collects it (the report draws its other figures meanwhile)."""
     from thermogear.simulation import Simulation
 
     evaluation = Evaluation(case=case, method=method)
@@ -155,14 +159,27 @@ def evaluate_case(case, method: str = "periodic", models: tuple[str, ...] = MODE
                    lambda: setattr(evaluation, "thermoelastic", thermoelastic_beside_paper(case)))
         step("rig trend")
         _run_stage(evaluation, "rig trend", lambda: setattr(evaluation, "rig_trend", _rig_trend()))
-        step("FE verification")
+        evaluation.pending["FE verification"] = fe_verification
+        if wait:
+            step("FE verification")
+            finish_evaluation(evaluation)
+    return evaluation
 
-        def collect_fe():
-            cite("scikit_fem")
-            evaluation.fem = fe_verification.result()
 
-        _run_stage(evaluation, "FE verification", collect_fe)  # the wait for it: its timing
-        evaluation.background_timings["FE verification"] = fe_verification.seconds
+def finish_evaluation(evaluation: Evaluation) -> Evaluation:
+    """Collect the stages still running in child processes (the FE verification): their results, warnings and
+    failures as any stage's; the stage's timing is the wait for it, its own run time goes to
+    ``background_timings``."""
+    for name, background in list(evaluation.pending.items()):
+        def collect(background=background):
+            result = background.result()
+            if name == "FE verification":
+                cite("scikit_fem")
+                evaluation.fem = result
+
+        _run_stage(evaluation, name, collect)
+        evaluation.background_timings[name] = background.seconds
+        del evaluation.pending[name]
     return evaluation
 
 

@@ -58,7 +58,8 @@ def build_report(case, out: Path | str, *, force: bool = False, method: str = "p
     """
     begin = time.perf_counter()
     from thermogear import __version__, forked
-    from thermogear.report.figures import FIGURES, SECOND_PROCESS_FIGURES, write_figures
+    from thermogear.evaluation import finish_evaluation
+    from thermogear.report.figures import FE_FIGURES, FIGURES, SECOND_PROCESS_FIGURES, write_figures
     from thermogear.report.html import render_report
     from thermogear.report.results_file import case_toml_text, summary_document, write_summary_json
 
@@ -70,11 +71,8 @@ def build_report(case, out: Path | str, *, force: bool = False, method: str = "p
     folder.check()
     clear_citations()
     paper = is_paper_case(case) if paper is None else paper
-    evaluation = evaluate_case(case, method=method, progress=step)
+    evaluation = evaluate_case(case, method=method, progress=step, wait=False)  # FE: still in its child
     evaluation.timings = {**before, **evaluation.timings}
-    verdicts = paper_verdicts(evaluation) if paper else []
-    results = key_results(evaluation)
-    messages = [text for model, response in evaluation.responses.items() for text in model_messages(response, model)]
     with folder:
         step("figures")
         figure_start = time.perf_counter()
@@ -84,18 +82,28 @@ def build_report(case, out: Path | str, *, force: bool = False, method: str = "p
 
         second = forked.start("figures and results file", _second_process_work, evaluation, folder.path)
         try:
-            missing = write_figures(evaluation, figure_folder,
-                                    [name for name in FIGURES if name not in SECOND_PROCESS_FIGURES])
+            missing = write_figures(evaluation, figure_folder, [name for name in FIGURES if name not in
+                                                                (*SECOND_PROCESS_FIGURES, *FE_FIGURES)])
+            evaluation.timings["figures"] = time.perf_counter() - figure_start
+            if evaluation.pending:
+                step("FE verification")
+                finish_evaluation(evaluation)
+            figure_start = time.perf_counter()
+            missing.update(write_figures(evaluation, figure_folder, FE_FIGURES))
             missing.update(second.result())
         finally:
             second.cancel()
-        missing = {name: missing[name] for name in FIGURES if name in missing}
-        figures = [name for name in FIGURES if name not in missing]
-        pngs = {name: (figure_folder / f"{name}.png").read_bytes() for name in figures}
-        evaluation.timings["figures"] = time.perf_counter() - figure_start
+        evaluation.timings["figures"] += time.perf_counter() - figure_start
         evaluation.background_timings["figures and results file"] = second.seconds
         step("files")
         write_start = time.perf_counter()
+        missing = {name: missing[name] for name in FIGURES if name in missing}
+        figures = [name for name in FIGURES if name not in missing]
+        pngs = {name: (figure_folder / f"{name}.png").read_bytes() for name in figures}
+        verdicts = paper_verdicts(evaluation) if paper else []
+        results = key_results(evaluation)
+        messages = [text for model, response in evaluation.responses.items()
+                    for text in model_messages(response, model)]
         citations = citations_used()
         page = render_report(evaluation, version=__version__, toml_text=case_toml_text(case), pngs=pngs,
                              missing_figures=missing, results=results, verdicts=verdicts, messages=messages,

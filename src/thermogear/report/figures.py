@@ -11,7 +11,7 @@ from typing import Any, Callable
 
 import numpy as np
 
-__all__ = ["FIG6_SPAN_MS", "FIGURES", "SECOND_PROCESS_FIGURES", "report_figures", "save_figure",
+__all__ = ["FE_FIGURES", "FIG6_SPAN_MS", "FIGURES", "SECOND_PROCESS_FIGURES", "report_figures", "save_figure",
            "write_figures"]
 
 #: Time span of the right panel of Fig. 6 [ms] (the paper's 0–5 ms).
@@ -348,6 +348,8 @@ def save_figure(figure, folder, name: str) -> list[str]:
 #: The figures a second process draws while the first draws the rest (the results file is written there too):
 #: about half of the drawing time each on two cores (fig. 4's four panels are the slowest figure).
 SECOND_PROCESS_FIGURES = ("fig4", "fig9", "fig10")
+#: The figures that need the FE verification: drawn last, once its child process has answered.
+FE_FIGURES = ("fig15",)
 
 
 def write_figures(evaluation, folder, names=None) -> dict[str, str]:

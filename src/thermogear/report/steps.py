@@ -9,6 +9,6 @@ __all__ = ["steps_of_report"]
 def steps_of_report(paper: bool, models=("elastic", "thermal")) -> list[str]:
     """Step names of a report with (``paper``) or without the paper's own stages."""
     steps = [f"{model} model" for model in models] + ["thermal stiffness", "damping", "start-up transients"]
-    if paper:
-        steps += ["thermoelastic prediction", "rig trend", "FE verification"]
+    if paper:  # the FE verification runs beside the other stages and the figures; the last figure needs it
+        return steps + ["thermoelastic prediction", "rig trend", "figures", "FE verification", "files"]
     return steps + ["figures", "files"]
