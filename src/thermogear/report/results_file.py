@@ -18,8 +18,8 @@ import numpy as np
 
 from thermogear.serialization import json_ready
 
-__all__ = ["case_toml_text", "curves_dataset", "curves_parts", "write_results_netcdf", "summary_document", "write_summary_json",
-           "RESPONSE_GROUPS"]
+__all__ = ["case_toml_text", "curves_dataset", "curves_parts", "write_results_netcdf", "summary_document",
+           "write_summary_json", "RESPONSE_GROUPS"]
 
 #: netCDF group of each dynamic response: (evaluation attribute, model) → group name
 RESPONSE_GROUPS = {("responses", "elastic"): "elastic_steady", ("responses", "thermal"): "thermal_steady",
