@@ -24,7 +24,7 @@ def _cell(text) -> str:
 def validation_page() -> str:
     from thermogear.case import load_case
     from thermogear.report.evaluate import evaluate_case, paper_verdicts
-    from thermogear.report.paper_table import KIND_MEANING, format_value, known_gaps, table_counts
+    from thermogear.report.paper_table import KIND_MEANING, format_value, known_gaps, known_gaps_text, table_counts
 
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
@@ -47,7 +47,8 @@ def validation_page() -> str:
         "",
         f"**Predictions: {prediction['within']} of {prediction['total']} within their argued tolerance, "
         f"{prediction['outside']} outside, {prediction['not computed']} not computed.** "
-        f"Qualitative statements: {statement['within']} of {statement['total']} reproduced.",
+        f"Qualitative statements: {statement['within']} of {statement['total']} reproduced. "
+        f"{known_gaps_text(verdicts)[:1].upper() + known_gaps_text(verdicts)[1:]}, listed below with their causes.",
         "",
         f"Not counted in the headline: {counts['input']['total']} *input* rows ({counts['input']['within']} exact "
         f"transcriptions) and {counts['calibration']['total']} *calibration* row (X_te is set so that the drop at "
@@ -56,8 +57,9 @@ def validation_page() -> str:
         "Kinds: " + "; ".join(f"*{kind}* — {text}" for kind, text in KIND_MEANING.items()) + ". Each tolerance is "
         "the paper's own precision (digits given, or a value read off a figure) plus the model's uncertainty from "
         "what the paper leaves open, argued in one sentence below; a row outside it is a known gap with its cause, "
-        "never a wider band. Deviation = (thermogear − paper)/|paper|; where the paper gives only a range or an "
-        "order of magnitude the table says 'inside the range'.",
+        "never a wider band. Deviation = (thermogear − paper)/|paper|. Where the paper gives only a range or an "
+        "order of magnitude (an axis limit, 1 < ε < 2) the row is a statement, not a prediction, and the table says "
+        "'inside the range'.",
         "",
         "## Known gaps and their causes",
         "",
@@ -137,163 +139,37 @@ def _shift_sentence(comparison) -> str:
 
 
 # ------------------------------------------------------------------------------------------- case reference
-def _resolve(schema: dict, node: dict) -> dict:
-    while True:
-        if "$ref" in node:
-            node = schema["$defs"][node["$ref"].split("/")[-1]]
-        elif "anyOf" in node and any("$ref" in option for option in node["anyOf"]):
-            node = next(option for option in node["anyOf"] if "$ref" in option)
-        else:
-            return node
-
-
-#: Meaning of keys whose schema field has no description (section.key → text).
-MEANINGS = {
-    "case.name": "short identifier of the case, used in file names and reports",
-    "case.title": "one-line description shown in reports",
-    "case.citation": "where the numbers come from (paper, standard, drawing)",
-    "case.assumptions": "everything the source leaves open and the case assumes, one sentence each (may be empty: "
-                        "`[]`)",
-    "temperature.model": "source of the tooth temperatures: 'uniform' (bulk_c), 'tabulated' (flank table), 'fem' "
-                         "(finite-element bulk temperature), 'gearbox' (predicted by the [gearbox] "
-                         "thermal model)",
-    "temperature.fit_degree": "degree of the polynomial fitted to the flank table [–]",
-    "thermal.x_te_source": "where X_te of model 'luo2020' comes from: 'given' (x_te), 'calibrated' (to "
-                           "calibration_drop_percent at calibration_point), 'fem'",
-    "thermal.calibration_drop_percent": "stiffness drop k_T below k_e to calibrate X_te to [%]",
-    "thermal.calibration_point": "point of the path where the calibration drop applies",
-    "thermal.load_basis": "F_n of Luo & Li Eqs. 13–18: the external normal load or the pair's share",
-    "damping.rule": "how the pairs in contact combine into c(τ): 'paper' (mean of the pairs, Luo & Li Fig. 7) or "
-                    "'parallel' (dampers add)",
-    "dynamics.method": "steady state by the exact periodic (Floquet) solution or by integrating from rest",
-    "dynamics.points_per_period": "intervals of the mesh-cycle grid per mesh period [–]",
-    "dynamics.transient_periods": "mesh periods integrated from rest by the transient method [–]",
-    "sweep.model": "models the study runs: 'elastic', 'thermal' or 'both'",
-}
-
-#: Keys that are optional alone but required in some combination (section.key → when).
-REQUIRED_WHEN = {
-    "gears.face_width_mm": "required unless both gears give face_width_mm",
-    "operating.power_kw": "give exactly one of power_kw, torque_nm, fzg_load_stage",
-    "operating.torque_nm": "give exactly one of power_kw, torque_nm, fzg_load_stage",
-    "operating.fzg_load_stage": "give exactly one of power_kw, torque_nm, fzg_load_stage",
-    "lubricant.name": "a built-in oil, or give viscosity_points (then name is only a label)",
-    "lubricant.viscosity_points": "required unless name is a built-in oil",
-    "temperature.bulk_c": "with model = 'uniform'; not set: the oil's operating temperature "
-                          "(lubricant.operating_temperature_c), said in a note",
-    "temperature.gamma": "with flank_c, or csv, required with model = 'tabulated'",
-    "temperature.flank_c": "with gamma, or csv, required with model = 'tabulated'",
-    "thermal.x_te": "required with model = 'luo2020' and x_te_source = 'given'",
-    "thermal.calibration_drop_percent": "required with x_te_source = 'calibrated'",
-    "fem.bore_h_w_per_m2_k": "required with bore = 'convective'",
-}
-
-#: Unit of a key from its name's suffix, for descriptions that do not state one (longest suffix first).
-UNIT_SUFFIXES = (("_w_per_m2_k", "W/(m² K)"), ("_w_per_m_k", "W/(m K)"), ("_j_per_kg_k", "J/(kg K)"),
-                 ("_per_k", "1/K"), ("_kg_m3", "kg/m³"), ("_kg_m2", "kg m²"), ("_percent", "%"), ("_deg", "°"),
-                 ("_rpm", "rpm"), ("_gpa", "GPa"), ("_kw", "kW"), ("_nm", "N m"), ("_mm", "mm"), ("_um", "μm"),
-                 ("_c", "°C"))
-
-
-def _meaning(section: str, key: str, description: str) -> str:
-    """The description, or the fallback meaning, with the unit from the key name where it states none, and the
-    condition under which an optional key is required."""
-    text = description or MEANINGS.get(f"{section}.{key}", "")
-    if "[" not in text:
-        unit = next((unit for suffix, unit in UNIT_SUFFIXES if key.endswith(suffix)), None)
-        if unit:
-            text = f"{text} [{unit}]".strip()
-    when = REQUIRED_WHEN.get(f"{section}.{key}")
-    if when:
-        text = f"{text}. **{when}**" if text else f"**{when}**"
-    return text
-
-
-def _type_and_range(field: dict) -> tuple[str, str]:
-    options = field.get("anyOf", [field])
-    types, ranges = [], []
-    for option in options:
-        kind = option.get("type")
-        if kind == "null":
-            continue
-        if "enum" in option:
-            types.append(" \\| ".join(f"`{item}`" for item in option["enum"]))
-            continue
-        if "const" in option:
-            types.append(f"`{option['const']}`")
-            continue
-        if kind == "array":
-            item = option.get("items", {})
-            inner = item.get("type", "") if isinstance(item, dict) else ""
-            types.append(f"array of {inner}".strip() if inner else "array")
-        elif "$ref" in option:
-            types.append("table")
-        elif kind:
-            types.append(kind)
-        bounds = []
-        for key, symbol in (("minimum", "≥"), ("exclusiveMinimum", ">"), ("maximum", "≤"), ("exclusiveMaximum", "<")):
-            if key in option:
-                bounds.append(f"{symbol} {option[key]:g}")
-        if bounds:
-            ranges.append(", ".join(bounds))
-    if any(option.get("type") == "null" for option in options):
-        types.append("optional")
-    return " or ".join(types) or "any", "; ".join(ranges)
-
-
-def _default(field: dict) -> str:
-    if "default" not in field:
-        return "**required**"
-    value = field["default"]
-    if value is None:
-        return "—"
-    if isinstance(value, (dict, list)) and len(str(value)) > 40:
-        return "(see below)" if isinstance(value, dict) else f"`{value}`"[:60]
-    return f"`{value}`"
-
-
-def _section_table(schema: dict, name: str, node: dict, lines: list[str], prefix: str = "") -> None:
-    node = _resolve(schema, node)
-    title = f"{prefix}{name}"
-    lines += ["", f"## [{title}]", "", node.get("description", ""), "",
-              "| key | type | allowed | default | meaning |", "|---|---|---|---|---|"]
-    nested = []
-    for key, field in node.get("properties", {}).items():
-        target = _resolve(schema, field) if "$ref" in field else None
-        if target is not None and target.get("type") == "object" and "properties" in target:
-            nested.append((key, field))
-            continue
-        kind, allowed = _type_and_range(field)
-        description = field.get("description", "")
-        if not description and "anyOf" in field:
-            description = next((o.get("description", "") for o in field["anyOf"] if o.get("description")), "")
-        default = _default(field)
-        if default == "—" or (default == "**required**" and key not in node.get("required", [])):
-            default = "not set"  # optional (a default factory, e.g. an empty table, has no "default" in the schema)
-        lines.append(f"| `{key}` | {kind} | {allowed} | {default} | {_cell(_meaning(title, key, description))} |")
-    for key, field in nested:
-        _section_table(schema, key, field, lines, prefix=f"{title}.")
+def _markdown_row(key) -> str:
+    """One key of the schema as a row of the page (the rows come from thermogear.schema.reference, which
+    ``thermogear schema`` prints too)."""
+    kind = key.kind + (" or optional" if key.optional else "")
+    default = "**required**" if key.required else ("not set" if key.default is None else f"`{key.default}`")
+    meaning = key.description + (f". **{key.required_when}**" if key.required_when else "")
+    return (f"| `{key.key}` | {_cell(key.unit)} | {_cell(kind)} | {_cell(key.allowed)} | {default} | "
+            f"{_cell(meaning)} |")
 
 
 def case_reference_page() -> str:
-    from thermogear.schema import CaseFile
+    from thermogear.schema.reference import case_file_sections
 
-    schema = CaseFile.model_json_schema()
-    required = set(schema.get("required", []))
+    sections = case_file_sections()
     lines = ["# Case-file reference", "",
              "<!-- GENERATED by docs/generate.py from thermogear.schema.CaseFile.model_json_schema(); "
              "do not edit by hand. -->", "",
              "A case file is TOML. Keys carry their units in their names (`module_mm`, `speed_rpm`); every value is "
              "checked when the case is loaded and a bad one is refused with the key, the value, the allowed range and "
-             "the reason. Unknown keys are refused with the closest valid key. `thermogear schema` prints the same "
-             "schema as JSON; the built-in cases (`thermogear cases`) are complete examples. A key marked "
+             "the reason. Unknown keys are refused with the closest valid key (in any section). `thermogear schema` "
+             "prints the same table on the terminal (`thermogear schema gears` one section, `--json` the JSON "
+             "schema); the built-in cases (`thermogear cases`) are complete examples. A key marked "
              "**required** must be given; 'not set' means the key may be left out (its meaning says what is used "
-             "then, and bold text when it becomes required). Units are in brackets; [–] is a dimensionless "
-             "coefficient (e.g. `tool_tip_radius_coefficient` = ρ_fP/m).", "",
-             "Sections: " + ", ".join(f"`[{name}]`" + (" (required)" if name in required else "")
-                                      for name in schema["properties"]) + "."]
-    for name, node in schema["properties"].items():
-        _section_table(schema, name, node, lines)
+             "then, and bold text when it becomes required). Unit – is a dimensionless number (e.g. "
+             "`tool_tip_radius_coefficient` = ρ_fP/m).", "",
+             "Sections: " + ", ".join(f"`[{section.name}]`" + (" (required)" if section.required else "")
+                                      for section in sections if "." not in section.name) + "."]
+    for section in sections:
+        lines += ["", f"## [{section.name}]", "", section.description, "",
+                  "| key | unit | type | allowed | default | meaning |", "|---|---|---|---|---|---|"]
+        lines += [_markdown_row(key) for key in section.keys]
     lines.append("")
     return "\n".join(lines)
 

@@ -332,7 +332,7 @@ def _case_error_from_validation(error: pydantic.ValidationError) -> CaseError:
     context = first.get("ctx") or {}
     if kind == "extra_forbidden":
         valid = _valid_keys(location[:-1])
-        suggestion = closest_key(location[-1], valid)
+        suggestion = _suggested_key(location, valid)
         hint = f"did you mean '{suggestion}'?" if suggestion else "see `thermogear schema`"
         if isinstance(value, dict):  # a whole table: a misspelt section
             hint = f"did you mean '{suggestion}'?" if suggestion else hint
@@ -373,13 +373,41 @@ def _unit_hint(key: str, value: Any, context: dict) -> str:
     return ""
 
 
+def _section_model(annotation) -> type[pydantic.BaseModel] | None:
+    candidates = [annotation, *getattr(annotation, "__args__", ())]
+    return next((c for c in candidates if isinstance(c, type) and issubclass(c, pydantic.BaseModel)), None)
+
+
 def _valid_keys(location: list[str]) -> list[str]:
     model: type[pydantic.BaseModel] = CaseFile
     for part in location:
-        annotation = model.model_fields[part].annotation
-        candidates = [annotation, *getattr(annotation, "__args__", ())]
-        model = next(c for c in candidates if isinstance(c, type) and issubclass(c, pydantic.BaseModel))
+        model = _section_model(model.model_fields[part].annotation)
     return list(model.model_fields)
+
+
+def _key_paths(model: type[pydantic.BaseModel] = CaseFile, prefix: str = "") -> list[str]:
+    """Every key of the case file as a dotted path (``gears.pinion.teeth``), sections themselves excluded."""
+    paths = []
+    for name, field in model.model_fields.items():
+        inner = _section_model(field.annotation)
+        paths += _key_paths(inner, f"{prefix}{name}.") if inner is not None else [f"{prefix}{name}"]
+    return paths
+
+
+def _suggested_key(location: list[str], valid: list[str]) -> str | None:
+    """What an unknown key probably meant: the same key in the section where it belongs (``pressure_angle_deg``
+    under ``[operating]`` → ``gears.pressure_angle_deg``), else the closest key of its own section, else the
+    closest key of any section (as a dotted path)."""
+    name, here = location[-1], ".".join(location[:-1])
+    elsewhere = [path for path in _key_paths() if path.rpartition(".")[2] == name and path.rpartition(".")[0] != here]
+    if elsewhere:
+        return elsewhere[0]
+    suggestion = closest_key(name, valid)
+    if suggestion is not None:
+        return suggestion
+    by_name = {path.rpartition(".")[2]: path for path in reversed(_key_paths())}  # first section wins a tie
+    suggestion = closest_key(name, by_name)
+    return by_name[suggestion] if suggestion is not None else None
 
 
 def _deep_copy(document: Any) -> Any:

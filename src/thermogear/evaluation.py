@@ -16,11 +16,12 @@ from typing import Any, Callable
 
 import numpy as np
 
+from thermogear import forked
 from thermogear.citations import cite
 from thermogear.warning_causes import warning_text
 
-__all__ = ["Evaluation", "MODELS", "STEPS", "evaluate_case", "is_paper_case", "thermoelastic_beside_paper",
-           "uses_paper_thermal_stiffness"]
+__all__ = ["Evaluation", "MODELS", "STEPS", "evaluate_case", "finish_evaluation", "is_paper_case",
+           "thermoelastic_beside_paper", "uses_paper_thermal_stiffness"]
 
 MODELS = ("elastic", "thermal")
 
@@ -60,7 +61,9 @@ class Evaluation:
     fem: Any = None
     thermoelastic: dict | None = None  # the predictive model beside the paper's (paper's case only)
     problems: dict = field(default_factory=dict)  # stage -> reason it failed
-    timings: dict = field(default_factory=dict)  # stage -> seconds
+    timings: dict = field(default_factory=dict)  # stage -> seconds, one after the other (they add up to the run)
+    background_timings: dict = field(default_factory=dict)  # stage run beside the others -> its own seconds
+    pending: dict = field(default_factory=dict)  # stage -> forked.Background still running (finish_evaluation)
     warnings: list = field(default_factory=list)  # warning texts raised during the run (deduplicated)
 
     @property
@@ -84,6 +87,8 @@ def _run_stage(evaluation: Evaluation, name: str, function: Callable[[], None]) 
             function()
         except (KeyboardInterrupt, SystemExit):
             raise
+        except forked.ChildFailed as error:  # raised in a child process: its own type and message
+            evaluation.problems[name] = str(error)
         except Exception as error:  # noqa: BLE001 - a failed stage becomes "not computed: reason" in the report
             evaluation.problems[name] = f"{type(error).__name__}: {error}"
     for item in caught:
@@ -94,14 +99,18 @@ def _run_stage(evaluation: Evaluation, name: str, function: Callable[[], None]) 
 
 
 def evaluate_case(case, method: str = "periodic", models: tuple[str, ...] = MODELS, transient: bool = True,
-                  progress: Callable[[str], None] | None = None) -> Evaluation:
+                  progress: Callable[[str], None] | None = None, wait: bool = True) -> Evaluation:
     """Run the chain of ``case``: per model the stiffness, damping and dynamics (``method``), the Fig. 4
     thermal-stiffness curves, the damping summary, the start-up transients (Figs. 9–11) and, for the paper's
-    case, the rig trend of Fig. 18. ``progress(step)`` is called before each step."""
+    case, the rig trend of Fig. 18 and the FE verification (Fig. 15, in a child process from the start).
+    ``progress(step)`` is called before each step. ``wait=False``: return without waiting for the FE
+    verification; :func:`finish_evaluation` collects it (the report draws its other figures meanwhile)."""
     from thermogear.simulation import Simulation
 
     evaluation = Evaluation(case=case, method=method)
     step = progress or (lambda name: None)
+    # the FE verification needs nothing the other stages compute: it runs beside them on a second core
+    fe_verification = forked.start("FE verification", fem_verification, case) if evaluation.paper else None
     cite("luo2020", "iso21771", "iso53", "yang1987", "tian2004", "sainsot2004", "chaari2009")
     if case.citation and "14635" in case.citation:
         cite("iso14635_1")
@@ -165,8 +174,27 @@ def evaluate_case(case, method: str = "periodic", models: tuple[str, ...] = MODE
                    lambda: setattr(evaluation, "thermoelastic", thermoelastic_beside_paper(case)))
         step("rig trend")
         _run_stage(evaluation, "rig trend", lambda: setattr(evaluation, "rig_trend", _rig_trend()))
-        step("FE verification")
-        _run_stage(evaluation, "FE verification", lambda: setattr(evaluation, "fem", fem_verification(case)))
+        evaluation.pending["FE verification"] = fe_verification
+        if wait:
+            step("FE verification")
+            finish_evaluation(evaluation)
+    return evaluation
+
+
+def finish_evaluation(evaluation: Evaluation) -> Evaluation:
+    """Collect the stages still running in child processes (the FE verification): their results, warnings and
+    failures as any stage's; the stage's timing is the wait for it, its own run time goes to
+    ``background_timings``."""
+    for name, background in list(evaluation.pending.items()):
+        def collect(background=background):
+            result = background.result()
+            if name == "FE verification":
+                cite("scikit_fem")
+                evaluation.fem = result
+
+        _run_stage(evaluation, name, collect)
+        evaluation.background_timings[name] = background.seconds
+        del evaluation.pending[name]
     return evaluation
 
 

@@ -58,6 +58,12 @@ BAD_CASES = [
     ("centre distance too small", {"gears.centre_distance_mm": 92.0}, (), "centre_distance_mm", "penetrate"),
     ("missing key", {}, ("gears.pinion.teeth",), "gears.pinion.teeth", "required"),
     ("unknown section", {"gearz": {"module_mm": 3}}, (), "gearz", "did you mean 'gears'"),
+    # a key in the wrong section: the suggestion looks across sections (issue 24)
+    ("key of another section", {"operating.pressure_angle_deg": 20.0}, (), "operating.pressure_angle_deg",
+     "did you mean 'gears.pressure_angle_deg'"),
+    ("gear key in the pair section", {"gears.teeth": 20}, (), "gears.teeth", "did you mean 'gears.pinion.teeth'"),
+    ("misspelt key of another section", {"operating.preasure_angle_deg": 20.0}, (), "operating.preasure_angle_deg",
+     "did you mean 'gears.pressure_angle_deg'"),
     ("bad choice", {"damping.rule": "average"}, (), "damping.rule", "choices"),
     ("poisson ratio", {"material.poisson_ratio": 0.5}, (), "material.poisson_ratio", "range"),
 ]

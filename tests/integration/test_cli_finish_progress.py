@@ -48,3 +48,34 @@ def test_bars_show_on_a_terminal_only():
 def test_fem_has_a_quiet_option():
     result = subprocess.run([sys.executable, "-m", "thermogear", "fem", "--help"], capture_output=True, text=True)
     assert "--quiet" in result.stdout
+
+
+def test_reproduce_progress_starts_before_the_model_loads_and_counts_every_step(monkeypatch, tmp_path):
+    """`reproduce` shows its bar from the first second (loading NumPy, SciPy and numba's code is its first step)
+    and the bar's total is every step the report announces (issue 24)."""
+    from contextlib import contextmanager
+
+    import thermogear.report.build as build
+    from thermogear.case import load_case
+    from thermogear.cli import reproduce as command
+
+    shown: dict = {}
+
+    @contextmanager
+    def recording_progress(steps, quiet=False, console=None):
+        shown["total"] = list(steps)
+        shown["started"] = []
+        yield shown["started"].append
+
+    def fake_build_report(case, target, *, progress, timings, **options):
+        for name in build.report_steps(case):
+            progress(name)
+        shown["timings"] = timings
+
+    monkeypatch.setattr(command, "step_progress", recording_progress, raising=False)
+    monkeypatch.setattr("thermogear.cli.console.step_progress", recording_progress)
+    monkeypatch.setattr(build, "build_report", fake_build_report)
+    command.reproduce("luo2019", out=tmp_path / "report", force=False, quiet=True)
+    assert shown["started"][0] == command.LOADING
+    assert shown["started"] == shown["total"] == [command.LOADING, *build.report_steps(load_case("luo2019"))]
+    assert set(shown["timings"]) == {"start-up", "imports"} and shown["timings"]["start-up"] > 0.0

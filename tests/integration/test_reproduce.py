@@ -149,3 +149,15 @@ def test_unknown_paper_is_refused():
     result = subprocess.run(_command("reproduce", "luo2018"), capture_output=True, text=True, timeout=120)
     assert result.returncode == 2
     assert "luo2019" in result.stderr
+
+
+def test_timings_cover_the_whole_command(default_run):
+    """timings_s list the stages one after the other from the process's start to the files (issue 24): start-up
+    and imports first, the figures and the files last; what ran beside them is in timings_background_s."""
+    out, _ = default_run
+    summary = json.loads((out / "summary.json").read_text())
+    stages = list(summary["timings_s"])
+    assert stages[:3] == ["start-up", "imports", "elastic model"]
+    assert stages[-3:] == ["figures", "FE verification", "files"]
+    assert all(seconds >= 0.0 for seconds in summary["timings_s"].values())
+    assert set(summary["timings_background_s"]) == {"FE verification", "figures and results file"}

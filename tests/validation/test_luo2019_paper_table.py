@@ -21,7 +21,7 @@ import pytest
 from thermogear.case import load_case
 from thermogear.report.evaluate import evaluate_case, paper_values, paper_verdicts
 from thermogear.report.paper_table import (KINDS, PAPER_ROWS, Absolute, Bounds, Check, Relative, judge, known_gaps,
-                                           row, table_counts)
+                                           known_gaps_text, row, table_counts)
 
 #: rows whose quantity thermogear cannot compute by nature (not a failure of a stage)
 NOT_COMPUTABLE = {"sec5.run_duration": "a test procedure; the bundled rig data hold only minutes 3, 5 and 10"}
@@ -82,6 +82,10 @@ def test_table_is_complete_and_argued():
             assert 0.75 <= item.check.low and item.check.high <= 1.25, item.key
         if item.kind in ("input", "calibration"):
             assert not item.gap, f"{item.key}: a transcription or a calibration cannot be a known gap"
+        # a prediction is a number with a tolerance: a range or an order of magnitude (an axis limit, 1 < ε < 2)
+        # passes whatever the model's error inside it, so such a row counts as a statement (issue 24)
+        if item.kind == "prediction":
+            assert not item.check.range_only, f"{item.key}: a range check is a statement, not a prediction"
     # the numbers of the paper: 22 Table 1 values, 27 Table 3 values, 6 Fig. 18 values; one calibration (X_te at C)
     assert sum(item.key.startswith("table1.") for item in PAPER_ROWS) == 22
     assert sum(item.key.startswith("table3.") for item in PAPER_ROWS) == 27
@@ -105,6 +109,20 @@ def test_headline_counts_only_predictions(verdicts):
     assert sum(counts["prediction"][s] for s in ("within", "outside", "not computed")) == len(predictions)
     for gap in known_gaps(list(verdicts.values())):
         assert gap.row.gap, f"{gap.row.key} differs from the paper without a documented cause"
+
+
+def test_headline_counts_every_known_gap_it_lists(verdicts):
+    """The number of known gaps in the headline is the length of the list beneath it (the report once said 14
+    above a list of 18: it counted the predictions only), split into predictions and statements."""
+    items = list(verdicts.values())
+    gaps = known_gaps(items)
+    predictions = sum(gap.row.kind == "prediction" for gap in gaps)
+    text = known_gaps_text(items)
+    assert text.startswith(f"{len(gaps)} known gaps")
+    assert f"{predictions} predictions" in text and f"{len(gaps) - predictions} statements" in text
+    counts = table_counts(items)
+    assert predictions == counts["prediction"]["outside"] + counts["prediction"]["not computed"]
+    assert len(gaps) - predictions == counts["qualitative"]["outside"] + counts["qualitative"]["not computed"]
 
 
 def test_a_crashed_stage_fails_its_rows(evaluation):

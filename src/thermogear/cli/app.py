@@ -39,8 +39,8 @@ class CommandEntry:
 #: Every command, in the order ``thermogear --help`` lists them.
 COMMANDS: dict[str, CommandEntry] = {
     "cases": CommandEntry("thermogear.cli.cases", "List the built-in parameter sets with their sources."),
-    "schema": CommandEntry("thermogear.cli.cases", "Print the JSON schema of case files (every key, its unit and "
-                                                   "range)."),
+    "schema": CommandEntry("thermogear.cli.cases", "Print every case-file key with its unit, type, allowed range, "
+                                                   "default and meaning (one table per section)."),
     "oils": CommandEntry("thermogear.cli.damping", "List the built-in oils with their viscosities, density, base "
                                                    "oil and source."),
     "check": CommandEntry("thermogear.cli.check", "Validate a case and print its gear-pair geometry (exit status "
@@ -59,6 +59,9 @@ COMMANDS: dict[str, CommandEntry] = {
                                                           "summary.json)."),
     "sweep": CommandEntry("thermogear.cli.sweep", "Run a parameter study of a case (grid over speed, load, "
                                                   "temperatures, geometry) into a zarr store."),
+    "export": CommandEntry("thermogear.cli.export", "Write a sweep store or a report's results file as CSV: one row "
+                                                    "per point or per time sample, the units in the column names, "
+                                                    "the case and the version in comment lines (# …) on top."),
     "fem": CommandEntry("thermogear.cli.fem", "Finite-element verification: bulk temperature, FE vs PEM tooth "
                                               "compliance, flank expansion, X_te."),
     "warmup": CommandEntry("thermogear.cli.warmup", "Warm-up of a test rig as a sequence of steady operating "
@@ -139,8 +142,18 @@ app = typer.Typer(
 )
 
 
+def _print_version(value: bool) -> None:
+    """``--version``: the installed thermogear version, then exit (reads package metadata only)."""
+    if value:
+        from thermogear import __version__  # noqa: PLC0415
+
+        sys.stdout.write(f"thermogear {__version__}\n")
+        raise typer.Exit()
+
+
 @app.callback()
-def _group() -> None:
+def _group(version: bool = typer.Option(False, "--version", is_eager=True, callback=_print_version,
+                                        help="print the thermogear version and exit")) -> None:
     """Thermo-elastic dynamics of spur gear pairs: thermal mesh stiffness, friction damping, transmission error
     and dynamic load (after Luo & Li 2020)."""
 

@@ -62,6 +62,8 @@ def run(
                                                  "summary.json) into this folder"),
     force: bool = typer.Option(False, "--force", help="replace an existing --out folder"),
     quiet: bool = typer.Option(False, "--quiet", "-q", help="no progress bar, and no summary with --out (for scripts)"),
+    csv: Path = typer.Option(None, "--csv", help="also write the steady responses as CSV (a row per time sample and "
+                                                 "model, units in the column names)"),
 ) -> None:
     """Run the dynamics of a case and report Kv, loads, transmission error per region, frequencies and stability.
     Contact loss and instability are said in words (when, how long, how deep)."""
@@ -74,6 +76,10 @@ def run(
         raise CaseError("--model", model, "elastic | thermal | both", "unknown model")
     if method is not None and method not in ("periodic", "transient"):
         raise CaseError("--method", method, "periodic | transient", "unknown solution method")
+    if csv is not None:
+        from thermogear.cli.export import check_csv_target
+
+        check_csv_target(csv, force, "--csv")
     case = load_case(case_name)
     method = method or case.dynamics.method
     models = _MODELS[model]
@@ -97,6 +103,10 @@ def run(
                 responses[name] = Simulation(case, name).run(method)
         thermoelastic = _thermoelastic_summary(case) if "thermal" in models else None
     messages = [text for name, response in responses.items() for text in model_messages(response, name)]
+    if csv is not None:
+        from thermogear.cli.export import responses_csv
+
+        responses_csv(csv, case, responses)
     if as_json:
         payload = {"case": case.name, "method": method, "load_held": case.operating_point.load_held,
                    "models": {name: {**model_json(response), "messages": model_messages(response, name)}

@@ -26,6 +26,7 @@ from thermogear.dynamics.backlash_metrics import dte_spectrum, history_forces, o
 from thermogear.dynamics.backlash_periodic import (BacklashOrbit, backlash_flow, backlash_transient,
                                                    periodic_response)
 from thermogear.dynamics.backlash_problem import BacklashMeshProblem
+from thermogear.dynamics.plots import MODEL_STYLES
 from thermogear.dynamics.problem import region_name
 from thermogear.errors import ModelLimitError
 from thermogear.serialization import json_ready
@@ -94,7 +95,7 @@ class NonlinearResponse:
         ax = ax if ax is not None else figure.axes[0]
         for number, (item, series) in enumerate(((self, values(self)),) + (((other, values(other)),) if other else ())):
             time, series = item._repeated(series, periods)
-            ax.plot(time * 1e3, series * scale, lw=1.4, ls="-" if number == 0 else "--",
+            ax.plot(time * 1e3, series * scale, lw=1.4, **MODEL_STYLES[number % 2],
                     label=f"{item.label or 'response'} ({item.metrics['response']}, {item.metrics['branch']} branch)")
         ax.set_xlabel("time [ms]")
         ax.set_ylabel(ylabel)
@@ -116,8 +117,8 @@ class NonlinearResponse:
         return self._lines(lambda item: item.displacement, other, ax, "dynamic transmission error [μm]", 1e6, periods)
 
     def plot_velocity(self, other=None, ax: Any = None, periods: int | None = None):
-        return self._lines(lambda item: item.velocity, other, ax, "velocity along the line of action [m/s]", 1.0,
-                           periods)
+        """Velocity ẋ along the line of action over the orbit [mm/s] (the unit of Luo & Li Fig. 11)."""
+        return self._lines(lambda item: item.velocity, other, ax, "velocity ẋ [mm/s]", 1e3, periods)
 
     def plot_loads(self, other=None, ax: Any = None, periods: int | None = None):
         """Mesh force per face width [N/mm]; below zero the back flanks carry it, at zero the teeth fly."""
@@ -130,10 +131,11 @@ class NonlinearResponse:
 
         figure = ax.figure if ax is not None else plt.subplots(figsize=(5, 4), constrained_layout=True)[0]
         ax = ax if ax is not None else figure.axes[0]
-        for item in (self, other) if other is not None else (self,):
-            ax.plot(item.displacement * 1e6, item.velocity, lw=1.2, label=item.label or "response")
+        for number, item in enumerate((self, other) if other is not None else (self,)):
+            ax.plot(item.displacement * 1e6, item.velocity * 1e3, lw=1.2, label=item.label or "response",
+                    **MODEL_STYLES[number % 2])
         ax.set_xlabel("x [μm]")
-        ax.set_ylabel("ẋ [m/s]")
+        ax.set_ylabel("ẋ [mm/s]")
         ax.legend(fontsize="small")
         return figure
 
@@ -144,12 +146,16 @@ class NonlinearResponse:
     def to_xarray(self):
         import xarray as xr  # noqa: PLC0415
 
-        return xr.Dataset(
-            {"displacement": ("time", self.displacement, {"units": "m", "long_name": "dynamic transmission error"}),
-             "velocity": ("time", self.velocity, {"units": "m/s"}),
-             "system_load": ("time", self.system_load(), {"units": "N", "long_name": "mesh force"})},
-            coords={"time": ("time", self.time, {"units": "s"})},
-            attrs={"model": self.label, "method": self.method, "metrics": json.dumps(self.metrics_json())})
+        data_vars, coords, attrs = self.dataset_parts()
+        return xr.Dataset(data_vars, coords=coords, attrs=attrs)
+
+    def dataset_parts(self) -> tuple[dict, dict, dict]:
+        """(data variables, coordinates, attributes) of :meth:`to_xarray` (``name → (dims, values, attrs)``)."""
+        return ({"displacement": ("time", self.displacement, {"units": "m", "long_name": "dynamic transmission error"}),
+                 "velocity": ("time", self.velocity, {"units": "m/s"}),
+                 "system_load": ("time", self.system_load(), {"units": "N", "long_name": "mesh force"})},
+                {"time": ("time", self.time, {"units": "s"})},
+                {"model": self.label, "method": self.method, "metrics": json.dumps(self.metrics_json())})
 
 
 def _region_levels(problem: BacklashMeshProblem, orbit: BacklashOrbit) -> tuple[dict, dict]:
@@ -297,22 +303,27 @@ class NonlinearTransient:
     def to_xarray(self):
         import xarray as xr  # noqa: PLC0415
 
-        return xr.Dataset(
-            {"displacement": ("time", self.displacement, {"units": "m", "long_name": "dynamic transmission error"}),
-             "velocity": ("time", self.velocity, {"units": "m/s"})},
-            coords={"time": ("time", self.time, {"units": "s"})},
-            attrs={"model": self.label, "method": self.method, "metrics": json.dumps(json_ready(self.metrics))})
+        data_vars, coords, attrs = self.dataset_parts()
+        return xr.Dataset(data_vars, coords=coords, attrs=attrs)
+
+    def dataset_parts(self) -> tuple[dict, dict, dict]:
+        """(data variables, coordinates, attributes) of :meth:`to_xarray` (``name → (dims, values, attrs)``)."""
+        return ({"displacement": ("time", self.displacement, {"units": "m", "long_name": "dynamic transmission error"}),
+                 "velocity": ("time", self.velocity, {"units": "m/s"})},
+                {"time": ("time", self.time, {"units": "s"})},
+                {"model": self.label, "method": self.method, "metrics": json.dumps(json_ready(self.metrics))})
 
     def plot_phase(self, other=None, ax: Any = None, periods: int | None = None):
-        """x–ẋ trajectory from rest [μm, m/s]."""
+        """x–ẋ trajectory from rest [μm, mm/s]."""
         import matplotlib.pyplot as plt  # noqa: PLC0415
 
         figure = ax.figure if ax is not None else plt.subplots(figsize=(5, 4), constrained_layout=True)[0]
         ax = ax if ax is not None else figure.axes[0]
-        for item in (self, other) if other is not None else (self,):
-            ax.plot(item.displacement * 1e6, item.velocity, lw=0.8, label=f"{item.label or 'response'} from rest")
+        for number, item in enumerate((self, other) if other is not None else (self,)):
+            ax.plot(item.displacement * 1e6, item.velocity * 1e3, lw=0.8, color=MODEL_STYLES[number % 2]["color"],
+                    label=f"{item.label or 'response'} from rest")
         ax.set_xlabel("x [μm]")
-        ax.set_ylabel("ẋ [m/s]")
+        ax.set_ylabel("ẋ [mm/s]")
         ax.legend(fontsize="small")
         return figure
 

@@ -13,9 +13,11 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["plot_displacement", "plot_loads", "plot_phase", "plot_spectrum", "plot_velocity"]
+__all__ = ["MODEL_STYLES", "plot_displacement", "plot_loads", "plot_phase", "plot_spectrum", "plot_velocity"]
 
-_STYLES = ({"color": "tab:blue", "linestyle": "-"}, {"color": "tab:red", "linestyle": "--"})
+#: Line style of the first and the second response of a plot (elastic and thermal in the report): every dynamic
+#: plot, linear or nonlinear, and the report's start-up panels use the same two.
+MODEL_STYLES = ({"color": "tab:blue", "linestyle": "-"}, {"color": "tab:red", "linestyle": "--"})
 
 
 def _axes(ax: Any):
@@ -70,7 +72,7 @@ def plot_displacement(response: Any, other: Any = None, ax: Any = None, periods:
     """Fig. 9: x(τ) [μm] against time [ms] with the static transmission error (dotted)."""
     figure, ax = _axes(ax)
     for number, item in enumerate(_responses(response, other)):
-        style = _STYLES[number % 2]
+        style = MODEL_STYLES[number % 2]
         time, x, _, interval = _series(item, periods)
         ax.plot(time * 1e3, x * 1e6, label=_label(item, item.method), **style)
         static = item.problem.static_transmission_error
@@ -89,7 +91,7 @@ def plot_phase(response: Any, other: Any = None, ax: Any = None, periods: int | 
     """Fig. 10: phase portrait ẋ [mm/s] against x [μm]; the steady orbit drawn bold."""
     figure, ax = _axes(ax)
     for number, item in enumerate(_responses(response, other)):
-        style = _STYLES[number % 2]
+        style = MODEL_STYLES[number % 2]
         if item.history is not None:
             _, x, v, _ = _series(item, periods)
             ax.plot(x * 1e6, v * 1e3, linewidth=0.6, alpha=0.6, color=style["color"],
@@ -110,7 +112,7 @@ def plot_velocity(response: Any, other: Any = None, ax: Any = None, periods: int
     figure, ax = _axes(ax)
     for number, item in enumerate(_responses(response, other)):
         time, _, v, _ = _series(item, periods)
-        ax.plot(time * 1e3, v * 1e3, label=_label(item, item.method), **_STYLES[number % 2])
+        ax.plot(time * 1e3, v * 1e3, label=_label(item, item.method), **MODEL_STYLES[number % 2])
     ax.set_xlabel("time [ms]")
     ax.set_ylabel("velocity ẋ [mm/s]")
     ax.legend(fontsize="small")
@@ -122,7 +124,7 @@ def plot_loads(response: Any, other: Any = None, ax: Any = None, periods: int | 
     """Fig. 12: system and pair dynamic loads per unit face width [N/mm], with the static load (dotted)."""
     figure, ax = _axes(ax)
     for number, item in enumerate(_responses(response, other)):
-        style = _STYLES[number % 2]
+        style = MODEL_STYLES[number % 2]
         problem = item.problem
         scale = 1.0 / problem.face_width / 1e3
         time, x, v, interval = _series(item, periods)

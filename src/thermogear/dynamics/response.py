@@ -193,6 +193,12 @@ class DynamicResponse:
         """xarray Dataset: the steady period, the problem's coefficients, the history (if any), metrics in attrs."""
         import xarray as xr
 
+        data_vars, coords, attrs = self.dataset_parts()
+        return xr.Dataset(data_vars=data_vars, coords=coords, attrs=attrs)
+
+    def dataset_parts(self) -> tuple[dict, dict, dict]:
+        """(data variables, coordinates, attributes) of :meth:`to_xarray`, as ``name → (dims, values, attrs)``
+        (what the report's results file writes without building a Dataset)."""
         from thermogear import __version__
 
         problem = self.problem
@@ -233,7 +239,7 @@ class DynamicResponse:
         for key, value in self.metrics.items():
             if isinstance(value, float):
                 attrs[key] = value
-        return xr.Dataset(data_vars=data_vars, coords=coords, attrs=attrs)
+        return data_vars, coords, attrs
 
     def save(self, path: str | os.PathLike) -> Path:
         """Write :meth:`to_xarray` to netCDF (h5netcdf), atomically: a temporary file, then ``os.replace``."""

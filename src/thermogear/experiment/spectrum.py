@@ -19,8 +19,9 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
-from scipy import signal as scipy_signal
 
+# scipy.signal (0.4 s to import) is imported where a spectrum is taken: the rig data of this package are read by
+# the report, which takes no spectrum
 from thermogear.experiment.signals import Signal, SignalError
 
 WINDOW = "hann"
@@ -180,6 +181,7 @@ def spectrum(signal: Signal, method: str = "welch", segment_length: int | None =
     """
     values, rate = signal.values, signal.sampling_rate_hz
     if method == "fft":
+        from scipy import signal as scipy_signal  # noqa: PLC0415
         frequency, power = scipy_signal.periodogram(values, fs=rate, window=WINDOW, detrend="constant",
                                                     scaling="spectrum")
         return Spectrum(frequency, power, "fft", values.size, 1, rate)
@@ -191,6 +193,7 @@ def spectrum(signal: Signal, method: str = "welch", segment_length: int | None =
     if not 0 <= overlap < 1:
         raise SignalError(f"overlap {overlap}: allowed [0, 1)")
     step = length - int(round(overlap * length))
+    from scipy import signal as scipy_signal  # noqa: PLC0415
     frequency, power = scipy_signal.welch(values, fs=rate, window=WINDOW, nperseg=length,
                                           noverlap=length - step, detrend="constant", scaling="spectrum")
     segments = 1 + (values.size - length) // step
@@ -245,5 +248,6 @@ def mesh_orders(spectrum_: Spectrum, mesh_frequency_hz: float, orders: int = 3,
 
 def _local_maxima(power: np.ndarray, mask: np.ndarray) -> np.ndarray:
     """Indices of interior local maxima of ``power`` that lie in ``mask``."""
+    from scipy import signal as scipy_signal  # noqa: PLC0415
     indices, _ = scipy_signal.find_peaks(power)
     return indices[mask[indices]]

@@ -16,6 +16,7 @@ from typing import Callable
 from thermogear.citations import citations_used, clear_citations
 from thermogear.report.evaluate import (Evaluation, evaluate_case, is_paper_case, key_results, model_messages,
                                         paper_verdicts)
+from thermogear.report.steps import steps_of_report
 from thermogear.report.writer import OutputFolder
 
 __all__ = ["ReportOutcome", "build_report", "report_steps"]
@@ -42,57 +43,85 @@ class ReportOutcome:
 
 def report_steps(case, models=("elastic", "thermal")) -> list[str]:
     """The progress steps of :func:`build_report` for ``case`` (for a progress bar's total)."""
-    steps = [f"{model} model" for model in models] + ["thermal stiffness", "damping", "start-up transients"]
-    if is_paper_case(case):
-        steps += ["thermoelastic prediction", "rig trend", "FE verification"]
-    return steps + ["figures", "files"]
+    return steps_of_report(is_paper_case(case), models)
 
 
 def build_report(case, out: Path | str, *, force: bool = False, method: str = "periodic", paper: bool | None = None,
-                 progress: Callable[[str], None] | None = None) -> ReportOutcome:
+                 progress: Callable[[str], None] | None = None, timings: dict | None = None) -> ReportOutcome:
     """Run the chain of ``case`` and write its report folder ``out`` (see module docstring).
 
     ``paper``: add the paper column (default: for the paper's own case). An existing ``out`` is refused before
-    any work unless ``force``. ``progress(step)`` is called before each step.
+    any work unless ``force``. ``progress(step)`` is called before each step. ``timings``: seconds of what the
+    caller did before (start-up, imports), listed first in ``timings_s`` so that the stages add up to the whole
+    command. The results file is written in a second process while the figures are drawn
+    (:mod:`thermogear.forked`).
     """
-    from thermogear import __version__
-    from thermogear.report.figures import report_figures, save_figure
+    begin = time.perf_counter()
+    from thermogear import __version__, forked
+    from thermogear.evaluation import finish_evaluation
+    from thermogear.report.figures import FE_FIGURES, FIGURES, SECOND_PROCESS_FIGURES, write_figures
     from thermogear.report.html import render_report
-    from thermogear.report.results_file import (case_toml_text, summary_document, write_results_netcdf,
-                                                write_summary_json)
+    from thermogear.report.results_file import case_toml_text, summary_document, write_summary_json
 
+    before = dict(timings or {})
+    before["imports"] = before.get("imports", 0.0) + time.perf_counter() - begin
     start = time.perf_counter()
     step = progress or (lambda name: None)
     folder = OutputFolder(Path(out), force=force)
     folder.check()
     clear_citations()
     paper = is_paper_case(case) if paper is None else paper
-    evaluation = evaluate_case(case, method=method, progress=step)
-    verdicts = paper_verdicts(evaluation) if paper else []
-    results = key_results(evaluation)
-    messages = [text for model, response in evaluation.responses.items() for text in model_messages(response, model)]
-    step("figures")
-    figure_start = time.perf_counter()
-    figures, missing = report_figures(evaluation)
-    evaluation.timings["figures"] = time.perf_counter() - figure_start
-    step("files")
-    write_start = time.perf_counter()
+    evaluation = evaluate_case(case, method=method, progress=step, wait=False)  # FE: still in its child
+    evaluation.timings = {**before, **evaluation.timings}
     with folder:
+        step("figures")
+        figure_start = time.perf_counter()
         figure_folder = folder.path / "figures"
         figure_folder.mkdir()
-        pngs = {}
-        for name, figure in figures.items():
-            save_figure(figure, figure_folder, name)
-            pngs[name] = (figure_folder / f"{name}.png").read_bytes()
-        write_results_netcdf(evaluation, folder.path / "results.nc")
+        import matplotlib.pyplot  # noqa: F401, PLC0415  (once, before the fork: both processes draw with it)
+
+        second = forked.start("figures and results file", _second_process_work, evaluation, folder.path)
+        try:
+            missing = write_figures(evaluation, figure_folder, [name for name in FIGURES if name not in
+                                                                (*SECOND_PROCESS_FIGURES, *FE_FIGURES)])
+            evaluation.timings["figures"] = time.perf_counter() - figure_start
+            if evaluation.pending:
+                step("FE verification")
+                finish_evaluation(evaluation)
+            figure_start = time.perf_counter()
+            missing.update(write_figures(evaluation, figure_folder, FE_FIGURES))
+            missing.update(second.result())
+        finally:
+            second.cancel()
+        evaluation.timings["figures"] += time.perf_counter() - figure_start
+        evaluation.background_timings["figures and results file"] = second.seconds
+        step("files")
+        write_start = time.perf_counter()
+        missing = {name: missing[name] for name in FIGURES if name in missing}
+        figures = [name for name in FIGURES if name not in missing]
+        pngs = {name: (figure_folder / f"{name}.png").read_bytes() for name in figures}
+        verdicts = paper_verdicts(evaluation) if paper else []
+        results = key_results(evaluation)
+        messages = [text for model, response in evaluation.responses.items()
+                    for text in model_messages(response, model)]
         citations = citations_used()
-        document = summary_document(evaluation, verdicts, results, messages, figures, missing, citations)
-        write_summary_json(document, folder.path / "summary.json")
         page = render_report(evaluation, version=__version__, toml_text=case_toml_text(case), pngs=pngs,
                              missing_figures=missing, results=results, verdicts=verdicts, messages=messages,
                              citations=citations)
         (folder.path / "report.html").write_text(page, encoding="utf-8")
-    evaluation.timings["files"] = time.perf_counter() - write_start
+        evaluation.timings["files"] = time.perf_counter() - write_start  # summary.json, written last, is ~1 ms
+        document = summary_document(evaluation, verdicts, results, messages, figures, missing, citations)
+        write_summary_json(document, folder.path / "summary.json")
     return ReportOutcome(folder=folder.target, evaluation=evaluation, verdicts=verdicts, results=results,
                          messages=messages, figures=sorted(figures), missing_figures=missing,
-                         seconds=time.perf_counter() - start, timings=dict(evaluation.timings))
+                         seconds=time.perf_counter() - start + sum(before.values()), timings=dict(evaluation.timings))
+
+
+def _second_process_work(evaluation, folder: Path) -> dict[str, str]:
+    """What the second process does while the first draws its figures: results.nc, then its share of the
+    figures. Returns the missing figures with their reasons."""
+    from thermogear.report.figures import SECOND_PROCESS_FIGURES, write_figures
+    from thermogear.report.results_file import write_results_netcdf
+
+    write_results_netcdf(evaluation, folder / "results.nc")
+    return write_figures(evaluation, folder / "figures", SECOND_PROCESS_FIGURES)

@@ -11,7 +11,8 @@ from typing import Any, Callable
 
 import numpy as np
 
-__all__ = ["FIG6_SPAN_MS", "FIGURES", "report_figures", "save_figure"]
+__all__ = ["FE_FIGURES", "FIG6_SPAN_MS", "FIGURES", "SECOND_PROCESS_FIGURES", "report_figures", "save_figure",
+           "write_figures"]
 
 #: Time span of the right panel of Fig. 6 [ms] (the paper's 0–5 ms).
 FIG6_SPAN_MS = 5.0
@@ -42,6 +43,14 @@ def _pyplot():
     import matplotlib.pyplot as plt
 
     return plt
+
+
+def _stairs(ax, values, edges, **style):
+    """A piecewise-constant curve (``values`` between ``edges``) drawn as one line with vertical jumps: the shape
+    of :meth:`~matplotlib.axes.Axes.stairs` without a patch, whose data limits matplotlib updates segment by
+    segment in Python (seconds for the 0–5 ms panel of Fig. 6)."""
+    edges, values = np.asarray(edges), np.asarray(values)
+    return ax.plot(np.repeat(edges, 2)[1:-1], np.repeat(values, 2), **style)
 
 
 def _mark_points(ax, case) -> None:
@@ -113,10 +122,10 @@ def fig6(evaluation):
     figure, (left, right) = plt.subplots(1, 2, figsize=(11, 4.0), constrained_layout=True)
     nodes_ms = grid.nodes * 1e3
     for slot, values in enumerate(simulation.pair_stiffness):
-        left.stairs(values * scale, nodes_ms, baseline=None, lw=1.0, label=f"k_T pair {slot + 1}")
-    left.stairs(simulation.mesh_stiffness * scale, nodes_ms, baseline=None, color="k", lw=1.6, label="k_T total")
+        _stairs(left, values * scale, nodes_ms, lw=1.0, label=f"k_T pair {slot + 1}")
+    _stairs(left, simulation.mesh_stiffness * scale, nodes_ms, color="k", lw=1.6, label="k_T total")
     if elastic is not None:
-        left.stairs(elastic.mesh_stiffness * scale, elastic.grid.nodes * 1e3, baseline=None, color="0.5", ls="--", lw=1.0,
+        _stairs(left, elastic.mesh_stiffness * scale, elastic.grid.nodes * 1e3, color="0.5", ls="--", lw=1.0,
                     label="k_e total")
     left.set_xlabel("time τ in one mesh period [ms]")
     left.set_ylabel("stiffness per width [N/(mm·μm)]")
@@ -126,12 +135,12 @@ def fig6(evaluation):
     count = int(np.ceil(FIG6_SPAN_MS * 1e-3 / period))
     times = np.concatenate([grid.nodes[:-1] + j * period for j in range(count)] + [[count * period]]) * 1e3
     values = np.tile(simulation.mesh_stiffness * scale, count)
-    right.stairs(values, times, baseline=None, color="k", label="k_T total")
+    _stairs(right, values, times, color="k", label="k_T total")
     if elastic is not None:
         elastic_nodes = elastic.grid.nodes
         elastic_times = np.concatenate([elastic_nodes[:-1] + j * elastic_nodes[-1] for j in range(count)]
                                        + [[count * elastic_nodes[-1]]]) * 1e3
-        right.stairs(np.tile(elastic.mesh_stiffness * scale, count), elastic_times, baseline=None, color="0.5",
+        _stairs(right, np.tile(elastic.mesh_stiffness * scale, count), elastic_times, color="0.5",
                      ls="--", label="k_e total")
     right.set_xlim(0.0, FIG6_SPAN_MS)
     right.set_xlabel("time τ [ms]")
@@ -156,7 +165,7 @@ def _damping_figure(evaluation, model: str):
     period = grid.nodes[-1]
     periods = 3
     times = np.concatenate([grid.nodes[:-1] + j * period for j in range(periods)] + [[periods * period]]) * 1e3
-    right.stairs(np.tile(summary.mesh[model], periods), times, baseline=None, color=_COLORS[model],
+    _stairs(right, np.tile(summary.mesh[model], periods), times, color=_COLORS[model],
                  label=f"c(τ), rule '{summary.rule}'")
     means = summary.region_means[model]
     for region, style in (("single", "-."), ("double", ":")):
@@ -190,20 +199,32 @@ def _pair(evaluation, source: str):
     return first, other
 
 
+#: Axis label and scale of the start-up panels (the units of Luo & Li Figs. 9 and 11 and of the steady panels).
+_START_UP_AXES = {"displacement": ("transmission error x [μm]", 1e6), "velocity": ("velocity ẋ [mm/s]", 1e3)}
+
+
 def _start_up(ax, evaluation, quantity: str, periods: int = 6) -> None:
-    """The first ``periods`` mesh periods from rest (the transient), x [μm] or ẋ [mm/s] against time [ms]."""
-    scale = 1e6 if quantity == "displacement" else 1e3
-    for model in ("elastic", "thermal"):
-        response = evaluation.transients.get(model)
-        if response is None:
-            continue
+    """The first ``periods`` mesh periods from rest (the transient), x [μm] or ẋ [mm/s] against time [ms], in the
+    colours and line styles of the steady panel beside it (elastic first, as :func:`_pair` orders them)."""
+    label, scale = _START_UP_AXES[quantity]
+    models = [model for model in ("elastic", "thermal") if evaluation.transients.get(model) is not None]
+    for number, model in enumerate(models):
+        response = evaluation.transients[model]
         history = response.history
         count = int(np.searchsorted(history.time, periods * response.problem.period, side="right"))
-        ax.plot(history.time[:count] * 1e3, getattr(history, quantity)[:count] * scale, color=_COLORS[model],
-                ls="-" if model == "elastic" else "--", label=f"{model}, from rest")
+        ax.plot(history.time[:count] * 1e3, getattr(history, quantity)[:count] * scale,
+                label=f"{model}, from rest", **_model_style(number))
     ax.set_xlabel("time [ms]")
+    ax.set_ylabel(label)
     ax.set_title(f"start-up from rest (first {periods} mesh periods)", fontsize=9)
     ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=8)
+
+
+def _model_style(number: int) -> dict:
+    from thermogear.dynamics.plots import MODEL_STYLES  # noqa: PLC0415
+
+    return MODEL_STYLES[number % 2]
 
 
 def _steady_and_start_up(evaluation, quantity: str):
@@ -215,7 +236,6 @@ def _steady_and_start_up(evaluation, quantity: str):
     draw = first.plot_displacement if quantity == "displacement" else first.plot_velocity
     draw(other=other, ax=right, periods=2)
     right.set_title("steady state, two mesh periods", fontsize=9)
-    left.set_ylabel(right.get_ylabel())
     return figure
 
 
@@ -272,10 +292,12 @@ _DRAW: dict[str, tuple[Callable[[Any], Any], tuple[str, ...]]] = {
 }
 
 
-def report_figures(evaluation) -> tuple[dict[str, Any], dict[str, str]]:
-    """Draw every figure: ``({name: matplotlib figure}, {name: reason it is missing})``."""
+def report_figures(evaluation, names=None) -> tuple[dict[str, Any], dict[str, str]]:
+    """Draw every figure (or those in ``names``): ``({name: matplotlib figure}, {name: reason it is missing})``."""
     figures, missing = {}, {}
     for name, (draw, stages) in _DRAW.items():
+        if names is not None and name not in names:
+            continue
         if name == "fig15" and evaluation.fem is None:
             missing[name] = evaluation.problem("FE verification") or "the FE verification was not run"
             continue
@@ -323,5 +345,24 @@ def save_figure(figure, folder, name: str) -> list[str]:
         path = folder / f"{name}{suffix}"
         figure.savefig(path, **options)
         files.append(path.name)
+        # the layout is done: the PNG's constrained layout placed every axes in figure coordinates, which do not
+        # depend on the resolution, so the SVG keeps it (a second layout pass is a third of a figure's time)
+        figure.set_layout_engine("none")
     plt.close(figure)
     return files
+
+
+#: The figures a second process draws while the first draws the rest (the results file is written there too):
+#: about half of the drawing time each on two cores (fig. 4's four panels are the slowest figure).
+SECOND_PROCESS_FIGURES = ("fig4", "fig9", "fig10")
+#: The figures that need the FE verification: drawn last, once its child process has answered.
+FE_FIGURES = ("fig15",)
+
+
+def write_figures(evaluation, folder, names=None) -> dict[str, str]:
+    """Draw the figures ``names`` (all: None) and save each as PNG and SVG into ``folder``; returns the missing
+    ones with their reasons."""
+    figures, missing = report_figures(evaluation, names)
+    for name, figure in figures.items():
+        save_figure(figure, folder, name)
+    return missing

@@ -128,7 +128,7 @@ def fe_versus_analytical_text(numbers: dict) -> str:
 
 def _headline_section(evaluation, verdicts, pngs: dict[str, bytes]) -> str:
     """The first screen: the case in one line, the headline comparison and the key figures."""
-    from thermogear.report.paper_table import known_gaps, table_counts
+    from thermogear.report.paper_table import known_gaps, known_gaps_text, table_counts
 
     case = evaluation.case
     pair, op = case.gear_pair, case.operating_point
@@ -144,7 +144,7 @@ def _headline_section(evaluation, verdicts, pngs: dict[str, bytes]) -> str:
             f"<p class='headline' id='headline-numbers'><span class='big'>{prediction['within']} of "
             f"{prediction['total']}</span> "
             f"predictions of the paper's numbers within their argued tolerance · "
-            f"<span class='big'>{prediction['outside'] + prediction['not computed']}</span> known gaps · "
+            f"<span class='big'>{_e(known_gaps_text(verdicts))}</span> · "
             f"{statement['within']} of {statement['total']} qualitative statements reproduced.</p>"
             f"<p class='small'>Not counted above: {counts['input']['total']} input rows (Table 1 and rig data "
             f"transcribed: {_kind_counts_text(counts['input'])}) and {counts['calibration']['total']} calibration "

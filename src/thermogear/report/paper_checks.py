@@ -20,7 +20,7 @@ import math
 from dataclasses import dataclass, field
 
 __all__ = ["KINDS", "KIND_MEANING", "Check", "Relative", "Absolute", "Bounds", "Range", "Claim", "Exact",
-           "PaperRow", "Verdict", "judge", "format_value", "table_counts", "known_gaps"]
+           "PaperRow", "Verdict", "judge", "format_value", "table_counts", "known_gaps", "known_gaps_text"]
 
 #: The kinds of row, in the order the report lists them.
 KINDS = ("prediction", "qualitative", "calibration", "input")
@@ -261,3 +261,14 @@ def known_gaps(verdicts) -> list:
     Each carries its cause in ``row.gap`` (empty: an undocumented difference, which the tests refuse)."""
     return [verdict for verdict in verdicts if verdict.row.kind in ("prediction", "qualitative")
             and verdict.status != "within"]
+
+
+def known_gaps_text(verdicts) -> str:
+    """How many known gaps the report lists, split by kind: ``"18 known gaps (13 predictions, 5 statements)"``.
+    Every headline (report, terminal, docs) counts the same rows as the list beneath it (:func:`known_gaps`)."""
+    gaps = known_gaps(verdicts)
+    predictions = sum(verdict.row.kind == "prediction" for verdict in gaps)
+    statements = len(gaps) - predictions
+    parts = [f"{count} {word}{'' if count == 1 else 's'}"
+             for count, word in ((predictions, "prediction"), (statements, "statement")) if count]
+    return f"{len(gaps)} known gap{'' if len(gaps) == 1 else 's'}" + (f" ({', '.join(parts)})" if parts else "")

@@ -97,10 +97,11 @@ def _temperature_and_stiffness() -> list[PaperRow]:
     add(PaperRow("fig3.gamma_start", "§2.1.5, Fig. 3c", "start of the path of contact Γ_A (figure axis starts at "
                  "−0.6)", -0.6, "–", Range(-0.6, -0.5),
                  "The paper gives no Γ_A, only the figure's axis limit −0.6; an axis drawn to the next tick outside "
-                 "the data puts Γ_A between −0.6 and −0.5.", figure="3c", paper_display="axis from −0.6"))
+                 "the data puts Γ_A between −0.6 and −0.5. A range read off an axis, not a number: counted as a "
+                 "statement.", kind="qualitative", figure="3c", paper_display="axis from −0.6"))
     add(PaperRow("fig3.gamma_end", "§2.1.5, Fig. 3c", "end of the path of contact Γ_E (figure axis ends at 0.5)", 0.5,
-                 "–", Range(0.4, 0.5), "As for Γ_A: an axis ending at the tick 0.5 puts Γ_E between 0.4 and 0.5.",
-                 figure="3c", paper_display="axis to 0.5",
+                 "–", Range(0.4, 0.5), "As for Γ_A: an axis ending at the tick 0.5 puts Γ_E between 0.4 and 0.5 (a "
+                 "statement, not a number).", kind="qualitative", figure="3c", paper_display="axis to 0.5",
                  gap="Table 1's geometry (ISO 21771) ends the path at Γ_E = 0.521: the paper's axis cuts the last "
                      "2 % of the path of contact off, so the figure's span is the paper's, not the gear's."))
     # ----------------------------------------------------------------- thermal stiffness (§2.1, Fig. 4)
@@ -153,12 +154,14 @@ def _temperature_and_stiffness() -> list[PaperRow]:
                      gap=_ROOT_GAP))
     # ------------------------------------------------------------------ time-varying stiffness (Fig. 6)
     add(PaperRow("fig6.contact_ratio", "§2.2, Fig. 6", "contact ratio ε", 1.5, "–", Range(1.0, 2.0),
-                 "The paper states only 1 < ε < 2; the range is the statement.", figure="6",
-                 paper_display="1 < ε < 2"))
+                 "The paper states only 1 < ε < 2 (one and two pairs alternate), no number: counted as a "
+                 "statement, since every spur pair with alternating single and double contact passes it.",
+                 kind="qualitative", figure="6", paper_display="1 < ε < 2"))
     add(PaperRow("fig6.stiffness_scale", "§2.2, Fig. 6", "peak thermal mesh stiffness per width (figure axis ×10¹⁰ "
                  "N/m²)", 20.0, "N/(mm·μm)", Range(10.0, 100.0),
                  "The figure's axis is scaled 10¹⁰ N/m² = 10 N/(mm·μm): the paper gives an order of magnitude, so "
-                 "the peak must lie between 1 and 10 × 10¹⁰ N/m².", figure="6", paper_display="order 10¹⁰ N/m²",
+                 "the peak must lie between 1 and 10 × 10¹⁰ N/m². An order of magnitude, not a number: counted as "
+                 "a statement.", kind="qualitative", figure="6", paper_display="order 10¹⁰ N/m²",
                  scale=1e-9))
     add(PaperRow("fig6.time_span", "§2.2, Fig. 6", "time span of the stiffness figure", 5.0, "ms", Absolute(1e-6),
                  "A figure setting: thermogear's Fig. 6 (right) is drawn over the same 0–5 ms.", kind="input",

@@ -12,11 +12,13 @@ The comparison machinery is in :mod:`thermogear.report.paper_checks`, the rows i
 from __future__ import annotations
 
 from thermogear.report.paper_checks import (KIND_MEANING, KINDS, Absolute, Bounds, Check, Claim, Exact, PaperRow,
-                                            Range, Relative, Verdict, format_value, judge, known_gaps, table_counts)
+                                            Range, Relative, Verdict, format_value, judge, known_gaps, known_gaps_text,
+                                            table_counts)
 from thermogear.report.paper_rows import paper_rows
 
 __all__ = ["Check", "Relative", "Absolute", "Bounds", "Range", "Claim", "Exact", "PaperRow", "PAPER_ROWS", "row",
-           "Verdict", "judge", "format_value", "KINDS", "KIND_MEANING", "table_counts", "known_gaps"]
+           "Verdict", "judge", "format_value", "KINDS", "KIND_MEANING", "table_counts", "known_gaps",
+           "known_gaps_text"]
 
 #: Every row, in the order of the paper.
 PAPER_ROWS: tuple[PaperRow, ...] = tuple(paper_rows())

@@ -18,8 +18,8 @@ import numpy as np
 
 from thermogear.serialization import json_ready
 
-__all__ = ["case_toml_text", "curves_dataset", "write_results_netcdf", "summary_document", "write_summary_json",
-           "RESPONSE_GROUPS"]
+__all__ = ["case_toml_text", "curves_dataset", "curves_parts", "write_results_netcdf", "summary_document",
+           "write_summary_json", "RESPONSE_GROUPS"]
 
 #: netCDF group of each dynamic response: (evaluation attribute, model) → group name
 RESPONSE_GROUPS = {("responses", "elastic"): "elastic_steady", ("responses", "thermal"): "thermal_steady",
@@ -44,6 +44,12 @@ def curves_dataset(evaluation):
     """xarray Dataset of the curves along the path and over the mesh cycle (root group of results.nc)."""
     import xarray as xr
 
+    data, coords, attrs = curves_parts(evaluation)
+    return xr.Dataset(data_vars=data, coords=coords, attrs=attrs)
+
+
+def curves_parts(evaluation) -> tuple[dict, dict, dict]:
+    """(data variables, coordinates, attributes) of :func:`curves_dataset`, ``name → (dims, values, attrs)``."""
     from thermogear import __version__
 
     case = evaluation.case
@@ -95,20 +101,20 @@ def curves_dataset(evaluation):
              "static_normal_load_n": case.normal_load,
              "groups": json.dumps({name: f"{model} model, {'steady state' if kind == 'responses' else 'from rest'}"
                                    for (kind, model), name in RESPONSE_GROUPS.items()})}
-    return xr.Dataset(data_vars=data, coords=coords, attrs=attrs)
+    return data, coords, attrs
 
 
 def write_results_netcdf(evaluation, path: Path) -> list[str]:
-    """Write results.nc (root: curves; one group per response). Returns the group names written."""
-    curves_dataset(evaluation).to_netcdf(path, mode="w", engine="h5netcdf")
-    groups = []
+    """Write results.nc (root: curves; one group per response). Returns the group names written. Written with
+    h5netcdf directly (:mod:`thermogear.report.netcdf_file`); xarray reads it as before."""
+    from thermogear.report.netcdf_file import write_groups
+
+    groups = {}
     for (kind, model), group in RESPONSE_GROUPS.items():
         response = getattr(evaluation, kind).get(model)
-        if response is None:
-            continue
-        response.to_xarray().to_netcdf(path, mode="a", group=group, engine="h5netcdf")
-        groups.append(group)
-    return groups
+        if response is not None:
+            groups[group] = response.dataset_parts()
+    return write_groups(path, curves_parts(evaluation), groups)
 
 
 def summary_document(evaluation, verdicts, results, messages, figures, missing_figures, citations) -> dict:
@@ -145,6 +151,7 @@ def summary_document(evaluation, verdicts, results, messages, figures, missing_f
         "not_computed_stages": dict(evaluation.problems),
         "figures": {"drawn": sorted(figures), "missing": missing_figures},
         "timings_s": dict(evaluation.timings),
+        "timings_background_s": dict(evaluation.background_timings),
         "references": [{"key": ref.key, "text": ref.formatted()} for ref in citations],
     }, non_finite="null")
 

@@ -60,7 +60,7 @@ def print_summary(outcome, console: Console) -> None:
             table.add_row(row.quantity, row.paper_text, format_value(verdict.value), row.unit, verdict.deviation_text,
                           style[verdict.status] + ("" if not row.gap else " (known gap)"))
         console.print(table)
-        from thermogear.report.paper_table import table_counts
+        from thermogear.report.paper_table import known_gaps_text, table_counts
 
         counts = table_counts(outcome.verdicts)
         for kind, label in (("input", "inputs and rig data transcribed (not counted)"),
@@ -72,7 +72,7 @@ def print_summary(outcome, console: Console) -> None:
                           highlight=False)
         prediction, statement = counts["prediction"], counts["qualitative"]
         console.print(Text.assemble((f"predictions: {prediction['within']} of {prediction['total']} within", "bold"),
-                                    ", ", (f"{prediction['outside'] + prediction['not computed']} known gaps", "red"),
+                                    ", ", (known_gaps_text(outcome.verdicts), "red"),
                                     f" (causes in report.html); statements: {statement['within']} of "
                                     f"{statement['total']} reproduced"))
     else:
