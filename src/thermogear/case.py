@@ -20,11 +20,13 @@ from typing import Any, Callable
 import pydantic
 
 from thermogear import warning_scope
+from thermogear.case_limits import check_model_limits
 from thermogear.errors import CaseError, closest_key
 from thermogear.fzg import fzg_load_stage_torque
 from thermogear.geometry import Gear, GearPair, involute
 from thermogear.materials import Material
 from thermogear.operating import OperatingPoint
+from thermogear.schema.base import StrictTypeError
 from thermogear.schema import (CaseFile, DampingSection, DynamicsSection, FemSection, GearsSection, HousingSection,
                                LubricantSection, MaterialSection, TemperatureSection, ThermalSection)
 from thermogear.temperature_field import check_temperatures, temperature_field_from_section
@@ -185,6 +187,7 @@ def check_case(case: "Case") -> None:
     with warning_scope.ignored():
         _check_temperature_field(case)
     _check_thermal_inputs(case)
+    check_model_limits(case)
     for check in _CASE_CHECKS:
         check(case)
 
@@ -297,6 +300,8 @@ def _case_error_from_validation(error: pydantic.ValidationError) -> CaseError:
     location = [str(part) for part in first["loc"] if not isinstance(part, int)]
     key = ".".join(location) or "case"
     value = first.get("input")
+    if isinstance(raised, StrictTypeError):
+        return CaseError(key, value, raised.allowed, raised.reason)
     kind = first["type"]
     context = first.get("ctx") or {}
     if kind == "extra_forbidden":
