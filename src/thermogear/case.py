@@ -30,7 +30,7 @@ from thermogear.schema.base import StrictTypeError
 from thermogear.schema import (CaseFile, DampingSection, DynamicsSection, FemSection, GearsSection, HousingSection,
                                LubricantSection, MaterialSection, TemperatureSection, ThermalSection)
 from thermogear.temperature_field import check_temperatures, temperature_field_from_section
-from thermogear.text_files import read_user_text
+from thermogear.text_files import is_existing_file, path_exists, read_user_text
 from thermogear.thermoelastic.inputs import check_thermoelastic_inputs
 
 
@@ -68,7 +68,7 @@ class Case:
     def directory(self) -> Path | None:
         """Folder of the case file (for relative paths in it), None for a built-in set."""
         path = Path(self.source)
-        return path.parent if path.suffix == ".toml" and path.exists() else None
+        return path.parent if path.suffix == ".toml" and path_exists(path) else None
 
     @property
     def equivalent_mass(self) -> float:
@@ -139,8 +139,8 @@ def load_case(name_or_path: str | Path) -> Case:
     runs; a file that is not UTF-8 text or not TOML is one CaseError, never a traceback."""
     text_source = str(name_or_path)
     path = Path(name_or_path)
-    if path.suffix == ".toml" or path.exists():
-        if not path.is_file():
+    if path.suffix == ".toml" or path_exists(path):
+        if not is_existing_file(path):
             raise CaseError("case", text_source, "an existing .toml file or a built-in name "
                             f"({', '.join(parameter_set_names())})", "no such file")
         text = read_user_text(path, "case", text_source, "TOML")
@@ -158,7 +158,7 @@ def load_case(name_or_path: str | Path) -> Case:
     except RecursionError:
         raise CaseError("case", text_source, "TOML nested a few levels deep",
                         "the file nests tables or arrays too deeply to be a case file") from None
-    return case_from_document(document, source=str(path if path.exists() else text_source))
+    return case_from_document(document, source=str(path if path_exists(path) else text_source))
 
 
 # --------------------------------------------------------------------------------------------- load-time checks

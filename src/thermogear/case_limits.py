@@ -23,6 +23,13 @@ import math
 
 from thermogear.errors import CaseError
 
+#: Smallest line load F_bt / b [N/m] (0.01 N/mm). With a mesh stiffness near ISO 6336-1's c_γα ≈ 20 N/(mm·μm) it
+#: deflects the teeth by 0.5 nm, a few atomic spacings and a hundredth of the finest ground flank's roughness:
+#: below it the static transmission error has no physical meaning, and the solvers' tolerances (scaled to it)
+#: lose the orbit (power_kw = 1e-12 gave a non-periodic response and NaN multipliers, issue 25). Idling gears
+#: (rattle under drag torque) carry 0.1 to a few N/mm.
+MINIMUM_LINE_LOAD = 10.0
+
 #: Allowed range of λ = f_mesh / f_n [–] (module docstring). Ordinary gearboxes run at 0.01 to 5.
 FREQUENCY_RATIO_RANGE = (1e-5, 1e3)
 
@@ -89,7 +96,27 @@ def check_dynamic_range(case) -> None:
                     f"a speed giving λ in [{low:g}, {high:g}]", reason)
 
 
+def load_key(case) -> str:
+    """The case-file key the load was given by."""
+    operating = case.document.get("operating", {})
+    return next((f"operating.{name}" for name in ("power_kw", "torque_nm", "fzg_load_stage")
+                 if operating.get(name) is not None), "operating.torque_nm")
+
+
+def check_load_range(case) -> None:
+    """Refuse a load below :data:`MINIMUM_LINE_LOAD`, naming the key it was given by."""
+    line_load = case.normal_load / case.gear_pair.face_width
+    if line_load >= MINIMUM_LINE_LOAD:
+        return
+    key = load_key(case)
+    value = case.document["operating"].get(key.split(".")[1])
+    raise CaseError(key, value, f"a load of at least {MINIMUM_LINE_LOAD * 1e-3:g} N/mm of face width (here "
+                    f"{line_load * 1e-3:.3g} N/mm)", "the teeth would deflect by less than a nanometre, below any "
+                    "flank's roughness: the transmission error has no meaning and the solvers lose the orbit")
+
+
 def check_model_limits(case) -> None:
     """Every limit of this module, in order (called by :func:`thermogear.case.check_case`)."""
     check_fillet_fit(case)
+    check_load_range(case)
     check_dynamic_range(case)

@@ -195,7 +195,9 @@ def _metrics(problem: BacklashMeshProblem, orbit: BacklashOrbit, include_damping
         "stable": bool(orbit.stable),
         "contact_loss": {"detected": values["contact_loss_fraction"] > 0.0,
                          "fraction": values["contact_loss_fraction"]},
-        "valid": converged or orbit.response == "non-periodic",
+        # a non-periodic response has no steady orbit: its metrics describe the recorded periods, never a valid
+        # steady state (issue 25: it was reported "steady orbit found: yes" with NaN multipliers)
+        "valid": converged and orbit.response != "non-periodic",
     }
 
 
