@@ -113,12 +113,16 @@ class Simulation:
         """Solve the dynamics and return the response with the checks of a thermal result (``flags``).
 
         See :meth:`solve` for the methods."""
-        response = self.solve(method, include_damping_force)
-        if self.model != "thermal":
-            return response
-        from thermogear.mesh.plausibility import thermal_result_flags
+        from thermogear.load_capacity import load_flags
 
-        return replace(response, flags=thermal_result_flags(self.mesh_model, self.state, response.metrics))
+        response = self.solve(method, include_damping_force)
+        case = self.case
+        flags = load_flags(case.gear_pair, case.material, case.operating_point.torque)  # a load no tooth carries
+        if self.model == "thermal":
+            from thermogear.mesh.plausibility import thermal_result_flags
+
+            flags += thermal_result_flags(self.mesh_model, self.state, response.metrics)
+        return replace(response, flags=flags) if flags else response
 
     def solve(self, method: Method | None = None, include_damping_force: bool | None = None):
         """Solve the dynamics and return the response.

@@ -34,8 +34,19 @@ def reproduce(
         suggestion = closest_key(paper, list(PAPERS))
         raise CaseError("paper", paper, ", ".join(PAPERS),
                         "no such paper" + (f" (did you mean '{suggestion}'?)" if suggestion else ""))
-    case = load_case(PAPERS[paper])
+    from thermogear.ownership import check_output_folder
+
     target = out if out is not None else Path(f"thermogear-{paper}")
+    check_output_folder(target, "--out")  # before any work
+    from thermogear.ownership import is_owned
+
+    # a second run replaces its own previous report (only the files it wrote; a user's files stay): the README's
+    # first command works twice. A folder thermogear did not write is still refused.
+    force = force or is_owned(target, "report")
+    from thermogear.report.writer import OutputFolder
+
+    OutputFolder(target, force=force).check()  # before any work
+    case = load_case(PAPERS[paper])
     with interruptible(target), step_progress(report_steps(case), quiet, error_console) as advance:
         outcome = build_report(case, target, force=force, paper=True, progress=advance)
     if not quiet:

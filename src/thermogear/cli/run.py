@@ -81,6 +81,12 @@ def run(
         raise CaseError("--model", model, "elastic | thermal | both", "unknown model")
     if method is not None and method not in ("periodic", "transient"):
         raise CaseError("--method", method, "periodic | transient", "unknown solution method")
+    if out is not None:
+        from thermogear.ownership import check_output_folder
+        from thermogear.report.writer import OutputFolder
+
+        check_output_folder(out, "--out")  # before any work: a name the system can hold, writable
+        OutputFolder(out, force=force).check()  # an existing folder: --force, and thermogear's own
     case = load_case(case_name)
     method = method or case.dynamics.method
     models = _MODELS[model]

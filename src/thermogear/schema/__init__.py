@@ -2,8 +2,11 @@
 
 from __future__ import annotations
 
-from pydantic import Field
+import unicodedata
 
+from pydantic import Field, field_validator
+
+from thermogear.errors import CaseError
 from thermogear.schema.base import Section
 from thermogear.schema.dynamics import DampingSection, DynamicsSection
 from thermogear.schema.fem import FemSection
@@ -22,6 +25,19 @@ class CaseInfo(Section):
     title: str = ""
     citation: str = ""
     assumptions: list[str] = Field(default_factory=list)
+
+    @field_validator("name", "title", "citation", "assumptions")
+    @classmethod
+    def _printable(cls, value, info):
+        """Text that is printed to a terminal and into reports: no control characters (an escape sequence in a
+        name was printed raw and drove the terminal, issue 25). Tabs and line breaks stay in the long texts."""
+        allowed = "" if info.field_name == "name" else "\t\n"
+        for text in value if isinstance(value, list) else [value]:
+            bad = next((c for c in text if unicodedata.category(c) == "Cc" and c not in allowed), None)
+            if bad is not None:
+                raise CaseError(f"case.{info.field_name}", text, "printable text (no control characters)",
+                                f"it holds the control character {bad!r}, which a terminal would act on")
+        return value
 
 
 class CaseFile(Section):
