@@ -49,13 +49,13 @@ class OutputFolder:
 
     def check(self) -> None:
         """Refuse an existing target without ``force`` (before any work is done)."""
+        if self.target.exists() and not self.target.is_dir():
+            raise CaseError(self.option, str(self.target), "a folder", "a file of that name exists")
+        if self.target.exists():  # a folder thermogear did not write: --force would not help, so say that first
+            require_owned(self.target, "report", self.option, "replaced")
         if self.target.exists() and not self.force:
             raise CaseError(self.option, str(self.target), "a folder that does not exist yet, or --force",
                             "the output folder exists and is not overwritten silently; pass --force to replace it")
-        if self.target.exists() and not self.target.is_dir():
-            raise CaseError(self.option, str(self.target), "a folder", "a file of that name exists")
-        if self.target.exists():
-            require_owned(self.target, "report", self.option, "replaced")
         existing = self.target.parent
         while not existing.exists() and existing != existing.parent:
             existing = existing.parent
