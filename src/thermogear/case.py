@@ -300,7 +300,9 @@ def _case_error_from_validation(error: pydantic.ValidationError) -> CaseError:
     location = [str(part) for part in first["loc"] if not isinstance(part, int)]
     key = ".".join(location) or "case"
     value = first.get("input")
-    if isinstance(raised, StrictTypeError):
+    if isinstance(raised, StrictTypeError):  # raised by the section (a model validator): its key is added here
+        key = ".".join([*location, raised.name])
+        value = value.get(raised.name) if isinstance(value, dict) else value
         return CaseError(key, value, raised.allowed, raised.reason)
     kind = first["type"]
     context = first.get("ctx") or {}

@@ -36,12 +36,15 @@ FREQUENCY_RATIO_RANGE = (1e-5, 1e3)
 
 def _fit_coefficients_positive(teeth: int, root_to_bore: float, pressure_angle: float, rack_dedendum: float,
                                rack_tip_radius: float) -> bool:
-    from thermogear.stiffness.fillet_foundation import (evaluated_root_to_bore_ratio, root_half_angle,
-                                                        sainsot_coefficient)
+    """Whether L*, M*, P*, Q* of the Sainsot fit are all positive for this gear (plain floats: it runs for every
+    case loaded, sweep points included)."""
+    from thermogear.stiffness.fillet_foundation import (NOMINAL_SEAT_RATIO, SAINSOT_COEFFICIENTS,
+                                                        SAINSOT_INPUT_RANGES, root_half_angle)
 
     theta_f = root_half_angle(teeth, pressure_angle, rack_dedendum, rack_tip_radius)
-    h_f = float(evaluated_root_to_bore_ratio(root_to_bore))
-    return all(float(sainsot_coefficient(name, h_f, theta_f)) > 0.0 for name in "LMPQ")
+    h_f = min(max(root_to_bore, SAINSOT_INPUT_RANGES["h_f"][0]), 1.0 / NOMINAL_SEAT_RATIO)  # as evaluated
+    return all(a / theta_f**2 + b * h_f**2 + c * h_f / theta_f + d / theta_f + e * h_f + f > 0.0
+               for a, b, c, d, e, f in SAINSOT_COEFFICIENTS.values())
 
 
 def check_fillet_fit(case) -> None:

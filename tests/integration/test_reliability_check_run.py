@@ -4,6 +4,7 @@ by every command with the same one message naming its key (no traceback, nothing
 
 from __future__ import annotations
 
+import json
 import tomllib
 from pathlib import Path
 
@@ -102,3 +103,15 @@ def test_sweep_tables_check_accepts_are_the_tables_sweep_accepts(vary, key, tmp_
     assert key in message
     code, _, err = invoke("sweep", str(path), "--out", str(tmp_path / "study.zarr"))
     assert code == 2 and _error_line(err) == message
+
+
+def test_check_labels_a_load_no_steel_tooth_carries_and_keeps_the_case(tmp_path):
+    # 10⁷ N·m on m 0.5, b 5 mm: DTE 5.4 m called valid before; now computed and labelled
+    path = tmp_path / "heavy.toml"
+    path.write_text('[case]\nname = "heavy"\n[gears]\nmodule_mm = 0.5\nface_width_mm = 5.0\n[gears.pinion]\n'
+                    'teeth = 20\n[gears.wheel]\nteeth = 40\n[operating]\nspeed_rpm = 1000.0\ntorque_nm = 1e7\n'
+                    '[temperature]\nbulk_c = 60.0\n', encoding="utf-8")
+    code, out, err = invoke("check", str(path), "--json")
+    assert code == 0, err
+    checks = " ".join(json.loads(out)["load_checks"])
+    assert "contact stress" in checks and "root stress" in checks and "deflection" in checks

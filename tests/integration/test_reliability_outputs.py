@@ -103,6 +103,14 @@ def test_vibration_refuses_absurd_signals_and_options(samples, options, temperat
     _one_error(code, err, words)
 
 
+def test_a_signal_header_with_an_escape_sequence_is_refused_not_printed(tmp_path):
+    path = tmp_path / "signal.csv"
+    path.write_text("time_s,accel\x1b[31m\n0,1\n0.1,2\n0.2,3\n", encoding="utf-8")
+    code, out, err = invoke("vibration", str(path))
+    _one_error(code, err, "control characters")
+    assert "\x1b" not in out + err
+
+
 def test_vibration_refuses_a_truncated_wav(tmp_path):
     from scipy.io import wavfile
 

@@ -49,3 +49,11 @@ def test_the_table_says_not_found_for_a_non_periodic_response(response):
     row = next(line for line in text.splitlines() if "Floquet" in line)
     assert "not found" in row
     assert np.isnan(response.orbit.multipliers).all()
+
+
+def test_the_result_files_of_a_non_periodic_response_carry_null_not_an_error(response):
+    # summary.json and the results file of `run --out` take metrics_json(): it raised on the NaN multipliers
+    metrics = response.metrics_json()
+    assert metrics["floquet_multipliers_abs"][0] is None and metrics["valid"] is False
+    json.dumps(metrics, allow_nan=False)
+    assert "non-periodic" in response.to_xarray().attrs["metrics"]

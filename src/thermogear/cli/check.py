@@ -16,6 +16,7 @@ def check(case: str = typer.Argument(..., metavar="CASE",
                                   help="built-in parameter set name or path to a .toml case file"),
           as_json: bool = typer.Option(False, "--json", help="one JSON object on stdout")) -> None:
     """Validate a case and print its gear-pair geometry (exit status 2 with one clear message if it is invalid)."""
+    from thermogear.load_capacity import load_flags
     from thermogear.preflight import preflight
 
     loaded = load_case(case)
@@ -35,6 +36,8 @@ def check(case: str = typer.Argument(..., metavar="CASE",
         "normal_load_n": loaded.normal_load,
         "pinion_torque_nm": loaded.operating_point.torque,
         "mesh_frequency_hz": pair.mesh_frequency(loaded.operating_point.speed_rpm),
+        # a load no steel tooth carries is computed by run, and labelled there and here
+        "load_checks": list(load_flags(pair, loaded.material, loaded.operating_point.torque)),
     }
     if as_json:
         print_json(payload)
@@ -53,6 +56,8 @@ def check(case: str = typer.Argument(..., metavar="CASE",
     table.add_row("normal load F_bt [N]", f"{loaded.normal_load:.1f}")
     table.add_row("mesh frequency [Hz]", f"{payload['mesh_frequency_hz']:.2f}")
     console.print(table)
+    for flag in payload["load_checks"]:
+        console.print(f"check — {flag}", highlight=False)
     console.print("case is valid", style="green")
 
 

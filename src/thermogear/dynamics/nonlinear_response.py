@@ -137,7 +137,9 @@ class NonlinearResponse:
 
     # ------------------------------------------------------------------ files
     def metrics_json(self) -> dict[str, Any]:
-        return json_ready(self.metrics)
+        """Metrics as plain JSON types; a number the model could not give (the multipliers of a non-periodic
+        response) is null beside its ``response`` and ``valid`` (a report of such a point raised before)."""
+        return json_ready(self.metrics, non_finite="null")
 
     def to_xarray(self):
         import xarray as xr  # noqa: PLC0415

@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import csv
 import io
+import unicodedata
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -170,6 +171,10 @@ def parse_csv_signal(text: str, column: str | None = None, rate_hz: float | None
     rows = list(csv.reader(io.StringIO("\n".join(lines)), delimiter=delimiter))
     header = [name.strip() for name in rows[0]]
     body = rows[1:]
+    if any(unicodedata.category(character) == "Cc" for name in header for character in name):
+        # the column names are printed: a terminal would act on an escape sequence (and a binary file is no CSV)
+        raise SignalError(f"{source}: the header line holds control characters; a CSV header names its columns "
+                          "in printable text (the file's content is not shown)")
     if not body:
         raise SignalError(f"{source}: no samples below the header {header}")
     if len(set(header)) != len(header) or any(not name for name in header):

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-import unicodedata
+import re
 
 from pydantic import Field, field_validator
 
@@ -18,6 +18,11 @@ from thermogear.schema.temperature import TemperatureSection
 from thermogear.schema.thermal import ThermalSection
 
 
+#: Control characters (Unicode category Cc: U+0000–U+001F and U+007F–U+009F), and the same but tab and newline.
+_CONTROL = re.compile("[\x00-\x1f\x7f-\x9f]")
+_CONTROL_BUT_LAYOUT = re.compile("[\x00-\x08\x0b-\x1f\x7f-\x9f]")
+
+
 class CaseInfo(Section):
     """[case]: what this case is and where its numbers come from."""
 
@@ -31,10 +36,11 @@ class CaseInfo(Section):
     def _printable(cls, value, info):
         """Text that is printed to a terminal and into reports: no control characters (an escape sequence in a
         name was printed raw and drove the terminal, issue 25). Tabs and line breaks stay in the long texts."""
-        allowed = "" if info.field_name == "name" else "\t\n"
+        control = _CONTROL if info.field_name == "name" else _CONTROL_BUT_LAYOUT
         for text in value if isinstance(value, list) else [value]:
-            bad = next((c for c in text if unicodedata.category(c) == "Cc" and c not in allowed), None)
-            if bad is not None:
+            found = control.search(text)
+            if found is not None:
+                bad = found.group()
                 raise CaseError(f"case.{info.field_name}", text, "printable text (no control characters)",
                                 f"it holds the control character {bad!r}, which a terminal would act on")
         return value

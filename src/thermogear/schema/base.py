@@ -13,7 +13,7 @@ import types
 import typing
 from typing import Any, Literal
 
-from pydantic import BaseModel, ConfigDict, ValidationInfo, field_validator
+from pydantic import BaseModel, ConfigDict, model_validator
 
 
 def _leaf_kinds(annotation: Any) -> set[str]:
@@ -93,10 +93,31 @@ def strict_type_problem(value: Any, annotation: Any) -> str | None:
     return None
 
 
+_KINDS: dict[tuple[type, str], frozenset[str]] = {}
+_SCALAR_PROBLEMS: dict[tuple[type, str, type], str | None] = {}
+_UNKNOWN = object()
+
+
+def _numbers_only(values: list) -> bool:
+    """True for a list (of lists) of plain floats and ints, no booleans: nothing for the strict check to find."""
+    return all(type(item) in (float, int) or (type(item) is list and _numbers_only(item)) for item in values)
+
+
+def _field_kinds(model: type[BaseModel], name: str | None) -> frozenset[str]:
+    """:func:`_leaf_kinds` of a model's field, computed once per field."""
+    key = (model, name or "")
+    kinds = _KINDS.get(key)
+    if kinds is None:
+        field = model.model_fields.get(name or "")
+        kinds = _KINDS[key] = frozenset(_leaf_kinds(field.annotation) if field is not None else {"any"})
+    return kinds
+
+
 class StrictTypeError(ValueError):
     """A value of the wrong kind (a boolean or a string for a number, a number for a switch)."""
 
-    def __init__(self, allowed: str, reason: str) -> None:
+    def __init__(self, name: str, allowed: str, reason: str) -> None:
+        self.name = name
         self.allowed = allowed
         self.reason = reason
         super().__init__(f"wrong type: {reason}")
@@ -107,16 +128,29 @@ class Section(BaseModel):
 
     model_config = ConfigDict(extra="forbid", frozen=True, validate_default=True)
 
-    @field_validator("*", mode="before")
+    @model_validator(mode="before")
     @classmethod
-    def _strict_types(cls, value: Any, info: ValidationInfo) -> Any:
-        field = cls.model_fields.get(info.field_name or "")
-        if field is None:
-            return value
-        problem = strict_type_problem(value, field.annotation)
-        if problem is not None:
-            kinds = _leaf_kinds(field.annotation)
-            allowed = ("a number" if kinds & {"number", "integer"} else "true or false" if "bool" in kinds
-                       else "a list of numbers" if "list" in kinds else "a value of the documented type")
-            raise StrictTypeError(allowed, f"wrong type: {problem}")
-        return value
+    def _strict_types(cls, data: Any) -> Any:
+        """One pass over the section's given keys (one call per section, not per field: the case schema is
+        validated for every point of a sweep)."""
+        if not isinstance(data, dict):
+            return data
+        for name, value in data.items():
+            if value is None or isinstance(value, dict) or (type(value) is list and _numbers_only(value)):
+                continue  # nothing to find (a table is a section, checked by its own model)
+            field = cls.model_fields.get(name)
+            if field is None:
+                continue  # an unknown key: refused by extra="forbid", with the closest key
+            scalar = type(value) in (bool, int, float, str)
+            key = (cls, name, type(value))
+            problem = _SCALAR_PROBLEMS.get(key, _UNKNOWN) if scalar else _UNKNOWN
+            if problem is _UNKNOWN:
+                problem = strict_type_problem(value, field.annotation)
+                if scalar:  # for a scalar the verdict depends on its type only: decided once per field and type
+                    _SCALAR_PROBLEMS[key] = problem
+            if problem is not None:
+                kinds = _field_kinds(cls, name)
+                allowed = ("a number" if kinds & {"number", "integer"} else "true or false" if "bool" in kinds
+                           else "a list of numbers" if "list" in kinds else "a value of the documented type")
+                raise StrictTypeError(name, allowed, f"wrong type: {problem}")
+        return data
