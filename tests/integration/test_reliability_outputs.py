@@ -168,3 +168,26 @@ def test_replacing_a_report_folder_keeps_the_users_files(tmp_path):
     assert (target / "notes.txt").read_text(encoding="utf-8") == "mine"
     assert (target / "figures" / "mine" / "sketch.txt").read_text(encoding="utf-8") == "mine too"
     assert (target / "empty").is_dir()
+
+
+def test_two_sweeps_into_one_store_at_once_leave_one_complete_store_of_thermogear(tmp_path):
+    # issue 25: 4 of 4 tries gave a traceback (ContainsArrayError, KeyError: 'kv') and once a store without its
+    # marker. Now one writes and the other is refused at once (or runs after it): never both at once.
+    import subprocess
+    import sys
+
+    target = tmp_path / "same.zarr"
+    command = [sys.executable, "-m", "thermogear", *SWEEP, "--out", str(target), "--overwrite", "--json"]
+    first = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    second = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    results = [process.communicate(timeout=300) + (process.returncode,) for process in (first, second)]
+    codes = sorted(code for _, _, code in results)
+    assert codes in ([0, 0], [0, 2]), results
+    for out, err, code in results:
+        assert "Traceback" not in err
+        if code == 2:
+            assert "another thermogear process" in err
+    assert is_owned(target, "sweep-store")
+    import zarr
+
+    assert "kv" in zarr.open_group(str(target), mode="r")

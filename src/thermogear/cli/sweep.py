@@ -53,7 +53,7 @@ def sweep(
     if plot is not None:
         check_figure_file(plot)
     with exclusive_writer(out):  # one writer per store: a second sweep into it is refused at once
-        _refuse_foreign_entries(out, overwrite, resume)
+        _refuse_foreign_entries(out, overwrite)
         loaded, section = load_study_case(case)
         check_scheduler(scheduler)
         stored = study_description(out) if resume else None
@@ -128,12 +128,13 @@ def sweep(
         print_sweep_summary(summary, console, error_console)
 
 
-def _refuse_foreign_entries(out: Path, overwrite: bool, resume: bool) -> None:
-    """Before any work: an owned store that --overwrite (or --resume, which may recreate it) would replace must
-    hold nothing thermogear did not write (a user's notes.txt is never deleted)."""
+def _refuse_foreign_entries(out: Path, overwrite: bool) -> None:
+    """Before any work: an owned store that --overwrite would replace must hold nothing thermogear did not write
+    (a user's notes.txt is never deleted; --resume keeps what is there, and refuses the same way in the rare case
+    where it must recreate an unfinished store)."""
     from thermogear.ownership import is_owned, require_no_foreign_entries
 
-    if (overwrite or resume) and is_owned(out, "sweep-store"):
+    if overwrite and is_owned(out, "sweep-store"):
         require_no_foreign_entries(out)
 
 

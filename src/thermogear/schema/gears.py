@@ -26,14 +26,16 @@ class GearSection(Section):
 
     teeth: Annotated[int, Field(ge=5, le=1000, description="number of teeth z [–]")]
     profile_shift: Annotated[float, Field(ge=-1.0, le=1.5, description="profile shift coefficient x [–]")] = 0.0
-    face_width_mm: Annotated[float, Field(ge=MINIMUM_FACE_WIDTH_MM, le=2000.0, description="face width b [mm]")] | None = None
+    face_width_mm: Annotated[float, Field(ge=MINIMUM_FACE_WIDTH_MM, le=2000.0,
+                                          description="face width b [mm]")] | None = None
     bore_radius_mm: Annotated[float, Field(ge=0.0, le=5000.0, allow_inf_nan=False, description=(
         "bore (hub) radius r_n [mm]; omitted or 0: a solid gear (the fillet foundation then takes a nominal seat "
         "of 0.3 r_f, docs/stiffness.md)"))] | None = None
     tip_diameter_mm: Annotated[float, Field(gt=0.0, le=20000.0,
                                             description="tip diameter d_a [mm]; default from the geometry")] | None = None
-    inertia_kg_m2: Annotated[float, Field(gt=0.0, allow_inf_nan=False, description="polar moment of inertia [kg m²]; default: solid "
-                                                               "disc of the pitch radius with the bore")] | None = None
+    inertia_kg_m2: Annotated[float, Field(gt=0.0, allow_inf_nan=False,
+                                          description="polar moment of inertia [kg m²]; default: solid "
+                                                      "disc of the pitch radius with the bore")] | None = None
     # thermo-elastic mesh model (docs/thermal.md): per-gear material at temperature and profile modification
     thermal_expansion_per_k: Annotated[float, Field(ge=0.0, le=1e-4, description="this gear's linear expansion "
                                                     "coefficient [1/K]; default [material]")] | None = None
