@@ -24,7 +24,7 @@ from thermogear.schema import CaseFile
 
 from inprocess_cli import invoke
 
-FUZZ = settings(max_examples=150, derandomize=True, deadline=None, database=None,
+FUZZ = settings(max_examples=300, derandomize=True, deadline=None, database=None,
                 suppress_health_check=[HealthCheck.too_slow, HealthCheck.function_scoped_fixture])
 FEW = settings(FUZZ, max_examples=40)
 
@@ -143,6 +143,25 @@ def test_check_on_a_fuzzed_case_file_exits_0_or_2_with_one_message(key, value, t
     assert code in (0, 2), err
     if code == 2:
         assert out == "" and sum(line.startswith("error:") for line in err.splitlines()) == 1, err
+
+
+@settings(FUZZ, max_examples=15)
+@given(key=st.sampled_from(KEYS), value=VALUES)
+def test_check_and_the_other_commands_agree_on_a_fuzzed_case(key, value, tmp_path_factory):
+    # check = run: a case check refuses, stiffness and damping refuse with the same message; one it accepts they
+    # compute (exit 0), never a traceback
+    path = tmp_path_factory.mktemp("agree") / "case.toml"
+    try:
+        path.write_text(tomli_w.dumps(_set(DOCUMENTS["plain"], key, value)), encoding="utf-8")
+    except (TypeError, ValueError):
+        return
+    code, _, err = invoke("check", str(path))
+    message = [line for line in err.splitlines() if line.startswith("error:")]
+    for command in (["stiffness", str(path), "--json"], ["damping", str(path), "--json", "--points", "64"]):
+        other, _, other_err = invoke(*command)
+        assert other == code, (command, err, other_err)
+        if code == 2:
+            assert [line for line in other_err.splitlines() if line.startswith("error:")] == message
 
 
 @FEW
