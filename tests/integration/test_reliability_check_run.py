@@ -75,7 +75,8 @@ def test_check_tests_jamming_with_the_temperature_field_run_uses(tmp_path):
     assert code == 2
     message = _error_line(err)
     assert "jam" in message and "-9.1 μm" in message
-    for command in (["run", str(path)], ["stiffness", str(path), "--thermal"]):
+    for command in (["run", str(path)], ["stiffness", str(path), "--thermal"],
+                    ["sweep", str(path), "--vary", "speed_rpm=1000,2000", "--out", str(tmp_path / "s.zarr")]):
         code, _, err = invoke(*command)
         assert code == 2 and _error_line(err) == message
 

@@ -48,6 +48,7 @@ def sweep(
     from thermogear.sweep.store import study_description
 
     from thermogear.ownership import check_figure_file, check_output_folder, exclusive_writer
+    from thermogear.preflight import preflight
 
     check_output_folder(out, "--out")  # every output path before any work
     if plot is not None:
@@ -72,6 +73,7 @@ def sweep(
             chosen_model = chosen_model or ("both" if len(stored["models"]) == 2 else stored["models"][0])
             chunks = chunks or stored["chunk_points"]
         study = Study.define(loaded, definition, model=chosen_model or "both", chunk_points=chunks)
+        preflight(loaded, tuple(study.models))  # the case itself passes what check and run check
         if direction is not None and direction not in ("up", "down", "both"):
             raise CaseError("--direction", direction, "up | down | both",
                             "a branch is followed from the lowest speed up, from the highest down, or both")
