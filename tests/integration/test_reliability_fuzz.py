@@ -157,6 +157,8 @@ def test_check_and_the_other_commands_agree_on_a_fuzzed_case(key, value, tmp_pat
         return
     code, _, err = invoke("check", str(path))
     message = [line for line in err.splitlines() if line.startswith("error:")]
+    if code == 2 and message[0].startswith("error: vary."):
+        return  # the [sweep] study is defined by check and sweep only (the other commands never read it)
     for command in (["stiffness", str(path), "--json"], ["damping", str(path), "--json", "--points", "64"]):
         other, _, other_err = invoke(*command)
         assert other == code, (command, err, other_err)

@@ -61,6 +61,18 @@ def _items_annotation(annotation: Any) -> list[Any]:
     return []
 
 
+def _dict_value_annotations(annotation: Any) -> list[Any]:
+    """Annotations of the values of the plain ``dict[str, X]`` members of a field annotation (not sections)."""
+    origin = typing.get_origin(annotation)
+    if origin is typing.Annotated:
+        return _dict_value_annotations(typing.get_args(annotation)[0])
+    if origin in (typing.Union, types.UnionType):
+        return [item for argument in typing.get_args(annotation) for item in _dict_value_annotations(argument)]
+    if origin is dict:
+        return list(typing.get_args(annotation)[1:2])
+    return []
+
+
 def strict_type_problem(value: Any, annotation: Any) -> str | None:
     """Why ``value`` is not of the kind ``annotation`` asks for, or None when it is (recursing into lists)."""
     kinds = _leaf_kinds(annotation)
@@ -83,6 +95,13 @@ def strict_type_problem(value: Any, annotation: Any) -> str | None:
     if isinstance(value, numbers.Number):
         if "bool" in kinds and not kinds & {"number", "integer"}:
             return "true or false is asked for, not a number"
+        return None
+    if isinstance(value, dict):  # a table of values (sweep.vary): each value as the table's value type asks
+        for value_annotation in _dict_value_annotations(annotation):
+            for item in value.values():
+                problem = strict_type_problem(item, value_annotation)
+                if problem is not None:
+                    return problem
         return None
     if isinstance(value, (list, tuple)):
         for item_annotation in _items_annotation(annotation):
@@ -136,8 +155,8 @@ class Section(BaseModel):
         if not isinstance(data, dict):
             return data
         for name, value in data.items():
-            if value is None or isinstance(value, dict) or (type(value) is list and _numbers_only(value)):
-                continue  # nothing to find (a table is a section, checked by its own model)
+            if value is None or (type(value) is list and _numbers_only(value)):
+                continue  # nothing to find
             field = cls.model_fields.get(name)
             if field is None:
                 continue  # an unknown key: refused by extra="forbid", with the closest key
@@ -151,6 +170,8 @@ class Section(BaseModel):
             if problem is not None:
                 kinds = _field_kinds(cls, name)
                 allowed = ("a number" if kinds & {"number", "integer"} else "true or false" if "bool" in kinds
-                           else "a list of numbers" if "list" in kinds else "a value of the documented type")
+                           else "a list of numbers" if "list" in kinds
+                           else "text, numbers or lists of numbers" if "dict" in kinds
+                           else "a value of the documented type")
                 raise StrictTypeError(name, allowed, f"wrong type: {problem}")
         return data
