@@ -20,17 +20,18 @@ import pydantic
 
 from thermogear import warning_scope
 from thermogear.case_keys import warn_keys_without_effect
+from thermogear.case_limits import check_model_limits
 from thermogear.errors import CaseError, closest_key
 from thermogear.fzg import fzg_load_stage_torque
 from thermogear.geometry import Gear, GearPair, involute
 from thermogear.materials import Material
 from thermogear.operating import OperatingPoint
+from thermogear.schema.base import StrictTypeError
 from thermogear.schema import (CaseFile, DampingSection, DynamicsSection, FemSection, GearboxSection, GearsSection,
-                               HousingSection,
-                               LubricantSection, MaterialSection, TemperatureSection, ThermalSection)
+                               HousingSection, LubricantSection, MaterialSection, TemperatureSection, ThermalSection)
 from thermogear.temperature_field import (check_temperatures, default_bulk_temperature,
                                          temperature_field_from_section)
-from thermogear.text_files import read_user_text
+from thermogear.text_files import is_existing_file, path_exists, read_user_text
 from thermogear.thermoelastic.inputs import check_thermoelastic_inputs
 
 
@@ -71,7 +72,7 @@ class Case:
     def directory(self) -> Path | None:
         """Folder of the case file (for relative paths in it), None for a built-in set."""
         path = Path(self.source)
-        return path.parent if path.suffix == ".toml" and path.exists() else None
+        return path.parent if path.suffix == ".toml" and path_exists(path) else None
 
     @property
     def equivalent_mass(self) -> float:
@@ -140,8 +141,8 @@ def load_case(name_or_path: str | Path) -> Case:
     runs; a file that is not UTF-8 text or not TOML is one CaseError, never a traceback."""
     text_source = str(name_or_path)
     path = Path(name_or_path)
-    if path.suffix == ".toml" or path.exists():
-        if not path.is_file():
+    if path.suffix == ".toml" or path_exists(path):
+        if not is_existing_file(path):
             raise CaseError("case", text_source, "an existing .toml file or a built-in name "
                             f"({', '.join(parameter_set_names())})", "no such file")
         text = read_user_text(path, "case", text_source, "TOML")
@@ -159,7 +160,7 @@ def load_case(name_or_path: str | Path) -> Case:
     except RecursionError:
         raise CaseError("case", text_source, "TOML nested a few levels deep",
                         "the file nests tables or arrays too deeply to be a case file") from None
-    return case_from_document(document, source=str(path if path.exists() else text_source))
+    return case_from_document(document, source=str(path if path_exists(path) else text_source))
 
 
 # --------------------------------------------------------------------------------------------- load-time checks
@@ -188,6 +189,7 @@ def check_case(case: "Case") -> None:
     with warning_scope.ignored():
         _check_temperature_field(case)
     _check_thermal_inputs(case)
+    check_model_limits(case)
     for check in _CASE_CHECKS:
         check(case)
 
@@ -328,6 +330,10 @@ def _case_error_from_validation(error: pydantic.ValidationError) -> CaseError:
     location = [str(part) for part in first["loc"] if not isinstance(part, int)]
     key = ".".join(location) or "case"
     value = first.get("input")
+    if isinstance(raised, StrictTypeError):  # raised by the section (a model validator): its key is added here
+        key = ".".join([*location, raised.name])
+        value = value.get(raised.name) if isinstance(value, dict) else value
+        return CaseError(key, value, raised.allowed, raised.reason)
     kind = first["type"]
     context = first.get("ctx") or {}
     if kind == "extra_forbidden":

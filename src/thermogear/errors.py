@@ -34,7 +34,20 @@ class CaseError(ThermogearError, ValueError):
         self.value = value
         self.allowed = allowed
         self.reason = reason
-        super().__init__(f"{key} = {value!r}: allowed {allowed}; {reason}")
+        super().__init__(f"{key} = {shown_value(value)}: allowed {allowed}; {reason}")
+
+
+#: Longest representation of a value an error message shows [characters]: a 5000-character path or a whole
+#: table is cut, saying how long it was.
+SHOWN_VALUE_LENGTH = 160
+
+
+def shown_value(value: object) -> str:
+    """``repr(value)``, cut to :data:`SHOWN_VALUE_LENGTH` characters with its full length said."""
+    text = repr(value)
+    if len(text) <= SHOWN_VALUE_LENGTH:
+        return text
+    return f"{text[:SHOWN_VALUE_LENGTH - 40]}… ({len(text)} characters)"
 
 
 class JammingError(CaseError):
@@ -53,7 +66,7 @@ class ProblemError(ThermogearError, ValueError):
         self.value = value
         self.allowed = allowed
         self.reason = reason
-        super().__init__(f"solver input {quantity} = {value!r}: allowed {allowed}; {reason}")
+        super().__init__(f"solver input {quantity} = {shown_value(value)}: allowed {allowed}; {reason}")
 
 
 class ModelLimitError(ThermogearError, RuntimeError):

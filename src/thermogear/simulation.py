@@ -117,11 +117,14 @@ class Simulation:
         """Solve the dynamics and return the response with the checks of a thermal result (``flags``).
 
         See :meth:`solve` for the methods."""
+        from thermogear.load_capacity import load_flags
         from thermogear.mesh.plausibility import damping_ratio_flags, thermal_result_flags
 
         response = self.solve(method, include_damping_force)
         response.metrics["damping_ratio"] = self.state.damping_ratio  # the solver's fresh dict: a gear quantity
-        flags = damping_ratio_flags(self.state)
+        case = self.case
+        flags = load_flags(case.gear_pair, case.material, case.operating_point.torque)  # a load no tooth carries
+        flags += damping_ratio_flags(self.state)
         if self.model == "thermal":
             flags += thermal_result_flags(self.mesh_model, self.state, response.metrics)
         return replace(response, flags=flags)

@@ -20,8 +20,8 @@ from pathlib import Path
 
 import numpy as np
 
-from thermogear.errors import CaseError, ExtrapolationWarning, ModelAssumptionWarning
-from thermogear.text_files import read_user_text
+from thermogear.errors import CaseError, ExtrapolationWarning, ModelAssumptionWarning, shown_value
+from thermogear.text_files import is_existing_file, read_user_text
 
 #: Highest tooth temperature the material data cover [°C]. The case holds room-temperature E, ν and a constant
 #: expansion coefficient; case-carburised and through-hardened gear steels are tempered at about 150–200 °C, above
@@ -320,16 +320,17 @@ def read_flank_table_csv(name: str, directory: Path | None = None) -> tuple[list
     path = Path(name)
     if not path.is_absolute() and directory is not None:
         path = directory / path
-    if not path.is_file():
+    if not is_existing_file(path):
         raise CaseError("temperature.csv", name, "an existing CSV file (relative to the case file)",
-                        f"no such file ({path})")
+                        f"no such file ({shown_value(str(path))})")
     text = read_user_text(path, "temperature.csv", name, "CSV")
     lines = [row for row in text.splitlines() if row.strip() and not row.lstrip().startswith("#")]
     reader = csv.DictReader(lines)
     columns = [c.strip() for c in (reader.fieldnames or [])]
     if "gamma" not in columns or "flank_c" not in columns:
         raise CaseError("temperature.csv", name, "a header with columns gamma, flank_c",
-                        f"the file's columns are {columns}")
+                        f"the first line names no gamma and flank_c columns ({len(columns)} columns); the file's "
+                        "content is not shown")
     gamma, flank_c = [], []
     for line, row in enumerate(reader, start=2):
         row = {key.strip(): value for key, value in row.items() if key is not None}
@@ -338,7 +339,7 @@ def read_flank_table_csv(name: str, directory: Path | None = None) -> tuple[list
             flank_c.append(float(row["flank_c"]))
         except (TypeError, ValueError):
             raise CaseError("temperature.csv", name, "numbers in the gamma and flank_c columns",
-                            f"row {line} cannot be read: {row}") from None
+                            f"row {line} has no number in gamma or flank_c") from None
     return gamma, flank_c
 
 

@@ -6,7 +6,24 @@ from pathlib import Path
 
 from thermogear.errors import CaseError
 
-__all__ = ["read_user_text"]
+__all__ = ["is_existing_file", "path_exists", "read_user_text"]
+
+
+def path_exists(path: Path) -> bool:
+    """``path.exists()``, False (not an OSError) for a name the system cannot look up (too long, a NUL byte):
+    Python 3.11's ``exists`` ignores only "no such file"."""
+    try:
+        return Path(path).exists()
+    except (OSError, ValueError):
+        return False
+
+
+def is_existing_file(path: Path) -> bool:
+    """``path.is_file()``, False for a name the system cannot look up (see :func:`path_exists`)."""
+    try:
+        return Path(path).is_file()
+    except (OSError, ValueError):
+        return False
 
 
 def read_user_text(path: Path, key: str, value, kind: str) -> str:

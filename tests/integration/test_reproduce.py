@@ -99,14 +99,15 @@ def test_report_is_self_contained(default_run):
     assert "References" in page and "Assumptions" in page
 
 
-def test_existing_folder_is_not_overwritten(default_run):
-    out, _ = default_run
-    before = (out / "summary.json").read_text()
+def test_a_folder_thermogear_did_not_write_is_not_overwritten(tmp_path):
+    out = tmp_path / "mine"
+    out.mkdir()
+    (out / "summary.json").write_text("my own", encoding="utf-8")
     result = subprocess.run(_command("reproduce", "luo2019", "--out", str(out), "--quiet"), capture_output=True,
                             text=True, timeout=120)
     assert result.returncode == 2
-    assert "--force" in result.stderr
-    assert (out / "summary.json").read_text() == before
+    assert "did not write" in result.stderr
+    assert (out / "summary.json").read_text(encoding="utf-8") == "my own"
 
 
 def _interrupt(out: Path, signum: int, extra: tuple[str, ...] = ()) -> int:
@@ -161,3 +162,20 @@ def test_timings_cover_the_whole_command(default_run):
     assert stages[-3:] == ["figures", "FE verification", "files"]
     assert all(seconds >= 0.0 for seconds in summary["timings_s"].values())
     assert set(summary["timings_background_s"]) == {"FE verification", "figures and results file"}
+
+
+def test_the_readme_command_twice_replaces_its_own_report_and_keeps_the_users_files(default_run):
+    # issue 25: the second `thermogear reproduce luo2019` exited 2 asking for --force; --force deleted the user's
+    # files inside the folder. Now it replaces what it wrote and nothing else. (Last in this file: it rewrites the
+    # module's report folder.)
+    out, _ = default_run
+    (out / "notes.txt").write_text("mine", encoding="utf-8")
+    (out / "figures" / "mine").mkdir()
+    (out / "figures" / "mine" / "sketch.txt").write_text("mine too", encoding="utf-8")
+    (out / "summary.json").write_text("{}", encoding="utf-8")  # thermogear's file, edited: it is replaced
+    result = subprocess.run(_command("reproduce", "luo2019", "--quiet"), cwd=out.parent, capture_output=True,
+                            text=True, timeout=300)
+    assert result.returncode == 0, result.stderr
+    assert (out / "notes.txt").read_text(encoding="utf-8") == "mine"
+    assert (out / "figures" / "mine" / "sketch.txt").read_text(encoding="utf-8") == "mine too"
+    assert json.loads((out / "summary.json").read_text(encoding="utf-8"))  # rewritten, not the user's "{}"

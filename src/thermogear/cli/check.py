@@ -20,7 +20,12 @@ def check(case: str = typer.Argument(..., metavar="CASE",
                                   help="built-in parameter set name or path to a .toml case file"),
           as_json: bool = typer.Option(False, "--json", help="one JSON object on stdout")) -> None:
     """Validate a case and print its gear-pair geometry (exit status 2 with one clear message if it is invalid)."""
+    from thermogear.load_capacity import load_flags
+    from thermogear.preflight import preflight
+
     loaded = load_case(case)
+    preflight(loaded)  # what run builds before it solves (the hot backlash of the whole temperature field)
+    _check_study_table(case, loaded)
     pair = loaded.gear_pair
     payload = {
         "case": loaded.name,
@@ -35,6 +40,8 @@ def check(case: str = typer.Argument(..., metavar="CASE",
         "normal_load_n": loaded.normal_load,
         "pinion_torque_nm": loaded.operating_point.torque,
         "mesh_frequency_hz": pair.mesh_frequency(loaded.operating_point.speed_rpm),
+        # a load no steel tooth carries is computed by run, and labelled there and here
+        "load_checks": list(load_flags(pair, loaded.material, loaded.operating_point.torque)),
     }
     payload["notes"] = list(loaded.notes)
     if as_json:
@@ -55,4 +62,18 @@ def check(case: str = typer.Argument(..., metavar="CASE",
     table.add_row("mesh frequency [Hz]", f"{payload['mesh_frequency_hz']:.2f}")
     console.print(table)
     print_notes(loaded.notes, console)
+    for flag in payload["load_checks"]:
+        console.print(f"check — {flag}", highlight=False)
     console.print("case is valid", style="green")
+
+
+def _check_study_table(case: str, loaded) -> None:
+    """A [sweep] table is defined as ``thermogear sweep`` defines it (names resolved, every value's case
+    checked), so a table ``check`` accepts is one ``sweep`` runs."""
+    if loaded.document.get("sweep") is None:
+        return
+    from thermogear.sweep.study import Study, load_study_case
+
+    study_case, section = load_study_case(case)
+    if section is not None and section.vary:
+        Study.define(study_case, dict(section.vary), model=section.model, chunk_points=section.chunk_points)

@@ -30,6 +30,10 @@ def damping(case: str = typer.Argument(..., metavar="CASE",
             points: int = typer.Option(720, "--points", min=16, max=100000, help="intervals per mesh period")) -> None:
     """Equivalent viscous damping of tooth friction: elastic (oil at the reference temperature) and thermal
     (oil at the local flank temperature), per pair along the path and over the mesh cycle."""
+    from thermogear.ownership import check_figure_file
+
+    if plot is not None:
+        check_figure_file(plot)  # before any work
     loaded = load_case(case)
     if rule is not None:
         loaded = loaded.with_changes(**{"damping.rule": rule})

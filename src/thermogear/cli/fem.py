@@ -67,6 +67,10 @@ def fem(case: str = typer.Argument(..., metavar="CASE", help="built-in parameter
         no_refinement: bool = typer.Option(False, "--no-refinement", help="skip the refinement study"),
         quiet: bool = typer.Option(False, "--quiet", "-q", help="no progress display (for scripts)")) -> None:
     """Finite-element verification: bulk temperature, FE vs PEM tooth compliance, flank expansion, X_te."""
+    if plot is not None:
+        from thermogear.ownership import check_output_folder
+
+        check_output_folder(plot)  # before any work
     steps = [FEM_STEPS[0]] + ([] if no_refinement else [FEM_STEPS[1]]) + ([] if plot is None else [FEM_STEPS[2]])
     with step_progress(steps, quiet=quiet or json_output) as advance:
         summary, analysis = fem_summary(case, refine=not no_refinement, progress=advance)

@@ -38,7 +38,16 @@ def reproduce(
         suggestion = closest_key(paper, list(PAPERS))
         raise CaseError("paper", paper, ", ".join(PAPERS),
                         "no such paper" + (f" (did you mean '{suggestion}'?)" if suggestion else ""))
+    from thermogear.ownership import check_output_folder, is_owned
+
     target = out if out is not None else Path(f"thermogear-{paper}")
+    check_output_folder(target, "--out")  # before any work
+    # a second run replaces its own previous report (only the files it wrote; a user's files stay): the README's
+    # first command works twice. A folder thermogear did not write is still refused.
+    force = force or is_owned(target, "report")
+    from thermogear.report.writer import OutputFolder
+
+    OutputFolder(target, force=force).check()  # before any work
     # the bar shows from the first second: loading the model (NumPy, SciPy, numba's compiled code) is a step
     steps = [LOADING, *steps_of_report(paper=True)]
     with interruptible(target), step_progress(steps, quiet, error_console) as advance:

@@ -21,9 +21,12 @@ def model_json(response) -> dict:
     """The JSON object of one model (issue 5): loads per unit width, displacements in μm, stability, messages."""
     from thermogear.report.evaluate import model_messages
 
+    from thermogear.serialization import json_ready
+
     m = response.metrics
     regions = list(m["equilibrium_per_region"])
-    return {
+    return json_ready({  # a number that could not be computed (no orbit, a region never reached) is null
+        "status": response_status(m),
         "kv": m["kv"],
         "max_pair_load_n_per_mm": m["max_pair_load_n_per_mm"],
         "max_system_load_n_per_mm": m["max_system_load_n_per_mm"],
@@ -49,7 +52,15 @@ def model_json(response) -> dict:
         "dte_rms_um": m["dte_rms"] * 1e6,
         "method": response.method,
         "messages": model_messages(response, response.label or ""),
-    }
+    }, non_finite="null")
+
+
+def response_status(metrics) -> str:
+    """One word for what the model found: ``"valid"`` (a steady orbit, stable, inside the model's limits),
+    ``"non-periodic"`` (no repeating orbit: the metrics describe the recorded periods) or ``"not valid"``."""
+    if metrics["valid"]:
+        return "valid"
+    return "non-periodic" if metrics.get("response") == "non-periodic" else "not valid"
 
 
 @app.command()
@@ -68,6 +79,7 @@ def run(
     """Run the dynamics of a case and report Kv, loads, transmission error per region, frequencies and stability.
     Contact loss and instability are said in words (when, how long, how deep)."""
     from thermogear.case import load_case
+    from thermogear.preflight import preflight
     from thermogear.report.evaluate import model_messages
     from thermogear.cli.console import print_notes, step_progress
     from thermogear.report.terminal import print_messages, print_summary
@@ -76,6 +88,12 @@ def run(
         raise CaseError("--model", model, "elastic | thermal | both", "unknown model")
     if method is not None and method not in ("periodic", "transient"):
         raise CaseError("--method", method, "periodic | transient", "unknown solution method")
+    if out is not None:
+        from thermogear.ownership import check_output_folder
+        from thermogear.report.writer import OutputFolder
+
+        check_output_folder(out, "--out")  # before any work: a name the system can hold, writable
+        OutputFolder(out, force=force).check()  # an existing folder: --force, and thermogear's own
     if csv is not None:
         from thermogear.cli.export import check_csv_target
 
@@ -83,6 +101,7 @@ def run(
     case = load_case(case_name)
     method = method or case.dynamics.method
     models = _MODELS[model]
+    preflight(case, models, quiet=False)  # the checks `check` makes, before any output is written
     if out is not None:
         from thermogear.report.build import build_report, report_steps
 
@@ -163,8 +182,6 @@ def _thermoelastic_summary(case) -> dict | None:
 def _print_table(case, responses, console, thermoelastic: dict | None = None) -> None:
     from rich.table import Table
 
-    from thermogear.report.paper_table import format_value
-
     table = Table(title=f"{case.name}: dynamics ({', '.join(responses)})", header_style="bold")
     table.add_column("quantity")
     for name in responses:
@@ -176,23 +193,24 @@ def _print_table(case, responses, console, thermoelastic: dict | None = None) ->
             ("natural frequency", "natural_frequency_hz", "Hz"), ("frequency ratio λ", "frequency_ratio", "–"),
             ("damping ratio ζ (mean)", "damping_ratio", "–")]
     for label, key, unit in rows:
-        table.add_row(label, *(format_value(d[key]) if d[key] is not None else "—" for d in data.values()), unit)
+        table.add_row(label, *(_shown(d[key]) for d in data.values()), unit)
     regions = list(next(iter(data.values()))["equilibrium_um"])
     for region in regions:
-        table.add_row(f"equilibrium, {region}", *(format_value(d["equilibrium_um"].get(region)) for d in data.values()),
+        table.add_row(f"equilibrium, {region}", *(_shown(d["equilibrium_um"].get(region)) for d in data.values()),
                       "μm")
     for region in regions:
-        table.add_row(f"amplitude, {region}", *(format_value(d["amplitude_um"].get(region)) for d in data.values()),
+        table.add_row(f"amplitude, {region}", *(_shown(d["amplitude_um"].get(region)) for d in data.values()),
                       "μm")
-    table.add_row("DTE peak-to-peak", *(format_value(d["dte_peak_to_peak_um"]) for d in data.values()), "μm")
-    table.add_row("largest |Floquet multiplier|", *(format_value(d["floquet_multipliers_abs"][0])
-                                                    for d in data.values()), "–")
+    table.add_row("DTE peak-to-peak", *(_shown(d["dte_peak_to_peak_um"]) for d in data.values()), "μm")
+    table.add_row("largest |Floquet multiplier|", *(_shown(d["floquet_multipliers_abs"][0]) for d in data.values()),
+                  "–")
     if any(d["mesh"] == "nonlinear" for d in data.values()):
-        table.add_row("time without contact", *(format_value(100.0 * d["contact_loss_fraction"])
+        table.add_row("time without contact", *(_shown(d["contact_loss_fraction"], 100.0)
                                                 for d in data.values()), "%")
         table.add_row("back flanks struck", *("yes" if d["back_side_contact"] else "no" for d in data.values()), "")
         table.add_row("response (branch)", *(f"{d['response']} ({d['branch']})" for d in data.values()), "")
-        table.add_row("steady orbit found", *("yes" if d["valid"] else "NO" for d in data.values()), "")
+        table.add_row("steady orbit found", *("yes" if d["valid"] else "not found" if d["response"] == "non-periodic"
+                                              else "NO" for d in data.values()), "")
     else:
         table.add_row("linear model valid", *("yes" if d["valid"] else "NO" for d in data.values()), "")
     if thermoelastic is not None:
@@ -204,3 +222,10 @@ def _print_table(case, responses, console, thermoelastic: dict | None = None) ->
             table.add_row(label, *(format_value(cells[name]) if cells[name] is not None else "—" for name in responses),
                           unit)
     console.print(table)
+
+
+def _shown(value, scale: float = 1.0) -> str:
+    """A table cell: a number, or "not found" where the model gave none (JSON null)."""
+    from thermogear.report.paper_table import format_value
+
+    return "not found" if value is None else format_value(scale * value)

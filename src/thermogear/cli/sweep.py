@@ -39,11 +39,11 @@ def sweep(
     plot: Path = typer.Option(None, "--plot", help="write the speed-response plot (PNG/SVG/PDF) here"),
     progress: bool = typer.Option(True, "--progress/--no-progress", help="progress bar on stderr"),
     as_json: bool = typer.Option(False, "--json", help="one JSON summary on stdout"),
+    direction: str = typer.Option(None, "--direction", help="nonlinear mesh: follow the solution branch in speed "
+                                  "up | down | both (default both); the store gets a direction dimension"),
     multistart: int = typer.Option(0, "--multistart", min=0, help="nonlinear mesh: at every point also search "
                                    "the state plane from N starts and list every stable orbit found with its basin "
                                    "share (about 0.1 s per start, point and model; default 0: branches only)"),
-    direction: str = typer.Option(None, "--direction", help="nonlinear mesh: follow the solution branch in speed "
-                                  "up | down | both (default both); the store gets a direction dimension"),
 ) -> None:
     """Run a parameter study of a case (grid over speed, load, temperatures, geometry) into a zarr store.
 
@@ -53,84 +53,106 @@ def sweep(
     from thermogear.sweep import Study, load_study_case, run_study
     from thermogear.sweep.store import study_description
 
-    loaded, section = load_study_case(case)
-    check_scheduler(scheduler)
-    stored = study_description(out) if resume else None
-    if vary:
-        definition: dict | list = list(vary)
-    elif section is not None and section.vary:
-        definition = dict(section.vary)
-    elif stored is not None:
-        definition = {p["name"]: list(p["values"]) for p in stored["parameters"]}
-    else:
-        raise CaseError("vary", None, "--vary NAME=VALUES (repeatable) or a [sweep] table in the case file",
-                        "a sweep needs something to vary")
-    chosen_model = model or (section.model if section is not None else None)
-    chunks = chunk_points or (section.chunk_points if section is not None else None)
-    if stored is not None:
-        chosen_model = chosen_model or ("both" if len(stored["models"]) == 2 else stored["models"][0])
-        chunks = chunks or stored["chunk_points"]
-    study = Study.define(loaded, definition, model=chosen_model or "both", chunk_points=chunks)
-    if direction is not None and direction not in ("up", "down", "both"):
-        raise CaseError("--direction", direction, "up | down | both",
-                        "a branch is followed from the lowest speed up, from the highest down, or both")
-    _warn_inert_axes(study)
-    if loaded.dynamics.mesh == "nonlinear" and method == "batch":
-        from thermogear.cli.sweep_branches import run_branch_sweep
+    from thermogear.ownership import check_figure_file, check_output_folder, exclusive_writer
+    from thermogear.preflight import preflight
 
-        run_branch_sweep(study, out, direction or "both", overwrite, resume, plot, progress, as_json,
-                         scheduler=scheduler, workers=workers, multistart=multistart)
-        return
-    if multistart:
-        raise CaseError("--multistart", multistart, "only with [dynamics] mesh = \"nonlinear\"",
-                        "the linear mesh has one periodic steady state per point (or none): there is no other "
-                        "orbit to search for")
-    if direction is not None:
-        raise CaseError("--direction", direction, "only with [dynamics] mesh = \"nonlinear\"",
-                        "the linear mesh has one steady solution per point: there is no branch to follow")
-    start = time.perf_counter()
-    existed = out.exists() or out.is_symlink()
-    try:
-        run = run_study(study, out, scheduler=scheduler, resume=resume, overwrite=overwrite, workers=workers,
-                        method=method, dashboard=dashboard,
-                        progress=_progress_bar if progress and not as_json else None)
-    except (OSError, TimeoutError) as error:  # the scheduler went away, or the disk refused a write
-        _remove_empty_store(out, existed)
-        raise CaseError("--scheduler" if scheduler not in (None, "serial") else "--out",
-                        scheduler if scheduler not in (None, "serial") else str(out), "a reachable scheduler and a "
-                        "writable --out", f"the study could not run: {error}") from None
-    elapsed = time.perf_counter() - start
-    figure_path = None
-    if plot is not None and "speed_rpm" not in study.dims:
-        print_warning(f"no plot written to {plot}: the plot draws the responses against speed, and this study does "
-                      "not vary speed_rpm (add --vary speed_rpm=..., or draw a map with thermogear.sweep.plots."
-                      "plot_map)", error_console)
-    if plot is not None and "speed_rpm" in study.dims:
-        from thermogear.sweep.plots import plot_speed_response
+    check_output_folder(out, "--out")  # every output path before any work
+    if plot is not None:
+        check_figure_file(plot)
+    with exclusive_writer(out):  # one writer per store: a second sweep into it is refused at once
+        _refuse_foreign_entries(out, overwrite)
+        loaded, section = load_study_case(case)
+        check_scheduler(scheduler)
+        stored = study_description(out) if resume else None
+        if vary:
+            definition: dict | list = list(vary)
+        elif section is not None and section.vary:
+            definition = dict(section.vary)
+        elif stored is not None:
+            definition = {p["name"]: list(p["values"]) for p in stored["parameters"]}
+        else:
+            raise CaseError("vary", None, "--vary NAME=VALUES (repeatable) or a [sweep] table in the case file",
+                            "a sweep needs something to vary")
+        chosen_model = model or (section.model if section is not None else None)
+        chunks = chunk_points or (section.chunk_points if section is not None else None)
+        if stored is not None:
+            chosen_model = chosen_model or ("both" if len(stored["models"]) == 2 else stored["models"][0])
+            chunks = chunks or stored["chunk_points"]
+        study = Study.define(loaded, definition, model=chosen_model or "both", chunk_points=chunks)
+        preflight(loaded, tuple(study.models))  # the case itself passes what check and run check
+        if direction is not None and direction not in ("up", "down", "both"):
+            raise CaseError("--direction", direction, "up | down | both",
+                            "a branch is followed from the lowest speed up, from the highest down, or both")
+        _warn_inert_axes(study)
+        if loaded.dynamics.mesh == "nonlinear" and method == "batch":
+            from thermogear.cli.sweep_branches import run_branch_sweep
 
-        figure = plot_speed_response(run.dataset)
-        plot.parent.mkdir(parents=True, exist_ok=True)
-        figure.savefig(plot, dpi=120)
-        figure_path = str(plot)
-    summary = {
-        "out": str(out),
-        "dims": {name: int(size) for name, size in zip(study.dims, study.shape)},
-        "models": list(study.models),
-        "points": study.size,
-        "chunks": len(study.blocks()),
-        "chunks_computed": run.computed,
-        "chunks_kept": run.skipped,
-        "seconds": elapsed,
-        **response_summary(run, study.models),
-        "plot": figure_path,
-        "warnings": run.messages,
-    }
-    if as_json:
-        for message in run.messages:
-            print_warning(message, error_console)
-        print_json(summary)
-        return
-    print_sweep_summary(summary, console, error_console)
+            run_branch_sweep(study, out, direction or "both", overwrite, resume, plot, progress, as_json,
+                             scheduler=scheduler, workers=workers, multistart=multistart)
+            return
+        if multistart:
+            raise CaseError("--multistart", multistart, "only with [dynamics] mesh = \"nonlinear\"",
+                            "the linear mesh has one periodic steady state per point (or none): there is no other "
+                            "orbit to search for")
+        if direction is not None:
+            raise CaseError("--direction", direction, "only with [dynamics] mesh = \"nonlinear\"",
+                            "the linear mesh has one steady solution per point: there is no branch to follow")
+        start = time.perf_counter()
+        existed = out.exists() or out.is_symlink()
+        try:
+            run = run_study(study, out, scheduler=scheduler, resume=resume, overwrite=overwrite, workers=workers,
+                            method=method, dashboard=dashboard,
+                            progress=_progress_bar if progress and not as_json else None)
+        except (OSError, TimeoutError) as error:  # the scheduler went away, or the disk refused a write
+            _remove_empty_store(out, existed)
+            raise CaseError("--scheduler" if scheduler not in (None, "serial") else "--out",
+                            scheduler if scheduler not in (None, "serial") else str(out), "a reachable scheduler and a "
+                            "writable --out", f"the study could not run: {error}") from None
+        elapsed = time.perf_counter() - start
+        figure_path = None
+        if plot is not None and "speed_rpm" not in study.dims:
+            print_warning(f"no plot written to {plot}: the plot draws the responses against speed, and this study "
+                          "does not vary speed_rpm (add --vary speed_rpm=..., or draw a map with "
+                          "thermogear.sweep.plots.plot_map)", error_console)
+        if plot is not None and "speed_rpm" in study.dims:
+            from thermogear.sweep.plots import plot_speed_response
+
+            figure = plot_speed_response(run.dataset)
+            try:
+                figure.savefig(plot, dpi=120)
+            except OSError as error:  # checked before the study; the disk may still refuse
+                raise CaseError("--plot", str(plot), "a writable figure file", f"the study is complete in {out}, but "
+                                f"its figure could not be written: {error.strerror or error}") from None
+            figure_path = str(plot)
+        summary = {
+            "out": str(out),
+            "dims": {name: int(size) for name, size in zip(study.dims, study.shape)},
+            "models": list(study.models),
+            "points": study.size,
+            "chunks": len(study.blocks()),
+            "chunks_computed": run.computed,
+            "chunks_kept": run.skipped,
+            "seconds": elapsed,
+            **response_summary(run, study.models),
+            "plot": figure_path,
+            "warnings": run.messages,
+        }
+        if as_json:
+            for message in run.messages:
+                print_warning(message, error_console)
+            print_json(summary)
+            return
+        print_sweep_summary(summary, console, error_console)
+
+
+def _refuse_foreign_entries(out: Path, overwrite: bool) -> None:
+    """Before any work: an owned store that --overwrite would replace must hold nothing thermogear did not write
+    (a user's notes.txt is never deleted; --resume keeps what is there, and refuses the same way in the rare case
+    where it must recreate an unfinished store)."""
+    from thermogear.ownership import is_owned, require_no_foreign_entries
+
+    if overwrite and is_owned(out, "sweep-store"):
+        require_no_foreign_entries(out)
 
 
 def _warn_inert_axes(study) -> None:

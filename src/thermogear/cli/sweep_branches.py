@@ -74,7 +74,11 @@ def run_branch_sweep(study, out: Path, direction: str, overwrite: bool, resume: 
         from thermogear.sweep.branch_plots import plot_branches  # noqa: PLC0415
 
         figure = plot_branches(dataset)
-        figure.savefig(plot, dpi=120)
+        try:
+            figure.savefig(plot, dpi=120)
+        except OSError as error:  # checked before the study; the disk may still refuse
+            raise CaseError("--plot", str(plot), "a writable figure file", f"the study is complete in {target}, "
+                            f"but its figure could not be written: {error.strerror or error}") from None
         figure_path = str(plot)
     messages = distinct_warnings(str(item.message) for item in caught)
     summary = {"out": str(target), "mesh": "nonlinear", "directions": list(dataset["direction"].values),

@@ -3,6 +3,7 @@ measured acceleration signal (CSV or WAV)."""
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 import numpy as np
@@ -33,8 +34,8 @@ def parse_band(text: str | None) -> tuple[float, float] | None:
         low, high = (float(part) for part in text.split(":"))
     except ValueError:
         raise SignalError(f"--band {text}: allowed LO:HI in Hz, e.g. 300:400") from None
-    if not 0 <= low < high:
-        raise SignalError(f"--band {text}: allowed 0 ≤ LO < HI")
+    if not (math.isfinite(low) and math.isfinite(high) and 0 <= low < high):
+        raise SignalError(f"--band {text}: allowed 0 ≤ LO < HI, finite numbers [Hz]")
     return low, high
 
 

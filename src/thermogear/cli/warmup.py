@@ -45,6 +45,10 @@ def warmup(
     plot: Path | None = typer.Option(None, "--plot", help="write the figure to this file (.png/.svg/.pdf)"),
 ) -> None:
     """Warm-up of a test rig as a sequence of steady operating states."""
+    if plot is not None:
+        from thermogear.ownership import check_figure_file
+
+        check_figure_file(plot)  # before any work
     base = load_case(case)
     if rig_comparison:
         _rig_comparison(base, gear_model, as_json, plot)
@@ -69,7 +73,9 @@ def warmup(
     else:
         history = read_temperature_history(temperature_history)
         if speed_rpm is None and temperature_history.startswith("luo2019:"):
-            speed_rpm = float(temperature_history.split(":", 1)[1])
+            from thermogear.experiment.warmup import history_speed_rpm
+
+            speed_rpm = history_speed_rpm(temperature_history)
     result = run_warmup(base, history, gear_model, speed_rpm, dynamics)
     payload = result.as_dict()
     if plot is not None:

@@ -141,7 +141,9 @@ class NonlinearResponse:
 
     # ------------------------------------------------------------------ files
     def metrics_json(self) -> dict[str, Any]:
-        return json_ready(self.metrics)
+        """Metrics as plain JSON types; a number the model could not give (the multipliers of a non-periodic
+        response) is null beside its ``response`` and ``valid`` (a report of such a point raised before)."""
+        return json_ready(self.metrics, non_finite="null")
 
     def to_xarray(self):
         import xarray as xr  # noqa: PLC0415
@@ -203,7 +205,9 @@ def _metrics(problem: BacklashMeshProblem, orbit: BacklashOrbit, include_damping
         "stable": bool(orbit.stable),
         "contact_loss": {"detected": values["contact_loss_fraction"] > 0.0,
                          "fraction": values["contact_loss_fraction"]},
-        "valid": converged or orbit.response == "non-periodic",
+        # a non-periodic response has no steady orbit: its metrics describe the recorded periods, never a valid
+        # steady state (issue 25: it was reported "steady orbit found: yes" with NaN multipliers)
+        "valid": converged and orbit.response != "non-periodic",
     }
 
 

@@ -182,7 +182,7 @@ class DynamicResponse:
     # ------------------------------------------------------------------ export
     def metrics_json(self) -> dict[str, Any]:
         """Metrics as plain JSON types, plus ``method``, ``label`` and ``warnings``."""
-        summary = json_ready(self.metrics)
+        summary = json_ready(self.metrics, non_finite="null")  # a number not given is null beside ``valid``
         summary["method"] = self.method
         summary["label"] = self.label
         summary["include_damping_force"] = self.include_damping_force

@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import csv
 import io
+import unicodedata
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -31,6 +32,14 @@ TEMPERATURE_COLUMN_NAMES = ("temperature_c", "temperature", "temp_c")
 UNIFORM_SAMPLING_TOLERANCE = 1e-3
 #: Largest distance of a time stamp from the uniform grid, in steps (rounded time stamps are fine).
 TIME_JITTER_TOLERANCE = 0.1
+
+
+#: Largest sample magnitude [signal unit]: power spectra and RMS square the samples, and 10³⁰⁸ (the float
+#: limit) squared is infinite; 10¹⁰⁰ squared and summed over any record stays finite (samples near 10³⁰⁰
+#: crashed --json with NaN, issue 25). No accelerometer unit comes near it.
+LARGEST_SAMPLE = 1e100
+#: Temperatures a measured temperature column may hold [°C]: those of a case (thermogear.schema.temperature).
+TEMPERATURE_RANGE_C = (-60.0, 200.0)
 
 
 class SignalError(ThermogearError, ValueError):
@@ -79,6 +88,7 @@ class Signal:
             if temperature.shape != values.shape:
                 raise SignalError(f"{self.source}: temperature has {temperature.size} samples, signal {values.size}")
             _check_finite(temperature, "temperature", self.source)
+            _check_temperatures(temperature, self.source)
             object.__setattr__(self, "temperature_c", temperature)
 
     @property
@@ -106,16 +116,23 @@ class Signal:
 def read_signal(path: str | Path, column: str | None = None, rate_hz: float | None = None,
                 scale: float = 1.0) -> Signal:
     """Read one signal from a CSV or WAV file (by its suffix). See :func:`read_csv_signal`, :func:`read_wav_signal`."""
+    from thermogear.errors import shown_value  # noqa: PLC0415
+    from thermogear.text_files import is_existing_file  # noqa: PLC0415
+
     path = Path(path)
-    if not path.is_file():
-        raise SignalError(f"{path}: no such file")
+    if not is_existing_file(path):
+        raise SignalError(f"{shown_value(str(path))}: no such file")
+    if not (np.isfinite(scale) and scale != 0):
+        raise SignalError(f"--scale {scale!r}: allowed a finite non-zero number (signal unit per full scale)")
     suffix = path.suffix.lower()
     if suffix == ".wav":
         return read_wav_signal(path, column, scale=scale, rate_hz=rate_hz)
     if suffix in (".csv", ".txt", ".tsv"):
         signal = read_csv_signal(path, column, rate_hz)
         if scale != 1.0:
-            signal = Signal(signal.values * scale, signal.sampling_rate_hz, signal.name, signal.start_time_s,
+            with np.errstate(over="ignore"):  # an overflow is an infinite sample, refused by Signal
+                scaled = signal.values * scale
+            signal = Signal(scaled, signal.sampling_rate_hz, signal.name, signal.start_time_s,
                             signal.temperature_c, signal.source)
         return signal
     raise SignalError(f"{path}: file type '{suffix}' not supported; allowed .csv, .txt, .tsv, .wav")
@@ -154,6 +171,10 @@ def parse_csv_signal(text: str, column: str | None = None, rate_hz: float | None
     rows = list(csv.reader(io.StringIO("\n".join(lines)), delimiter=delimiter))
     header = [name.strip() for name in rows[0]]
     body = rows[1:]
+    if any(unicodedata.category(character) == "Cc" for name in header for character in name):
+        # the column names are printed: a terminal would act on an escape sequence (and a binary file is no CSV)
+        raise SignalError(f"{source}: the header line holds control characters; a CSV header names its columns "
+                          "in printable text (the file's content is not shown)")
     if not body:
         raise SignalError(f"{source}: no samples below the header {header}")
     if len(set(header)) != len(header) or any(not name for name in header):
@@ -200,8 +221,10 @@ def read_wav_signal(path: str | Path, column: str | None = None, scale: float = 
     path = Path(path)
     try:
         file_rate, data = wavfile.read(path)
-    except (ValueError, EOFError, OSError) as error:
-        raise SignalError(f"{path}: not a readable WAV file ({error})") from None
+    except Exception as error:  # noqa: BLE001  (SciPy's reader fails on damaged bytes with UnboundLocalError,
+        # struct.error and others, not only ValueError: any failure to parse is "not a readable WAV", issue 25)
+        raise SignalError(f"{path}: not a readable WAV file ({type(error).__name__}; a truncated or damaged "
+                          "file?)") from None
     if rate_hz is not None and abs(rate_hz - file_rate) > UNIFORM_SAMPLING_TOLERANCE * file_rate:
         raise SignalError(f"{path}: --rate {rate_hz} Hz disagrees with the WAV header ({file_rate} Hz)")
     if data.ndim == 0 or data.shape[0] < 2:
@@ -216,7 +239,8 @@ def read_wav_signal(path: str | Path, column: str | None = None, scale: float = 
         raise SignalError(f"{path}: column '{column}' not found; channels are {channels}")
     if not (np.isfinite(scale) and scale != 0):
         raise SignalError(f"{path}: scale {scale!r}: allowed a finite non-zero number (unit per full scale)")
-    values = wav_full_scale(data[:, channels.index(name)]) * scale
+    with np.errstate(over="ignore"):  # an overflow is an infinite sample, refused by Signal
+        values = wav_full_scale(data[:, channels.index(name)]) * scale
     return Signal(values, float(file_rate), name, 0.0, None, str(path))
 
 
@@ -241,7 +265,7 @@ def _numeric_column(strings: np.ndarray, name: str, source: str) -> np.ndarray:
         values = np.char.strip(strings).astype(float)
     except ValueError:
         bad = next(i for i, text in enumerate(strings) if not _is_number(text))
-        raise SignalError(f"{source}: column '{name}' row {bad + 2}: '{strings[bad]}' is not a number") from None
+        raise SignalError(f"{source}: column '{name}' row {bad + 2} is not a number") from None
     _check_finite(values, name, source)
     return values
 
@@ -259,6 +283,19 @@ def _check_finite(values: np.ndarray, name: str, source: str) -> None:
     if bad.size:
         raise SignalError(f"{source}: column '{name}' has {bad.size} NaN/infinite value(s), the first at sample "
                           f"{bad[0]} (CSV row {bad[0] + 2}); remove or fill them before the analysis")
+    bad = np.flatnonzero(np.abs(values) > LARGEST_SAMPLE)
+    if bad.size:
+        raise SignalError(f"{source}: column '{name}' has {bad.size} value(s) beyond ±{LARGEST_SAMPLE:g}, the "
+                          f"first at sample {bad[0]}: the spectra square the samples, which would overflow; give "
+                          "the signal in a unit of sensible size (--scale)")
+
+
+def _check_temperatures(values: np.ndarray, source: str) -> None:
+    low, high = TEMPERATURE_RANGE_C
+    bad = np.flatnonzero((values < low) | (values > high))
+    if bad.size:
+        raise SignalError(f"{source}: column 'temperature' has {bad.size} value(s) outside {low:g} … {high:g} °C "
+                          f"(the first at sample {bad[0]}): not a gearbox temperature in °C")
 
 
 def _rate_from_time(time: np.ndarray, name: str, source: str) -> tuple[float, float]:

@@ -25,6 +25,7 @@ from typing import Any, Callable
 import numpy as np
 
 from thermogear.errors import CaseError
+from thermogear.schema.temperature import CASE_MAXIMUM_C, CASE_MINIMUM_C
 
 TIME_COLUMNS = {"time_s": 1.0, "time": 1.0, "t_s": 1.0, "time_min": 60.0, "minute": 60.0, "minutes": 60.0}
 TEMPERATURE_COLUMNS = ("temperature_c", "temperature", "temp_c")
@@ -78,27 +79,56 @@ def first_order_history(start_c: float, final_c: float, time_constant_s: float, 
 def read_temperature_history(path: str | Path) -> TemperatureHistory:
     """Temperature history from a CSV file with a header: a time column (``time_s`` or ``time_min``/``minute``)
     and a temperature column (``temperature_c``); or ``luo2019:RPM`` for the paper's Table 3 run at RPM."""
+    from thermogear.text_files import is_existing_file, read_user_text  # noqa: PLC0415
+
     text = str(path)
     if text.startswith("luo2019:"):
-        return table3_history(float(text.split(":", 1)[1]))
+        return table3_history(history_speed_rpm(text))
     path = Path(path)
-    if not path.is_file():
+    if not is_existing_file(path):
         raise CaseError("temperature_history", text, "a CSV file or luo2019:RPM", "no such file")
-    rows = list(csv.reader(line for line in path.read_text(encoding="utf-8-sig").splitlines() if line.strip()))
+    content = read_user_text(path, "temperature_history", text, "CSV").removeprefix("\ufeff")
+    rows = list(csv.reader(line for line in content.splitlines() if line.strip()))
     if len(rows) < 2:
         raise CaseError("temperature_history", text, "a header and at least one row", "the file is empty")
     header = [name.strip().lower() for name in rows[0]]
     time_name = next((name for name in header if name in TIME_COLUMNS), None)
     temperature_name = next((name for name in header if name in TEMPERATURE_COLUMNS), None)
     if time_name is None or temperature_name is None:
-        raise CaseError("temperature_history", text, f"columns time_s|time_min and temperature_c",
-                        f"the header is {rows[0]}")
+        raise CaseError("temperature_history", text, "columns time_s|time_min and temperature_c",
+                        f"the first line names no such columns ({len(rows[0])} columns; the file's content is not "
+                        "shown)")
     try:
         table = np.array([[float(row[header.index(time_name)]), float(row[header.index(temperature_name)])]
                           for row in rows[1:]])
-    except (ValueError, IndexError) as error:
-        raise CaseError("temperature_history", text, "numbers in every row", f"cannot read a row: {error}") from None
+    except (ValueError, IndexError):
+        raise CaseError("temperature_history", text, "numbers in every row",
+                        "a row has no number in the time or temperature column") from None
+    if not np.all(np.isfinite(table)):
+        raise CaseError("temperature_history", text, "finite numbers", "a time or temperature is NaN or infinite")
+    low, high = CASE_TEMPERATURE_RANGE_C
+    if np.any(table[:, 1] < low) or np.any(table[:, 1] > high):
+        raise CaseError("temperature_history", text, f"temperatures from {low:g} to {high:g} °C",
+                        f"a temperature of {float(table[:, 1].min()):g} … {float(table[:, 1].max()):g} °C is outside "
+                        "what a case temperature may be")
     return TemperatureHistory(table[:, 0] * TIME_COLUMNS[time_name], table[:, 1], str(path))
+
+
+#: Temperatures a history may hold [°C]: those of a case.
+CASE_TEMPERATURE_RANGE_C = (CASE_MINIMUM_C, CASE_MAXIMUM_C)
+
+
+def history_speed_rpm(text: str) -> float:
+    """The RPM of ``luo2019:RPM`` [rpm]; CaseError naming --temperature-history when it is not a number."""
+    value = text.split(":", 1)[1]
+    try:
+        speed = float(value)
+    except ValueError:
+        speed = math.nan
+    if not (math.isfinite(speed) and speed > 0.0):
+        raise CaseError("--temperature-history", text, "luo2019:RPM with RPM a positive number (a speed of the "
+                        "paper's rig run)", "the speed after 'luo2019:' is not a positive number")
+    return speed
 
 
 def table3_history(speed_rpm: float) -> TemperatureHistory:

@@ -154,8 +154,9 @@ def _nonlinear_messages(metrics: dict, model: str) -> list[str]:
     if metrics["response"] != "periodic":
         kind = ("subharmonic, repeating every " f"{metrics['period_count']} mesh periods"
                 if metrics["response"] == "subharmonic" else "non-periodic (no repeating orbit was found)")
-        messages.append(f"{model}: the response is {kind}; its metrics are taken over the recorded periods")
-    if not metrics["valid"]:
+        messages.append(f"{model}: the response is {kind}; its metrics are taken over the recorded periods"
+                        + (" and are not a steady state (not valid)" if metrics["response"] == "non-periodic" else ""))
+    if not metrics["valid"] and metrics["response"] != "non-periodic":
         messages.append(f"{model}: no steady orbit was found (residual {metrics['residual']:.3g}): the numbers "
                         "above are not a steady state")
     return messages

@@ -24,7 +24,8 @@ from pathlib import Path
 from types import FrameType
 
 from thermogear.errors import CaseError
-from thermogear.ownership import marker_process_alive, read_marker, require_owned, resolve_output, write_marker
+from thermogear.ownership import (MARKER, marker_process_alive, read_marker, require_owned, resolve_output,
+                                  write_marker, written_files)
 
 __all__ = ["OutputFolder", "Terminated"]
 
@@ -48,13 +49,13 @@ class OutputFolder:
 
     def check(self) -> None:
         """Refuse an existing target without ``force`` (before any work is done)."""
+        if self.target.exists() and not self.target.is_dir():
+            raise CaseError(self.option, str(self.target), "a folder", "a file of that name exists")
+        if self.target.exists():  # a folder thermogear did not write: --force would not help, so say that first
+            require_owned(self.target, "report", self.option, "replaced")
         if self.target.exists() and not self.force:
             raise CaseError(self.option, str(self.target), "a folder that does not exist yet, or --force",
                             "the output folder exists and is not overwritten silently; pass --force to replace it")
-        if self.target.exists() and not self.target.is_dir():
-            raise CaseError(self.option, str(self.target), "a folder", "a file of that name exists")
-        if self.target.exists():
-            require_owned(self.target, "report", self.option, "replaced")
         existing = self.target.parent
         while not existing.exists() and existing != existing.parent:
             existing = existing.parent
@@ -132,11 +133,14 @@ class OutputFolder:
             previous = signal.pthread_sigmask(signal.SIG_BLOCK, _SIGNALS)
         try:
             old = None
+            written = written_files(self.path)
+            write_marker(self.path, "report", files=[name for name in written if name != MARKER])
             if self.target.exists():
                 if not self.force:  # appeared while we were running
                     raise CaseError(self.option, str(self.target), "a folder that does not exist yet, or --force",
                                     "the output folder appeared during the run; nothing was replaced")
                 require_owned(self.target, "report", self.option, "replaced")
+                _keep_foreign_files(self.target, self.path, set(written))
                 old = Path(tempfile.mkdtemp(prefix=f".{self.target.name}.old-", dir=self.target.parent))
                 os.rmdir(old)
                 os.replace(self.target, old)
@@ -146,3 +150,23 @@ class OutputFolder:
         finally:
             if blocked:
                 signal.pthread_sigmask(signal.SIG_SETMASK, previous)  # a pending signal is delivered here
+
+
+def _keep_foreign_files(previous: Path, new: Path, new_files: set[str]) -> None:
+    """Move into ``new`` every file of the ``previous`` report folder that thermogear did not write (a user's
+    ``notes.txt`` or ``figures/mine/``), so that replacing a report replaces only thermogear's files. What
+    thermogear wrote is read from the previous marker's file list; a folder written before that list existed
+    counts the files the new report writes as thermogear's."""
+    document = read_marker(previous) or {}
+    own = set(document.get("files") or ()) | new_files | {MARKER}
+    for name in written_files(previous):
+        if name in own:
+            continue
+        source, destination = previous / name, new / name
+        if name.endswith("/"):
+            destination.mkdir(parents=True, exist_ok=True)
+            continue
+        if destination.exists() or destination.is_symlink():
+            continue  # a name the new report writes: thermogear's
+        destination.parent.mkdir(parents=True, exist_ok=True)
+        os.replace(source, destination)

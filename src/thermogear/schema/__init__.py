@@ -2,8 +2,11 @@
 
 from __future__ import annotations
 
-from pydantic import Field
+import re
 
+from pydantic import Field, field_validator
+
+from thermogear.errors import CaseError
 from thermogear.schema.base import Section
 from thermogear.schema.dynamics import DampingSection, DynamicsSection
 from thermogear.schema.fem import FemSection
@@ -16,6 +19,11 @@ from thermogear.schema.temperature import TemperatureSection
 from thermogear.schema.thermal import ThermalSection
 
 
+#: Control characters (Unicode category Cc: U+0000–U+001F and U+007F–U+009F), and the same but tab and newline.
+_CONTROL = re.compile("[\x00-\x1f\x7f-\x9f]")
+_CONTROL_BUT_LAYOUT = re.compile("[\x00-\x08\x0b-\x1f\x7f-\x9f]")
+
+
 class CaseInfo(Section):
     """[case]: what this case is and where its numbers come from."""
 
@@ -23,6 +31,20 @@ class CaseInfo(Section):
     title: str = ""
     citation: str = ""
     assumptions: list[str] = Field(default_factory=list)
+
+    @field_validator("name", "title", "citation", "assumptions")
+    @classmethod
+    def _printable(cls, value, info):
+        """Text that is printed to a terminal and into reports: no control characters (an escape sequence in a
+        name was printed raw and drove the terminal, issue 25). Tabs and line breaks stay in the long texts."""
+        control = _CONTROL if info.field_name == "name" else _CONTROL_BUT_LAYOUT
+        for text in value if isinstance(value, list) else [value]:
+            found = control.search(text)
+            if found is not None:
+                bad = found.group()
+                raise CaseError(f"case.{info.field_name}", text, "printable text (no control characters)",
+                                f"it holds the control character {bad!r}, which a terminal would act on")
+        return value
 
 
 class CaseFile(Section):

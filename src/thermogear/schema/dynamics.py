@@ -4,9 +4,19 @@ from __future__ import annotations
 
 from typing import Annotated, Literal
 
-from pydantic import Field
+from pydantic import Field, model_validator
+
+from thermogear.errors import CaseError
 
 from thermogear.schema.base import Section
+
+
+#: Most mesh periods a transient run integrates [–]. The history of every sample is kept (about 1.1 MB per period
+#: of 1024 samples: 100 000 periods grew to 24 GB, issue 25). A lightly damped mesh (damping ratio 0.02) at twice
+#: its natural frequency decays by e^(−2π·0.02·500/2) ≈ e^(−31) over 500 periods: more is never needed to settle.
+MAX_TRANSIENT_PERIODS = 500
+#: Most samples of a transient history (periods × points per period) [–]: 500 periods of 1024 samples, ≈ 0.55 GB.
+MAX_TRANSIENT_SAMPLES = MAX_TRANSIENT_PERIODS * 1024
 
 
 class DampingSection(Section):
@@ -46,5 +56,16 @@ class DynamicsSection(Section):
     points_per_period: Annotated[int, Field(ge=64, le=100000)] = 1024
     samples_per_interval: Annotated[int, Field(ge=1, le=256, description="samples of the periodic orbit inside "
                                                              "each interval, for metrics and plots")] = 4
-    transient_periods: Annotated[int, Field(ge=1, le=100000)] = 60
+    transient_periods: Annotated[int, Field(ge=1, le=MAX_TRANSIENT_PERIODS, description=(
+        "mesh periods integrated from rest (the history is kept: about 1 kB per sample)"))] = 60
     include_damping_force: bool = Field(False, description="dynamic load k·x + c·ẋ instead of the paper's k·x")
+
+    @model_validator(mode="after")
+    def _transient_memory(self):
+        samples = self.transient_periods * self.points_per_period
+        if self.method == "transient" and samples > MAX_TRANSIENT_SAMPLES:
+            raise CaseError("dynamics.transient_periods", self.transient_periods,
+                            f"<= {MAX_TRANSIENT_SAMPLES // self.points_per_period} with points_per_period = "
+                            f"{self.points_per_period}", f"the transient keeps every sample (about 1 kB each): "
+                            f"{samples:,} samples would need over {samples * 1.1e-6:.1f} GB")
+        return self

@@ -7,7 +7,18 @@ from typing import Annotated, Literal
 
 from pydantic import Field, model_validator
 
+from thermogear.errors import CaseError
 from thermogear.schema.base import Section
+
+
+#: Smallest face width [mm]: the smallest module the schema takes (0.1 mm); a thinner gear is no gear the
+#: tooth models describe (1e-9 mm passed and gave a static line load of 4·10¹² N/mm, issue 25).
+MINIMUM_FACE_WIDTH_MM = 0.1
+#: Largest normal backlash as a share of the base pitch [–]. The backlash is made by thinning the teeth, and
+#: the tooth models use the unthinned tooth: a normal backlash of 0.1 p_b thins each tooth (half each) by about a
+#: tenth of its thickness at the pitch point (≈ p_b/2), which already changes its bending stiffness (∝ thickness³)
+#: by about 30 %. Usual backlashes (AGMA 2002 / ISO/TR 10064-2 tables, 0.02 to 0.1 m) are a few hundredths of p_b.
+MAXIMUM_BACKLASH_SHARE_OF_BASE_PITCH = 0.1
 
 
 class GearSection(Section):
@@ -15,14 +26,16 @@ class GearSection(Section):
 
     teeth: Annotated[int, Field(ge=5, le=1000, description="number of teeth z [–]")]
     profile_shift: Annotated[float, Field(ge=-1.0, le=1.5, description="profile shift coefficient x [–]")] = 0.0
-    face_width_mm: Annotated[float, Field(gt=0.0, le=2000.0, description="face width b [mm]")] | None = None
+    face_width_mm: Annotated[float, Field(ge=MINIMUM_FACE_WIDTH_MM, le=2000.0,
+                                          description="face width b [mm]")] | None = None
     bore_radius_mm: Annotated[float, Field(ge=0.0, le=5000.0, allow_inf_nan=False, description=(
         "bore (hub) radius r_n [mm]; omitted or 0: a solid gear (the fillet foundation then takes a nominal seat "
         "of 0.3 r_f, docs/stiffness.md)"))] | None = None
     tip_diameter_mm: Annotated[float, Field(gt=0.0, le=20000.0,
                                             description="tip diameter d_a [mm]; default from the geometry")] | None = None
-    inertia_kg_m2: Annotated[float, Field(gt=0.0, description="polar moment of inertia [kg m²]; default: solid "
-                                                               "disc of the pitch radius with the bore")] | None = None
+    inertia_kg_m2: Annotated[float, Field(gt=0.0, allow_inf_nan=False,
+                                          description="polar moment of inertia [kg m²]; default: solid "
+                                                      "disc of the pitch radius with the bore")] | None = None
     # thermo-elastic mesh model (docs/thermal.md): per-gear material at temperature and profile modification
     thermal_expansion_per_k: Annotated[float, Field(ge=0.0, le=1e-4, description="this gear's linear expansion "
                                                     "coefficient [1/K]; default [material]")] | None = None
@@ -47,7 +60,8 @@ class GearsSection(Section):
 
     module_mm: Annotated[float, Field(ge=0.1, le=100.0, description="module m [mm]")]
     pressure_angle_deg: Annotated[float, Field(gt=0.0, lt=45.0, description="pressure angle α [°]")] = 20.0
-    face_width_mm: Annotated[float, Field(gt=0.0, le=2000.0, description="face width b of both gears [mm]")] | None = None
+    face_width_mm: Annotated[float, Field(ge=MINIMUM_FACE_WIDTH_MM, le=2000.0,
+                                          description="face width b of both gears [mm]")] | None = None
     addendum_coefficient: Annotated[float, Field(gt=0.0, le=2.0, description="h_a* [–]")] = 1.0
     dedendum_coefficient: Annotated[float, Field(gt=0.0, le=2.5, description="h_f* [–]")] = 1.25
     tool_tip_radius_coefficient: Annotated[float, Field(ge=0.0, le=0.6, description="rack tip radius ρ_fP* [–]")] = 0.38
@@ -72,9 +86,13 @@ class GearsSection(Section):
     def _backlash_below_base_pitch(self):
         if self.backlash_normal_um is not None:
             base_pitch_um = math.pi * self.module_mm * math.cos(math.radians(self.pressure_angle_deg)) * 1e3
-            if self.backlash_normal_um >= base_pitch_um:
-                raise ValueError(f"backlash_normal_um: {self.backlash_normal_um} μm is not below the base pitch "
-                                 f"{base_pitch_um:.1f} μm; a backlash of a whole base pitch leaves no tooth")
+            limit_um = MAXIMUM_BACKLASH_SHARE_OF_BASE_PITCH * base_pitch_um
+            if self.backlash_normal_um > limit_um:
+                raise CaseError("gears.backlash_normal_um", self.backlash_normal_um,
+                                f"<= {limit_um:.1f} μm (a tenth of the base pitch {base_pitch_um:.1f} μm)",
+                                "the backlash thins the teeth and the tooth models use the unthinned tooth: "
+                                "beyond a tenth of the base pitch each tooth loses about a tenth of its "
+                                "thickness and its bending stiffness changes by about 30 %")
         return self
 
 

@@ -10,13 +10,18 @@ from thermogear.schema.base import Section
 
 #: Absolute zero [°C]: no temperature of a case may reach it.
 ABSOLUTE_ZERO_C = -273.15
+#: Lowest temperature any case temperature may have [°C]: below the coldest start gearboxes are specified for
+#: (the housing range starts at −40 °C) with margin. Colder, mineral and synthetic gear oils are past their pour
+#: point (an ASTM D341 line fitted at 40 and 100 °C says nothing there) and the room-temperature material data no
+#: longer hold; −273 °C passed as an assembly temperature before (issue 25). An assumption of this project.
+CASE_MINIMUM_C = -60.0
 #: Highest temperature any case temperature may have [°C] (= thermogear.temperature_field.MATERIAL_MAXIMUM_C: the
 #: material data are room-temperature constants; gear steels temper at 150–200 °C). Repeated here because the
 #: schema imports nothing of the model; a test checks the two agree.
 CASE_MAXIMUM_C = 200.0
 
-#: A temperature of a case [°C]: a finite number above absolute zero and at most CASE_MAXIMUM_C.
-Celsius = Annotated[float, Field(gt=ABSOLUTE_ZERO_C, le=CASE_MAXIMUM_C, allow_inf_nan=False)]
+#: A temperature of a case [°C]: a finite number from CASE_MINIMUM_C to CASE_MAXIMUM_C.
+Celsius = Annotated[float, Field(ge=CASE_MINIMUM_C, le=CASE_MAXIMUM_C, allow_inf_nan=False)]
 
 
 class TemperatureSection(Section):

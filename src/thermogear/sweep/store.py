@@ -37,7 +37,8 @@ from typing import Any
 import numpy as np
 
 from thermogear.errors import CaseError
-from thermogear.ownership import is_owned, require_owned, resolve_output, write_marker
+from thermogear.ownership import (is_owned, require_no_foreign_entries, require_owned, resolve_output,
+                                  write_marker)
 from thermogear.sweep.batch import FLAG_VARIABLES, MODEL_VARIABLES, POINT_VARIABLES
 
 __all__ = ["ResultStore", "open_result", "study_description"]
@@ -108,6 +109,7 @@ class ResultStore:
                 raise CaseError("out", str(target), "a path that does not exist yet (or --resume / --overwrite)",
                                 "the result store exists; resume it or overwrite it explicitly")
             require_owned(target, _KIND, "--out", "overwritten")
+            require_no_foreign_entries(target)  # a user's notes.txt in the store is never deleted
             shutil.rmtree(target)
         try:  # the folder appears with its marker in it (renamed into place): a kill never leaves it unmarked
             target.parent.mkdir(parents=True, exist_ok=True)

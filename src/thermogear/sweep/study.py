@@ -370,13 +370,18 @@ def load_study_case(name_or_path: str | Path):
     """
     from thermogear.case import case_from_document, load_case
 
+    from thermogear.text_files import is_existing_file, read_user_text
+
     path = Path(str(name_or_path))
-    if not (path.suffix == ".toml" and path.is_file()):
+    if not (path.suffix == ".toml" and is_existing_file(path)):
         return load_case(name_or_path), None
-    try:
-        document = tomllib.loads(path.read_text(encoding="utf-8"))
+    try:  # the same reading and the same errors as load_case
+        document = tomllib.loads(read_user_text(path, "case", str(path), "TOML"))
     except tomllib.TOMLDecodeError as error:
         raise CaseError("case", str(path), "valid TOML", f"the file cannot be parsed: {error}") from None
+    except RecursionError:
+        raise CaseError("case", str(path), "TOML nested a few levels deep",
+                        "the file nests tables or arrays too deeply to be a case file") from None
     raw = document.pop("sweep", None)
     case = case_from_document(document, source=str(path))
     if raw is None:

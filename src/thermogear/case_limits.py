@@ -1,0 +1,125 @@
+"""Load-time limits of what the model can compute: cases it would fail on, or take unbounded time for.
+
+Each check raises :class:`~thermogear.errors.CaseError` naming the key, the value, the allowed range and why, so
+that ``check`` refuses what ``stiffness``, ``run``, ``damping`` and ``sweep`` would fail on (issue 25):
+
+- :func:`check_fillet_fit`: the fillet-foundation compliance of Sainsot et al. (2004) is a polynomial fit in the
+  root half angle θ_f ≈ 3/z; for many teeth (θ_f below about 0.0075 rad: z above 418 with the ISO 53 rack and a
+  solid gear) its coefficients P* and Q* turn negative and the tooth compliance with them. Such a gear is refused,
+  with the largest tooth count of its rack that the fit still gives a positive compliance for.
+- :func:`check_dynamic_range`: the ratio λ = f_mesh / f_n of the mesh frequency to the torsional natural frequency
+  decides how much work one steady orbit takes. Below :data:`FREQUENCY_RATIO_RANGE` [0] (a crawl speed or a gear
+  with almost no inertia) a mesh period holds more than 10⁵ natural oscillations, which the event-driven
+  nonlinear solver integrates one by one (1 rpm on the FZG type C pair, λ ≈ 5·10⁻⁵: 2.5 s; 0.01 rpm: over
+  40 s, growing without bound as the speed falls); above [1] (an inertia of a ship's wheel on a watch gear)
+  the mass hardly moves and the equations lose every digit (an inertia of 10³⁰ kg m² gave NaN). f_n is estimated
+  before any stiffness is computed from ISO 6336-1 Method B's mean mesh stiffness c_γα (clause 9), which is
+  within about 30 % of the potential-energy value for the built-in cases: the bounds leave decades of margin.
+"""
+
+from __future__ import annotations
+
+import math
+
+from thermogear.errors import CaseError
+
+#: Smallest line load F_bt / b [N/m] (0.01 N/mm). With a mesh stiffness near ISO 6336-1's c_γα ≈ 20 N/(mm·μm) it
+#: deflects the teeth by 0.5 nm, a few atomic spacings and a hundredth of the finest ground flank's roughness:
+#: below it the static transmission error has no physical meaning, and the solvers' tolerances (scaled to it)
+#: lose the orbit (power_kw = 1e-12 gave a non-periodic response and NaN multipliers, issue 25). Idling gears
+#: (rattle under drag torque) carry 0.1 to a few N/mm.
+MINIMUM_LINE_LOAD = 10.0
+
+#: Allowed range of λ = f_mesh / f_n [–] (module docstring). Ordinary gearboxes run at 0.01 to 5.
+FREQUENCY_RATIO_RANGE = (1e-5, 1e3)
+
+
+def _fit_coefficients_positive(teeth: int, root_to_bore: float, pressure_angle: float, rack_dedendum: float,
+                               rack_tip_radius: float) -> bool:
+    """Whether L*, M*, P*, Q* of the Sainsot fit are all positive for this gear (plain floats: it runs for every
+    case loaded, sweep points included)."""
+    from thermogear.stiffness.fillet_foundation import (NOMINAL_SEAT_RATIO, SAINSOT_COEFFICIENTS,
+                                                        SAINSOT_INPUT_RANGES, root_half_angle)
+
+    theta_f = root_half_angle(teeth, pressure_angle, rack_dedendum, rack_tip_radius)
+    h_f = min(max(root_to_bore, SAINSOT_INPUT_RANGES["h_f"][0]), 1.0 / NOMINAL_SEAT_RATIO)  # as evaluated
+    return all(a / theta_f**2 + b * h_f**2 + c * h_f / theta_f + d / theta_f + e * h_f + f > 0.0
+               for a, b, c, d, e, f in SAINSOT_COEFFICIENTS.values())
+
+
+def check_fillet_fit(case) -> None:
+    """Refuse a gear whose tooth count takes the Sainsot fillet-foundation fit to a non-positive coefficient
+    (module docstring): its tooth compliance would be non-positive and no stiffness could be computed."""
+    from thermogear.stiffness.fillet_foundation import root_to_bore_ratio
+
+    for name in ("pinion", "wheel"):
+        gear = getattr(case.gear_pair, name)
+        h_f = root_to_bore_ratio(gear.root_radius, gear.bore_radius, name)
+        arguments = (gear.pressure_angle, gear.dedendum_coefficient, gear.tool_tip_radius_coefficient)
+        if _fit_coefficients_positive(gear.teeth, h_f, *arguments):
+            continue
+        largest = gear.teeth - 1
+        while largest > 5 and not _fit_coefficients_positive(largest, h_f, *arguments):
+            largest -= 1
+        raise CaseError(f"gears.{name}.teeth", gear.teeth, f"<= {largest} with this rack and bore",
+                        "the fillet-foundation compliance of Sainsot et al. (2004) is a fit over root half angles "
+                        "θ_f >= 0.01 rad (θ_f ≈ 3/z); with this many teeth its coefficients turn negative and the "
+                        "tooth compliance with them, so no mesh stiffness can be computed")
+
+
+def estimated_frequency_ratio(case, inertias: tuple[float, float] | None) -> float:
+    """λ = f_mesh / f_n [–] with f_n = √(c_γα b / m_e) / 2π from ISO 6336-1 Method B's c_γα (clause 9) and the
+    equivalent mass m_e of the given inertias (None: solid discs)."""
+    from thermogear.stiffness.iso6336 import iso6336_stiffness
+
+    pair = case.gear_pair
+    stiffness = iso6336_stiffness(pair, case.material)["c_gamma_alpha"] * pair.face_width  # [N/m]
+    mass = pair.equivalent_mass(case.material.density, inertias)
+    natural_frequency = math.sqrt(stiffness / mass) / (2.0 * math.pi)
+    return pair.mesh_frequency(case.operating_point.speed_rpm) / natural_frequency
+
+
+def check_dynamic_range(case) -> None:
+    """Refuse an operating point whose frequency ratio λ lies outside :data:`FREQUENCY_RATIO_RANGE` (module
+    docstring), naming the inertias when they are what takes it out (the same speed with solid-disc inertias is
+    inside), the speed otherwise."""
+    low, high = FREQUENCY_RATIO_RANGE
+    ratio = estimated_frequency_ratio(case, case.inertias)
+    if low <= ratio <= high:
+        return
+    why = ("a mesh period would hold more than 10⁵ natural oscillations, which the dynamics solvers integrate one "
+           "by one: it cannot be computed in reasonable time (the response is the static one)") if ratio < low else (
+           "the gears would hardly move against the mesh (the inertia overwhelms the tooth stiffness), and the "
+           "equations lose every digit")
+    reason = f"the mesh-to-natural frequency ratio λ ≈ {ratio:.3g} is outside [{low:g}, {high:g}]: {why}"
+    if case.inertias is not None and low <= estimated_frequency_ratio(case, None) <= high:
+        raise CaseError("gears.pinion.inertia_kg_m2, gears.wheel.inertia_kg_m2", list(case.inertias),
+                        "inertias that keep λ inside the range (solid discs of the gears do)", reason)
+    raise CaseError("operating.speed_rpm", case.operating_point.speed_rpm,
+                    f"a speed giving λ in [{low:g}, {high:g}]", reason)
+
+
+def load_key(case) -> str:
+    """The case-file key the load was given by."""
+    operating = case.document.get("operating", {})
+    return next((f"operating.{name}" for name in ("power_kw", "torque_nm", "fzg_load_stage")
+                 if operating.get(name) is not None), "operating.torque_nm")
+
+
+def check_load_range(case) -> None:
+    """Refuse a load below :data:`MINIMUM_LINE_LOAD`, naming the key it was given by."""
+    line_load = case.normal_load / case.gear_pair.face_width
+    if line_load >= MINIMUM_LINE_LOAD:
+        return
+    key = load_key(case)
+    value = case.document["operating"].get(key.split(".")[1])
+    raise CaseError(key, value, f"a load of at least {MINIMUM_LINE_LOAD * 1e-3:g} N/mm of face width (here "
+                    f"{line_load * 1e-3:.3g} N/mm)", "the teeth would deflect by less than a nanometre, below any "
+                    "flank's roughness: the transmission error has no meaning and the solvers lose the orbit")
+
+
+def check_model_limits(case) -> None:
+    """Every limit of this module, in order (called by :func:`thermogear.case.check_case`)."""
+    check_fillet_fit(case)
+    check_load_range(case)
+    check_dynamic_range(case)
