@@ -23,11 +23,18 @@ def drivetrain_backlash_branch(assembled: AssembledDrivetrain, states: Sequence[
                                tolerance: float = 1e-10) -> BacklashBranchNDOF:
     """Follow the drivetrain's backlash orbit over mesh states ordered by pinion speed, ``direction`` "up" or
     "down"; the branch's parameter is the speed [rpm]; ``tolerance`` the shooting's relative residual (very stiff
-    supports leave a rounding floor near 1e-9: ask for 1e-8 there). The state at τ = 0 carries over between speeds only when
-    every state has the same reduced coordinates (one drivetrain, one rigid-mode reduction), which holds here."""
+    supports leave a rounding floor near 1e-9: ask for 1e-8 there). The state at τ = 0 carries over between speeds
+    in the reduced coordinates, so every state must give the same rigid-mode reduction (CaseError otherwise)."""
     speeds = np.array([state.speed_rpm for state in states], dtype=float)
     if speeds.size == 0 or np.any(np.diff(speeds) <= 0.0):
         raise CaseError("states", list(speeds), "mesh states at increasing pinion speeds", "a sweep in speed")
-    systems = [drivetrain_backlash_system(assembled, state)[0] for state in states]
+    built = [drivetrain_backlash_system(assembled, state) for state in states]
+    first = built[0][1].basis
+    for (_, reduction), speed in zip(built, speeds):
+        if reduction.basis.shape != first.shape or not np.allclose(reduction.basis, first, rtol=0, atol=1e-12):
+            raise CaseError("states", f"the state at {speed:g} rpm",
+                            "states whose rigid-mode reduction is the first one's",
+                            "the orbit's state at τ = 0 is carried between speeds in the reduced coordinates")
+    systems = [system for system, _ in built]
     return follow_backlash_branch(systems, direction, speeds, substeps=substeps, run_in_periods=run_in_periods,
                                   tolerance=tolerance)

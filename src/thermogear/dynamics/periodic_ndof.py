@@ -8,9 +8,10 @@ augmented matrix (Van Loan, "Computing integrals involving the matrix exponentia
 
 The monodromy Φ_T = Φ_{N−1}···Φ_0 and the image p of z = 0 after one period give the periodic state
 z₀ = (I − Φ_T)⁻¹ p, unique and attracting iff every Floquet multiplier (eigenvalue of Φ_T) lies inside the unit
-circle (Floquet 1883; Nayfeh & Mook, Nonlinear Oscillations, 1979, §5.2). The exponentials of all pieces are taken in one
-vectorised pass (:mod:`thermogear.dynamics.batched_exponential`) and multiplied pairwise. Knows nothing of gears: matrices only. With a rigid-body mode (K r = 0) a
-multiplier is 1 and I − Φ_T is singular: remove such modes first (``rigid_body.rigid_body_reduction``).
+circle (Floquet 1883; Nayfeh & Mook, Nonlinear Oscillations, 1979, §5.2). The exponentials of all pieces are
+taken in one vectorised pass (:mod:`thermogear.dynamics.batched_exponential`) and multiplied pairwise. Knows
+nothing of gears: matrices only. With a rigid-body mode (K r = 0) a multiplier is 1 and I − Φ_T is singular:
+remove such modes first (``rigid_body.rigid_body_reduction``).
 
 ``K_j = K₀ + k_j·P_K``, ``C_j = C₀ + c_j·P_C`` and ``f_j = f₀ + g_j·P_f``: a constant part plus a pattern scaled per piece
 (a gear mesh: P_K = P_C = w wᵀ, P_f = w), which is how the pieces are stored.
