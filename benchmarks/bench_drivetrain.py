@@ -13,8 +13,14 @@ Figures:
    augmented expm, 8 samples per piece, bearing forces, metrics) in ms per speed, against ``solve_ivp`` (DOP853,
    restarted at every node) run from rest on the same reduced system for as many periods as it needs to agree with
    the periodic state to 1e-6 relative (the count is measured).
-3. the same drivetrain fed by the luo2019 thermal mesh state (its many grid intervals are as many pieces): ms per
-   speed, against the 1-DOF periodic solver on the same mesh state.
+   The Newmark average-acceleration reference (``dynamics/newmark.py``, 64 steps per piece) run from rest to a
+   steady state (period ends agreeing to 1e-6) on the same system is a second baseline; its distance to the exact
+   orbit is printed.
+3. the same drivetrain fed by the luo2019 thermal mesh state (1024 grid intervals, as many pieces): ms per speed on
+   every DOF, and reduced to the excited modes below 20 kHz plus the static corrections (``cutoff_hz``; its DTE
+   difference from the full solution is printed), against the 1-DOF periodic solver on the same mesh state.
+4. a sweep of the reduced solver over pinion speeds, each with its own thermal mesh state (``MeshModel.state``):
+   seconds for 1000 speeds (timed on ``SWEEP_SAMPLE`` speeds and scaled), against the 1-DOF sweep likewise.
 """
 
 from __future__ import annotations
@@ -36,6 +42,8 @@ import numpy as np  # noqa: E402
 
 RESULTS = Path(__file__).resolve().parent / "results"
 TOLERANCE = 1e-6
+CUTOFF_HZ = 2e4
+SWEEP_SAMPLE = 40
 
 
 def _times(function, repeat: int) -> np.ndarray:
@@ -139,6 +147,17 @@ def main(quick: bool = False) -> dict:
                             f"rest to 1e-6 ({periods} periods)",
                     "value": response_ms, "baseline": ivp_s * 1e3, "unit": "ms per speed",
                     "ratio": ivp_s * 1e3 / response_ms})
+    from thermogear.dynamics.newmark import newmark_steady_state
+
+    start = time.perf_counter()
+    newmark = newmark_steady_state(system, steps_per_piece=64, tolerance=TOLERANCE)
+    newmark_s = time.perf_counter() - start
+    exact = periodic_response(system, 64).displacement
+    distance = float(np.abs(newmark.displacement - exact).max() / np.abs(exact).max())
+    figures.append({"name": f"exact periodic response, {small.size} DOF, 3 pieces, per speed vs Newmark (64 steps "
+                            f"per piece, {newmark.periods} periods to 1e-6, {distance:.1e} from the exact orbit)",
+                    "value": response_ms, "baseline": newmark_s * 1e3, "unit": "ms per speed",
+                    "ratio": newmark_s * 1e3 / response_ms})
 
     # ---------------------------------------------------------------- 3. the luo2019 mesh state as pieces
     from thermogear.case import load_case
@@ -152,6 +171,36 @@ def main(quick: bool = False) -> dict:
     figures.append({"name": f"exact periodic response, {small.size} DOF, luo2019 state ({pieces} pieces) vs the "
                             "1-DOF periodic solver on the same state",
                     "value": real_ms, "baseline": one_dof_ms, "unit": "ms per speed", "ratio": real_ms / one_dof_ms})
+    full_real = drivetrain_periodic_response(small, real_state, samples_per_piece=1)
+    reduced = drivetrain_periodic_response(small, real_state, samples_per_piece=1, cutoff_hz=CUTOFF_HZ)
+    difference = float(np.abs(reduced.transmission_error - full_real.transmission_error).max()
+                       / np.abs(full_real.transmission_error).max())
+    reduced_s = _times(lambda: drivetrain_periodic_response(small, real_state, samples_per_piece=1,
+                                                            cutoff_hz=CUTOFF_HZ), 3 if quick else 10)
+    reduced_ms = float(np.median(reduced_s)) * 1e3
+    figures.append({"name": f"reduced periodic response (modes < {CUTOFF_HZ:.0f} Hz + static corrections, DTE "
+                            f"{difference:.1e} from the full one), luo2019 state vs the full {small.size} DOF",
+                    "value": reduced_ms, "baseline": real_ms, "unit": "ms per speed", "ratio": real_ms / reduced_ms})
+
+    # ---------------------------------------------------------------- 4. a 1000-speed sweep
+    model = MeshModel(load_case("luo2019"), "thermal")
+    sweep_speeds = np.linspace(500.0, 6000.0, 4 if quick else SWEEP_SAMPLE)
+
+    def sweep() -> None:
+        for speed in sweep_speeds:
+            drivetrain_periodic_response(small, model.state(speed_rpm=speed), samples_per_piece=1,
+                                         cutoff_hz=CUTOFF_HZ)
+
+    def sweep_one_dof() -> None:
+        for speed in sweep_speeds:
+            periodic_steady_state(model.state(speed_rpm=speed).problem(), samples_per_interval=1)
+
+    per_speed = float(_times(sweep, 1)[0]) / sweep_speeds.size
+    per_speed_one_dof = float(_times(sweep_one_dof, 1)[0]) / sweep_speeds.size
+    figures.append({"name": f"1000-speed sweep, reduced {small.size}-DOF drivetrain, thermal state per speed "
+                            f"(timed on {sweep_speeds.size}) vs the 1-DOF sweep",
+                    "value": 1000 * per_speed, "baseline": 1000 * per_speed_one_dof, "unit": "s",
+                    "ratio": per_speed / per_speed_one_dof})
 
     result = {"figures": figures, "python": platform.python_version(), "machine": platform.machine(),
               "quick": quick}

@@ -8,9 +8,10 @@ augmented matrix (Van Loan, "Computing integrals involving the matrix exponentia
 
 The monodromy Φ_T = Φ_{N−1}···Φ_0 and the image p of z = 0 after one period give the periodic state
 z₀ = (I − Φ_T)⁻¹ p, unique and attracting iff every Floquet multiplier (eigenvalue of Φ_T) lies inside the unit
-circle (Floquet 1883; Nayfeh & Mook, Nonlinear Oscillations, 1979, §5.2). scipy's expm uses the scaling-and-squaring
-algorithm of Al-Mohy & Higham (2009). Knows nothing of gears: matrices only. With a rigid-body mode (K r = 0) a
-multiplier is 1 and I − Φ_T is singular: remove such modes first (``rigid_body.rigid_body_reduction``).
+circle (Floquet 1883; Nayfeh & Mook, Nonlinear Oscillations, 1979, §5.2). The exponentials of all pieces are
+taken in one vectorised pass (:mod:`thermogear.dynamics.batched_exponential`) and multiplied pairwise. Knows
+nothing of gears: matrices only. With a rigid-body mode (K r = 0) a multiplier is 1 and I − Φ_T is singular:
+remove such modes first (``rigid_body.rigid_body_reduction``).
 
 ``K_j = K₀ + k_j·P_K``, ``C_j = C₀ + c_j·P_C`` and ``f_j = f₀ + g_j·P_f``: a constant part plus a pattern scaled per piece
 (a gear mesh: P_K = P_C = w wᵀ, P_f = w), which is how the pieces are stored.
@@ -25,7 +26,7 @@ import numpy as np
 from thermogear.dynamics.problem import checked_array, checked_nodes
 from thermogear.errors import ModelLimitError, ProblemError
 
-__all__ = ["PiecewiseLinearSystem", "PeriodicResponse", "monodromy", "periodic_response"]
+__all__ = ["PiecewiseLinearSystem", "PeriodicResponse", "monodromy", "ordered_product", "periodic_response"]
 
 
 @dataclass(frozen=True, eq=False)
@@ -81,6 +82,19 @@ class PiecewiseLinearSystem:
                 self.damping + self.damping_factor[index] * self.damping_pattern,
                 self.force + self.force_factor[index] * self.force_pattern)
 
+    def augmented_stack(self, mass_inverse: np.ndarray) -> np.ndarray:
+        """The (N, 2n+1, 2n+1) stack of [[A_j, b_j], [0, 0]], one per piece, built in one vectorised pass."""
+        n = self.size
+        stiffness, damping, pattern_k, pattern_c = (mass_inverse @ matrix for matrix in (
+            self.stiffness, self.damping, self.stiffness_pattern, self.damping_pattern))
+        force, pattern_f = mass_inverse @ self.force, mass_inverse @ self.force_pattern
+        stack = np.zeros((self.nodes.size - 1, 2 * n + 1, 2 * n + 1))
+        stack[:, :n, n:2 * n] = np.eye(n)
+        stack[:, n:2 * n, :n] = -stiffness - self.stiffness_factor[:, None, None] * pattern_k
+        stack[:, n:2 * n, n:2 * n] = -damping - self.damping_factor[:, None, None] * pattern_c
+        stack[:, n:2 * n, 2 * n] = force + self.force_factor[:, None] * pattern_f
+        return stack
+
     def augmented(self, index: int, mass_inverse: np.ndarray) -> np.ndarray:
         """The (2n+1)² matrix [[A_j, b_j], [0, 0]] of one piece."""
         n = self.size
@@ -122,24 +136,33 @@ def _mass_inverse(system: PiecewiseLinearSystem) -> np.ndarray:
     return cho_solve(factor, np.eye(system.size))
 
 
-def _piece_steps(system: PiecewiseLinearSystem, samples: int) -> list[np.ndarray]:
-    """expm of each augmented piece over one sub-step h_j/samples."""
-    from scipy.linalg import expm
+def _piece_steps(system: PiecewiseLinearSystem, samples: int) -> np.ndarray:
+    """(N, 2n+1, 2n+1) exponentials of the augmented pieces over one sub-step h_j/samples each, in one vectorised
+    pass (:func:`~thermogear.dynamics.batched_exponential.batched_expm`)."""
+    from thermogear.dynamics.batched_exponential import batched_expm
 
     inverse = _mass_inverse(system)
     widths = np.diff(system.nodes) / samples
-    return [expm(system.augmented(j, inverse) * widths[j]) for j in range(widths.size)]
+    return batched_expm(system.augmented_stack(inverse) * widths[:, None, None])
 
 
-def _power(matrix: np.ndarray, count: int) -> np.ndarray:
-    return matrix if count == 1 else np.linalg.matrix_power(matrix, count)
+def _power(matrices: np.ndarray, count: int) -> np.ndarray:
+    return matrices if count == 1 else np.linalg.matrix_power(matrices, count)
+
+
+def ordered_product(matrices: np.ndarray) -> np.ndarray:
+    """X_{N−1}···X₁X₀ of a (N, m, m) stack, by pairwise products level by level (log₂N vectorised passes)."""
+    stack = np.asarray(matrices)
+    while stack.shape[0] > 1:
+        odd = stack[-1:] if stack.shape[0] % 2 else stack[:0]
+        paired = stack[1:stack.shape[0] - odd.shape[0]:2] @ stack[0:stack.shape[0] - odd.shape[0]:2]
+        stack = np.concatenate([paired, odd]) if odd.shape[0] else paired
+    return stack[0]
 
 
 def monodromy(system: PiecewiseLinearSystem) -> tuple[np.ndarray, np.ndarray]:
     """Monodromy Φ_T (2n, 2n) and the image p (2n,) of z = 0 after one period."""
-    total = np.eye(2 * system.size + 1)
-    for step in _piece_steps(system, 1):
-        total = step @ total
+    total = ordered_product(_piece_steps(system, 1))
     return total[:-1, :-1], total[:-1, -1]
 
 
@@ -153,10 +176,7 @@ def periodic_response(system: PiecewiseLinearSystem, samples_per_piece: int = 16
         raise ProblemError("samples_per_piece", samples_per_piece, "integer >= 1", "sub-steps per piece")
     samples = int(samples_per_piece)
     steps = _piece_steps(system, samples)
-    full = [_power(step, samples) for step in steps]
-    total = np.eye(2 * system.size + 1)
-    for step in full:
-        total = step @ total
+    total = ordered_product(_power(steps, samples))
     transition, image = total[:-1, :-1], total[:-1, -1]
     multipliers = np.linalg.eigvals(transition)
     multipliers = multipliers[np.argsort(-np.abs(multipliers))]

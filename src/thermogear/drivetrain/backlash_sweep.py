@@ -1,0 +1,40 @@
+"""The drivetrain's backlash orbit followed up and down in speed: one mesh state per speed (each with its backlash),
+the n-DOF backlash system of each (:func:`~thermogear.drivetrain.response.drivetrain_backlash_system`) and the
+continuation of :mod:`thermogear.dynamics.backlash_branch_ndof`, which shows the jumps of the softening mesh
+resonance (the drivetrain counterpart of :mod:`thermogear.dynamics.backlash_continuation` for the 1-DOF pair)."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+import numpy as np
+
+from thermogear.drivetrain.assembly import AssembledDrivetrain
+from thermogear.drivetrain.response import drivetrain_backlash_system
+from thermogear.dynamics.backlash_branch_ndof import BacklashBranchNDOF, follow_backlash_branch
+from thermogear.errors import CaseError
+from thermogear.mesh.state import MeshState
+
+__all__ = ["drivetrain_backlash_branch"]
+
+
+def drivetrain_backlash_branch(assembled: AssembledDrivetrain, states: Sequence[MeshState], direction: str = "up",
+                               substeps: int = 8, run_in_periods: int = 200,
+                               tolerance: float = 1e-10) -> BacklashBranchNDOF:
+    """Follow the drivetrain's backlash orbit over mesh states ordered by pinion speed, ``direction`` "up" or
+    "down"; the branch's parameter is the speed [rpm]; ``tolerance`` the shooting's relative residual (very stiff
+    supports leave a rounding floor near 1e-9: ask for 1e-8 there). The state at τ = 0 carries over between speeds
+    in the reduced coordinates, so every state must give the same rigid-mode reduction (CaseError otherwise)."""
+    speeds = np.array([state.speed_rpm for state in states], dtype=float)
+    if speeds.size == 0 or np.any(np.diff(speeds) <= 0.0):
+        raise CaseError("states", list(speeds), "mesh states at increasing pinion speeds", "a sweep in speed")
+    built = [drivetrain_backlash_system(assembled, state) for state in states]
+    first = built[0][1].basis
+    for (_, reduction), speed in zip(built, speeds):
+        if reduction.basis.shape != first.shape or not np.allclose(reduction.basis, first, rtol=0, atol=1e-12):
+            raise CaseError("states", f"the state at {speed:g} rpm",
+                            "states whose rigid-mode reduction is the first one's",
+                            "the orbit's state at τ = 0 is carried between speeds in the reduced coordinates")
+    systems = [system for system, _ in built]
+    return follow_backlash_branch(systems, direction, speeds, substeps=substeps, run_in_periods=run_in_periods,
+                                  tolerance=tolerance)
