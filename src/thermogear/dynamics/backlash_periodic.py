@@ -92,7 +92,15 @@ class BacklashOrbit:
         return self.history.switch_times
 
 
+def _require_scalar_mesh(problem: BacklashMeshProblem) -> None:
+    if not problem.structure.is_scalar_mesh:
+        raise ProblemError("mass", f"a {problem.degrees_of_freedom}-DOF structure", "the 1-DOF mesh (scalar mass)",
+                           "this shooting solver integrates the closed-form 2×2 flow of the 1-DOF mesh; a mesh in a "
+                           "structure of many degrees of freedom needs the matrix flow")
+
+
 def _kernel_arrays(problem: BacklashMeshProblem) -> tuple:
+    _require_scalar_mesh(problem)
     return (problem.mass, np.ascontiguousarray(problem.nodes), problem.pair_stiffness, problem.pair_deviation,
             problem.back_pair_stiffness, problem.back_pair_deviation, problem.backlash, problem.damping,
             problem.force_per_interval, 0 if problem.damping_mode == "always" else 1)
@@ -154,8 +162,9 @@ def backlash_transient(problem: BacklashMeshProblem, periods: int, samples_per_i
 
 def linear_initial_state(problem: BacklashMeshProblem) -> tuple[float, float]:
     """Periodic state at τ = 0 of the linear model with every pair in contact; static equilibrium if unavailable."""
-    from thermogear.dynamics.periodic import periodic_steady_state_batch
+    from thermogear.dynamics.periodic_batch import periodic_steady_state_batch
 
+    _require_scalar_mesh(problem)
     linear = problem.linear_problem()
     if linear is not None:
         x0, v0, moduli = periodic_steady_state_batch(linear.mass, linear.nodes, linear.stiffness[None, :],
