@@ -14,6 +14,10 @@ import pytest
 from thermogear.dynamics import MeshDynamicsProblem, floquet_multipliers, periodic_steady_state
 from thermogear.dynamics.backlash_periodic import periodic_response as backlash_periodic_response
 from thermogear.dynamics.backlash_problem import BacklashMeshProblem
+from thermogear.dynamics.backlash_reference import reference_backlash_solve_ivp
+from thermogear.dynamics.periodic import evaluate_orbit, periodic_initial_state
+from thermogear.dynamics.reference import reference_solve_ivp
+from thermogear.dynamics.transient import transient_from_rest
 from thermogear.dynamics.periodic_ndof import periodic_response
 from thermogear.dynamics.periodic_structure import piecewise_system
 from thermogear.errors import ProblemError
@@ -106,10 +110,15 @@ def test_the_1dof_only_quantities_and_solvers_refuse_a_structure():
     structure = mesh(mass=np.eye(2), mesh_vector=[1.0, -1.0], structural_stiffness=np.eye(2) * STIFFNESS)
     with pytest.raises(ProblemError, match="mass"):
         _ = structure.static_transmission_error
+    for solve in (periodic_initial_state, lambda p: evaluate_orbit(p, (0.0, 0.0), np.zeros(1)),
+                  lambda p: transient_from_rest(p, 1), lambda p: reference_solve_ivp(p, 1)):
+        with pytest.raises(ProblemError, match="1-DOF mesh"):
+            solve(structure)
     backlash = BacklashMeshProblem.from_linear(structure, backlash=1e-4)
     assert backlash.degrees_of_freedom == 2 and np.array_equal(backlash.structure.mesh_vector, [1.0, -1.0])
-    with pytest.raises(ProblemError, match="mass"):
-        backlash_periodic_response(backlash)
+    for solve in (backlash_periodic_response, lambda p: reference_backlash_solve_ivp(p, 1)):
+        with pytest.raises(ProblemError, match="1-DOF mesh"):
+            solve(backlash)
 
 
 def test_the_backlash_problem_carries_its_structure_to_the_linear_problem():
@@ -120,3 +129,36 @@ def test_the_backlash_problem_carries_its_structure_to_the_linear_problem():
     assert np.array_equal(linear.mass, structure.mass)
     scalar = BacklashMeshProblem.from_linear(mesh(), backlash=1e-4)
     assert scalar.structure.is_scalar_mesh and scalar.mass == MASS
+
+
+def test_the_drivetrain_system_is_a_mesh_problem_in_a_structure():
+    """The drivetrain hands periodic_ndof M, K₀, C₀ (with the skew gyroscopic term), f₀, w wᵀ and w with the mesh's
+    k_j, c_j, g_j: the same problem type holds it, gives back the very same pieces, and its orbit is wᵀq."""
+    from drivetrain_builders import geared_pair
+
+    from thermogear.drivetrain.response import drivetrain_periodic_system
+    from thermogear.mesh.state import MeshState
+    from thermogear.mesh_cycle import MeshGrid
+
+    period = 60.0 / (20 * 1500.0)
+    nodes = np.array([0.0, 0.6 * period, period])
+    in_contact = np.array([[True, True], [True, False]])
+    pair_stiffness = np.array([[1.0e7, 2.0e7], [1.0e7, 0.0]])
+    pair_damping = np.array([[500.0, 1000.0], [500.0, 0.0]])
+    grid = MeshGrid(nodes=nodes, midpoints=0.5 * (nodes[1:] + nodes[:-1]), roll=np.zeros((2, 2)),
+                    in_contact=in_contact, contact_count=in_contact.sum(axis=0))
+    state = MeshState(model="test", speed_rpm=1500.0, normal_load=3000.0, mass=1.0, grid=grid,
+                      pair_stiffness=pair_stiffness, pair_damping=pair_damping, mesh_damping=pair_damping.sum(axis=0),
+                      pair_deviation=np.zeros((2, 2)), pair_engaged=in_contact, static_transmission_error=None,
+                      backlash=None, face_width=0.02, mesh_frequency_hz=1.0 / period)
+    system, _ = drivetrain_periodic_system(geared_pair(bearing_damping=1e3, material_damping=1e-5).assemble(), state)
+    problem = MeshDynamicsProblem(mass=system.mass, mesh_vector=system.force_pattern,
+                                  structural_stiffness=system.stiffness, structural_damping=system.damping,
+                                  structural_force=system.force, nodes=system.nodes, stiffness=system.stiffness_factor,
+                                  damping=system.damping_factor, force=system.force_factor,
+                                  contact_count=grid.contact_count)
+    assert problem.degrees_of_freedom == system.size > 1
+    again = piecewise_system(problem)
+    for name in ("mass", "stiffness", "damping", "force", "nodes", "stiffness_pattern", "stiffness_factor",
+                 "damping_pattern", "damping_factor", "force_pattern", "force_factor"):
+        assert np.array_equal(getattr(again, name), getattr(system, name)), name

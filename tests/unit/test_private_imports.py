@@ -2,7 +2,8 @@
 
 Private helpers are free to change; a module of another package that imports one (as the sweep's batch kernel
 once took ``_transition`` from dynamics) breaks silently when they do. Inside one package private imports between
-modules are allowed (they change together).
+modules are allowed (they change together), except in ``thermogear.dynamics``, whose solvers are used by every
+layer above: there a helper another module needs is public (named and documented).
 """
 
 from __future__ import annotations
@@ -41,6 +42,16 @@ def _private_cross_package_imports() -> list[str]:
 
 def test_no_private_name_is_imported_across_packages():
     assert _private_cross_package_imports() == []
+
+
+def test_no_dynamics_module_imports_a_private_name_of_another_module():
+    found = []
+    for path in sorted((SOURCE / "dynamics").glob("*.py")):
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            if isinstance(node, ast.ImportFrom) and (node.module or "").startswith("thermogear"):
+                found += [f"{path.stem}: {node.module}.{alias.name}" for alias in node.names
+                          if alias.name.startswith("_") and not alias.name.startswith("__")]
+    assert found == []
 
 
 def test_the_check_finds_a_private_cross_package_import(tmp_path, monkeypatch):

@@ -95,10 +95,8 @@ def _evaluate_kernel(mass: float, nodes: np.ndarray, stiffness: np.ndarray, damp
 
 
 def _problem_arrays(problem: MeshDynamicsProblem) -> tuple[float, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-    if not problem.structure.is_scalar_mesh:
-        raise ProblemError("mass", f"a {problem.degrees_of_freedom}-DOF structure", "the 1-DOF mesh (scalar mass)",
-                           "the closed-form 2×2 kernels solve the 1-DOF mesh; periodic_steady_state and "
-                           "floquet_multipliers take a structure through its matrices")
+    problem.structure.require_scalar_mesh("the closed-form 2×2 kernel (periodic_steady_state and "
+                                          "floquet_multipliers take a structure)")
     return (problem.mass, np.ascontiguousarray(problem.nodes), np.ascontiguousarray(problem.stiffness),
             np.ascontiguousarray(problem.damping), np.ascontiguousarray(problem.force_per_interval))
 

@@ -16,7 +16,7 @@ SIAM Review 45 (2003), method 17):
 For |u| ≤ 1/4 and σh ≤ 1/8 (every interval of a usual mesh period: h is 1/(samples·intervals) of it) the series
 to u⁷ and e^{−x} to x¹¹ are exact to rounding (first omitted terms < 1e-18 relative), so the kernel needs no
 transcendental function and the loop over points is vectorised; outside that range it takes the closed form
-(``transition_2x2.transition_2x2``). The transition over a whole interval is Φ(h)^samples (the same orbit: the state at the
+(``transition_2x2``). The transition over a whole interval is Φ(h)^samples (the same orbit: the state at the
 end of the interval is the one after the last sub-step), so one transition per interval serves the monodromy and
 the walk.
 """
@@ -339,7 +339,7 @@ def periodic_metrics_batch(mass: np.ndarray, nodes: np.ndarray, stiffness: np.nd
     """Floquet multiplier moduli (m, 2) (larger first) and orbit metrics (m, METRIC_COUNT) of m points that share
     the nodes (n+1,) [s] and the stiffness (n,) [N/m]: mass (m,) [kg], damping damping[i]·factor[j] [N·s/m],
     force (m,) [N], pair stiffness (slots, n) [N/m]. Unstable points (a modulus >= 1, or c = 0 on every interval:
-    det M = 1, Liouville's formula) get NaN metrics, as ``periodic_batch.periodic_steady_state_batch`` gives them NaN states."""
+    det M = 1, Liouville's formula) get NaN metrics, as ``periodic_steady_state_batch`` gives them NaN states."""
     total = mass.size
     slots, n = pair_stiffness.shape
     pair_high = np.zeros(n)

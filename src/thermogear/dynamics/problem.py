@@ -45,14 +45,6 @@ def checked_array(name: str, value: object, shape: tuple[int, ...],
 
 
 
-def checked_mass(value: object) -> float:
-    """The equivalent mass me [kg] (Luo & Li Eq. 5): finite and positive, else ProblemError."""
-    mass = float(value)
-    if not np.isfinite(mass) or mass <= 0.0:
-        raise ProblemError("mass", value, "> 0 kg, finite", "the equivalent mass me of Eq. (5) must be positive")
-    return mass
-
-
 def checked_nodes(value: object) -> np.ndarray:
     """Read-only interval boundaries of one mesh period [s]: 1-D, finite, from 0, strictly increasing."""
     nodes = np.array(value, dtype=float, copy=True)

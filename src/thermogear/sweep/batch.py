@@ -18,8 +18,8 @@ pair stiffness — is asked once per group and load, at the group's reference sp
 * where the stiffness depends on the load (the paper's secant k_T), one state per distinct load;
 * me·ẍ + c·ẋ + k·x = w on the nodes t_s = t_ref/r (r = n1/n1,ref) is, in the reference time t_ref = r·t,
   (me·r²)·x'' + (c·r)·x' + k·x = w on the reference nodes: the periodic solver runs all speeds on one node grid;
-* the metrics come from a compiled kernel (:mod:`thermogear.dynamics.periodic_batch_metrics`) that samples the exact orbit as
-  :func:`~thermogear.dynamics.response.compute_metrics` does.
+* the metrics come from a compiled kernel (:mod:`thermogear.dynamics.periodic_batch_metrics`) that samples the
+  exact orbit as :func:`~thermogear.dynamics.response.compute_metrics` does.
 
 The regression test runs both paths over grids of every sweepable key and both models and asks for a relative
 difference of at most 1e-9 on every stored variable.
