@@ -227,7 +227,7 @@ class DynamicResponse:
             "label": self.label,
             "include_damping_force": int(self.include_damping_force),
             "valid": int(self.valid),
-            "mass_kg": problem.mass,
+            "mass_kg": problem.mesh_mass,
             "face_width_m": problem.face_width,
             "metrics_json": json.dumps(self.metrics_json()),
         }
