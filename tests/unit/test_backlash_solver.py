@@ -19,7 +19,7 @@ from thermogear.dynamics.backlash_periodic import (backlash_flow, backlash_trans
                                                    shoot)
 from thermogear.dynamics.backlash_problem import BacklashMeshProblem
 from thermogear.dynamics.backlash_reference import reference_backlash_solve_ivp
-from thermogear.dynamics.periodic import periodic_steady_state_batch
+from thermogear.dynamics.periodic_batch import periodic_steady_state_batch
 from thermogear.dynamics.response import compute_metrics
 from thermogear.dynamics.spectra import harmonic_spectrum
 from thermogear.errors import ModelLimitError

@@ -8,8 +8,8 @@ import numpy as np
 import pytest
 
 from thermogear.case import load_case
-from thermogear.dynamics.periodic import _transition
-from thermogear.sweep.batch_kernel import _SERIES_DECAY, _SERIES_U, _step_transitions
+from thermogear.dynamics.periodic_batch_metrics import _SERIES_DECAY, _SERIES_U, _step_transitions
+from thermogear.dynamics.transition_2x2 import transition_2x2
 from thermogear.sweep.study import Study
 
 from sweep_paths import assert_fast_path_equals_simulation
@@ -26,7 +26,7 @@ def test_series_transition_equals_the_closed_form_to_rounding():
                 continue
             out = [np.empty(1) for _ in range(4)]
             _step_transitions(stiffness, 2.0 * sigma, mass, np.ones(1), 1.0, *out)
-            rows.append((np.array([o[0] for o in out]), np.array(_transition(stiffness, 2.0 * sigma, 1.0, 1.0))))
+            rows.append((np.array([o[0] for o in out]), np.array(transition_2x2(stiffness, 2.0 * sigma, 1.0, 1.0))))
     assert len(rows) > 150  # k > 0 leaves out part of the over-damped side
     for series, closed in rows:
         # both are within a few ulp of expm(A h) (entries of order 1: |u|, σh <= 1/4): 1e-14 absolute is ~50 ulp
@@ -38,7 +38,7 @@ def test_outside_the_series_range_the_closed_form_is_taken():
     factor = np.array([1.0, 1.0, 1.0])
     out = [np.empty(3) for _ in range(4)]
     _step_transitions(4.0, 0.1, mass, factor, 1.0, *out)  # u = 0.0025 − 4: far outside, cos/sin of 2 rad
-    expected = _transition(4.0, 0.1, 1.0, 1.0)
+    expected = transition_2x2(4.0, 0.1, 1.0, 1.0)
     for entry, value in zip(out, expected):
         assert np.all(entry == value)  # the same function, bit for bit
 

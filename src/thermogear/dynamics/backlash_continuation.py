@@ -17,7 +17,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from thermogear.dynamics.backlash_metrics import orbit_metrics
-from thermogear.dynamics.backlash_periodic import BacklashOrbit, _orbit, _stable, periodic_response, shoot
+from thermogear.dynamics.backlash_periodic import (BacklashOrbit, orbit_from_shot, periodic_response, shoot,
+                                                   shot_is_stable)
 from thermogear.dynamics.backlash_problem import BacklashMeshProblem
 from thermogear.errors import ProblemError, ModelLimitError
 
@@ -52,8 +53,8 @@ class Branch:
 def _solve_point(problem: BacklashMeshProblem, state: tuple[float, float] | None, options: dict) -> BacklashOrbit:
     if state is not None:
         result = shoot(problem, state, 1, options["tolerance"], options["max_iterations"])
-        if _stable(result, problem):
-            return _orbit(problem, result, 1, options["samples_per_interval"], result["iterations"])
+        if shot_is_stable(result, problem):
+            return orbit_from_shot(problem, result, 1, options["samples_per_interval"], result["iterations"])
     return periodic_response(problem, initial_state=state, **options)
 
 

@@ -6,7 +6,7 @@ equation of :mod:`thermogear.dynamics.backlash_problem` is linear with constant 
     me·ẍ + c·ẋ + K·x = G,   K = Σ_active k,   G = w + Σ_active-driving k_s·e_s − Σ_active-back k'_s·(j + e'_s),
 
 so y = [x, ẋ] follows in closed form: y(t) = Φ(t)·(y0 − [G/K, 0]) + [G/K, 0] for K > 0 with the 2×2 transition
-matrix Φ = expm(A t) of :func:`thermogear.dynamics.periodic._transition` (under-, critically and over-damped);
+matrix Φ = expm(A t) of :func:`thermogear.dynamics.transition_2x2.transition_2x2` (under-, critically and over-damped);
 for K = 0 (free flight through the backlash) Φ = [[1, (1 − e^{−βt})/β], [0, e^{−βt}]], β = c/me, and the constant
 force adds [a·(βt + expm1(−βt))/β², a·(1 − e^{−βt})/β], a = G/me (Taylor series for small βt, a·t²/2 at c = 0).
 
@@ -34,7 +34,7 @@ import math
 import numba
 import numpy as np
 
-from thermogear.dynamics.periodic import _transition
+from thermogear.dynamics.transition_2x2 import transition_2x2
 
 __all__ = ["integrate_periods"]
 
@@ -45,7 +45,7 @@ _MAX_SWITCHES_PER_INTERVAL = 10_000  # beyond this the motion is chattering or Z
 def _advance(stiffness: float, damping: float, load: float, mass: float, x0: float, v0: float, t: float
              ) -> tuple[float, float, float, float, float, float]:
     """State at local time t from (x0, v0) under me·ẍ + c·ẋ + K·x = G, and Φ(t) (4 entries)."""
-    p00, p01, p10, p11 = _transition(stiffness, damping, mass, t)
+    p00, p01, p10, p11 = transition_2x2(stiffness, damping, mass, t)
     if stiffness > 0.0:
         equilibrium = load / stiffness
         dx = x0 - equilibrium

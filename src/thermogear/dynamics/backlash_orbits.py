@@ -36,8 +36,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from thermogear.dynamics.backlash_periodic import (BacklashOrbit, _least_period, _orbit, _scaled, _stable,
-                                                   backlash_flow, shoot)
+from thermogear.dynamics.backlash_periodic import (BacklashOrbit, backlash_flow, least_period, orbit_from_shot,
+                                                   scaled_distance, shoot, shot_is_stable)
 from thermogear.dynamics.backlash_problem import BacklashMeshProblem
 from thermogear.errors import ModelLimitError, ProblemError
 
@@ -116,22 +116,22 @@ def _settle(problem: BacklashMeshProblem, start: np.ndarray, max_period_count: i
     state = (float(start[0]), float(start[1]))
     for _ in range(2):
         end, _, _ = backlash_flow(problem, state, run_in_periods)
-        if not np.all(np.isfinite(end)) or _scaled(problem, end) > _UNBOUNDED:
+        if not np.all(np.isfinite(end)) or scaled_distance(problem, end) > _UNBOUNDED:
             raise ModelLimitError("the backlash mesh motion grows without bound from this start")
         state = (float(end[0]), float(end[1]))
         # shoot first on the period count the run-in's end repeats best after: Newton on N = 1 from a point of a
         # period-3 orbit can converge to another orbit (its own basin is not the flow's)
-        mismatch = [_scaled(problem, backlash_flow(problem, state, count)[0] - end)
+        mismatch = [scaled_distance(problem, backlash_flow(problem, state, count)[0] - end)
                     for count in range(1, max_period_count + 1)]
         for count in np.argsort(mismatch, kind="stable") + 1:
             count = int(count)
             result = shoot(problem, state, count, tolerance, max_iterations)
-            if not _stable(result, problem):
+            if not shot_is_stable(result, problem):
                 continue
-            least = _least_period(problem, result["state"], count, tolerance)
+            least = least_period(problem, result["state"], count, tolerance)
             if least != count:
                 result = shoot(problem, result["state"], least, tolerance, max_iterations)
-                if not _stable(result, problem):
+                if not shot_is_stable(result, problem):
                     continue
             return result, least
     return None
@@ -194,7 +194,8 @@ def stable_orbits(problem: BacklashMeshProblem, starts: int = 64, max_period_cou
             continue
         result, least = settled
         match = next((number for number, (_, period, phases) in enumerate(found) if period == least
-                      and min(_scaled(problem, result["state"] - phase) for phase in phases) <= match_tolerance),
+                      and min(scaled_distance(problem, result["state"] - phase)
+                              for phase in phases) <= match_tolerance),
                      None)
         if match is None:
             found.append((result, least, _phases(problem, result["state"], least)))
@@ -204,7 +205,7 @@ def stable_orbits(problem: BacklashMeshProblem, starts: int = 64, max_period_cou
     order = sorted(range(len(found)), key=lambda number: (-counts[number], number))
     renumber = {old: new for new, old in enumerate(order)}
     outcome = np.array([renumber.get(int(value), int(value)) for value in outcome], dtype=np.int64)
-    orbits = tuple(StableOrbit(orbit=_orbit(problem, found[number][0], found[number][1], samples_per_interval,
+    orbits = tuple(StableOrbit(orbit=orbit_from_shot(problem, found[number][0], found[number][1], samples_per_interval,
                                             found[number][0]["iterations"]),
                                start_count=int(counts[number]), basin_share=float(counts[number]) / grid.shape[0])
                    for number in order)

@@ -24,8 +24,9 @@ from thermogear.dynamics.backlash_kernel import integrate_periods
 from thermogear.dynamics.backlash_problem import BacklashMeshProblem
 from thermogear.errors import ProblemError, ModelLimitError
 
-__all__ = ["BacklashHistory", "BacklashOrbit", "backlash_flow", "backlash_transient", "linear_initial_state",
-           "periodic_response", "shoot"]
+__all__ = ["BacklashHistory", "BacklashOrbit", "backlash_flow", "backlash_transient", "least_period",
+           "linear_initial_state", "orbit_from_shot", "periodic_response", "scaled_distance", "shoot",
+           "shot_is_stable"]
 
 SCAN_FRACTION = 1.0 / 16.0  # scan step / natural period of the active set (backlash_kernel docstring)
 _UNBOUNDED = 1e6  # scaled |state| beyond which a transient is taken as growing without bound
@@ -93,6 +94,7 @@ class BacklashOrbit:
 
 
 def _kernel_arrays(problem: BacklashMeshProblem) -> tuple:
+    problem.structure.require_scalar_mesh("the backlash shooting solver")
     return (problem.mass, np.ascontiguousarray(problem.nodes), problem.pair_stiffness, problem.pair_deviation,
             problem.back_pair_stiffness, problem.back_pair_deviation, problem.backlash, problem.damping,
             problem.force_per_interval, 0 if problem.damping_mode == "always" else 1)
@@ -154,8 +156,9 @@ def backlash_transient(problem: BacklashMeshProblem, periods: int, samples_per_i
 
 def linear_initial_state(problem: BacklashMeshProblem) -> tuple[float, float]:
     """Periodic state at τ = 0 of the linear model with every pair in contact; static equilibrium if unavailable."""
-    from thermogear.dynamics.periodic import periodic_steady_state_batch
+    from thermogear.dynamics.periodic_batch import periodic_steady_state_batch
 
+    problem.structure.require_scalar_mesh("the backlash shooting solver")
     linear = problem.linear_problem()
     if linear is not None:
         x0, v0, moduli = periodic_steady_state_batch(linear.mass, linear.nodes, linear.stiffness[None, :],
@@ -165,7 +168,8 @@ def linear_initial_state(problem: BacklashMeshProblem) -> tuple[float, float]:
     return problem.displacement_scale, 0.0
 
 
-def _scaled(problem: BacklashMeshProblem, difference: np.ndarray) -> float:
+def scaled_distance(problem: BacklashMeshProblem, difference: np.ndarray) -> float:
+    """Length of a state difference (Δx, Δv) in units of the problem's displacement and velocity scales [-]."""
     return float(np.hypot(difference[0] / problem.displacement_scale, difference[1] / problem.velocity_scale))
 
 
@@ -178,7 +182,7 @@ def shoot(problem: BacklashMeshProblem, initial_state: tuple[float, float], peri
     """
     state = np.array(initial_state, dtype=float)
     end, matrix, _ = backlash_flow(problem, state, period_count)
-    residual = _scaled(problem, end - state)
+    residual = scaled_distance(problem, end - state)
     iterations = 0
     while residual > tolerance and iterations < max_iterations:
         iterations += 1
@@ -190,7 +194,7 @@ def shoot(problem: BacklashMeshProblem, initial_state: tuple[float, float], peri
         for _ in range(9):
             trial = state + scale * step
             trial_end, trial_matrix, _ = backlash_flow(problem, trial, period_count)
-            trial_residual = _scaled(problem, trial_end - trial)
+            trial_residual = scaled_distance(problem, trial_end - trial)
             if trial_residual < residual:
                 break
             scale *= 0.5
@@ -201,8 +205,9 @@ def shoot(problem: BacklashMeshProblem, initial_state: tuple[float, float], peri
             "iterations": iterations}
 
 
-def _orbit(problem: BacklashMeshProblem, result: dict, period_count: int, samples_per_interval: int,
-           iterations: int) -> BacklashOrbit:
+def orbit_from_shot(problem: BacklashMeshProblem, result: dict, period_count: int, samples_per_interval: int,
+                    iterations: int) -> BacklashOrbit:
+    """The :class:`BacklashOrbit` of a converged shooting result (its state, monodromy and iteration count)."""
     multipliers = np.linalg.eigvals(result["monodromy"])
     multipliers = multipliers[np.argsort(-np.abs(multipliers))]
     state = (float(result["state"][0]), float(result["state"][1]))
@@ -212,19 +217,19 @@ def _orbit(problem: BacklashMeshProblem, result: dict, period_count: int, sample
                          multipliers=multipliers, initial_state=state, history=history, iterations=iterations)
 
 
-def _stable(result: dict, problem: BacklashMeshProblem) -> bool:
+def shot_is_stable(result: dict, problem: BacklashMeshProblem) -> bool:
     """Converged with every multiplier inside the unit circle. Undamped (c = 0 everywhere): det M = 1 by Liouville,
     so |μ|max >= 1 in exact arithmetic whatever rounding gives; decided on c, as the linear solver does."""
     return bool(result["converged"] and np.all(np.isfinite(result["monodromy"])) and np.any(problem.damping > 0.0)
                 and np.max(np.abs(np.linalg.eigvals(result["monodromy"]))) < 1.0)
 
 
-def _least_period(problem: BacklashMeshProblem, state: np.ndarray, period_count: int, tolerance: float) -> int:
+def least_period(problem: BacklashMeshProblem, state: np.ndarray, period_count: int, tolerance: float) -> int:
     """Smallest divisor d of N with φ_{dT}(y0) = y0 to tolerance (an N-orbit that is really a d-orbit)."""
     for divisor in range(1, period_count):
         if period_count % divisor == 0:
             end, _, _ = backlash_flow(problem, state, divisor)
-            if _scaled(problem, end - state) <= 100.0 * tolerance:
+            if scaled_distance(problem, end - state) <= 100.0 * tolerance:
                 return divisor
     return period_count
 
@@ -259,13 +264,13 @@ def periodic_response(problem: BacklashMeshProblem, initial_state: tuple[float, 
     total = 0
     first = shoot(problem, start, 1, tolerance, max_iterations)
     total += first["iterations"]
-    if _stable(first, problem):
-        return _orbit(problem, first, 1, samples_per_interval, total)
+    if shot_is_stable(first, problem):
+        return orbit_from_shot(problem, first, 1, samples_per_interval, total)
     state = start
     for run_in in (run_in_periods, classify_periods):
         end, _, _ = backlash_flow(problem, state, run_in)
         state = (float(end[0]), float(end[1]))
-        if _scaled(problem, end) > _UNBOUNDED:
+        if scaled_distance(problem, end) > _UNBOUNDED:
             raise ModelLimitError(
                 f"the backlash mesh response grows without bound (|x| reached {abs(end[0]):.3g} m, "
                 f"{abs(end[0]) / problem.displacement_scale:.3g} static deflections, after {run_in} mesh periods): "
@@ -274,17 +279,17 @@ def periodic_response(problem: BacklashMeshProblem, initial_state: tuple[float, 
         for count in range(1, int(max_period_count) + 1):
             result = shoot(problem, state, count, tolerance, max_iterations)
             total += result["iterations"]
-            if _stable(result, problem):
-                least = _least_period(problem, result["state"], count, tolerance)
+            if shot_is_stable(result, problem):
+                least = least_period(problem, result["state"], count, tolerance)
                 if least != count:
                     result = shoot(problem, result["state"], least, tolerance, max_iterations)
-                    if not _stable(result, problem):
+                    if not shot_is_stable(result, problem):
                         continue
-                return _orbit(problem, result, least, samples_per_interval, total)
+                return orbit_from_shot(problem, result, least, samples_per_interval, total)
     # non-periodic: the attractor is neither a stable period-N orbit (N <= max) nor reachable by Newton
     record_periods = int(max_period_count)
     history = _record(problem, state, record_periods, samples_per_interval)
-    mismatch = min(_scaled(problem, backlash_flow(problem, state, count)[0] - np.array(state))
+    mismatch = min(scaled_distance(problem, backlash_flow(problem, state, count)[0] - np.array(state))
                    for count in range(1, int(max_period_count) + 1))
     return BacklashOrbit(problem=problem, response="non-periodic", period_count=record_periods, converged=False,
                          residual=float(mismatch), multipliers=np.full(2, np.nan + 0j), initial_state=state,

@@ -30,12 +30,14 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from thermogear.dynamics.mesh_period import MeshPeriod
-from thermogear.dynamics.problem import MeshDynamicsProblem, checked_array, checked_mass, checked_nodes
+from thermogear.dynamics.problem import MeshDynamicsProblem, checked_array, checked_nodes
+from thermogear.dynamics.structure import MeshStructure, checked_structure
 from thermogear.errors import ProblemError
 
 __all__ = ["DAMPING_MODES", "BacklashMeshProblem"]
 
 DAMPING_MODES = ("always", "in_contact")
+_STRUCTURE_FIELDS = ("mesh_vector", "structural_stiffness", "structural_damping", "structural_force")
 
 
 @dataclass(frozen=True)
@@ -45,7 +47,8 @@ class BacklashMeshProblem(MeshPeriod):
     Parameters
     ----------
     mass:
-        Equivalent mass me [kg].
+        Equivalent mass me [kg]; or the (n, n) mass matrix M of a structure that holds the mesh (then x is the mesh
+        deflection wᵀq, see :mod:`~.structure`; the 1-DOF solvers here refuse it).
     nodes:
         (n+1,) interval boundaries [s], ``nodes[0] = 0``, ``nodes[-1] = T`` (mesh period), strictly increasing.
     pair_stiffness:
@@ -64,6 +67,8 @@ class BacklashMeshProblem(MeshPeriod):
         ``"always"`` or ``"in_contact"`` (module docstring).
     face_width:
         Face width b [m], only for per-width views of loads.
+    mesh_vector, structural_stiffness, structural_damping, structural_force:
+        With a mass matrix: w, K₀, C₀, f₀ of :class:`~.structure.MeshStructure`, as in :class:`MeshDynamicsProblem`.
     """
 
     mass: float
@@ -77,10 +82,18 @@ class BacklashMeshProblem(MeshPeriod):
     force: float | np.ndarray
     damping_mode: str = "always"
     face_width: float = 1.0
+    mesh_vector: np.ndarray | None = None
+    structural_stiffness: np.ndarray | None = None
+    structural_damping: np.ndarray | None = None
+    structural_force: np.ndarray | None = None
+    structure: MeshStructure = field(init=False, repr=False, compare=False)
     _force_array: np.ndarray = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "mass", checked_mass(self.mass))
+        structure = checked_structure(self.mass, self.mesh_vector, self.structural_stiffness,
+                                      self.structural_damping, self.structural_force)
+        object.__setattr__(self, "structure", structure)
+        object.__setattr__(self, "mass", float(structure.mass[0, 0]) if structure.is_scalar_mesh else structure.mass)
         nodes = checked_nodes(self.nodes)
         object.__setattr__(self, "nodes", nodes)
         n = nodes.size - 1
@@ -163,7 +176,7 @@ class BacklashMeshProblem(MeshPeriod):
     @property
     def velocity_scale(self) -> float:
         """displacement_scale times the largest natural angular frequency [m/s]."""
-        return self.displacement_scale * float(np.sqrt(np.max(self.mesh_stiffness) / self.mass))
+        return self.displacement_scale * float(np.sqrt(np.max(self.mesh_stiffness) / self.mesh_mass))
 
     def linear_problem(self) -> MeshDynamicsProblem | None:
         """The linear model with every present driving pair in contact (deviations folded into the load).
@@ -180,13 +193,17 @@ class BacklashMeshProblem(MeshPeriod):
         contact = np.maximum(np.sum(self.pair_stiffness > 0.0, axis=0), 1)
         return MeshDynamicsProblem(mass=self.mass, nodes=self.nodes, stiffness=stiffness, damping=self.damping,
                                    force=load, contact_count=contact, pair_stiffness=self.pair_stiffness,
-                                   face_width=self.face_width)
+                                   face_width=self.face_width, **self.structure_fields())
+
+    def structure_fields(self) -> dict[str, object]:
+        """The structure's inputs (mesh vector, structural matrices and loads) as keyword arguments."""
+        return {name: getattr(self, name) for name in _STRUCTURE_FIELDS}
 
     def with_changes(self, **changes: object) -> BacklashMeshProblem:
         """A copy with some fields replaced (checked again)."""
         values = {name: getattr(self, name) for name in
                   ("mass", "nodes", "pair_stiffness", "pair_deviation", "back_pair_stiffness", "back_pair_deviation",
-                   "backlash", "damping", "force", "damping_mode", "face_width")}
+                   "backlash", "damping", "force", "damping_mode", "face_width") + _STRUCTURE_FIELDS}
         unknown = set(changes) - set(values)
         if unknown:
             raise ProblemError("with_changes", sorted(unknown), ", ".join(values), "unknown field")
@@ -217,4 +234,5 @@ class BacklashMeshProblem(MeshPeriod):
         return cls(mass=problem.mass, nodes=problem.nodes, pair_stiffness=pair_stiffness, pair_deviation=deviation,
                    back_pair_stiffness=back_k, back_pair_deviation=back_e, backlash=backlash,
                    damping=problem.damping, force=problem.force, damping_mode=damping_mode,
-                   face_width=problem.face_width)
+                   face_width=problem.face_width,
+                   **{name: getattr(problem, name) for name in _STRUCTURE_FIELDS})

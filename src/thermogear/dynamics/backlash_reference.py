@@ -28,6 +28,7 @@ def reference_backlash_solve_ivp(problem: BacklashMeshProblem, periods: int, ini
                                  rtol: float = 1e-10, samples_per_interval: int = 8, method: str = "DOP853"
                                  ) -> dict[str, np.ndarray]:
     """Transient over ``periods`` mesh periods; returns time [s], x [m], v [m/s] (grid + switches) and switch times."""
+    problem.structure.require_scalar_mesh("reference_backlash_solve_ivp")
     if int(periods) != periods or periods < 1:
         raise ProblemError("periods", periods, "integer >= 1", "number of mesh periods to integrate")
     mass, backlash = problem.mass, problem.backlash

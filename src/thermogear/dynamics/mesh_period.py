@@ -10,9 +10,19 @@ __all__ = ["MeshPeriod"]
 class MeshPeriod:
     """Derived quantities of a problem over one mesh period (mixin of the linear and the backlash problem).
 
-    The problem provides ``nodes`` (n+1,) [s], ``mass`` me [kg], ``_force_array`` (n,) [N] and ``mesh_stiffness``
-    (n,) [N/m], the stiffness with every pair present in contact.
+    The problem provides ``nodes`` (n+1,) [s], ``structure`` (its mass matrix and mesh vector), ``_force_array``
+    (n,) [N] and ``mesh_stiffness`` (n,) [N/m], the stiffness with every pair present in contact.
     """
+
+    @property
+    def degrees_of_freedom(self) -> int:
+        """Number of degrees of freedom n of the structure (1 for the 1-DOF mesh)."""
+        return self.structure.degrees_of_freedom
+
+    @property
+    def mesh_mass(self) -> float:
+        """Equivalent mass of the mesh deflection [kg]: me for the 1-DOF mesh, 1/(wᵀM⁻¹w) in a structure."""
+        return self.structure.mesh_mass
 
     @property
     def interval_count(self) -> int:
@@ -50,8 +60,9 @@ class MeshPeriod:
 
     @property
     def natural_frequency(self) -> float:
-        """Natural frequency f_n = sqrt(mean k / me) / 2π [Hz] (from the time-mean stiffness)."""
-        return float(np.sqrt(self.mean_stiffness / self.mass) / (2.0 * np.pi))
+        """Natural frequency f_n = sqrt(mean k / me) / 2π [Hz] (from the time-mean stiffness; me is the mesh mass, so
+        in a structure this is the mesh mode on rigid surroundings, a scale for the frequency ratio)."""
+        return float(np.sqrt(self.mean_stiffness / self.mesh_mass) / (2.0 * np.pi))
 
     @property
     def frequency_ratio(self) -> float:

@@ -16,8 +16,8 @@ def _left_limit_index(interval: np.ndarray) -> np.ndarray:
     return np.flatnonzero(interval[1:] != interval[:-1]) + 1
 
 
-def _load(stiffness: np.ndarray, damping: np.ndarray, offset: np.ndarray | None, interval: np.ndarray,
-          x: np.ndarray, v: np.ndarray, include_damping_force: bool) -> np.ndarray:
+def sampled_load(stiffness: np.ndarray, damping: np.ndarray, offset: np.ndarray | None, interval: np.ndarray,
+                 x: np.ndarray, v: np.ndarray, include_damping_force: bool) -> np.ndarray:
     """k·x (+ c·ẋ) − k·e with coefficients taken on ``interval`` (last axis = samples); ``offset`` k·e or None."""
     load = stiffness[..., interval] * x
     if offset is not None:
@@ -31,9 +31,9 @@ def _load_with_left_limits(stiffness: np.ndarray, damping: np.ndarray, offset: n
                            interval: np.ndarray, x: np.ndarray, v: np.ndarray, include_damping_force: bool
                            ) -> np.ndarray:
     """Loads at the samples followed by the left limits at the interior nodes (for maxima and minima)."""
-    right = _load(stiffness, damping, offset, interval, x, v, include_damping_force)
+    right = sampled_load(stiffness, damping, offset, interval, x, v, include_damping_force)
     nodes = _left_limit_index(interval)
-    left = _load(stiffness, damping, offset, interval[nodes - 1], x[nodes], v[nodes], include_damping_force)
+    left = sampled_load(stiffness, damping, offset, interval[nodes - 1], x[nodes], v[nodes], include_damping_force)
     return np.concatenate([right, left], axis=-1)
 
 
@@ -153,4 +153,4 @@ def _check_finite(value: Any, key: str = "metrics") -> None:
         raise ModelLimitError(f"{key} is not finite ({value}); the model is out of its numerical range")
 
 
-__all__ = ["compute_metrics"]
+__all__ = ["compute_metrics", "sampled_load"]

@@ -14,6 +14,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from thermogear.dynamics.mesh_period import MeshPeriod
+from thermogear.dynamics.structure import MeshStructure, checked_structure
 from thermogear.errors import ProblemError
 
 __all__ = ["MeshDynamicsProblem", "region_name"]
@@ -44,14 +45,6 @@ def checked_array(name: str, value: object, shape: tuple[int, ...],
 
 
 
-def checked_mass(value: object) -> float:
-    """The equivalent mass me [kg] (Luo & Li Eq. 5): finite and positive, else ProblemError."""
-    mass = float(value)
-    if not np.isfinite(mass) or mass <= 0.0:
-        raise ProblemError("mass", value, "> 0 kg, finite", "the equivalent mass me of Eq. (5) must be positive")
-    return mass
-
-
 def checked_nodes(value: object) -> np.ndarray:
     """Read-only interval boundaries of one mesh period [s]: 1-D, finite, from 0, strictly increasing."""
     nodes = np.array(value, dtype=float, copy=True)
@@ -71,12 +64,17 @@ def checked_nodes(value: object) -> np.ndarray:
 
 @dataclass(frozen=True)
 class MeshDynamicsProblem(MeshPeriod):
-    """Linear time-periodic torsional model of a gear mesh over one mesh period (Luo & Li Eqs. 5–6).
+    """Linear time-periodic model of a gear mesh over one mesh period (Luo & Li Eqs. 5–6), alone or in a structure.
+
+    The 1-DOF mesh me·ẍ + c(τ)·ẋ + k(τ)·x = w(τ) by default; with a mass matrix the mesh sits in a structure of n
+    degrees of freedom, M q̈ + (C₀ + c(τ)·w wᵀ) q̇ + (K₀ + k(τ)·w wᵀ) q = f₀ + g(τ)·w (:mod:`~.structure`), where
+    ``stiffness``, ``damping`` and ``force`` are the mesh's per-interval k, c and g and the displacement of the
+    orbit is the mesh deflection wᵀq. The 1-DOF mesh is the 1×1 case, solved by the closed-form 2×2 kernels.
 
     Parameters
     ----------
     mass:
-        Equivalent mass me [kg] (total over the face width), Eq. (5).
+        Equivalent mass me [kg] (total over the face width), Eq. (5); or the (n, n) mass matrix M of a structure.
     nodes:
         (n+1,) interval boundaries [s], ``nodes[0] = 0``, ``nodes[-1] = T`` (the mesh period), strictly increasing.
     stiffness:
@@ -97,6 +95,9 @@ class MeshDynamicsProblem(MeshPeriod):
         Optional (slots, n) unloaded deviation e_i of each pair [m] (positive: material missing). The equation is
         then me·ẍ + c·ẋ + Σ k_i·(x − e_i) = w, i.e. ``force`` = w + Σ k_i·e_i per interval, and a pair's load is
         k_i·(x − e_i); the static load w0 is ``force`` less that excitation.
+    mesh_vector, structural_stiffness, structural_damping, structural_force:
+        With a mass matrix: w (n,), K₀ and C₀ (n, n), f₀ (n,) of :class:`~.structure.MeshStructure` (defaults:
+        K₀ = C₀ = 0, f₀ = 0; w is required for n > 1). ``structure`` holds them checked (also in the 1-DOF case).
     """
 
     mass: float
@@ -109,10 +110,18 @@ class MeshDynamicsProblem(MeshPeriod):
     pair_damping: np.ndarray | None = None
     face_width: float = 1.0
     pair_deviation: np.ndarray | None = None
+    mesh_vector: np.ndarray | None = None
+    structural_stiffness: np.ndarray | None = None
+    structural_damping: np.ndarray | None = None
+    structural_force: np.ndarray | None = None
+    structure: MeshStructure = field(init=False, repr=False, compare=False)
     _force_array: np.ndarray = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "mass", checked_mass(self.mass))
+        structure = checked_structure(self.mass, self.mesh_vector, self.structural_stiffness,
+                                      self.structural_damping, self.structural_force)
+        object.__setattr__(self, "structure", structure)
+        object.__setattr__(self, "mass", float(structure.mass[0, 0]) if structure.is_scalar_mesh else structure.mass)
         nodes = checked_nodes(self.nodes)
         object.__setattr__(self, "nodes", nodes)
         n = nodes.size - 1
@@ -133,7 +142,7 @@ class MeshDynamicsProblem(MeshPeriod):
             object.__setattr__(self, "force", force_array)
         if not np.all(np.isfinite(force_array)):
             raise ProblemError("force", self.force, "finite [N]", "the static load must be a number")
-        if np.any(force_array <= 0.0):
+        if structure.is_scalar_mesh and np.any(force_array <= 0.0):
             raise ProblemError("force", float(force_array.min()), "> 0 N",
                             "the mesh is modelled under a positive transmitted load")
         force_array.setflags(write=False)
@@ -209,7 +218,13 @@ class MeshDynamicsProblem(MeshPeriod):
 
     @property
     def static_transmission_error(self) -> np.ndarray:
-        """(n,) static transmission error w/k on each interval [m] (the equilibria of the dynamic response)."""
+        """(n,) static transmission error w/k on each interval [m] (the equilibria of the dynamic response).
+
+        Only for the 1-DOF mesh: in a structure the equilibrium of the mesh deflection depends on K₀ and f₀."""
+        if not self.structure.is_scalar_mesh:
+            raise ProblemError("mass", "a mass matrix", "the 1-DOF mesh (scalar mass)",
+                               "the static transmission error w/k is that of the 1-DOF mesh; solve the structure's "
+                               "equilibrium instead")
         return self._force_array / self.stiffness
 
     @property

@@ -27,6 +27,8 @@ def reference_solve_ivp(problem: MeshDynamicsProblem, periods: int, rtol: float 
     """
     from scipy.integrate import solve_ivp  # noqa: PLC0415  (imported when used: ~0.3 s a sweep never needs)
 
+    problem.structure.require_scalar_mesh("reference_solve_ivp")
+
     if int(periods) != periods or periods < 1:
         raise ProblemError("periods", periods, "integer >= 1", "number of mesh periods to integrate")
     if not 0.0 < rtol < 1.0:

@@ -30,7 +30,7 @@ from typing import Any
 
 import numpy as np
 
-from thermogear.dynamics.metrics import _load, compute_metrics
+from thermogear.dynamics.metrics import sampled_load, compute_metrics
 from thermogear.dynamics.periodic import PeriodicOrbit, evaluate_orbit, floquet_multipliers
 from thermogear.dynamics.problem import MeshDynamicsProblem
 from thermogear.dynamics.spectra import (harmonic_spectrum, one_sided_amplitudes, right_continuous,
@@ -100,8 +100,8 @@ class DynamicResponse:
 
     def system_load(self) -> np.ndarray:
         """System dynamic load k·x (+ c·ẋ) at each sample [N] (right-continuous at nodes)."""
-        return _load(self.problem.stiffness, self.problem.damping, self._system_offset, self.interval,
-                     self.displacement, self.velocity, self.include_damping_force)
+        return sampled_load(self.problem.stiffness, self.problem.damping, self._system_offset, self.interval,
+                            self.displacement, self.velocity, self.include_damping_force)
 
     def pair_loads(self) -> np.ndarray:
         """(slots, samples) pair dynamic loads k_p·x (+ c_p·ẋ) [N]; needs ``pair_stiffness`` in the problem."""
@@ -109,8 +109,8 @@ class DynamicResponse:
         if pair is None:
             raise ProblemError("pair_stiffness", None, "a (slots, n) array",
                                "pair loads need the stiffness of each pair")
-        return _load(pair[0], pair[1], self.problem.pair_offset, self.interval, self.displacement, self.velocity,
-                     self.include_damping_force)
+        return sampled_load(pair[0], pair[1], self.problem.pair_offset, self.interval, self.displacement,
+                            self.velocity, self.include_damping_force)
 
     # ------------------------------------------------------------------ spectra
     def spectrum(self, quantity: str = "displacement", points: int = 1024) -> tuple[np.ndarray, np.ndarray]:
@@ -139,13 +139,14 @@ class DynamicResponse:
         elif quantity == "velocity":
             values = v
         elif quantity == "system_load":
-            values = _load(self.problem.stiffness, self.problem.damping, self._system_offset, interval, x, v,
-                           self.include_damping_force)
+            values = sampled_load(self.problem.stiffness, self.problem.damping, self._system_offset, interval, x, v,
+                                  self.include_damping_force)
         else:
             pair = self.problem.pair_arrays()
             if pair is None:
                 raise ProblemError("pair_stiffness", None, "a (slots, n) array", "pair loads need each pair's stiffness")
-            values = _load(pair[0], pair[1], self.problem.pair_offset, interval, x, v, self.include_damping_force)
+            values = sampled_load(pair[0], pair[1], self.problem.pair_offset, interval, x, v,
+                                  self.include_damping_force)
         return np.arange(grid.size // 2 + 1) / period, one_sided_amplitudes(values)
 
     # ------------------------------------------------------------------ plots (Luo & Li Figs. 9–12)
@@ -232,7 +233,7 @@ class DynamicResponse:
             "label": self.label,
             "include_damping_force": int(self.include_damping_force),
             "valid": int(self.valid),
-            "mass_kg": problem.mass,
+            "mass_kg": problem.mesh_mass,
             "face_width_m": problem.face_width,
             "metrics_json": json.dumps(self.metrics_json()),
         }

@@ -79,6 +79,7 @@ class TransientHistory:
 
 def _eigen_moduli(problem: MeshDynamicsProblem) -> np.ndarray:
     """(n,) largest |λ| of A on each interval [1/s]."""
+    problem.structure.require_scalar_mesh("the RK4 transient")
     a = problem.stiffness / problem.mass
     sigma = 0.5 * problem.damping / problem.mass
     d = sigma**2 - a

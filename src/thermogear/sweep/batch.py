@@ -18,8 +18,8 @@ pair stiffness — is asked once per group and load, at the group's reference sp
 * where the stiffness depends on the load (the paper's secant k_T), one state per distinct load;
 * me·ẍ + c·ẋ + k·x = w on the nodes t_s = t_ref/r (r = n1/n1,ref) is, in the reference time t_ref = r·t,
   (me·r²)·x'' + (c·r)·x' + k·x = w on the reference nodes: the periodic solver runs all speeds on one node grid;
-* the metrics come from a compiled kernel (:mod:`thermogear.sweep.batch_kernel`) that samples the exact orbit as
-  :func:`~thermogear.dynamics.response.compute_metrics` does.
+* the metrics come from a compiled kernel (:mod:`thermogear.dynamics.periodic_batch_metrics`) that samples the
+  exact orbit as :func:`~thermogear.dynamics.response.compute_metrics` does.
 
 The regression test runs both paths over grids of every sweepable key and both models and asks for a relative
 difference of at most 1e-9 on every stored variable.
@@ -40,7 +40,7 @@ import numpy as np
 from thermogear import warning_scope
 from thermogear.errors import JammingError, ModelLimitError, ProblemError
 from thermogear.mesh.model import MeshModel
-from thermogear.sweep.batch_kernel import periodic_metrics_batch
+from thermogear.dynamics.periodic_batch_metrics import periodic_metrics_batch
 from thermogear.warning_causes import warning_text
 
 __all__ = ["FLAG_VARIABLES", "MODEL_VARIABLES", "POINT_VARIABLES", "GroupTables", "empty_block_result", "evaluate_block",

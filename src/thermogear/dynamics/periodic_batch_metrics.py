@@ -1,13 +1,13 @@
-"""Compiled periodic steady states and orbit metrics of many operating points at once (the sweep's fast path).
+"""Compiled periodic steady states and orbit metrics of many operating points at once (the fast path of sweeps).
 
 One fused kernel per group of points that share the node grid and the stiffness k(τ): for a tile of points it
 builds the monodromy matrix (periodic initial state, Floquet multipliers) and then walks the exact periodic orbit,
 sampling it exactly as :func:`thermogear.dynamics.response.compute_metrics` does (``samples`` equal sub-steps per
 interval plus the end of the period, loads right-continuous at the samples plus the left limits at the interior
-nodes), so the fast path gives the numbers of one ``Simulation`` per point to rounding.
+nodes), so the fast path gives the numbers of the single-point solver and its metrics to rounding.
 
 Transition over one sub-step h of an interval (me·ẍ + c·ẋ + k·x = w, constant coefficients; the closed form of
-:mod:`thermogear.dynamics.periodic`, after Cayley–Hamilton for a 2×2 matrix exponential, e.g. Moler & Van Loan,
+:mod:`thermogear.dynamics.transition_2x2`, after Cayley–Hamilton for a 2×2 matrix exponential, e.g. Moler & Van Loan,
 SIAM Review 45 (2003), method 17):
 
     Φ(h) = e^{−σh}·[C·I + S·(A + σI)],   σ = c/(2me),   u = (σ² − k/me)·h²,
@@ -16,7 +16,7 @@ SIAM Review 45 (2003), method 17):
 For |u| ≤ 1/4 and σh ≤ 1/8 (every interval of a usual mesh period: h is 1/(samples·intervals) of it) the series
 to u⁷ and e^{−x} to x¹¹ are exact to rounding (first omitted terms < 1e-18 relative), so the kernel needs no
 transcendental function and the loop over points is vectorised; outside that range it takes the closed form
-(``periodic._transition``). The transition over a whole interval is Φ(h)^samples (the same orbit: the state at the
+(``transition_2x2``). The transition over a whole interval is Φ(h)^samples (the same orbit: the state at the
 end of the interval is the one after the last sub-step), so one transition per interval serves the monodromy and
 the walk.
 """
@@ -28,7 +28,7 @@ import math
 import numba
 import numpy as np
 
-from thermogear.dynamics.periodic import _multipliers_abs, _solve_periodic, _transition
+from thermogear.dynamics.transition_2x2 import multiplier_moduli_2x2, periodic_state_2x2, transition_2x2
 
 __all__ = ["METRIC_COUNT", "periodic_metrics_batch"]
 
@@ -72,7 +72,7 @@ def _step_transitions(stiffness: float, damping_reference: float, mass: np.ndarr
             sigma = 0.5 * c / mass[j]
             u = (sigma * sigma - stiffness / mass[j]) * step * step
             if abs(u) > _SERIES_U or sigma * step > _SERIES_DECAY or not math.isfinite(u):
-                p00[j], p01[j], p10[j], p11[j] = _transition(stiffness, c, mass[j], step)
+                p00[j], p01[j], p10[j], p11[j] = transition_2x2(stiffness, c, mass[j], step)
 
 
 @numba.njit(cache=True, error_model="numpy")
@@ -369,13 +369,13 @@ def periodic_metrics_batch(mass: np.ndarray, nodes: np.ndarray, stiffness: np.nd
         v0 = np.zeros(count)  # unstable points are walked harmlessly from 0 and reported as NaN
         stable = 0
         for j in range(count):
-            first, second = _multipliers_abs(work[12, j], work[13, j], work[14, j], work[15, j])
+            first, second = multiplier_moduli_2x2(work[12, j], work[13, j], work[14, j], work[15, j])
             if not damped[j]:
                 first = max(first, 1.0)  # |μ1·μ2| = det M = 1 exactly: |μ|max >= 1 whatever rounding gives
             moduli[start + j, 0] = first
             moduli[start + j, 1] = second
             if first < 1.0:
-                x0[j], v0[j] = _solve_periodic(work[12, j], work[13, j], work[14, j], work[15, j], work[16, j],
+                x0[j], v0[j] = periodic_state_2x2(work[12, j], work[13, j], work[14, j], work[15, j], work[16, j],
                                                work[17, j])
                 stable += 1
         if stable == 0:
