@@ -15,9 +15,11 @@ from thermogear.schema.base import StrictTypeError
 
 def case_error_from_validation(error: pydantic.ValidationError) -> CaseError:
     """The first pydantic error as a CaseError naming key, value, allowed range and reason. An unknown key is
-    reported before a missing one (a misspelt section name is both: ``[gear]`` for ``[gears]``)."""
+    reported before a missing one (a misspelt section name is both: ``[gear]`` for ``[gears]``), and a wrong value
+    before a missing key (a wrong value in a section the case had not started yet is the one the user wrote)."""
     errors = error.errors(include_url=False)
-    first = next((item for item in errors if item["type"] == "extra_forbidden"), errors[0])
+    first = next((item for item in errors if item["type"] == "extra_forbidden"),
+                 next((item for item in errors if item["type"] != "missing"), errors[0]))
     raised = (first.get("ctx") or {}).get("error")
     if isinstance(raised, CaseError):  # a schema validator that names its key, range and reason itself
         return raised

@@ -16,7 +16,8 @@ def test_fem_summary_reports_each_step(monkeypatch):
 
     class Analysis(SimpleNamespace):
         def summary(self):
-            return {"case": "luo2019"}
+            return {"case": "luo2019", "flank_temperature_c": {"C": 80.0}, "stiffness_drop_percent": {"C": 14.5},
+                    "x_te": 1.6, "x_te_line_of_action": -0.9}  # what the summary's interpretation reads
 
     monkeypatch.setattr(verification, "cached_analysis", lambda case: Analysis(refinement=1.0))
     monkeypatch.setattr(verification, "fem_analysis", lambda case, refinement: Analysis(refinement=refinement))

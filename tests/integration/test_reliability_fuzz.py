@@ -40,7 +40,9 @@ def _leaf_keys(model=CaseFile, prefix: str = "") -> list[str]:
     keys = []
     for name, field in model.model_fields.items():
         nested = _model_of(field.annotation)
-        if nested is not None and name != "vary":
+        # a list of tables ([[gearbox.bearings]]) has no dotted path to its keys: the fuzz sets the list whole
+        in_list = "list[" in str(field.annotation)
+        if nested is not None and name != "vary" and not in_list:
             keys += _leaf_keys(nested, f"{prefix}{name}.")
         else:
             keys.append(prefix + name)

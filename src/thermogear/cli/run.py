@@ -219,7 +219,7 @@ def _print_table(case, responses, console, thermoelastic: dict | None = None) ->
         table.add_section()
         for label, unit, elastic, thermal, _ in thermoelastic_rows(thermoelastic):
             cells = {"elastic": elastic, "thermal": thermal}
-            table.add_row(label, *(format_value(cells[name]) if cells[name] is not None else "—" for name in responses),
+            table.add_row(label, *(_shown(cells[name]) if cells[name] is not None else "—" for name in responses),
                           unit)
     console.print(table)
 

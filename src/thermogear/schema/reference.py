@@ -20,7 +20,7 @@ MEANINGS = {
     "case.assumptions": "everything the source leaves open and the case assumes, one sentence each (may be empty: "
                         "`[]`)",
     "temperature.model": "source of the tooth temperatures: 'uniform' (bulk_c), 'tabulated' (flank table), 'fem' "
-                         "(finite-element bulk temperature), 'gearbox' (predicted by the [gearbox] thermal model)",
+                         "(finite-element bulk temperature), 'gearbox' (predicted by the thermal network of the case's gearbox section)",
     "temperature.fit_degree": "degree of the polynomial fitted to the flank table [–]",
     "thermal.x_te_source": "where X_te of model 'luo2020' comes from: 'given' (x_te), 'calibrated' (to "
                            "calibration_drop_percent at calibration_point), 'fem'",
