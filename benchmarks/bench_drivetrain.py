@@ -39,20 +39,13 @@ import warnings  # noqa: E402
 from pathlib import Path  # noqa: E402
 
 import numpy as np  # noqa: E402
+from timing import wall_times  # noqa: E402
 
 RESULTS = Path(__file__).resolve().parent / "results"
 TOLERANCE = 1e-6
 CUTOFF_HZ = 2e4
 SWEEP_SAMPLE = 40
 
-
-def _times(function, repeat: int) -> np.ndarray:
-    values = []
-    for _ in range(repeat):
-        start = time.perf_counter()
-        function()
-        values.append(time.perf_counter() - start)
-    return np.array(values)
 
 
 def _drivetrain(elements: int, pinion_radius: float = 0.0381, wheel_radius: float = 0.0493):
@@ -127,9 +120,9 @@ def main(quick: bool = False) -> dict:
     # ---------------------------------------------------------------- 1. modes of ~100 DOF
     large = _drivetrain(elements=8).assemble()
     drivetrain_modes(large)
-    modes_s = _times(lambda: drivetrain_modes(large), 5 if quick else 30)
+    modes_s = wall_times(lambda: drivetrain_modes(large), 5 if quick else 30)
     stiffness = large.stiffness()
-    bare_s = _times(lambda: eigh(stiffness, large.mass), 5 if quick else 30)
+    bare_s = wall_times(lambda: eigh(stiffness, large.mass), 5 if quick else 30)
     modes_ms, bare_ms = float(np.median(modes_s)) * 1e3, float(np.median(bare_s)) * 1e3
     figures.append({"name": f"drivetrain modes, {large.size} DOF (labels, energy shares) vs bare eigh",
                     "value": modes_ms, "baseline": bare_ms, "unit": "ms", "ratio": modes_ms / bare_ms})
@@ -138,7 +131,7 @@ def main(quick: bool = False) -> dict:
     small = _drivetrain(elements=3).assemble()
     state = _square_wave_state(3000.0)
     drivetrain_periodic_response(small, state)
-    response_s = _times(lambda: drivetrain_periodic_response(small, state), 5 if quick else 30)
+    response_s = wall_times(lambda: drivetrain_periodic_response(small, state), 5 if quick else 30)
     system, _ = drivetrain_periodic_system(small, state)
     orbit = periodic_response(system, 1)
     periods, ivp_s = _solve_ivp_periods(system, orbit.initial_state)
@@ -164,8 +157,8 @@ def main(quick: bool = False) -> dict:
     from thermogear.mesh.model import MeshModel
 
     real_state = MeshModel(load_case("luo2019"), "thermal").state()
-    real_s = _times(lambda: drivetrain_periodic_response(small, real_state, samples_per_piece=1), 1 if quick else 3)
-    one_dof_s = _times(lambda: periodic_steady_state(real_state.problem(), samples_per_interval=1), 5)
+    real_s = wall_times(lambda: drivetrain_periodic_response(small, real_state, samples_per_piece=1), 1 if quick else 3)
+    one_dof_s = wall_times(lambda: periodic_steady_state(real_state.problem(), samples_per_interval=1), 5)
     real_ms, one_dof_ms = float(np.median(real_s)) * 1e3, float(np.median(one_dof_s)) * 1e3
     pieces = real_state.grid.nodes.size - 1
     figures.append({"name": f"exact periodic response, {small.size} DOF, luo2019 state ({pieces} pieces) vs the "
@@ -175,7 +168,7 @@ def main(quick: bool = False) -> dict:
     reduced = drivetrain_periodic_response(small, real_state, samples_per_piece=1, cutoff_hz=CUTOFF_HZ)
     difference = float(np.abs(reduced.transmission_error - full_real.transmission_error).max()
                        / np.abs(full_real.transmission_error).max())
-    reduced_s = _times(lambda: drivetrain_periodic_response(small, real_state, samples_per_piece=1,
+    reduced_s = wall_times(lambda: drivetrain_periodic_response(small, real_state, samples_per_piece=1,
                                                             cutoff_hz=CUTOFF_HZ), 3 if quick else 10)
     reduced_ms = float(np.median(reduced_s)) * 1e3
     figures.append({"name": f"reduced periodic response (modes < {CUTOFF_HZ:.0f} Hz + static corrections, DTE "
@@ -195,8 +188,8 @@ def main(quick: bool = False) -> dict:
         for speed in sweep_speeds:
             periodic_steady_state(model.state(speed_rpm=speed).problem(), samples_per_interval=1)
 
-    per_speed = float(_times(sweep, 1)[0]) / sweep_speeds.size
-    per_speed_one_dof = float(_times(sweep_one_dof, 1)[0]) / sweep_speeds.size
+    per_speed = float(wall_times(sweep, 1)[0]) / sweep_speeds.size
+    per_speed_one_dof = float(wall_times(sweep_one_dof, 1)[0]) / sweep_speeds.size
     figures.append({"name": f"1000-speed sweep, reduced {small.size}-DOF drivetrain, thermal state per speed "
                             f"(timed on {sweep_speeds.size}) vs the 1-DOF sweep",
                     "value": 1000 * per_speed, "baseline": 1000 * per_speed_one_dof, "unit": "s",

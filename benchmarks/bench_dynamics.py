@@ -29,18 +29,11 @@ import warnings
 from pathlib import Path
 
 import numpy as np
+from timing import wall_times
 
 RESULTS = Path(__file__).resolve().parent / "results"
 TOLERANCE = 1e-6  # relative agreement with the periodic orbit that counts as "steady state reached"
 
-
-def _times(function, repeat: int) -> np.ndarray:
-    values = []
-    for _ in range(repeat):
-        start = time.perf_counter()
-        function()
-        values.append(time.perf_counter() - start)
-    return np.array(values)
 
 
 def _periods_to_converge(problem, orbit, history) -> int:
@@ -106,12 +99,12 @@ def main(quick: bool = False) -> dict:
     # ---------------------------------------------------------------- 1. periodic vs solve_ivp from rest
     periodic_initial_state(problem)  # compile / load the numba cache
     periodic_steady_state(problem)
-    solve = _times(lambda: periodic_initial_state(problem), 200 if quick else 2000)
-    sampled = _times(lambda: periodic_steady_state(problem), 10 if quick else 50)
+    solve = wall_times(lambda: periodic_initial_state(problem), 200 if quick else 2000)
+    sampled = wall_times(lambda: periodic_steady_state(problem), 10 if quick else 50)
     orbit = periodic_steady_state(problem, samples_per_interval=1)
     probe = reference_solve_ivp(problem, periods=6, samples_per_interval=1)
     periods_needed = _periods_to_converge(problem, orbit, probe)
-    reference = _times(lambda: reference_solve_ivp(problem, periods=periods_needed, samples_per_interval=1),
+    reference = wall_times(lambda: reference_solve_ivp(problem, periods=periods_needed, samples_per_interval=1),
                        1 if quick else 3)
     solve_us = float(np.median(solve)) * 1e6
     reference_us = float(np.median(reference)) * 1e6
@@ -129,7 +122,7 @@ def main(quick: bool = False) -> dict:
         return simulation.run("periodic")
 
     whole_point()  # warm the stiffness-table cache and every numba kernel, as any second point of a study
-    whole = _times(whole_point, 5 if quick else 30)
+    whole = wall_times(whole_point, 5 if quick else 30)
     whole_ms = float(np.median(whole)) * 1e3
     stages = _stage_times(case, 5 if quick else 20)
 
@@ -143,16 +136,16 @@ def main(quick: bool = False) -> dict:
                                    include_damping_force=case.dynamics.include_damping_force)
 
     whole_point_coarse()
-    coarse_ms = float(np.median(_times(whole_point_coarse, 5 if quick else 30))) * 1e3
+    coarse_ms = float(np.median(wall_times(whole_point_coarse, 5 if quick else 30))) * 1e3
     kv_fine = whole_point().metrics["kv"]
     kv_coarse = whole_point_coarse().metrics["kv"]
     profile_text = _profile(whole_point)
     tables = group_tables(MeshModel(case, "thermal"))
     speeds = np.linspace(500.0, 12000.0, 200 if quick else 2000)
     evaluate_speeds(tables, speeds[:4])
-    batch = _times(lambda: evaluate_speeds(tables, speeds), 3)
+    batch = wall_times(lambda: evaluate_speeds(tables, speeds), 3)
     batch_ms = float(np.min(batch)) / speeds.size * 1e3
-    tables_ms = float(np.median(_times(lambda: group_tables(MeshModel(case, "thermal")), 5 if quick else 10))) * 1e3
+    tables_ms = float(np.median(wall_times(lambda: group_tables(MeshModel(case, "thermal")), 5 if quick else 10))) * 1e3
     figures.append({"name": "whole operating point (Simulation → metrics) vs sweep fast path (ratio: times slower)",
                     "value": whole_ms, "baseline": batch_ms, "unit": "ms per point",
                     "ratio": whole_ms / batch_ms})
@@ -161,8 +154,8 @@ def main(quick: bool = False) -> dict:
     rk4_periods = 20 if quick else 100
     python_periods = 1 if quick else 3
     transient_from_rest(problem, periods=1)  # compile / load the numba cache
-    compiled = _times(lambda: transient_from_rest(problem, periods=rk4_periods), 3) / rk4_periods
-    plain = _times(lambda: transient_python(problem, periods=python_periods), 1 if quick else 2) / python_periods
+    compiled = wall_times(lambda: transient_from_rest(problem, periods=rk4_periods), 3) / rk4_periods
+    plain = wall_times(lambda: transient_python(problem, periods=python_periods), 1 if quick else 2) / python_periods
     steps = transient_from_rest(problem, periods=1).steps_per_interval
     compiled_ms = float(np.min(compiled)) * 1e3
     plain_ms = float(np.min(plain)) * 1e3
