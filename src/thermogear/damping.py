@@ -43,6 +43,7 @@ import numpy as np
 
 from thermogear.errors import CaseError
 from thermogear.friction import friction_validity_warnings, mean_friction_coefficient
+from thermogear.mesh.model_names import MODELS
 
 #: How the friction damping c = 4·μ·k/(π·ω_m) with μ = 0.12·X_L·(w_i·R_a/(η·v_Σ·ρ_red))^(1/4) (Eqs. 27–28) scales
 #: with the pinion speed n1 and the normal load w when the geometry, the oil temperature and the load shares stay
@@ -51,9 +52,7 @@ from thermogear.friction import friction_validity_warnings, mean_friction_coeffi
 FRICTION_DAMPING_SPEED_EXPONENT = -1.25
 FRICTION_DAMPING_LOAD_EXPONENT = 0.25
 
-Model = Literal["elastic", "thermal"]
 Rule = Literal["paper", "parallel"]
-MODELS = ("elastic", "thermal")
 RULES = ("paper", "parallel")
 
 

@@ -18,12 +18,12 @@ import numpy as np
 
 from thermogear import forked
 from thermogear.citations import cite
+from thermogear.mesh.model_names import MODELS
 from thermogear.warning_causes import warning_text
 
 __all__ = ["Evaluation", "MODELS", "STEPS", "evaluate_case", "finish_evaluation", "is_paper_case",
            "thermoelastic_beside_paper", "uses_paper_thermal_stiffness"]
 
-MODELS = ("elastic", "thermal")
 
 #: Names of the evaluation steps, in order (for progress bars).
 STEPS = ("elastic model", "thermal model", "thermal stiffness", "damping", "start-up transients",

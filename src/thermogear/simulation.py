@@ -20,14 +20,13 @@ import thermogear.gearbox.provider
 from thermogear.case import Case
 from thermogear.errors import CaseError
 from thermogear.mesh.model import MeshModel
+from thermogear.mesh.model_names import MODELS, Model
 from thermogear.mesh.state import MeshState
 
 # composition root: the gearbox thermal model is the "gearbox" temperature source ([temperature].model)
 thermogear.gearbox.provider.register()
 
-Model = Literal["elastic", "thermal"]
 Method = Literal["periodic", "transient"]
-MODELS: tuple[str, ...] = ("elastic", "thermal")
 
 
 @dataclass(frozen=True)

@@ -6,8 +6,8 @@ thermal model, Eq. 6), per tooth pair along the roll distance: stiffness, fricti
 and backlash; and for an operating point (speed and normal load are arguments, never re-read from the case) the
 state of one mesh period — k(τ), c(τ), the excitation, the static load, the equivalent mass and the period
 (:class:`~thermogear.mesh.state.MeshState`). ``Simulation``, the sweep (both paths), the damping and stiffness
-commands, the FE heat input and the report take what they need from here: this module holds the one
-elastic/thermal switch of thermogear.
+commands, the FE heat input and the report take what they need from here. Which model answers the per-pair
+questions is chosen once, as a pair model (:mod:`thermogear.mesh.pair_models`); nothing here tests a model's name.
 """
 
 from __future__ import annotations
@@ -15,7 +15,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 from functools import cached_property
-from typing import TYPE_CHECKING, Literal
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -23,19 +23,17 @@ from thermogear.damping import (FRICTION_DAMPING_LOAD_EXPONENT, FRICTION_DAMPING
                                 friction_pair_damping, mesh_circular_frequency, mesh_damping)
 from thermogear.errors import CaseError
 from thermogear.lubricant import Lubricant, lubricant_from_case
+from thermogear.mesh.model_names import MODELS, Model
+from thermogear.mesh.pair_models import PairModelBase, ThermoelasticPair, pair_model_for
 from thermogear.mesh.state import MeshState
 from thermogear.mesh_cycle import MeshCycle, MeshGrid, load_share_at, load_shares
-from thermogear.stiffness.table import pair_stiffness_at
-from thermogear.thermal.case_stiffness import thermal_pair_stiffness_at
-from thermogear.thermal.temperature import TemperatureField, temperature_field_from_case
+from thermogear.thermal.temperature import TemperatureField
 from thermogear.thermoelastic.load_sharing import loaded_transmission_error
 from thermogear.thermoelastic.mesh import ThermoelasticMesh
 
 if TYPE_CHECKING:
     from thermogear.case import Case
 
-Model = Literal["elastic", "thermal"]
-MODELS: tuple[str, ...] = ("elastic", "thermal")
 
 #: Temperature sources whose temperatures depend on the operating point (speed and load): the FE heat model and
 #: the gearbox thermal model. A sweep cannot reuse one mesh period across their speeds or loads.
@@ -69,6 +67,11 @@ class MeshModel:
             raise CaseError("model", self.model, " | ".join(MODELS), "unknown model")
 
     # ------------------------------------------------------------------------------------ what it is
+    @cached_property
+    def pair_model(self) -> PairModelBase:
+        """The pair model answering for this model (chosen once: :func:`~thermogear.mesh.pair_models.pair_model_for`)."""
+        return pair_model_for(self.case, self.model)
+
     @property
     def thermal(self) -> bool:
         return self.model == "thermal"
@@ -76,30 +79,23 @@ class MeshModel:
     @property
     def thermal_model(self) -> str | None:
         """Name of the thermal mesh model in use (``"thermoelastic"`` or ``"luo2020"``), None for the elastic one."""
-        return self.case.thermal.model if self.thermal else None
+        return self.pair_model.name if self.thermal else None
 
     @property
     def thermoelastic(self) -> bool:
-        return self.thermal_model == "thermoelastic"
+        return self.thermal_model == ThermoelasticPair.name
 
-    @cached_property
+    @property
     def thermoelastic_mesh(self) -> ThermoelasticMesh | None:
         """The thermo-elastic component of the case (hot geometry, E(T), backlash, deviations) where this model
         needs it: the thermoelastic model, or any model of a case with profile modifications."""
-        if self.thermoelastic or self._has_profile_modifications:
-            return ThermoelasticMesh.from_case(self.case)
-        return None
-
-    @property
-    def _has_profile_modifications(self) -> bool:
-        return any(getattr(gear, "tip_relief_um", None) for gear in (self.case.gears_input.pinion,
-                                                                        self.case.gears_input.wheel))
+        return self.pair_model.thermoelastic_mesh
 
     @property
     def gear_pair(self):
         """The gear pair as it meshes under this model (geometry, path of contact A–E, contact ratio): at
         temperature for the thermoelastic model, as built otherwise."""
-        return self.thermoelastic_mesh.gear_pair if self.thermoelastic else self.case.gear_pair
+        return self.pair_model.gear_pair
 
     @property
     def face_width(self) -> float:
@@ -114,25 +110,20 @@ class MeshModel:
     def lubricant(self) -> Lubricant:
         return lubricant_from_case(self.case)
 
-    @cached_property
+    @property
     def temperature(self) -> TemperatureField | None:
         """The tooth temperature field of the thermal model; None for the elastic one."""
-        return temperature_field_from_case(self.case) if self.thermal else None
+        return self.pair_model.temperature
 
     @property
     def stiffness_depends_on_load(self) -> bool:
-        """True where the pair stiffness is computed per normal load: the paper's secant k_T (Eq. 18). With a
-        calibrated X_te its value is the same at every load (X_te ∝ F_n), but its single-tooth check (Eq. 23, a
-        warning) is not, so a sweep still asks for it load by load."""
-        return self.thermal_model == "luo2020"
+        """True where the pair stiffness is computed per normal load (the paper's secant k_T, Eq. 18)."""
+        return self.pair_model.stiffness_depends_on_load
 
     @property
     def load_shares_depend_on_load(self) -> bool:
-        """True where the static load shares move with the load: pairs with unloaded deviations engage at a
-        load-dependent approach, or the paper's secant k_T is the stiffness of the friction load share."""
-        if self.thermoelastic_mesh is not None:
-            return True
-        return self.stiffness_depends_on_load and self.case.damping.stiffness == "thermal"
+        """True where the static load shares move with the load (the pair model says why)."""
+        return self.pair_model.load_shares_depend_on_load
 
     @property
     def damping_scaling(self) -> tuple[float, float | None] | None:
@@ -175,66 +166,36 @@ class MeshModel:
 
     def pair_stiffness_at(self, roll, normal_load: float | None = None) -> np.ndarray:
         """Stiffness of one tooth pair [N/m] (total over the face width) at roll distances on [A, E]."""
-        roll = np.asarray(roll, dtype=float)
-        if self.thermoelastic:
-            return np.asarray(self.thermoelastic_mesh.pair_stiffness_at(roll), dtype=float)
-        if self.thermal:
-            return np.asarray(thermal_pair_stiffness_at(self.case, roll, normal_load=self._load(normal_load)),
-                              dtype=float)
-        return np.asarray(pair_stiffness_at(self.gear_pair, self.case.material, roll), dtype=float)
+        return self.pair_model.pair_stiffness_at(np.asarray(roll, dtype=float), self._load(normal_load))
 
     def damping_stiffness_at(self, roll, normal_load: float | None = None) -> np.ndarray:
         """The pair stiffness k of Eq. 28 and of the friction load share [N/m]: k_e unless ``[damping]
         stiffness = "thermal"`` asks the thermal model's own; the thermoelastic model always uses its own (its
         path of contact is that of the hot pair, where the cold k_e is not defined)."""
-        if self.thermoelastic or (self.thermal and self.case.damping.stiffness == "thermal"):
-            return self.pair_stiffness_at(roll, normal_load)
-        return np.asarray(pair_stiffness_at(self.gear_pair, self.case.material, np.asarray(roll, float)), float)
+        return self.pair_model.damping_stiffness_at(np.asarray(roll, dtype=float), self._load(normal_load))
 
     def flank_gamma(self, roll) -> np.ndarray:
         """Contact position Γ on the flanks as built (where the temperature field is given) of the contact at roll
-        distances [m] of the pair as it meshes: the same as its Γ except for the thermo-elastic model, whose hot
-        pinion has grown by its strain (the material point at pinion radius r is at r/(1 + ε) cold)."""
-        roll = np.asarray(roll, dtype=float)
-        if not self.thermoelastic:
-            return np.asarray(self.gear_pair.gamma(roll), dtype=float)
-        hot, cold = self.gear_pair, self.case.gear_pair
-        radius = np.hypot(hot.pinion.base_radius, roll) / (1.0 + self.thermoelastic_mesh.strains[0])
-        cold_roll = np.sqrt(np.maximum(radius**2 - cold.pinion.base_radius**2, 0.0))
-        return np.asarray(cold.gamma(cold_roll), dtype=float)
+        distances [m] of the pair as it meshes (differs from its Γ where the pair model expands the geometry)."""
+        return self.pair_model.flank_gamma(roll)
 
     def friction_temperature_c(self, gamma) -> np.ndarray:
         """Oil temperature of the friction formula [°C]: the lubricant's reference temperature (elastic) or the
         mean of the pinion and wheel flank temperatures at the contact (thermal)."""
-        gamma = np.asarray(gamma, dtype=float)
-        if not self.thermal:
-            return np.full(gamma.shape, float(self.case.lubricant.reference_temperature_c))
-        field = self.temperature
-        return 0.5 * (np.asarray(field.pinion_flank_c(gamma), dtype=float)
-                      + np.asarray(field.wheel_flank_c(gamma), dtype=float))
+        return self.pair_model.friction_temperature_c(gamma)
 
     def pair_deviation_at(self, roll) -> np.ndarray:
         """Unloaded deviation of one tooth pair along the line of action [m] (positive: material missing, the
         pair engages later): tip reliefs, and for the thermoelastic model the thermal flank distortion and the
         base-pitch mismatch. The paper's thermal model has none."""
-        mesh = self.thermoelastic_mesh
-        if mesh is None or self.thermal_model == "luo2020":
-            return np.zeros(np.shape(roll))
-        if self.thermoelastic:
-            return np.asarray(mesh.pair_deviation_at(roll), dtype=float)
-        return np.asarray(mesh.cold_pair_deviation_at(roll), dtype=float)
+        return self.pair_model.pair_deviation_at(roll)
 
-    @cached_property
+    @property
     def backlash(self) -> float | None:
         """Normal backlash [m] of the mesh as this model sees it (at temperature for the thermoelastic model, at
         the reference temperature otherwise: the paper's model does not expand the geometry); None where neither
         the model nor a nonlinear mesh needs it."""
-        mesh = self.thermoelastic_mesh
-        if mesh is None and self.case.dynamics.mesh == "nonlinear":
-            mesh = ThermoelasticMesh.from_case(self.case)
-        if mesh is None:
-            return None
-        return mesh.backlash_normal if self.thermoelastic else mesh.backlash_normal_cold
+        return self.pair_model.backlash
 
     def _friction(self, roll, share, stiffness, speed_rpm: float, normal_load: float) -> PairDamping:
         pair, case = self.gear_pair, self.case
@@ -285,7 +246,7 @@ class MeshModel:
     def _check_predicted_operating_point(self, speed: float, load: float) -> None:
         """The temperatures of a ``"gearbox"`` case are the steady state at its own speed and load: its thermal mesh
         at another operating point would mix the two (make a case at that point: ``Case.with_changes``)."""
-        if not (self.thermal and self.case.temperature.model in PREDICTED_AT_LOAD_TEMPERATURE_MODELS):
+        if not (self.pair_model.thermal and self.case.temperature.model in PREDICTED_AT_LOAD_TEMPERATURE_MODELS):
             return
         own_speed, own_load = self.speed_rpm, self.normal_load(self.speed_rpm)
         if not (math.isclose(speed, own_speed, rel_tol=1e-12) and math.isclose(load, own_load, rel_tol=1e-12)):
@@ -303,7 +264,7 @@ class MeshModel:
         self._check_predicted_operating_point(speed, load)
         grid = self.grid(speed, points_per_period)
         stiffness = self._on_grid(grid, lambda roll: self.pair_stiffness_at(roll, load))
-        if (self.thermal and self.case.damping.stiffness == "thermal") or not damping:
+        if self.pair_model.damping_uses_pair_stiffness or not damping:
             damping_stiffness = stiffness
         else:
             damping_stiffness = self._on_grid(grid, lambda roll: self.damping_stiffness_at(roll, load))

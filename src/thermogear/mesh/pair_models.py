@@ -1,0 +1,275 @@
+"""Pair models: what one tooth pair of a case is under one thermal model, one class per model.
+
+A pair model answers the per-pair questions of the mesh model along the roll distance on [A, E]: the pair stiffness
+k_i, the stiffness of the friction damping (Luo & Li (2020) Eq. 28), the unloaded deviation e_i, the normal backlash,
+the gear pair as it meshes, the oil temperature of the friction formula and the flank position Γ it is read at, and
+whether stiffness or load shares depend on the load. :class:`~thermogear.mesh.model.MeshModel` builds one mesh period
+from them and knows nothing of which model answers.
+
+Three models (``PAIR_MODELS``, resolved once by :func:`pair_model_for`):
+
+* ``"elastic"`` — :class:`ElasticPair`: k_e of the gear pair as built, oil at the lubricant's reference temperature
+  (Eq. 5).
+* ``"luo2020"`` — :class:`Luo2020Pair`: the paper's secant k_T with X_te (Eqs. 13–23), flank temperatures of the
+  case's temperature field, no thermal expansion of the geometry.
+* ``"thermoelastic"`` — :class:`ThermoelasticPair`: the predictive model of :mod:`thermogear.thermoelastic` (E(T),
+  gears and housing expanded, backlash and flank deviations at temperature).
+
+Adding a model is one subclass of :class:`PairModelBase` overriding what differs, and one line in ``PAIR_MODELS``
+(its name then is a valid ``[thermal] model`` once the schema allows it).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import cached_property
+from typing import TYPE_CHECKING, ClassVar, Protocol
+
+import numpy as np
+
+from thermogear.errors import CaseError
+from thermogear.stiffness.table import pair_stiffness_at
+from thermogear.thermal.case_stiffness import thermal_pair_stiffness_at
+from thermogear.thermal.temperature import TemperatureField, temperature_field_from_case
+from thermogear.thermoelastic.mesh import ThermoelasticMesh
+
+if TYPE_CHECKING:
+    from thermogear.case import Case
+
+
+class PairModel(Protocol):
+    """The per-pair questions a mesh model asks (roll distances [m] on [A, E], loads [N], totals over the width)."""
+
+    name: ClassVar[str]
+    thermal: ClassVar[bool]
+
+    @property
+    def gear_pair(self): ...
+    @property
+    def thermoelastic_mesh(self) -> ThermoelasticMesh | None: ...
+    @property
+    def temperature(self) -> TemperatureField | None: ...
+    @property
+    def stiffness_depends_on_load(self) -> bool: ...
+    @property
+    def load_shares_depend_on_load(self) -> bool: ...
+    @property
+    def damping_uses_pair_stiffness(self) -> bool: ...
+    @property
+    def backlash(self) -> float | None: ...
+    def pair_stiffness_at(self, roll, normal_load: float) -> np.ndarray: ...
+    def damping_stiffness_at(self, roll, normal_load: float) -> np.ndarray: ...
+    def pair_deviation_at(self, roll) -> np.ndarray: ...
+    def flank_gamma(self, roll) -> np.ndarray: ...
+    def friction_temperature_c(self, gamma) -> np.ndarray: ...
+
+
+@dataclass(frozen=True, eq=False)
+class PairModelBase:
+    """What the models share: the elastic pair of the case as built, tip reliefs as cold deviations, the cold
+    backlash, the flank temperatures of the case's field. Subclasses override what their model changes."""
+
+    case: "Case"
+    name: ClassVar[str] = ""
+    #: True for a thermal model: temperatures from the case's field, the friction oil at the flank temperature.
+    thermal: ClassVar[bool] = True
+
+    @property
+    def has_profile_modifications(self) -> bool:
+        gears = self.case.gears_input
+        return any(getattr(gear, "tip_relief_um", None) for gear in (gears.pinion, gears.wheel))
+
+    @cached_property
+    def thermoelastic_mesh(self) -> ThermoelasticMesh | None:
+        """The thermo-elastic component (hot geometry, E(T), backlash, deviations) where the model needs it: here,
+        for the deviations of profile modifications."""
+        return ThermoelasticMesh.from_case(self.case) if self.has_profile_modifications else None
+
+    @property
+    def gear_pair(self):
+        """The gear pair as it meshes (geometry, path of contact A–E, contact ratio): as built."""
+        return self.case.gear_pair
+
+    @cached_property
+    def temperature(self) -> TemperatureField | None:
+        """The tooth temperature field of a thermal model; None for the elastic one."""
+        return temperature_field_from_case(self.case) if self.thermal else None
+
+    @property
+    def stiffness_depends_on_load(self) -> bool:
+        """True where the pair stiffness is computed per normal load."""
+        return False
+
+    @property
+    def load_shares_depend_on_load(self) -> bool:
+        """True where the static load shares move with the load: pairs with unloaded deviations engage at a
+        load-dependent approach."""
+        return self.thermoelastic_mesh is not None
+
+    @property
+    def damping_uses_pair_stiffness(self) -> bool:
+        """True where the stiffness of the friction damping is the model's pair stiffness (one evaluation serves
+        both); here it is k_e, which is the elastic pair's own."""
+        return False
+
+    def elastic_pair_stiffness_at(self, roll) -> np.ndarray:
+        """k_e of one pair of the gear pair as built [N/m] (Luo & Li Eq. 5's stiffness)."""
+        return np.asarray(pair_stiffness_at(self.gear_pair, self.case.material, np.asarray(roll, float)), float)
+
+    def pair_stiffness_at(self, roll, normal_load: float) -> np.ndarray:
+        return self.elastic_pair_stiffness_at(roll)
+
+    def damping_stiffness_at(self, roll, normal_load: float) -> np.ndarray:
+        """The pair stiffness k of Eq. 28 and of the friction load share [N/m]: k_e (the paper's reading)."""
+        return self.elastic_pair_stiffness_at(roll)
+
+    def pair_deviation_at(self, roll) -> np.ndarray:
+        """Unloaded deviation of one pair along the line of action [m]: the tip reliefs, cold."""
+        mesh = self.thermoelastic_mesh
+        if mesh is None:
+            return np.zeros(np.shape(roll))
+        return np.asarray(mesh.cold_pair_deviation_at(roll), dtype=float)
+
+    @cached_property
+    def backlash(self) -> float | None:
+        """Normal backlash [m] at the reference temperature; None where neither the model nor a nonlinear mesh
+        needs it."""
+        mesh = self.thermoelastic_mesh
+        if mesh is None and self.case.dynamics.mesh == "nonlinear":
+            mesh = ThermoelasticMesh.from_case(self.case)
+        return None if mesh is None else mesh.backlash_normal_cold
+
+    def flank_gamma(self, roll) -> np.ndarray:
+        """Contact position Γ on the flanks as built of the contact at roll distances [m]."""
+        return np.asarray(self.gear_pair.gamma(np.asarray(roll, dtype=float)), dtype=float)
+
+    def friction_temperature_c(self, gamma) -> np.ndarray:
+        """Oil temperature of the friction formula [°C]: the mean of the pinion and wheel flank temperatures."""
+        field = self.temperature
+        gamma = np.asarray(gamma, dtype=float)
+        return 0.5 * (np.asarray(field.pinion_flank_c(gamma), dtype=float)
+                      + np.asarray(field.wheel_flank_c(gamma), dtype=float))
+
+
+@dataclass(frozen=True, eq=False)
+class ElasticPair(PairModelBase):
+    """k_e with the oil at the lubricant's reference temperature (Luo & Li (2020) Eq. 5); no thermal input."""
+
+    name: ClassVar[str] = "elastic"
+    thermal: ClassVar[bool] = False
+
+    @property
+    def damping_uses_pair_stiffness(self) -> bool:
+        return True
+
+    def friction_temperature_c(self, gamma) -> np.ndarray:
+        """The lubricant's reference temperature [°C] everywhere."""
+        return np.full(np.shape(gamma), float(self.case.lubricant.reference_temperature_c))
+
+
+@dataclass(frozen=True, eq=False)
+class Luo2020Pair(PairModelBase):
+    """The paper's secant k_T with X_te (Luo & Li (2020) Eqs. 13–23); the geometry is not expanded and the
+    thermal distortion is not a deviation (the paper's model has none)."""
+
+    name: ClassVar[str] = "luo2020"
+
+    @property
+    def stiffness_depends_on_load(self) -> bool:
+        """The secant k_T is computed per normal load (Eq. 18). With a calibrated X_te its value is the same at
+        every load (X_te ∝ F_n), but its single-tooth check (Eq. 23, a warning) is not, so a sweep still asks for
+        it load by load."""
+        return True
+
+    @property
+    def damping_uses_pair_stiffness(self) -> bool:
+        """``[damping] stiffness = "thermal"`` asks k_T for Eq. 28 (an option, not the paper)."""
+        return self.case.damping.stiffness == "thermal"
+
+    @property
+    def load_shares_depend_on_load(self) -> bool:
+        """Deviations of profile modifications, or k_T as the stiffness of the friction load share."""
+        return self.thermoelastic_mesh is not None or self.damping_uses_pair_stiffness
+
+    def pair_stiffness_at(self, roll, normal_load: float) -> np.ndarray:
+        return np.asarray(thermal_pair_stiffness_at(self.case, np.asarray(roll, dtype=float),
+                                                    normal_load=normal_load), dtype=float)
+
+    def damping_stiffness_at(self, roll, normal_load: float) -> np.ndarray:
+        if self.damping_uses_pair_stiffness:
+            return self.pair_stiffness_at(roll, normal_load)
+        return self.elastic_pair_stiffness_at(roll)
+
+    def pair_deviation_at(self, roll) -> np.ndarray:
+        return np.zeros(np.shape(roll))
+
+
+@dataclass(frozen=True, eq=False)
+class ThermoelasticPair(PairModelBase):
+    """The predictive thermo-elastic pair (:mod:`thermogear.thermoelastic`): the hot geometry with E(T), the
+    backlash and the flank deviations at temperature; its damping uses its own stiffness (its path of contact is
+    that of the hot pair, where the cold k_e is not defined)."""
+
+    name: ClassVar[str] = "thermoelastic"
+
+    @cached_property
+    def thermoelastic_mesh(self) -> ThermoelasticMesh:
+        return ThermoelasticMesh.from_case(self.case)
+
+    @property
+    def gear_pair(self):
+        """The gear pair at temperature."""
+        return self.thermoelastic_mesh.gear_pair
+
+    @property
+    def damping_uses_pair_stiffness(self) -> bool:
+        return True
+
+    def pair_stiffness_at(self, roll, normal_load: float) -> np.ndarray:
+        return np.asarray(self.thermoelastic_mesh.pair_stiffness_at(np.asarray(roll, dtype=float)), dtype=float)
+
+    def damping_stiffness_at(self, roll, normal_load: float) -> np.ndarray:
+        return self.pair_stiffness_at(roll, normal_load)
+
+    def pair_deviation_at(self, roll) -> np.ndarray:
+        """Tip reliefs, the thermal flank distortion and the base-pitch mismatch at temperature [m]."""
+        return np.asarray(self.thermoelastic_mesh.pair_deviation_at(np.asarray(roll, dtype=float)), dtype=float)
+
+    @cached_property
+    def backlash(self) -> float:
+        """Normal backlash at temperature [m]."""
+        return self.thermoelastic_mesh.backlash_normal
+
+    def flank_gamma(self, roll) -> np.ndarray:
+        """Γ on the flanks as built of the contact at roll distances of the hot pair: the hot pinion has grown by its
+        strain (the material point at pinion radius r is at r/(1 + ε) cold)."""
+        hot, cold = self.gear_pair, self.case.gear_pair
+        radius = np.hypot(hot.pinion.base_radius, np.asarray(roll, dtype=float)) / (
+            1.0 + self.thermoelastic_mesh.strains[0])
+        cold_roll = np.sqrt(np.maximum(radius**2 - cold.pinion.base_radius**2, 0.0))
+        return np.asarray(cold.gamma(cold_roll), dtype=float)
+
+
+#: The pair models by name: ``"elastic"`` and every ``[thermal] model``. One line per model.
+PAIR_MODELS: dict[str, type[PairModelBase]] = {
+    ElasticPair.name: ElasticPair,
+    Luo2020Pair.name: Luo2020Pair,
+    ThermoelasticPair.name: ThermoelasticPair,
+}
+
+
+def pair_model_name(case: "Case", model: str) -> str:
+    """The pair model a simulation model means for a case: ``"elastic"``, or the case's ``[thermal] model``."""
+    return ElasticPair.name if model == ElasticPair.name else case.thermal.model
+
+
+def pair_model_for(case: "Case", model: str) -> PairModelBase:
+    """The one place a model name becomes a pair model (``model``: ``"elastic"`` or ``"thermal"``)."""
+    name = pair_model_name(case, model)
+    if name not in PAIR_MODELS:
+        raise CaseError("thermal.model", name, " | ".join(PAIR_MODELS), "no pair model of this name")
+    return PAIR_MODELS[name](case)
+
+
+__all__ = ["ElasticPair", "Luo2020Pair", "PAIR_MODELS", "PairModel", "PairModelBase", "ThermoelasticPair",
+           "pair_model_for", "pair_model_name"]

@@ -1,0 +1,112 @@
+"""The pair-model seam: one class per thermal model, chosen once from a registry; the mesh model asks it and never
+tests a model's name; a fourth model is one class and one registry line."""
+
+from __future__ import annotations
+
+import ast
+from dataclasses import dataclass
+from pathlib import Path
+from typing import ClassVar
+
+import numpy as np
+import pytest
+
+from thermogear.case import load_case
+from thermogear.errors import CaseError
+from thermogear.mesh.model import MeshModel
+from thermogear.mesh.pair_models import (PAIR_MODELS, ElasticPair, Luo2020Pair, PairModelBase, ThermoelasticPair,
+                                         pair_model_for)
+from thermogear.stiffness.table import pair_stiffness_at
+
+MESH = Path(__file__).resolve().parents[2] / "src" / "thermogear" / "mesh"
+
+
+@pytest.fixture(scope="module")
+def luo2019():
+    return load_case("luo2019")
+
+
+def _roll(pair, count=9):
+    points = pair.path_points
+    return np.linspace(points["A"], points["E"], count)
+
+
+def test_the_registry_holds_one_class_per_model():
+    assert PAIR_MODELS == {"elastic": ElasticPair, "luo2020": Luo2020Pair, "thermoelastic": ThermoelasticPair}
+
+
+@pytest.mark.parametrize(("model", "thermal_model", "expected"), [
+    ("elastic", "luo2020", ElasticPair), ("thermal", "luo2020", Luo2020Pair),
+    ("elastic", "thermoelastic", ElasticPair), ("thermal", "thermoelastic", ThermoelasticPair)])
+def test_a_model_name_resolves_once_to_its_pair_model(luo2019, model, thermal_model, expected):
+    case = luo2019.with_changes(**{"thermal.model": thermal_model})
+    assert type(pair_model_for(case, model)) is expected
+    assert type(MeshModel(case, model).pair_model) is expected
+
+
+def test_a_name_without_a_class_is_a_case_error(luo2019, monkeypatch):
+    monkeypatch.delitem(PAIR_MODELS, "luo2020")
+    with pytest.raises(CaseError, match="thermal.model"):
+        pair_model_for(luo2019, "thermal")
+
+
+def test_elastic_pair_is_the_elastic_stiffness_table(luo2019):
+    roll = _roll(luo2019.gear_pair)
+    expected = pair_stiffness_at(luo2019.gear_pair, luo2019.material, roll)
+    pair = ElasticPair(luo2019)
+    assert np.array_equal(pair.pair_stiffness_at(roll, 1e4), expected)
+    assert np.array_equal(pair.damping_stiffness_at(roll, 1e4), expected)
+    assert pair.temperature is None
+    assert np.all(pair.friction_temperature_c(np.zeros(3)) == luo2019.lubricant.reference_temperature_c)
+
+
+def test_luo2020_pair_without_thermal_strain_is_the_elastic_pair(luo2019):
+    # X_te = 0 removes the thermal term of Eq. 18: k_T = k_e (to rounding of the secant's quotient)
+    case = luo2019.with_changes(**{"thermal.x_te_source": "given", "thermal.x_te": 0.0})
+    roll = _roll(case.gear_pair)
+    np.testing.assert_allclose(Luo2020Pair(case).pair_stiffness_at(roll, 1e4),
+                               ElasticPair(case).pair_stiffness_at(roll, 1e4), rtol=1e-12)
+    assert not np.any(Luo2020Pair(case).pair_deviation_at(roll))
+
+
+def test_luo2020_pair_lowers_the_stiffness_and_keeps_the_cold_geometry(luo2019):
+    pair, elastic = Luo2020Pair(luo2019), ElasticPair(luo2019)
+    roll = _roll(luo2019.gear_pair)
+    assert np.all(pair.pair_stiffness_at(roll, 1e4) < elastic.pair_stiffness_at(roll, 1e4))
+    assert pair.gear_pair is luo2019.gear_pair and pair.stiffness_depends_on_load
+
+
+def test_thermoelastic_pair_meshes_on_the_hot_pair(luo2019):
+    case = luo2019.with_changes(**{"thermal.model": "thermoelastic"})
+    pair = ThermoelasticPair(case)
+    assert pair.gear_pair is pair.thermoelastic_mesh.gear_pair and pair.gear_pair is not case.gear_pair
+    assert pair.backlash == pair.thermoelastic_mesh.backlash_normal
+    assert pair.load_shares_depend_on_load and pair.damping_uses_pair_stiffness
+
+
+def test_the_mesh_model_never_tests_a_model_name():
+    # the seam's promise: mesh/model.py compares no string with a model name (they live in pair_models.py)
+    names = set(PAIR_MODELS) | {"thermal"}
+    tree = ast.parse((MESH / "model.py").read_text(encoding="utf-8"))
+    operands = [operand for node in ast.walk(tree) if isinstance(node, ast.Compare)
+                for operand in (node.left, *node.comparators)]
+    compared = [operand.value for operand in operands if isinstance(operand, ast.Constant) and operand.value in names]
+    assert compared == ["thermal"]  # the one question "is this the thermal model?" (MeshModel.thermal)
+
+
+@dataclass(frozen=True, eq=False)
+class DoubledStiffness(PairModelBase):
+    """A fourth model for the test: the elastic pair twice as stiff."""
+
+    name: ClassVar[str] = "doubled"
+
+    def pair_stiffness_at(self, roll, normal_load: float) -> np.ndarray:
+        return 2.0 * self.elastic_pair_stiffness_at(roll)
+
+
+def test_a_fourth_model_is_one_class_and_one_registry_line(luo2019, monkeypatch):
+    # the registry line (here in place of the case's thermal model name, which the schema restricts)
+    monkeypatch.setitem(PAIR_MODELS, "luo2020", DoubledStiffness)
+    doubled = MeshModel(luo2019, "thermal").state(points_per_period=64, damping=False)
+    elastic = MeshModel(luo2019, "elastic").state(points_per_period=64, damping=False)
+    np.testing.assert_allclose(doubled.mesh_stiffness, 2.0 * elastic.mesh_stiffness, rtol=1e-12)
