@@ -22,6 +22,7 @@ from thermogear import warning_scope
 from thermogear.case_errors import case_error_from_validation
 from thermogear.case_keys import warn_keys_without_effect
 from thermogear.case_limits import check_model_limits
+from thermogear.composition import CASE_CHECKS, TEMPERATURE_MODELS, builtin, resolve
 from thermogear.errors import CaseError, closest_key
 from thermogear.fzg import fzg_load_stage_torque
 from thermogear.geometry import Gear, GearPair, involute
@@ -171,7 +172,8 @@ _CASE_CHECKS: list[CaseCheck] = []
 
 def register_case_check(check: CaseCheck) -> CaseCheck:
     """Add a check that every loaded case must pass (it raises CaseError). Returns the check, so it can be used as
-    a decorator. The built-in checks (temperatures, X_te) run first; registered ones after, in order."""
+    a decorator. The built-in checks (temperatures, X_te, then those named in :mod:`thermogear.composition`) run
+    first; registered ones after, in order."""
     if not callable(check):
         raise TypeError("a case check must be callable: check(case) -> None")
     if check not in _CASE_CHECKS:
@@ -191,7 +193,8 @@ def check_case(case: "Case") -> None:
         _check_temperature_field(case)
     _check_thermal_inputs(case)
     check_model_limits(case)
-    for check in _CASE_CHECKS:
+    builtin_checks = [check for check in map(resolve, CASE_CHECKS) if check is not None]
+    for check in builtin_checks + [check for check in _CASE_CHECKS if check not in builtin_checks]:
         check(case)
 
 
@@ -303,18 +306,19 @@ _TEMPERATURE_MODELS: dict[str, CaseResolver] = {}
 def register_temperature_model(name: str, resolver: CaseResolver) -> None:
     """Plug in a temperature model that predicts the case's temperatures at load time, selectable as
     ``[temperature].model = name``: ``resolver(case)`` returns the case with the predicted oil and housing
-    temperatures (the gearbox thermal model registers ``"gearbox"`` from the composition root,
-    :mod:`thermogear.simulation`). Its gear temperatures come from the temperature provider of the same name."""
+    temperatures (the built-in ones, such as the gearbox thermal model's ``"gearbox"``, are named in
+    :mod:`thermogear.composition`; one registered here takes precedence). Its gear temperatures come from the temperature provider of the same name."""
     if not callable(resolver):
         raise TypeError("a temperature model must be callable: resolver(case) -> Case")
     _TEMPERATURE_MODELS[name] = resolver
 
 
 def _resolve_temperature_model(case: "Case") -> "Case":
-    resolver = _TEMPERATURE_MODELS.get(case.temperature.model)
+    resolver = _TEMPERATURE_MODELS.get(case.temperature.model) or builtin(TEMPERATURE_MODELS,
+                                                                          case.temperature.model)
     if resolver is None:
-        raise CaseError("temperature.model", case.temperature.model, "a registered model (import "
-                        "thermogear.simulation, which registers it)",
+        raise CaseError("temperature.model", case.temperature.model, "a registered model (its module is not "
+                        "installed)",
                         "this temperature model is predicted by a model that is not loaded")
     return resolver(case)
 

@@ -15,16 +15,11 @@ from typing import Literal
 
 import numpy as np
 
-import thermogear.fem.provider  # noqa: F401  (composition root: the FE model is the "fem" temperature and X_te source)
-import thermogear.gearbox.provider
 from thermogear.case import Case
 from thermogear.errors import CaseError
 from thermogear.mesh.model import MeshModel
 from thermogear.mesh.model_names import MODELS, Model
 from thermogear.mesh.state import MeshState
-
-# composition root: the gearbox thermal model is the "gearbox" temperature source ([temperature].model)
-thermogear.gearbox.provider.register()
 
 Method = Literal["periodic", "transient"]
 

@@ -1,16 +1,13 @@
-"""Registers the finite-element model as the ``"fem"`` source of the tooth temperature field
-(``[temperature].model = "fem"``) and of X_te (``[thermal].x_te_source = "fem"``) on import.
+"""The finite-element model as the ``"fem"`` source of the tooth temperature field (``[temperature].model =
+"fem"``) and of X_te (``[thermal].x_te_source = "fem"``).
 
-The thermal chain looks providers up by name; importing this module (the ``thermogear`` CLI does) plugs them in.
-Both answers come from one memoised :func:`thermogear.fem.verification.cached_analysis` per case.
+The thermal chain finds these two functions by name (:mod:`thermogear.composition`); importing this module
+registers nothing. Both answers come from one memoised :func:`thermogear.fem.verification.cached_analysis` per case.
 """
 
 from __future__ import annotations
 
 from typing import TYPE_CHECKING
-
-from thermogear.thermal.calibration import register_x_te_provider
-from thermogear.thermal.temperature import register_temperature_provider
 
 if TYPE_CHECKING:
     from thermogear.case import Case
@@ -30,8 +27,5 @@ def fem_x_te(case: "Case") -> float:
 
     return cached_analysis(case).x_te
 
-
-register_temperature_provider("fem", fem_temperature_field)
-register_x_te_provider("fem", fem_x_te)
 
 __all__ = ["fem_temperature_field", "fem_x_te"]

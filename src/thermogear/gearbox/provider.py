@@ -1,9 +1,9 @@
 """The ``"gearbox"`` source of the tooth temperature field (``[temperature].model = "gearbox"``): each gear at its
 predicted steady bulk temperature (the network's pinion and wheel nodes), uniform over the gear body.
 
-Registered explicitly by the composition root :mod:`thermogear.simulation` (beside the finite-element
-provider) with :func:`register`; importing this module registers nothing. A ``[gearbox]`` section is checked at
-load time once registered.
+Found by name where the package is assembled (:mod:`thermogear.composition`, beside the finite-element provider),
+with the load-time check of a ``[gearbox]`` section; importing this module registers nothing. :func:`register`
+remains for callers that plug it in explicitly (it changes nothing the composition does not already give).
 """
 
 from __future__ import annotations

@@ -18,6 +18,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from thermogear.case import cached_per_case
+from thermogear.composition import X_TE_PROVIDERS, builtin
 from thermogear.errors import CaseError, ThermogearError
 from thermogear.stiffness.potential_energy import pair_compliance
 from thermogear.thermal.case_inputs import expansion_for_case, normal_load_for_case
@@ -128,11 +129,10 @@ def _resolve_x_te(case: "Case", load_basis: str | None, temperature: Temperature
         calibration = calibrate_x_te(case, load_basis=load_basis, temperature=temperature, normal_load=normal_load)
         check_x_te(calibration.x_te)
         return calibration.x_te, calibration.label
-    provider = _PROVIDERS.get(section.x_te_source)
+    provider = _PROVIDERS.get(section.x_te_source) or builtin(X_TE_PROVIDERS, section.x_te_source)
     if provider is None:
         raise ThermogearError(f"thermal.x_te_source = '{section.x_te_source}': the finite-element thermo-elastic "
-                              "analysis is not registered (importing thermogear.simulation or thermogear.fem.provider "
-                              "registers it); use "
+                              "analysis is not registered (its module is not installed); use "
                               "'given' or 'calibrated'")
     value = float(provider(case))
     check_x_te(value)

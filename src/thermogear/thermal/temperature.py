@@ -7,7 +7,8 @@ Three sources, chosen in the case file (``[temperature].model``):
 - ``"tabulated"``: flank temperatures at contact positions Γ (in the case or a CSV file), fitted by a polynomial
   in Γ of ``fit_degree`` as Luo & Li (2020) do for their Fig. 3(c), with base-circle and bore temperatures per gear;
 - ``"fem"``: the finite-element bulk-temperature model (docs/fem.md). It plugs in through
-  :func:`register_temperature_provider`; until it is registered, asking for it is an error.
+  :func:`register_temperature_provider` or is found by name in :mod:`thermogear.composition`; where neither
+  gives it, asking for it is an error.
 
 Temperatures are °C here; the expansion uses the rises above ``reference_c`` (Timoshenko & Goodier 1951: Eq. 10 holds for
 rises above the stress-free state, which the paper does not say).
@@ -20,6 +21,7 @@ from typing import TYPE_CHECKING
 
 from thermogear import warning_scope
 from thermogear.case import cached_per_case
+from thermogear.composition import TEMPERATURE_PROVIDERS, builtin
 from thermogear.errors import ModelAssumptionWarning, ThermogearError
 # The field, its checks and the fit need no case machinery: they live in thermogear.temperature_field so that the
 # case loader can run them at load time; re-exported here, where the rest of the thermal model looks for them.
@@ -55,11 +57,10 @@ def temperature_field_from_case(case: "Case") -> TemperatureField:
     if section.model in ("uniform", "tabulated"):
         field = temperature_field_from_section(section, case.directory)
     else:
-        provider = _PROVIDERS.get(section.model)
+        provider = _PROVIDERS.get(section.model) or builtin(TEMPERATURE_PROVIDERS, section.model)
         if provider is None:
             raise ThermogearError(f"temperature.model = '{section.model}': the finite-element bulk-temperature "
-                                  "model is not registered (importing thermogear.simulation or thermogear.fem.provider "
-                                  "registers it); use "
+                                  "model is not registered (its module is not installed); use "
                                   "'uniform' or 'tabulated'")
         field = provider(case)
     check_temperatures(field, gamma_start, gamma_end, _lubricant_data_maximum_c(case))

@@ -1,0 +1,64 @@
+"""Where the package is assembled: which module answers each pluggable name, declared once, as data.
+
+Some models are chosen by a name in the case file but live in a layer above the code that asks for them: the
+finite-element model is the ``"fem"`` source of the tooth temperatures and of X_te (asked for by
+:mod:`thermogear.thermal`), and the gearbox thermal network is the ``"gearbox"`` temperature model (its oil and
+housing temperatures predicted when the case is loaded, :mod:`thermogear.case`) with a load-time check of the
+``[gearbox]`` section. Registering them by importing their modules for the side effect made the result depend
+on what had been imported before (a mesh model of an ``"fem"`` case failed unless ``thermogear.simulation`` had
+been imported first).
+
+Design choice: the low layers keep their registries (``register_*`` functions, for models added by a user at run
+time, which take precedence), and on a miss look the name up in the tables below, importing the target when it is
+first asked for. Their import stays a run-time lookup by name, as an entry point is, so the layers contract
+(a low layer imports nothing above it) holds, and asking for a model never depends on import order. This module
+imports nothing of thermogear, so every layer may read it; adding a built-in provider is one line here.
+"""
+
+from __future__ import annotations
+
+import importlib
+from collections.abc import Callable
+
+#: ``[temperature] model`` name → the provider of its tooth temperature field, ``provider(case) -> TemperatureField``.
+TEMPERATURE_PROVIDERS: dict[str, str] = {
+    "fem": "thermogear.fem.provider:fem_temperature_field",
+    "gearbox": "thermogear.gearbox.provider:gearbox_temperature_field",
+}
+
+#: ``[thermal] x_te_source`` name → the provider of X_te, ``provider(case) -> float``.
+X_TE_PROVIDERS: dict[str, str] = {
+    "fem": "thermogear.fem.provider:fem_x_te",
+}
+
+#: ``[temperature] model`` name → the model that predicts the case's oil and housing temperatures at load time,
+#: ``resolver(case) -> Case``.
+TEMPERATURE_MODELS: dict[str, str] = {
+    "gearbox": "thermogear.gearbox.case_model:with_predicted_temperatures",
+}
+
+#: Load-time checks every case passes (after the built-in ones), ``check(case) -> None``.
+CASE_CHECKS: tuple[str, ...] = (
+    "thermogear.gearbox.case_model:check_gearbox_section",
+)
+
+
+def resolve(target: str) -> Callable | None:
+    """The callable a ``"package.module:attribute"`` target names, or None where that module or attribute is not
+    installed (the caller says what is missing, in its own words)."""
+    module_name, _, attribute = target.partition(":")
+    try:
+        module = importlib.import_module(module_name)
+    except ImportError:
+        return None
+    found = getattr(module, attribute, None)
+    return found if callable(found) else None
+
+
+def builtin(table: dict[str, str], name: str) -> Callable | None:
+    """The built-in callable registered under ``name`` in one of the tables above, or None."""
+    target = table.get(name)
+    return None if target is None else resolve(target)
+
+
+__all__ = ["CASE_CHECKS", "TEMPERATURE_MODELS", "TEMPERATURE_PROVIDERS", "X_TE_PROVIDERS", "builtin", "resolve"]
