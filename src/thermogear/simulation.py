@@ -1,9 +1,10 @@
 """The model chain of one operating point: case → mesh model → dynamics → response.
 
-``Simulation(case, model="thermal")`` wires the stages of design.md for the thermal model of Luo & Li (2020)
+``Simulation(case, model="thermal", solver=None)`` wires the stages of design.md for the thermal model of Luo & Li (2020)
 (k_T with c_r, Eq. 6) or the elastic one (k_e with c_e, Eq. 5). The elastic and thermal models are the same
 pipeline with different per-pair stiffness and damping; nothing here knows how either is computed: the
-:class:`~thermogear.mesh.model.MeshModel` gives the mesh period, a solver the response.
+:class:`~thermogear.mesh.model.MeshModel` gives the mesh period, a solver object the response (passed in, or the one
+the case's ``[dynamics]`` names, resolved once by :func:`solver_for`).
 """
 
 from __future__ import annotations
@@ -11,17 +12,20 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, replace
 from functools import cached_property
-from typing import Literal
+from typing import Callable, Literal
 
 import numpy as np
 
 from thermogear.case import Case
+from thermogear.dynamics.solvers import (BacklashShootingSolver, BacklashTransientSolver, PeriodicSolver, Solver,
+                                         TransientSolver)
 from thermogear.errors import CaseError
 from thermogear.mesh.model import MeshModel
 from thermogear.mesh.model_names import MODELS, Model
 from thermogear.mesh.state import MeshState
 
 Method = Literal["periodic", "transient"]
+METHODS: tuple[str, ...] = ("periodic", "transient")
 
 
 @dataclass(frozen=True)
@@ -37,11 +41,15 @@ class Simulation:
         the viscosity at the flank temperature).
     points_per_period:
         Intervals of the mesh-cycle grid; default from the case's [dynamics] section.
+    solver:
+        The dynamics solver (:mod:`thermogear.dynamics.solvers`); default the one the case's ``[dynamics]`` names
+        (:func:`solver_for`).
     """
 
     case: Case
     model: Model = "thermal"
     points_per_period: int | None = None
+    solver: Solver | None = None
 
     def __post_init__(self) -> None:
         if self.model not in MODELS:
@@ -107,14 +115,15 @@ class Simulation:
         """The gear-agnostic dynamics problem me·ẍ + c(τ)ẋ + k(τ)(x − e(τ)) = w over one mesh period."""
         return self.state.problem()
 
-    def run(self, method: Method | None = None, include_damping_force: bool | None = None):
+    def run(self, method: Method | None = None, include_damping_force: bool | None = None,
+            solver: Solver | None = None):
         """Solve the dynamics and return the response with the checks of a thermal result (``flags``).
 
         See :meth:`solve` for the methods."""
         from thermogear.load_capacity import load_flags
         from thermogear.mesh.plausibility import damping_ratio_flags, thermal_result_flags
 
-        response = self.solve(method, include_damping_force)
+        response = self.solve(method, include_damping_force, solver)
         response.metrics["damping_ratio"] = self.state.damping_ratio  # the solver's fresh dict: a gear quantity
         case = self.case
         flags = load_flags(case.gear_pair, case.material, case.operating_point.torque)  # a load no tooth carries
@@ -123,40 +132,41 @@ class Simulation:
             flags += thermal_result_flags(self.mesh_model, self.state, response.metrics)
         return replace(response, flags=flags)
 
-    def solve(self, method: Method | None = None, include_damping_force: bool | None = None):
+    def solve(self, method: Method | None = None, include_damping_force: bool | None = None,
+              solver: Solver | None = None):
         """Solve the dynamics and return the response.
 
-        Linear mesh (``[dynamics] mesh = "linear"``): ``"periodic"`` gives the exact periodic steady state
-        (Floquet/monodromy), ``"transient"`` the motion from rest (x = ẋ = 0, as the paper) over the case's number
-        of mesh periods with the compiled RK4 — a :class:`~thermogear.dynamics.response.DynamicResponse`.
-        Nonlinear mesh (the default): the steady response of the backlash model by shooting with the exact
-        event-driven integrator, with its branch — a :class:`~thermogear.dynamics.nonlinear_response.NonlinearResponse`.
+        The solver: ``solver`` if given, else the one a ``method`` string names (:func:`solver_for`), else the
+        simulation's own (``Simulation(..., solver=...)``), else the case's ``[dynamics]`` choice. A solver of the
+        backlash problem gets the mesh with backlash, a linear one the linear mesh (:mod:`thermogear.dynamics.solvers`).
         """
-        from thermogear.dynamics.response import response_from_orbit, response_from_transient
-
         dynamics = self.case.dynamics
-        method = method or dynamics.method
+        if solver is None:
+            solver = self.solver if method is None and self.solver is not None else solver_for(dynamics, method)
         damping_force = dynamics.include_damping_force if include_damping_force is None else include_damping_force
-        if method not in ("periodic", "transient"):
-            raise CaseError("method", method, "periodic | transient", "unknown solution method")
-        if dynamics.mesh == "nonlinear":
-            from thermogear.dynamics.nonlinear_response import nonlinear_response, nonlinear_transient
+        problem = self.state.backlash_problem(dynamics.damping_in_flight) if solver.backlash else self.problem
+        return solver.solve(problem, include_damping_force=damping_force, label=self.model)
 
-            problem = self.state.backlash_problem(dynamics.damping_in_flight)
-            if method == "transient":
-                return nonlinear_transient(problem, dynamics.transient_periods, dynamics.samples_per_interval,
-                                           label=self.model, include_damping_force=damping_force)
-            return nonlinear_response(problem, include_damping_force=damping_force, label=self.model,
-                                      samples_per_interval=dynamics.samples_per_interval)
-        if method == "periodic":
-            from thermogear.dynamics.periodic import periodic_steady_state
 
-            orbit = periodic_steady_state(self.problem, dynamics.samples_per_interval)
-            return response_from_orbit(self.problem, orbit, include_damping_force=damping_force, label=self.model)
-        from thermogear.dynamics.transient import transient_from_rest
+#: The solver of each (``[dynamics] mesh``, method) from the case's ``[dynamics]`` options: the one place a method
+#: name becomes a solver.
+_SOLVERS: dict[tuple[str, str], Callable[..., Solver]] = {
+    ("linear", "periodic"): lambda dynamics: PeriodicSolver(dynamics.samples_per_interval),
+    ("linear", "transient"): lambda dynamics: TransientSolver(dynamics.transient_periods),
+    ("nonlinear", "periodic"): lambda dynamics: BacklashShootingSolver(dynamics.samples_per_interval),
+    ("nonlinear", "transient"): lambda dynamics: BacklashTransientSolver(dynamics.transient_periods,
+                                                                        dynamics.samples_per_interval),
+}
 
-        history = transient_from_rest(self.problem, periods=dynamics.transient_periods)
-        return response_from_transient(self.problem, history, include_damping_force=damping_force, label=self.model)
+
+def solver_for(dynamics, method: str | None = None) -> Solver:
+    """The solver of a case's ``[dynamics]`` section for a method (``"periodic"`` or ``"transient"``; default the
+    section's own): the exact periodic steady state or the transient from rest, of the linear mesh or of the mesh
+    with backlash as ``[dynamics] mesh`` says."""
+    method = method or dynamics.method
+    if method not in METHODS:
+        raise CaseError("method", method, " | ".join(METHODS), "unknown solution method")
+    return _SOLVERS[(dynamics.mesh, method)](dynamics)
 
 
 def compare(case: Case, method: Method | None = None, points_per_period: int | None = None) -> dict:

@@ -10,9 +10,6 @@ from thermogear.cli.app import app, console, error_console, print_json
 from thermogear.report.terminal import interruptible
 from thermogear.errors import CaseError
 from thermogear.gearbox.case_model import prediction_note
-from thermogear.gearbox.provider import register as register_gearbox_model
-
-register_gearbox_model()  # [temperature].model = "gearbox" (the CLI is a composition root, as thermogear.simulation)
 
 _MODELS = {"elastic": ("elastic",), "thermal": ("thermal",), "both": ("elastic", "thermal")}
 
@@ -113,13 +110,14 @@ def run(
                   if f"{name} model" in outcome.evaluation.problems}
         thermoelastic = outcome.evaluation.thermoelastic_summary if "thermal" in models else None
     else:
-        from thermogear.simulation import Simulation
+        from thermogear.simulation import Simulation, solver_for
 
+        solver = solver_for(case.dynamics, method)  # the --method string, resolved once
         responses, failed = {}, {}
         with step_progress([f"{name} model" for name in models], quiet or as_json, error_console) as advance:
             for name in models:
                 advance(f"{name} model")
-                responses[name] = Simulation(case, name).run(method)
+                responses[name] = Simulation(case, name, solver=solver).run()
         thermoelastic = _thermoelastic_summary(case) if "thermal" in models else None
     messages = [text for name, response in responses.items() for text in model_messages(response, name)]
     if csv is not None:
