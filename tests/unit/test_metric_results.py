@@ -1,6 +1,6 @@
 """Typed metrics: the frozen dataclasses give back exactly the metrics dict they were built from.
 
-The consumers still read the dicts; the typed form must not change a key, the key order or a value (JSON written
+`thermogear run` reads the typed form; it must not change a key, the key order or a value (JSON written
 from either is identical), and must refuse a dict that is not the solver's (a missing or an unknown key).
 """
 
@@ -62,3 +62,21 @@ def test_a_dict_with_a_missing_or_unknown_key_is_refused():
         LinearMetrics.from_dict({key: value for key, value in metrics.items() if key != "valid"})
     with pytest.raises(ProblemError, match="unknown \\['extra'\\]"):
         LinearMetrics.from_dict({**metrics, "extra": 1.0})
+
+
+def test_typed_metrics_picks_the_kind_and_leaves_the_extra_keys_in_the_dict():
+    from thermogear.dynamics.metric_results import EXTRA_KEYS, typed_metrics
+
+    problem = _square_wave(0.3, 0.05)
+    metrics = response_from_orbit(problem, periodic_steady_state(problem)).metrics
+    extended = {**metrics, "damping_ratio": 0.05, "transient_periods": 3}  # as a simulation's transient gives it
+    typed = typed_metrics(extended)
+    assert type(typed) is LinearMetrics and _same_json(typed.as_dict(), metrics)
+    assert {"damping_ratio", "transient_periods"} <= EXTRA_KEYS
+    # the views shared with a nonlinear response: every pair in contact, one periodic orbit, no free flight
+    assert (typed.mesh, typed.response, typed.branch) == ("linear", "periodic", "unique")
+    assert typed.contact_loss_fraction is None and not typed.back_side_contact and not typed.coexisting_orbits
+    nonlinear = nonlinear_response(textbook_problem(0.5, 0.05), check_coexistence=False).metrics
+    assert type(typed_metrics(nonlinear)) is NonlinearMetrics
+    with pytest.raises(ProblemError, match="unknown \\['extra'\\]"):
+        typed_metrics({**metrics, "extra": 1.0})

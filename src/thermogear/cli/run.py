@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import typer
 
@@ -11,6 +12,9 @@ from thermogear.report.terminal import interruptible
 from thermogear.errors import CaseError
 from thermogear.gearbox.case_model import prediction_note
 
+if TYPE_CHECKING:
+    from thermogear.dynamics.metric_results import LinearMetrics, NonlinearMetrics
+
 _MODELS = {"elastic": ("elastic",), "thermal": ("thermal",), "both": ("elastic", "thermal")}
 
 
@@ -18,46 +22,47 @@ def model_json(response) -> dict:
     """The JSON object of one model (issue 5): loads per unit width, displacements in μm, stability, messages."""
     from thermogear.report.evaluate import model_messages
 
+    from thermogear.dynamics.metric_results import typed_metrics
     from thermogear.serialization import json_ready
 
-    m = response.metrics
-    regions = list(m["equilibrium_per_region"])
+    metrics = typed_metrics(response.metrics)
+    regions = list(metrics.equilibrium_per_region)
     return json_ready({  # a number that could not be computed (no orbit, a region never reached) is null
-        "status": response_status(m),
-        "kv": m["kv"],
-        "max_pair_load_n_per_mm": m["max_pair_load_n_per_mm"],
-        "max_system_load_n_per_mm": m["max_system_load_n_per_mm"],
-        "max_system_load_ratio": m["max_system_load_ratio"],
-        "static_load_n_per_mm": m["static_load_n_per_mm"],
-        "equilibrium_um": {region: m["equilibrium_per_region"][region] * 1e6 for region in regions},
-        "amplitude_um": {region: m["amplitude_per_region"][region] * 1e6 for region in regions},
-        "natural_frequency_hz": m["natural_frequency_hz"],
-        "damping_ratio": m.get("damping_ratio"),
-        "mesh_frequency_hz": m["mesh_frequency_hz"],
-        "frequency_ratio": m["frequency_ratio"],
-        "floquet_multipliers_abs": m["floquet_multipliers_abs"],
-        "stable": m["stable"],
-        "contact_loss": bool(m["contact_loss"]["detected"]),
-        "valid": m["valid"],
-        "mesh": m.get("mesh", "linear"),
-        "contact_loss_fraction": m.get("contact_loss_fraction"),
-        "back_side_contact": m.get("back_side_contact", False),
-        "response": m.get("response", "periodic"),
-        "branch": m.get("branch", "unique"),
-        "coexisting_orbits": m.get("coexisting_orbits", False),
-        "dte_peak_to_peak_um": m["dte_peak_to_peak"] * 1e6,
-        "dte_rms_um": m["dte_rms"] * 1e6,
+        "status": response_status(metrics),
+        "kv": metrics.kv,
+        "max_pair_load_n_per_mm": metrics.max_pair_load_n_per_mm,
+        "max_system_load_n_per_mm": metrics.max_system_load_n_per_mm,
+        "max_system_load_ratio": metrics.max_system_load_ratio,
+        "static_load_n_per_mm": metrics.static_load_n_per_mm,
+        "equilibrium_um": {region: metrics.equilibrium_per_region[region] * 1e6 for region in regions},
+        "amplitude_um": {region: metrics.amplitude_per_region[region] * 1e6 for region in regions},
+        "natural_frequency_hz": metrics.natural_frequency_hz,
+        "damping_ratio": response.metrics.get("damping_ratio"),  # added by the simulation (a gear quantity)
+        "mesh_frequency_hz": metrics.mesh_frequency_hz,
+        "frequency_ratio": metrics.frequency_ratio,
+        "floquet_multipliers_abs": metrics.floquet_multipliers_abs,
+        "stable": metrics.stable,
+        "contact_loss": bool(metrics.contact_loss.detected),
+        "valid": metrics.valid,
+        "mesh": metrics.mesh,
+        "contact_loss_fraction": metrics.contact_loss_fraction,
+        "back_side_contact": metrics.back_side_contact,
+        "response": metrics.response,
+        "branch": metrics.branch,
+        "coexisting_orbits": metrics.coexisting_orbits,
+        "dte_peak_to_peak_um": metrics.dte_peak_to_peak * 1e6,
+        "dte_rms_um": metrics.dte_rms * 1e6,
         "method": response.method,
         "messages": model_messages(response, response.label or ""),
     }, non_finite="null")
 
 
-def response_status(metrics) -> str:
+def response_status(metrics: LinearMetrics | NonlinearMetrics) -> str:
     """One word for what the model found: ``"valid"`` (a steady orbit, stable, inside the model's limits),
     ``"non-periodic"`` (no repeating orbit: the metrics describe the recorded periods) or ``"not valid"``."""
-    if metrics["valid"]:
+    if metrics.valid:
         return "valid"
-    return "non-periodic" if metrics.get("response") == "non-periodic" else "not valid"
+    return "non-periodic" if metrics.response == "non-periodic" else "not valid"
 
 
 @app.command()

@@ -1,4 +1,5 @@
-"""The metrics of a response as frozen dataclasses (typed results), beside the dicts the consumers read today.
+"""The metrics of a response as frozen dataclasses (typed results); ``thermogear run`` writes its JSON and table
+from them (:func:`typed_metrics`), other consumers still read the dicts.
 
 :func:`~thermogear.dynamics.metrics.compute_metrics` (linear response) and the nonlinear response's metrics are
 dicts read key by key; :class:`LinearMetrics` and :class:`NonlinearMetrics` hold the same values as typed, frozen
@@ -19,7 +20,12 @@ from typing import Any
 
 from thermogear.errors import ProblemError
 
-__all__ = ["ContactLoss", "LinearMetrics", "NonlinearContactLoss", "NonlinearMetrics"]
+__all__ = ["ContactLoss", "EXTRA_KEYS", "LinearMetrics", "NonlinearContactLoss", "NonlinearMetrics", "typed_metrics"]
+
+#: Keys a response's metrics dict may carry beside the typed metrics: a transient's bookkeeping (periods run, the
+#: change over the last period, the largest |ẋ| from rest) and the damping ratio the simulation adds.
+EXTRA_KEYS = frozenset({"transient_periods", "transient_last_period_change", "max_velocity_from_rest",
+                        "damping_ratio"})
 
 
 def _frozen(value: Any) -> Any:
@@ -116,6 +122,32 @@ class LinearMetrics(_MetricRecord):
 
     _nested = {"contact_loss": ContactLoss}
 
+    # the views a nonlinear response gives, as a linear response has them: every pair in contact, one orbit
+    @property
+    def mesh(self) -> str:
+        return "linear"
+
+    @property
+    def contact_loss_fraction(self) -> None:
+        """None: the linear model has no free flight (its contact loss is a negative mesh force)."""
+        return None
+
+    @property
+    def back_side_contact(self) -> bool:
+        return False
+
+    @property
+    def response(self) -> str:
+        return "periodic"
+
+    @property
+    def branch(self) -> str:
+        return "unique"
+
+    @property
+    def coexisting_orbits(self) -> bool:
+        return False
+
 
 @dataclass(frozen=True)
 class NonlinearContactLoss(_MetricRecord):
@@ -177,3 +209,10 @@ class NonlinearMetrics(_MetricRecord):
     valid: bool
 
     _nested = {"contact_loss": NonlinearContactLoss}
+
+
+def typed_metrics(metrics: Mapping[str, Any]) -> LinearMetrics | NonlinearMetrics:
+    """The typed metrics of a response's metrics dict (nonlinear where its ``mesh`` says so), the keys of
+    ``EXTRA_KEYS`` left in the dict."""
+    kind = NonlinearMetrics if metrics.get("mesh") == "nonlinear" else LinearMetrics
+    return kind.from_dict({key: value for key, value in metrics.items() if key not in EXTRA_KEYS})
