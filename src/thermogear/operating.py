@@ -29,6 +29,17 @@ class OperatingPoint:
             return self.power / self.angular_speed_of(speed_rpm)
         return self.torque
 
+    def torques_at(self, speeds_rpm):
+        """:meth:`torque_at` at many pinion speeds [rpm] at once (an array of T1 [N m], each element equal to
+        ``torque_at`` at that speed: the same operations in the same order)."""
+        import numpy as np
+
+        speeds = np.asarray(speeds_rpm, dtype=float)
+        if not self.constant_power:
+            return np.full(speeds.shape, float(self.torque))
+        with np.errstate(divide="ignore"):
+            return np.where(speeds != self.speed_rpm, self.power / self.angular_speed_of(speeds), self.torque)
+
     @property
     def load_held(self) -> str:
         """Which load the mesh model keeps when the speed changes: ``"constant power"`` (the load was given as a

@@ -110,3 +110,15 @@ def test_a_fourth_model_is_one_class_and_one_registry_line(luo2019, monkeypatch)
     doubled = MeshModel(luo2019, "thermal").state(points_per_period=64, damping=False)
     elastic = MeshModel(luo2019, "elastic").state(points_per_period=64, damping=False)
     np.testing.assert_allclose(doubled.mesh_stiffness, 2.0 * elastic.mesh_stiffness, rtol=1e-12)
+
+
+@pytest.mark.parametrize("load", [{}, {"operating.power_kw": None, "operating.torque_nm": 380.0}])
+def test_normal_loads_at_many_speeds_equal_the_one_by_one_loads(luo2019, load):
+    # speed and load from one place (the operating point): the vectorised path is the scalar one, bit for bit,
+    # under a power (w ∝ 1/n1, the case's own speed giving its own torque) and under a torque
+    case = luo2019.with_changes(**load) if load else luo2019
+    mesh = MeshModel(case, "elastic")
+    speeds = np.array([500.0, 1234.5, case.operating_point.speed_rpm, 6000.0])
+    loads = mesh.normal_loads(speeds)
+    assert loads.tolist() == [mesh.normal_load(speed) for speed in speeds]
+    assert case.operating_point.constant_power == (not load)

@@ -156,6 +156,10 @@ class MeshModel:
         speed = operating.speed_rpm if speed_rpm is None else float(speed_rpm)
         return operating.torque_at(speed) / self.gear_pair.pinion.base_radius
 
+    def normal_loads(self, speeds_rpm) -> np.ndarray:
+        """:meth:`normal_load` [N] at many pinion speeds [rpm] in one pass (each element equal to it)."""
+        return self.case.operating_point.torques_at(speeds_rpm) / self.gear_pair.pinion.base_radius
+
     def mesh_period(self, speed_rpm: float) -> float:
         """T_m = 60/(z1·n1) [s]."""
         return self.gear_pair.mesh_period(speed_rpm)

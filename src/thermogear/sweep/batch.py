@@ -204,7 +204,7 @@ def evaluate_group(mesh: MeshModel, speeds_rpm, reference: GroupTables | None = 
     differ from it only in load. ``reference``: tables of the same case at another load, where
     :func:`load_scaled_tables` lets them serve every load."""
     speeds = np.asarray(speeds_rpm, dtype=float)
-    loads = _normal_loads(mesh, speeds) if loads is None else np.asarray(loads, dtype=float)
+    loads = mesh.normal_loads(speeds) if loads is None else np.asarray(loads, dtype=float)
     if load_scaled_tables(mesh):
         reference = reference if reference is not None else group_tables(mesh)
         return None if reference is None else evaluate_loads(reference, speeds, loads)
@@ -218,23 +218,6 @@ def evaluate_group(mesh: MeshModel, speeds_rpm, reference: GroupTables | None = 
         for name, array in values.items():
             result.setdefault(name, np.empty(speeds.shape, dtype=array.dtype))[members] = array
     return result
-
-
-def _normal_loads(mesh: MeshModel, speeds: np.ndarray) -> np.ndarray:
-    """``mesh.normal_load`` [N] at many speeds [rpm] in one pass: w = T1(n1)/r_b1, the operating point's torque, or
-    its power over ω1 away from its own speed (``OperatingPoint.torque_at``). Checked against the mesh model at
-    the first and last speeds; where they differ by a bit, every speed is asked one by one."""
-    operating = mesh.case.operating_point
-    if operating.constant_power:
-        with np.errstate(divide="ignore"):
-            torque = np.where(speeds != operating.speed_rpm, operating.power / operating.angular_speed_of(speeds),
-                              operating.torque)
-    else:
-        torque = np.full(speeds.shape, float(operating.torque))
-    loads = torque / mesh.gear_pair.pinion.base_radius
-    if speeds.size and all(loads.flat[index] == mesh.normal_load(float(speeds.flat[index])) for index in (0, -1)):
-        return loads
-    return np.array([mesh.normal_load(float(speed)) for speed in speeds.flat]).reshape(speeds.shape)
 
 
 # ------------------------------------------------------------------------------------------- slow path
@@ -336,7 +319,7 @@ def _evaluate_model(study, method, shared, group_case, model, model_index, value
         if key not in shared:
             shared[key] = (mesh, group_tables(mesh) if load_scaled_tables(mesh) else None)
         first, tables = shared[key]
-        group = evaluate_group(first, speeds, tables, loads=_normal_loads(mesh, speeds))
+        group = evaluate_group(first, speeds, tables, loads=mesh.normal_loads(speeds))
         if group is not None:
             _store(result, group, model_index, indices)
             return

@@ -1,0 +1,55 @@
+"""How many functions take a whole Case: the count may only fall (issue 26: physics functions and components take
+the small frozen inputs a case resolves into, not the Case).
+
+A function takes a whole case when one of its parameters is annotated ``Case`` (or ``"Case"``) or is named
+``case``. The scan reads the source (AST), so it counts nested functions and methods too.
+"""
+
+from __future__ import annotations
+
+import ast
+from pathlib import Path
+
+SOURCE = Path(__file__).resolve().parents[2] / "src" / "thermogear"
+
+#: Upper bound on the functions taking a whole Case. Lower it when a change brings the count down; never raise it
+#: (a new function takes the inputs it needs: thermogear.case_inputs).
+MAXIMUM_CASE_READERS = 1000
+
+
+def _takes_case(argument: ast.arg) -> bool:
+    annotation = argument.annotation
+    if isinstance(annotation, ast.Constant) and isinstance(annotation.value, str):
+        name = annotation.value.strip()
+    elif annotation is not None:
+        name = ast.unparse(annotation)
+    else:
+        name = ""
+    return argument.arg == "case" or name in ("Case", "thermogear.case.Case")
+
+
+def case_readers(source: Path = SOURCE) -> list[str]:
+    """``module:function`` of every function with a parameter that is a whole Case."""
+    found = []
+    for path in sorted(source.rglob("*.py")):
+        tree = ast.parse(path.read_text(encoding="utf-8"))
+        for node in ast.walk(tree):
+            if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda)):
+                arguments = node.args
+                every = [*arguments.posonlyargs, *arguments.args, *arguments.kwonlyargs]
+                if any(_takes_case(argument) for argument in every):
+                    name = getattr(node, "name", "<lambda>")
+                    found.append(f"{path.relative_to(source).with_suffix('')}:{name}:{node.lineno}")
+    return found
+
+
+def test_functions_taking_a_whole_case_do_not_grow():
+    readers = case_readers()
+    assert len(readers) <= MAXIMUM_CASE_READERS, "\n".join(readers)
+
+
+def test_the_scan_finds_a_case_parameter(tmp_path):
+    # the count can fail: each of the three spellings is found, a function without one is not
+    (tmp_path / "module.py").write_text("def a(case): ...\ndef b(x: 'Case'): ...\ndef c(x: Case): ...\n"
+                                        "def d(x: int, cases=None): ...\n", encoding="utf-8")
+    assert [item.split(":")[1] for item in case_readers(tmp_path)] == ["a", "b", "c"]
