@@ -5,7 +5,6 @@ a JSON result"), and the table says "not found" (it said "steady orbit found: ye
 from __future__ import annotations
 
 import json
-from types import SimpleNamespace
 
 import numpy as np
 import pytest
@@ -41,7 +40,7 @@ def test_the_table_says_not_found_for_a_non_periodic_response(response):
     from rich.console import Console
 
     console = Console(record=True, width=140, color_system=None)
-    _print_table(SimpleNamespace(name="textbook"), {"elastic": response}, console)
+    _print_table("textbook", {"elastic": response}, console)
     text = console.export_text()
     assert "nan" not in text.lower().replace("not found", "")
     row = next(line for line in text.splitlines() if "steady orbit found" in line)

@@ -150,22 +150,22 @@ def run(
             print_messages(messages, error_console)
         else:
             print_summary(outcome, console)
-            console.print(_load_held_line(case))
+            console.print(_load_held_line(case.operating_point))
             print_notes(case.notes, console)
         for name, reason in failed.items():
             error_console.print(f"{name} model not computed: {reason}", highlight=False)
         return
-    _print_table(case, responses, console, thermoelastic)
-    console.print(_load_held_line(case))
+    _print_table(case.name, responses, console, thermoelastic)
+    console.print(_load_held_line(case.operating_point))
     print_notes(case.notes, console)
     if prediction_note(case):
         console.print(prediction_note(case), highlight=False)
     print_messages(messages, console)
 
 
-def _load_held_line(case) -> str:
+def _load_held_line(operating_point) -> str:
     """``load held: constant torque|power`` with where it comes from (the same words as the sweep's)."""
-    held = case.operating_point.load_held
+    held = operating_point.load_held
     source = "the case gives power_kw" if held == "constant power" else "the case gives the torque"
     return f"load held: {held} ({source})"
 
@@ -182,10 +182,10 @@ def _thermoelastic_summary(case) -> dict | None:
     return thermoelastic_summary(case)
 
 
-def _print_table(case, responses, console, thermoelastic: dict | None = None) -> None:
+def _print_table(case_name: str, responses, console, thermoelastic: dict | None = None) -> None:
     from rich.table import Table
 
-    table = Table(title=f"{case.name}: dynamics ({', '.join(responses)})", header_style="bold")
+    table = Table(title=f"{case_name}: dynamics ({', '.join(responses)})", header_style="bold")
     table.add_column("quantity")
     for name in responses:
         table.add_column(name, justify="right")

@@ -258,14 +258,14 @@ PAIR_MODELS: dict[str, type[PairModelBase]] = {
 }
 
 
-def pair_model_name(case: "Case", model: str) -> str:
-    """The pair model a simulation model means for a case: ``"elastic"``, or the case's ``[thermal] model``."""
-    return ElasticPair.name if model == ElasticPair.name else case.thermal.model
+def pair_model_name(model: str, thermal_model: str) -> str:
+    """The pair model a simulation model means: ``"elastic"``, or the case's ``[thermal] model`` for ``"thermal"``."""
+    return ElasticPair.name if model == ElasticPair.name else thermal_model
 
 
 def pair_model_for(case: "Case", model: str) -> PairModelBase:
     """The one place a model name becomes a pair model (``model``: ``"elastic"`` or ``"thermal"``)."""
-    name = pair_model_name(case, model)
+    name = pair_model_name(model, case.thermal.model)
     if name not in PAIR_MODELS:
         raise CaseError("thermal.model", name, " | ".join(PAIR_MODELS), "no pair model of this name")
     return PAIR_MODELS[name](case)
