@@ -84,14 +84,22 @@ def test_thermoelastic_pair_meshes_on_the_hot_pair(luo2019):
     assert pair.load_shares_depend_on_load and pair.damping_uses_pair_stiffness
 
 
-def test_the_mesh_model_never_tests_a_model_name():
-    # the seam's promise: mesh/model.py compares no string with a model name (they live in pair_models.py)
+def _compared_model_names(path: Path) -> list[str]:
     names = set(PAIR_MODELS) | {"thermal"}
-    tree = ast.parse((MESH / "model.py").read_text(encoding="utf-8"))
+    tree = ast.parse(path.read_text(encoding="utf-8"))
     operands = [operand for node in ast.walk(tree) if isinstance(node, ast.Compare)
                 for operand in (node.left, *node.comparators)]
-    compared = [operand.value for operand in operands if isinstance(operand, ast.Constant) and operand.value in names]
-    assert compared == ["thermal"]  # the one question "is this the thermal model?" (MeshModel.thermal)
+    return [operand.value for operand in operands if isinstance(operand, ast.Constant) and operand.value in names]
+
+
+def test_the_mesh_model_and_its_checks_never_test_a_model_name(tmp_path):
+    # the seam's promise: the mesh model and its result checks compare no string with a pair model's name (the
+    # per-model answers live in pair_models.py)
+    assert _compared_model_names(MESH / "model.py") == ["thermal"]  # the one "is this the thermal model?"
+    assert _compared_model_names(MESH / "plausibility.py") == []
+    planted = tmp_path / "planted.py"  # the scan can fail: a planted test of a model name is found
+    planted.write_text('if mesh.thermal_model == "luo2020":\n    pass\n', encoding="utf-8")
+    assert _compared_model_names(planted) == ["luo2020"]
 
 
 @dataclass(frozen=True, eq=False)

@@ -21,13 +21,15 @@ Adding a model is one subclass of :class:`PairModelBase` overriding what differs
 
 from __future__ import annotations
 
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from functools import cached_property
-from typing import TYPE_CHECKING, ClassVar, Protocol
+from typing import TYPE_CHECKING, Any, ClassVar, Protocol
 
 import numpy as np
 
 from thermogear.errors import CaseError
+from thermogear.mesh.secant_checks import secant_stiffness_drop_flag, secant_stiffness_in_nonlinear_mesh
 from thermogear.stiffness.table import pair_stiffness_at
 from thermogear.thermal.case_stiffness import thermal_pair_stiffness_at
 from thermogear.thermal.temperature import TemperatureField, temperature_field_from_case
@@ -62,6 +64,8 @@ class PairModel(Protocol):
     def pair_deviation_at(self, roll) -> np.ndarray: ...
     def flank_gamma(self, roll) -> np.ndarray: ...
     def friction_temperature_c(self, gamma) -> np.ndarray: ...
+    def result_flags(self, mean_stiffness: float, metrics: Mapping[str, Any],
+                     elastic_mean_stiffness: Callable[[], float]) -> list[str]: ...
 
 
 @dataclass(frozen=True, eq=False)
@@ -143,6 +147,13 @@ class PairModelBase:
         """Contact position Γ on the flanks as built of the contact at roll distances [m]."""
         return np.asarray(self.gear_pair.gamma(np.asarray(roll, dtype=float)), dtype=float)
 
+    def result_flags(self, mean_stiffness: float, metrics: Mapping[str, Any],
+                     elastic_mean_stiffness: Callable[[], float]) -> list[str]:
+        """Findings of this model that make a result doubtful, in words: ``mean_stiffness`` the result's mean mesh
+        stiffness [N/m], ``metrics`` its metrics, ``elastic_mean_stiffness()`` the elastic model's at the same point
+        (computed only where a model asks). None here."""
+        return []
+
     def friction_temperature_c(self, gamma) -> np.ndarray:
         """Oil temperature of the friction formula [°C]: the mean of the pinion and wheel flank temperatures."""
         field = self.temperature
@@ -203,6 +214,17 @@ class Luo2020Pair(PairModelBase):
     def pair_deviation_at(self, roll) -> np.ndarray:
         return np.zeros(np.shape(roll))
 
+    def result_flags(self, mean_stiffness: float, metrics: Mapping[str, Any],
+                     elastic_mean_stiffness: Callable[[], float]) -> list[str]:
+        """A stiffness drop beyond what E(T) explains (it rests on X_te), and k_T used by the nonlinear mesh."""
+        flags = []
+        drop = secant_stiffness_drop_flag(self.temperature, mean_stiffness, elastic_mean_stiffness())
+        if drop is not None:
+            flags.append(drop)
+        if metrics.get("mesh") == "nonlinear":
+            flags.append(secant_stiffness_in_nonlinear_mesh(metrics.get("contact_loss_fraction") or 0.0))
+        return flags
+
 
 @dataclass(frozen=True, eq=False)
 class ThermoelasticPair(PairModelBase):
@@ -239,6 +261,11 @@ class ThermoelasticPair(PairModelBase):
     def backlash(self) -> float:
         """Normal backlash at temperature [m]."""
         return self.thermoelastic_mesh.backlash_normal
+
+    def result_flags(self, mean_stiffness: float, metrics: Mapping[str, Any],
+                     elastic_mean_stiffness: Callable[[], float]) -> list[str]:
+        """The component's own plausibility findings (jamming margin, hot contact ratio, unexplained stiffness)."""
+        return list(self.thermoelastic_mesh.plausibility)
 
     def flank_gamma(self, roll) -> np.ndarray:
         """Γ on the flanks as built of the contact at roll distances of the hot pair: the hot pinion has grown by its
