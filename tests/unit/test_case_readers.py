@@ -12,10 +12,10 @@ from pathlib import Path
 
 SOURCE = Path(__file__).resolve().parents[2] / "src" / "thermogear"
 
-#: Upper bound on the functions taking a whole Case: 109 at bff64a9, 108 after the pair-model seam. Lower it when a
+#: Upper bound on the functions taking a whole Case: 109 at bff64a9, 107 after the pair-model seam. Lower it when a
 #: change brings the count down; never raise it (a new function takes the resolved inputs it needs: the gear pair,
 #: the operating point, a section, not the Case).
-MAXIMUM_CASE_READERS = 108
+MAXIMUM_CASE_READERS = 107
 
 
 def _takes_case(argument: ast.arg) -> bool:

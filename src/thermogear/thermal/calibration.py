@@ -21,7 +21,7 @@ from thermogear.case import cached_per_case
 from thermogear.composition import X_TE_PROVIDERS, builtin
 from thermogear.errors import CaseError, ThermogearError
 from thermogear.stiffness.potential_energy import pair_compliance
-from thermogear.thermal.case_inputs import expansion_for_case, normal_load_for_case
+from thermogear.thermal.case_inputs import PaperThermalInputs
 from thermogear.thermal.stiffness import check_x_te
 from thermogear.thermal.temperature import TemperatureField, temperature_field_from_case
 
@@ -89,8 +89,10 @@ def calibrate_x_te(case: "Case", drop_percent: float | None = None, point: str |
     roll = np.array([points[point]])
     elastic = pair_compliance(case.gear_pair, case.material, roll)
     stiffness = np.asarray(elastic.stiffness, dtype=float)
-    expansion_pinion, expansion_wheel = expansion_for_case(case, roll, temperature)
-    load = normal_load_for_case(case, roll, basis, external_load=normal_load)
+    inputs = PaperThermalInputs.from_case(case)
+    temperature = temperature_field_from_case(case) if temperature is None else temperature
+    expansion_pinion, expansion_wheel = inputs.expansion(roll, temperature)
+    load = inputs.normal_load_at(roll, basis, external_load=normal_load)
     x_te = float(np.ravel(x_te_for_drop(drop_percent, load, stiffness, expansion_pinion + expansion_wheel))[0])
     return Calibration(x_te=x_te, point=point, gamma=float(case.gear_pair.gamma(points[point])),
                        drop_percent=float(drop_percent), load_basis=basis)

@@ -18,7 +18,7 @@ from thermogear.case import cached_per_case
 from thermogear.stiffness.potential_energy import pair_compliance
 from thermogear.stiffness.table import pair_compliance_table, tooth_compliance_at
 from thermogear.thermal.calibration import resolve_x_te
-from thermogear.thermal.case_inputs import expansion_for_case, normal_load_for_case
+from thermogear.thermal.case_inputs import PaperThermalInputs
 from thermogear.thermal.stiffness import (CONTACT_TOLERANCE, ThermalStiffness, check_x_te, thermal_pair_stiffness)
 from thermogear.thermal.temperature import TemperatureField, temperature_field_from_case
 
@@ -46,8 +46,9 @@ def thermal_stiffness(case: "Case", roll, x_te: float | None = None, load_basis:
         check_x_te(x_te)
         source = "given (argument)"
     elastic = pair_compliance(case.gear_pair, case.material, roll)
-    expansion_pinion, expansion_wheel = expansion_for_case(case, roll, temperature)
-    load = normal_load_for_case(case, roll, basis, external_load=normal_load)
+    inputs = PaperThermalInputs.from_case(case)
+    expansion_pinion, expansion_wheel = inputs.expansion(roll, temperature)
+    load = inputs.normal_load_at(roll, basis, external_load=normal_load)
     return ThermalStiffness(roll=roll, gamma=np.asarray(case.gear_pair.gamma(roll)), elastic=elastic,
                             expansion_pinion=np.asarray(expansion_pinion), expansion_wheel=np.asarray(expansion_wheel),
                             x_te=float(x_te), x_te_source=source, load_basis=basis, normal_load=load,
@@ -82,8 +83,9 @@ def _thermal_pair_stiffness_direct(case: "Case", roll: np.ndarray, x_te: float |
         x_te, _ = resolve_x_te(case, normal_load=normal_load)
     check_x_te(x_te)
     pinion, wheel = tooth_compliance_at(case.gear_pair, case.material, roll)
-    expansion_pinion, expansion_wheel = expansion_for_case(case, roll, temperature)
-    load = normal_load_for_case(case, roll, external_load=normal_load)
+    inputs = PaperThermalInputs.from_case(case)
+    expansion_pinion, expansion_wheel = inputs.expansion(roll, temperature)
+    load = inputs.normal_load_at(roll, external_load=normal_load)
     return thermal_pair_stiffness(pinion, wheel, expansion_pinion, expansion_wheel, load, x_te).stiffness
 
 
