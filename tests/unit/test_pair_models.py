@@ -130,3 +130,14 @@ def test_normal_loads_at_many_speeds_equal_the_one_by_one_loads(luo2019, load):
     loads = mesh.normal_loads(speeds)
     assert loads.tolist() == [mesh.normal_load(speed) for speed in speeds]
     assert case.operating_point.constant_power == (not load)
+
+
+def test_every_thermal_model_the_schema_allows_has_a_pair_model():
+    # the case file's [thermal] model names and the registry must agree (the schema sits below the mesh model and
+    # cannot import the registry; this test keeps the two lists one)
+    import typing
+
+    from thermogear.schema.thermal import ThermalSection
+
+    allowed = set(typing.get_args(ThermalSection.model_fields["model"].annotation))
+    assert allowed | {"elastic"} == set(PAIR_MODELS)
