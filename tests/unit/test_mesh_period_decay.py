@@ -15,7 +15,8 @@ def _problem(single_damping: float, double_damping: float, contact_ratio: float 
 
 
 def test_hand_value_of_a_square_wave():
-    # double contact for (ε − 1) of the period, single for (2 − ε): c̄ = 0.6·400 + 0.4·300 = 360 N·s/m; me 0.5 kg
+    # double contact for (ε − 1) of the period, single for (2 − ε): c̄ = 0.6·400 + 0.4·300 = 360 N·s/m;
+    # me = 0.5 kg
     assert _problem(300.0, 400.0).mean_decay_rate == pytest.approx(360.0 / (2 * 0.5), rel=1e-12)
 
 

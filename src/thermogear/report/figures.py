@@ -176,7 +176,8 @@ def _damping_figure(evaluation, model: str):
     if reference is not None:
         paper = reference.mean_damping_n_s_per_m[model]
         for region, style in (("single", "-."), ("double", ":")):
-            right.axhline(paper[region], color="k", ls=style, lw=0.8, label=f"paper mean, {region}: {paper[region]:.3g}")
+            right.axhline(paper[region], color="k", ls=style, lw=0.8,
+                          label=f"paper mean, {region}: {paper[region]:.3g}")
     right.set_xlabel("time τ [ms]")
     right.set_ylabel("mesh damping [N·s/m]")
     right.set_title("mesh cycle")
