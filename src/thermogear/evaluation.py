@@ -48,7 +48,7 @@ def is_paper_case(case) -> bool:
     numbers beside the case's. Decided by the case's content, never by its name: a renamed copy of the paper's
     parameter set that keeps its citation keeps the comparison; a pair of one's own that does not cite the paper
     never gets it."""
-    return cited_in(getattr(case, "citation", None), PAPER_REFERENCE)
+    return cited_in(case.citation, PAPER_REFERENCE)
 
 
 @dataclass

@@ -78,3 +78,13 @@ def test_a_renamed_copy_of_the_paper_case_is_the_paper_case(tmp_path):
     assert is_paper_case(copy) and paper_reference(copy) is not None
     assert not is_paper_case(own) and paper_reference(own) is None
     assert not is_paper_case(load_case("fzg_type_c"))
+
+
+def test_a_citation_names_a_reference_by_its_doi_only():
+    from thermogear.citations import cited_in, reference
+
+    doi = reference("luo2020").doi
+    assert cited_in(f"Luo & Li, EFA (2020), doi:{doi.upper()}", "luo2020")  # DOIs compare without case
+    assert not cited_in("B. Luo, W. Li, Investigation on the influence of heat ... (2020)", "luo2020")  # no DOI
+    assert not cited_in("", "luo2020") and not cited_in(None, "luo2020")
+    assert reference("iso6336_1").doi == "" and not cited_in("ISO 6336-1:2019", "iso6336_1")  # no DOI: never
