@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-__all__ = ["Reference", "REFERENCES", "cite", "citations_used", "clear_citations", "reference"]
+__all__ = ["Reference", "REFERENCES", "cite", "cited_in", "citations_used", "clear_citations", "reference"]
 
 
 @dataclass(frozen=True)
@@ -98,6 +98,14 @@ def reference(key: str) -> Reference:
         suggestion = closest_key(key, list(REFERENCES))
         hint = f" (did you mean '{suggestion}'?)" if suggestion else ""
         raise KeyError(f"unknown reference key '{key}'{hint}") from None
+
+
+def cited_in(text: str | None, key: str) -> bool:
+    """True when ``text`` (a case's ``[case] citation``) names the reference ``key`` by its DOI (DOIs compare
+    without regard to case, as the DOI Handbook §2.4 specifies). A reference without a DOI is never recognised
+    in a text: a title or an author list is too easily quoted by a case that is not that source's data."""
+    doi = reference(key).doi
+    return bool(doi) and bool(text) and doi.lower() in str(text).lower()
 
 
 def cite(*keys: str) -> None:

@@ -17,11 +17,11 @@ from typing import Any, Callable
 import numpy as np
 
 from thermogear import forked
-from thermogear.citations import cite
+from thermogear.citations import cite, cited_in
 from thermogear.mesh.model_names import MODELS
 from thermogear.warning_causes import warning_text
 
-__all__ = ["Evaluation", "MODELS", "STEPS", "evaluate_case", "finish_evaluation", "is_paper_case",
+__all__ = ["Evaluation", "MODELS", "PAPER_REFERENCE", "STEPS", "evaluate_case", "finish_evaluation", "is_paper_case",
            "thermoelastic_beside_paper", "uses_paper_thermal_stiffness"]
 
 
@@ -38,9 +38,17 @@ def uses_paper_thermal_stiffness(case) -> bool:
     return MeshModel(case, "thermal").thermal_model == "luo2020"
 
 
+#: The reference key (:mod:`thermogear.citations`) of the paper whose numbers the paper table holds.
+PAPER_REFERENCE = "luo2020"
+
+
 def is_paper_case(case) -> bool:
-    """True for the paper's own case (the report then has the paper column)."""
-    return case.name == "luo2019"
+    """True for a parameter set of Luo & Li (2020): its ``[case] citation`` carries the paper's DOI. Then the
+    report has the paper column, the FE verification and the rig trend run, and the commands show the paper's
+    numbers beside the case's. Decided by the case's content, never by its name: a renamed copy of the paper's
+    parameter set that keeps its citation keeps the comparison; a pair of one's own that does not cite the paper
+    never gets it."""
+    return cited_in(case.citation, PAPER_REFERENCE)
 
 
 @dataclass

@@ -12,7 +12,7 @@ from thermogear.case import load_case
 from thermogear.cli.app import app, console, error_console, print_json
 from thermogear.cli.console import print_warning
 from thermogear.summaries.damping_plots import plot_damping
-from thermogear.summaries.damping import PAPER_MEAN_DAMPING, damping_summary
+from thermogear.summaries.damping import damping_summary
 from thermogear.lubricant import builtin_lubricant, builtin_lubricant_names
 from thermogear.warning_causes import distinct_warnings
 from thermogear.gearbox.provider import register as register_gearbox_model
@@ -42,9 +42,12 @@ def damping(case: str = typer.Argument(..., metavar="CASE",
         summary = damping_summary(loaded, count=points)
     messages = distinct_warnings(str(w.message) for w in caught)  # once per cause
     payload = summary.to_dict()
+    reference = _paper_means(loaded)
+    if reference is not None:
+        payload["paper_n_s_per_m"] = reference
     payload["warnings"] = messages
     if plot is not None:
-        figure = plot_damping(summary)
+        figure = plot_damping(summary, paper=reference)
         figure.savefig(plot, dpi=150)
         payload["plot"] = str(plot)
     if as_json:
@@ -58,7 +61,6 @@ def damping(case: str = typer.Argument(..., metavar="CASE",
     table.add_column("elastic", justify="right")
     table.add_column("thermal", justify="right")
     table.add_column("ratio", justify="right")
-    reference = PAPER_MEAN_DAMPING if summary.case_name == "luo2019" else None
     if reference:
         table.add_column("paper (el. / th.)", justify="right")
     mu = payload["friction_coefficient_pitch"]
@@ -80,6 +82,15 @@ def damping(case: str = typer.Argument(..., metavar="CASE",
     console.print(table)
     if plot is not None:
         console.print(f"figure written to {plot}")
+
+
+def _paper_means(case) -> dict | None:
+    """The paper's mean dampings {model: {region: N·s/m}} for a parameter set of the paper (from the paper table),
+    else None."""
+    from thermogear.report.paper_table import paper_reference
+
+    reference = paper_reference(case)
+    return None if reference is None else reference.mean_damping_n_s_per_m
 
 
 @app.command()

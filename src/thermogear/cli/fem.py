@@ -22,6 +22,7 @@ def fem_summary(case_name: str, refine: bool = True, progress=None) -> tuple[dic
     ``progress(step_name)`` is called as each step starts (see :data:`FEM_STEPS`)."""
     from thermogear.fem.interpretation import fem_interpretation  # noqa: PLC0415
     from thermogear.fem.verification import cached_analysis, fem_analysis, refinement_change_percent  # noqa: PLC0415
+    from thermogear.report.paper_table import paper_reference  # noqa: PLC0415
 
     advance = progress or (lambda name: None)
     start = time.perf_counter()
@@ -38,9 +39,10 @@ def fem_summary(case_name: str, refine: bool = True, progress=None) -> tuple[dic
         summary["refinement_compared"] = [analysis.refinement, fine.refinement]
     summary["interpretation"] = fem_interpretation(case, summary)
     summary["wall_time_s"] = time.perf_counter() - start
-    if case.name == "luo2019":
-        summary["paper"] = {"flank_temperature_c": [77.0, 81.0], "stiffness_drop_percent": {"A": 8.53, "C": 14.52,
-                                                                                            "E": 8.53}}
+    reference = paper_reference(case)
+    if reference is not None:  # a parameter set of the paper: its numbers beside the case's
+        summary["paper"] = {"flank_temperature_c": list(reference.flank_temperature_c),
+                            "stiffness_drop_percent": dict(reference.stiffness_drop_percent)}
     return summary, analysis
 
 
@@ -76,7 +78,7 @@ def fem(case: str = typer.Argument(..., metavar="CASE", help="built-in parameter
         summary, analysis = fem_summary(case, refine=not no_refinement, progress=advance)
         if plot is not None:
             advance(FEM_STEPS[2])
-            _write_figures(plot, analysis)
+            _write_figures(plot, analysis, summary.get("paper"))
             summary["plots"] = str(plot)
     if json_output:
         print_json(summary)
@@ -84,13 +86,17 @@ def fem(case: str = typer.Argument(..., metavar="CASE", help="built-in parameter
     _print_table(summary)
 
 
-def _write_figures(plot: Path, analysis) -> None:
-    """Figs. 3(b), 3(c), 15 and the FE vs PEM compliance into the folder ``plot``."""
+def _write_figures(plot: Path, analysis, paper: dict | None = None) -> None:
+    """Figs. 3(b), 3(c), 15 and the FE vs PEM compliance into the folder ``plot``; ``paper``: the paper's numbers
+    of the summary (Fig. 3(c) then shows the paper's flank-temperature range)."""
+    from functools import partial  # noqa: PLC0415
+
     from thermogear.fem import plots  # noqa: PLC0415
 
+    band = None if paper is None else tuple(paper["flank_temperature_c"])
     plot.mkdir(parents=True, exist_ok=True)
     for name, draw in (("fig3b_temperature_field.png", plots.plot_temperature_field),
-                       ("fig3c_flank_temperature.png", plots.plot_flank_temperature),
+                       ("fig3c_flank_temperature.png", partial(plots.plot_flank_temperature, paper_band=band)),
                        ("fig15_stiffness_along_path.png", plots.plot_stiffness_along_path),
                        ("fe_vs_pem_tooth_stiffness.png", plots.plot_compliance_comparison)):
         figure = draw(analysis)

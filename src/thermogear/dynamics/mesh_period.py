@@ -11,7 +11,8 @@ class MeshPeriod:
     """Derived quantities of a problem over one mesh period (mixin of the linear and the backlash problem).
 
     The problem provides ``nodes`` (n+1,) [s], ``structure`` (its mass matrix and mesh vector), ``_force_array``
-    (n,) [N] and ``mesh_stiffness`` (n,) [N/m], the stiffness with every pair present in contact.
+    (n,) [N], ``damping`` (n,) [N·s/m] and ``mesh_stiffness`` (n,) [N/m], the stiffness with every pair present in
+    contact.
     """
 
     @property
@@ -57,6 +58,13 @@ class MeshPeriod:
     def mean_stiffness(self) -> float:
         """Time-mean mesh stiffness over one period [N/m]."""
         return self.time_mean(self.mesh_stiffness)
+
+    @property
+    def mean_decay_rate(self) -> float:
+        """Time-mean decay rate of free vibrations c̄/(2·me) [1/s]: the exponent σ of e^(−σt) of the mean viscous
+        oscillator (Den Hartog 1956 §2.6), with c̄ the time mean of the mesh damping over the period and me the mesh
+        mass. The problem provides ``damping`` (n,) [N·s/m]."""
+        return self.time_mean(self.damping) / (2.0 * self.mesh_mass)
 
     @property
     def natural_frequency(self) -> float:

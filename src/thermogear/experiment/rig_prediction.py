@@ -32,7 +32,8 @@ RUN_DURATION_S = 1200.0
 #: Output step of the predicted runs [s]: the measured minutes 3, 5, 10 fall on it.
 OUTPUT_STEP_S = 3.0
 RIG_ASSUMPTIONS = (
-    "gears: FZG type C (ISO 14635-1) as a stand-in for the paper's unidentified test gears; 138 N·m pinion torque",
+    "gears: FZG type C (ISO 14635-1) as a stand-in for the paper's unidentified test gears; "
+    f"{STATED_TORQUE_NM:g} N·m pinion torque",
     "oil: 1.25 L ISO VG 100 mineral, dip lubrication, wheel dipped to its centre (FZG fill: ASTM D5182 §9.4)",
     "housing, bearings, seals, internal coefficients: the illustrative FZG-type gearbox (assumed, not the rig's)",
     "measured temperature compared with the predicted oil temperature (FZG method: the oil temperature sensed in "

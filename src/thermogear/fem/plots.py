@@ -5,8 +5,6 @@
 from __future__ import annotations
 
 
-
-
 def _axes(ax, size=(6.0, 4.0)):
     import matplotlib.pyplot as plt  # noqa: PLC0415
 
@@ -31,8 +29,10 @@ def plot_temperature_field(analysis, ax=None, which: str = "pinion"):
     return figure
 
 
-def plot_flank_temperature(analysis, ax=None, paper_band: tuple[float, float] | None = (77.0, 81.0)):
-    """Fig. 3(c): meshing-flank temperature along the path, FE points and the fitted polynomial."""
+def plot_flank_temperature(analysis, ax=None, paper_band: tuple[float, float] | None = None):
+    """Fig. 3(c): meshing-flank temperature along the path, FE points and the fitted polynomial; ``paper_band``
+    (lowest, highest) [°C]: the paper's range, shaded (the caller passes it for a parameter set of the paper:
+    :func:`thermogear.report.paper_table.paper_reference`)."""
     figure, ax = _axes(ax)
     pair = analysis.case.gear_pair
     roll = pair.roll_grid(81)
@@ -41,7 +41,7 @@ def plot_flank_temperature(analysis, ax=None, paper_band: tuple[float, float] | 
     ax.plot(gamma, analysis.temperature_field.pinion_flank_c(gamma), "--", label="fitted polynomial (to the chain)")
     wheel_roll = pair.line_of_action_length - roll
     ax.plot(gamma, analysis.temperatures["wheel"].flank_c(wheel_roll), ":", label="FE wheel flank")
-    if paper_band is not None and analysis.case.name == "luo2019":
+    if paper_band is not None:
         ax.axhspan(*paper_band, color="0.85", label="Luo & Li Fig. 3(c) range")
     ax.set_xlabel("contact position Γ [–]")
     ax.set_ylabel("flank bulk temperature [°C]")

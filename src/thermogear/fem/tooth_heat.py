@@ -53,10 +53,25 @@ def gear_of(case: "Case", which: str):
     return getattr(case.gear_pair, which)
 
 
-def angular_speed(case: "Case", which: str) -> float:
-    """ω of the gear [rad/s]."""
-    omega = case.operating_point.speed_rpm * math.pi / 30.0
-    return omega if which == "pinion" else omega / case.gear_pair.gear_ratio
+def angular_speed(gear_pair, speed_rpm: float, which: str) -> float:
+    """ω of the gear [rad/s] at the pinion speed ``speed_rpm`` [rpm]."""
+    omega = speed_rpm * math.pi / 30.0
+    return omega if which == "pinion" else omega / gear_pair.gear_ratio
+
+
+def friction_mesh_model(case: "Case"):
+    """The elastic mesh model whose friction formula (Luo & Li Eq. 27, DIN 3990-4) sees the oil at the operating
+    temperature ``[lubricant].operating_temperature_c``, the ambient of the heat model: the mesh model's friction
+    takes the oil at ``[lubricant].reference_temperature_c`` for the elastic model, so the case is re-resolved with
+    that temperature set to the operating one. Its speed and load are the case's operating point; its μ, load
+    shares and unit loads are those of :meth:`~thermogear.mesh.model.MeshModel.pair_damping_at` (one computation
+    of the friction for the damping and the heat)."""
+    from thermogear.mesh.model import MeshModel  # noqa: PLC0415
+
+    oil_c = case.lubricant.operating_temperature_c
+    with warning_scope.ignored(ExtrapolationWarning):  # the case as loaded reported its oil's range already
+        changed = case.with_changes(**{"lubricant.reference_temperature_c": oil_c})
+    return MeshModel(changed, "elastic")
 
 
 @dataclass(frozen=True)
@@ -75,13 +90,16 @@ class ConvectionCoefficients:
                 "end_face": self.end_face, "bore": self.bore, "sources": dict(self.sources)}
 
 
-def convection_coefficients(case: "Case", which: str, settings: FemSection | None = None) -> ConvectionCoefficients:
+def convection_coefficients(case: "Case", which: str, settings: FemSection | None = None,
+                            speed_rpm: float | None = None) -> ConvectionCoefficients:
     """Convection coefficients of one gear: the ``[fem]`` values where given, else the correlations of
     docs/fem.md evaluated with oil–air mist properties (oil fraction ``[fem].oil_fraction``) at the operating
     oil temperature: flanks and tip h = 0.228 Re^0.731 Pr^(1/3) k/L (L = tooth depth, r = reference radius), end
     faces the laminar rotating disc h = 0.308 k (m + 2)^0.5 Pr^0.5 (ω/ν)^0.5 with m = 2; a convective bore without
-    a value takes the end-face coefficient."""
+    a value takes the end-face coefficient. ``speed_rpm``: the pinion speed [rpm] (default: the mesh model's, the
+    case's operating point)."""
     from thermogear.lubricant import lubricant_from_case  # noqa: PLC0415
+    from thermogear.mesh.model import MeshModel  # noqa: PLC0415
 
     settings = settings or fem_settings(case)
     gear = gear_of(case, which)
@@ -93,7 +111,8 @@ def convection_coefficients(case: "Case", which: str, settings: FemSection | Non
                            float(oil.density(temperature)),
                            section.specific_heat_j_per_kg_k or DEFAULT_OIL_SPECIFIC_HEAT,
                            float(oil.dynamic_viscosity(temperature, warn=False)))
-    omega = angular_speed(case, which)
+    speed = MeshModel(case, "elastic").speed_rpm if speed_rpm is None else float(speed_rpm)
+    omega = angular_speed(case.gear_pair, speed, which)
     depth = gear.tip_radius - gear.root_radius
     surface = tooth_surface_coefficient(mist["k"], mist["prandtl"], omega, gear.reference_radius, depth, mist["nu"])
     end_face = rotating_disc_coefficient(mist["k"], mist["prandtl"], omega, mist["nu"])
@@ -124,35 +143,27 @@ class FlankHeatInput:
     flux: np.ndarray
     friction_coefficient: np.ndarray
     heat_share: np.ndarray
+    base_radius: float  # of the gear [m]: the flank point at (x, y) has ρ = sqrt(x² + y² − r_b²)
 
     def __call__(self, x, y):
         return np.interp(np.sqrt(np.maximum(x**2 + y**2 - self.base_radius**2, 0.0)), self.roll, self.flux,
                          left=0.0, right=0.0)
 
-    @property
-    def base_radius(self) -> float:
-        return self._base_radius  # set in flank_heat_input
 
-
-def flank_heat_input(case: "Case", which: str, settings: FemSection | None = None, count: int = 201) -> FlankHeatInput:
-    """q̄ along the flank of ``which`` gear (module docstring)."""
-    from thermogear.friction import mean_friction_coefficient  # noqa: PLC0415
-    from thermogear.mesh.model import MeshModel  # noqa: PLC0415
-
+def flank_heat_input(case: "Case", which: str, settings: FemSection | None = None, count: int = 201,
+                     mesh=None) -> FlankHeatInput:
+    """q̄ along the flank of ``which`` gear (module docstring). μ, the pair's load share and unit load come from the
+    mesh model's friction damping (:meth:`~thermogear.mesh.model.MeshModel.pair_damping_at`) of ``mesh``
+    (default :func:`friction_mesh_model`: the oil at the operating temperature); the speed is the mesh model's."""
     settings = settings or fem_settings(case)
-    mesh = MeshModel(case, "elastic")
+    mesh = friction_mesh_model(case) if mesh is None else mesh
     pair = mesh.gear_pair
     roll = pair.roll_grid(count)
     speed = mesh.speed_rpm
     with warning_scope.ignored(ExtrapolationWarning):  # the damping model reports the friction limits
-        shares = mesh.pair_damping_at(roll)
-        oil = mesh.lubricant
-        viscosity = float(oil.dynamic_viscosity(case.lubricant.operating_temperature_c, warn=False))
+        contact = mesh.pair_damping_at(roll)
+    friction = np.asarray(contact.friction_coefficient, dtype=float)
     rolling_1, rolling_2 = pair.rolling_speeds(roll, speed)
-    factor = case.damping.lubricant_factor if case.damping.lubricant_factor is not None else oil.lubricant_factor
-    friction = np.asarray(mean_friction_coefficient(shares.unit_load, case.roughness_ra, viscosity,
-                                                    rolling_1 + rolling_2, pair.relative_radius_of_curvature(roll),
-                                                    factor, check_limits=False), dtype=float)
     pinion_share = (blok_heat_partition(rolling_1, rolling_2) if settings.pinion_heat_share is None
                     else np.full(roll.shape, settings.pinion_heat_share))
     sliding = pair.sliding_speed(roll, speed)
@@ -160,12 +171,11 @@ def flank_heat_input(case: "Case", which: str, settings: FemSection | None = Non
         own_roll, share = roll, pinion_share
     else:
         own_roll, share = pair.line_of_action_length - roll, 1.0 - pinion_share
-    flux = mean_flank_heat_flux(share, friction, shares.unit_load, sliding, own_roll,
+    flux = mean_flank_heat_flux(share, friction, contact.unit_load, sliding, own_roll,
                                 settings.heat_conversion_factor)
     order = np.argsort(own_roll)
-    result = FlankHeatInput(own_roll[order], np.asarray(flux)[order], friction[order], np.asarray(share)[order])
-    object.__setattr__(result, "_base_radius", gear_of(case, which).base_radius)
-    return result
+    return FlankHeatInput(own_roll[order], np.asarray(flux)[order], friction[order], np.asarray(share)[order],
+                          base_radius=gear_of(case, which).base_radius)
 
 
 @dataclass(frozen=True, eq=False)
@@ -236,8 +246,9 @@ def tooth_temperature(case: "Case", which: str = "pinion", settings: FemSection 
     refinement = settings.mesh_refinement if refinement is None else refinement
     gear = gear_of(case, which)
     mesh = tooth_mesh(gear, nominal_bore_radius(gear), teeth=1, refinement=refinement)
-    coefficients = convection_coefficients(case, which, settings)
-    heat = flank_heat_input(case, which, settings)
+    friction = friction_mesh_model(case)  # one mesh model: the speed and the friction heat of the operating point
+    coefficients = convection_coefficients(case, which, settings, speed_rpm=friction.speed_rpm)
+    heat = flank_heat_input(case, which, settings, mesh=friction)
     oil_c = float(case.lubricant.operating_temperature_c)
     facets = mesh.facets
     boundaries = [RobinBoundary(facets("active_flank"), h=coefficients.meshing_flank, ambient=oil_c, flux=heat),
@@ -252,5 +263,5 @@ def tooth_temperature(case: "Case", which: str = "pinion", settings: FemSection 
     return ToothTemperature(which, mesh, basis, values, coefficients, heat, oil_c)
 
 
-__all__ = ["ConvectionCoefficients", "FlankHeatInput", "ToothTemperature", "convection_coefficients",
-           "fem_settings", "flank_heat_input", "tooth_temperature"]
+__all__ = ["ConvectionCoefficients", "FlankHeatInput", "ToothTemperature", "angular_speed", "convection_coefficients",
+           "fem_settings", "flank_heat_input", "friction_mesh_model", "tooth_temperature"]

@@ -151,7 +151,7 @@ def fig6(evaluation):
 
 def _damping_figure(evaluation, model: str):
     plt = _pyplot()
-    from thermogear.summaries.damping import PAPER_MEAN_DAMPING
+    from thermogear.report.paper_table import paper_reference
 
     summary = evaluation.damping
     figure, (left, right) = plt.subplots(1, 2, figsize=(11, 4.0), constrained_layout=True)
@@ -172,10 +172,12 @@ def _damping_figure(evaluation, model: str):
         if np.isfinite(means.get(region, np.nan)):
             right.axhline(means[region], color=_COLORS[model], ls=style, lw=0.8,
                           label=f"thermogear mean, {region}: {means[region]:.3g}")
-    if evaluation.paper:
+    reference = paper_reference(evaluation.case)  # None unless the case is a parameter set of the paper
+    if reference is not None:
+        paper = reference.mean_damping_n_s_per_m[model]
         for region, style in (("single", "-."), ("double", ":")):
-            right.axhline(PAPER_MEAN_DAMPING[model][region], color="k", ls=style, lw=0.8,
-                          label=f"paper mean, {region}: {PAPER_MEAN_DAMPING[model][region]:.3g}")
+            right.axhline(paper[region], color="k", ls=style, lw=0.8,
+                          label=f"paper mean, {region}: {paper[region]:.3g}")
     right.set_xlabel("time τ [ms]")
     right.set_ylabel("mesh damping [N·s/m]")
     right.set_title("mesh cycle")

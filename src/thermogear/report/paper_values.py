@@ -1,6 +1,11 @@
 """thermogear's value of every row of the paper table, read from an :class:`~thermogear.evaluation.Evaluation`.
 
-Only reading and comparing: ratios, locations and flags the table needs, taken from the stage results.
+Only reading and comparing: ratios, locations and flags the table needs, taken from the stage results. The
+physics is asked of the models: load shares of the mesh model (:mod:`thermogear.summaries.load_share`), decay rates
+of the dynamics problem (``MeshPeriod.mean_decay_rate``). A row that cannot be read says why: a stage that failed,
+a stage that does not apply to the case's model (:class:`ValueUnavailable`), or a model that refused the case
+(:class:`~thermogear.errors.ThermogearError`, whose message names the key and the reason). Any other exception is a
+programming error and propagates.
 """
 
 from __future__ import annotations
@@ -9,10 +14,29 @@ from typing import Any, Callable
 
 import numpy as np
 
+from thermogear.errors import ThermogearError
 from thermogear.evaluation import MODELS, Evaluation
 from thermogear.report.paper_table import PAPER_ROWS
 
-__all__ = ["paper_values"]
+__all__ = ["ValueUnavailable", "paper_values"]
+
+
+class ValueUnavailable(Exception):
+    """A row's value cannot be read from this evaluation; the message says why (shown as "not computed: …")."""
+
+
+def _needs(results: dict, *names: str, what: str) -> None:
+    """ValueUnavailable unless ``results`` holds every one of ``names`` (models or metric keys)."""
+    missing = [name for name in names if results.get(name) is None]
+    if missing:
+        raise ValueUnavailable(f"{what} has no {', '.join(missing)}")
+
+
+def _present(value, reason: str):
+    """``value``, or ValueUnavailable(reason) when it is None (a stage that does not apply to this case)."""
+    if value is None:
+        raise ValueUnavailable(reason)
+    return value
 
 
 # ------------------------------------------------------------------------------------- derived numbers
@@ -36,22 +60,11 @@ def _phase_distance(time: float, moment: float, period: float) -> float:
     return float(min(distance, 1.0 - distance))
 
 
-def _pair_share(case, model: str) -> dict[str, float]:
-    """Steady load share of a pair at A, B, D, E for one model, from its mesh model."""
-    from thermogear.mesh.model import MeshModel
-    from thermogear.mesh_cycle import load_share_at
-
-    mesh = MeshModel(case, model)
-    points = mesh.gear_pair.path_points
-    own = np.array([points["A"], points["B"], points["D"], points["E"]])
-    share, _ = load_share_at(own, mesh.pair_stiffness_at, points["A"], points["E"], mesh.gear_pair.base_pitch)
-    return dict(zip("ABDE", (float(v) for v in share)))
-
-
 def _flank_temperature(evaluation: Evaluation) -> tuple[np.ndarray, np.ndarray]:
     pair = evaluation.case.gear_pair
+    field = _present(evaluation.temperature_field, "the stage built no temperature field")
     gamma = np.asarray(pair.gamma(pair.roll_grid(401)), float)
-    return gamma, np.asarray(evaluation.temperature_field.pinion_flank_c(gamma), float)
+    return gamma, np.asarray(field.pinion_flank_c(gamma), float)
 
 
 # -------------------------------------------------------------------------------------- paper values
@@ -98,9 +111,9 @@ def paper_values(evaluation: Evaluation) -> dict[str, Any]:
             try:
                 values.update(compute())
                 return
-            except (KeyboardInterrupt, SystemExit):
-                raise
-            except Exception as error:  # noqa: BLE001 - shown as "not computed: reason"
+            except ValueUnavailable as error:  # the stage does not apply to this case: the reason says why
+                reason = str(error)
+            except ThermogearError as error:  # a model refused the case: its message names the key and the reason
                 reason = f"{type(error).__name__}: {error}"
         for key in keys:
             values.setdefault(key, (None, reason))
@@ -123,7 +136,10 @@ def paper_values(evaluation: Evaluation) -> dict[str, Any]:
 
     # ---------------------------------------------------------------- Fig. 4
     def fig4():
-        summary, curve = evaluation.thermal_summary, evaluation.thermal_curves.curve
+        paper_model_only = ("the case's thermal model is not the paper's k_T (thermal.model = 'luo2020'): Fig. 4's "
+                            "curves, drops and compliance changes belong to that model only")
+        summary = _present(evaluation.thermal_summary, paper_model_only)
+        curve = _present(evaluation.thermal_curves, paper_model_only).curve
         drop = summary["stiffness_drop_percent"]
         change = summary["single_tooth_compliance_change_percent"]
         gamma = np.asarray(curve.gamma)
@@ -155,6 +171,7 @@ def paper_values(evaluation: Evaluation) -> dict[str, Any]:
     values["fig6.contact_ratio"] = float(pair.contact_ratio)
 
     def fig6():
+        _needs(evaluation.simulations, "thermal", what="the evaluation")
         simulation = evaluation.simulations["thermal"]
         from thermogear.report.figures import FIG6_SPAN_MS
 
@@ -165,7 +182,7 @@ def paper_values(evaluation: Evaluation) -> dict[str, Any]:
 
     # ---------------------------------------------------------------- Figs. 7–8
     def damping():
-        means = evaluation.damping.region_means
+        means = _present(evaluation.damping, "the damping stage did not run").region_means
         ratio = {region: means["thermal"][region] / means["elastic"][region] for region in ("single", "double")}
         return {"fig7.ce_single": means["elastic"]["single"], "fig7.ce_double": means["elastic"]["double"],
                 "fig8.cr_single": means["thermal"]["single"], "fig8.cr_double": means["thermal"]["double"],
@@ -177,14 +194,20 @@ def paper_values(evaluation: Evaluation) -> dict[str, Any]:
              "fig8.thermal_damping_ratio"), ("damping",), damping)
 
     def frequency_ratio():
+        _needs(evaluation.responses, "elastic", what="the evaluation")
         return {"sec3.frequency_ratio": evaluation.responses["elastic"].metrics["frequency_ratio"]}
 
     guarded(("sec3.frequency_ratio",), ("elastic model",), frequency_ratio)
 
     # ---------------------------------------------------------------- Figs. 9–12 (steady state)
     def response():
+        _needs(evaluation.responses, "elastic", "thermal", what="the evaluation")
         elastic, thermal = evaluation.responses["elastic"], evaluation.responses["thermal"]
         e, t = elastic.metrics, thermal.metrics
+        for model, metrics in (("elastic", e), ("thermal", t)):
+            _needs(metrics, "equilibrium_per_region", "amplitude_per_region", "max_system_load_ratio",
+                   "max_pair_load_n_per_mm", "kv", what=f"the {model} response")
+            _needs(metrics["equilibrium_per_region"], "single", "double", what=f"the {model} response's regions")
         eq_e, eq_t = e["equilibrium_per_region"], t["equilibrium_per_region"]
         amp_e, amp_t = e["amplitude_per_region"], t["amplitude_per_region"]
         out = {
@@ -214,10 +237,8 @@ def paper_values(evaluation: Evaluation) -> dict[str, Any]:
                 before = (np.mod(moment - item.time, period) > 0) & (np.mod(moment - item.time, period) < 0.05 * period)
                 converged &= bool(speed[before].max() < 0.2 * speed.max()) if np.any(before) else True
         out["fig10.converges_to_two_points"] = converged
-        # decay rate c/(2 me), time mean over the period
-        rates = {name: float(np.sum(item.problem.damping * np.diff(item.problem.nodes)) / item.problem.period
-                             / (2.0 * item.problem.mass)) for name, item in (("e", elastic), ("t", thermal))}
-        out["fig11.thermal_decays_faster"] = bool(rates["t"] > rates["e"])
+        # the time-mean decay rate c̄/(2 me) of each model's dynamics problem
+        out["fig11.thermal_decays_faster"] = bool(thermal.problem.mean_decay_rate > elastic.problem.mean_decay_rate)
         # steady value of the system load = static load
         load = thermal.system_load()
         mean_load = float(np.trapezoid(load, thermal.time) / thermal.problem.period)
@@ -245,7 +266,9 @@ def paper_values(evaluation: Evaluation) -> dict[str, Any]:
              "fig12.peaks_at_transitions", "fig12.max_pair_load_at_B"), ("elastic model", "thermal model"), response)
 
     def shares():
-        elastic, thermal = _pair_share(case, "elastic"), _pair_share(case, "thermal")
+        from thermogear.summaries.load_share import pair_load_share_at_points
+
+        elastic, thermal = (pair_load_share_at_points(case, model) for model in ("elastic", "thermal"))
         return {"fig12.single_pair_rises_at_A_E": bool(thermal["A"] > elastic["A"] and thermal["E"] > elastic["E"]
                                                        and thermal["B"] < elastic["B"] and thermal["D"] < elastic["D"]),
                 "_pair_share": {"elastic": elastic, "thermal": thermal}}
@@ -254,6 +277,7 @@ def paper_values(evaluation: Evaluation) -> dict[str, Any]:
 
     # ---------------------------------------------------------------- transients (Figs. 9, 11)
     def transient():
+        _needs(evaluation.transients, "elastic", "thermal", what="the start-up transients")
         out = {}
         ok = True
         for item in evaluation.transients.values():
@@ -274,7 +298,7 @@ def paper_values(evaluation: Evaluation) -> dict[str, Any]:
 
     # ---------------------------------------------------------------- FE (Fig. 15), optional
     def fem():
-        result = evaluation.fem
+        result = _present(evaluation.fem, "the FE verification runs for a parameter set of the paper only")
         gamma = np.asarray(result["gamma"])
         below = bool(np.all(np.asarray(result["thermal"]) < np.asarray(result["elastic"])))
         out = {"fig15.fe_kt_below_ke": below}
@@ -311,7 +335,8 @@ def paper_values(evaluation: Evaluation) -> dict[str, Any]:
                                          "the readings at minutes 3, 5 and 10")
 
     def rig():
-        return {"fig18.resonance_falls_with_temperature": bool(evaluation.rig_trend["relative_change"] < 0.0)}
+        trend = _present(evaluation.rig_trend, "the rig trend runs for a parameter set of the paper only")
+        return {"fig18.resonance_falls_with_temperature": bool(trend["relative_change"] < 0.0)}
 
     guarded(("fig18.resonance_falls_with_temperature",), ("rig trend",), rig)
     return values

@@ -25,6 +25,7 @@ def thermoelastic_section(data: dict | None) -> str:
     """HTML of the comparison (empty when the stage did not run)."""
     if not data:
         return ""
+    from thermogear.report.paper_table import row  # the paper's number, from the paper table only
     rows = "".join(
         f"<tr><td>{html.escape(label)}</td><td>{html.escape(unit)}</td>"
         + "".join(f"<td class='num'>{html.escape(_cell(data[name], key, pattern))}</td>"
@@ -41,8 +42,8 @@ def thermoelastic_section(data: dict | None) -> str:
         notes.append("Flagged: " + "; ".join(predictive["flags"]) + ".")
     return ("<h2 id='thermoelastic'>The paper's pair under the predictive thermo-elastic model</h2>"
             "<p>The paper's thermal stiffness (model <code>luo2020</code>) needs the factor X_te, here calibrated to the "
-            "paper's 14.52 % drop at the pitch point. The thermo-elastic model (<code>thermoelastic</code>, the default "
-            "for any other pair) takes none: Young's modulus at temperature, the gears and the housing expanded, the "
+            f"paper's {row('fig4.drop_at_C').paper:g} % drop at the pitch point. The thermo-elastic model "
+            "(<code>thermoelastic</code>, the default for any other pair) takes none: Young's modulus at temperature, the gears and the housing expanded, the "
             "backlash and the flank distortion of the non-uniform temperature field. Same pair, same temperatures, "
             "same operating point:</p>"
             "<table><tr><th>quantity</th><th>unit</th><th>elastic</th><th>paper's model (luo2020)</th>"

@@ -17,10 +17,6 @@ if TYPE_CHECKING:
     from thermogear.case import Case
 
 
-#: Luo & Li (2020) Sect. 3 mean dampings [N·s/m] (totals over the 25 mm face), for display beside luo2019.
-PAPER_MEAN_DAMPING = {"elastic": {"single": 3.41e3, "double": 2.40e3}, "thermal": {"single": 5.72e3, "double": 4.03e3}}
-
-
 @dataclass(frozen=True)
 class DampingSummary:
     """Elastic and thermal friction damping of a case: per pair along the path and c(τ) over one mesh cycle.
@@ -40,7 +36,8 @@ class DampingSummary:
     pitch: dict  # PairDamping at C per model
 
     def to_dict(self) -> dict:
-        """The JSON summary of ``thermogear damping``."""
+        """The JSON summary of ``thermogear damping`` (the command adds the paper's means for a parameter set of
+        the paper: they are the paper table's, :func:`thermogear.report.paper_table.paper_reference`)."""
         oil, pitch = self.lubricant, self.pitch
         flank_viscosity = float(np.mean(self.path["thermal"].viscosity))
         result = {
@@ -60,8 +57,6 @@ class DampingSummary:
                            "friction_elastic": self.path["elastic"].friction_coefficient,
                            "friction_thermal": self.path["thermal"].friction_coefficient},
         }
-        if self.case_name == "luo2019":
-            result["paper_n_s_per_m"] = PAPER_MEAN_DAMPING
         return result
 
 
@@ -88,4 +83,4 @@ def damping_summary(case: "Case", count: int = 720, path_points: int = 81, rule:
                           path=path, grids=grids, mesh=mesh, region_means=means, pitch=pitch)
 
 
-__all__ = ["DampingSummary", "PAPER_MEAN_DAMPING", "damping_summary"]
+__all__ = ["DampingSummary", "damping_summary"]

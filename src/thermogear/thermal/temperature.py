@@ -68,14 +68,12 @@ def temperature_field_from_case(case: "Case") -> TemperatureField:
 
 
 def _lubricant_data_maximum_c(case: "Case") -> float | None:
-    """Highest temperature of the lubricant's viscosity data [°C] (the oil's fitted range), else the usual
-    data-sheet range of a gear oil."""
+    """Highest temperature of the lubricant's viscosity data [°C]: the case's viscosity points, else the fitted
+    range of the case's oil (a built-in oil's data)."""
     points = case.lubricant.viscosity_points
     if points:
         return float(max(temperature for temperature, _ in points))
-    try:
-        from thermogear.lubricant import lubricant_from_case  # noqa: PLC0415
-    except ImportError:  # the lubricant module is optional for the thermal stiffness
-        return DEFAULT_LUBRICANT_DATA_MAXIMUM_C
+    from thermogear.lubricant import lubricant_from_case  # noqa: PLC0415
+
     with warning_scope.ignored(ModelAssumptionWarning):  # the lubricant model reports its own assumptions
         return float(lubricant_from_case(case).fitted_range_c[1])

@@ -11,13 +11,10 @@ from dataclasses import dataclass
 
 from thermogear.errors import CaseError, JammingError
 from thermogear.geometry import GearPair
+from thermogear.temperature_field import MATERIAL_MAXIMUM_C  # the one limit of the material data [°C]
 from thermogear.thermoelastic.materials import HOUSING_EXPANSION_PER_K, MODULUS_TEMPERATURE_COEFFICIENTS_PER_K
 from thermogear.thermoelastic.operating import (BacklashAllowance, agma_minimum_backlash, backlash_at,
                                                 jamming_rise, normal_backlash)
-
-#: Highest gear temperature of the material data [°C] (same limit as thermogear.thermal.temperature: E(T) is
-#: fitted on 21–204 °C and gear steels temper at 150–200 °C).
-MATERIAL_MAXIMUM_C = 200.0
 
 GEAR_NAMES = ("pinion", "wheel")
 
