@@ -48,7 +48,10 @@ def test_summary_has_one_row_per_paper_number(default_run):
     summary = json.loads((out / "summary.json").read_text())
     assert summary["thermogear_version"] == thermogear.__version__
     keys = [row["key"] for row in summary["table"]]
-    assert keys == [row.key for row in PAPER_ROWS]  # none missing, none added, same order
+    # none missing, none added, same order: the paper's rows, then the rig's temperatures predicted (one per
+    # Table 3 temperature; thermogear.report.rig_section)
+    rig = [key for key in keys if key.startswith("rig.")]
+    assert keys == [row.key for row in PAPER_ROWS] + rig and len(rig) == 9
     for row in summary["table"]:
         for field in FIELDS:
             assert field in row, (row["key"], field)
