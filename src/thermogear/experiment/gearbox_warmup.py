@@ -89,6 +89,7 @@ class GearboxWarmupResult:
                            for name in ("pinion", "wheel", "shafts", "oil", "housing")},
                         "mesh_loss_w": history.mesh_loss.tolist(), "bearing_loss_w": history.bearing_loss.tolist(),
                         "seal_loss_w": history.seal_loss.tolist(), "churning_loss_w": history.churning_loss.tolist(),
+                        "injection_loss_w": history.jet_loss.tolist(),
                         "backlash_um": (history.backlash * 1e6).tolist()},
             "states": [{"time_s": state.time_s, "mesh_stiffness_mean_n_per_m": state.mesh_stiffness_mean,
                         "natural_frequency_hz": state.natural_frequency_hz,
