@@ -173,7 +173,8 @@ def describe_prediction(state: "GearboxSteadyState") -> str:
     return (f"temperatures predicted by the gearbox thermal model (steady state): pinion {state.pinion_c:.1f} °C, "
             f"wheel {state.wheel_c:.1f} °C, oil {state.oil_c:.1f} °C, housing {state.housing_c:.1f} °C, from "
             f"losses {losses.total:.1f} W (mesh {losses.mesh:.1f}, bearings {losses.bearings:.1f}, seals "
-            f"{losses.seals:.1f}, churning {losses.churning:.1f} W)")
+            f"{losses.seals:.1f}, churning {losses.churning:.1f}"
+            + (f", oil jet {losses.injection:.1f}" if losses.injection else "") + " W)")
 
 
 def prediction_note(case: "Case") -> str | None:
