@@ -3,7 +3,6 @@
 
 from __future__ import annotations
 
-import warnings
 from pathlib import Path
 
 import numpy as np
@@ -17,12 +16,7 @@ from thermogear.sweep.branches import branch_study
 
 CASE = Path(__file__).parents[1] / "data" / "gearbox" / "fzg_gearbox.toml"
 SPEEDS = [500.0, 1000.0, 1400.0]
-
-
-def _quiet(function, *args, **kwargs):
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        return function(*args, **kwargs)
+pytestmark = pytest.mark.filterwarnings("ignore")  # the case's own extrapolation warnings (Sainsot fit, viscosity)
 
 
 @pytest.fixture(scope="module")
@@ -32,7 +26,7 @@ def case():
 
 @pytest.fixture(scope="module")
 def branches(case):
-    return _quiet(branch_study, Study.define(case, {"speed_rpm": SPEEDS}, model="thermal"), "both", workers=1)
+    return branch_study(Study.define(case, {"speed_rpm": SPEEDS}, model="thermal"), "both", workers=1)
 
 
 def test_each_speed_is_the_case_made_at_that_speed(case, branches):
@@ -40,8 +34,7 @@ def test_each_speed_is_the_case_made_at_that_speed(case, branches):
     # its speed (its own steady temperatures), solved on its own; the orbit is unique here (no coexistence), so the
     # branch's Newton, seeded by the neighbour, lands on the same orbit: agreement to the shooting tolerance
     for speed in SPEEDS:
-        alone = _quiet(lambda: Simulation(case.with_changes(**{"operating.speed_rpm": speed}), "thermal")
-                       .run(method="periodic"))
+        alone = Simulation(case.with_changes(**{"operating.speed_rpm": speed}), "thermal").run(method="periodic")
         assert alone.metrics["branch"] == "unique"
         for direction in ("up", "down"):
             kv = float(branches["kv"].sel(direction=direction, model="thermal", speed_rpm=speed))
@@ -58,8 +51,7 @@ def test_the_mesh_follows_the_temperatures(branches):
 def test_a_speed_whose_temperatures_jam_is_marked_and_the_others_computed(case):
     # 30 μm of backlash at 20 °C: the steady state at 1400 rpm (pinion about 102 °C) closes it, 500 rpm does not
     tight = case.with_changes(**{"gears.backlash_normal_um": 30.0})
-    data = _quiet(branch_study, Study.define(tight, {"speed_rpm": [500.0, 1400.0]}, model="thermal"), "both",
-                  workers=1)
+    data = branch_study(Study.define(tight, {"speed_rpm": [500.0, 1400.0]}, model="thermal"), "both", workers=1)
     jammed = data["jammed"].sel(model="thermal").values
     assert jammed.tolist() == [0, 1]
     hot = data.sel(speed_rpm=1400.0, model="thermal")
