@@ -164,7 +164,7 @@ def test_timings_cover_the_whole_command(default_run):
     assert stages[:3] == ["start-up", "imports", "elastic model"]
     assert stages[-3:] == ["figures", "FE verification", "files"]
     assert all(seconds >= 0.0 for seconds in summary["timings_s"].values())
-    assert set(summary["timings_background_s"]) == {"FE verification", "figures and results file"}
+    assert set(summary["timings_background_s"]) == {"FE verification", "figures and results file", "rig prediction"}
 
 
 def test_the_readme_command_twice_replaces_its_own_report_and_keeps_the_users_files(default_run):

@@ -118,3 +118,15 @@ def test_warm_up_unchanged_by_the_interpolant(monkeypatch):
         old_values = np.array([getattr(state, name) for state in old.states], dtype=float)
         assert np.all(np.isfinite(new_values))
         assert np.max(np.abs(new_values / old_values - 1.0)) < BOUND, name
+
+
+def test_warm_started_periodic_solves_give_the_reference_kv():
+    # each state's orbit searched from the previous state's (the default) against every state solved afresh by
+    # Simulation.run: the orbit is unique at these states, and Newton stops at a scaled residual of 1e-10, so the
+    # two land on the same orbit to about that; 1e-9 relative on Kv leaves a decade
+    case = load_case(GEARBOX_CASE)
+    warm = gearbox_warmup(case, duration_s=300.0, interval_s=60.0)
+    afresh = gearbox_warmup(case, duration_s=300.0, interval_s=60.0, warm_start=False)
+    warm_kv = np.array([state.kv for state in warm.states], dtype=float)
+    afresh_kv = np.array([state.kv for state in afresh.states], dtype=float)
+    assert np.all(np.isfinite(warm_kv)) and np.max(np.abs(warm_kv / afresh_kv - 1.0)) < BOUND
