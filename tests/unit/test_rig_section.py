@@ -65,6 +65,8 @@ def test_value_is_the_predicted_oil_temperature(verdicts):
     for verdict, prediction in zip(verdicts, cold):
         assert verdict.value == pytest.approx(prediction.oil_c, abs=1e-12)
         assert verdict.row.paper == prediction.measured_c
+        # shown in kelvin (a per cent of a Celsius temperature means nothing)
+        assert verdict.deviation is None and f"{prediction.deviation:+.1f} K" in verdict.reason
 
 
 def test_section_states_assumptions_and_both_starts(rig):

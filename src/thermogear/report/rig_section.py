@@ -14,6 +14,7 @@ beside it but not counted, so that the better of two starts is never picked afte
 from __future__ import annotations
 
 import html
+from dataclasses import replace
 
 from thermogear import forked, warning_scope
 from thermogear.report.paper_checks import Absolute, PaperRow, Verdict, judge
@@ -94,7 +95,10 @@ def rig_verdicts(rig: forked.Background) -> list[Verdict]:
         placeholders = [RigPrediction(m.speed_rpm, m.minute, "cold", m.temperature_c, nan, nan, nan, nan)
                         for m in rig_measurements()]
         return [judge(row, None, reason) for row in rig_rows(placeholders)]
-    return [judge(row, prediction.oil_c) for row, prediction in zip(rig_rows(result["cold"]), result["cold"])]
+    # the deviation in kelvin, not in per cent: a ratio of Celsius temperatures means nothing
+    return [replace(judge(row, prediction.oil_c), deviation=None,
+                    reason=f"predicted − measured = {prediction.deviation:+.1f} K")
+            for row, prediction in zip(rig_rows(result["cold"]), result["cold"])]
 
 
 def rig_section(rig: forked.Background) -> str:
