@@ -38,7 +38,8 @@ def test_one_prediction_row_per_measured_temperature():
     for row in rows:
         assert row.kind == "prediction" and row.unit == "°C" and len(row.argument) > 10
         # the argued tolerance: FIXED_K plus RISE_SHARE of the measured rise above the assumed ambient
-        assert row.check.tolerance == pytest.approx(FIXED_K + RISE_SHARE * (row.paper - RIG_AMBIENT_C), abs=1e-3)
+        # (rounded to 0.1 K, the precision Table 3 prints)
+        assert row.check.tolerance == pytest.approx(FIXED_K + RISE_SHARE * (row.paper - RIG_AMBIENT_C), abs=0.05)
         assert "stand-in" in row.note and "1.25 L" in row.note  # the rig's assumptions travel with the row
 
 
