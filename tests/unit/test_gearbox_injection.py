@@ -40,6 +40,15 @@ def test_limits():
     assert "faster than the pitch line" in jet_validity(fast, 20.0)
 
 
+def test_a_jet_at_the_outlet_is_reversed():
+    # against the teeth leaving the mesh the oil's tangential momentum is reversed: ρ·Q·v_t·(v_t + v_j)
+    # = 880 · 5e-5 · 20 · 28 = 24.64 W, and a jet faster than the pitch line is still a loss
+    assert jet_impulse_power(OilJet(5e-5, 8.0, at_outlet=True), 880.0, 20.0) == pytest.approx(24.64, rel=1e-12)
+    fast = OilJet(5e-5, 30.0, at_outlet=True)
+    assert jet_impulse_power(fast, 880.0, 20.0) == pytest.approx(880.0 * 5e-5 * 20.0 * 50.0, rel=1e-12)
+    assert jet_validity(fast, 20.0) is None
+
+
 def test_proportional_to_flow_and_density():
     one, two = OilJet(1e-5, 5.0), OilJet(2e-5, 5.0)
     assert jet_impulse_power(two, 880.0, 12.0) == pytest.approx(2.0 * jet_impulse_power(one, 880.0, 12.0), rel=1e-14)
@@ -52,9 +61,10 @@ def test_bad_jets_are_refused(flow, speed):
         OilJet(flow, speed)
 
 
-def _injection_case(flow_l_min=4.0, jet_m_s=5.0, speed_rpm=3000.0):
+def _injection_case(flow_l_min=4.0, jet_m_s=5.0, speed_rpm=3000.0, position="inlet"):
     document = tomllib.loads(CASE.read_text(encoding="utf-8"))
-    document["gearbox"]["oil"].update(lubrication="injection", injection_flow_l_min=flow_l_min, jet_speed_m_s=jet_m_s)
+    document["gearbox"]["oil"].update(lubrication="injection", injection_flow_l_min=flow_l_min, jet_speed_m_s=jet_m_s,
+                                      jet_position=position)
     document["operating"]["speed_rpm"] = speed_rpm
     return case_from_document(document)
 
@@ -98,3 +108,9 @@ def test_warm_up_reports_the_jet_loss():
     assert history.energy_residual < 1e-5  # the integrator's rtol 1e-6 on the energy states
     dip = gearbox_model_from_case(case_from_document(tomllib.loads(CASE.read_text(encoding="utf-8"))))
     assert dip.description.oil_jet is None
+
+
+def test_the_case_file_chooses_the_jet_position():
+    inlet = gearbox_model_from_case(_injection_case()).description.oil_jet
+    outlet = gearbox_model_from_case(_injection_case(position="outlet")).description.oil_jet
+    assert not inlet.at_outlet and outlet.at_outlet and outlet.sense == -1.0

@@ -120,7 +120,8 @@ def gearbox_description_from_case(case: "Case") -> GearboxDescription:
     default_immersion = 0.0 if injection else pair.operating_pitch_radii[1]
     wheel_immersion = (default_immersion if section.oil.wheel_immersion_mm is None
                        else section.oil.wheel_immersion_mm * 1e-3)
-    jet = OilJet(section.oil.injection_flow_l_min / 60000.0, section.oil.jet_speed_m_s) if injection else None
+    jet = OilJet(section.oil.injection_flow_l_min / 60000.0, section.oil.jet_speed_m_s,
+                 at_outlet=section.oil.jet_position == "outlet") if injection else None
     for key, depth, gear in (("wheel_immersion_mm", wheel_immersion, pair.wheel),
                              ("pinion_immersion_mm", section.oil.pinion_immersion_mm * 1e-3, pair.pinion)):
         if depth > 2.0 * gear.tip_radius:

@@ -100,8 +100,11 @@ class GearboxOilSection(Section):
     injection_flow_l_min: Annotated[float, Field(gt=0.0, le=1000.0, allow_inf_nan=False)] | None = Field(
         None, description="oil flow of the into-mesh jet [L/min] (injection only)")
     jet_speed_m_s: Annotated[float, Field(gt=0.0, le=200.0, allow_inf_nan=False)] | None = Field(
-        None, description="speed of the oil jet [m/s] (injection only; at most the pitch-line speed for its "
-                          "impulse loss)")
+        None, description="speed of the oil jet [m/s] (injection only; an inlet jet at most the pitch-line speed "
+                          "for its impulse loss)")
+    jet_position: Literal["inlet", "outlet"] = Field(
+        "inlet", description="injection only: the jet aimed into the mesh inlet, with the teeth (inlet), or at the "
+                             "mesh outlet, against them (outlet)")
     pinion_immersion_mm: Annotated[float, Field(ge=0.0, le=5000.0, allow_inf_nan=False)] = Field(
         0.0, description="depth the pinion dips into the oil [mm] (0: above the oil)")
     specific_heat_j_per_kg_k: Annotated[float, Field(ge=1000.0, le=4000.0, allow_inf_nan=False)] = Field(
@@ -116,6 +119,8 @@ class GearboxOilSection(Section):
                     raise CaseError(f"gearbox.oil.{key}", None, "a number > 0",
                                     "injection lubrication needs the jet's flow and speed for its impulse loss")
         else:
+            if "jet_position" in self.model_fields_set:
+                jet["jet_position"] = self.jet_position
             for key, value in jet.items():
                 if value is not None:
                     raise CaseError(f"gearbox.oil.{key}", value, 'only with lubrication = "injection"',
