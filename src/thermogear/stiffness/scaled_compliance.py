@@ -114,8 +114,8 @@ def tooth_compliance_interpolant(gear: Gear, material: Material, load_angle) -> 
     high = (math.ceil(float(np.max(load_angle)) / ANGLE_STEP) + 1) * ANGLE_STEP
     # below α1 = −α2 the contact would lie under the base circle: keep the range inside the tooth
     floor = -gear.half_tooth_angle_at_base + 0.5 * ANGLE_STEP
-    if low < floor:
-        low = max(floor, float(np.min(load_angle)))
+    if low < floor:  # (the floor itself, a stable cache key, unless the path reaches below it)
+        low = min(floor, float(np.min(load_angle)))
     return _interpolant(_shape_key(gear), float(material.poisson_ratio), low, high)
 
 
