@@ -15,7 +15,14 @@ The illustrative FZG-type gearbox (thermogear.gearbox.fzg_example) at load stage
 - coupled warm-up: the same 20 minutes with the mesh re-evaluated every 10 s (121 states: thermal mesh model,
   mean stiffness, natural frequency and the periodic steady response at each), the FZG-type case file
   tests/data/gearbox/fzg_gearbox.toml at 1400 rpm, 138 N·m (thermogear.experiment.gearbox_warmup); baseline: one
-  state (the mesh and periodic response at one temperature), so the ratio is the cost in states.
+  state (the mesh and periodic response at one temperature), so the ratio is the cost in states;
+- coupled warm-up, old path against new, interleaved in the same run (wall and CPU time): the old path builds the
+  401-point compliance table of every warm gear pair by the PEM quadrature (every warm pair is a new cache key)
+  and solves every state afresh with Simulation.run (checks, periodic solve from the linear solution, coexistence
+  search from rest); the new one takes the table's values from one Chebyshev interpolant per gear shape
+  (thermogear.stiffness.scaled_compliance, the same values to < 1e-11) and starts each state's periodic solve from
+  the previous state's orbit (gearbox_warmup(warm_start=True), the same Kv to < 1e-9); "tables only" is the new
+  tables with the old solves, to attribute the gain.
 
 Targets (issue 28): a steady state ≤ 50 ms; a 20-minute warm-up coupled to the mesh ≤ 2 s.
 """
@@ -23,6 +30,7 @@ Targets (issue 28): a steady state ≤ 50 ms; a 20-minute warm-up coupled to the
 from __future__ import annotations
 
 import json
+import os
 import platform
 import sys
 import time
@@ -34,6 +42,19 @@ import numpy as np
 RESULTS = Path(__file__).resolve().parent / "results"
 STEADY_TARGET_S = 0.050
 WARM_UP_TARGET_S = 2.0
+
+
+def _interleaved(functions: dict, repeat: int) -> dict:
+    """Median wall and CPU (user + sys of this process) seconds of each function, the calls interleaved."""
+    wall = {name: [] for name in functions}
+    cpu = {name: [] for name in functions}
+    for _ in range(repeat):
+        for name, function in functions.items():
+            start_wall, start_cpu = time.perf_counter(), time.process_time()
+            function()
+            wall[name].append(time.perf_counter() - start_wall)
+            cpu[name].append(time.process_time() - start_cpu)
+    return {name: (float(np.median(wall[name])), float(np.median(cpu[name]))) for name in functions}
 
 
 def _median_time(function, repeat: int) -> float:
@@ -80,8 +101,8 @@ def main(repeat: int = 21) -> dict:
 
     case = load_case(Path(__file__).resolve().parents[1] / "tests" / "data" / "gearbox" / "fzg_gearbox.toml")
 
-    def coupled_warm_up():
-        return gearbox_warmup(case, duration_s=1200.0, interval_s=10.0)
+    def coupled_warm_up(warm_start: bool = True):
+        return gearbox_warmup(case, duration_s=1200.0, interval_s=10.0, warm_start=warm_start)
 
     def one_state():
         simulation = Simulation(state_case(case, np.array([60.0, 55.0, 50.0, 45.0, 35.0])), "thermal")
@@ -95,7 +116,27 @@ def main(repeat: int = 21) -> dict:
     linear_warm_up_s = _median_time(linear_warm_up, max(5, repeat // 4))
     warm_up_s = _median_time(warm_up, max(5, repeat // 4))
     one_state_s = _median_time(one_state, 5)
-    coupled_s = _median_time(coupled_warm_up, 1)  # once: it is the long one
+
+    import thermogear.thermoelastic.mesh as thermoelastic_mesh
+    from thermogear.stiffness import scaled_compliance
+    from thermogear.stiffness import table as stiffness_table
+
+    def with_source(source, warm_start: bool):
+        def run():
+            thermoelastic_mesh.scaled_compliance = source  # the warm tables from this module
+            stiffness_table.clear_cache()
+            scaled_compliance.clear_cache()
+            try:
+                return coupled_warm_up(warm_start)
+            finally:
+                thermoelastic_mesh.scaled_compliance = scaled_compliance
+        return run
+
+    paths = _interleaved({"old": with_source(stiffness_table, False), "tables only": with_source(scaled_compliance,
+                                                                                                 False),
+                          "new": with_source(scaled_compliance, True)}, 3)
+    (old_wall, old_cpu), (coupled_s, coupled_cpu) = paths["old"], paths["new"]
+    tables_wall, tables_cpu = paths["tables only"]
     state, history = steady(), warm_up()
     figures = [
         {"name": "steady state (nonlinear) vs frozen-linear solve", "value": steady_s, "baseline": linear_steady_s,
@@ -110,6 +151,14 @@ def main(repeat: int = 21) -> dict:
          "baseline": one_state_s, "ratio": coupled_s / one_state_s, "unit": "s"},
         {"name": "coupled 20-min warm-up vs 2 s target", "value": coupled_s, "baseline": WARM_UP_TARGET_S,
          "ratio": coupled_s / WARM_UP_TARGET_S, "unit": "s"},
+        {"name": "coupled warm-up, new vs old path (wall)", "value": coupled_s, "baseline": old_wall,
+         "ratio": coupled_s / old_wall, "unit": "s"},
+        {"name": "coupled warm-up, new vs old path (CPU)", "value": coupled_cpu, "baseline": old_cpu,
+         "ratio": coupled_cpu / old_cpu, "unit": "s"},
+        {"name": "coupled warm-up, new tables only vs old (CPU)", "value": tables_cpu, "baseline": old_cpu,
+         "ratio": tables_cpu / old_cpu, "unit": "s"},
+        {"name": "coupled warm-up (CPU) vs 2 s target", "value": coupled_cpu, "baseline": WARM_UP_TARGET_S,
+         "ratio": coupled_cpu / WARM_UP_TARGET_S, "unit": "s"},
     ]
     result = {
         "benchmark": "bench_gearbox_thermal", "figures": figures,
@@ -117,6 +166,7 @@ def main(repeat: int = 21) -> dict:
         "steady_losses_w": {"mesh": state.losses.mesh, "bearings": state.losses.bearings, "seals": state.losses.seals,
                             "churning": state.losses.churning},
         "warm_up_end_temperatures_c": [round(float(value), 2) for value in history.temperatures_c[:, -1]],
+        "load_average_1_5_15_min": [round(value, 2) for value in os.getloadavg()],
         "python": sys.version.split()[0], "numpy": np.__version__, "machine": platform.machine(),
         "processor": platform.processor(),
     }

@@ -29,7 +29,10 @@ def validation_page() -> str:
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         evaluation = evaluate_case(load_case("luo2019"))
-        verdicts = paper_verdicts(evaluation)
+        # the same rows as the report's table: the paper's, then the rig's temperatures predicted
+        from thermogear.report.rig_section import rig_verdicts, start_rig_prediction
+
+        verdicts = paper_verdicts(evaluation) + rig_verdicts(start_rig_prediction())
     counts = table_counts(verdicts)
     prediction, statement = counts["prediction"], counts["qualitative"]
     lines = [

@@ -48,7 +48,10 @@ def test_summary_has_one_row_per_paper_number(default_run):
     summary = json.loads((out / "summary.json").read_text())
     assert summary["thermogear_version"] == thermogear.__version__
     keys = [row["key"] for row in summary["table"]]
-    assert keys == [row.key for row in PAPER_ROWS]  # none missing, none added, same order
+    # none missing, none added, same order: the paper's rows, then the rig's temperatures predicted (one per
+    # Table 3 temperature; thermogear.report.rig_section)
+    rig = [key for key in keys if key.startswith("rig.")]
+    assert keys == [row.key for row in PAPER_ROWS] + rig and len(rig) == 9
     for row in summary["table"]:
         for field in FIELDS:
             assert field in row, (row["key"], field)
@@ -161,7 +164,7 @@ def test_timings_cover_the_whole_command(default_run):
     assert stages[:3] == ["start-up", "imports", "elastic model"]
     assert stages[-3:] == ["figures", "FE verification", "files"]
     assert all(seconds >= 0.0 for seconds in summary["timings_s"].values())
-    assert set(summary["timings_background_s"]) == {"FE verification", "figures and results file"}
+    assert set(summary["timings_background_s"]) == {"FE verification", "figures and results file", "rig prediction"}
 
 
 def test_the_readme_command_twice_replaces_its_own_report_and_keeps_the_users_files(default_run):

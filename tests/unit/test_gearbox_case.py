@@ -107,7 +107,11 @@ def test_other_temperature_model_keeps_given_temperatures_and_the_gearbox_still_
     ("gearbox.housing.mass_kg", None, "gearbox.housing.mass_kg"),
     ("gearbox.housing.outer_area_m2", 2.0, "gearbox.housing.outer_area_m2"),
     ("gearbox.oil.volume_l", 0.0, "gearbox.oil.volume_l"),
-    ("gearbox.oil.lubrication", "injection", "gearbox.oil.lubrication"),
+    ("gearbox.oil.lubrication", "spray", "gearbox.oil.lubrication"),
+    ("gearbox.oil.lubrication", "injection", "gearbox.oil.injection_flow_l_min"),  # no jet given
+    ("gearbox.oil.jet_speed_m_s", 5.0, "gearbox.oil.jet_speed_m_s"),  # a jet under dip lubrication
+    ("gearbox.oil.jet_position", "outlet", "gearbox.oil.jet_position"),  # likewise
+    ("gearbox.oil.injection_flow_l_min", 0.0, "gearbox.oil.injection_flow_l_min"),
     ("gearbox.ambient_c", 120.0, "gearbox.ambient_c"),
     ("gearbox.internal.gear_oil_w_per_m2_k", -1.0, "gearbox.internal.gear_oil_w_per_m2_k"),
     ("gearbox.oil.wheel_immersion_mm", 500.0, "gearbox.oil.wheel_immersion_mm"),

@@ -37,8 +37,10 @@ def gearbox(case: str = typer.Argument(..., metavar="CASE", help="built-in param
         return
     table = Table(title=f"steady state of the gearbox of {loaded.name} (ambient {operating.ambient_c:g} °C)")
     for name in ("n [rpm]", "T [N·m]", "pinion [°C]", "wheel [°C]", "oil [°C]", "housing [°C]", "mesh [W]",
-                 "bearings [W]", "seals [W]", "churning [W]", "η [%]", "j_bn [μm]"):
+                 "bearings [W]", "seals [W]", "churning/jet [W]", "η [%]", "j_bn [μm]"):
         table.add_column(name, justify="right")
+    # the no-load gear loss: churning of the dipped gears, plus the oil jet's impulse loss (injection)
+    no_load = result.churning_loss if result.injection_loss is None else result.churning_loss + result.injection_loss
     for i, speed in enumerate(result.speeds_rpm):
         for j, torque in enumerate(result.torques):
             if result.runaway[i, j]:
@@ -47,6 +49,6 @@ def gearbox(case: str = typer.Argument(..., metavar="CASE", help="built-in param
             table.add_row(f"{speed:g}", f"{torque:g}",
                           *(f"{result.node(name)[i, j]:.1f}" for name in ("pinion", "wheel", "oil", "housing")),
                           f"{result.mesh_loss[i, j]:.1f}", f"{result.bearing_loss[i, j]:.1f}",
-                          f"{result.seal_loss[i, j]:.1f}", f"{result.churning_loss[i, j]:.1f}",
+                          f"{result.seal_loss[i, j]:.1f}", f"{no_load[i, j]:.1f}",
                           f"{result.efficiency[i, j] * 100:.2f}", f"{result.backlash[i, j] * 1e6:.1f}")
     console.print(table)

@@ -29,7 +29,7 @@ def run_gearbox_warmup(base, duration_s: float, start_c: float | None, interval_
                         f"(gearbox model, {result.gear_model} mesh; start {result.start_c:g} °C, ambient "
                         f"{result.ambient_c:g} °C)")
     for name in ("t [s]", "pinion [°C]", "wheel [°C]", "oil [°C]", "housing [°C]", "mesh [W]", "bearings [W]",
-                 "seals [W]", "churning [W]", "j_bn [μm]", "k̄ [N/μm]", "f_n [Hz]", "Kv"):
+                 "seals [W]", "churning/jet [W]", "j_bn [μm]", "k̄ [N/μm]", "f_n [Hz]", "Kv"):
         table.add_column(name, justify="right")
     rows = len(result.states)
     shown = sorted(set(range(0, rows, max(1, rows // 12))) | {rows - 1})
@@ -39,7 +39,7 @@ def run_gearbox_warmup(base, duration_s: float, start_c: float | None, interval_
         table.add_row(f"{state.time_s:.0f}", *(f"{history.node(name)[column]:.1f}"
                                                for name in ("pinion", "wheel", "oil", "housing")),
                       f"{history.mesh_loss[column]:.1f}", f"{history.bearing_loss[column]:.1f}",
-                      f"{history.seal_loss[column]:.1f}", f"{history.churning_loss[column]:.1f}",
+                      f"{history.seal_loss[column]:.1f}", f"{history.churning_loss[column] + history.jet_loss[column]:.1f}",
                       f"{history.backlash[column] * 1e6:.1f}",
                       "—" if state.mesh_stiffness_mean is None else f"{state.mesh_stiffness_mean * 1e-6:.1f}",
                       "—" if state.natural_frequency_hz is None else f"{state.natural_frequency_hz:.1f}",

@@ -89,6 +89,7 @@ class GearboxWarmupResult:
                            for name in ("pinion", "wheel", "shafts", "oil", "housing")},
                         "mesh_loss_w": history.mesh_loss.tolist(), "bearing_loss_w": history.bearing_loss.tolist(),
                         "seal_loss_w": history.seal_loss.tolist(), "churning_loss_w": history.churning_loss.tolist(),
+                        "injection_loss_w": history.jet_loss.tolist(),
                         "backlash_um": (history.backlash * 1e6).tolist()},
             "states": [{"time_s": state.time_s, "mesh_stiffness_mean_n_per_m": state.mesh_stiffness_mean,
                         "natural_frequency_hz": state.natural_frequency_hz,
@@ -129,12 +130,35 @@ def state_case(case, temperatures_c):
     return replace(case, **changes)
 
 
+def _periodic_kv(sim, previous: tuple[float, float] | None) -> tuple[float, tuple[float, float] | None]:
+    """Kv of the periodic steady response at one state, and the orbit's state at τ = 0 for the next one.
+
+    Nonlinear mesh: the shooting starts from the previous state's orbit (the first state: from the linear solution,
+    as ``Simulation.solve``): the temperatures drift slowly, so the gears stay on the orbit they were on, which is
+    the one Newton finds from its neighbour (a continuation in time). The coexistence check of ``solve`` (a second
+    search from rest) is not run: it only labels the branch, which the warm-up does not report. Linear mesh: the
+    periodic solution is unique; ``solve`` as it is."""
+    dynamics = sim.case.dynamics
+    if dynamics.mesh != "nonlinear":
+        return float(sim.solve(method="periodic").metrics["kv"]), None
+    from thermogear.dynamics.backlash_metrics import orbit_metrics  # noqa: PLC0415
+    from thermogear.dynamics.backlash_periodic import periodic_response  # noqa: PLC0415
+
+    orbit = periodic_response(sim.state.backlash_problem(dynamics.damping_in_flight), initial_state=previous,
+                              samples_per_interval=dynamics.samples_per_interval)
+    kv = float(orbit_metrics(orbit, include_damping_force=dynamics.include_damping_force)["kv"])
+    return kv, (orbit.initial_state if orbit.converged else None)
+
+
 def gearbox_warmup(case, duration_s: float = 1200.0, start_c: float | None = None, interval_s: float = 10.0,
                    gear_model: str = "thermal", dynamics: bool = True, speed_rpm: float | None = None,
-                   points_per_interval: int = 1, simulation: Callable | None = None) -> GearboxWarmupResult:
+                   points_per_interval: int = 1, simulation: Callable | None = None,
+                   warm_start: bool = True) -> GearboxWarmupResult:
     """Predict a warm-up (module docstring). ``start_c``: every node's start temperature [°C] (default the
     ambient, down to −40 °C); ``interval_s``: time between mesh re-evaluations [s]; ``points_per_interval``:
-    network output times per interval (losses and backlash are reported at each)."""
+    network output times per interval (losses and backlash are reported at each); ``warm_start``: each state's
+    periodic solve starts from the previous state's orbit (:func:`_periodic_kv`), else every state is solved
+    afresh with ``Simulation.run`` (its checks and the coexistence search included: the reference)."""
     if simulation is None:
         from thermogear.simulation import Simulation as simulation  # noqa: PLC0415
     if not (math.isfinite(duration_s) and 0.0 < duration_s <= LONGEST_WARM_UP_S):
@@ -158,6 +182,7 @@ def gearbox_warmup(case, duration_s: float = 1200.0, start_c: float | None = Non
     states = []
     reference = case.temperature.reference_c
     base = case.with_changes(**{"operating.speed_rpm": operating.speed_rpm}) if speed_rpm is not None else case
+    orbit_start = None  # the previous state's orbit: where the next state's periodic solve starts
     for index in range(0, history.times.size, int(points_per_interval)):
         time, temperatures = float(history.times[index]), history.temperatures_c[:, index]
         if min(temperatures[0], temperatures[1]) < reference:
@@ -165,7 +190,11 @@ def gearbox_warmup(case, duration_s: float = 1200.0, start_c: float | None = Non
                                                                  f"{reference:g} °C: mesh not evaluated"))
             continue
         sim = simulation(state_case(base, temperatures), gear_model)
-        kv = float(sim.run(method="periodic").metrics["kv"]) if dynamics else None
+        kv = None
+        if dynamics and warm_start:
+            kv, orbit_start = _periodic_kv(sim, orbit_start)
+        elif dynamics:
+            kv = float(sim.run(method="periodic").metrics["kv"])
         states.append(MeshState(time, float(sim.mesh_stiffness_mean), float(sim.natural_frequency_hz),
                                 float(sim.mesh_frequency_hz), kv))
     return GearboxWarmupResult(case.name, gear_model, operating.speed_rpm, operating.torque, operating.ambient_c,

@@ -23,6 +23,7 @@ from typing import TYPE_CHECKING
 from thermogear.case import cached_per_case
 from thermogear.errors import CaseError
 from thermogear.gearbox.bearing_loss import NJ406_CONSTANTS, RollingBearing
+from thermogear.gearbox.injection import OilJet
 from thermogear.gearbox.description import (GearboxDescription, GearboxOperatingPoint, Housing, LipSeal,
                                             MountedBearing)
 from thermogear.thermoelastic.materials import HOUSING_EXPANSION_PER_K
@@ -115,8 +116,12 @@ def gearbox_description_from_case(case: "Case") -> GearboxDescription:
         return material.density * math.pi * (gear.tip_radius**2 - gear.bore_radius**2) * gear.face_width
 
     oil = lubricant_from_case(case)
-    wheel_immersion = (pair.operating_pitch_radii[1] if section.oil.wheel_immersion_mm is None
+    injection = section.oil.lubrication == "injection"
+    default_immersion = 0.0 if injection else pair.operating_pitch_radii[1]
+    wheel_immersion = (default_immersion if section.oil.wheel_immersion_mm is None
                        else section.oil.wheel_immersion_mm * 1e-3)
+    jet = OilJet(section.oil.injection_flow_l_min / 60000.0, section.oil.jet_speed_m_s,
+                 at_outlet=section.oil.jet_position == "outlet") if injection else None
     for key, depth, gear in (("wheel_immersion_mm", wheel_immersion, pair.wheel),
                              ("pinion_immersion_mm", section.oil.pinion_immersion_mm * 1e-3, pair.pinion)):
         if depth > 2.0 * gear.tip_radius:
@@ -137,7 +142,8 @@ def gearbox_description_from_case(case: "Case") -> GearboxDescription:
         gear_shaft_conductance=section.internal.gear_shaft_w_per_k,
         shaft_oil_conductance=section.internal.shaft_oil_w_per_k,
         shaft_housing_conductance=section.internal.shaft_housing_w_per_k,
-        backlash=None if backlash_um is None else backlash_um * 1e-6, assembly_c=case.temperature.reference_c)
+        backlash=None if backlash_um is None else backlash_um * 1e-6, assembly_c=case.temperature.reference_c,
+        oil_jet=jet)
 
 
 def gearbox_operating_point(case: "Case", speed_rpm: float | None = None,
@@ -168,7 +174,8 @@ def describe_prediction(state: "GearboxSteadyState") -> str:
     return (f"temperatures predicted by the gearbox thermal model (steady state): pinion {state.pinion_c:.1f} °C, "
             f"wheel {state.wheel_c:.1f} °C, oil {state.oil_c:.1f} °C, housing {state.housing_c:.1f} °C, from "
             f"losses {losses.total:.1f} W (mesh {losses.mesh:.1f}, bearings {losses.bearings:.1f}, seals "
-            f"{losses.seals:.1f}, churning {losses.churning:.1f} W)")
+            f"{losses.seals:.1f}, churning {losses.churning:.1f}"
+            + (f", oil jet {losses.injection:.1f}" if losses.injection else "") + " W)")
 
 
 def prediction_note(case: "Case") -> str | None:

@@ -15,6 +15,7 @@ from dataclasses import dataclass, field
 
 from thermogear.errors import CaseError
 from thermogear.gearbox.bearing_loss import RollingBearing
+from thermogear.gearbox.injection import OilJet
 from thermogear.geometry import GearPair
 from thermogear.lubricant import Lubricant
 
@@ -76,7 +77,8 @@ class GearboxDescription:
     immersion depths [m] of the wheel and pinion (0: above the oil), composite roughness R_a [m], the friction
     formula's lubricant factor X_L, the pinion's share of the tooth friction heat, the gear loss factor (None:
     Ohlendorf's H_V of the pair; give the mesh model's H_VL to use its load sharing), the cold normal backlash
-    [m] (None: the AGMA 2002 minimum) and the assembly temperature [°C] at which it holds.
+    [m] (None: the AGMA 2002 minimum) and the assembly temperature [°C] at which it holds; ``oil_jet``: the
+    into-mesh jet of injection lubrication (its impulse loss; the gears then usually dip nowhere: immersions 0).
     """
 
     gear_pair: GearPair
@@ -104,6 +106,7 @@ class GearboxDescription:
     shaft_housing_conductance: float = 8.0  # [W/K] through the bearing seats (assumed: calibrate)
     backlash: float | None = None
     assembly_c: float = 20.0
+    oil_jet: OilJet | None = None  # injection lubrication: an into-mesh jet (None: dip lubrication only)
     notes: tuple[str, ...] = field(default=(), compare=False)
 
     def __post_init__(self) -> None:

@@ -4,9 +4,10 @@ Tooth friction P_VZP = P_in·μ_m·H_V (Niemann & Winter §21.6) with the projec
 coefficient (thermogear.friction) at the oil temperature, evaluated at the pitch point (sum of rolling speeds
 2·v_t·sin α_w, relative radius of curvature at C, unit load F_bt/b); bearings by the SKF model at the viscosity
 of the oil at the shaft node's temperature, radial load a fraction of the tooth normal force; lip seals; churning
-of the dipped gears at the oil temperature (:mod:`~thermogear.gearbox.churning`). Heat goes to the nodes as:
-tooth friction to pinion and wheel by the description's share, bearings and seals to the shaft node, churning to
-the oil.
+of the dipped gears at the oil temperature (:mod:`~thermogear.gearbox.churning`); the impulse loss of an
+into-mesh oil jet where the description has one (injection lubrication, :mod:`~thermogear.gearbox.injection`).
+Heat goes to the nodes as: tooth friction to pinion and wheel by the description's share, bearings and seals to
+the shaft node, churning and the jet's impulse loss to the oil.
 """
 
 from __future__ import annotations
@@ -22,6 +23,7 @@ from thermogear.friction import friction_validity_warnings, mean_friction_coeffi
 from thermogear.gearbox.bearing_loss import seal_power_loss
 from thermogear.gearbox.churning import DippedGear, churning_power_loss, churning_validity
 from thermogear.gearbox.description import GearboxDescription, GearboxOperatingPoint
+from thermogear.gearbox.injection import jet_impulse_power, jet_validity
 from thermogear.gearbox.mesh_loss import mesh_power_loss, pair_gear_loss_factor
 
 NODES = ("pinion", "wheel", "shafts", "oil", "housing")
@@ -39,11 +41,12 @@ class PowerLosses:
     friction_coefficient: float
     input_power: float
     pinion_heat_share: float
+    injection: float = 0.0  # impulse loss of the oil jet (injection lubrication) [W]
 
     @property
     def total(self) -> float:
         """Σ losses [W]."""
-        return self.mesh + self.bearings + self.seals + self.churning
+        return self.mesh + self.bearings + self.seals + self.churning + self.injection
 
     @property
     def efficiency(self) -> float:
@@ -55,7 +58,7 @@ class PowerLosses:
         """Heat into pinion, wheel, shafts, oil, housing [W]."""
         share = self.pinion_heat_share
         return np.array([share * self.mesh, (1.0 - share) * self.mesh, self.bearings + self.seals,
-                         self.churning, 0.0])
+                         self.churning + self.injection, 0.0])
 
 
 def _dipped(description: GearboxDescription, wheel: bool) -> DippedGear | None:
@@ -88,6 +91,15 @@ class LossModel:
             message = None if gear is None else churning_validity(gear)
             if message:
                 warnings.warn(message, ExtrapolationWarning, stacklevel=3)
+        jet = self.description.oil_jet
+        message = None if jet is None else jet_validity(jet, self.pitch_line_speed)
+        if message:
+            warnings.warn(message, ExtrapolationWarning, stacklevel=3)
+
+    @property
+    def pitch_line_speed(self) -> float:
+        """v_t = ω1·r_w1 [m/s] (operating pitch circle)."""
+        return self.operating.speed_rpm * math.pi / 30.0 * self.description.gear_pair.operating_pitch_radii[0]
 
     def _friction_at_viscosity(self, viscosity: float) -> float:
         pair, description = self.description.gear_pair, self.description
@@ -138,5 +150,7 @@ class LossModel:
         for gear, rpm in zip(self._dipped, (pinion_rpm, wheel_rpm)):
             if gear is not None:
                 churning += churning_power_loss(gear, rpm * math.pi / 30.0, oil_viscosity, density)
+        jet = description.oil_jet
+        injection = 0.0 if jet is None else jet_impulse_power(jet, density, self.pitch_line_speed)
         return PowerLosses(mesh, float(bearings), float(seals), churning, friction, operating.input_power,
-                           description.pinion_heat_share)
+                           description.pinion_heat_share, injection)

@@ -82,10 +82,16 @@ class WarmUpHistory:
     churning_loss: np.ndarray
     backlash: np.ndarray
     energy_residual: float  # identity ∫ΣP dt = ΔΣCT + ∫Q_out dt, relative
+    injection_loss: np.ndarray | None = None  # impulse loss of the oil jet [W] (None: no jet)
+
+    @property
+    def jet_loss(self) -> np.ndarray:
+        """The oil jet's impulse loss (m,) [W]: zeros without a jet."""
+        return np.zeros_like(self.mesh_loss) if self.injection_loss is None else self.injection_loss
 
     @property
     def total_loss(self) -> np.ndarray:
-        return self.mesh_loss + self.bearing_loss + self.seal_loss + self.churning_loss
+        return self.mesh_loss + self.bearing_loss + self.seal_loss + self.churning_loss + self.jet_loss
 
     def node(self, name: str) -> np.ndarray:
         """Temperature history of one node [°C] (``"pinion"``, ``"wheel"``, ``"shafts"``, ``"oil"``, ``"housing"``)."""
@@ -178,4 +184,5 @@ class GearboxThermalModel:
                              np.array([s.bearings for s in states]), np.array([s.seals for s in states]),
                              np.array([s.churning for s in states]),
                              np.array([self.backlash(temperatures[:, index]) for index in range(times.size)]),
-                             transient.energy_residual)
+                             transient.energy_residual,
+                             None if self.description.oil_jet is None else np.array([s.injection for s in states]))

@@ -39,6 +39,7 @@ class SteadySweep:
     churning_loss: np.ma.MaskedArray
     efficiency: np.ma.MaskedArray
     backlash: np.ma.MaskedArray
+    injection_loss: np.ma.MaskedArray | None = None  # the oil jet's impulse loss [W] (None: no jet)
 
     @property
     def runaway(self) -> np.ndarray:
@@ -47,7 +48,8 @@ class SteadySweep:
 
     @property
     def total_loss(self) -> np.ma.MaskedArray:
-        return self.mesh_loss + self.bearing_loss + self.seal_loss + self.churning_loss
+        total = self.mesh_loss + self.bearing_loss + self.seal_loss + self.churning_loss
+        return total if self.injection_loss is None else total + self.injection_loss
 
     def node(self, name: str) -> np.ma.MaskedArray:
         """Temperatures of one node (m, k) [°C]."""
@@ -65,6 +67,7 @@ class SteadySweep:
                 **{f"{name}_c": listed(self.node(name)) for name in NODES},
                 "mesh_loss_w": listed(self.mesh_loss), "bearing_loss_w": listed(self.bearing_loss),
                 "seal_loss_w": listed(self.seal_loss), "churning_loss_w": listed(self.churning_loss),
+                **({} if self.injection_loss is None else {"injection_loss_w": listed(self.injection_loss)}),
                 "efficiency": listed(self.efficiency), "backlash_um": listed(self.backlash * 1e6),
                 "runaway": self.runaway.tolist()}
 
@@ -79,7 +82,7 @@ def steady_sweep(model, speeds_rpm, torques, ambient_c: float = 20.0) -> SteadyS
     shape = (speeds.size, loads.size)
     temperatures = np.ma.masked_all((5,) + shape)
     outputs = {name: np.ma.masked_all(shape) for name in ("mesh", "bearings", "seals", "churning", "efficiency",
-                                                          "backlash")}
+                                                          "backlash", "injection")}
     with warnings.catch_warnings():
         # the viscosity-range warning of each point is raised once below for the whole grid
         warnings.simplefilter("ignore", ExtrapolationWarning)
@@ -93,6 +96,7 @@ def steady_sweep(model, speeds_rpm, torques, ambient_c: float = 20.0) -> SteadyS
                 losses = state.losses
                 for name, value in (("mesh", losses.mesh), ("bearings", losses.bearings), ("seals", losses.seals),
                                     ("churning", losses.churning), ("efficiency", losses.efficiency),
+                                    ("injection", losses.injection),
                                     ("backlash", state.backlash)):
                     outputs[name][i, j] = value
     fitted = model.description.lubricant.fitted_range_c
@@ -101,4 +105,5 @@ def steady_sweep(model, speeds_rpm, torques, ambient_c: float = 20.0) -> SteadyS
                       f"{float(temperatures[2:4].max()):.1f} °C over the grid leave the viscosity fit's range "
                       f"{fitted[0]:g}…{fitted[1]:g} °C (ASTM D341 extrapolated)", ExtrapolationWarning, stacklevel=2)
     return SteadySweep(speeds, loads, float(ambient_c), temperatures, outputs["mesh"], outputs["bearings"],
-                       outputs["seals"], outputs["churning"], outputs["efficiency"], outputs["backlash"])
+                       outputs["seals"], outputs["churning"], outputs["efficiency"], outputs["backlash"],
+                       None if model.description.oil_jet is None else outputs["injection"])

@@ -16,6 +16,7 @@ from typing import Callable
 from thermogear.citations import citations_used, clear_citations
 from thermogear.report.evaluate import (Evaluation, evaluate_case, is_paper_case, key_results, model_messages,
                                         paper_verdicts)
+from thermogear.report.rig_section import rig_section, rig_verdicts, start_rig_prediction, with_rig_section
 from thermogear.report.steps import steps_of_report
 from thermogear.report.writer import OutputFolder
 
@@ -71,6 +72,7 @@ def build_report(case, out: Path | str, *, force: bool = False, method: str = "p
     folder.check()
     clear_citations()
     paper = is_paper_case(case) if paper is None else paper
+    rig = start_rig_prediction() if paper else None  # the paper's rig, predicted in a child meanwhile
     evaluation = evaluate_case(case, method=method, progress=step, wait=False)  # FE: still in its child
     evaluation.timings = {**before, **evaluation.timings}
     with folder:
@@ -100,7 +102,7 @@ def build_report(case, out: Path | str, *, force: bool = False, method: str = "p
         missing = {name: missing[name] for name in FIGURES if name in missing}
         figures = [name for name in FIGURES if name not in missing]
         pngs = {name: (figure_folder / f"{name}.png").read_bytes() for name in figures}
-        verdicts = paper_verdicts(evaluation) if paper else []
+        verdicts = paper_verdicts(evaluation) + rig_verdicts(rig) if paper else []
         results = key_results(evaluation)
         messages = [text for model, response in evaluation.responses.items()
                     for text in model_messages(response, model)]
@@ -108,6 +110,9 @@ def build_report(case, out: Path | str, *, force: bool = False, method: str = "p
         page = render_report(evaluation, version=__version__, toml_text=case_toml_text(case), pngs=pngs,
                              missing_figures=missing, results=results, verdicts=verdicts, messages=messages,
                              citations=citations)
+        if paper:
+            page = with_rig_section(page, rig_section(rig))
+            evaluation.background_timings["rig prediction"] = rig.seconds
         (folder.path / "report.html").write_text(page, encoding="utf-8")
         evaluation.timings["files"] = time.perf_counter() - write_start  # summary.json, written last, is ~1 ms
         document = summary_document(evaluation, verdicts, results, messages, figures, missing, citations)

@@ -16,9 +16,9 @@ emissivity = 0.9                  # painted
 air_speed_m_s = 1.0               # along the walls (0: still air)
 
 [gearbox.oil]
-lubrication = "dip"
+lubrication = "dip"               # dip | injection (then injection_flow_l_min and jet_speed_m_s)
 volume_l = 1.25
-wheel_immersion_mm = 40.0         # default: the wheel dipped to its centre
+wheel_immersion_mm = 40.0         # default: the wheel dipped to its centre (injection: 0)
 
 [[gearbox.bearings]]
 shaft = "pinion"                  # pinion | wheel
@@ -89,16 +89,43 @@ class GearboxHousingSection(Section):
 class GearboxOilSection(Section):
     """The oil sump: volume, how deep the gears dip, how the mesh is lubricated."""
 
-    lubrication: Literal["dip"] = Field(
-        "dip", description="dip (splash) lubrication; injection has no loss model here yet")
+    lubrication: Literal["dip", "injection"] = Field(
+        "dip", description="dip (splash) lubrication: churning of the dipped gears; injection: an into-mesh oil jet "
+                           "(its impulse loss), the gears above the oil unless immersions are given")
     volume_l: Annotated[float, Field(gt=0.0, le=10000.0, allow_inf_nan=False)] = Field(
         description="oil volume [L]")
     wheel_immersion_mm: Annotated[float, Field(ge=0.0, le=5000.0, allow_inf_nan=False)] | None = Field(
-        None, description="depth the wheel dips into the oil [mm]; default its operating pitch radius")
+        None, description="depth the wheel dips into the oil [mm]; default its operating pitch radius (dip) or 0 "
+                          "(injection)")
+    injection_flow_l_min: Annotated[float, Field(gt=0.0, le=1000.0, allow_inf_nan=False)] | None = Field(
+        None, description="oil flow of the into-mesh jet [L/min] (injection only)")
+    jet_speed_m_s: Annotated[float, Field(gt=0.0, le=200.0, allow_inf_nan=False)] | None = Field(
+        None, description="speed of the oil jet [m/s] (injection only; an inlet jet at most the pitch-line speed "
+                          "for its impulse loss)")
+    jet_position: Literal["inlet", "outlet"] = Field(
+        "inlet", description="injection only: the jet aimed into the mesh inlet, with the teeth (inlet), or at the "
+                             "mesh outlet, against them (outlet)")
     pinion_immersion_mm: Annotated[float, Field(ge=0.0, le=5000.0, allow_inf_nan=False)] = Field(
         0.0, description="depth the pinion dips into the oil [mm] (0: above the oil)")
     specific_heat_j_per_kg_k: Annotated[float, Field(ge=1000.0, le=4000.0, allow_inf_nan=False)] = Field(
         2000.0, description="oil specific heat [J/(kg K)]")
+
+    @model_validator(mode="after")
+    def _jet_with_injection(self):
+        jet = {"injection_flow_l_min": self.injection_flow_l_min, "jet_speed_m_s": self.jet_speed_m_s}
+        if self.lubrication == "injection":
+            for key, value in jet.items():
+                if value is None:
+                    raise CaseError(f"gearbox.oil.{key}", None, "a number > 0",
+                                    "injection lubrication needs the jet's flow and speed for its impulse loss")
+        else:
+            if "jet_position" in self.model_fields_set:
+                jet["jet_position"] = self.jet_position
+            for key, value in jet.items():
+                if value is not None:
+                    raise CaseError(f"gearbox.oil.{key}", value, 'only with lubrication = "injection"',
+                                    "dip lubrication has no oil jet")
+        return self
 
 
 class GearboxBearingSection(Section):

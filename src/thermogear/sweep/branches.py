@@ -25,7 +25,7 @@ import numpy as np
 from thermogear import warning_scope
 from thermogear.dynamics.backlash_continuation import follow_branch
 from thermogear.errors import CaseError, JammingError
-from thermogear.mesh.model import MeshModel
+from thermogear.mesh.model import PREDICTED_AT_LOAD_TEMPERATURE_MODELS, MeshModel
 from thermogear.sweep.hysteresis import hysteresis_bands
 
 __all__ = ["DIRECTIONS", "BRANCH_VARIABLES", "branch_study", "hysteresis_bands", "write_branch_store"]
@@ -66,15 +66,15 @@ def _directions(direction: str) -> tuple[str, ...]:
 class _Group:
     """The results of one group (one combination of the parameters other than speed), all speeds of it.
 
-    Arrays ``(directions, models, speeds)`` per variable, ``jammed`` (models,), ``static_load`` and
-    ``mesh_frequency_hz`` (speeds,)."""
+    Arrays ``(directions, models, speeds)`` per variable, ``jammed`` and ``natural_frequency_hz``
+    ``(models, speeds)``, ``static_load`` and ``mesh_frequency_hz`` (speeds,)."""
 
     arrays: dict[str, np.ndarray]
     response: np.ndarray
     jammed: np.ndarray
     static_load: np.ndarray
     mesh_frequency_hz: np.ndarray
-    natural_frequency_hz: np.ndarray  # (models,) of the linear mesh with every pair in contact [Hz]
+    natural_frequency_hz: np.ndarray  # (models, speeds) of the linear mesh with every pair in contact [Hz]
 
 
 def _group_values(study, rest: tuple[int, ...], speed_axis: int | None) -> tuple[list, tuple]:
@@ -87,12 +87,38 @@ def _group_values(study, rest: tuple[int, ...], speed_axis: int | None) -> tuple
     return values, tuple(index)
 
 
+def _speed_cases(group_case, speeds: np.ndarray) -> list | None:
+    """One case per speed where the case's temperatures are predicted at its own operating point (the gearbox
+    model: each speed has its own steady temperatures, so its own hot geometry, E(T) and oil); None otherwise
+    (every speed evaluated on the group's case)."""
+    if group_case.temperature.model not in PREDICTED_AT_LOAD_TEMPERATURE_MODELS:
+        return None
+    return [group_case.with_changes(**{"operating.speed_rpm": float(speed)}) for speed in speeds]
+
+
 def _problems(group_case, model: str, speeds: np.ndarray) -> tuple[list, np.ndarray]:
-    """The backlash problem of every speed [rpm] of one model of a group's case, and the static loads [N]."""
-    mesh = MeshModel(group_case, model)
-    loads = np.array([mesh.normal_load(speed) for speed in speeds])
-    problems = [mesh.state(speed_rpm=speed, normal_load=load).backlash_problem(group_case.dynamics.damping_in_flight)
-                for speed, load in zip(speeds, loads)]
+    """The backlash problem of every speed [rpm] of one model of a group's case, and the static loads [N]. A speed
+    whose gears jam gives None (with a gearbox case each speed has its own temperatures: some may jam, others
+    not); on the group's case a jam at the case's temperatures raises JammingError (every speed jams)."""
+    cases = _speed_cases(group_case, speeds)
+    if cases is None:
+        mesh = MeshModel(group_case, model)
+        loads = np.array([mesh.normal_load(speed) for speed in speeds])
+        problems = [mesh.state(speed_rpm=speed, normal_load=load).backlash_problem(
+            group_case.dynamics.damping_in_flight) for speed, load in zip(speeds, loads)]
+        return problems, loads
+    problems, loads = [], np.full(speeds.size, np.nan)
+    for index, (case, speed) in enumerate(zip(cases, speeds)):
+        try:
+            mesh = MeshModel(case, model)
+            loads[index] = mesh.normal_load(speed)
+            problems.append(mesh.state(speed_rpm=speed, normal_load=loads[index]).backlash_problem(
+                case.dynamics.damping_in_flight))
+        except JammingError:  # this speed's steady temperatures close the backlash
+            problems.append(None)
+        except CaseError as error:  # e.g. temperatures beyond the material data: say at which speed
+            raise CaseError(error.key, error.value, error.allowed, f"{error.reason} (at {speed:g} rpm, the gearbox "
+                            "model's steady temperatures there)") from None
     return problems, loads
 
 
@@ -106,9 +132,9 @@ def _solve_group(study, rest: tuple[int, ...], speed_axis: int | None, direction
     arrays = {name: np.full(shape, np.nan) for name in BRANCH_VARIABLES}
     arrays["converged"][:] = 0.0  # a jammed point has no orbit: never labelled converged (nor NaN)
     response = np.full(shape, "jammed", dtype=object)
-    jammed = np.zeros(len(study.models), dtype=bool)
+    jammed = np.zeros((len(study.models), count), dtype=bool)
     static_load, frequency = np.full(count, np.nan), np.full(count, np.nan)
-    natural = np.full(len(study.models), np.nan)
+    natural = np.full((len(study.models), count), np.nan)
     try:
         group_case = study.case_at(tuple(values))
     except JammingError:
@@ -124,13 +150,21 @@ def _solve_group(study, rest: tuple[int, ...], speed_axis: int | None, direction
             jammed[model_index] = True
             continue
         static_load[:] = loads
-        natural[model_index] = problems[0].natural_frequency  # k and me do not change with the speed
+        # the speeds whose gears do not jam, followed in order (with a gearbox case a jammed speed is skipped: the
+        # branch goes on from the last orbit found, which only seeds Newton at the next speed)
+        free = np.array([problem is not None for problem in problems])
+        jammed[model_index] = ~free
+        if not free.any():
+            continue
+        solvable = [problem for problem in problems if problem is not None]
+        natural[model_index, free] = [problem.natural_frequency for problem in solvable]
         for direction_index, way in enumerate(directions):
-            branch = follow_branch(problems, way, parameter=speeds,
+            branch = follow_branch(solvable, way, parameter=speeds[free],
                                    include_damping_force=group_case.dynamics.include_damping_force)
-            target = (direction_index, model_index)
+            target = (direction_index, model_index, free)
             for name, source in _FROM_BRANCH.items():
-                arrays[name][target] = branch[source] / loads if name == "max_system_load_ratio" else branch[source]
+                arrays[name][target] = (branch[source] / loads[free] if name == "max_system_load_ratio"
+                                        else branch[source])
             arrays["back_side_contact"][target] = branch["back_side_contact"].astype(float)
             arrays["period_count"][target] = branch.period_count.astype(float)
             arrays["converged"][target] = branch.converged.astype(float)
@@ -151,6 +185,8 @@ def _search_point(study, rest: tuple[int, ...], speed_axis: int | None, model_in
                   if speed_axis is not None else np.array([group_case.operating_point.speed_rpm], dtype=float))
         problems, _ = _problems(group_case, study.models[model_index], speeds)
     except JammingError:
+        return None
+    if problems[0] is None:  # this speed's own temperatures jam the gears (a gearbox case)
         return None
     return point_orbits(problems[0], starts, group_case.dynamics.include_damping_force)
 
@@ -216,9 +252,9 @@ def branch_study(study, direction: str = "both", progress=None, workers: int | N
         for name in BRANCH_VARIABLES:
             arrays[name][(slice(None), slice(None), *where)] = pick(group.arrays[name])
         response[(slice(None), slice(None), *where)] = pick(group.response)
-        jammed[(slice(None), *where)] = group.jammed[:, None] if speed_axis is not None else group.jammed
-        natural[(slice(None), *where)] = (group.natural_frequency_hz[:, None] if speed_axis is not None
-                                          else group.natural_frequency_hz)
+        jammed[(slice(None), *where)] = group.jammed if speed_axis is not None else group.jammed[:, 0]
+        natural[(slice(None), *where)] = (group.natural_frequency_hz if speed_axis is not None
+                                          else group.natural_frequency_hz[:, 0])
         static_load[where] = pick(group.static_load)
         frequency[where] = pick(group.mesh_frequency_hz)
         if progress is not None:

@@ -19,7 +19,9 @@ from thermogear.case import cached_per_case
 from thermogear.geometry import GearPair
 from thermogear.materials import Material
 from thermogear.mesh_cycle import MeshCycle, MeshGrid
-from thermogear.stiffness.table import pair_stiffness_at, tooth_compliance_at
+from thermogear.stiffness import scaled_compliance
+from thermogear.stiffness import table as stiffness_table
+from thermogear.stiffness.table import pair_stiffness_at
 from thermogear.thermal.temperature import TemperatureField, temperature_field_from_case
 from thermogear.thermoelastic.deviations import (base_pitch_deviation, equivalent_bulk_rise, flank_distortion,
                                                  tip_relief)
@@ -94,9 +96,11 @@ class ThermoelasticMesh:
         this is the ratio times the cached pair stiffness (bit for bit the elastic one at ratio 1).
         """
         ratio_pinion, ratio_wheel = self.modulus_ratios
+        # a grown pair: its table from one interpolant per gear shape (the same values to < 1e-11)
+        source = scaled_compliance if self.gear_pair is not self.cold_gear_pair else stiffness_table
         if ratio_pinion == ratio_wheel:
-            return ratio_pinion * pair_stiffness_at(self.gear_pair, self.material, roll)
-        pinion, wheel = tooth_compliance_at(self.gear_pair, self.material, roll)
+            return ratio_pinion * source.pair_stiffness_at(self.gear_pair, self.material, roll)
+        pinion, wheel = source.tooth_compliance_at(self.gear_pair, self.material, roll)
         return 1.0 / (pinion / ratio_pinion + wheel / ratio_wheel)
 
     def elastic_pair_stiffness_at(self, roll) -> np.ndarray:
