@@ -44,34 +44,45 @@ def _stiffened_pair(scale: float):
                        wheel_inertia=(1.5, 9e-3, 4.5e-3), bearing_damping=1e3, material_damping=1e-2 / scale)
 
 
+def _limit(stiff: float, stiffer: float) -> float:
+    """Richardson's extrapolation of a quantity q(s) = q∞ + a/s + O(1/s²) to s → ∞ from its values at s and 10 s."""
+    return stiffer + (stiffer - stiff) / 9.0
+
+
 @pytest.mark.slow
 def test_rigid_supports_reproduce_the_one_dof_periodic_result():
+    from thermogear.dynamics.metrics import compute_metrics
+
     mass = J_1 * J_2 / (J_1 * R_B2**2 + J_2 * R_B1**2)
     state = _mesh_state(mass, deviation=3e-6)
     orbit = periodic_steady_state(state.problem(), samples_per_interval=16)
     scale = np.abs(orbit.displacement).max()
-    errors, responses = [], []
-    for stiffening in (1e4, 1e5):
-        response = drivetrain_periodic_response(_stiffened_pair(stiffening).assemble(), state, samples_per_piece=16)
-        errors.append(np.abs(response.transmission_error - orbit.displacement).max() / scale)
-        responses.append(response)
-    # the supports' compliance lowers the mesh mode by ~k_m/k_support: the difference falls ~10× per decade of
-    # stiffness (measured 3.2e-5 → 4.0e-6), i.e. the drivetrain tends to the 1-DOF orbit. At 1e5× steel it is within
-    # 1e-5; the issue's 1e-6 needs supports ≥ 1e15 N/m, where the stiffness contrast (1e13) costs double precision
-    # about 1e-6 in the exponentials, so the limit is checked by its rate here rather than at one extreme point
-    assert errors[1] < 1e-5
-    assert errors[0] / errors[1] > 5.0
-    from thermogear.dynamics.metrics import compute_metrics
     interval = np.minimum(np.arange(orbit.time.size) // 16, 2)
     one_dof = compute_metrics(state.problem(), orbit.time, orbit.displacement, orbit.velocity, interval,
                               orbit.multipliers)
-    stiffest = responses[1]
-    assert stiffest.kv == pytest.approx(one_dof["kv"], rel=1e-5)
-    assert stiffest.metrics["dte_rms"] == pytest.approx(one_dof["dte_rms"], rel=1e-5)
-    # the pair's two multipliers are among the n-DOF system's (the support modes add their own); a multiplier's
-    # phase is ω·T ≈ 7 rad here, so the ~4e-6 relative shift of ω moves it by ~3e-5 of |μ|: 1e-4 of |μ|
+    stiff, stiffer = (drivetrain_periodic_response(_stiffened_pair(stiffening).assemble(), state, samples_per_piece=16)
+                      for stiffening in (1e4, 1e5))
+    errors = [np.abs(response.transmission_error - orbit.displacement).max() / scale for response in (stiff, stiffer)]
+    # The supports' compliance is physical: it lowers the mesh mode by ~k_m/k_support, so the difference from the
+    # 1-DOF orbit is a/k + O(1/k²) (measured 3.17e-5 → 3.19e-6, a fall of 9.93 per decade). It cannot be followed
+    # directly below ~1e-6: at 1e6× steel the support modes reach ~1e7 rad/s, ω·h ≈ 6e3 rad over a piece, and the
+    # ~14 squarings of their exponentials leave a rounding floor of ~5e-7 (measured 8.4e-7 at 1e6×, 2.3e-5 at
+    # 1e7×). So the limit is taken honestly by its rate: the fall per decade is 10 within 20 % (1/k; the O(1/k²)
+    # and the floor move it by < 1 % here), the error law then gives < 1e-6 from 3.2e5× steel on, and Richardson's
+    # extrapolation of the two solutions (which removes a/k) reproduces the 1-DOF orbit to 1e-6, as the issue asks
+    # (measured 4.3e-8; Kv 2.4e-8, DTE rms 4.7e-8, multipliers 9e-8)
+    assert errors[1] < 1e-5
+    assert 8.0 < errors[0] / errors[1] < 12.0
+    limit = _limit(stiff.transmission_error, stiffer.transmission_error)
+    assert np.abs(limit - orbit.displacement).max() < 1e-6 * scale
+    assert _limit(stiff.kv, stiffer.kv) == pytest.approx(one_dof["kv"], rel=1e-6)
+    assert _limit(stiff.metrics["dte_rms"], stiffer.metrics["dte_rms"]) == pytest.approx(one_dof["dte_rms"], rel=1e-6)
+    # the pair's two multipliers are among the n-DOF system's (the support modes add their own), each extrapolated
+    # from its nearest one at both stiffnesses
     for multiplier in orbit.multipliers:
-        assert np.abs(stiffest.multipliers - multiplier).min() < 1e-4 * abs(multiplier)
+        nearest = [response.multipliers[np.argmin(np.abs(response.multipliers - multiplier))]
+                   for response in (stiff, stiffer)]
+        assert abs(_limit(*nearest) - multiplier) < 1e-6 * abs(multiplier)
 
 
 def test_bearing_forces_balance_the_mesh_force_on_each_shaft():

@@ -97,8 +97,9 @@ _UNIT_ROUNDOFF = 2.0**-53
 
 
 def _rank_update_degree(beta: float) -> int:
-    """Least d with 2β·β^d/d!/(1 − β/(d+1)) ≤ 2⁻⁵³ (β ≤ 1; see the module docstring)."""
-    degree = 1
+    """Least d with 2β·β^d/d!/(1 − β/(d+1)) ≤ 2⁻⁵³ (see the module docstring; the geometric bound of the tail needs
+    d + 1 > β)."""
+    degree = max(1, int(math.floor(beta)) + 1)
     while 2.0 * beta * beta**degree / math.factorial(degree) / (1.0 - beta / (degree + 1)) > _UNIT_ROUNDOFF:
         degree += 1
     return degree
