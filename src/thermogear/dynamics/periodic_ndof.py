@@ -137,8 +137,9 @@ def _mass_inverse(system: PiecewiseLinearSystem) -> np.ndarray:
     return cho_solve(factor, np.eye(system.size))
 
 
-def _piece_steps(system: PiecewiseLinearSystem, samples: int) -> np.ndarray:
-    """(N, 2n+1, 2n+1) exponentials of the augmented pieces over one sub-step h_j/samples each.
+def _piece_steps(system: PiecewiseLinearSystem, samples: int) -> tuple[np.ndarray, np.ndarray]:
+    """(D, 2n+1, 2n+1) exponentials of the D distinct augmented pieces over one sub-step h_j/samples each, and the
+    index (N,) of each piece's among them.
 
     Two exact economies. Pieces with the same (h_j, k_j, c_j, g_j) have the same exponential: it is taken once
     (a square-wave or piecewise-constant k(τ) of a few levels needs a few exponentials for any number of pieces).
@@ -171,7 +172,7 @@ def _piece_steps(system: PiecewiseLinearSystem, samples: int) -> np.ndarray:
         right[:, :, n:2 * n] = -shift[:, 1, None, None] * (range_basis.T @ system.damping_pattern)
         right[:, :, 2 * n] = shift[:, 2, None] * (range_basis.T @ system.force_pattern)
         steps = expm_of_rank_updates(mean, left, right, distinct[:, 0])
-    return steps if steps.shape[0] == where.size and np.array_equal(where, np.arange(where.size)) else steps[where]
+    return steps, where
 
 
 _RANK_ROUTE_PIECES = 16  # distinct pieces from which the rank-update exponentials are used
@@ -211,16 +212,21 @@ def ordered_product(matrices: np.ndarray) -> np.ndarray:
     return stack[..., 0, :, :]
 
 
-def _blocks(steps: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """The steps in B ≈ √N consecutive blocks (padded with identities) and each block's ordered product: the
-    monodromy is the product of the B block products (the same N − 1 matrix products as one tree), and the states
-    at every node follow from B sequential products plus √N batched ones instead of N sequential ones."""
-    count, size = steps.shape[0], steps.shape[1]
+def _blocks(distinct: np.ndarray, where: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The steps ``distinct[where]`` in B ≈ √N consecutive blocks (padded with identities) and each block's ordered
+    product: the monodromy is the product of the B block products (the same N − 1 matrix products as one tree), and
+    the states at every node follow from B sequential products plus √N batched ones instead of N sequential ones.
+    Blocks made of the same sequence of distinct pieces share one product (exact: the same matrices multiplied in
+    the same order), so a k(τ) of a few levels — most blocks lie inside one level — costs a few block products:
+    the repeated-piece economy exp(A·h)ⁿ of equal pieces without any special case."""
+    count, size = where.size, distinct.shape[1]
     block = max(1, int(round(math.sqrt(count))))
     blocks = -(-count // block)
-    padded = np.concatenate([steps, np.broadcast_to(np.eye(size), (blocks * block - count, size, size))])
-    padded = padded.reshape(blocks, block, size, size)
-    return padded, ordered_product(padded)
+    with_identity = np.concatenate([distinct, np.eye(size)[None]])
+    indices = np.concatenate([where, np.full(blocks * block - count, distinct.shape[0])]).reshape(blocks, block)
+    patterns, which = np.unique(indices, axis=0, return_inverse=True)
+    products = ordered_product(with_identity[patterns])[which.ravel()]
+    return with_identity[indices], products
 
 
 def _orbit_nodes(padded: np.ndarray, products: np.ndarray, start: np.ndarray, count: int) -> np.ndarray:
@@ -240,7 +246,8 @@ def _orbit_nodes(padded: np.ndarray, products: np.ndarray, start: np.ndarray, co
 
 def monodromy(system: PiecewiseLinearSystem) -> tuple[np.ndarray, np.ndarray]:
     """Monodromy Φ_T (2n, 2n) and the image p (2n,) of z = 0 after one period."""
-    total = ordered_product(_piece_steps(system, 1))
+    distinct, where = _piece_steps(system, 1)
+    total = ordered_product(distinct[where])
     return total[:-1, :-1], total[:-1, -1]
 
 
@@ -253,8 +260,8 @@ def periodic_response(system: PiecewiseLinearSystem, samples_per_piece: int = 16
     if int(samples_per_piece) != samples_per_piece or samples_per_piece < 1:
         raise ProblemError("samples_per_piece", samples_per_piece, "integer >= 1", "sub-steps per piece")
     samples = int(samples_per_piece)
-    steps = _piece_steps(system, samples)
-    padded, products = _blocks(_power(steps, samples))
+    distinct, where = _piece_steps(system, samples)
+    padded, products = _blocks(_power(distinct, samples), where)
     total = ordered_product(products)
     transition, image = total[:-1, :-1], total[:-1, -1]
     multipliers = np.linalg.eigvals(transition)
@@ -264,13 +271,15 @@ def periodic_response(system: PiecewiseLinearSystem, samples_per_piece: int = 16
         raise ModelLimitError(f"a Floquet multiplier has modulus {radius:.6g} >= 1: parametric instability, an "
                               "undamped or a rigid-body mode; there is no attracting periodic orbit")
     initial = np.linalg.solve(np.eye(transition.shape[0]) - transition, image)
-    n, pieces = system.size, len(steps)
+    n, pieces = system.size, where.size
     nodes = _orbit_nodes(padded, products, np.append(initial, 1.0), pieces)
     within = np.empty((pieces, samples, 2 * n + 1))
     current = nodes[:-1]
+    steps = distinct[where] if samples > 1 else None
     for sample in range(samples):  # the sub-steps of every piece at once
         within[:, sample] = current
-        current = (steps @ current[:, :, None])[:, :, 0]
+        if sample + 1 < samples:
+            current = (steps @ current[:, :, None])[:, :, 0]
     states = np.vstack([within.reshape(pieces * samples, 2 * n + 1), nodes[-1:]])
     offsets = np.arange(samples) / samples
     time = np.concatenate([(system.nodes[:-1, None] + np.diff(system.nodes)[:, None] * offsets).ravel(),
