@@ -58,6 +58,13 @@ def test_rank_updates_equal_scipy_expm(scale, rank):
     # (measured 1e-11 at scale 40, 5e-14 at 3)
     error = np.abs(values - reference).max(axis=(1, 2)) / np.abs(reference).max(axis=(1, 2))
     assert error.max() < 1e-10
+    # the same pieces given as coefficients on a few fixed rows: R_j = C_j V with V (3, m), as a mesh gives them
+    rows = rng.normal(size=(3, 9)) * scale
+    coefficients = rng.normal(size=(20, rank, 3))
+    values = expm_of_rank_updates(base, left, coefficients, times, rows)
+    reference = np.array([expm(t * (base + left @ c @ rows)) for t, c in zip(times, coefficients)])
+    error = np.abs(values - reference).max(axis=(1, 2)) / np.abs(reference).max(axis=(1, 2))
+    assert error.max() < 1e-10
 
 
 def test_rank_updates_refuse_bad_shapes():
@@ -67,3 +74,5 @@ def test_rank_updates_refuse_bad_shapes():
         expm_of_rank_updates(np.eye(3), np.ones((3, 1)), np.ones((2, 1, 4)), np.ones(2))
     with pytest.raises(ProblemError, match="matrices"):
         expm_of_rank_updates(np.eye(3), np.ones((3, 1)), np.ones((2, 1, 3)), -np.ones(2))
+    with pytest.raises(ProblemError, match="matrices"):
+        expm_of_rank_updates(np.eye(3), np.ones((3, 1)), np.ones((2, 1, 2)), np.ones(2), rows=np.ones((3, 3)))

@@ -105,52 +105,62 @@ def _rank_update_degree(beta: float) -> int:
     return degree
 
 
-def expm_of_rank_updates(base: np.ndarray, left: np.ndarray, right: np.ndarray, times: np.ndarray) -> np.ndarray:
+def expm_of_rank_updates(base: np.ndarray, left: np.ndarray, right: np.ndarray, times: np.ndarray,
+                         rows: np.ndarray | None = None) -> np.ndarray:
     """e^{t_j·(X₀ + U R_j)} for every j: ``base`` X₀ (m, m), ``left`` U (m, r), ``right`` R (N, r, m), ``times``
-    t (N,) >= 0 [same units]; returns (N, m, m). Exact to the unit roundoff of the truncated series (module
-    docstring); worth it when r ≪ m and N is large."""
+    t (N,) >= 0 [same units]; returns (N, m, m). With ``rows`` V (q, m), ``right`` holds coefficients C (N, r, q)
+    and R_j = C_j V: when every R_j lies in a few fixed rows (a mesh: the stiffness, damping and excitation rows),
+    the Krylov blocks Z_k = C_j (V X₀ᵏ) need products with q rows only. Exact to the unit roundoff of the truncated
+    series (module docstring); worth it when r ≪ m and N is large."""
     base, left = np.asarray(base, dtype=float), np.asarray(left, dtype=float)
     right, times = np.asarray(right, dtype=float), np.asarray(times, dtype=float)
     size = base.shape[0]
+    rows = np.eye(size) if rows is None else np.asarray(rows, dtype=float)
     if base.shape != (size, size) or left.ndim != 2 or left.shape[0] != size or right.ndim != 3 \
-            or right.shape[1:] != (left.shape[1], size) or times.shape != (right.shape[0],):
-        raise ProblemError("matrices", f"shapes {base.shape}, {left.shape}, {right.shape}, {times.shape}",
-                           "X₀ (m, m), U (m, r), R (N, r, m), t (N,)", "pieces X₀ + U R_j scaled by t_j")
-    if not all(np.all(np.isfinite(array)) for array in (base, left, right, times)) or np.any(times < 0.0):
+            or rows.ndim != 2 or rows.shape[1] != size or right.shape[1:] != (left.shape[1], rows.shape[0]) \
+            or times.shape != (right.shape[0],):
+        raise ProblemError("matrices", f"shapes {base.shape}, {left.shape}, {right.shape}, {rows.shape}, "
+                           f"{times.shape}", "X₀ (m, m), U (m, r), C (N, r, q), V (q, m), t (N,)",
+                           "pieces X₀ + U C_j V scaled by t_j")
+    if not all(np.all(np.isfinite(array)) for array in (base, left, right, rows, times)) or np.any(times < 0.0):
         raise ProblemError("matrices", "non-finite entries or negative times", "finite numbers, t >= 0",
                            "the exponential of NaN is undefined")
     count, rank = right.shape[0], left.shape[1]
     if count == 0:
         return np.zeros((0, size, size))
-    bound = np.abs(base) + np.abs(left) @ np.abs(right).max(axis=0)
+    magnitude = np.abs(right) @ np.abs(rows)  # entrywise bound of |R_j|: (N, r, m)
+    bound = np.abs(base) + np.abs(left) @ magnitude.max(axis=0)
     scale = _balancing(bound[None])
     base = base * (scale[:, None] / scale[None, :])
-    left, right = left * scale[:, None], right / scale[None, None, :]
+    left, rows, magnitude = left * scale[:, None], rows / scale[None, :], magnitude / scale[None, None, :]
     longest = float(times.max())
     if longest == 0.0:
         return np.broadcast_to(np.eye(size), (count, size, size)).copy()
     times = times / longest
     base_norm = float(np.abs(base).sum(axis=0).max()) * longest
-    right_norms = np.abs(right).sum(axis=1).max(axis=1) * longest
+    right_norms = magnitude.sum(axis=1).max(axis=1) * longest
     beta = float((times * (base_norm + float(np.abs(left).sum(axis=0).max()) * right_norms)).max())
     beta = max(beta, base_norm)
     squarings = max(0, int(math.ceil(math.log2(beta / _RANK_THETA)))) if beta > _RANK_THETA else 0
     factor = longest / 2.0**squarings
-    base, right, beta = base * factor, right * factor, beta / 2.0**squarings
+    base, rows, beta = base * factor, rows * factor, beta / 2.0**squarings
     degree = _rank_update_degree(beta)
-    # Krylov blocks of all pieces at once, as rows (N·r, m), each step one product with X₀ (or X₀ᵀ):
-    # Y_iᵀ = Y_{i−1}ᵀ X₀ᵀ + (R_j Y_{i−1})ᵀ Uᵀ and Z_k = Z_{k−1} X₀, stored so that the final sum is one batched product
+    # Krylov blocks of all pieces at once, as rows (N·r, m), each step one product with X₀ᵀ:
+    # Y_iᵀ = Y_{i−1}ᵀ X₀ᵀ + (C_j V Y_{i−1})ᵀ Uᵀ; and Z_k = C_j (V X₀ᵏ) from the q rows' own powers
     left_blocks = np.empty((count, size, degree, rank))
-    right_blocks = np.empty((count, degree, rank, size))
-    rows = np.broadcast_to(left.T, (count, rank, size)).reshape(count * rank, size)
-    right_rows = right.reshape(count * rank, size)
+    krylov = np.broadcast_to(left.T, (count, rank, size)).reshape(count * rank, size)
     for order in range(degree):
-        left_blocks[:, :, order, :] = rows.reshape(count, rank, size).transpose(0, 2, 1)
-        right_blocks[:, order] = right_rows.reshape(count, rank, size)
+        left_blocks[:, :, order, :] = krylov.reshape(count, rank, size).transpose(0, 2, 1)
         if order + 1 < degree:
-            coupling = (right[:, :, None, :] * rows.reshape(count, 1, rank, size)).sum(axis=-1)  # R_j Y: (N, r, r)
-            rows = rows @ base.T + coupling.transpose(0, 2, 1).reshape(count * rank, rank) @ left.T
-            right_rows = right_rows @ base
+            projected = (krylov @ rows.T).reshape(count, rank, rows.shape[0])  # (V Y_j)ᵀ: (N, r_b, q)
+            coupling = right @ projected.transpose(0, 2, 1)  # C_j V Y_j: (N, r_a, r_b)
+            krylov = krylov @ base.T + coupling.transpose(0, 2, 1).reshape(count * rank, rank) @ left.T
+    row_powers = [rows]
+    for _ in range(degree - 1):
+        row_powers.append(row_powers[-1] @ base)
+    stacked_rows = np.stack(row_powers, axis=1).reshape(rows.shape[0], degree * size)  # (q, d·m)
+    right_blocks = (right.reshape(count * rank, -1) @ stacked_rows).reshape(count, rank, degree, size)
+    right_blocks = right_blocks.transpose(0, 2, 1, 3) if rank > 1 else right_blocks.reshape(count, degree, 1, size)
     # t^{i+k+1}/(i+k+1)! = t^i · [1/(i+k+1)!] · t^{k+1}: the Hankel matrix of 1/p! is shared by every piece
     orders = np.arange(degree)
     hankel = 1.0 / np.array([[math.factorial(i + k + 1) for k in orders] for i in orders], dtype=float)

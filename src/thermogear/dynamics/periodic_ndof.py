@@ -167,11 +167,14 @@ def _piece_steps(system: PiecewiseLinearSystem, samples: int) -> tuple[np.ndarra
         left = np.zeros((2 * n + 1, range_basis.shape[1]))
         left[n:2 * n] = inverse @ range_basis
         shift = distinct[:, 1:] - mean_factors
-        right = np.zeros((distinct.shape[0], range_basis.shape[1], 2 * n + 1))
-        right[:, :, :n] = -shift[:, 0, None, None] * (range_basis.T @ system.stiffness_pattern)
-        right[:, :, n:2 * n] = -shift[:, 1, None, None] * (range_basis.T @ system.damping_pattern)
-        right[:, :, 2 * n] = shift[:, 2, None] * (range_basis.T @ system.force_pattern)
-        steps = expm_of_rank_updates(mean, left, right, distinct[:, 0])
+        rank = range_basis.shape[1]
+        rows = np.zeros((3 * rank, 2 * n + 1))  # the stiffness, damping and excitation rows, r each
+        rows[:rank, :n] = range_basis.T @ system.stiffness_pattern
+        rows[rank:2 * rank, n:2 * n] = range_basis.T @ system.damping_pattern
+        rows[2 * rank:, 2 * n] = range_basis.T @ system.force_pattern
+        right = np.concatenate([np.eye(rank) * sign * shift[:, column, None, None]
+                                for column, sign in enumerate((-1.0, -1.0, 1.0))], axis=2)  # (D, r, 3r)
+        steps = expm_of_rank_updates(mean, left, right, distinct[:, 0], rows)
     return steps, where
 
 
