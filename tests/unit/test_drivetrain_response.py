@@ -159,3 +159,58 @@ def test_speed_sweep_equals_one_solution_per_speed():
         shared_error = np.abs(reduced.transmission_error - reference.transmission_error).max() / scale
         own_error = np.abs(own.transmission_error - reference.transmission_error).max() / scale
         assert shared_error <= 1.5 * own_error and own_error < 1e-4
+
+
+@pytest.mark.slow
+def test_rigid_supports_reproduce_the_one_dof_backlash_orbit():
+    # near resonance (1.05 × the mesh mode), with contact loss: the 1-DOF orbit leaves contact once per period for
+    # 1.07e-4 s (two switches). Orbits coexist here (from the linear state the drivetrain's shooting can land on one
+    # with a single switch), so the drivetrain's is shot from the 1-DOF (δ, δ̇) lifted onto the mesh coordinate
+    # (q = δ·M⁻¹w/(wᵀM⁻¹w)) at 1e4× steel, and from that orbit at 1e5×: the start selects the orbit, the shooting
+    # finds the drivetrain's own
+    from dataclasses import replace
+
+    from thermogear.drivetrain.response import drivetrain_backlash_system
+    from thermogear.dynamics.backlash_ndof import backlash_periodic_orbit
+    from thermogear.dynamics.backlash_periodic import backlash_flow, linear_initial_state, orbit_from_shot, shoot
+
+    mass = J_1 * J_2 / (J_1 * R_B2**2 + J_2 * R_B1**2)
+    natural = math.sqrt(3.6e7 / mass) / (2 * math.pi)  # the square wave's mean stiffness is 3.6e7 N/m
+    state = _mesh_state(mass, speed_rpm=1.05 * natural * 60.0 / 20)
+    state = replace(state, pair_damping=0.25 * state.pair_damping, mesh_damping=0.25 * state.mesh_damping,
+                    backlash=8.77e-5)
+    problem = state.backlash_problem()
+    shot = shoot(problem, linear_initial_state(problem), tolerance=1e-13)
+    _, _, contact = backlash_flow(problem, shot["state"])
+    reference = orbit_from_shot(problem, shot, 1, 16, shot["iterations"])
+    assert shot["converged"] and contact["switches"] == 2 and contact["free_flight_time"] > 0.0
+    scales = np.array([np.abs(reference.history.displacement).max(), np.abs(reference.history.velocity).max()])
+    states, multipliers, previous = [], [], None
+    for stiffening in (1e4, 1e5):
+        system, _ = drivetrain_backlash_system(_stiffened_pair(stiffening).assemble(), state)
+        if previous is None:
+            lift = np.linalg.solve(system.linear.mass, system.linear.force_pattern)
+            lift = lift / (system.linear.force_pattern @ lift)
+            previous = np.concatenate([shot["state"][0] * lift, shot["state"][1] * lift])
+        # shooting to 1e-7: the stiff support modes leave a rounding floor of the residual near 2e-8 at 1e5×
+        orbit = backlash_periodic_orbit(system, initial_state=previous, substeps=4, tolerance=1e-7)
+        assert orbit.converged and orbit.switches == 2
+        previous = orbit.initial_state
+        size = system.linear.size
+        w = system.linear.force_pattern
+        states.append(np.array([w @ orbit.initial_state[:size], w @ orbit.initial_state[size:]]))
+        multipliers.append(orbit.multipliers)
+    errors = [np.abs(value - shot["state"]) / scales for value in states]
+    # the supports' compliance again: (δ, δ̇) at τ = 0 fall tenfold per decade (measured 1.07e-4 → 1.08e-5 of the
+    # orbit's peak δ, a fall of 9.9). Extrapolated to rigid supports (Richardson, as for the linear orbit) they meet
+    # the 1-DOF orbit to 1e-6 of its peak displacement and velocity, as the issue asks (measured 1.3e-7 and 5.0e-7:
+    # what is left is the rounding floor of the stiff flows, whose shooting residual stops near 2e-8 at 1e5×, not
+    # the O(1/k²) term — a third stiffness, 1e3×, does not lower it)
+    assert 8.0 < errors[0][0] / errors[1][0] < 12.0
+    limit = _limit(*states)
+    assert np.all(np.abs(limit - shot["state"]) < 1e-6 * scales)
+    # the pair's multipliers, extrapolated likewise, reach 7.2e-7 (6.5–7.5e-7 over shooting tolerances 1e-7 to 1e-9):
+    # inside the issue's 1e-6, but with that floor the assertion allows 2e-6 rather than a margin of 1.4
+    for multiplier in reference.multipliers:
+        nearest = [values[np.argmin(np.abs(values - multiplier))] for values in multipliers]
+        assert abs(_limit(*nearest) - multiplier) < 2e-6 * abs(multiplier)
