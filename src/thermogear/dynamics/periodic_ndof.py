@@ -9,7 +9,10 @@ augmented matrix (Van Loan, "Computing integrals involving the matrix exponentia
 The monodromy Φ_T = Φ_{N−1}···Φ_0 and the image p of z = 0 after one period give the periodic state
 z₀ = (I − Φ_T)⁻¹ p, unique and attracting iff every Floquet multiplier (eigenvalue of Φ_T) lies inside the unit
 circle (Floquet 1883; Nayfeh & Mook, Nonlinear Oscillations, 1979, §5.2). The exponentials of all pieces are
-taken in one vectorised pass (:mod:`thermogear.dynamics.batched_exponential`) and multiplied pairwise. Knows
+taken in one vectorised pass (:mod:`thermogear.dynamics.batched_exponential`): equal pieces once, and pieces that
+differ only through low-rank patterns as rank updates of the mean one (``_piece_steps``). The monodromy is the
+product of √N blocks, blocks of the same pieces multiplied once, and the states at the nodes follow from the block
+products (``_blocks``); z₀ is one linear solve. Knows
 nothing of gears: matrices only. With a rigid-body mode (K r = 0) a multiplier is 1 and I − Φ_T is singular:
 remove such modes first (``rigid_body.rigid_body_reduction``).
 
@@ -153,21 +156,20 @@ def _piece_steps(system: PiecewiseLinearSystem, samples: int) -> tuple[np.ndarra
 
     inverse = _mass_inverse(system)
     widths = np.diff(system.nodes) / samples
-    rows = np.column_stack([widths, system.stiffness_factor, system.damping_factor, system.force_factor])
-    distinct, where = np.unique(rows, axis=0, return_inverse=True)
+    factors = np.column_stack([widths, system.stiffness_factor, system.damping_factor, system.force_factor])
+    distinct, where = np.unique(factors, axis=0, return_inverse=True)
     where = where.ravel()
-    unique = _with_factors(system, distinct)
     range_basis = _pattern_range(system)
     n = system.size
-    if distinct.shape[0] < _RANK_ROUTE_PIECES or range_basis.shape[1] * _RANK_ROUTE_RATIO > 2 * n + 1:
-        steps = batched_expm(unique.augmented_stack(inverse) * distinct[:, :1, None])
+    rank = range_basis.shape[1]
+    if distinct.shape[0] < _RANK_ROUTE_PIECES or rank == 0 or rank * _RANK_ROUTE_RATIO > 2 * n + 1:
+        steps = batched_expm(_with_factors(system, distinct).augmented_stack(inverse) * distinct[:, :1, None])
     else:
         mean_factors = distinct[:, 1:].mean(axis=0)
         mean = _with_factors(system, np.append(1.0, mean_factors)[None]).augmented_stack(inverse)[0]
         left = np.zeros((2 * n + 1, range_basis.shape[1]))
         left[n:2 * n] = inverse @ range_basis
         shift = distinct[:, 1:] - mean_factors
-        rank = range_basis.shape[1]
         rows = np.zeros((3 * rank, 2 * n + 1))  # the stiffness, damping and excitation rows, r each
         rows[:rank, :n] = range_basis.T @ system.stiffness_pattern
         rows[rank:2 * rank, n:2 * n] = range_basis.T @ system.damping_pattern
@@ -178,8 +180,11 @@ def _piece_steps(system: PiecewiseLinearSystem, samples: int) -> tuple[np.ndarra
     return steps, where
 
 
-_RANK_ROUTE_PIECES = 16  # distinct pieces from which the rank-update exponentials are used
-_RANK_ROUTE_RATIO = 8  # ... when the patterns' rank r is at most 1/8 of the state size 2n+1
+# The rank-update route costs about 6·d·r·m² per piece (Krylov products and the rank-(d·r) sum, d ≈ 15 terms; m = 2n+1)
+# against about 12·m³ for the full Taylor polynomial (six products of 2m³): it pays from m ≈ 7.5·r, hence r ≤ m/8.
+# Below 16 distinct pieces the full exponentials take well under a millisecond and keep the tighter scaling.
+_RANK_ROUTE_PIECES = 16
+_RANK_ROUTE_RATIO = 8
 
 
 def _with_factors(system: PiecewiseLinearSystem, rows: np.ndarray) -> PiecewiseLinearSystem:
