@@ -232,9 +232,11 @@ def _blocks(distinct: np.ndarray, where: np.ndarray) -> tuple[np.ndarray, np.nda
     blocks = -(-count // block)
     with_identity = np.concatenate([distinct, np.eye(size)[None]])
     indices = np.concatenate([where, np.full(blocks * block - count, distinct.shape[0])]).reshape(blocks, block)
-    patterns, which = np.unique(indices, axis=0, return_inverse=True)
-    products = ordered_product(with_identity[patterns])[which.ravel()]
-    return with_identity[indices], products
+    padded = with_identity[indices]
+    patterns, first, which = np.unique(indices, axis=0, return_index=True, return_inverse=True)
+    if patterns.shape[0] == blocks:  # every block differs: one tree over all of them
+        return padded, ordered_product(padded)
+    return padded, ordered_product(padded[first])[which.ravel()]
 
 
 def _orbit_nodes(padded: np.ndarray, products: np.ndarray, start: np.ndarray, count: int) -> np.ndarray:
