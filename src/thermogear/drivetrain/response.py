@@ -25,7 +25,7 @@ import numpy as np
 
 from thermogear.drivetrain.assembly import AssembledDrivetrain
 from thermogear.drivetrain.static_state import mesh_torque_forces
-from thermogear.dynamics.backlash_ndof import BacklashSystem
+from thermogear.dynamics.backlash_ndof import BacklashSystem, DeadZone
 from thermogear.dynamics.metrics import compute_metrics
 from thermogear.dynamics.periodic_ndof import PiecewiseLinearSystem, periodic_response
 from thermogear.dynamics.rigid_body import RigidBodyReduction, rigid_body_reduction
@@ -86,14 +86,23 @@ def drivetrain_backlash_system(assembled: AssembledDrivetrain,
 
     The pairs' deviations enter as their load-weighted mean on each interval, ē_j = Σk_i·e_i / Σk_i, so the whole
     mesh separates at once (unlike the 1-DOF backlash model, where each pair leaves contact on its own); the back
-    flanks take the driving flanks' stiffness. Without deviations the two descriptions coincide.
+    flanks take the driving flanks' stiffness. Without deviations the two descriptions coincide. A bearing with a
+    ``radial_clearance`` adds a dead zone in x and one in y (:class:`~thermogear.dynamics.backlash_ndof.DeadZone`).
     """
     if state.backlash is None:
         raise CaseError("backlash", None, "a mesh state whose backlash is known", "the dead zone needs its width")
     linear, reduction = drivetrain_periodic_system(assembled, state)
     excitation = linear.force_factor
     deviation = excitation / linear.stiffness_factor
-    return BacklashSystem(linear, linear.force_pattern, deviation, state.backlash), reduction
+    zones = []
+    for bearing in assembled.drivetrain.bearings:
+        if bearing.radial_clearance > 0.0:
+            for axis, stiffness, damping in (("x", bearing.stiffness_x, bearing.damping_x),
+                                             ("y", bearing.stiffness_y, bearing.damping_y)):
+                unit = np.zeros(assembled.size)
+                unit[assembled.dof(bearing.location, axis)] = 1.0
+                zones.append(DeadZone(reduction.project_vector(unit), stiffness, damping, bearing.radial_clearance))
+    return BacklashSystem(linear, linear.force_pattern, deviation, state.backlash, tuple(zones)), reduction
 
 
 @dataclass(frozen=True, eq=False)
