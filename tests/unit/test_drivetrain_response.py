@@ -44,34 +44,45 @@ def _stiffened_pair(scale: float):
                        wheel_inertia=(1.5, 9e-3, 4.5e-3), bearing_damping=1e3, material_damping=1e-2 / scale)
 
 
+def _limit(stiff: float, stiffer: float) -> float:
+    """Richardson's extrapolation of a quantity q(s) = q∞ + a/s + O(1/s²) to s → ∞ from its values at s and 10 s."""
+    return stiffer + (stiffer - stiff) / 9.0
+
+
 @pytest.mark.slow
 def test_rigid_supports_reproduce_the_one_dof_periodic_result():
+    from thermogear.dynamics.metrics import compute_metrics
+
     mass = J_1 * J_2 / (J_1 * R_B2**2 + J_2 * R_B1**2)
     state = _mesh_state(mass, deviation=3e-6)
     orbit = periodic_steady_state(state.problem(), samples_per_interval=16)
     scale = np.abs(orbit.displacement).max()
-    errors, responses = [], []
-    for stiffening in (1e4, 1e5):
-        response = drivetrain_periodic_response(_stiffened_pair(stiffening).assemble(), state, samples_per_piece=16)
-        errors.append(np.abs(response.transmission_error - orbit.displacement).max() / scale)
-        responses.append(response)
-    # the supports' compliance lowers the mesh mode by ~k_m/k_support: the difference falls ~10× per decade of
-    # stiffness (measured 3.2e-5 → 4.0e-6), i.e. the drivetrain tends to the 1-DOF orbit. At 1e5× steel it is within
-    # 1e-5; the issue's 1e-6 needs supports ≥ 1e15 N/m, where the stiffness contrast (1e13) costs double precision
-    # about 1e-6 in the exponentials, so the limit is checked by its rate here rather than at one extreme point
-    assert errors[1] < 1e-5
-    assert errors[0] / errors[1] > 5.0
-    from thermogear.dynamics.metrics import compute_metrics
     interval = np.minimum(np.arange(orbit.time.size) // 16, 2)
     one_dof = compute_metrics(state.problem(), orbit.time, orbit.displacement, orbit.velocity, interval,
                               orbit.multipliers)
-    stiffest = responses[1]
-    assert stiffest.kv == pytest.approx(one_dof["kv"], rel=1e-5)
-    assert stiffest.metrics["dte_rms"] == pytest.approx(one_dof["dte_rms"], rel=1e-5)
-    # the pair's two multipliers are among the n-DOF system's (the support modes add their own); a multiplier's
-    # phase is ω·T ≈ 7 rad here, so the ~4e-6 relative shift of ω moves it by ~3e-5 of |μ|: 1e-4 of |μ|
+    stiff, stiffer = (drivetrain_periodic_response(_stiffened_pair(stiffening).assemble(), state, samples_per_piece=16)
+                      for stiffening in (1e4, 1e5))
+    errors = [np.abs(response.transmission_error - orbit.displacement).max() / scale for response in (stiff, stiffer)]
+    # The supports' compliance is physical: it lowers the mesh mode by ~k_m/k_support, so the difference from the
+    # 1-DOF orbit is a/k + O(1/k²) (measured 3.17e-5 → 3.19e-6, a fall of 9.93 per decade). It cannot be followed
+    # directly below ~1e-6: at 1e6× steel the support modes reach ~1e7 rad/s, ω·h ≈ 6e3 rad over a piece, and the
+    # ~14 squarings of their exponentials leave a rounding floor of ~5e-7 (measured 8.4e-7 at 1e6×, 2.3e-5 at
+    # 1e7×). So the limit is taken honestly by its rate: the fall per decade is 10 within 20 % (1/k; the O(1/k²)
+    # and the floor move it by < 1 % here), the error law then gives < 1e-6 from 3.2e5× steel on, and Richardson's
+    # extrapolation of the two solutions (which removes a/k) reproduces the 1-DOF orbit to 1e-6, as the issue asks
+    # (measured 4.3e-8; Kv 2.4e-8, DTE rms 4.7e-8, multipliers 9e-8)
+    assert errors[1] < 1e-5
+    assert 8.0 < errors[0] / errors[1] < 12.0
+    limit = _limit(stiff.transmission_error, stiffer.transmission_error)
+    assert np.abs(limit - orbit.displacement).max() < 1e-6 * scale
+    assert _limit(stiff.kv, stiffer.kv) == pytest.approx(one_dof["kv"], rel=1e-6)
+    assert _limit(stiff.metrics["dte_rms"], stiffer.metrics["dte_rms"]) == pytest.approx(one_dof["dte_rms"], rel=1e-6)
+    # the pair's two multipliers are among the n-DOF system's (the support modes add their own), each extrapolated
+    # from its nearest one at both stiffnesses
     for multiplier in orbit.multipliers:
-        assert np.abs(stiffest.multipliers - multiplier).min() < 1e-4 * abs(multiplier)
+        nearest = [response.multipliers[np.argmin(np.abs(response.multipliers - multiplier))]
+                   for response in (stiff, stiffer)]
+        assert abs(_limit(*nearest) - multiplier) < 1e-6 * abs(multiplier)
 
 
 def test_bearing_forces_balance_the_mesh_force_on_each_shaft():
@@ -118,3 +129,88 @@ def test_backlash_drivetrain_in_permanent_contact_equals_the_linear_drivetrain()
     reference = periodic_response(linear, 1).initial_state
     assert orbit.converged and orbit.switches == 0
     assert np.abs(orbit.initial_state - reference).max() < 1e-9 * np.abs(reference).max()
+
+
+def test_speed_sweep_equals_one_solution_per_speed():
+    # three speeds whose mesh stiffness differs too (±15 %), so that the first state's modal basis is not the others'
+    from dataclasses import replace
+
+    from thermogear.drivetrain.response import drivetrain_speed_sweep
+
+    assembled = geared_pair(bearing_damping=2e3, material_damping=1e-6, elements=3).assemble()
+    states = []
+    for speed, factor in ((900.0, 1.0), (1500.0, 1.15), (2600.0, 0.85)):
+        state = _mesh_state(0.5, speed_rpm=speed, deviation=2e-6)
+        states.append(replace(state, pair_stiffness=factor * state.pair_stiffness))
+    full = [drivetrain_periodic_response(assembled, state, samples_per_piece=4) for state in states]
+    # every DOF: the shared rigid-body reduction is the same subspace, so the orbits agree to rounding (measured
+    # 1.5e-12 of the DTE): 1e-10
+    for swept, single in zip(drivetrain_speed_sweep(assembled, states, samples_per_piece=4), full):
+        scale = np.abs(single.transmission_error).max()
+        assert np.abs(swept.transmission_error - single.transmission_error).max() < 1e-10 * scale
+        assert swept.kv == pytest.approx(single.kv, rel=1e-10)
+    # modes below 10 kHz plus static corrections: the first state's basis serves all three with the statics exact, so
+    # its distance to the full orbit is that of a basis per speed (measured 0.91–1.0 times it); 1.5 times allows
+    # for the other truncated modes without letting a wrong static correction (an error of the order of 1) pass
+    swept = drivetrain_speed_sweep(assembled, states, samples_per_piece=4, cutoff_hz=1e4)
+    for state, reduced, reference in zip(states, swept, full):
+        own = drivetrain_periodic_response(assembled, state, samples_per_piece=4, cutoff_hz=1e4)
+        scale = np.abs(reference.transmission_error).max()
+        shared_error = np.abs(reduced.transmission_error - reference.transmission_error).max() / scale
+        own_error = np.abs(own.transmission_error - reference.transmission_error).max() / scale
+        assert shared_error <= 1.5 * own_error and own_error < 1e-4
+
+
+@pytest.mark.slow
+def test_rigid_supports_reproduce_the_one_dof_backlash_orbit():
+    # near resonance (1.05 × the mesh mode), with contact loss: the 1-DOF orbit leaves contact once per period for
+    # 1.07e-4 s (two switches). Orbits coexist here (from the linear state the drivetrain's shooting can land on one
+    # with a single switch), so the drivetrain's is shot from the 1-DOF (δ, δ̇) lifted onto the mesh coordinate
+    # (q = δ·M⁻¹w/(wᵀM⁻¹w)) at 1e4× steel, and from that orbit at 1e5×: the start selects the orbit, the shooting
+    # finds the drivetrain's own
+    from dataclasses import replace
+
+    from thermogear.drivetrain.response import drivetrain_backlash_system
+    from thermogear.dynamics.backlash_ndof import backlash_periodic_orbit
+    from thermogear.dynamics.backlash_periodic import backlash_flow, linear_initial_state, orbit_from_shot, shoot
+
+    mass = J_1 * J_2 / (J_1 * R_B2**2 + J_2 * R_B1**2)
+    natural = math.sqrt(3.6e7 / mass) / (2 * math.pi)  # the square wave's mean stiffness is 3.6e7 N/m
+    state = _mesh_state(mass, speed_rpm=1.05 * natural * 60.0 / 20)
+    state = replace(state, pair_damping=0.25 * state.pair_damping, mesh_damping=0.25 * state.mesh_damping,
+                    backlash=8.77e-5)
+    problem = state.backlash_problem()
+    shot = shoot(problem, linear_initial_state(problem), tolerance=1e-13)
+    _, _, contact = backlash_flow(problem, shot["state"])
+    reference = orbit_from_shot(problem, shot, 1, 16, shot["iterations"])
+    assert shot["converged"] and contact["switches"] == 2 and contact["free_flight_time"] > 0.0
+    scales = np.array([np.abs(reference.history.displacement).max(), np.abs(reference.history.velocity).max()])
+    states, multipliers, previous = [], [], None
+    for stiffening in (1e4, 1e5):
+        system, _ = drivetrain_backlash_system(_stiffened_pair(stiffening).assemble(), state)
+        if previous is None:
+            lift = np.linalg.solve(system.linear.mass, system.linear.force_pattern)
+            lift = lift / (system.linear.force_pattern @ lift)
+            previous = np.concatenate([shot["state"][0] * lift, shot["state"][1] * lift])
+        # shooting to 1e-7: the stiff support modes leave a rounding floor of the residual near 2e-8 at 1e5×
+        orbit = backlash_periodic_orbit(system, initial_state=previous, substeps=4, tolerance=1e-7)
+        assert orbit.converged and orbit.switches == 2
+        previous = orbit.initial_state
+        size = system.linear.size
+        w = system.linear.force_pattern
+        states.append(np.array([w @ orbit.initial_state[:size], w @ orbit.initial_state[size:]]))
+        multipliers.append(orbit.multipliers)
+    errors = [np.abs(value - shot["state"]) / scales for value in states]
+    # the supports' compliance again: (δ, δ̇) at τ = 0 fall tenfold per decade (measured 1.07e-4 → 1.08e-5 of the
+    # orbit's peak δ, a fall of 9.9). Extrapolated to rigid supports (Richardson, as for the linear orbit) they meet
+    # the 1-DOF orbit to 1e-6 of its peak displacement and velocity, as the issue asks (measured 1.3e-7 and 5.0e-7:
+    # what is left is the rounding floor of the stiff flows, whose shooting residual stops near 2e-8 at 1e5×, not
+    # the O(1/k²) term — a third stiffness, 1e3×, does not lower it)
+    assert 8.0 < errors[0][0] / errors[1][0] < 12.0
+    limit = _limit(*states)
+    assert np.all(np.abs(limit - shot["state"]) < 1e-6 * scales)
+    # the pair's multipliers, extrapolated likewise, reach 7.2e-7 (6.5–7.5e-7 over shooting tolerances 1e-7 to 1e-9):
+    # inside the issue's 1e-6, but with that floor the assertion allows 2e-6 rather than a margin of 1.4
+    for multiplier in reference.multipliers:
+        nearest = [values[np.argmin(np.abs(values - multiplier))] for values in multipliers]
+        assert abs(_limit(*nearest) - multiplier) < 2e-6 * abs(multiplier)

@@ -87,6 +87,10 @@ class Bearing:
 
     ``stiffness_xy``/``damping_xy`` are cross-coupling terms (k_xy = k_yx; non-symmetric bearings are out of scope).
     ``stiffness_z`` > 0 locates the shaft axially (otherwise the shaft has an axial rigid-body mode).
+    ``radial_clearance`` δ [m] (default 0: linear): the shaft moves freely within ±δ of the bearing centre in x and
+    in y, each on its own, and meets the bearing's stiffness and damping beyond (a dead zone per direction, the
+    piecewise-linear form of a radial clearance: a square gap rather than a circle). The modes and the linear periodic
+    response use the bearing in contact; the backlash solver (``drivetrain_backlash_system``) takes the clearance.
     """
 
     name: str
@@ -99,10 +103,15 @@ class Bearing:
     damping_z: float = 0.0
     stiffness_xy: float = 0.0
     damping_xy: float = 0.0
+    radial_clearance: float = 0.0
 
     def __post_init__(self) -> None:
-        for key in ("stiffness_x", "stiffness_y", "stiffness_z", "damping_x", "damping_y", "damping_z"):
+        for key in ("stiffness_x", "stiffness_y", "stiffness_z", "damping_x", "damping_y", "damping_z",
+                    "radial_clearance"):
             _non_negative(f"{self.name}.{key}", getattr(self, key))
+        if self.radial_clearance > 0.0 and (self.stiffness_xy != 0.0 or self.damping_xy != 0.0):
+            raise CaseError(f"{self.name}.radial_clearance", self.radial_clearance, "0 with cross-coupling terms",
+                            "a dead zone per direction cannot carry the x–y coupling of a bearing in contact")
 
     def stiffness_matrix(self) -> np.ndarray:
         """6×6 stiffness on the node's DOFs (ground is rigid)."""

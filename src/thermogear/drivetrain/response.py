@@ -17,6 +17,7 @@ F_b = K_b·u + C_b·u̇ with its spectrum in mesh harmonics.
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -24,7 +25,7 @@ import numpy as np
 
 from thermogear.drivetrain.assembly import AssembledDrivetrain
 from thermogear.drivetrain.static_state import mesh_torque_forces
-from thermogear.dynamics.backlash_ndof import BacklashSystem
+from thermogear.dynamics.backlash_ndof import BacklashSystem, DeadZone
 from thermogear.dynamics.metrics import compute_metrics
 from thermogear.dynamics.periodic_ndof import PiecewiseLinearSystem, periodic_response
 from thermogear.dynamics.rigid_body import RigidBodyReduction, rigid_body_reduction
@@ -33,7 +34,7 @@ from thermogear.errors import CaseError
 from thermogear.mesh.state import MeshState
 
 __all__ = ["DrivetrainResponse", "drivetrain_backlash_system", "drivetrain_periodic_system",
-           "drivetrain_periodic_response"]
+           "drivetrain_periodic_response", "drivetrain_speed_sweep"]
 
 
 def drivetrain_periodic_system(assembled: AssembledDrivetrain,
@@ -43,6 +44,14 @@ def drivetrain_periodic_system(assembled: AssembledDrivetrain,
     The drivetrain's single mesh takes the state's k(τ), c(τ), deviations and load; its gear 1 (the pinion) must
     sit on the first shaft, whose speed is the state's pinion speed (for the gyroscopic terms).
     """
+    return _periodic_system(assembled, state, state.problem(), None)
+
+
+def _periodic_system(assembled: AssembledDrivetrain, state: MeshState, problem,
+                     reduction: RigidBodyReduction | None) -> tuple[PiecewiseLinearSystem, RigidBodyReduction]:
+    """:func:`drivetrain_periodic_system` with the state's problem given and, optionally, a rigid-body reduction
+    from another state of the same drivetrain: Q depends only on M and the rigid modes, which no mesh state
+    changes (the mesh stiffness joins the shafts whatever its value), so sharing it across speeds is exact."""
     drivetrain = assembled.drivetrain
     if len(drivetrain.meshes) != 1:
         raise CaseError("meshes", len(drivetrain.meshes), "exactly one mesh",
@@ -51,13 +60,13 @@ def drivetrain_periodic_system(assembled: AssembledDrivetrain,
     if mesh.gear_1.shaft != drivetrain.shafts[0].name:
         raise CaseError(f"{mesh.name}.gear_1", mesh.gear_1.shaft, f"the first shaft, {drivetrain.shafts[0].name!r}",
                         "the reference speed is the pinion's, on the first shaft")
-    problem = state.problem()
     w = assembled.mesh_vectors[0]
     speed = state.speed_rpm * math.pi / 30.0
-    mean_stiffness = float(np.dot(problem.stiffness, np.diff(problem.nodes)) / problem.period)
     damping = assembled.structure_damping + speed * assembled.gyroscopic
-    reduction = rigid_body_reduction(assembled.mass, assembled.connection_stiffness(mean_stiffness),
-                                     assembled.rigid_candidates(), damping)
+    if reduction is None:
+        mean_stiffness = float(np.dot(problem.stiffness, np.diff(problem.nodes)) / problem.period)
+        reduction = rigid_body_reduction(assembled.mass, assembled.connection_stiffness(mean_stiffness),
+                                         assembled.rigid_candidates(), damping)
     reduced_w = reduction.project_vector(w)
     pattern = np.outer(reduced_w, reduced_w)
     load = state.normal_load
@@ -77,14 +86,23 @@ def drivetrain_backlash_system(assembled: AssembledDrivetrain,
 
     The pairs' deviations enter as their load-weighted mean on each interval, ē_j = Σk_i·e_i / Σk_i, so the whole
     mesh separates at once (unlike the 1-DOF backlash model, where each pair leaves contact on its own); the back
-    flanks take the driving flanks' stiffness. Without deviations the two descriptions coincide.
+    flanks take the driving flanks' stiffness. Without deviations the two descriptions coincide. A bearing with a
+    ``radial_clearance`` adds a dead zone in x and one in y (:class:`~thermogear.dynamics.backlash_ndof.DeadZone`).
     """
     if state.backlash is None:
         raise CaseError("backlash", None, "a mesh state whose backlash is known", "the dead zone needs its width")
     linear, reduction = drivetrain_periodic_system(assembled, state)
     excitation = linear.force_factor
     deviation = excitation / linear.stiffness_factor
-    return BacklashSystem(linear, linear.force_pattern, deviation, state.backlash), reduction
+    zones = []
+    for bearing in assembled.drivetrain.bearings:
+        if bearing.radial_clearance > 0.0:
+            for axis, stiffness, damping in (("x", bearing.stiffness_x, bearing.damping_x),
+                                             ("y", bearing.stiffness_y, bearing.damping_y)):
+                unit = np.zeros(assembled.size)
+                unit[assembled.dof(bearing.location, axis)] = 1.0
+                zones.append(DeadZone(reduction.project_vector(unit), stiffness, damping, bearing.radial_clearance))
+    return BacklashSystem(linear, linear.force_pattern, deviation, state.backlash, tuple(zones)), reduction
 
 
 @dataclass(frozen=True, eq=False)
@@ -131,22 +149,48 @@ def drivetrain_periodic_response(assembled: AssembledDrivetrain, state: MeshStat
     exact, the dynamics of the modes above the cut-off are lost); None solves on every DOF. A cut-off a few times
     the highest mesh harmonic of interest converges (see the tests).
     """
-    system, reduction = drivetrain_periodic_system(assembled, state)
-    expand = reduction.expand
-    if cutoff_hz is not None:
-        from thermogear.dynamics.modal_reduction import modal_basis
+    return drivetrain_speed_sweep(assembled, (state,), samples_per_piece, cutoff_hz)[0]
 
-        if not math.isfinite(cutoff_hz) or cutoff_hz <= 0.0:
-            raise CaseError("cutoff_hz", cutoff_hz, "> 0 Hz, finite", "the highest mode frequency kept")
-        basis = modal_basis(system, 2.0 * math.pi * cutoff_hz)
-        system = basis.reduce(system)
-        expand = lambda reduced: reduction.expand(basis.expand(reduced))  # noqa: E731
+
+def drivetrain_speed_sweep(assembled: AssembledDrivetrain, states: Sequence[MeshState], samples_per_piece: int = 8,
+                           cutoff_hz: float | None = None) -> list[DrivetrainResponse]:
+    """:func:`drivetrain_periodic_response` at each mesh state (one per speed), sharing what no speed changes.
+
+    The rigid-body reduction is shared exactly (see :func:`_periodic_system`). With ``cutoff_hz`` the modal basis
+    of the first state's mean system serves every state: each state's pieces are K̄ + (k_j − k̄)·w wᵀ for any
+    reference k̄, and by Sherman–Morrison their static solutions stay in span{K̄⁻¹w, K̄⁻¹f₀} (f₀ the torque pair,
+    whose direction no load changes), so the static corrections keep every piece's quasi-static response exact at
+    every speed; what changes is only which undamped modes of a slightly different mean stiffness k̄ carry the
+    dynamics below the cut-off (the speed enters the damping, Ω·G, which the basis never uses). The difference
+    from a basis per speed is measured in the tests.
+    """
+    if cutoff_hz is not None and (not math.isfinite(cutoff_hz) or cutoff_hz <= 0.0):
+        raise CaseError("cutoff_hz", cutoff_hz, "> 0 Hz, finite", "the highest mode frequency kept")
+    reduction, basis, responses = None, None, []
+    for state in states:
+        problem = state.problem()
+        system, reduction = _periodic_system(assembled, state, problem, reduction)
+        if cutoff_hz is not None:
+            from thermogear.dynamics.modal_reduction import modal_basis
+
+            if basis is None:
+                basis = modal_basis(system, 2.0 * math.pi * cutoff_hz)
+            system = basis.reduce(system)
+        responses.append(_response(assembled, state, problem, system, reduction, basis, samples_per_piece))
+    return responses
+
+
+def _response(assembled: AssembledDrivetrain, state: MeshState, problem, system: PiecewiseLinearSystem,
+              reduction: RigidBodyReduction, basis, samples_per_piece: int) -> DrivetrainResponse:
+    """The periodic orbit of the (reduced) system expanded to every DOF, with δ, the mesh and bearing forces and the
+    metrics."""
     response = periodic_response(system, samples_per_piece)
-    displacement = expand(response.displacement.T).T
-    velocity = expand(response.velocity.T).T
+    displacement, velocity = response.displacement.T, response.velocity.T
+    if basis is not None:
+        displacement, velocity = basis.expand(displacement), basis.expand(velocity)
+    displacement, velocity = reduction.expand(displacement).T, reduction.expand(velocity).T
     w = assembled.mesh_vectors[0]
     delta, rate = displacement @ w, velocity @ w
-    problem = state.problem()
     pieces = problem.stiffness.size
     interval = np.minimum(np.arange(delta.size) // samples_per_piece, pieces - 1)
     excitation = problem.force_per_interval - state.normal_load

@@ -12,6 +12,11 @@ region) is solved exactly by the augmented exponential (Van Loan 1978); switches
 and located by Brent's method on the exact solution. Newton on φ_T(z₀) − z₀ with that monodromy finds the orbit,
 starting from the linear periodic state (driving contact throughout). Knows nothing of gears.
 
+Dead zones (:class:`DeadZone`, e.g. a bearing's radial clearance in one direction): a spring and dashpot on
+u = vᵀq that act only beyond ±δ. Their dashpot stops at a switch, so the vector field jumps there and the monodromy
+takes the saltation matrix S = I + (f⁺ − f⁻) nᵀ/(nᵀf⁻) at each of their switches (n = [v; 0] the boundary's
+normal, f∓ the vector fields on either side; Leine & Nijmeijer 2004, §7.2).
+
 Limits: a double crossing inside one sub-step (grazing) is not seen; take ``substeps`` so that a sub-step is short
 against the fastest mode the mesh coordinate takes part in.
 """
@@ -26,31 +31,69 @@ from thermogear.dynamics.periodic_ndof import PiecewiseLinearSystem, periodic_re
 from thermogear.dynamics.problem import checked_array
 from thermogear.errors import ProblemError
 
-__all__ = ["BacklashSystem", "BacklashOrbitNDOF", "backlash_flow_ndof", "backlash_periodic_orbit"]
+__all__ = ["BacklashSystem", "BacklashOrbitNDOF", "DeadZone", "backlash_flow_ndof", "backlash_periodic_orbit"]
 
 _DRIVE, _FREE, _BACK = 0, 1, 2
+
+
+@dataclass(frozen=True, eq=False)
+class DeadZone:
+    """A spring ``stiffness`` k [N/m] and dashpot ``damping`` c [N·s/m] on u = vᵀq (``vector`` v) that act only
+    beyond the ``clearance`` ±δ [m] >= 0: the force along v is −k(u − δ) − c·u̇ for u > δ, −k(u + δ) − c·u̇ for
+    u < −δ and zero in between. The linear system of the :class:`BacklashSystem` includes k v vᵀ and c v vᵀ (the
+    element in contact); with δ = 0 the element is linear."""
+
+    vector: np.ndarray
+    stiffness: float
+    damping: float
+    clearance: float
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "vector", np.asarray(self.vector, dtype=float))
+        for key in ("stiffness", "damping", "clearance"):
+            value = getattr(self, key)
+            if not isinstance(value, (int, float)) or not np.isfinite(value) or value < 0.0:
+                raise ProblemError(f"dead_zone.{key}", value, ">= 0, finite", "a spring, dashpot and gap of a contact")
+
+    def side(self, state: np.ndarray, size: int) -> int:
+        """+1 or −1 in contact beyond +δ or −δ, 0 inside the clearance (on a boundary, by the rate)."""
+        value, rate = self.vector @ state[:size], self.vector @ state[size:2 * size]
+        if value > self.clearance or (value == self.clearance and rate > 0.0):
+            return 1
+        if value < -self.clearance or (value == -self.clearance and rate < 0.0):
+            return -1
+        return 0
 
 
 @dataclass(frozen=True, eq=False)
 class BacklashSystem:
     """The linear structure (``linear``: a :class:`PiecewiseLinearSystem` whose stiffness, damping and force
     patterns are w wᵀ, w wᵀ and w with factors k_j, c_j and k_j e_j — the mesh in driving contact) and the backlash
-    b [m] of the mesh coordinate g = wᵀq − e_j; ``mesh_vector`` w and ``deviation`` e_j (N,) [m]."""
+    b [m] of the mesh coordinate g = wᵀq − e_j; ``mesh_vector`` w and ``deviation`` e_j (N,) [m]; ``dead_zones``
+    further clearances (:class:`DeadZone`), included in the linear system as if in contact."""
 
     linear: PiecewiseLinearSystem
     mesh_vector: np.ndarray
     deviation: np.ndarray
     backlash: float
+    dead_zones: tuple[DeadZone, ...] = ()
 
     def __post_init__(self) -> None:
         n, pieces = self.linear.size, self.linear.nodes.size - 1
+        object.__setattr__(self, "dead_zones", tuple(self.dead_zones))
+        for zone in self.dead_zones:
+            if not isinstance(zone, DeadZone) or zone.vector.shape != (n,):
+                raise ProblemError("dead_zones", type(zone).__name__, f"DeadZone with a vector of {n} entries",
+                                   "one entry per DOF of the linear system")
         object.__setattr__(self, "mesh_vector", checked_array("mesh_vector", self.mesh_vector, (n,), "one per DOF"))
         object.__setattr__(self, "deviation", checked_array("deviation", self.deviation, (pieces,)))
         if not np.isfinite(self.backlash) or self.backlash <= 0.0:
             raise ProblemError("backlash", self.backlash, "> 0 m", "a zero or negative backlash is a jammed mesh")
 
-    def region_matrix(self, piece: int, region: int, mass_inverse: np.ndarray) -> np.ndarray:
-        """Augmented (2n+1)² matrix of one piece in one contact region."""
+    def region_matrix(self, piece: int, region: int, mass_inverse: np.ndarray,
+                      sides: tuple[int, ...] = ()) -> np.ndarray:
+        """Augmented (2n+1)² matrix of one piece in one contact region of the mesh and, for each dead zone, its
+        side (+1, −1 in contact; 0 inside the clearance; all in contact when ``sides`` is empty)."""
         system = self.linear
         n = system.size
         k = system.stiffness_factor[piece] if region != _FREE else 0.0
@@ -58,12 +101,22 @@ class BacklashSystem:
         stiffness = system.stiffness + k * system.stiffness_pattern
         damping = system.damping + system.damping_factor[piece] * system.damping_pattern
         force = system.force + k * shift * self.mesh_vector
+        for zone, side in zip(self.dead_zones, sides):
+            if side == 0:
+                pattern = np.outer(zone.vector, zone.vector)
+                stiffness, damping = stiffness - zone.stiffness * pattern, damping - zone.damping * pattern
+            else:
+                force = force + side * zone.stiffness * zone.clearance * zone.vector
         matrix = np.zeros((2 * n + 1, 2 * n + 1))
         matrix[:n, n:2 * n] = np.eye(n)
         matrix[n:2 * n, :n] = -mass_inverse @ stiffness
         matrix[n:2 * n, n:2 * n] = -mass_inverse @ damping
         matrix[n:2 * n, 2 * n] = mass_inverse @ force
         return matrix
+
+    def sides(self, state: np.ndarray) -> tuple[int, ...]:
+        """The side of every dead zone (:meth:`DeadZone.side`)."""
+        return tuple(zone.side(state, self.linear.size) for zone in self.dead_zones)
 
     def region(self, state: np.ndarray, piece: int) -> int:
         """Contact region of a state (n-DOF displacement first) on a piece, by g and, on a boundary, by ġ."""
@@ -80,63 +133,111 @@ class BacklashSystem:
 def backlash_flow_ndof(system: BacklashSystem, state: np.ndarray, substeps: int = 16,
                        record: bool = False) -> tuple[np.ndarray, np.ndarray, dict]:
     """φ_T(state): end state (2n,), monodromy (2n, 2n) and {"switches", "free_flight_time", "back_contact_time",
-    "time", "states"} (the last two filled when ``record``: the state after every segment)."""
+    "zone_switches", "time", "states"} (the last two filled when ``record``: the state after every segment)."""
     from scipy.linalg import expm
-    from scipy.optimize import brentq
 
     linear = system.linear
     n = linear.size
     inverse = np.linalg.inv(linear.mass)
     z = np.append(np.asarray(state, dtype=float), 1.0)
     total = np.eye(2 * n + 1)
-    info = {"switches": 0, "free_flight_time": 0.0, "back_contact_time": 0.0, "time": [0.0], "states": [z[:-1]]}
-    w = system.mesh_vector
+    info = {"switches": 0, "free_flight_time": 0.0, "back_contact_time": 0.0, "zone_switches": 0, "time": [0.0],
+            "states": [z[:-1]]}
     for piece in range(linear.nodes.size - 1):
         start, stop = linear.nodes[piece], linear.nodes[piece + 1]
         step = (stop - start) / substeps
         matrices, full_steps = {}, {}
-        region = system.region(z, piece)  # at a node the deviation steps: the region is decided afresh
+        key = (system.region(z, piece), system.sides(z))  # at a node the deviation steps: decided afresh
         t = start
         while t < stop - 1e-12 * (stop - start):
-            if region not in matrices:
-                matrices[region] = system.region_matrix(piece, region, inverse)
-            matrix = matrices[region]
+            if key not in matrices:
+                matrices[key] = system.region_matrix(piece, key[0], inverse, key[1])
+            matrix = matrices[key]
             h = min(step, stop - t)
-            if region not in full_steps:
-                full_steps[region] = expm(matrix * step)
-            trial_step = full_steps[region] if h == step else expm(matrix * h)
-            after = system.region(trial_step @ z, piece)
-            following = region
-            if after != region:
-                # the boundary crossed first: from free flight the one on the side the motion ends
-                boundary = -system.backlash if (region == _BACK or (region == _FREE and after == _BACK)) else 0.0
-                following = _FREE if region != _FREE else after
-
-                def distance(s, m=matrix, b=boundary):
-                    return w @ (expm(m * s) @ z)[:n] - system.deviation[piece] - b
-
-                low, high = distance(0.0), distance(h)
-                if low * high < 0.0:
-                    h = brentq(distance, 0.0, h, xtol=1e-13 * (stop - start), rtol=1e-14)
-                    info["switches"] += 1
-                elif low == 0.0:
-                    h = 0.0
+            if key not in full_steps:
+                full_steps[key] = expm(matrix * step)
+            trial = (full_steps[key] if h == step else expm(matrix * h)) @ z
+            after = (system.region(trial, piece), system.sides(trial))
+            following, zone = key, None
+            if after != key:
+                h, following, zone, switched = _first_switch(system, piece, key, after, matrix, z, h, stop - start)
+                info["switches" if zone is None else "zone_switches"] += switched
             if h > 0.0:
-                segment = full_steps[region] if h == step else expm(matrix * h)
+                segment = full_steps[key] if h == step else expm(matrix * h)
                 total = segment @ total
                 z = segment @ z
-                if region == _FREE:
+                if key[0] == _FREE:
                     info["free_flight_time"] += h
-                elif region == _BACK:
+                elif key[0] == _BACK:
                     info["back_contact_time"] += h
                 t += h
-            region = following
+            if zone is not None:  # the dead zone's dashpot starts or stops: the vector field jumps
+                if following not in matrices:
+                    matrices[following] = system.region_matrix(piece, following[0], inverse, following[1])
+                total = _saltation(matrix, matrices[following], system.dead_zones[zone].vector, z) @ total
+            key = following
             if record:
                 info["time"].append(t)
                 info["states"].append(z[:-1])
             if not np.all(np.isfinite(z)):
                 raise ProblemError("state", "not finite", "a bounded motion", "the coefficients are out of range")
     return z[:-1], total[:-1, :-1], info
+
+
+def _first_switch(system: BacklashSystem, piece: int, key: tuple, after: tuple, matrix: np.ndarray, z: np.ndarray,
+                  h: float, width: float) -> tuple[float, tuple, int | None, int]:
+    """The first boundary crossed within h: (time to it, the region after it, the dead zone's index or None for the
+    mesh, 1 when a crossing was located). Without a located crossing (a double crossing or a boundary state) the
+    step is taken whole and the region of the first changed element moves on, as for one element."""
+    from scipy.linalg import expm
+    from scipy.optimize import brentq
+
+    n = system.linear.size
+    candidates = []  # (vector, boundary, offset, region after, zone index)
+    region, sides = key
+    if after[0] != region:
+        # the boundary crossed first: from free flight the one on the side the motion ends
+        boundary = -system.backlash if (region == _BACK or (region == _FREE and after[0] == _BACK)) else 0.0
+        following = _FREE if region != _FREE else after[0]
+        candidates.append((system.mesh_vector, boundary + system.deviation[piece], (following, sides), None))
+    for index, (old, new) in enumerate(zip(sides, after[1])):
+        if old != new:
+            zone = system.dead_zones[index]
+            boundary = zone.clearance if (old > 0 or (old == 0 and new > 0)) else -zone.clearance
+            side = 0 if old != 0 else (1 if new > 0 else -1)
+            candidates.append((zone.vector, boundary, (region, sides[:index] + (side,) + sides[index + 1:]), index))
+    best = None
+    for vector, boundary, following, index in candidates:
+        def distance(s, m=matrix, v=vector, b=boundary):
+            return v @ (expm(m * s) @ z)[:n] - b
+
+        low, high = distance(0.0), distance(h)
+        if low * high < 0.0:
+            root, located = brentq(distance, 0.0, h, xtol=1e-13 * width, rtol=1e-14), 1
+        elif low == 0.0 or (index is not None and abs(low) <= 1e-8 * abs(high)):
+            # on the boundary already (a switch just located leaves |u − ±δ| ~ 1e-13 of the motion, on either
+            # side): the element passes through at once — a zero clearance has no inside to dwell in
+            root, located = 0.0, 0
+        else:
+            continue
+        if best is None or root < best[0]:
+            best = (root, following, index, located)
+    if best is None:
+        _, _, following, index = candidates[0]
+        return h, following, index, 0
+    return best
+
+
+def _saltation(before: np.ndarray, after: np.ndarray, vector: np.ndarray, z: np.ndarray) -> np.ndarray:
+    """S = I + (f⁺ − f⁻) nᵀ/(nᵀ f⁻) on the augmented state at a switch of u = vᵀq (identity at a grazing one)."""
+    size = vector.size
+    normal = np.zeros(z.size)
+    normal[:size] = vector
+    field_before, field_after = before @ z, after @ z
+    rate = normal @ field_before
+    if rate == 0.0:
+        return np.eye(z.size)
+    return np.eye(z.size) + np.outer(field_after - field_before, normal) / rate
 
 
 @dataclass(frozen=True, eq=False)

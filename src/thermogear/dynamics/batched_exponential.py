@@ -12,6 +12,21 @@ brings its norms down to about ω_max·h, saving the squarings that would otherw
 The polynomial costs five products (X², X³, X⁴ and two Horner steps in X⁴: Paterson & Stockmeyer, SIAM J. Comput.
 2 (1973) 60–66). Knows nothing of gears: arrays only. Used for the many short pieces of a mesh period, where one
 vectorised pass over all pieces replaces a Python loop of ``scipy.linalg.expm`` calls.
+
+:func:`expm_of_rank_updates` serves the case where the pieces differ from one constant matrix only by a low-rank
+term (a gear mesh: the mesh stiffness, damping and excitation act through the one mesh vector w, so every piece's
+state matrix is the mean one plus a rank-1 term). For X_j = t_j·(X₀ + U R_j), with U (m, r) and R_j (r, m), the
+exact identity (telescoping the powers, Xᵖ − X₀ᵖ = Σ_{i+k=p−1} Xⁱ (X − X₀) X₀ᵏ)
+
+    e^{X_j} = e^{t_j X₀} + Σ_{i,k ≥ 0} t_j^{i+k+1}/(i+k+1)! · Y_iʲ Z_kʲ,   Y_iʲ = (X₀ + U R_j)ⁱ U,  Z_kʲ = R_j X₀ᵏ,
+
+turns each piece's exponential into one shared e^{t X₀} (one per distinct t) plus a rank-(d·r) update built from
+Krylov blocks. All pieces' Y_i and Z_k come from one matrix product of X₀ with all pieces' blocks at once, so the
+per-piece cost is O(d·r·m²) instead of the O(m³) products of a full Taylor polynomial. Truncating at i, k < d
+leaves only terms of total degree p = i+k+1 ≥ d+1; with β ≥ ‖t_j X₀‖₁ and ‖t_j(X₀ + U R_j)‖₁ (so ‖t_j U R_j‖₁ ≤ 2β)
+and p such pairs (i, k) per degree, their sum is at most 2β·Σ_{q≥d} β^q/q! ≤ 2β·β^d/d!/(1 − β/(d+1)); d is the least
+degree that brings this under the unit roundoff 2⁻⁵³, after scaling by 2⁻ˢ so that β ≤ 1 (then squaring s times,
+as above). Balancing uses the entrywise bound |X₀| + |U|·max_j|R_j| of every member.
 """
 
 from __future__ import annotations
@@ -22,7 +37,7 @@ import numpy as np
 
 from thermogear.errors import ProblemError
 
-__all__ = ["batched_expm"]
+__all__ = ["batched_expm", "expm_of_rank_updates"]
 
 _THETA = 0.5
 _COEFFICIENTS = np.array([1.0 / math.factorial(k) for k in range(13)])
@@ -75,3 +90,88 @@ def batched_expm(matrices: np.ndarray) -> np.ndarray:
         result = result @ result
     result = result * (scale[None, :] / scale[:, None])
     return result[0] if single else result
+
+
+_RANK_THETA = 1.0
+_UNIT_ROUNDOFF = 2.0**-53
+
+
+def _rank_update_degree(beta: float) -> int:
+    """Least d with 2β·β^d/d!/(1 − β/(d+1)) ≤ 2⁻⁵³ (see the module docstring; the geometric bound of the tail needs
+    d + 1 > β)."""
+    degree = max(1, int(math.floor(beta)) + 1)
+    while 2.0 * beta * beta**degree / math.factorial(degree) / (1.0 - beta / (degree + 1)) > _UNIT_ROUNDOFF:
+        degree += 1
+    return degree
+
+
+def expm_of_rank_updates(base: np.ndarray, left: np.ndarray, right: np.ndarray, times: np.ndarray,
+                         rows: np.ndarray | None = None) -> np.ndarray:
+    """e^{t_j·(X₀ + U R_j)} for every j: ``base`` X₀ (m, m), ``left`` U (m, r), ``right`` R (N, r, m), ``times``
+    t (N,) >= 0 [same units]; returns (N, m, m). With ``rows`` V (q, m), ``right`` holds coefficients C (N, r, q)
+    and R_j = C_j V: when every R_j lies in a few fixed rows (a mesh: the stiffness, damping and excitation rows),
+    the Krylov blocks Z_k = C_j (V X₀ᵏ) need products with q rows only. Exact to the unit roundoff of the truncated
+    series (module docstring); worth it when r ≪ m and N is large."""
+    base, left = np.asarray(base, dtype=float), np.asarray(left, dtype=float)
+    right, times = np.asarray(right, dtype=float), np.asarray(times, dtype=float)
+    size = base.shape[0]
+    rows = np.eye(size) if rows is None else np.asarray(rows, dtype=float)
+    if base.shape != (size, size) or left.ndim != 2 or left.shape[0] != size or right.ndim != 3 \
+            or rows.ndim != 2 or rows.shape[1] != size or right.shape[1:] != (left.shape[1], rows.shape[0]) \
+            or times.shape != (right.shape[0],):
+        raise ProblemError("matrices", f"shapes {base.shape}, {left.shape}, {right.shape}, {rows.shape}, "
+                           f"{times.shape}", "X₀ (m, m), U (m, r), C (N, r, q), V (q, m), t (N,)",
+                           "pieces X₀ + U C_j V scaled by t_j")
+    if not all(np.all(np.isfinite(array)) for array in (base, left, right, rows, times)) or np.any(times < 0.0):
+        raise ProblemError("matrices", "non-finite entries or negative times", "finite numbers, t >= 0",
+                           "the exponential of NaN is undefined")
+    count, rank = right.shape[0], left.shape[1]
+    if count == 0:
+        return np.zeros((0, size, size))
+    magnitude = np.abs(right) @ np.abs(rows)  # entrywise bound of |R_j|: (N, r, m)
+    bound = np.abs(base) + np.abs(left) @ magnitude.max(axis=0)
+    scale = _balancing(bound[None])
+    base = base * (scale[:, None] / scale[None, :])
+    left, rows, magnitude = left * scale[:, None], rows / scale[None, :], magnitude / scale[None, None, :]
+    longest = float(times.max())
+    if longest == 0.0:
+        return np.broadcast_to(np.eye(size), (count, size, size)).copy()
+    times = times / longest
+    base_norm = float(np.abs(base).sum(axis=0).max()) * longest
+    right_norms = magnitude.sum(axis=1).max(axis=1) * longest
+    beta = float((times * (base_norm + float(np.abs(left).sum(axis=0).max()) * right_norms)).max())
+    beta = max(beta, base_norm)
+    squarings = max(0, int(math.ceil(math.log2(beta / _RANK_THETA)))) if beta > _RANK_THETA else 0
+    factor = longest / 2.0**squarings
+    base, rows, beta = base * factor, rows * factor, beta / 2.0**squarings
+    degree = _rank_update_degree(beta)
+    # Krylov blocks of all pieces at once, as rows (N·r, m), each step one product with X₀ᵀ:
+    # Y_iᵀ = Y_{i−1}ᵀ X₀ᵀ + (C_j V Y_{i−1})ᵀ Uᵀ; and Z_k = C_j (V X₀ᵏ) from the q rows' own powers
+    left_blocks = np.empty((count, size, degree, rank))
+    krylov = np.broadcast_to(left.T, (count, rank, size)).reshape(count * rank, size)
+    for order in range(degree):
+        left_blocks[:, :, order, :] = krylov.reshape(count, rank, size).transpose(0, 2, 1)
+        if order + 1 < degree:
+            projected = (krylov @ rows.T).reshape(count, rank, rows.shape[0])  # (V Y_j)ᵀ: (N, r_b, q)
+            coupling = right @ projected.transpose(0, 2, 1)  # C_j V Y_j: (N, r_a, r_b)
+            krylov = krylov @ base.T + coupling.transpose(0, 2, 1).reshape(count * rank, rank) @ left.T
+    row_powers = [rows]
+    for _ in range(degree - 1):
+        row_powers.append(row_powers[-1] @ base)
+    stacked_rows = np.stack(row_powers, axis=1).reshape(rows.shape[0], degree * size)  # (q, d·m)
+    right_blocks = (right.reshape(count * rank, -1) @ stacked_rows).reshape(count, rank, degree, size)
+    right_blocks = right_blocks.transpose(0, 2, 1, 3) if rank > 1 else right_blocks.reshape(count, degree, 1, size)
+    # t^{i+k+1}/(i+k+1)! = t^i · [1/(i+k+1)!] · t^{k+1}: the Hankel matrix of 1/p! is shared by every piece
+    orders = np.arange(degree)
+    hankel = 1.0 / np.array([[math.factorial(i + k + 1) for k in orders] for i in orders], dtype=float)
+    powers = times[:, None] ** np.arange(degree + 1)[None]  # (N, d+1)
+    left_blocks *= powers[:, None, :degree, None]
+    right_blocks *= powers[:, 1:, None, None]
+    weighted = (left_blocks.reshape(count * size, degree, rank).transpose(0, 2, 1).reshape(count * size * rank, degree)
+                @ hankel).reshape(count * size, rank, degree).transpose(0, 2, 1).reshape(count, size, degree * rank)
+    result = weighted @ right_blocks.reshape(count, degree * rank, size)  # Σ_ik t^i Y_i H_ik t^{k+1} Z_k
+    distinct, where = np.unique(times, return_inverse=True)
+    result += batched_expm(distinct[:, None, None] * base[None])[where.ravel()]
+    for _ in range(squarings):
+        result = result @ result
+    return result * (scale[None, :] / scale[:, None])

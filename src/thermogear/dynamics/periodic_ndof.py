@@ -9,7 +9,10 @@ augmented matrix (Van Loan, "Computing integrals involving the matrix exponentia
 The monodromy Φ_T = Φ_{N−1}···Φ_0 and the image p of z = 0 after one period give the periodic state
 z₀ = (I − Φ_T)⁻¹ p, unique and attracting iff every Floquet multiplier (eigenvalue of Φ_T) lies inside the unit
 circle (Floquet 1883; Nayfeh & Mook, Nonlinear Oscillations, 1979, §5.2). The exponentials of all pieces are
-taken in one vectorised pass (:mod:`thermogear.dynamics.batched_exponential`) and multiplied pairwise. Knows
+taken in one vectorised pass (:mod:`thermogear.dynamics.batched_exponential`): equal pieces once, and pieces that
+differ only through low-rank patterns as rank updates of the mean one (``_piece_steps``). The monodromy is the
+product of √N blocks, blocks of the same pieces multiplied once, and the states at the nodes follow from the block
+products (``_blocks``); z₀ is one linear solve. Knows
 nothing of gears: matrices only. With a rigid-body mode (K r = 0) a multiplier is 1 and I − Φ_T is singular:
 remove such modes first (``rigid_body.rigid_body_reduction``).
 
@@ -19,6 +22,7 @@ remove such modes first (``rigid_body.rigid_body_reduction``).
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -136,14 +140,68 @@ def _mass_inverse(system: PiecewiseLinearSystem) -> np.ndarray:
     return cho_solve(factor, np.eye(system.size))
 
 
-def _piece_steps(system: PiecewiseLinearSystem, samples: int) -> np.ndarray:
-    """(N, 2n+1, 2n+1) exponentials of the augmented pieces over one sub-step h_j/samples each, in one vectorised
-    pass (:func:`~thermogear.dynamics.batched_exponential.batched_expm`)."""
-    from thermogear.dynamics.batched_exponential import batched_expm
+def _piece_steps(system: PiecewiseLinearSystem, samples: int) -> tuple[np.ndarray, np.ndarray]:
+    """(D, 2n+1, 2n+1) exponentials of the D distinct augmented pieces over one sub-step h_j/samples each, and the
+    index (N,) of each piece's among them.
+
+    Two exact economies. Pieces with the same (h_j, k_j, c_j, g_j) have the same exponential: it is taken once
+    (a square-wave or piecewise-constant k(τ) of a few levels needs a few exponentials for any number of pieces).
+    When the patterns have low rank r (a gear mesh: r = 1, everything acts through w), every piece is the
+    mean matrix plus a rank-r term, and :func:`~thermogear.dynamics.batched_exponential.expm_of_rank_updates`
+    forms all of them at O(r·n²) each instead of the O(n³) of a full Taylor polynomial
+    (:func:`~thermogear.dynamics.batched_exponential.batched_expm`); below ``_RANK_ROUTE_PIECES`` distinct pieces
+    the full exponentials cost little and keep Al-Mohy & Higham's tighter scaling, so they are used.
+    """
+    from thermogear.dynamics.batched_exponential import batched_expm, expm_of_rank_updates
 
     inverse = _mass_inverse(system)
     widths = np.diff(system.nodes) / samples
-    return batched_expm(system.augmented_stack(inverse) * widths[:, None, None])
+    factors = np.column_stack([widths, system.stiffness_factor, system.damping_factor, system.force_factor])
+    distinct, where = np.unique(factors, axis=0, return_inverse=True)
+    where = where.ravel()
+    range_basis = _pattern_range(system)
+    n = system.size
+    rank = range_basis.shape[1]
+    if distinct.shape[0] < _RANK_ROUTE_PIECES or rank == 0 or rank * _RANK_ROUTE_RATIO > 2 * n + 1:
+        steps = batched_expm(_with_factors(system, distinct).augmented_stack(inverse) * distinct[:, :1, None])
+    else:
+        mean_factors = distinct[:, 1:].mean(axis=0)
+        mean = _with_factors(system, np.append(1.0, mean_factors)[None]).augmented_stack(inverse)[0]
+        left = np.zeros((2 * n + 1, range_basis.shape[1]))
+        left[n:2 * n] = inverse @ range_basis
+        shift = distinct[:, 1:] - mean_factors
+        rows = np.zeros((3 * rank, 2 * n + 1))  # the stiffness, damping and excitation rows, r each
+        rows[:rank, :n] = range_basis.T @ system.stiffness_pattern
+        rows[rank:2 * rank, n:2 * n] = range_basis.T @ system.damping_pattern
+        rows[2 * rank:, 2 * n] = range_basis.T @ system.force_pattern
+        right = np.concatenate([np.eye(rank) * sign * shift[:, column, None, None]
+                                for column, sign in enumerate((-1.0, -1.0, 1.0))], axis=2)  # (D, r, 3r)
+        steps = expm_of_rank_updates(mean, left, right, distinct[:, 0], rows)
+    return steps, where
+
+
+# The rank-update route costs about 6·d·r·m² per piece (Krylov products and the rank-(d·r) sum, d ≈ 15 terms; m = 2n+1)
+# against about 12·m³ for the full Taylor polynomial (six products of 2m³): it pays from m ≈ 7.5·r, hence r ≤ m/8.
+# Below 16 distinct pieces the full exponentials take well under a millisecond and keep the tighter scaling.
+_RANK_ROUTE_PIECES = 16
+_RANK_ROUTE_RATIO = 8
+
+
+def _with_factors(system: PiecewiseLinearSystem, rows: np.ndarray) -> PiecewiseLinearSystem:
+    """The system's matrices with the factors of ``rows`` (width, k, c, g) as its pieces (unit widths)."""
+    from dataclasses import replace
+
+    return replace(system, nodes=np.arange(rows.shape[0] + 1, dtype=float), stiffness_factor=rows[:, 1],
+                   damping_factor=rows[:, 2], force_factor=rows[:, 3])
+
+
+def _pattern_range(system: PiecewiseLinearSystem) -> np.ndarray:
+    """Orthonormal basis Q (n, r) of the column space of [P_K, P_C, P_f]: every piece's variation acts through it."""
+    stacked = np.hstack([system.stiffness_pattern, system.damping_pattern, system.force_pattern[:, None]])
+    vectors, values, _ = np.linalg.svd(stacked, full_matrices=False)
+    if values.size == 0 or values[0] == 0.0:
+        return np.zeros((system.size, 0))
+    return vectors[:, values > 1e-13 * values[0]]
 
 
 def _power(matrices: np.ndarray, count: int) -> np.ndarray:
@@ -151,18 +209,55 @@ def _power(matrices: np.ndarray, count: int) -> np.ndarray:
 
 
 def ordered_product(matrices: np.ndarray) -> np.ndarray:
-    """X_{N−1}···X₁X₀ of a (N, m, m) stack, by pairwise products level by level (log₂N vectorised passes)."""
+    """X_{N−1}···X₁X₀ of a (…, N, m, m) stack (leading axes batched), by pairwise products level by level (log₂N
+    vectorised passes)."""
     stack = np.asarray(matrices)
-    while stack.shape[0] > 1:
-        odd = stack[-1:] if stack.shape[0] % 2 else stack[:0]
-        paired = stack[1:stack.shape[0] - odd.shape[0]:2] @ stack[0:stack.shape[0] - odd.shape[0]:2]
-        stack = np.concatenate([paired, odd]) if odd.shape[0] else paired
-    return stack[0]
+    while stack.shape[-3] > 1:
+        count = stack.shape[-3]
+        even = count - count % 2
+        paired = stack[..., 1:even:2, :, :] @ stack[..., 0:even:2, :, :]
+        stack = np.concatenate([paired, stack[..., even:, :, :]], axis=-3) if even < count else paired
+    return stack[..., 0, :, :]
+
+
+def _blocks(distinct: np.ndarray, where: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The steps ``distinct[where]`` in B ≈ √N consecutive blocks (padded with identities) and each block's ordered
+    product: the monodromy is the product of the B block products (the same N − 1 matrix products as one tree), and
+    the states at every node follow from B sequential products plus √N batched ones instead of N sequential ones.
+    Blocks made of the same sequence of distinct pieces share one product (exact: the same matrices multiplied in
+    the same order), so a k(τ) of a few levels — most blocks lie inside one level — costs a few block products:
+    the repeated-piece economy exp(A·h)ⁿ of equal pieces without any special case."""
+    count, size = where.size, distinct.shape[1]
+    block = max(1, int(round(math.sqrt(count))))
+    blocks = -(-count // block)
+    with_identity = np.concatenate([distinct, np.eye(size)[None]])
+    indices = np.concatenate([where, np.full(blocks * block - count, distinct.shape[0])]).reshape(blocks, block)
+    padded = with_identity[indices]
+    patterns, first, which = np.unique(indices, axis=0, return_index=True, return_inverse=True)
+    if patterns.shape[0] == blocks:  # every block differs: one tree over all of them
+        return padded, ordered_product(padded)
+    return padded, ordered_product(padded[first])[which.ravel()]
+
+
+def _orbit_nodes(padded: np.ndarray, products: np.ndarray, start: np.ndarray, count: int) -> np.ndarray:
+    """States at the N + 1 nodes from the state at the first: block starts in sequence, then all blocks at once."""
+    starts = np.empty((products.shape[0], start.size))
+    state = start
+    for index, product in enumerate(products):
+        starts[index] = state
+        state = product @ state
+    inside = np.empty((padded.shape[0], padded.shape[1], start.size))
+    current = starts
+    for index in range(padded.shape[1]):
+        inside[:, index] = current
+        current = (padded[:, index] @ current[:, :, None])[:, :, 0]
+    return np.vstack([inside.reshape(-1, start.size)[:count], state[None]])
 
 
 def monodromy(system: PiecewiseLinearSystem) -> tuple[np.ndarray, np.ndarray]:
     """Monodromy Φ_T (2n, 2n) and the image p (2n,) of z = 0 after one period."""
-    total = ordered_product(_piece_steps(system, 1))
+    distinct, where = _piece_steps(system, 1)
+    total = ordered_product(distinct[where])
     return total[:-1, :-1], total[:-1, -1]
 
 
@@ -175,8 +270,9 @@ def periodic_response(system: PiecewiseLinearSystem, samples_per_piece: int = 16
     if int(samples_per_piece) != samples_per_piece or samples_per_piece < 1:
         raise ProblemError("samples_per_piece", samples_per_piece, "integer >= 1", "sub-steps per piece")
     samples = int(samples_per_piece)
-    steps = _piece_steps(system, samples)
-    total = ordered_product(_power(steps, samples))
+    distinct, where = _piece_steps(system, samples)
+    padded, products = _blocks(_power(distinct, samples), where)
+    total = ordered_product(products)
     transition, image = total[:-1, :-1], total[:-1, -1]
     multipliers = np.linalg.eigvals(transition)
     multipliers = multipliers[np.argsort(-np.abs(multipliers))]
@@ -185,16 +281,16 @@ def periodic_response(system: PiecewiseLinearSystem, samples_per_piece: int = 16
         raise ModelLimitError(f"a Floquet multiplier has modulus {radius:.6g} >= 1: parametric instability, an "
                               "undamped or a rigid-body mode; there is no attracting periodic orbit")
     initial = np.linalg.solve(np.eye(transition.shape[0]) - transition, image)
-    n, pieces = system.size, len(steps)
-    states = np.empty((pieces * samples + 1, 2 * n + 1))
-    state = np.append(initial, 1.0)
-    row = 0
-    for step in steps:
-        for _ in range(samples):
-            states[row] = state
-            state = step @ state
-            row += 1
-    states[row] = state
+    n, pieces = system.size, where.size
+    nodes = _orbit_nodes(padded, products, np.append(initial, 1.0), pieces)
+    within = np.empty((pieces, samples, 2 * n + 1))
+    current = nodes[:-1]
+    steps = distinct[where] if samples > 1 else None
+    for sample in range(samples):  # the sub-steps of every piece at once
+        within[:, sample] = current
+        if sample + 1 < samples:
+            current = (steps @ current[:, :, None])[:, :, 0]
+    states = np.vstack([within.reshape(pieces * samples, 2 * n + 1), nodes[-1:]])
     offsets = np.arange(samples) / samples
     time = np.concatenate([(system.nodes[:-1, None] + np.diff(system.nodes)[:, None] * offsets).ravel(),
                            [system.period]])
