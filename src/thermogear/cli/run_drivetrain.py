@@ -52,9 +52,11 @@ def print_drivetrain(data: dict[str, Any] | None, console) -> None:
             cells += [f"{heat[index]['shift_percent']:+.3f}", heat[index]["dominant_cause"]]
         table.add_row(*cells)
     console.print(table)
-    console.print("* mesh-dominated (mesh share > 0.1). Mesh harmonics meet them at: " + ("; ".join(
-        f"{r['harmonic']}× mesh at {r['speed_rpm']:.0f} rpm ({r['mode_hz']:.0f} Hz, {name})"
-        for name, model in models.items() for r in model["resonances"]) or "none"), highlight=False)
+    console.print("* mesh-dominated (mesh share > 0.1). Mesh harmonics meet modes with a mesh share above 0.01 at: "
+                  + ("; ".join(f"{r['harmonic']}× mesh at {r['speed_rpm']:.0f} rpm ({r['mode_hz']:.0f} Hz "
+                               f"{r['label']}{' *' if r['mesh_dominated'] else ''}, {name})"
+                               for name, model in models.items() for r in model["resonances"]) or "none"),
+                  highlight=False)
     response = Table(title=f"drivetrain response (mesh {data['mesh']}; modes up to {data['response_cutoff_hz']:.0f} "
                            "Hz)", header_style="bold")
     for column in ("quantity", *models, "unit"):

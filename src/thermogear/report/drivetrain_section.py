@@ -84,9 +84,11 @@ def drivetrain_section(data: dict[str, Any] | None) -> str:
                                _number(m["dte_peak_to_peak_um"], "{:.3f}"),
                                _number(m["largest_floquet_multiplier_abs"], "{:.4f}")])
                        for name, m in models.items())
-    resonances = sorted({(round(r["speed_rpm"]), r["harmonic"], round(r["mode_hz"]))
-                         for m in models.values() for r in m["resonances"]})
-    resonance_text = "; ".join(f"{h}× mesh meets {f} Hz at {n} rpm" for n, h, f in resonances) or "none"
+    resonances = sorted({(round(r["speed_rpm"]), r["harmonic"], round(r["mode_hz"]), r["label"],
+                          " (mesh-dominated)" if r["mesh_dominated"] else "", name)
+                         for name, m in models.items() for r in m["resonances"]})
+    resonance_text = "; ".join(f"{h}× mesh meets {f} Hz {label}{dominated} at {n} rpm ({name})"
+                               for n, h, f, label, dominated, name in resonances) or "none"
     notes = "".join(f"<p class='small'>{html.escape(note)}</p>" for note in data.get("notes", []))
     return ("<h2 id='drivetrain'>The pair in its drivetrain</h2>"
             f"<p>{data['degrees_of_freedom']} degrees of freedom (Timoshenko shafts, gear bodies, bearings, "
@@ -98,7 +100,7 @@ def drivetrain_section(data: dict[str, Any] | None) -> str:
             + _modes_table(data)
             + "<table>" + _cells(["model", "Kv", "DTE RMS [μm]", "DTE peak-to-peak [μm]", "largest |Floquet "
                                   "multiplier|"], header=True) + response + "</table>"
-            + f"<p>Mesh harmonics meet mesh-dominated modes at: {html.escape(resonance_text)}.</p>"
+            + f"<p>Mesh harmonics meet modes with a mesh share above 0.01 at: {html.escape(resonance_text)}.</p>"
             + "<h3>Dynamic bearing forces on the housing</h3>"
             "<p>Radial force of each bearing over one mesh period: its mean, the RMS of its dynamic part and the "
             "amplitude √(X_j² + Y_j²) of the first mesh harmonics — what an accelerometer on the housing sees.</p>"

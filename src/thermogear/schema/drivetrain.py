@@ -187,6 +187,9 @@ class DrivetrainSection(Section):
     response_cutoff_hz: Annotated[float, Field(ge=100.0, le=1e7, description=(
         "the periodic response is solved on the modes up to this frequency [Hz] plus the static corrections "
         "(modal reduction; the mesh compliance stays exact)"))] = 60_000.0
+    sweep_points_per_period: Annotated[int, Field(ge=16, le=100_000, description=(
+        "mesh-grid intervals per mesh period in a speed sweep of the drivetrain (run uses [dynamics] "
+        "points_per_period); the first mesh harmonics converge with far fewer than a run's 1024"))] = 128
     mode_count: Annotated[int, Field(ge=1, le=200, description="lowest modes reported [-]")] = 12
     bearing_harmonics: Annotated[int, Field(ge=1, le=20, description=(
         "mesh harmonics of the bearing forces reported [-]"))] = 3
