@@ -21,7 +21,10 @@ def drivetrain_report_data(case, models: tuple[str, ...] = ("elastic", "thermal"
 
     try:
         return json_ready(drivetrain_results(case, models), non_finite="null")
-    except (CaseError, ModelLimitError) as error:
+    except ModelLimitError as error:  # most often a mode nothing damps: say where damping comes from
+        return {"not_computed": f"{error} (every mode needs damping: give the shafts material_damping_s and the "
+                                "bearings damping in x, y and, where they locate the shaft, z)"}
+    except CaseError as error:
         return {"not_computed": str(error)}
 
 
