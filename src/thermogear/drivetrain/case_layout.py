@@ -49,7 +49,8 @@ def _gear_body(name: str, point, gear, pitch_radius: float, seat_diameter: float
     if polar_inertia is None:
         return disk
     # the case's polar inertia; the diametral one of the same body: I_p/2 + m b²/12 (thin-disk relation)
-    return RigidDisk(name, location, disk.mass, polar_inertia, polar_inertia / 2.0 + disk.mass * gear.face_width**2 / 12)
+    diametral = polar_inertia / 2.0 + disk.mass * gear.face_width**2 / 12.0
+    return RigidDisk(name, location, disk.mass, polar_inertia, diametral)
 
 
 def drivetrain_from_section(section, pair, material, mesh_stiffness: float, mesh_damping: float = 0.0,

@@ -106,5 +106,6 @@ def drivetrain_section(data: dict[str, Any] | None) -> str:
             + f"<p>Mesh harmonics meet modes with a mesh share above 0.01 at: {html.escape(resonance_text)}.</p>"
             + "<h3>Dynamic bearing forces on the housing</h3>"
             "<p>Radial force of each bearing over one mesh period: its mean, the RMS of its dynamic part and the "
-            "amplitude √(X_j² + Y_j²) of the first mesh harmonics — what an accelerometer on the housing sees.</p>"
+            "amplitude √(X_j² + Y_j²) of the first mesh harmonics — what an accelerometer on the housing "
+            "sees.</p>"
             + _bearings_table(data) + notes)

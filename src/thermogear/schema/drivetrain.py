@@ -47,6 +47,7 @@ _TORSIONAL_N_M_PER_RAD = (0.0, 1e12)
 _DAMPING = (0.0, 1e10)
 
 _NAME = Annotated[str, Field(min_length=1, max_length=60, description="a name, unique in the drivetrain")]
+_SHAFT = Annotated[str, Field(min_length=1, max_length=60, description="the name of a [[drivetrain.shafts]] table")]
 _POSITION = Annotated[float, Field(ge=0.0, le=_LENGTH_MM[1], description="position along the shaft from its first "
                                                                          "end [mm]")]
 
@@ -72,14 +73,14 @@ class ShaftSection(Section):
     """A shaft along +z: its segments, its material (default the case's [material]) and its warm temperature."""
 
     name: _NAME
-    segments: Annotated[list[ShaftSegmentSection], Field(min_length=1, max_length=100,
-                                                         description="uniform pieces from the first end")]
-    youngs_modulus_gpa: Annotated[float, Field(ge=1.0, le=1000.0, description="Young's modulus at 20 °C [GPa]; "
-                                                                              "default the case's material")] | None = None
-    poisson_ratio: Annotated[float, Field(gt=0.0, lt=0.5, description="Poisson's ratio [-]; default the "
-                                                                       "case's material")] | None = None
-    density_kg_m3: Annotated[float, Field(ge=500.0, le=25_000.0, description="density [kg/m³]; default the "
-                                                                            "case's material")] | None = None
+    segments: Annotated[list[ShaftSegmentSection], Field(min_length=1, max_length=100, description=(
+        "uniform pieces from the first end, tables of length_mm, outer_diameter_mm, inner_diameter_mm (0: solid)"))]
+    youngs_modulus_gpa: Annotated[float, Field(ge=1.0, le=1000.0, description=(
+        "Young's modulus at 20 °C [GPa]; default the case's material"))] | None = None
+    poisson_ratio: Annotated[float, Field(gt=0.0, lt=0.5, description=(
+        "Poisson's ratio; default the case's material"))] | None = None
+    density_kg_m3: Annotated[float, Field(ge=500.0, le=25_000.0, description=(
+        "density [kg/m³]; default the case's material"))] | None = None
     material_damping_s: Annotated[float, Field(ge=0.0, le=1e-3, description=(
         "stiffness-proportional damping β of the shaft material [s] (ζ = βω/2 in each shaft mode)"))] = 0.0
     temperature_c: Annotated[float, Field(ge=-50.0, le=200.0, description=(
@@ -104,7 +105,7 @@ class ShaftSection(Section):
 class PointSection(Section):
     """A point on a shaft: the shaft's name and the position from its first end [mm]."""
 
-    shaft: _NAME
+    shaft: _SHAFT
     position_mm: _POSITION
 
 
@@ -112,7 +113,7 @@ class BearingSection(Section):
     """A linear bearing from a shaft point to the (rigid) housing: stiffness and damping per direction."""
 
     name: _NAME
-    shaft: _NAME
+    shaft: _SHAFT
     position_mm: _POSITION
     stiffness_x_n_per_m: Annotated[float, Field(ge=_STIFFNESS_N_PER_M[0], le=_STIFFNESS_N_PER_M[1],
                                                 description="radial stiffness in x [N/m]")]
@@ -132,7 +133,7 @@ class DiskSection(Section):
     """A rigid body on a shaft: a motor rotor, a load, a coupling hub (the gear bodies come from the gears)."""
 
     name: _NAME
-    shaft: _NAME
+    shaft: _SHAFT
     position_mm: _POSITION
     mass_kg: Annotated[float, Field(ge=0.0, le=1e6, description="mass [kg]")]
     polar_inertia_kg_m2: Annotated[float, Field(ge=0.0, le=1e6, description="polar moment of inertia [kg·m²]")]
@@ -144,9 +145,9 @@ class CouplingSection(Section):
     """A coupling between two shaft points: torsional spring and dashpot, optional lateral and angular springs."""
 
     name: _NAME
-    shaft_1: _NAME
+    shaft_1: _SHAFT
     position_1_mm: _POSITION
-    shaft_2: _NAME
+    shaft_2: _SHAFT
     position_2_mm: _POSITION
     torsional_stiffness_n_m_per_rad: Annotated[float, Field(gt=0.0, le=_TORSIONAL_N_M_PER_RAD[1],
                                                             description="torsional stiffness [N·m/rad]")]
@@ -164,7 +165,7 @@ class EndSection(Section):
 
     kind: Literal["torque", "speed"] = Field("torque", description="'torque': constant torque; 'speed': a motor "
                                                                    "held at speed (torsional support)")
-    shaft: _NAME | None = None
+    shaft: _SHAFT | None = None
     position_mm: _POSITION | None = None
     stiffness_n_m_per_rad: Annotated[float, Field(gt=0.0, le=_TORSIONAL_N_M_PER_RAD[1], description=(
         "'speed': the speed loop as a torsional spring to ground [N·m/rad] (from the drive's controller gains)"
@@ -190,14 +191,24 @@ class DrivetrainSection(Section):
     sweep_points_per_period: Annotated[int, Field(ge=16, le=100_000, description=(
         "mesh-grid intervals per mesh period in a speed sweep of the drivetrain (run uses [dynamics] "
         "points_per_period); the first mesh harmonics converge with far fewer than a run's 1024"))] = 128
-    mode_count: Annotated[int, Field(ge=1, le=200, description="lowest modes reported [-]")] = 12
+    mode_count: Annotated[int, Field(ge=1, le=200, description="lowest modes reported")] = 12
     bearing_harmonics: Annotated[int, Field(ge=1, le=20, description=(
-        "mesh harmonics of the bearing forces reported [-]"))] = 3
-    shafts: Annotated[list[ShaftSection], Field(min_length=2, max_length=50, description="the shafts")]
-    bearings: Annotated[list[BearingSection], Field(min_length=1, max_length=200, description="the bearings")]
-    disks: Annotated[list[DiskSection], Field(max_length=200, description="rigid disks: motor, load, hubs")] = []
-    couplings: Annotated[list[CouplingSection], Field(max_length=100, description="couplings between "
-                                                                                   "shafts")] = []
+        "mesh harmonics of the bearing forces reported"))] = 3
+    shafts: Annotated[list[ShaftSection], Field(min_length=2, max_length=50, description=(
+        "[[drivetrain.shafts]] tables: name, segments (length_mm, outer_diameter_mm, inner_diameter_mm), optional "
+        "youngs_modulus_gpa, poisson_ratio, density_kg_m3 (default the case's [material]), material_damping_s, "
+        "temperature_c (warm state; default the gears' mean tooth temperature)"))]
+    bearings: Annotated[list[BearingSection], Field(min_length=1, max_length=200, description=(
+        "[[drivetrain.bearings]] tables: name, shaft, position_mm, stiffness_x_n_per_m, stiffness_y_n_per_m, "
+        "optional stiffness_z_n_per_m (locates the shaft axially), damping_x_n_s_per_m, damping_y_n_s_per_m, "
+        "damping_z_n_s_per_m; at least two bearing positions per shaft"))]
+    disks: Annotated[list[DiskSection], Field(max_length=200, description=(
+        "one table per rigid disk: name, shaft, position_mm, mass_kg, polar_inertia_kg_m2, optional "
+        "diametral_inertia_kg_m2 (default half the polar one); motor rotors, loads, hubs"))] = []
+    couplings: Annotated[list[CouplingSection], Field(max_length=100, description=(
+        "[[drivetrain.couplings]] tables: name, shaft_1, position_1_mm, shaft_2, position_2_mm, "
+        "torsional_stiffness_n_m_per_rad, optional torsional_damping_n_m_s_per_rad, lateral_stiffness_n_per_m, "
+        "angular_stiffness_n_m_per_rad"))] = []
     driving: EndSection = Field(EndSection(), description="the driving end (the pinion's side)")
     driven: EndSection = Field(EndSection(), description="the driven end (the wheel's side)")
 
@@ -228,7 +239,8 @@ def check_drivetrain_section(section: DrivetrainSection) -> None:
     repeated = sorted({name for name in names if names.count(name) > 1} | (set(names) & set(shafts))
                       | (set(names) & {"pinion", "wheel", "mesh", "driving motor", "driven motor"}))
     if repeated:
-        raise CaseError("drivetrain names", repeated, "unique names, not a shaft's, and none of pinion, wheel, mesh, driving motor, driven motor",
+        raise CaseError("drivetrain names", repeated,
+                        "unique names, not a shaft's, and none of pinion, wheel, mesh, driving motor, driven motor",
                         "bearing forces and energy shares are reported by name")
     _point_on_shaft("drivetrain.pinion", section.pinion.shaft, section.pinion.position_mm, shafts)
     _point_on_shaft("drivetrain.wheel", section.wheel.shaft, section.wheel.position_mm, shafts)

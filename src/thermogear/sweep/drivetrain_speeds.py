@@ -86,7 +86,8 @@ def drivetrain_speed_sweep(case, speeds: np.ndarray, models: tuple[str, ...], wo
 
     speeds = np.asarray(speeds, dtype=float)
     if speeds.ndim != 1 or speeds.size == 0 or np.any(speeds <= 0.0) or not np.all(np.isfinite(speeds)):
-        raise CaseError("speed_rpm", speeds.tolist(), "positive, finite speeds [rpm]", "a speed sweep of the drivetrain")
+        raise CaseError("speed_rpm", speeds.tolist(), "positive, finite speeds [rpm]",
+                        "a speed sweep of the drivetrain")
     section = case.drivetrain
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
