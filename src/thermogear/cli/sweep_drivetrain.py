@@ -10,7 +10,7 @@ from thermogear.errors import CaseError
 
 __all__ = ["run_drivetrain_sweep"]
 
-_MODELS = {"elastic": ("elastic",), "thermal": ("elastic", "thermal"), "both": ("elastic", "thermal")}
+_MODELS = {"elastic": ("elastic",), "thermal": ("thermal",), "both": ("elastic", "thermal")}
 
 
 def _speeds(definition) -> "object":
