@@ -98,3 +98,17 @@ def test_the_docs_page_shows_the_worked_case_file_verbatim():
     body = TWO_SHAFTS.read_text(encoding="utf-8").split("\n", 2)[2]
     assert block == body
     assert tomllib.loads(block)["drivetrain"]["pinion"]["position_mm"] == 125.0
+
+
+@pytest.mark.slow
+def test_the_report_has_a_drivetrain_section_and_summary_json_its_numbers(tmp_path):
+    out = tmp_path / "report"
+    result = _cli("run", str(TWO_SHAFTS), "--out", str(out), "--json")
+    assert result.returncode == 0, result.stderr
+    payload = json.loads(result.stdout)
+    page = (out / "report.html").read_text(encoding="utf-8")
+    assert "The pair in its drivetrain" in page and "Dynamic bearing forces on the housing" in page
+    summary = json.loads((out / "summary.json").read_text(encoding="utf-8"))
+    # run --json and the report's summary.json carry the same drivetrain numbers (computed once, by the report)
+    assert summary["drivetrain"] == payload["drivetrain"]
+    assert len(summary["drivetrain"]["heat"]) == 12
