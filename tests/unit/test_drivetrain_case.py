@@ -210,3 +210,19 @@ def test_the_results_hold_modes_bearing_forces_and_what_heat_moved():
     for row in heat:
         assert sum(row["causes_percent"].values()) == pytest.approx(row["first_order_percent"], abs=1e-9)
         assert abs(row["first_order_percent"] - row["shift_percent"]) < 0.02  # second order of ~1 % shifts
+
+
+@pytest.mark.slow
+def test_the_speed_sweep_in_worker_processes_equals_the_one_in_this_process():
+    from thermogear.sweep.drivetrain_speeds import drivetrain_speed_sweep
+
+    case = _load(_document())
+    speeds = np.array([1500.0, 4000.0, 9300.0])
+    here = drivetrain_speed_sweep(case, speeds, ("elastic",), processes=False).dataset
+    there = drivetrain_speed_sweep(case, speeds, ("elastic",), workers=2).dataset
+    for name in ("kv", "dte_rms_um", "bearing_harmonic_amplitude_n"):
+        # the same arithmetic; only the BLAS thread count differs (summation order: ~1e-15 per operation)
+        np.testing.assert_allclose(there[name].values, here[name].values, rtol=1e-9, err_msg=name)
+    # and each speed is the run's response at that speed (the sweep's coarser mesh grid aside)
+    single = case_drivetrain(case, ("elastic",)).response("elastic", 4000.0, case.drivetrain.sweep_points_per_period)
+    assert here["kv"].values[0, 1] == pytest.approx(single.kv, rel=1e-12)

@@ -5,8 +5,9 @@ speed: for each pinion speed the mesh model's state over one mesh period (``[dri
 intervals) and the exact periodic response on the modal reduction of the drivetrain up to ``response_cutoff_hz``
 (:func:`~thermogear.drivetrain.response.drivetrain_periodic_response`). The speeds are shared among worker processes
 started with one BLAS thread each: the reduced problems are small matrices, for which multi-threaded BLAS on a busy
-machine is many times slower than one thread (measured on the FZG rig set, 2 cores: 0.45 s against 0.015 s per
-speed), and NumPy cannot change its thread count once loaded. The mesh is linear (permanent contact) here.
+machine can be many times slower than one thread (the FZG rig set on the shared 2-core machine: from 0.03 to 0.6 s
+per speed in one process as the load varied, against 0.015–0.03 s with one thread), and NumPy cannot change its
+thread count once loaded. The mesh is linear (permanent contact) here.
 """
 
 from __future__ import annotations
@@ -56,11 +57,14 @@ def _point(built, model: str, speed: float, points: int, harmonics: int) -> dict
             "bearing_harmonics": [forces[name]["harmonic_amplitude_n"] for name in forces]}
 
 
-def _compute(speeds: list[float]) -> list[dict[str, dict[str, Any]]]:
-    built = _WORKER["built"]
+def _compute_with(built, models: tuple[str, ...], speeds: list[float]) -> list[dict[str, dict[str, Any]]]:
     section = built.section
     return [{model: _point(built, model, speed, section.sweep_points_per_period, section.bearing_harmonics)
-             for model in _WORKER["models"]} for speed in speeds]
+             for model in models} for speed in speeds]
+
+
+def _compute(speeds: list[float]) -> list[dict[str, dict[str, Any]]]:
+    return _compute_with(_WORKER["built"], _WORKER["models"], speeds)
 
 
 class DrivetrainSweep:
@@ -73,9 +77,13 @@ class DrivetrainSweep:
 
 
 def drivetrain_speed_sweep(case, speeds: np.ndarray, models: tuple[str, ...], workers: int | None = None,
-                           progress: Callable[[int], None] | None = None) -> DrivetrainSweep:
+                           progress: Callable[[int], None] | None = None,
+                           processes: bool = True) -> DrivetrainSweep:
     """Sweep the pinion speed [rpm] of a drivetrain case (module docstring). ``progress(count)`` is called as
-    speeds finish."""
+    speeds finish. ``workers`` (default: the cores) processes are started by the "spawn" method, so a script that
+    calls this at its top level needs Python's ``if __name__ == "__main__":`` guard; ``processes=False``
+    computes in this process instead, with its BLAS threads as they are (measured 7× the CPU time on a busy
+    2-core machine)."""
     import json
     import multiprocessing
     from concurrent.futures import ProcessPoolExecutor, as_completed
@@ -98,23 +106,32 @@ def drivetrain_speed_sweep(case, speeds: np.ndarray, models: tuple[str, ...], wo
     bearings = [bearing.name for bearing in built.drivetrains["elastic"].bearings]
     chunks = [speeds[i:i + _SPEEDS_PER_TASK].tolist() for i in range(0, speeds.size, _SPEEDS_PER_TASK)]
     workers = max(1, min(workers or os.cpu_count() or 1, len(chunks)))
-    saved = {name: os.environ.get(name) for name in _THREAD_VARIABLES}
-    os.environ.update({name: "1" for name in _THREAD_VARIABLES})  # inherited by the spawned workers only
     results: dict[int, list] = {}
-    try:
-        with ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context("spawn"), initializer=_initialise,
-                                 initargs=(case.document, str(case.source), models)) as pool:
-            futures = {pool.submit(_compute, chunk): index for index, chunk in enumerate(chunks)}
-            for future in as_completed(futures):
-                results[futures[future]] = future.result()
+    if not processes:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            for index, chunk in enumerate(chunks):
+                results[index] = _compute_with(built, models, chunk)
                 if progress is not None:
-                    progress(len(chunks[futures[future]]))
-    finally:
-        for name, value in saved.items():
-            if value is None:
-                os.environ.pop(name, None)
-            else:
-                os.environ[name] = value
+                    progress(len(chunk))
+    else:
+        saved = {name: os.environ.get(name) for name in _THREAD_VARIABLES}
+        os.environ.update({name: "1" for name in _THREAD_VARIABLES})  # inherited by the spawned workers only
+        try:
+            with ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context("spawn"),
+                                     initializer=_initialise,
+                                     initargs=(case.document, str(case.source), models)) as pool:
+                futures = {pool.submit(_compute, chunk): index for index, chunk in enumerate(chunks)}
+                for future in as_completed(futures):
+                    results[futures[future]] = future.result()
+                    if progress is not None:
+                        progress(len(chunks[futures[future]]))
+        finally:
+            for name, value in saved.items():
+                if value is None:
+                    os.environ.pop(name, None)
+                else:
+                    os.environ[name] = value
     points = [point for index in range(len(chunks)) for point in results[index]]
     harmonics = section.bearing_harmonics
     shape = (len(models), speeds.size)
