@@ -226,3 +226,35 @@ def test_the_speed_sweep_in_worker_processes_equals_the_one_in_this_process():
     # and each speed is the run's response at that speed (the sweep's coarser mesh grid aside)
     single = case_drivetrain(case, ("elastic",)).response("elastic", 4000.0, case.drivetrain.sweep_points_per_period)
     assert here["kv"].values[0, 1] == pytest.approx(single.kv, rel=1e-12)
+
+
+def test_a_motor_held_at_speed_removes_the_free_rotation_and_disks_and_couplings_are_built():
+    document = _document()
+    section = document["drivetrain"]
+    section["driving"] = {"kind": "speed", "shaft": "pinion shaft", "position_mm": 0.0,
+                          "stiffness_n_m_per_rad": 2e4, "damping_n_m_s_per_rad": 5.0}
+    section["disks"] = [{"name": "load", "shaft": "wheel shaft", "position_mm": 300.0, "mass_kg": 4.0,
+                         "polar_inertia_kg_m2": 0.02}]
+    section["shafts"].append({"name": "motor shaft", "material_damping_s": 1e-8,
+                              "segments": [{"length_mm": 80.0, "outer_diameter_mm": 30.0}]})
+    section["bearings"] += [{"name": f"motor bearing {end}", "shaft": "motor shaft", "position_mm": position,
+                             "stiffness_x_n_per_m": 1e8, "stiffness_y_n_per_m": 1e8, "stiffness_z_n_per_m": 1e8,
+                             "damping_x_n_s_per_m": 1e3, "damping_y_n_s_per_m": 1e3, "damping_z_n_s_per_m": 1e3}
+                            for end, position in (("A", 0.0), ("B", 80.0))]
+    section["couplings"] = [{"name": "motor coupling", "shaft_1": "motor shaft", "position_1_mm": 80.0,
+                             "shaft_2": "pinion shaft", "position_2_mm": 0.0,
+                             "torsional_stiffness_n_m_per_rad": 5e4, "torsional_damping_n_m_s_per_rad": 2.0}]
+    free = case_drivetrain(_load(_document()), ("elastic",))
+    held = case_drivetrain(_load(document), ("elastic",))
+    drivetrain = held.drivetrains["elastic"]
+    assert [shaft.name for shaft in drivetrain.shafts][0] == "pinion shaft"  # the pinion's shaft first
+    assert [support.name for support in drivetrain.torsional_supports] == ["driving motor"]
+    assert drivetrain.torsional_supports[0].stiffness == 2e4
+    (load,) = [disk for disk in drivetrain.disks if disk.name == "load"]
+    assert load.diametral_inertia == pytest.approx(0.01)  # half the polar one by default
+    assert drivetrain.couplings[0].torsional_stiffness == 5e4
+    # the free train has one rigid rotation (every shaft is located axially); the held one none
+    assert free.modes("elastic").rigid_mode_count == 1
+    assert held.modes("elastic").rigid_mode_count == 0
+    response = held.response("elastic")
+    assert np.abs(response.multipliers).max() < 1.0 and "motor bearing A" in response.bearing_forces
