@@ -258,3 +258,18 @@ def test_a_motor_held_at_speed_removes_the_free_rotation_and_disks_and_couplings
     assert held.modes("elastic").rigid_mode_count == 0
     response = held.response("elastic")
     assert np.abs(response.multipliers).max() < 1.0 and "motor bearing A" in response.bearing_forces
+
+
+def test_under_the_papers_thermal_model_only_the_mesh_stiffness_and_the_shafts_change():
+    document = _document()
+    document["thermal"] = {"model": "luo2020", "x_te_source": "given", "x_te": 0.5}
+    built = case_drivetrain(_load(document))
+    cold, hot = built.drivetrains["elastic"], built.drivetrains["thermal"]
+    assert hot.meshes[0].operating_pressure_angle == cold.meshes[0].operating_pressure_angle
+    assert hot.meshes[0].base_radius_1 == cold.meshes[0].base_radius_1
+    assert hot.meshes[0].stiffness < cold.meshes[0].stiffness  # the paper's k_T
+    (note,) = built.notes
+    assert "85 °C" in note and "cold geometry" in note
+    # the shafts at the case's 85 °C bulk temperature with carbon steel's β_E = −3.33e-4 /K: E × (1 − 0.0216)
+    ratio = hot.shafts[0].segments[0].material.youngs_modulus / cold.shafts[0].segments[0].material.youngs_modulus
+    assert ratio == pytest.approx(1.0 - 3.33e-4 * 65.0, rel=1e-12)

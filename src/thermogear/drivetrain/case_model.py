@@ -172,8 +172,10 @@ def case_drivetrain(case, models: tuple[str, ...] = ("elastic", "thermal")) -> C
             pair = hot_model.gear_pair
             geometry = {"base_radius_1": pair.pinion.base_radius, "base_radius_2": pair.wheel.base_radius,
                         "operating_pressure_angle": pair.operating_pressure_angle}
-        else:  # the paper's k_T: no gear-body temperature, no hot geometry
-            tooth_c, beta, geometry = MODULUS_REFERENCE_C, MODULUS_TEMPERATURE_COEFFICIENTS_PER_K["carbon_steel"], {}
+        else:  # the paper's k_T: no hot geometry; the shafts at the case's uniform bulk temperature if it has one
+            bulk = getattr(case.temperature, "bulk_c", None)
+            tooth_c = MODULUS_REFERENCE_C if bulk is None else float(bulk)
+            beta, geometry = MODULUS_TEMPERATURE_COEFFICIENTS_PER_K["carbon_steel"], {}
         temperatures = {shaft.name: shaft.temperature_c if shaft.temperature_c is not None else tooth_c
                         for shaft in section.shafts}
         defaulted = [shaft.name for shaft in section.shafts if shaft.temperature_c is None]
@@ -181,8 +183,9 @@ def case_drivetrain(case, models: tuple[str, ...] = ("elastic", "thermal")) -> C
             notes.append(f"drivetrain: {', '.join(defaulted)} taken at the gears' mean tooth temperature "
                          f"{tooth_c:.1f} °C in the warm state (give drivetrain.shafts.temperature_c to change it)")
         elif defaulted:
-            notes.append(f"drivetrain: {', '.join(defaulted)} held at {MODULUS_REFERENCE_C:g} °C in the warm state "
-                         "(the paper's thermal model gives no gear-body temperature)")
+            notes.append(f"drivetrain: {', '.join(defaulted)} taken at {tooth_c:g} °C in the warm state (the case's "
+                         "bulk temperature, else 20 °C) with carbon steel's β_E; under the paper's thermal model "
+                         "the mesh keeps its cold geometry, only its stiffness changes")
         warm = WarmState(temperatures, beta, mesh_stiffness=hot_stiffness, **geometry)
         drivetrains["thermal"] = warm_drivetrain(cold, warm)
     return CaseDrivetrain(case, drivetrains, mesh_models, tuple(notes))
