@@ -273,3 +273,18 @@ def test_under_the_papers_thermal_model_only_the_mesh_stiffness_and_the_shafts_c
     # the shafts at the case's 85 °C bulk temperature with carbon steel's β_E = −3.33e-4 /K: E × (1 − 0.0216)
     ratio = hot.shafts[0].segments[0].material.youngs_modulus / cold.shafts[0].segments[0].material.youngs_modulus
     assert ratio == pytest.approx(1.0 - 3.33e-4 * 65.0, rel=1e-12)
+
+
+def test_run_says_when_the_pairs_teeth_separate_under_a_linear_drivetrain_mesh():
+    from types import SimpleNamespace
+
+    from thermogear.cli.run_drivetrain import drivetrain_outputs
+
+    case = _load(_document())
+    computed = SimpleNamespace(evaluation=SimpleNamespace(drivetrain={"notes": [], "models": {}}))
+    separated = {"elastic": SimpleNamespace(metrics={"contact_loss": {"detected": False}}),
+                 "thermal": SimpleNamespace(metrics={"contact_loss": {"detected": True}})}
+    (note,) = drivetrain_outputs(case, ("elastic", "thermal"), computed, separated)["notes"]
+    assert "pair's thermal model finds the teeth separating" in note and "permanent contact" in note
+    assert drivetrain_outputs(case, ("elastic",), computed, {"elastic": separated["elastic"]})["notes"] == []
+    assert drivetrain_outputs(load_case("fzg_type_c"), ("elastic",), computed, separated) is None

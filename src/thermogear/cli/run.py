@@ -124,7 +124,7 @@ def run(
     messages = [text for name, response in responses.items() for text in model_messages(response, name)]
     from thermogear.cli.run_drivetrain import drivetrain_outputs, print_drivetrain  # [drivetrain] (issue 27)
 
-    drivetrain = drivetrain_outputs(case, models, outcome if out is not None else None)
+    drivetrain = drivetrain_outputs(case, models, outcome if out is not None else None, responses)
     if csv is not None:
         from thermogear.cli.export import responses_csv
 

@@ -8,16 +8,25 @@ from typing import Any
 __all__ = ["drivetrain_outputs", "print_drivetrain"]
 
 
-def drivetrain_outputs(case, models: tuple[str, ...], outcome=None) -> dict[str, Any] | None:
+def drivetrain_outputs(case, models: tuple[str, ...], outcome=None, responses=None) -> dict[str, Any] | None:
     """The drivetrain results of ``case`` (None without a ``[drivetrain]``): those the report computed when there
-    is one (``outcome``), computed here otherwise."""
+    is one (``outcome``), computed here otherwise. Where the pair's own ``responses`` find the teeth separating,
+    a note says that the drivetrain's numbers assume permanent contact."""
     if case.drivetrain is None:
         return None
     if outcome is not None and getattr(outcome.evaluation, "drivetrain", None) is not None:
-        return outcome.evaluation.drivetrain
-    from thermogear.report.drivetrain_section import drivetrain_report_data
+        data = outcome.evaluation.drivetrain
+    else:
+        from thermogear.report.drivetrain_section import drivetrain_report_data
 
-    return drivetrain_report_data(case, models)
+        data = drivetrain_report_data(case, models)
+    separated = [name for name, response in (responses or {}).items()
+                 if response.metrics.get("contact_loss", {}).get("detected")]
+    if separated and "notes" in data:
+        data = {**data, "notes": [*data["notes"], f"drivetrain: the pair's {' and '.join(separated)} model finds "
+                                  "the teeth separating; the drivetrain's numbers assume permanent contact (linear "
+                                  "mesh) and overstate the mesh force there"]}
+    return data
 
 
 def _number(value, pattern: str = "{:.1f}") -> str:
@@ -36,9 +45,9 @@ def print_drivetrain(data: dict[str, Any] | None, console) -> None:
     models = data["models"]
     first = next(iter(models.values()))
     heat = data.get("heat")
-    table = Table(title=f"drivetrain modes ({data['degrees_of_freedom']} DOF; energy shares of the modal strain "
-                        "energy)", header_style="bold")
-    for column in ("mode", "label", *(f"{name} [Hz]" for name in models), "mesh", "bearings", "shafts"):
+    table = Table(title=f"drivetrain modes ({data['degrees_of_freedom']} DOF; shares of the modal strain energy; "
+                        "other: couplings and motor supports)", header_style="bold")
+    for column in ("mode", "label", *(f"{name} [Hz]" for name in models), "mesh", "bearings", "shafts", "other"):
         table.add_column(column, justify="left" if column == "label" else "right")
     if heat:
         table.add_column("cold→hot [%]", justify="right")
@@ -47,7 +56,8 @@ def print_drivetrain(data: dict[str, Any] | None, console) -> None:
         shares = mode["energy_shares"]
         cells = [str(index + 1), mode["label"] + (" *" if mode["mesh_dominated"] else ""),
                  *(_number(model["modes"][index]["frequency_hz"]) for model in models.values()),
-                 *(f"{shares.get(key, 0.0):.3f}" for key in ("mesh", "bearings", "shafts"))]
+                 *(f"{shares.get(key, 0.0):.3f}" for key in ("mesh", "bearings", "shafts")),
+                 f"{sum(v for k, v in shares.items() if k not in ('mesh', 'bearings', 'shafts')):.3f}"]
         if heat:
             cells += [f"{heat[index]['shift_percent']:+.3f}", heat[index]["dominant_cause"]]
         table.add_row(*cells)
