@@ -29,8 +29,10 @@ from thermogear.geometry import Gear, GearPair, involute
 from thermogear.materials import Material
 from thermogear.operating import OperatingPoint
 from thermogear.schema.base import StrictTypeError
-from thermogear.schema import (CaseFile, DampingSection, DynamicsSection, FemSection, GearboxSection, GearsSection,
-                               HousingSection, LubricantSection, MaterialSection, TemperatureSection, ThermalSection)
+from thermogear.schema import (CaseFile, DampingSection, DrivetrainSection, DynamicsSection, FemSection, GearboxSection,
+                               GearsSection, HousingSection, LubricantSection, MaterialSection, TemperatureSection,
+                               ThermalSection)
+from thermogear.schema.drivetrain import check_drivetrain_fits_gears
 from thermogear.temperature_field import (check_temperatures, default_bulk_temperature,
                                          temperature_field_from_section)
 from thermogear.text_files import is_existing_file, path_exists, read_user_text
@@ -69,6 +71,7 @@ class Case:
     # what thermogear assumed for keys the case left out, in words (every command prints them as "note: …")
     notes: tuple[str, ...] = ()
     gearbox: GearboxSection | None = None  # the gearbox around the pair (thermogear.gearbox), optional
+    drivetrain: DrivetrainSection | None = None  # shafts, bearings, couplings (thermogear.drivetrain), optional
 
     @property
     def directory(self) -> Path | None:
@@ -266,6 +269,9 @@ def case_from_document(document: dict[str, Any], source: str = "<memory>") -> Ca
     check_profile_shift_sum(gears)
     pair = GearPair.create(gear(gears.pinion), gear(gears.wheel), centre, tip_shortening=gears.tip_shortening)
     check_thermoelastic_inputs(pair, model)
+    if model.drivetrain is not None:  # the gears' seats on their shafts (the drivetrain is built by its resolver)
+        check_drivetrain_fits_gears(model.drivetrain, (pair.pinion.bore_radius * 1e3, pair.wheel.bore_radius * 1e3),
+                                    (pair.pinion.root_radius * 1e3, pair.wheel.root_radius * 1e3))
     material = model.material
     op = model.operating
     if op.power_kw is not None:
@@ -290,7 +296,7 @@ def case_from_document(document: dict[str, Any], source: str = "<memory>") -> Ca
         operating_point=operating, roughness_ra=gears.roughness_ra_um * 1e-6, inertias=inertias,
         lubricant=model.lubricant, temperature=temperature, thermal=model.thermal, damping=model.damping,
         dynamics=model.dynamics, fem=model.fem, source=source, document=document, housing=model.housing,
-        gears_input=gears, material_input=material, notes=notes, gearbox=model.gearbox)
+        gears_input=gears, material_input=material, notes=notes, gearbox=model.gearbox, drivetrain=model.drivetrain)
     if case.temperature.model not in ("uniform", "tabulated", "fem"):  # predicted at load time (see below)
         case = _resolve_temperature_model(case)
     check_case(case)

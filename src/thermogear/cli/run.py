@@ -125,6 +125,9 @@ def run(
                 responses[name] = Simulation(case, name, solver=solver).run()
         thermoelastic = _thermoelastic_summary(case) if "thermal" in models else None
     messages = [text for name, response in responses.items() for text in model_messages(response, name)]
+    from thermogear.cli.run_drivetrain import drivetrain_outputs, print_drivetrain  # [drivetrain] (issue 27)
+
+    drivetrain = drivetrain_outputs(case, models, outcome if out is not None else None, responses)
     if csv is not None:
         from thermogear.cli.export import responses_csv
 
@@ -138,6 +141,8 @@ def run(
             payload["thermoelastic"] = thermoelastic
         if failed:
             payload["not_computed"] = failed
+        if drivetrain is not None:
+            payload["drivetrain"] = drivetrain
         if prediction_note(case):
             payload["temperatures"] = prediction_note(case)
         if out is not None:
@@ -156,6 +161,7 @@ def run(
             error_console.print(f"{name} model not computed: {reason}", highlight=False)
         return
     _print_table(case.name, responses, console, thermoelastic)
+    print_drivetrain(drivetrain, console)
     console.print(_load_held_line(case.operating_point))
     print_notes(case.notes, console)
     if prediction_note(case):

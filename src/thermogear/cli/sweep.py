@@ -74,6 +74,12 @@ def sweep(
             raise CaseError("vary", None, "--vary NAME=VALUES (repeatable) or a [sweep] table in the case file",
                             "a sweep needs something to vary")
         chosen_model = model or (section.model if section is not None else None)
+        if loaded.drivetrain is not None:  # per-speed path on the drivetrain's modal reduction (issue 27)
+            from thermogear.cli.sweep_drivetrain import run_drivetrain_sweep
+
+            run_drivetrain_sweep(loaded, definition, out, chosen_model or "both", overwrite, resume, plot, progress,
+                                 as_json, workers, console, error_console)
+            return
         chunks = chunk_points or (section.chunk_points if section is not None else None)
         if stored is not None:
             chosen_model = chosen_model or ("both" if len(stored["models"]) == 2 else stored["models"][0])

@@ -75,6 +75,9 @@ def build_report(case, out: Path | str, *, force: bool = False, method: str = "p
     rig = start_rig_prediction() if paper else None  # the paper's rig, predicted in a child meanwhile
     evaluation = evaluate_case(case, method=method, progress=step, wait=False)  # FE: still in its child
     evaluation.timings = {**before, **evaluation.timings}
+    from thermogear.report.drivetrain_section import drivetrain_report_data  # [drivetrain] cases (issue 27)
+
+    evaluation.drivetrain = drivetrain_report_data(case, tuple(evaluation.responses) or ("elastic",))
     with folder:
         step("figures")
         figure_start = time.perf_counter()
@@ -116,6 +119,8 @@ def build_report(case, out: Path | str, *, force: bool = False, method: str = "p
         (folder.path / "report.html").write_text(page, encoding="utf-8")
         evaluation.timings["files"] = time.perf_counter() - write_start  # summary.json, written last, is ~1 ms
         document = summary_document(evaluation, verdicts, results, messages, figures, missing, citations)
+        if evaluation.drivetrain is not None:
+            document["drivetrain"] = evaluation.drivetrain
         write_summary_json(document, folder.path / "summary.json")
     return ReportOutcome(folder=folder.target, evaluation=evaluation, verdicts=verdicts, results=results,
                          messages=messages, figures=sorted(figures), missing_figures=missing,

@@ -8,6 +8,7 @@ from pydantic import Field, field_validator
 
 from thermogear.errors import CaseError
 from thermogear.schema.base import Section
+from thermogear.schema.drivetrain import DrivetrainSection
 from thermogear.schema.dynamics import DampingSection, DynamicsSection
 from thermogear.schema.fem import FemSection
 from thermogear.schema.gearbox import GearboxSection
@@ -63,7 +64,8 @@ class CaseFile(Section):
     fem: FemSection = FemSection()
     sweep: SweepSection | None = None
     gearbox: GearboxSection | None = None
+    drivetrain: DrivetrainSection | None = None
 
 
-__all__ = ["CaseFile", "CaseInfo", "DampingSection", "DynamicsSection", "FemSection", "GearboxSection", "GearSection", "GearsSection", "HousingSection",
+__all__ = ["CaseFile", "CaseInfo", "DampingSection", "DrivetrainSection", "DynamicsSection", "FemSection", "GearboxSection", "GearSection", "GearsSection", "HousingSection",
            "LubricantSection", "MaterialSection", "OperatingSection", "SweepSection", "TemperatureSection", "ThermalSection"]

@@ -1,0 +1,89 @@
+"""`thermogear run` on a case with a ``[drivetrain]``: the drivetrain's modes (labels, energy shares, cold and hot,
+what heat moved), its Kv and DTE, and the dynamic force of each bearing on the housing, as tables or JSON."""
+
+from __future__ import annotations
+
+from typing import Any
+
+__all__ = ["drivetrain_outputs", "print_drivetrain"]
+
+
+def drivetrain_outputs(case, models: tuple[str, ...], outcome=None, responses=None) -> dict[str, Any] | None:
+    """The drivetrain results of ``case`` (None without a ``[drivetrain]``): those the report computed when there
+    is one (``outcome``), computed here otherwise. Where the pair's own ``responses`` find the teeth separating,
+    a note says that the drivetrain's numbers assume permanent contact."""
+    if case.drivetrain is None:
+        return None
+    if outcome is not None and getattr(outcome.evaluation, "drivetrain", None) is not None:
+        data = outcome.evaluation.drivetrain
+    else:
+        from thermogear.report.drivetrain_section import drivetrain_report_data
+
+        data = drivetrain_report_data(case, models)
+    separated = [name for name, response in (responses or {}).items()
+                 if response.metrics.get("contact_loss", {}).get("detected")]
+    if separated and "notes" in data:
+        data = {**data, "notes": [*data["notes"], f"drivetrain: the pair's {' and '.join(separated)} model finds "
+                                  "the teeth separating; the drivetrain's numbers assume permanent contact (linear "
+                                  "mesh) and overstate the mesh force there"]}
+    return data
+
+
+def _number(value, pattern: str = "{:.1f}") -> str:
+    return "not found" if value is None else pattern.format(value)
+
+
+def print_drivetrain(data: dict[str, Any] | None, console) -> None:
+    """Print the drivetrain tables: modes (with the cold → hot shift and its main cause), response, bearings."""
+    if data is None:
+        return
+    if "not_computed" in data:
+        console.print(f"drivetrain not computed: {data['not_computed']}", highlight=False)
+        return
+    from rich.table import Table
+
+    models = data["models"]
+    first = next(iter(models.values()))
+    heat = data.get("heat")
+    table = Table(title=f"drivetrain modes ({data['degrees_of_freedom']} DOF; shares of the modal strain energy; "
+                        "other: couplings and motor supports)", header_style="bold")
+    for column in ("mode", "label", *(f"{name} [Hz]" for name in models), "mesh", "bearings", "shafts", "other"):
+        table.add_column(column, justify="left" if column == "label" else "right")
+    if heat:
+        table.add_column("cold→hot [%]", justify="right")
+        table.add_column("main cause")
+    for index, mode in enumerate(first["modes"]):
+        shares = mode["energy_shares"]
+        cells = [str(index + 1), mode["label"] + (" *" if mode["mesh_dominated"] else ""),
+                 *(_number(model["modes"][index]["frequency_hz"]) for model in models.values()),
+                 *(f"{shares.get(key, 0.0):.3f}" for key in ("mesh", "bearings", "shafts")),
+                 f"{sum(v for k, v in shares.items() if k not in ('mesh', 'bearings', 'shafts')):.3f}"]
+        if heat:
+            cells += [f"{heat[index]['shift_percent']:+.3f}", heat[index]["dominant_cause"]]
+        table.add_row(*cells)
+    console.print(table)
+    console.print("* mesh-dominated (mesh share > 0.1). Mesh harmonics meet modes with a mesh share above 0.01 at: "
+                  + ("; ".join(f"{r['harmonic']}× mesh at {r['speed_rpm']:.0f} rpm ({r['mode_hz']:.0f} Hz "
+                               f"{r['label']}{' *' if r['mesh_dominated'] else ''}, {name})"
+                               for name, model in models.items() for r in model["resonances"]) or "none"),
+                  highlight=False)
+    response = Table(title=f"drivetrain response (mesh {data['mesh']}; modes up to {data['response_cutoff_hz']:.0f} "
+                           "Hz)", header_style="bold")
+    for column in ("quantity", *models, "unit"):
+        response.add_column(column, justify="left" if column in ("quantity", "unit") else "right")
+    for label, key, pattern, unit in (("Kv", "kv", "{:.4f}", "–"), ("DTE RMS", "dte_rms_um", "{:.3f}", "μm"),
+                                      ("DTE peak-to-peak", "dte_peak_to_peak_um", "{:.3f}", "μm"),
+                                      ("largest |Floquet multiplier|", "largest_floquet_multiplier_abs", "{:.4f}",
+                                       "–")):
+        response.add_row(label, *(_number(model[key], pattern) for model in models.values()), unit)
+    for bearing in first["bearing_forces"]:
+        forces = {name: model["bearing_forces"][bearing] for name, model in models.items()}
+        response.add_section()
+        response.add_row(f"{bearing}: mean radial", *(_number(f["mean_radial_n"]) for f in forces.values()), "N")
+        response.add_row(f"{bearing}: dynamic RMS", *(_number(f["dynamic_rms_n"]) for f in forces.values()), "N")
+        for j, frequency in enumerate(next(iter(forces.values()))["harmonic_hz"]):
+            response.add_row(f"{bearing}: {j + 1}× mesh ({frequency:.0f} Hz)",
+                             *(_number(f["harmonic_amplitude_n"][j], "{:.2f}") for f in forces.values()), "N")
+    console.print(response)
+    for note in data.get("notes", []):
+        console.print(f"note: {note}", highlight=False)

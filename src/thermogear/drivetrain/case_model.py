@@ -1,0 +1,234 @@
+"""A case's drivetrain cold and hot: modes, the periodic response to the mesh, bearing forces and what heat moved.
+
+The cold drivetrain carries the elastic mesh model (E at 20 °C, the pair as built, shafts at 20 °C); the hot one
+the case's thermal mesh model, put in its warm state as :mod:`thermogear.drivetrain.heat` does: the shafts' E(T)
+at their temperature (each shaft's ``temperature_c``, default the gears' mean tooth temperature) with the gears'
+β_E, the hot mean mesh stiffness, and the hot pair's base radii and operating pressure angle at the centre distance
+the housing moved (thermo-elastic model; under the paper's ``luo2020`` model only the mesh stiffness changes).
+Masses, inertias and bearings are held (stated in :mod:`thermogear.drivetrain.heat`).
+
+For each model: the lowest modes (undamped, mean mesh stiffness) with a label, the strain-energy shares of the
+mesh, each bearing, shaft, coupling and support; the exact periodic response to one mesh period of the model's mesh
+state on the modes up to the section's ``response_cutoff_hz`` (:func:`~thermogear.drivetrain.response.
+drivetrain_periodic_response`): DTE, Kv, and per bearing the dynamic force on the housing (RMS of F − F̄ over the
+period, and the amplitude of the first mesh harmonics). The mesh is linear here (permanent contact): where the
+1-DOF nonlinear model finds the teeth separating, the drivetrain's response is the linear one and says so.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from thermogear.drivetrain.assembly import Drivetrain
+from thermogear.drivetrain.case_layout import MESH_NAME, drivetrain_from_section
+from thermogear.drivetrain.heat import ModeShifts, WarmState, thermal_mode_shifts, warm_drivetrain
+from thermogear.drivetrain.modes import DrivetrainModes, drivetrain_modes
+from thermogear.drivetrain.response import DrivetrainResponse, drivetrain_periodic_response
+from thermogear.errors import CaseError
+from thermogear.mesh.model import MeshModel
+from thermogear.thermoelastic.materials import MODULUS_REFERENCE_C, MODULUS_TEMPERATURE_COEFFICIENTS_PER_K
+
+__all__ = ["MESH_COUPLED_SHARE", "MESH_DOMINATED_SHARE", "CaseDrivetrain", "bearing_force_summary", "case_drivetrain",
+           "drivetrain_results", "heat_table", "mode_table", "resonance_speeds"]
+
+#: A mode is "mesh-dominated" when the mesh holds more than this share of its strain energy: a threshold chosen
+#: here (Velex & Berthe 1989 rank modes by this share; no source fixes a value). Kept low so that no mode the mesh
+#: excites noticeably is left unmarked.
+MESH_DOMINATED_SHARE = 0.1
+#: Modes with a smaller mesh share still respond to the mesh where a harmonic meets them: lateral modes of a few
+#: per cent mesh share carry the largest bearing forces (the FZG rig set: 3–4 % share, bearing-force peaks 4×
+#: the torsional mode's). Their crossings are listed too, marked not mesh-dominated. A threshold chosen here.
+MESH_COUPLED_SHARE = 0.01
+
+#: Samples per mesh-grid interval of the periodic response (the bearing-force RMS is a trapezoidal integral over
+#: them; the harmonics come from the exact orbit resampled uniformly).
+SAMPLES_PER_PIECE = 4
+#: Uniform samples per period for the bearing-force harmonics (the first mesh harmonics need far fewer).
+SPECTRUM_POINTS = 256
+
+
+def _group(name: str, drivetrain: Drivetrain) -> str:
+    if name == MESH_NAME:
+        return "mesh"
+    for kind, items in (("bearings", drivetrain.bearings), ("couplings", drivetrain.couplings),
+                        ("supports", drivetrain.torsional_supports), ("shafts", drivetrain.shafts)):
+        if any(item.name == name for item in items):
+            return kind
+    return "other"
+
+
+def mode_table(modes: DrivetrainModes, drivetrain: Drivetrain) -> list[dict[str, Any]]:
+    """One dict per mode: frequency [Hz], label, mesh share, the shares grouped (mesh, bearings, shafts, couplings,
+    supports) and per element, and whether the mesh dominates it (share > :data:`MESH_DOMINATED_SHARE`)."""
+    rows = []
+    for index, frequency in enumerate(modes.frequencies_hz):
+        shares = {name: float(values[index]) for name, values in modes.strain_energy_shares.items()}
+        grouped: dict[str, float] = {}
+        for name, value in shares.items():
+            kind = _group(name, drivetrain)
+            grouped[kind] = grouped.get(kind, 0.0) + value
+        rows.append({"frequency_hz": float(frequency), "label": modes.labels[index],
+                     "mesh_share": shares.get(MESH_NAME, 0.0), "energy_shares": grouped,
+                     "element_shares": shares, "mesh_dominated": shares.get(MESH_NAME, 0.0) > MESH_DOMINATED_SHARE})
+    return rows
+
+
+def bearing_force_summary(response: DrivetrainResponse, harmonics: int) -> dict[str, dict[str, Any]]:
+    """Per bearing: the mean radial force [N], the RMS of the dynamic radial force |F − F̄| over the period [N]
+    (trapezoidal rule on the solver's samples, a jump being a segment of zero width) and the radial amplitude
+    √(X_j² + Y_j²) of mesh harmonics j = 1…``harmonics`` [N] with their frequencies [Hz]."""
+    summary = {}
+    time = response.time
+    for name, force in response.bearing_forces.items():
+        radial = force[:, :2]
+        mean = np.trapezoid(radial, time, axis=0) / (time[-1] - time[0])
+        dynamic = np.sum((radial - mean) ** 2, axis=1)
+        rms = math.sqrt(float(np.trapezoid(dynamic, time)) / (time[-1] - time[0]))
+        frequencies, amplitudes = response.bearing_spectrum(name, points=SPECTRUM_POINTS)
+        radial_amplitudes = np.hypot(amplitudes[0], amplitudes[1])
+        summary[name] = {"mean_radial_n": float(np.hypot(*mean)), "dynamic_rms_n": rms,
+                         "harmonic_hz": [float(f) for f in frequencies[1:harmonics + 1]],
+                         "harmonic_amplitude_n": [float(a) for a in radial_amplitudes[1:harmonics + 1]]}
+    return summary
+
+
+def resonance_speeds(rows: list[dict[str, Any]], teeth: int, harmonics: int) -> list[dict[str, Any]]:
+    """Pinion speeds [rpm] at which mesh harmonic j meets a mode with a mesh share above
+    :data:`MESH_COUPLED_SHARE`: n = 60·f/(j·z1), each marked ``mesh_dominated`` or not (the modes at standstill;
+    the Campbell diagram, :mod:`thermogear.drivetrain.campbell`, follows their gyroscopic shift)."""
+    return [{"speed_rpm": 60.0 * row["frequency_hz"] / (j * teeth), "harmonic": j, "mode_hz": row["frequency_hz"],
+             "label": row["label"], "mesh_share": row["mesh_share"], "mesh_dominated": row["mesh_dominated"]}
+            for row in rows if row["mesh_share"] > MESH_COUPLED_SHARE for j in range(1, harmonics + 1)]
+
+
+@dataclass(frozen=True, eq=False)
+class CaseDrivetrain:
+    """The drivetrain of a case in the states of its mesh models: ``drivetrains`` model → Drivetrain, ``models``
+    model → MeshModel, ``notes`` what was assumed (shaft temperatures)."""
+
+    case: Any
+    drivetrains: dict[str, Drivetrain]
+    models: dict[str, MeshModel]
+    notes: tuple[str, ...] = ()
+    _assembled: dict = field(default_factory=dict, repr=False)
+
+    @property
+    def section(self):
+        return self.case.drivetrain
+
+    def assembled(self, model: str):
+        """The assembled drivetrain of one model (cached)."""
+        if model not in self._assembled:
+            self._assembled[model] = self.drivetrains[model].assemble()
+        return self._assembled[model]
+
+    def modes(self, model: str) -> DrivetrainModes:
+        """Lowest ``mode_count`` undamped modes at the model's mean mesh stiffness."""
+        return drivetrain_modes(self.assembled(model), count=self.section.mode_count)
+
+    def response(self, model: str, speed_rpm: float | None = None,
+                 points_per_period: int | None = None) -> DrivetrainResponse:
+        """Exact periodic response to one mesh period of ``model`` at a pinion speed [rpm] (default the case's)."""
+        state = self.models[model].state(speed_rpm=speed_rpm,
+                                         points_per_period=points_per_period or self.case.dynamics.points_per_period)
+        return drivetrain_periodic_response(self.assembled(model), state, samples_per_piece=SAMPLES_PER_PIECE,
+                                            cutoff_hz=self.section.response_cutoff_hz)
+
+    def heat_shifts(self) -> ModeShifts:
+        """Each mode's shift from the cold (elastic) to the hot (thermal) drivetrain, attributed per cause."""
+        return thermal_mode_shifts(self.drivetrains["elastic"], self.drivetrains["thermal"],
+                                   count=self.section.mode_count)
+
+
+def _mean_state(model: MeshModel, points: int) -> tuple[float, float]:
+    state = model.state(points_per_period=points)
+    weights = np.diff(state.grid.nodes) / state.period
+    return float(state.mean_mesh_stiffness), float(np.dot(state.mesh_damping, weights))
+
+
+def case_drivetrain(case, models: tuple[str, ...] = ("elastic", "thermal")) -> CaseDrivetrain:
+    """Build the case's drivetrain for its elastic (cold) and thermal (hot) mesh models (module docstring)."""
+    section = case.drivetrain
+    if section is None:
+        raise CaseError("drivetrain", None, "a [drivetrain] section", "this case is the pair on rigid supports")
+    points = case.dynamics.points_per_period
+    mesh_models = {name: MeshModel(case, "elastic" if name == "elastic" else "thermal") for name in
+                   ("elastic", "thermal")}
+    stiffness, damping = _mean_state(mesh_models["elastic"], points)
+    cold = drivetrain_from_section(section, case.gear_pair, case.material, stiffness, damping, case.inertias)
+    drivetrains = {"elastic": cold}
+    notes: list[str] = []
+    if "thermal" in models:
+        hot_model = mesh_models["thermal"]
+        hot_stiffness, _ = _mean_state(hot_model, points)
+        thermoelastic = hot_model.thermoelastic_mesh
+        if thermoelastic is not None:
+            tooth_c = float(np.mean(thermoelastic.tooth_c))
+            beta = thermoelastic.gears[0].modulus_coefficient_per_k
+            pair = hot_model.gear_pair
+            geometry = {"base_radius_1": pair.pinion.base_radius, "base_radius_2": pair.wheel.base_radius,
+                        "operating_pressure_angle": pair.operating_pressure_angle}
+        else:  # the paper's k_T: no hot geometry; the shafts at the case's uniform bulk temperature if it has one
+            bulk = getattr(case.temperature, "bulk_c", None)
+            tooth_c = MODULUS_REFERENCE_C if bulk is None else float(bulk)
+            beta, geometry = MODULUS_TEMPERATURE_COEFFICIENTS_PER_K["carbon_steel"], {}
+        temperatures = {shaft.name: shaft.temperature_c if shaft.temperature_c is not None else tooth_c
+                        for shaft in section.shafts}
+        defaulted = [shaft.name for shaft in section.shafts if shaft.temperature_c is None]
+        if defaulted and thermoelastic is not None:
+            notes.append(f"drivetrain: {', '.join(defaulted)} taken at the gears' mean tooth temperature "
+                         f"{tooth_c:.1f} °C in the warm state (give drivetrain.shafts.temperature_c to change it)")
+        elif defaulted:
+            notes.append(f"drivetrain: {', '.join(defaulted)} taken at {tooth_c:g} °C in the warm state (the case's "
+                         "bulk temperature, else 20 °C) with carbon steel's β_E; under the paper's thermal model "
+                         "the mesh keeps its cold geometry, only its stiffness changes")
+        warm = WarmState(temperatures, beta, mesh_stiffness=hot_stiffness, **geometry)
+        drivetrains["thermal"] = warm_drivetrain(cold, warm)
+    return CaseDrivetrain(case, drivetrains, mesh_models, tuple(notes))
+
+
+def _response_summary(response: DrivetrainResponse, harmonics: int) -> dict[str, Any]:
+    metrics = response.metrics
+    multipliers = np.abs(response.multipliers)
+    return {"kv": metrics["kv"], "dte_rms_um": metrics["dte_rms"] * 1e6,
+            "dte_peak_to_peak_um": metrics["dte_peak_to_peak"] * 1e6,
+            "largest_floquet_multiplier_abs": float(multipliers.max()) if multipliers.size else None,
+            "stable": bool(multipliers.size == 0 or multipliers.max() < 1.0),
+            "bearing_forces": bearing_force_summary(response, harmonics)}
+
+
+def heat_table(shifts: ModeShifts, drivetrain: Drivetrain) -> list[dict[str, Any]]:
+    """Per mode: cold and hot frequency [Hz], the exact shift and its first-order sum [%], and the causes [%]
+    (each shaft's E(T), the mesh stiffness, the mesh geometry; causes that moved nothing are left out)."""
+    shafts = {shaft.name for shaft in drivetrain.shafts}
+    names = {name: (f"{name} E(T)" if name in shafts else name) for name in shifts.contributions}
+    moving = [name for name, values in shifts.contributions.items() if np.any(values != 0.0)]
+    return [{"cold_hz": float(shifts.cold_hz[i]), "hot_hz": float(shifts.hot_hz[i]), "label": shifts.labels[i],
+             "shift_percent": 100.0 * float(shifts.exact[i]), "first_order_percent": 100.0 * float(
+                 shifts.first_order[i]),
+             "causes_percent": {names[name]: 100.0 * float(shifts.contributions[name][i]) for name in moving},
+             "dominant_cause": names[shifts.dominant_cause(i)]} for i in range(shifts.exact.size)]
+
+
+def drivetrain_results(case, models: tuple[str, ...] = ("elastic", "thermal")) -> dict[str, Any]:
+    """Everything ``run`` reports of a case's drivetrain, as plain numbers (JSON-ready): per model the modes
+    (:func:`mode_table`), the response (Kv, DTE, Floquet stability, bearing forces) and the speeds where mesh
+    harmonics meet mesh-dominated modes; with both models, what heat moved per mode (:func:`heat_table`)."""
+    built = case_drivetrain(case, models)
+    section = case.drivetrain
+    teeth = case.gear_pair.pinion.teeth
+    result: dict[str, Any] = {
+        "degrees_of_freedom": built.assembled("elastic").size, "response_cutoff_hz": section.response_cutoff_hz,
+        "mesh": "linear (permanent contact) on the drivetrain", "notes": list(built.notes), "models": {}}
+    for model in models:
+        rows = mode_table(built.modes(model), built.drivetrains[model])
+        result["models"][model] = {**_response_summary(built.response(model), section.bearing_harmonics),
+                                   "modes": rows,
+                                   "resonances": resonance_speeds(rows, teeth, section.bearing_harmonics)}
+    if "elastic" in models and "thermal" in models:
+        result["heat"] = heat_table(built.heat_shifts(), built.drivetrains["elastic"])
+    return result

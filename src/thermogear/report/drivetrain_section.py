@@ -1,0 +1,111 @@
+"""The report section of a case with a ``[drivetrain]``: modes cold and hot with their labels and energy shares, what
+heat moved per mode, the drivetrain's Kv and DTE, and the dynamic force of every bearing on its housing."""
+
+from __future__ import annotations
+
+import html
+import math
+from typing import Any
+
+__all__ = ["drivetrain_report_data", "drivetrain_section"]
+
+
+def drivetrain_report_data(case, models: tuple[str, ...] = ("elastic", "thermal")) -> dict[str, Any] | None:
+    """The drivetrain results of ``case`` as JSON-ready numbers, None for a case without ``[drivetrain]``; where
+    they cannot be computed, ``{"not_computed": reason}`` (the rest of the report stands)."""
+    if getattr(case, "drivetrain", None) is None:
+        return None
+    from thermogear.drivetrain.case_model import drivetrain_results
+    from thermogear.errors import CaseError, ModelLimitError
+    from thermogear.serialization import json_ready
+
+    try:
+        return json_ready(drivetrain_results(case, models), non_finite="null")
+    except ModelLimitError as error:  # most often a mode nothing damps: say where damping comes from
+        return {"not_computed": f"{error} (every mode needs damping: give the shafts material_damping_s and the "
+                                "bearings damping in x, y and, where they locate the shaft, z)"}
+    except CaseError as error:
+        return {"not_computed": str(error)}
+
+
+def _number(value, pattern: str = "{:.1f}") -> str:
+    if value is None or (isinstance(value, float) and not math.isfinite(value)):
+        return "not found"
+    return pattern.format(value)
+
+
+def _cells(values: list[str], header: bool = False) -> str:
+    tag = "th" if header else "td"
+    return "<tr>" + "".join(f"<{tag}{'' if header or i == 0 else ' class=num'}>{html.escape(v)}</{tag}>"
+                            for i, v in enumerate(values)) + "</tr>"
+
+
+def _modes_table(data: dict[str, Any]) -> str:
+    models = data["models"]
+    first = next(iter(models.values()))
+    heat = data.get("heat")
+    header = ["mode", "label"] + [f"{name} [Hz]" for name in models] + ["mesh", "bearings", "shafts", "other"]
+    if heat:
+        header += ["shift cold→hot [%]", "main cause"]
+    rows = [_cells(header, header=True)]
+    for index, mode in enumerate(first["modes"]):
+        shares = mode["energy_shares"]
+        other = sum(value for key, value in shares.items() if key not in ("mesh", "bearings", "shafts"))
+        cells = [str(index + 1), mode["label"] + (" (mesh-dominated)" if mode["mesh_dominated"] else "")]
+        cells += [_number(model["modes"][index]["frequency_hz"]) for model in models.values()]
+        cells += [f"{shares.get(key, 0.0):.3f}" for key in ("mesh", "bearings", "shafts")] + [f"{other:.3f}"]
+        if heat:
+            cells += [f"{heat[index]['shift_percent']:+.3f}", heat[index]["dominant_cause"]]
+        rows.append(_cells(cells))
+    return "<table>" + "".join(rows) + "</table>"
+
+
+def _bearings_table(data: dict[str, Any]) -> str:
+    models = data["models"]
+    first = next(iter(models.values()))
+    harmonics = len(next(iter(first["bearing_forces"].values()))["harmonic_amplitude_n"])
+    header = ["bearing", "model", "mean radial [N]", "dynamic RMS [N]"] + [f"{j}× mesh [N]"
+                                                                           for j in range(1, harmonics + 1)]
+    rows = [_cells(header, header=True)]
+    for bearing in first["bearing_forces"]:
+        for name, model in models.items():
+            force = model["bearing_forces"][bearing]
+            rows.append(_cells([bearing, name, _number(force["mean_radial_n"]), _number(force["dynamic_rms_n"])]
+                               + [_number(a, "{:.2f}") for a in force["harmonic_amplitude_n"]]))
+    return "<table>" + "".join(rows) + "</table>"
+
+
+def drivetrain_section(data: dict[str, Any] | None) -> str:
+    """HTML of the drivetrain results (empty for a case without a drivetrain)."""
+    if not data:
+        return ""
+    if "not_computed" in data:
+        return ("<h2 id='drivetrain'>The pair in its drivetrain</h2><div class='warn'>Not computed: "
+                f"{html.escape(data['not_computed'])}</div>")
+    models = data["models"]
+    response = "".join(_cells([name, _number(m["kv"], "{:.4f}"), _number(m["dte_rms_um"], "{:.3f}"),
+                               _number(m["dte_peak_to_peak_um"], "{:.3f}"),
+                               _number(m["largest_floquet_multiplier_abs"], "{:.4f}")])
+                       for name, m in models.items())
+    resonances = sorted({(round(r["speed_rpm"]), r["harmonic"], round(r["mode_hz"]), r["label"],
+                          " (mesh-dominated)" if r["mesh_dominated"] else "", name)
+                         for name, m in models.items() for r in m["resonances"]})
+    resonance_text = "; ".join(f"{h}× mesh meets {f} Hz {label}{dominated} at {n} rpm ({name})"
+                               for n, h, f, label, dominated, name in resonances) or "none"
+    notes = "".join(f"<p class='small'>{html.escape(note)}</p>" for note in data.get("notes", []))
+    return ("<h2 id='drivetrain'>The pair in its drivetrain</h2>"
+            f"<p>{data['degrees_of_freedom']} degrees of freedom (Timoshenko shafts, gear bodies, bearings, "
+            f"couplings, the mesh along the line of action); the periodic response is solved exactly on the modes "
+            f"up to {data['response_cutoff_hz']:.0f} Hz plus the static corrections, with the mesh "
+            f"{html.escape(data['mesh'])}. Cold: the elastic mesh model, shafts at 20 °C; hot: the case's thermal "
+            "model, shafts' E(T), hot mesh stiffness and geometry. Energy shares are of the modal strain energy "
+            "(mesh-dominated: mesh share above 0.1).</p>"
+            + _modes_table(data)
+            + "<table>" + _cells(["model", "Kv", "DTE RMS [μm]", "DTE peak-to-peak [μm]", "largest |Floquet "
+                                  "multiplier|"], header=True) + response + "</table>"
+            + f"<p>Mesh harmonics meet modes with a mesh share above 0.01 at: {html.escape(resonance_text)}.</p>"
+            + "<h3>Dynamic bearing forces on the housing</h3>"
+            "<p>Radial force of each bearing over one mesh period: its mean, the RMS of its dynamic part and the "
+            "amplitude √(X_j² + Y_j²) of the first mesh harmonics — what an accelerometer on the housing "
+            "sees.</p>"
+            + _bearings_table(data) + notes)

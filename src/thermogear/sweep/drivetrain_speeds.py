@@ -1,0 +1,201 @@
+"""A speed sweep of a case's drivetrain: Kv, DTE and the bearing forces per speed, mesh-dominated resonances marked.
+
+The study machinery's fast path batches the 1-DOF pair; a drivetrain has hundreds of DOFs, so its sweep runs per
+speed: for each pinion speed the mesh model's state over one mesh period (``[drivetrain] sweep_points_per_period``
+intervals) and the exact periodic response on the modal reduction of the drivetrain up to ``response_cutoff_hz``
+(:func:`~thermogear.drivetrain.response.drivetrain_periodic_response`). The speeds are shared among worker processes
+started with one BLAS thread each: the reduced problems are small matrices, for which multi-threaded BLAS on a busy
+machine can be many times slower than one thread (the FZG rig set on the shared 2-core machine: from 0.03 to 0.6 s
+per speed in one process as the load varied, against 0.015–0.03 s with one thread), and NumPy cannot change its
+thread count once loaded. The mesh is linear (permanent contact) here.
+"""
+
+from __future__ import annotations
+
+import os
+import warnings
+from typing import Any, Callable
+
+import numpy as np
+
+from thermogear.errors import CaseError, ModelLimitError
+
+__all__ = ["DrivetrainSweep", "drivetrain_speed_sweep", "plot_drivetrain_sweep"]
+
+_THREAD_VARIABLES = ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS")
+_WORKER: dict[str, Any] = {}
+#: Speeds per task: small enough for a live progress bar, large enough that a task outweighs its dispatch.
+_SPEEDS_PER_TASK = 8
+
+
+def _initialise(document: dict, source: str, models: tuple[str, ...]) -> None:
+    """Worker start: the case and its drivetrain, once per process."""
+    warnings.simplefilter("ignore")  # the case's own warnings were printed by the parent's checks
+    from thermogear.case import case_from_document
+    from thermogear.drivetrain.case_model import case_drivetrain
+    from thermogear.gearbox.provider import register
+
+    register()  # [temperature].model = "gearbox" (this process is a composition root of its own)
+    _WORKER["built"] = case_drivetrain(case_from_document(document, source), models)
+    _WORKER["models"] = models
+
+
+def _point(built, model: str, speed: float, points: int, harmonics: int) -> dict[str, Any]:
+    from thermogear.drivetrain.case_model import bearing_force_summary
+
+    try:
+        response = built.response(model, speed, points)
+    except (ModelLimitError, CaseError, np.linalg.LinAlgError) as error:
+        return {"status": f"not computed: {error}"}
+    multipliers = np.abs(response.multipliers)
+    largest = float(multipliers.max()) if multipliers.size else 0.0
+    forces = bearing_force_summary(response, harmonics)
+    return {"status": "valid" if largest < 1.0 else "unstable", "kv": response.kv,
+            "dte_rms_um": response.metrics["dte_rms"] * 1e6,
+            "dte_peak_to_peak_um": response.metrics["dte_peak_to_peak"] * 1e6, "multiplier": largest,
+            "bearing_rms": [forces[name]["dynamic_rms_n"] for name in forces],
+            "bearing_harmonics": [forces[name]["harmonic_amplitude_n"] for name in forces]}
+
+
+def _compute_with(built, models: tuple[str, ...], speeds: list[float]) -> list[dict[str, dict[str, Any]]]:
+    section = built.section
+    return [{model: _point(built, model, speed, section.sweep_points_per_period, section.bearing_harmonics)
+             for model in models} for speed in speeds]
+
+
+def _compute(speeds: list[float]) -> list[dict[str, dict[str, Any]]]:
+    return _compute_with(_WORKER["built"], _WORKER["models"], speeds)
+
+
+class DrivetrainSweep:
+    """Results of :func:`drivetrain_speed_sweep`: ``dataset`` (xarray, dims model × speed_rpm [× bearing ×
+    harmonic]) and ``resonances`` model → list of (speed [rpm], harmonic, mode [Hz], label, mesh share)."""
+
+    def __init__(self, dataset, resonances: dict[str, list[dict[str, Any]]]) -> None:
+        self.dataset = dataset
+        self.resonances = resonances
+
+
+def drivetrain_speed_sweep(case, speeds: np.ndarray, models: tuple[str, ...], workers: int | None = None,
+                           progress: Callable[[int], None] | None = None,
+                           processes: bool = True) -> DrivetrainSweep:
+    """Sweep the pinion speed [rpm] of a drivetrain case (module docstring). ``progress(count)`` is called as
+    speeds finish. ``workers`` (default: the cores) processes are started by the "spawn" method, so a script that
+    calls this at its top level needs Python's ``if __name__ == "__main__":`` guard; ``processes=False``
+    computes in this process instead, with its BLAS threads as they are (measured 7× the CPU time on a busy
+    2-core machine)."""
+    import json
+    import multiprocessing
+    from concurrent.futures import ProcessPoolExecutor, as_completed
+
+    import xarray as xr
+
+    from thermogear.drivetrain.case_model import case_drivetrain, mode_table, resonance_speeds
+
+    speeds = np.asarray(speeds, dtype=float)
+    if speeds.ndim != 1 or speeds.size == 0 or np.any(speeds <= 0.0) or not np.all(np.isfinite(speeds)):
+        raise CaseError("speed_rpm", speeds.tolist(), "positive, finite speeds [rpm]",
+                        "a speed sweep of the drivetrain")
+    section = case.drivetrain
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        built = case_drivetrain(case, models)
+        resonances = {model: [r for r in resonance_speeds(mode_table(built.modes(model), built.drivetrains[model]),
+                                                          case.gear_pair.pinion.teeth, section.bearing_harmonics)
+                              if speeds.min() <= r["speed_rpm"] <= speeds.max()] for model in models}
+    bearings = [bearing.name for bearing in built.drivetrains["elastic"].bearings]
+    chunks = [speeds[i:i + _SPEEDS_PER_TASK].tolist() for i in range(0, speeds.size, _SPEEDS_PER_TASK)]
+    workers = max(1, min(workers or os.cpu_count() or 1, len(chunks)))
+    results: dict[int, list] = {}
+    if not processes:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            for index, chunk in enumerate(chunks):
+                results[index] = _compute_with(built, models, chunk)
+                if progress is not None:
+                    progress(len(chunk))
+    else:
+        saved = {name: os.environ.get(name) for name in _THREAD_VARIABLES}
+        os.environ.update({name: "1" for name in _THREAD_VARIABLES})  # inherited by the spawned workers only
+        try:
+            with ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context("spawn"),
+                                     initializer=_initialise,
+                                     initargs=(case.document, str(case.source), models)) as pool:
+                futures = {pool.submit(_compute, chunk): index for index, chunk in enumerate(chunks)}
+                for future in as_completed(futures):
+                    results[futures[future]] = future.result()
+                    if progress is not None:
+                        progress(len(chunks[futures[future]]))
+        finally:
+            for name, value in saved.items():
+                if value is None:
+                    os.environ.pop(name, None)
+                else:
+                    os.environ[name] = value
+    points = [point for index in range(len(chunks)) for point in results[index]]
+    harmonics = section.bearing_harmonics
+    shape = (len(models), speeds.size)
+
+    def field(key: str, extra: tuple[int, ...] = ()) -> np.ndarray:
+        values = np.full(shape + extra, np.nan)
+        for j, point in enumerate(points):
+            for i, model in enumerate(models):
+                if key in point[model]:
+                    values[(i, j)] = np.asarray(point[model][key], dtype=float).reshape(extra) if extra else \
+                        (np.nan if point[model][key] is None else point[model][key])
+        return values
+
+    status = np.array([[point[model]["status"] for point in points] for model in models], dtype=object)
+    dims = ("model", "speed_rpm")
+    dataset = xr.Dataset(
+        {"kv": (dims, field("kv")), "dte_rms_um": (dims, field("dte_rms_um")),
+         "dte_peak_to_peak_um": (dims, field("dte_peak_to_peak_um")),
+         "largest_floquet_multiplier_abs": (dims, field("multiplier")),
+         "valid": (dims, status == "valid"), "status": (dims, status.astype(str)),
+         "bearing_dynamic_rms_n": (dims + ("bearing",), field("bearing_rms", (len(bearings),))),
+         "bearing_harmonic_amplitude_n": (dims + ("bearing", "harmonic"),
+                                          field("bearing_harmonics", (len(bearings), harmonics)))},
+        coords={"model": list(models), "speed_rpm": speeds, "bearing": bearings,
+                "harmonic": np.arange(1, harmonics + 1)},
+        attrs={"case": case.name, "kind": "drivetrain speed sweep", "mesh": "linear (permanent contact)",
+               "points_per_period": section.sweep_points_per_period, "response_cutoff_hz": section.response_cutoff_hz,
+               "resonances": json.dumps(resonances), "load_held": case.operating_point.load_held})
+    for name, unit in (("kv", "-"), ("dte_rms_um", "um"), ("dte_peak_to_peak_um", "um"),
+                       ("bearing_dynamic_rms_n", "N"), ("bearing_harmonic_amplitude_n", "N")):
+        dataset[name].attrs["units"] = unit
+    return DrivetrainSweep(dataset, resonances)
+
+
+def plot_drivetrain_sweep(sweep: DrivetrainSweep):
+    """Kv and the largest first-harmonic bearing force against speed, invalid points left out, the mesh-dominated
+    resonances (harmonic j meets a mode) as dashed lines. Returns the figure."""
+    import matplotlib.pyplot as plt
+
+    data = sweep.dataset
+    figure, (top, bottom) = plt.subplots(2, 1, figsize=(8.0, 6.0), sharex=True, constrained_layout=True)
+    for index, model in enumerate(data["model"].values):
+        valid = data["valid"].values[index]
+        speeds = data["speed_rpm"].values
+        kv = np.where(valid, data["kv"].values[index], np.nan)
+        first = np.where(valid, np.nanmax(data["bearing_harmonic_amplitude_n"].values[index, :, :, 0], axis=1),
+                         np.nan)
+        style = "-" if index == 0 else "--"
+        top.plot(speeds, kv, style, label=str(model))
+        bottom.plot(speeds, first, style, label=str(model))
+        for resonance in sweep.resonances.get(str(model), []) if index == 0 else ():  # cold modes (hot: table)
+            dominated = resonance["mesh_dominated"]
+            for axis in (top, bottom):
+                axis.axvline(resonance["speed_rpm"], color="0.3" if dominated else "0.7",
+                             linestyle="--" if dominated else ":", linewidth=1.0)
+            top.annotate(f"{resonance['harmonic']}× {resonance['mode_hz']:.0f} Hz", (resonance["speed_rpm"], 1.0),
+                         xycoords=("data", "axes fraction"), fontsize=7, rotation=90, va="top", ha="right",
+                         color="0.2" if dominated else "0.5")
+    top.set_ylabel("Kv [-]")
+    bottom.set_ylabel("largest bearing force, 1× mesh [N]")
+    bottom.set_xlabel("pinion speed [rpm]")
+    top.legend(fontsize=8)
+    top.set_title(f"{data.attrs['case']}: drivetrain speed sweep ({data.attrs['load_held']}); mesh harmonic meets a "
+                  f"mode: dashed mesh-dominated, dotted mesh-coupled ({data['model'].values[0]} modes)", fontsize=9)
+    if not np.any(data["valid"].values):
+        top.text(0.5, 0.5, "no valid point", transform=top.transAxes, ha="center")
+    return figure

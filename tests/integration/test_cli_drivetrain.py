@@ -1,0 +1,114 @@
+"""`run`, `check` and `sweep` on a case with a [drivetrain] (issue 27): the modes and bearing forces in --json, a bad
+drivetrain refused the same way by check and run, and a small speed sweep into a zarr store."""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+import tomllib
+from pathlib import Path
+
+import pytest
+
+DATA = Path(__file__).resolve().parents[1] / "data"
+TWO_SHAFTS = DATA / "two_shaft_drivetrain.toml"
+
+
+def _cli(*args: str) -> subprocess.CompletedProcess:
+    # one BLAS thread: the drivetrain's small matrices are slower multi-threaded on a shared machine
+    environment = {**os.environ, "OMP_NUM_THREADS": "1", "OPENBLAS_NUM_THREADS": "1"}
+    return subprocess.run([sys.executable, "-m", "thermogear", *args], capture_output=True, text=True, timeout=600,
+                          env=environment)
+
+
+def test_run_json_holds_the_drivetrain_modes_bearing_forces_and_heat():
+    result = _cli("run", str(TWO_SHAFTS), "--json")
+    assert result.returncode == 0, result.stderr
+    payload = json.loads(result.stdout)
+    drivetrain = payload["drivetrain"]
+    assert set(drivetrain["models"]) == {"elastic", "thermal"}
+    elastic = drivetrain["models"]["elastic"]
+    assert len(elastic["modes"]) == 12 and all(mode["label"] for mode in elastic["modes"])
+    assert {"mesh", "bearings", "shafts"} <= set(elastic["modes"][0]["energy_shares"])
+    assert sorted(elastic["bearing_forces"]) == ["pinion bearing A", "pinion bearing B", "wheel bearing A",
+                                                 "wheel bearing B"]
+    force = elastic["bearing_forces"]["wheel bearing A"]
+    assert force["dynamic_rms_n"] > 0.0 and len(force["harmonic_amplitude_n"]) == 3
+    assert elastic["kv"] > 1.0 and elastic["stable"]
+    assert len(drivetrain["heat"]) == 12 and "dominant_cause" in drivetrain["heat"][0]
+    # the pair's own results are still there, beside the drivetrain's
+    assert set(payload["models"]) == {"elastic", "thermal"}
+
+
+def test_run_table_prints_the_drivetrain_tables():
+    result = _cli("run", str(TWO_SHAFTS), "--model", "elastic")
+    assert result.returncode == 0, result.stderr
+    for words in ("drivetrain modes", "lateral pinion shaft", "pinion bearing A: dynamic RMS", "1× mesh"):
+        assert words in result.stdout, words
+
+
+def test_check_and_run_refuse_a_bearing_off_its_shaft_the_same_way(tmp_path):
+    text = TWO_SHAFTS.read_text(encoding="utf-8").replace("position_mm = 300.0", "position_mm = 320.0")
+    case = tmp_path / "bad.toml"
+    case.write_text(text, encoding="utf-8")
+    answers = [_cli(command, str(case)) for command in ("check", "run")]
+    for answer in answers:
+        assert answer.returncode != 0
+        assert "drivetrain.bearings 'wheel bearing B'.position_mm = 320" in answer.stderr, answer.stderr
+        assert "[0, 300] mm" in answer.stderr
+    assert answers[0].stderr == answers[1].stderr
+
+
+@pytest.mark.slow
+def test_sweep_of_a_drivetrain_case_stores_kv_dte_and_bearing_forces_per_speed(tmp_path):
+    import xarray as xr
+
+    out = tmp_path / "study.zarr"
+    plot = tmp_path / "sweep.png"
+    result = _cli("sweep", str(TWO_SHAFTS), "--vary", "speed_rpm=2000:12000:6", "--out", str(out), "--plot",
+                  str(plot), "--json", "--workers", "1")
+    assert result.returncode == 0, result.stderr
+    summary = json.loads(result.stdout)
+    assert summary["points"] == 6 and summary["models"] == ["elastic", "thermal"]
+    assert "per-speed path" in summary["path"]
+    data = xr.open_zarr(out)
+    assert data["kv"].shape == (2, 6)
+    assert data["bearing_harmonic_amplitude_n"].shape == (2, 6, 4, 3)
+    assert bool(data["valid"].all())
+    # the wheel shaft's mesh-dominated lateral mode (4.19 kHz, mesh share 0.21) meets the 1st mesh harmonic at
+    # 9317 rpm: the summary lists it, marked mesh-dominated
+    crossings = [r for r in summary["resonances"]["elastic"] if r["mesh_dominated"] and r["harmonic"] == 1]
+    assert crossings and 2000.0 <= crossings[0]["speed_rpm"] <= 12000.0
+    assert plot.stat().st_size > 10_000
+
+
+def test_a_drivetrain_sweep_varies_speed_only(tmp_path):
+    result = _cli("sweep", str(TWO_SHAFTS), "--vary", "torque_nm=100,200", "--out", str(tmp_path / "x.zarr"))
+    assert result.returncode != 0
+    assert "--vary = 'torque_nm'" in result.stderr and "speed_rpm=VALUES only" in result.stderr
+    assert not (tmp_path / "x.zarr").exists()
+
+
+def test_the_docs_page_shows_the_worked_case_file_verbatim():
+    page = (Path(__file__).resolve().parents[2] / "docs" / "drivetrain.md").read_text(encoding="utf-8")
+    block = page.split("```toml\n", 1)[1].split("```", 1)[0]
+    # the block is the case file minus its two header comment lines, so what users copy is what the tests run
+    body = TWO_SHAFTS.read_text(encoding="utf-8").split("\n", 2)[2]
+    assert block == body
+    assert tomllib.loads(block)["drivetrain"]["pinion"]["position_mm"] == 125.0
+
+
+@pytest.mark.slow
+def test_the_report_has_a_drivetrain_section_and_summary_json_its_numbers(tmp_path):
+    out = tmp_path / "report"
+    result = _cli("run", str(TWO_SHAFTS), "--out", str(out), "--json")
+    assert result.returncode == 0, result.stderr
+    payload = json.loads(result.stdout)
+    page = (out / "report.html").read_text(encoding="utf-8")
+    assert "The pair in its drivetrain" in page and "Dynamic bearing forces on the housing" in page
+    summary = json.loads((out / "summary.json").read_text(encoding="utf-8"))
+    # run --json and the report's summary.json carry the same drivetrain numbers (computed once, by the report)
+    assert summary["drivetrain"] == payload["drivetrain"]
+    assert len(summary["drivetrain"]["heat"]) == 12
