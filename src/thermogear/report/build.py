@@ -53,8 +53,8 @@ def build_report(case, out: Path | str, *, force: bool = False, method: str = "p
     ``paper``: add the paper column (default: for the paper's own case). An existing ``out`` is refused before
     any work unless ``force``. ``progress(step)`` is called before each step. ``timings``: seconds of what the
     caller did before (start-up, imports), listed first in ``timings_s`` so that the stages add up to the whole
-    command. The results file is written in a second process while the figures are drawn
-    (:mod:`thermogear.forked`).
+    command. The results file is written in a second process, which then shares the figures with this one: each
+    takes the next figure not yet taken (:class:`thermogear.forked.SharedCounter`).
     """
     begin = time.perf_counter()
     from thermogear import __version__, forked
