@@ -73,3 +73,20 @@ def test_the_shared_and_the_fe_figures_are_every_figure_once():
 
     drawn = [*SHARED_FIGURES, *FE_FIGURES]
     assert sorted(drawn) == sorted(FIGURES) and len(set(drawn)) == len(drawn)
+
+
+def test_a_counter_that_cannot_be_shared_leaves_every_job_to_its_maker(monkeypatch):
+    """Without shared memory or semaphores (some containers) the counter is not shared: the process that made it
+    takes every job and a forked child none, so no job is done twice (two processes writing one figure file)."""
+    import multiprocessing
+
+    def no_shared_memory(self, *args, **options):
+        raise OSError(38, "Function not implemented")
+
+    monkeypatch.setattr(type(multiprocessing.get_context("fork")), "Value", no_shared_memory)
+    monkeypatch.delenv("THERMOGEAR_SERIAL", raising=False)
+    counter = forked.SharedCounter()
+    child = forked.start("taker", _take_until, counter, 50)
+    assert _take_until(counter, 50) + child.result() == list(range(50))
+    if forked._can_fork():
+        assert child.result() == []  # the forked child was told there was nothing left
