@@ -64,7 +64,7 @@ def reproduce(
 
         case = load_case(PAPERS[paper])
         # the modules, the schema and the case outlive the report: out of the collector's sight, its full
-        # collections do not walk their ~10^5 objects again and again while the figures are drawn (~0.1 s CPU)
+        # collections do not walk their ~10^5 objects again and again while the figures are drawn (~0.2 s CPU)
         gc.freeze()
         try:
             outcome = build_report(case, target, force=force, paper=True, progress=advance,
