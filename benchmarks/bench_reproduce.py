@@ -10,7 +10,8 @@ The stages of the last run (``timings_s`` of summary.json, which cover the whole
 
 ``--compare SRC``: also run the command from another source tree (``SRC/src`` first on PYTHONPATH, e.g. an older
 commit checked out with ``git worktree add /tmp/before HEAD~8``), interleaved with this one run for run: an A/B
-comparison on a shared machine. The target is 5 s wall on two cores.
+comparison on a shared machine, also given as the median of the rounds' ratios (this tree over the other). The
+target is 5 s wall on two cores.
 """
 
 from __future__ import annotations
@@ -76,6 +77,11 @@ def main(repeats: int = 3, compare: Path | None = None) -> dict:
                  "ratio": cpu[name] / max(cpu["python -c 'import numpy' (baseline)"], 1e-9), "unit": "s"}
                 for name in runs if "baseline" not in name]
     main_wall = wall["thermogear reproduce luo2019"]
+    paired = {}
+    if compare is not None:  # per round, this tree over the other: on a loaded machine steadier than two medians
+        mine, other = samples["thermogear reproduce luo2019"], samples[list(runs)[-1]]
+        paired = {"wall": statistics.median(a[0] / b[0] for a, b in zip(mine, other)),
+                  "cpu": statistics.median(a[1] / b[1] for a, b in zip(mine, other))}
     result = {
         "benchmark": "bench_reproduce",
         "repeats": repeats,
@@ -85,6 +91,7 @@ def main(repeats: int = 3, compare: Path | None = None) -> dict:
         "figures": figures,
         "target_s": TARGET_S,
         "meets_target": main_wall <= TARGET_S,
+        "paired_ratio_to_compare": paired,
         "timings_s_last_run": summary.get("timings_s"),
         "timings_background_s_last_run": summary.get("timings_background_s"),
         "load_average": os.getloadavg(),
@@ -95,6 +102,9 @@ def main(repeats: int = 3, compare: Path | None = None) -> dict:
     print(f"{'':60s} {'wall [s]':>9s} {'/ numpy':>8s} {'CPU [s]':>8s}")
     for name in runs:
         print(f"{name:60s} {wall[name]:9.2f} {wall[name] / baseline:8.1f} {cpu[name]:8.2f}")
+    if paired:
+        print(f"this tree / {compare}, median of the rounds' ratios: wall {paired['wall']:.3f}, "
+              f"CPU {paired['cpu']:.3f}")
     stages = summary.get("timings_s") or {}
     print("stages of the last run [s]: " + ", ".join(f"{key} {value:.2f}" for key, value in stages.items())
           + f" (sum {sum(stages.values()):.2f})")

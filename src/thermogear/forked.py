@@ -18,7 +18,7 @@ import warnings
 from dataclasses import dataclass, field
 from typing import Any, Callable
 
-__all__ = ["Background", "ChildFailed", "start"]
+__all__ = ["NO_MORE", "Background", "ChildFailed", "SharedCounter", "start"]
 
 
 class ChildFailed(RuntimeError):
@@ -97,6 +97,44 @@ class Background:
         if self._process is not None and self._process.is_alive():
             self._process.terminate()
             self._process.join()
+
+
+#: What :meth:`SharedCounter.take` answers a child when the counter could not be shared: more than any job count.
+NO_MORE = sys.maxsize
+
+
+class SharedCounter:
+    """Hands out 0, 1, 2, … once each to the calls of :meth:`take` in this process and in the children forked
+    after it was made (a counter in shared memory, under a lock). Processes that take their next job from one
+    share a list of jobs evenly, whatever each job costs and however busy the machine is: a process that ends a
+    short job early just takes the next one. Where :func:`start` does not fork, a plain counter; where the system
+    offers no shared memory or semaphores (some containers), the process that made it takes every job and its
+    children none (:data:`NO_MORE`), so a job is still done once."""
+
+    def __init__(self) -> None:
+        self._shared = None
+        self._next = 0
+        self._owner = os.getpid()
+        if _can_fork():
+            import multiprocessing  # noqa: PLC0415
+
+            try:
+                self._shared = multiprocessing.get_context("fork").Value("i", 0)
+            except OSError:  # no /dev/shm or no POSIX semaphores: not shared, see the class docstring
+                self._shared = None
+
+    def take(self) -> int:
+        """The next number not yet taken by any of the processes (:data:`NO_MORE` for a child when the counter
+        could not be shared)."""
+        if self._shared is None:
+            if os.getpid() != self._owner:
+                return NO_MORE
+            self._next += 1
+            return self._next - 1
+        with self._shared.get_lock():
+            value = self._shared.value
+            self._shared.value = value + 1
+        return value
 
 
 def start(name: str, function: Callable, *args) -> Background:

@@ -167,6 +167,27 @@ def test_timings_cover_the_whole_command(default_run):
     assert set(summary["timings_background_s"]) == {"FE verification", "figures and results file", "rig prediction"}
 
 
+def test_the_collector_skips_the_long_lived_objects_during_the_report_and_gets_them_back(monkeypatch, tmp_path):
+    """The modules and the case are frozen out of the collector's full collections while the report is built
+    (they outlive it); a caller that goes on afterwards (this test process) has them back in its collector."""
+    import gc
+
+    import thermogear.report.build
+    from inprocess_cli import invoke
+
+    frozen = []
+
+    def record_and_skip(case, out, **options):  # the report itself is not what this test checks
+        frozen.append(gc.get_freeze_count())
+
+    monkeypatch.setattr(thermogear.report.build, "build_report", record_and_skip)
+    before = gc.get_freeze_count()
+    code, _, stderr = invoke("reproduce", "luo2019", "--out", str(tmp_path / "report"), "--quiet")
+    assert code == 0, stderr
+    assert frozen and frozen[0] > before  # frozen while the report was built
+    assert gc.get_freeze_count() == before  # and given back
+
+
 def test_the_readme_command_twice_replaces_its_own_report_and_keeps_the_users_files(default_run):
     # issue 25: the second `thermogear reproduce luo2019` exited 2 asking for --force; --force deleted the user's
     # files inside the folder. Now it replaces what it wrote and nothing else. (Last in this file: it rewrites the

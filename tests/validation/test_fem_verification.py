@@ -125,3 +125,17 @@ def test_reported_quantities_change_less_than_2_percent_on_refinement():
     case = load_case("luo2019")
     changes = refinement_change_percent(cached_analysis(case, 1.0), fem_analysis(case, 2.0))
     assert changes["max"] < 2.0, changes
+
+
+def test_the_analysis_without_its_checks_gives_the_same_pair_stiffness(luo):
+    """Fig. 15 asks for the analysis without the other plane and the uniform-rise check (the report's FE child
+    does half the solves): the pair stiffness it gives is the complete analysis's to the last bit (the same solves
+    on the same meshes, only fewer of them), and its summary, which reports the skipped checks, is refused."""
+    light = fem_analysis(luo.case, checks=False)
+    assert not light.checks and not light.deflection_other_plane and not light.uniform_expansion_fe
+    complete, trimmed = luo.thermal_result(), light.thermal_result()
+    for name in ("elastic_stiffness", "stiffness", "elastic_pinion_compliance", "pinion_stiffness"):
+        np.testing.assert_array_equal(getattr(trimmed, name), getattr(complete, name))
+    with pytest.raises(ValueError, match="without its checks"):
+        light.summary()
+    assert cached_analysis(luo.case, checks=False) is luo  # a complete analysis in the cache answers too

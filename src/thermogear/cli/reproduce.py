@@ -25,6 +25,8 @@ def reproduce(
 ) -> None:
     """Reproduce a paper: every figure, every number beside the paper's, the assumptions and the differences,
     in one self-contained report.html (+ figures/, results.nc, summary.json)."""
+    import atexit  # noqa: PLC0415
+    import gc  # noqa: PLC0415
     import time  # noqa: PLC0415
 
     from thermogear.cli.console import step_progress  # noqa: PLC0415
@@ -32,6 +34,10 @@ def reproduce(
     from thermogear.report.steps import steps_of_report  # noqa: PLC0415
 
     start_up = seconds_since_process_start()
+    # at the interpreter's exit its last full collections would walk every object once more only to free memory
+    # the system takes back anyway: 0.3-0.5 s CPU, over a second of wall on a loaded machine. Frozen first, they
+    # are skipped (atexit runs before those collections, and only when the process really ends)
+    atexit.register(gc.freeze)
     if paper not in PAPERS:
         from thermogear.errors import closest_key
 
@@ -57,8 +63,14 @@ def reproduce(
         from thermogear.report.build import build_report
 
         case = load_case(PAPERS[paper])
-        outcome = build_report(case, target, force=force, paper=True, progress=advance,
-                               timings={"start-up": start_up, "imports": time.perf_counter() - begin})
+        # the modules, the schema and the case outlive the report: out of the collector's sight, its full
+        # collections do not walk their ~10^5 objects again and again while the figures are drawn (~0.2 s CPU)
+        gc.freeze()
+        try:
+            outcome = build_report(case, target, force=force, paper=True, progress=advance,
+                                   timings={"start-up": start_up, "imports": time.perf_counter() - begin})
+        finally:
+            gc.unfreeze()  # a caller that goes on (a test running the command in its process) gets them back
     if not quiet:
         from thermogear.report.terminal import print_summary
 

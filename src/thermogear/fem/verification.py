@@ -85,6 +85,7 @@ class FemAnalysis:
     uniform_expansion_fe: dict  # gear -> Δ_t FE for UNIFORM_RISE [m]
     uniform_expansion_analytical: dict  # gear -> Eqs. 8–12 for UNIFORM_RISE [m]
     timings: dict = field(default_factory=dict)
+    checks: bool = True  # False: the other plane and the uniform-rise check were not run (their dicts are empty)
 
     # ------------------------------------------------------------------------------- derived quantities
     @property
@@ -154,6 +155,10 @@ class FemAnalysis:
 
     def summary(self) -> dict:
         """JSON-ready numbers (°C, %, μm, N/(mm·μm))."""
+        if not self.checks:
+            raise ValueError("this FE analysis ran without its checks (fem_analysis(..., checks=False)): the other "
+                             "plane's compliances and the uniform-rise expansion check that the summary reports "
+                             "were not computed")
         pair = self.case.gear_pair
         width = pair.face_width
         per_width = 1.0 / (width * 1e9)
@@ -219,8 +224,12 @@ def _expansion_analytical(case: "Case", which: str, roll, field) -> np.ndarray:
                                                 case.thermal.expansion_model)
 
 
-def fem_analysis(case: "Case", refinement: float | None = None, settings: FemSection | None = None) -> FemAnalysis:
-    """Run the FE verification of a case (both gears) at one mesh refinement."""
+def fem_analysis(case: "Case", refinement: float | None = None, settings: FemSection | None = None,
+                 checks: bool = True) -> FemAnalysis:
+    """Run the FE verification of a case (both gears) at one mesh refinement. ``checks=False``: only what the
+    FE pair stiffness needs (:meth:`FemAnalysis.thermal_result`, Fig. 15): the compliances in the other plane and
+    the uniform-rise expansion check (two of the four elastic solves per gear, one of the two thermal ones) are
+    left out, and :meth:`FemAnalysis.summary` refuses the analysis."""
     import time  # noqa: PLC0415
 
     from thermogear.thermal.expansion import flank_expansion_along_line_of_action  # noqa: PLC0415
@@ -240,8 +249,9 @@ def fem_analysis(case: "Case", refinement: float | None = None, settings: FemSec
     start = time.perf_counter()
     for gear in GEARS:
         deflection[gear] = tooth_deflection(case, gear, roll, model=tooth_model(case, gear, settings, refinement))
-        deflection_other[gear] = tooth_deflection(
-            case, gear, roll, model=tooth_model(case, gear, settings, refinement, plane=other_plane))
+        if checks:
+            deflection_other[gear] = tooth_deflection(
+                case, gear, roll, model=tooth_model(case, gear, settings, refinement, plane=other_plane))
     timings["elastic"] = time.perf_counter() - start
     start = time.perf_counter()
     reference = case.temperature.reference_c
@@ -255,13 +265,15 @@ def fem_analysis(case: "Case", refinement: float | None = None, settings: FemSec
         thermal[gear] = sector.point_displacement(bulk, own)
         expansion_fe[gear] = np.sum(thermal[gear] * normal, axis=0)
         expansion_an[gear] = _expansion_analytical(case, gear, roll, field_)
+        if not checks:
+            continue
         uniform = sector.thermal_displacement(UNIFORM_RISE, alpha)
         uniform_fe[gear] = np.sum(sector.point_displacement(uniform, own) * normal, axis=0)
         uniform_an[gear] = flank_expansion_along_line_of_action(sector.gear, own, UNIFORM_RISE, UNIFORM_RISE,
                                                                 UNIFORM_RISE, alpha, case.thermal.expansion_model)
     timings["thermoelastic"] = time.perf_counter() - start
     return FemAnalysis(case, settings, refinement, roll, gamma, temperatures, field_, deflection, deflection_other,
-                       thermal, expansion_fe, expansion_an, uniform_fe, uniform_an, timings)
+                       thermal, expansion_fe, expansion_an, uniform_fe, uniform_an, timings, checks)
 
 
 def refinement_change_percent(coarse: FemAnalysis, fine: FemAnalysis) -> dict[str, float]:
@@ -275,22 +287,26 @@ def refinement_change_percent(coarse: FemAnalysis, fine: FemAnalysis) -> dict[st
 
 
 # ------------------------------------------------------------------------------------------ cached entry
-_CACHE: dict[tuple[str, float], FemAnalysis] = {}
+_CACHE: dict[tuple[str, float, bool], FemAnalysis] = {}
 
 
-def _key(case: "Case", refinement: float | None) -> tuple[str, float]:
+def _key(case: "Case", refinement: float | None, checks: bool) -> tuple[str, float, bool]:
     settings = fem_settings(case)
     value = settings.mesh_refinement if refinement is None else float(refinement)
-    return json.dumps(case.document, sort_keys=True, default=str), value
+    return json.dumps(case.document, sort_keys=True, default=str), value, checks
 
 
-def cached_analysis(case: "Case", refinement: float | None = None) -> FemAnalysis:
-    """:func:`fem_analysis`, memoised per case document and refinement (the providers ask for it repeatedly)."""
-    key = _key(case, refinement)
+def cached_analysis(case: "Case", refinement: float | None = None, checks: bool = True) -> FemAnalysis:
+    """:func:`fem_analysis`, memoised per case document, refinement and ``checks`` (the providers ask for it
+    repeatedly); an analysis with its checks also answers a request without them."""
+    key = _key(case, refinement, checks)
+    complete = key[:2] + (True,)
+    if complete in _CACHE:
+        return _CACHE[complete]
     if key not in _CACHE:
         if len(_CACHE) > 16:
             _CACHE.clear()
-        _CACHE[key] = fem_analysis(case, refinement)
+        _CACHE[key] = fem_analysis(case, refinement, checks=checks)
     return _CACHE[key]
 
 
@@ -300,7 +316,7 @@ def stiffness_along_path(case: "Case") -> dict:
 
     Elastic: 1/(δ1,FE + δ2,FE + δ_Hertz); thermal: Luo & Li Eqs. 21–23 with the FE compliances, the FE X_te and
     the Eqs. 8–12 expansions of the FE bulk temperature (external normal load)."""
-    analysis = cached_analysis(case)
+    analysis = cached_analysis(case, checks=False)  # the pair stiffness needs neither the other plane nor the check
     result = analysis.thermal_result()
     return {"gamma": analysis.gamma.copy(), "elastic": np.asarray(result.elastic_stiffness, dtype=float),
             "thermal": np.asarray(result.stiffness, dtype=float),

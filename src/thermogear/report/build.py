@@ -54,13 +54,13 @@ def build_report(case, out: Path | str, *, force: bool = False, method: str = "p
     ``paper``: add the paper column (default: for the paper's own case). An existing ``out`` is refused before
     any work unless ``force``. ``progress(step)`` is called before each step. ``timings``: seconds of what the
     caller did before (start-up, imports), listed first in ``timings_s`` so that the stages add up to the whole
-    command. The results file is written in a second process while the figures are drawn
-    (:mod:`thermogear.forked`).
+    command. The results file is written in a second process, which then shares the figures with this one: each
+    takes the next figure not yet taken (:class:`thermogear.forked.SharedCounter`).
     """
     begin = time.perf_counter()
     from thermogear import __version__, forked
     from thermogear.evaluation import finish_evaluation
-    from thermogear.report.figures import FE_FIGURES, FIGURES, SECOND_PROCESS_FIGURES, write_figures
+    from thermogear.report.figures import FE_FIGURES, FIGURES, write_figures
     from thermogear.report.html import render_report
     from thermogear.report.results_file import case_toml_text, summary_document, write_summary_json
 
@@ -85,10 +85,10 @@ def build_report(case, out: Path | str, *, force: bool = False, method: str = "p
         figure_folder.mkdir()
         import matplotlib.pyplot  # noqa: F401, PLC0415  (once, before the fork: both processes draw with it)
 
-        second = forked.start("figures and results file", _second_process_work, evaluation, folder.path)
+        counter = forked.SharedCounter()  # both processes take the next figure from it
+        second = forked.start("figures and results file", _second_process_work, evaluation, folder.path, counter)
         try:
-            missing = write_figures(evaluation, figure_folder, [name for name in FIGURES if name not in
-                                                                (*SECOND_PROCESS_FIGURES, *FE_FIGURES)])
+            missing = _draw_shared_figures(evaluation, figure_folder, counter)
             evaluation.timings["figures"] = time.perf_counter() - figure_start
             if evaluation.pending:
                 step("FE verification")
@@ -127,11 +127,21 @@ def build_report(case, out: Path | str, *, force: bool = False, method: str = "p
                          seconds=time.perf_counter() - start + sum(before.values()), timings=dict(evaluation.timings))
 
 
-def _second_process_work(evaluation, folder: Path) -> dict[str, str]:
-    """What the second process does while the first draws its figures: results.nc, then its share of the
-    figures. Returns the missing figures with their reasons."""
-    from thermogear.report.figures import SECOND_PROCESS_FIGURES, write_figures
+def _draw_shared_figures(evaluation, folder: Path, counter) -> dict[str, str]:
+    """Draw and save the figures of :data:`~thermogear.report.figures.SHARED_FIGURES` this process takes from
+    ``counter`` (the other process takes the rest); returns the missing ones with their reasons."""
+    from thermogear.report.figures import SHARED_FIGURES, write_figures
+
+    missing: dict[str, str] = {}
+    while (index := counter.take()) < len(SHARED_FIGURES):
+        missing.update(write_figures(evaluation, folder, [SHARED_FIGURES[index]]))
+    return missing
+
+
+def _second_process_work(evaluation, folder: Path, counter) -> dict[str, str]:
+    """What the second process does while the first draws figures: results.nc, then the figures it takes from
+    ``counter``. Returns the missing figures with their reasons."""
     from thermogear.report.results_file import write_results_netcdf
 
     write_results_netcdf(evaluation, folder / "results.nc")
-    return write_figures(evaluation, folder / "figures", SECOND_PROCESS_FIGURES)
+    return _draw_shared_figures(evaluation, folder / "figures", counter)

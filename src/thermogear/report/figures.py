@@ -11,7 +11,7 @@ from typing import Any, Callable
 
 import numpy as np
 
-__all__ = ["FE_FIGURES", "FIG6_SPAN_MS", "FIGURES", "SECOND_PROCESS_FIGURES", "report_figures", "save_figure",
+__all__ = ["FE_FIGURES", "FIG6_SPAN_MS", "FIGURES", "SHARED_FIGURES", "report_figures", "save_figure",
            "write_figures"]
 
 #: Time span of the right panel of Fig. 6 [ms] (the paper's 0–5 ms).
@@ -354,9 +354,11 @@ def save_figure(figure, folder, name: str) -> list[str]:
     return files
 
 
-#: The figures a second process draws while the first draws the rest (the results file is written there too):
-#: about half of the drawing time each on two cores (fig. 4's four panels are the slowest figure).
-SECOND_PROCESS_FIGURES = ("fig4", "fig9", "fig10")
+#: The figures the report's two processes share (each takes the next one not yet taken, see
+#: :func:`thermogear.report.build.build_report`), slowest first: Fig. 4's four panels (~0.6 s CPU), the two-panel
+#: figures (~0.3 s), the single panels last (~0.2 s). Whichever process is free takes the next, so the last ones
+#: taken are short and both processes end close together, however busy each was before (longest job first).
+SHARED_FIGURES = ("fig4", "fig7", "fig8", "fig11", "fig6", "fig9", "fig10", "fig3c", "fig12")
 #: The figures that need the FE verification: drawn last, once its child process has answered.
 FE_FIGURES = ("fig15",)
 
