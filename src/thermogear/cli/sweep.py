@@ -9,7 +9,7 @@ import typer
 
 from thermogear.cli.app import app, console, error_console, print_json
 from thermogear.cli.console import print_warning
-from thermogear.cli.sweep_summary import print_sweep_summary, response_summary
+from thermogear.cli.sweep_summary import load_held_summary, print_sweep_summary, response_summary
 from thermogear.errors import CaseError
 from thermogear.gearbox.provider import register as register_gearbox_model
 
@@ -129,6 +129,7 @@ def sweep(
             "dims": {name: int(size) for name, size in zip(study.dims, study.shape)},
             "models": list(study.models),
             "points": study.size,
+            **load_held_summary(study),
             "chunks": len(study.blocks()),
             "chunks_computed": run.computed,
             "chunks_kept": run.skipped,
