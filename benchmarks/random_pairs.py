@@ -45,6 +45,12 @@ def _pick(rng, usual, wide):
     return wide() if rng.random() < WIDE else usual()
 
 
+def set_wide(probability: float) -> None:
+    """Draw each parameter over the schema's whole range with this probability (default 0.2)."""
+    global WIDE
+    WIDE = float(probability)
+
+
 def draw_document(rng: np.random.Generator, index: int = 0) -> dict:
     """One random case document: usual spur-gear designs mixed with values anywhere in the schema's ranges."""
     module = _pick(rng, lambda: _log_uniform(rng, 0.5, 12.0), lambda: _log_uniform(rng, 0.1, 100.0))
@@ -132,15 +138,19 @@ def _model_defects(response) -> list[str]:
     return defects
 
 
-def check_pair(document: dict) -> dict:
+def check_pair(document: dict, method: str = "periodic") -> dict:
     """Run one case document through load, check, stiffness and both meshes under both models.
 
+    ``method``: "periodic" (the steady state) or "transient" (the motion from rest, as ``run --method transient``).
     Returns ``{"outcome": "refused" | "computed" | "defect", "stage": …, "key"/"defects": …, "seconds": …}``."""
     from thermogear.case import case_from_document
     from thermogear.errors import CaseError, ModelLimitError
     from thermogear.preflight import preflight
     from thermogear.simulation import MODELS, Simulation
+    from thermogear.evaluation import uses_paper_thermal_stiffness
+    from thermogear.serialization import json_ready
     from thermogear.summaries.stiffness import stiffness_summary
+    from thermogear.summaries.thermoelastic import thermoelastic_summary
 
     start = time.perf_counter()
     stage = "load"
@@ -161,11 +171,14 @@ def check_pair(document: dict) -> dict:
             bad = _non_finite({k: v for k, v in summary.items() if k != "warnings"})
             if bad:
                 result["defects"].append("stiffness summary non-finite: " + ", ".join(bad[:3]))
+            if not uses_paper_thermal_stiffness(cases["linear"]):
+                stage = "thermo-elastic summary"  # run's rows: backlash cold/hot, jamming, E(T), loaded STE
+                json.dumps(json_ready(thermoelastic_summary(cases["linear"]), non_finite="null"), allow_nan=False)
             for mesh, case in cases.items():
                 for model in MODELS:
                     stage = f"{mesh} {model}"
                     try:
-                        response = Simulation(case, model).run()
+                        response = Simulation(case, model).run(method)
                     except ModelLimitError:  # a clean "error: …" of `run` (e.g. parametric instability)
                         result["labels"][f"{mesh} model limit"] += 1
                         continue
@@ -196,7 +209,11 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--seed", type=int, default=0)
     parser.add_argument("--time-limit", type=float, default=math.inf, help="stop after this many seconds")
     parser.add_argument("--log", default=None, help="JSON lines: one document and outcome per pair")
+    parser.add_argument("--wide", type=float, default=WIDE, help="probability of a draw over the whole schema range")
+    parser.add_argument("--transient-every", type=int, default=10,
+                        help="every N-th pair runs the motion from rest (run --method transient) instead")
     arguments = parser.parse_args(argv)
+    set_wide(arguments.wide)
     rng = np.random.default_rng(arguments.seed)
     log = open(arguments.log, "w", encoding="utf-8") if arguments.log else None
     outcomes, refusals, defects, labels = Counter(), Counter(), Counter(), Counter()
@@ -207,7 +224,8 @@ def main(argv: list[str] | None = None) -> int:
         if time.perf_counter() - start > arguments.time_limit:
             break
         document = draw_document(rng, index)
-        result = check_pair(document)
+        every = arguments.transient_every
+        result = check_pair(document, "transient" if every and index % every == every - 1 else "periodic")
         done += 1
         outcomes[result["outcome"]] += 1
         labels.update(result["labels"])
@@ -222,7 +240,7 @@ def main(argv: list[str] | None = None) -> int:
             print(f"{done} pairs, {time.perf_counter() - start:.0f} s: {dict(outcomes)}", file=sys.stderr, flush=True)
     if log is not None:
         log.close()
-    report = {"pairs": done, "seed": arguments.seed, "wall_s": round(time.perf_counter() - start, 1),
+    report = {"pairs": done, "seed": arguments.seed, "wide": WIDE, "transient_every": arguments.transient_every, "wall_s": round(time.perf_counter() - start, 1),
               "cpu_s": round(time.process_time() - cpu, 1), "outcomes": dict(outcomes),
               "refusals": dict(refusals.most_common()), "defects": dict(defects.most_common()),
               "labels": dict(labels.most_common())}
