@@ -204,3 +204,43 @@ def test_the_random_pair_checks_find_every_non_finite_number():
     module = _random_pairs_module()
     assert module._non_finite({"a": [1.0, float("nan")], "b": {"c": np.array([np.inf])}}) == [".a[1]", ".b.c"]
     assert module._non_finite({"a": 1.0, "b": np.arange(3.0)}) == []
+
+
+# ------------------------------------------------------------------------------------------------ a failed model
+UNSTABLE = """[case]
+name = "light_load_fast"
+[gears]
+module_mm = 2.4295
+face_width_mm = 37.362
+pinion = {teeth = 57, profile_shift = -0.262}
+wheel = {teeth = 22, profile_shift = 0.713}
+[operating]
+speed_rpm = SPEED
+power_kw = 0.355
+[lubricant]
+name = "iso_vg_220_mineral"
+operating_temperature_c = 109.0
+[housing]
+temperature_c = 84.9
+[dynamics]
+mesh = "linear"
+"""
+
+
+def test_run_reports_the_model_it_computed_beside_the_one_that_is_unstable(tmp_path):
+    # a random pair of the 10^4-pair check: at 15 500 rpm (f_mesh ≈ 2.17 f_n, a light load and so little friction
+    # damping) the elastic mesh is parametrically unstable and the thermal one, a little softer, is not. `run` gave
+    # one error and dropped the thermal result; `run --out` reported it, and the elastic model as not computed
+    path = tmp_path / "half.toml"
+    path.write_text(UNSTABLE.replace("SPEED", "15500.0"), encoding="utf-8")
+    code, out, err = invoke("run", str(path), "--json")
+    assert code == 0, err
+    payload = json.loads(out)
+    assert list(payload["models"]) == ["thermal"] and payload["models"]["thermal"]["status"] == "valid"
+    assert payload["not_computed"]["elastic"].startswith("ModelLimitError: parametric instability")
+    code, out, err = invoke("run", str(path))
+    assert code == 0 and "elastic model not computed: ModelLimitError: parametric instability" in err, err
+    path.write_text(UNSTABLE.replace("SPEED", "14760.542"), encoding="utf-8")  # both unstable: nothing to show
+    code, out, err = invoke("run", str(path))
+    assert code == 2 and out == "" and [line[:29] for line in err.splitlines() if line.startswith("error:")] == [
+        "error: parametric instability"], err

@@ -8,7 +8,7 @@ import typer
 
 from thermogear.cli.app import app, console, error_console, print_json
 from thermogear.report.terminal import interruptible
-from thermogear.errors import CaseError
+from thermogear.errors import CaseError, ModelLimitError
 from thermogear.gearbox.case_model import prediction_note
 from thermogear.gearbox.provider import register as register_gearbox_model
 
@@ -115,11 +115,16 @@ def run(
     else:
         from thermogear.simulation import Simulation
 
-        responses, failed = {}, {}
+        responses, failed, limit = {}, {}, None
         with step_progress([f"{name} model" for name in models], quiet or as_json, error_console) as advance:
             for name in models:
                 advance(f"{name} model")
-                responses[name] = Simulation(case, name).run(method)
+                try:
+                    responses[name] = Simulation(case, name).run(method)
+                except ModelLimitError as error:  # e.g. unstable: said, and the other model still computed
+                    failed[name], limit = f"{type(error).__name__}: {error}", limit or error
+        if not responses:
+            raise limit
         thermoelastic = _thermoelastic_summary(case) if "thermal" in models else None
     messages = [text for name, response in responses.items() for text in model_messages(response, name)]
     if csv is not None:
@@ -158,6 +163,8 @@ def run(
     if prediction_note(case):
         console.print(prediction_note(case), highlight=False)
     print_messages(messages, console)
+    for name, reason in failed.items():  # as the report says it (run --out)
+        error_console.print(f"{name} model not computed: {reason}", highlight=False)
 
 
 def _load_held_line(case) -> str:
