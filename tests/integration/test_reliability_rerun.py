@@ -244,3 +244,58 @@ def test_run_reports_the_model_it_computed_beside_the_one_that_is_unstable(tmp_p
     code, out, err = invoke("run", str(path))
     assert code == 2 and out == "" and [line[:29] for line in err.splitlines() if line.startswith("error:")] == [
         "error: parametric instability"], err
+
+
+# ------------------------------------------------------------------------------------------------ slow transients
+SLOW = """[case]
+name = "slow_transient"
+[gears]
+module_mm = 2.6991
+face_width_mm = 40.047
+backlash_normal_um = 87.64
+pinion = {teeth = 16, profile_shift = 0.329}
+wheel = {teeth = 47, profile_shift = 0.275}
+[operating]
+speed_rpm = 147.825
+power_kw = 2.049
+[temperature]
+bulk_c = 89.3
+[dynamics]
+mesh = "linear"
+"""
+
+
+def test_a_transient_too_long_to_store_is_refused_by_check_and_run_alike(tmp_path):
+    # a random pair at 148 rpm: a mesh period holds about 200 natural oscillations, so the RK4 motion from rest
+    # needs about 8e5 steps per period and 60 periods exceed what a transient stores. `check` accepted
+    # method = "transient" and `run` then failed inside the solver ("solver input periods = 60")
+    path = tmp_path / "slow.toml"
+    path.write_text(SLOW + 'method = "transient"\n', encoding="utf-8")
+    code, _, check_err = invoke("check", str(path))
+    assert code == 2 and "error: dynamics.transient_periods = 60: allowed <= " in check_err, check_err
+    code, out, run_err = invoke("run", str(path), "--json")
+    assert (code, out) == (2, "") and run_err.splitlines()[-1] == check_err.splitlines()[-1]
+    path.write_text(SLOW, encoding="utf-8")  # the case's periodic method: accepted, and --method transient refused
+    assert invoke("check", str(path))[0] == 0
+    code, _, err = invoke("run", str(path), "--method", "transient")
+    assert code == 2 and "dynamics.transient_periods" in err, err
+
+
+def test_the_transient_length_check_draws_the_line_where_the_solver_does(tmp_path):
+    from thermogear.case import load_case
+    from thermogear.dynamics.transient import transient_from_rest
+    from thermogear.errors import ProblemError
+    from thermogear.preflight import check_transient_length
+    from thermogear.simulation import Simulation
+
+    path = tmp_path / "slow.toml"
+    path.write_text(SLOW, encoding="utf-8")
+    problem = Simulation(load_case(str(path)), "elastic").problem
+    with pytest.raises(CaseError) as refused:
+        check_transient_length(problem, 60, 147.825)
+    most = int(refused.value.allowed.split()[1])  # "<= N at … rpm, …"
+    check_transient_length(problem, most, 147.825)  # accepted
+    with pytest.raises(CaseError):
+        check_transient_length(problem, most + 1, 147.825)
+    with pytest.raises(ProblemError, match="periods × intervals × steps"):  # the solver refuses the same length
+        transient_from_rest(problem, most + 1)

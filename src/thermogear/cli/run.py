@@ -101,7 +101,7 @@ def run(
     case = load_case(case_name)
     method = method or case.dynamics.method
     models = _MODELS[model]
-    preflight(case, models, quiet=False)  # the checks `check` makes, before any output is written
+    preflight(case, models, quiet=False, method=method)  # the checks `check` makes, before any output is written
     if out is not None:
         from thermogear.report.build import build_report, report_steps
 
