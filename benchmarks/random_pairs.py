@@ -165,7 +165,7 @@ def check_pair(document: dict, method: str = "periodic") -> dict:
                 variant.setdefault("dynamics", {})["mesh"] = mesh
                 cases[mesh] = case = case_from_document(variant, source="<random>")
                 stage = "check"
-                preflight(case)
+                preflight(case, method=method)  # as run --method does
             stage = "stiffness"
             summary, _ = stiffness_summary(cases["linear"])
             bad = _non_finite({k: v for k, v in summary.items() if k != "warnings"})
