@@ -250,17 +250,26 @@ def _errors(err: str) -> list[str]:
     return [line for line in err.splitlines() if line.startswith("error:")]
 
 
+def _checked(tmp_path_factory, key, value, name: str):
+    """``(path, check's exit status, its stderr)`` of the fuzzed case file, or None where there is nothing to
+    compare: TOML cannot hold the value, or check refuses the [sweep] study (read by check and sweep only)."""
+    path = _case_file(tmp_path_factory, key, value, name)
+    if path is None:
+        return None
+    code, _, err = invoke("check", str(path))
+    if code == 2 and _errors(err)[0].startswith("error: vary."):
+        return None
+    return path, code, err
+
+
 @settings(FUZZ, max_examples=12)
 @given(key=st.sampled_from(KEYS), value=VALUES)
 def test_run_agrees_with_check_on_a_fuzzed_case_and_its_json_is_labelled(key, value, tmp_path_factory):
     # check = run on the command the issues name most; a computed model is labelled (valid, non-periodic or not
     # valid) and a valid one has a finite Kv
-    path = _case_file(tmp_path_factory, key, value, "run")
-    if path is None:
+    if (checked := _checked(tmp_path_factory, key, value, "run")) is None:
         return
-    code, _, err = invoke("check", str(path))
-    if code == 2 and _errors(err)[0].startswith("error: vary."):
-        return  # [sweep] is read by check and sweep only
+    path, code, err = checked
     other, out, other_err = invoke("run", str(path), "--json")
     assert other == code, (err, other_err)
     if code == 2:
@@ -275,12 +284,9 @@ def test_run_agrees_with_check_on_a_fuzzed_case_and_its_json_is_labelled(key, va
 @given(key=st.sampled_from(KEYS), value=VALUES)
 def test_sweep_fem_and_warmup_refuse_what_check_refuses(key, value, tmp_path_factory):
     # the commands that compute longest are run only where check refuses: they must refuse the same way, at once
-    path = _case_file(tmp_path_factory, key, value, "refuse")
-    if path is None:
+    if (checked := _checked(tmp_path_factory, key, value, "refuse")) is None or checked[1] != 2:
         return
-    code, _, err = invoke("check", str(path))
-    if code != 2 or _errors(err)[0].startswith("error: vary."):
-        return
+    path, _, err = checked
     for command in (["sweep", str(path), "--vary", "speed_rpm=1000,2000", "--out", str(path.parent / "s.zarr")],
                     ["fem", str(path), "--json"],
                     ["warmup", str(path), "--model", "first-order", "--no-dynamics", "--json"]):
