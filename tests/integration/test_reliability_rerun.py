@@ -46,7 +46,7 @@ bulk_c = 85.0
 
 # ------------------------------------------------------------------------------------------------ load held
 @pytest.mark.parametrize("vary, held, because", [
-    (["speed_rpm=1000,2000"], "constant torque", "holds its torque at 2000 rpm"),  # luo2019 gives 40 kW
+    (["speed_rpm=1000,2000"], "constant torque", "holds its torque at 2000 rpm"),  # luo2019 gives 80 kW
     (["speed_rpm=1000,2000", "power_kw=10,20"], "constant power", "power_kw is varied"),
     (["speed_rpm=1000,2000", "torque_nm=100,200"], "constant torque", "torque_nm is varied"),
     (["oil_temperature_c=40,60"], "constant power", "its one speed"),  # no speed axis: the case's own load
