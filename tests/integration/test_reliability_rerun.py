@@ -279,6 +279,10 @@ def test_a_transient_too_long_to_store_is_refused_by_check_and_run_alike(tmp_pat
     assert invoke("check", str(path))[0] == 0
     code, _, err = invoke("run", str(path), "--method", "transient")
     assert code == 2 and "dynamics.transient_periods" in err, err
+    path.write_text(SLOW + 'method = "transient"\n', encoding="utf-8")  # a study solves periodic states only
+    code, _, err = invoke("sweep", str(path), "--vary", "torque_nm=10,20", "--out", str(tmp_path / "s.zarr"),
+                          "--method", "simulation", *LINEAR)
+    assert code == 0, err
 
 
 def test_the_transient_length_check_draws_the_line_where_the_solver_does(tmp_path):

@@ -79,7 +79,8 @@ def sweep(
             chosen_model = chosen_model or ("both" if len(stored["models"]) == 2 else stored["models"][0])
             chunks = chunks or stored["chunk_points"]
         study = Study.define(loaded, definition, model=chosen_model or "both", chunk_points=chunks)
-        preflight(loaded, tuple(study.models))  # the case itself passes what check and run check
+        # the case itself passes what check and run check; a study solves periodic steady states only
+        preflight(loaded, tuple(study.models), method="periodic")
         if direction is not None and direction not in ("up", "down", "both"):
             raise CaseError("--direction", direction, "up | down | both",
                             "a branch is followed from the lowest speed up, from the highest down, or both")
