@@ -18,9 +18,12 @@ from thermogear.errors import CaseError, ProblemError
 _KEYS = {"backlash": ("gears.backlash_normal_um", 1e6)}
 
 
-def preflight(case, models: tuple[str, ...] = ("elastic", "thermal"), quiet: bool = True) -> None:
+def preflight(case, models: tuple[str, ...] = ("elastic", "thermal"), quiet: bool = True,
+              method: str | None = None) -> None:
     """Build every component ``run`` would build for ``models`` (no solving); raise CaseError where one fails.
-    ``quiet``: drop the warnings of the building (``check`` validates; the stage that uses a value warns)."""
+    ``quiet``: drop the warnings of the building (``check`` validates; the stage that uses a value warns).
+    ``method``: the solution method ``run`` will use (default the case's ``dynamics.method``)."""
+    method = method or case.dynamics.method
     from thermogear.simulation import Simulation  # registers the FE temperature model too
 
     for model in models:
@@ -28,9 +31,9 @@ def preflight(case, models: tuple[str, ...] = ("elastic", "thermal"), quiet: boo
         try:
             if quiet:
                 with warning_scope.ignored():
-                    _build(simulation, case)
+                    _build(simulation, case, method)
             else:
-                _build(simulation, case)
+                _build(simulation, case, method)
         except ProblemError as error:
             key, scale = _KEYS.get(error.quantity, ("case", None))
             value = round(error.value * scale, 4) if scale is not None else error.value
@@ -38,8 +41,30 @@ def preflight(case, models: tuple[str, ...] = ("elastic", "thermal"), quiet: boo
                             f"{value} μm): {error.reason}" if scale else error.reason) from None
 
 
-def _build(simulation, case) -> None:
+def _build(simulation, case, method: str) -> None:
     if case.dynamics.mesh == "nonlinear":
         simulation.state.backlash_problem(case.dynamics.damping_in_flight)
+    elif method == "transient":
+        check_transient_length(simulation.problem, case.dynamics.transient_periods, simulation.speed_rpm)
     else:
         simulation.problem  # noqa: B018  (building it is the check)
+
+
+def check_transient_length(problem, periods: int, speed_rpm: float) -> None:
+    """Refuse a motion from rest of the linear mesh whose history would exceed what the RK4 transient stores
+    (:data:`~thermogear.dynamics.transient.MAX_STORED_SAMPLES`): its steps per interval keep |λ|·h <= 0.05
+    (:func:`~thermogear.dynamics.transient.default_steps_per_interval`), so at a low speed a mesh period holds
+    many natural oscillations and needs many steps. ``run`` refused such a case with the solver's own words
+    after ``check`` had accepted it (issue 25, found by the random-pair check)."""
+    from thermogear.dynamics.transient import MAX_STORED_SAMPLES, default_steps_per_interval
+
+    per_period = problem.interval_count * default_steps_per_interval(problem)
+    if periods * per_period + 1 <= MAX_STORED_SAMPLES:
+        return
+    most = (MAX_STORED_SAMPLES - 1) // per_period
+    raise CaseError("dynamics.transient_periods", periods, f"<= {most} at {speed_rpm:g} rpm, or dynamics.method = "
+                    "'periodic'" if most >= 1 else "dynamics.method = 'periodic' at this speed",
+                    f"the motion from rest takes {per_period:,} RK4 steps per mesh period at this speed (each period "
+                    f"holds about {problem.natural_frequency * problem.period:.3g} natural oscillations), more than "
+                    f"the {MAX_STORED_SAMPLES:,} samples a transient stores; the periodic solver gives the steady "
+                    "state directly")

@@ -6,10 +6,12 @@ minute in all (the case fuzz builds cases only; the command fuzz runs the comman
 from __future__ import annotations
 
 import copy
+import json
 import math
 import tomllib
 import typing
 import warnings
+from pathlib import Path
 
 import numpy as np
 import pydantic
@@ -232,3 +234,131 @@ def test_the_fuzz_reaches_every_section():
     sections = {key.split(".")[0] for key in KEYS}
     assert sections == set(CaseFile.model_fields)
     assert issubclass(CaseError, ThermogearError)
+
+
+# ------------------------------------------------------------------------- the commands the fuzz above leaves out
+def _case_file(tmp_path_factory, key, value, name: str):
+    path = tmp_path_factory.mktemp(name) / "case.toml"
+    try:
+        path.write_text(tomli_w.dumps(_set(DOCUMENTS["plain"], key, value)), encoding="utf-8")
+    except (TypeError, ValueError):  # a value TOML cannot hold never reaches a case file
+        return None
+    return path
+
+
+def _errors(err: str) -> list[str]:
+    return [line for line in err.splitlines() if line.startswith("error:")]
+
+
+def _checked(tmp_path_factory, key, value, name: str):
+    """``(path, check's exit status, its stderr)`` of the fuzzed case file, or None where there is nothing to
+    compare: TOML cannot hold the value, or check refuses the [sweep] study (read by check and sweep only)."""
+    path = _case_file(tmp_path_factory, key, value, name)
+    if path is None:
+        return None
+    code, _, err = invoke("check", str(path))
+    if code == 2 and _errors(err)[0].startswith("error: vary."):
+        return None
+    return path, code, err
+
+
+@settings(FUZZ, max_examples=12)
+@given(key=st.sampled_from(KEYS), value=VALUES)
+def test_run_agrees_with_check_on_a_fuzzed_case_and_its_json_is_labelled(key, value, tmp_path_factory):
+    # check = run on the command the issues name most; a computed model is labelled (valid, non-periodic or not
+    # valid) and a valid one has a finite Kv
+    if (checked := _checked(tmp_path_factory, key, value, "run")) is None:
+        return
+    path, code, err = checked
+    other, out, other_err = invoke("run", str(path), "--json")
+    assert other == code, (err, other_err)
+    if code == 2:
+        assert _errors(other_err) == _errors(err)
+        return
+    for model in json.loads(out)["models"].values():
+        assert model["status"] in ("valid", "non-periodic", "not valid")
+        assert model["status"] != "valid" or (model["kv"] is not None and math.isfinite(model["kv"]))
+
+
+@settings(FUZZ, max_examples=15)
+@given(key=st.sampled_from(KEYS), value=VALUES)
+def test_sweep_fem_and_warmup_refuse_what_check_refuses(key, value, tmp_path_factory):
+    # the commands that compute longest are run only where check refuses: they must refuse the same way, at once
+    if (checked := _checked(tmp_path_factory, key, value, "refuse")) is None or checked[1] != 2:
+        return
+    path, _, err = checked
+    for command in (["sweep", str(path), "--vary", "speed_rpm=1000,2000", "--out", str(path.parent / "s.zarr")],
+                    ["fem", str(path), "--json"],
+                    ["warmup", str(path), "--model", "first-order", "--no-dynamics", "--json"]):
+        other, out, other_err = invoke(*command)
+        assert (other, out, _errors(other_err)) == (2, "", _errors(err)), command
+    assert not (path.parent / "s.zarr").exists()
+
+
+NUMBERS = st.sampled_from(["nan", "inf", "-inf", "-1", "0", "1e-300", "1e308", "-273.15", "5000", "abc", "", "1,2"])
+
+
+@FEW
+@given(option=st.sampled_from(["--start-c", "--final-c", "--time-constant-s", "--duration-s", "--states",
+                               "--speed-rpm", "--gear-model"]), value=NUMBERS)
+def test_warmup_options_give_a_result_or_one_error(option, value):
+    code, out, err = invoke("warmup", "luo2019", "--model", "first-order", "--no-dynamics", option, value, "--json")
+    assert code in (0, 2), err
+    if code == 2:
+        assert out == "" and len(_errors(err)) == 1, err
+    else:
+        json.loads(out)
+
+
+@settings(FUZZ, max_examples=20)
+@given(option=st.sampled_from(["--speeds", "--torques"]), value=TEXT)
+def test_gearbox_options_give_a_result_or_one_error(option, value):
+    case = str(Path(__file__).resolve().parents[1] / "data" / "gearbox" / "fzg_gearbox.toml")
+    code, out, err = invoke("gearbox", case, option, value, "--json")
+    assert code in (0, 2), err
+    if code == 2:
+        assert out == "" and len(_errors(err)) == 1, err
+
+
+@FEW
+@given(option=st.sampled_from(["--rule", "--points"]), value=st.one_of(TEXT, NUMBERS))
+def test_damping_options_give_a_result_or_one_error(option, value):
+    code, out, err = invoke("damping", "luo2019", option, value, "--json")
+    assert code in (0, 2), err
+    if code == 2:
+        assert out == "" and len(_errors(err)) == 1, err
+
+
+@pytest.fixture(scope="module")
+def branch_store(tmp_path_factory):
+    import xarray as xr
+
+    from thermogear.sweep.branches import write_branch_store
+
+    dataset = xr.Dataset({"kv": (("direction", "speed_rpm"), np.ones((2, 3)))},
+                         coords={"direction": ["up", "down"], "speed_rpm": [1000.0, 2000.0, 3000.0]},
+                         attrs={"case": "plain", "load": "constant torque"})
+    return write_branch_store(dataset, tmp_path_factory.mktemp("store") / "study.zarr")
+
+
+@FEW
+@given(option=st.sampled_from(["--dimension", "--group", "--out", "SOURCE"]), value=TEXT)
+def test_export_options_give_a_table_or_one_error(option, value, branch_store, tmp_path_factory):
+    if option == "--out":
+        value = str(tmp_path_factory.mktemp("csv") / (value.replace("/", "_").replace("\x00", "") or "x"))
+    arguments = [value] if option == "SOURCE" else [str(branch_store), option, value]
+    code, out, err = invoke("export", *arguments)
+    assert code in (0, 2), err
+    if code == 2:
+        assert out == "" and len(_errors(err)) == 1, err
+
+
+@FEW
+@given(paper=TEXT)
+def test_reproduce_refuses_an_unknown_paper_at_once(paper, tmp_path_factory):
+    if paper == "luo2019":
+        return
+    out_folder = tmp_path_factory.mktemp("reproduce") / "report"
+    code, out, err = invoke("reproduce", paper, "--out", str(out_folder))
+    assert code == 2 and len(_errors(err)) == 1, err
+    assert not out_folder.exists()

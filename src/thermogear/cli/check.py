@@ -3,13 +3,16 @@
 from __future__ import annotations
 
 import math
+import warnings
+from collections.abc import Iterator
+from contextlib import contextmanager
 
 import typer
 from rich.table import Table
 
 from thermogear.case import load_case
 from thermogear.cli.app import app, console, print_json
-from thermogear.cli.console import print_notes
+from thermogear.cli.console import print_notes, warning_text
 from thermogear.gearbox.provider import register as register_gearbox_model
 
 register_gearbox_model()  # [temperature].model = "gearbox" (the CLI is a composition root, as thermogear.simulation)
@@ -23,9 +26,10 @@ def check(case: str = typer.Argument(..., metavar="CASE",
     from thermogear.load_capacity import load_flags
     from thermogear.preflight import preflight
 
-    loaded = load_case(case)
-    preflight(loaded)  # what run builds before it solves (the hot backlash of the whole temperature field)
-    _check_study_table(case, loaded)
+    with shown_warnings() as shown:  # printed on stderr as they come, and listed in the JSON
+        loaded = load_case(case)
+        preflight(loaded)  # what run builds before it solves (the hot backlash of the whole temperature field)
+        _check_study_table(case, loaded)
     pair = loaded.gear_pair
     payload = {
         "case": loaded.name,
@@ -44,6 +48,8 @@ def check(case: str = typer.Argument(..., metavar="CASE",
         "load_checks": list(load_flags(pair, loaded.material, loaded.operating_point.torque)),
     }
     payload["notes"] = list(loaded.notes)
+    payload["model_checks"] = model_choice_flags(loaded)
+    payload["warnings"] = list(dict.fromkeys(shown))  # keys without effect, extrapolated fits, … (once each)
     if as_json:
         print_json(payload)
         return
@@ -62,9 +68,37 @@ def check(case: str = typer.Argument(..., metavar="CASE",
     table.add_row("mesh frequency [Hz]", f"{payload['mesh_frequency_hz']:.2f}")
     console.print(table)
     print_notes(loaded.notes, console)
-    for flag in payload["load_checks"]:
+    for flag in payload["load_checks"] + payload["model_checks"]:
         console.print(f"check — {flag}", highlight=False)
     console.print("case is valid", style="green")
+
+
+@contextmanager
+def shown_warnings() -> Iterator[list[str]]:
+    """The warnings shown in the block, as the command line prints them (``warnings.showwarning`` is wrapped, so
+    Python's filters still decide what shows and each is still printed on stderr)."""
+    shown: list[str] = []
+    previous = warnings.showwarning
+
+    def keep(message, category, filename, lineno, file=None, line=None) -> None:
+        shown.append(warning_text(str(message)))
+        previous(message, category, filename, lineno, file, line)
+
+    warnings.showwarning = keep
+    try:
+        yield shown
+    finally:
+        warnings.showwarning = previous
+
+
+def model_choice_flags(case) -> list[str]:
+    """What ``run`` flags on every result of this choice of models, said by ``check`` before any solving (check =
+    run): the paper's secant k_T used as the contact stiffness of the nonlinear mesh."""
+    from thermogear.mesh.plausibility import secant_stiffness_in_nonlinear_mesh  # noqa: PLC0415
+
+    if case.thermal.model == "luo2020" and case.dynamics.mesh == "nonlinear":  # run's own condition (plausibility)
+        return [secant_stiffness_in_nonlinear_mesh(0.0)]
+    return []
 
 
 def _check_study_table(case: str, loaded) -> None:

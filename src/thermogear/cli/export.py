@@ -41,7 +41,7 @@ def _header(source: str, attrs: dict, what: str, left_out: list[str]) -> list[st
     from thermogear import __version__  # noqa: PLC0415
 
     lines = [f"thermogear {__version__} export of {source} ({what})"]
-    case = attrs.get("case_name")
+    case = attrs.get("case_name") or attrs.get("case")  # a linear store's / a branch store's attribute
     if case is None and "case_json" in attrs:
         try:
             case = json.loads(attrs["case_json"]).get("case", {}).get("name")
@@ -50,6 +50,9 @@ def _header(source: str, attrs: dict, what: str, left_out: list[str]) -> list[st
     if case:
         source_text = str(attrs.get("case_source") or "")
         lines.append(f"case: {case}" + (f" ({source_text})" if source_text and source_text != case else ""))
+    if attrs.get("load"):  # which load the points hold (issue 24: every output names it)
+        note = attrs.get("load_note")
+        lines.append(f"load held: {attrs['load']}" + (f" ({note})" if note else ""))
     if attrs.get("thermogear_version"):
         lines.append(f"computed by thermogear {attrs['thermogear_version']}")
     lines.append("units in brackets after each column name; nan: no value at that point (see the stable/valid "
@@ -66,7 +69,8 @@ def responses_csv(path: Path | None, case, responses: dict) -> int:
     blocks = [({"model": name}, dataset_rows(response.to_xarray(), ("time",))) for name, response in
               responses.items()]
     left_out = sorted({name for _, block in blocks for name in block.left_out})
-    header = _header(f"thermogear run {case.name}", {"case_name": case.name, "case_source": str(case.source)},
+    attributes = {"case_name": case.name, "case_source": str(case.source), "load": case.operating_point.load_held}
+    header = _header(f"thermogear run {case.name}", attributes,
                      "steady responses, one row per time sample and model", left_out)
     return write_csv(path if path is not None else sys.stdout, header, blocks)
 

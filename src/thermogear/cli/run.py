@@ -9,7 +9,7 @@ import typer
 
 from thermogear.cli.app import app, console, error_console, print_json
 from thermogear.report.terminal import interruptible
-from thermogear.errors import CaseError
+from thermogear.errors import CaseError, ModelLimitError
 from thermogear.gearbox.case_model import prediction_note
 
 if TYPE_CHECKING:
@@ -103,7 +103,7 @@ def run(
     case = load_case(case_name)
     method = method or case.dynamics.method
     models = _MODELS[model]
-    preflight(case, models, quiet=False)  # the checks `check` makes, before any output is written
+    preflight(case, models, quiet=False, method=method)  # the checks `check` makes, before any output is written
     if out is not None:
         from thermogear.report.build import build_report, report_steps
 
@@ -118,11 +118,16 @@ def run(
         from thermogear.simulation import Simulation, solver_for
 
         solver = solver_for(case.dynamics, method)  # the --method string, resolved once
-        responses, failed = {}, {}
+        responses, failed, limit = {}, {}, None
         with step_progress([f"{name} model" for name in models], quiet or as_json, error_console) as advance:
             for name in models:
                 advance(f"{name} model")
-                responses[name] = Simulation(case, name, solver=solver).run()
+                try:
+                    responses[name] = Simulation(case, name, solver=solver).run()
+                except ModelLimitError as error:  # e.g. unstable: said, and the other model still computed
+                    failed[name], limit = f"{type(error).__name__}: {error}", limit or error
+        if not responses:
+            raise limit
         thermoelastic = _thermoelastic_summary(case) if "thermal" in models else None
     messages = [text for name, response in responses.items() for text in model_messages(response, name)]
     from thermogear.cli.run_drivetrain import drivetrain_outputs, print_drivetrain  # [drivetrain] (issue 27)
@@ -167,6 +172,8 @@ def run(
     if prediction_note(case):
         console.print(prediction_note(case), highlight=False)
     print_messages(messages, console)
+    for name, reason in failed.items():  # as the report says it (run --out)
+        error_console.print(f"{name} model not computed: {reason}", highlight=False)
 
 
 def _load_held_line(operating_point) -> str:

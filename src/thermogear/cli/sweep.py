@@ -9,7 +9,7 @@ import typer
 
 from thermogear.cli.app import app, console, error_console, print_json
 from thermogear.cli.console import print_warning
-from thermogear.cli.sweep_summary import print_sweep_summary, response_summary
+from thermogear.cli.sweep_summary import load_held_summary, print_sweep_summary, response_summary
 from thermogear.errors import CaseError
 from thermogear.gearbox.provider import register as register_gearbox_model
 
@@ -85,7 +85,8 @@ def sweep(
             chosen_model = chosen_model or ("both" if len(stored["models"]) == 2 else stored["models"][0])
             chunks = chunks or stored["chunk_points"]
         study = Study.define(loaded, definition, model=chosen_model or "both", chunk_points=chunks)
-        preflight(loaded, tuple(study.models))  # the case itself passes what check and run check
+        # the case itself passes what check and run check; a study solves periodic steady states only
+        preflight(loaded, tuple(study.models), method="periodic")
         if direction is not None and direction not in ("up", "down", "both"):
             raise CaseError("--direction", direction, "up | down | both",
                             "a branch is followed from the lowest speed up, from the highest down, or both")
@@ -135,6 +136,7 @@ def sweep(
             "dims": {name: int(size) for name, size in zip(study.dims, study.shape)},
             "models": list(study.models),
             "points": study.size,
+            **load_held_summary(study),
             "chunks": len(study.blocks()),
             "chunks_computed": run.computed,
             "chunks_kept": run.skipped,

@@ -9,6 +9,7 @@ import numpy as np
 
 from thermogear.cli.app import console, error_console, print_json
 from thermogear.cli.console import print_warning
+from thermogear.cli.sweep_summary import load_held_line, load_held_summary
 from thermogear.errors import CaseError
 from thermogear.warning_causes import distinct_warnings
 
@@ -83,7 +84,7 @@ def run_branch_sweep(study, out: Path, direction: str, overwrite: bool, resume: 
     messages = distinct_warnings(str(item.message) for item in caught)
     summary = {"out": str(target), "mesh": "nonlinear", "directions": list(dataset["direction"].values),
                "dims": {name: int(size) for name, size in zip(study.dims, study.shape)},
-               "models": list(study.models), "points": study.size, "seconds": elapsed,
+               "models": list(study.models), "points": study.size, **load_held_summary(study), "seconds": elapsed,
                **branch_summary(dataset, study.models), "plot": figure_path, "warnings": messages}
     if multistart:
         summary["multistart"] = {"starts": multistart, "points": orbit_listing(dataset)}
@@ -97,6 +98,7 @@ def run_branch_sweep(study, out: Path, direction: str, overwrite: bool, resume: 
     console.print(f"branch study written to {summary['out']}: {summary['points']} points × "
                   f"{len(summary['models'])} model(s) × {len(summary['directions'])} direction(s) in "
                   f"{elapsed:.1f} s (nonlinear mesh)")
+    console.print(load_held_line(summary), highlight=False)
     for key, value in summary["kv_max"].items():
         console.print(f"  {key}: max Kv {value if value is None else f'{value:.4g}'}, contact loss at "
                       f"{summary['contact_loss_points'][key]} points, back-flank impacts at "

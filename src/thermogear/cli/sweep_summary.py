@@ -16,7 +16,21 @@ from rich.text import Text
 
 from thermogear.cli.console import print_warning
 
-__all__ = ["print_sweep_summary", "response_summary"]
+__all__ = ["load_held_line", "load_held_summary", "print_sweep_summary", "response_summary"]
+
+
+def load_held_summary(study) -> dict:
+    """``{"load_held": "constant torque" | "constant power", "load_held_note": why}`` of a study (its store's
+    ``load`` and ``load_note`` attributes say the same)."""
+    from thermogear.sweep.load_held import study_load_held  # noqa: PLC0415
+
+    load, note = study_load_held(study)
+    return {"load_held": load, "load_held_note": note}
+
+
+def load_held_line(summary: dict) -> str:
+    """``load held: constant torque (why)``, the words of ``run``'s line."""
+    return f"load held: {summary['load_held']} ({summary['load_held_note']})"
 
 
 def response_summary(run, models) -> dict:
@@ -64,6 +78,7 @@ def print_sweep_summary(summary: dict, console: Console, error_console: Console)
                                 f"({summary['chunks_computed']} computed, {summary['chunks_kept']} kept) in "
                                 f"{summary['seconds']:.1f} s"))
     points = summary["points"]
+    console.print(load_held_line(summary), highlight=False)
     console.print("dims: " + json.dumps(summary["dims"]) + "; max Kv where the linear model holds: "
                   + ", ".join(f"{m} {_number(v)} ({summary['valid_points'][m]}/{points} points)"
                               for m, v in summary["kv_max"].items()))

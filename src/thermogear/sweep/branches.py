@@ -27,6 +27,7 @@ from thermogear.dynamics.backlash_continuation import follow_branch
 from thermogear.errors import CaseError, JammingError
 from thermogear.mesh.model import PREDICTED_AT_LOAD_TEMPERATURE_MODELS, MeshModel
 from thermogear.sweep.hysteresis import hysteresis_bands
+from thermogear.sweep.load_held import study_load_held
 
 __all__ = ["DIRECTIONS", "BRANCH_VARIABLES", "branch_study", "hysteresis_bands", "write_branch_store"]
 
@@ -287,8 +288,9 @@ def branch_study(study, direction: str = "both", progress=None, workers: int | N
         from thermogear.sweep.multistart import orbit_dataset_variables  # noqa: PLC0415
 
         data.update(orbit_dataset_variables(censuses, study.models, study.dims, int(multistart)))
+    load, load_note = study_load_held(study)
     return xr.Dataset(data, coords=coords, attrs={"mesh": "nonlinear", "directions": ",".join(directions),
-                                                   "case": study.case.name, "load": "constant torque"})
+                                                   "case": study.case.name, "load": load, "load_note": load_note})
 
 
 def _run_tasks(study, tasks, speed_axis, directions, place, workers: int | None, starts: int) -> None:
@@ -327,12 +329,14 @@ def _run_tasks(study, tasks, speed_axis, directions, place, workers: int | None,
 
 def write_branch_store(dataset, path, overwrite: bool = False):
     """Write a branch study to the zarr store ``path`` (consolidated metadata, ownership marker); an existing path
-    is refused unless ``overwrite``, and then only when thermogear wrote it. Written into a hidden sibling folder
-    and renamed, so an interrupted run leaves the previous store or none."""
+    is refused unless ``overwrite``, and then only when thermogear wrote it and it holds nothing else (a user's
+    notes.txt is never deleted, whoever calls this). Written into a hidden sibling folder and renamed, so an
+    interrupted run leaves the previous store or none."""
     import shutil  # noqa: PLC0415
     import tempfile  # noqa: PLC0415
 
-    from thermogear.ownership import require_owned, resolve_output, write_marker  # noqa: PLC0415
+    from thermogear.ownership import (require_no_foreign_entries, require_owned, resolve_output,  # noqa: PLC0415
+                                      write_marker)
     from thermogear.sweep.store import _quiet_zarr  # noqa: PLC0415
 
     target = resolve_output(path)
@@ -341,6 +345,7 @@ def write_branch_store(dataset, path, overwrite: bool = False):
             raise CaseError("out", str(target), "a path that does not exist yet (or --overwrite)",
                             "the result store exists; overwrite it explicitly")
         require_owned(target, "sweep-store", "--out", "overwritten")
+        require_no_foreign_entries(target)
     try:
         target.parent.mkdir(parents=True, exist_ok=True)
         staging = Path(tempfile.mkdtemp(prefix=f".{target.name}.partial-", dir=target.parent))

@@ -199,7 +199,7 @@ def plot_speed_response(dataset, quantities=("kv", "dte_rms", "dte_peak_to_peak"
                         "frequency, j·f_m = f_n (e elastic, t thermal)",
                   title_fontsize=7)
     axes[-1].set_xlabel("pinion speed [rpm]")
-    title = "load: constant torque"
+    title = f"load: {dataset.attrs.get('load', 'constant torque')}"
     if chosen:
         title += "; " + ", ".join(f"{k} = {v:g}" if isinstance(v, (int, float, np.number)) else f"{k} = {v}"
                                   for k, v in chosen.items())

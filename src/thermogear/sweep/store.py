@@ -75,6 +75,9 @@ def _quiet_zarr():
 
 def _attributes(study) -> dict[str, Any]:
     from thermogear import __version__
+    from thermogear.sweep.load_held import study_load_held
+
+    load, load_note = study_load_held(study)
 
     return {
         "title": "thermogear parameter study",
@@ -84,6 +87,8 @@ def _attributes(study) -> dict[str, Any]:
         "case_json": json.dumps(study.case.document, sort_keys=True, default=str),
         "study_json": json.dumps(study.describe(), sort_keys=True),
         "models": ",".join(study.models),
+        "load": load,  # constant torque | constant power (issue 24: every sweep output names it)
+        "load_note": load_note,
     }
 
 

@@ -382,17 +382,12 @@ def load_study_case(name_or_path: str | Path):
     except RecursionError:
         raise CaseError("case", str(path), "TOML nested a few levels deep",
                         "the file nests tables or arrays too deeply to be a case file") from None
-    raw = document.pop("sweep", None)
-    case = case_from_document(document, source=str(path))
-    if raw is None:
-        return case, None
-    from thermogear.schema.sweep import SweepSection
+    from thermogear.case_errors import case_error_from_validation
+    from thermogear.schema import CaseFile
 
-    try:
-        section = SweepSection.model_validate(raw)
+    try:  # the whole file as `check` validates it: a bad [sweep] table gets check's message (check = sweep)
+        section = CaseFile.model_validate(document).sweep
     except pydantic.ValidationError as error:
-        first = error.errors(include_url=False)[0]
-        location = ".".join(str(part) for part in first["loc"])
-        raise CaseError(f"sweep.{location}" if location else "sweep", first.get("input"), "see docs/sweeps.md",
-                        first["msg"]) from None
-    return case, section
+        raise case_error_from_validation(error) from None
+    document.pop("sweep", None)
+    return case_from_document(document, source=str(path)), section

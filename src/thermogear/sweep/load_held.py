@@ -1,0 +1,40 @@
+"""Which load a study holds from point to point — constant torque or constant power — said on every sweep output.
+
+The mesh model of one case holds the load the case gives: a power is a torque P/ω1 that falls with speed (constant
+power), a torque stays (constant torque; ``OperatingPoint.load_held``). A study over speed holds the torque instead:
+a case that gives a power is run at the torque of that power at the case's own speed (``Study.fixed_changes``),
+unless the study varies the load itself. Both are legitimate and give different Kv against speed, so the store's
+attributes, the command's summary and JSON, the plot and the CSV export all name the one used (issue 24).
+"""
+
+from __future__ import annotations
+
+__all__ = ["study_load_held"]
+
+_POWER, _TORQUE, _STAGE, _SPEED = ("operating.power_kw", "operating.torque_nm", "operating.fzg_load_stage",
+                                   "operating.speed_rpm")
+
+
+def study_load_held(study) -> tuple[str, str]:
+    """``(label, note)``: ``label`` is ``"constant torque"`` or ``"constant power"``, ``note`` says why.
+
+    Follows what the points are computed with: the varied load key if any, else (speed varied) the torque of
+    the case's load at its own speed, else the case's own load (one speed: either reading gives the same load)."""
+    keys = {parameter.key for parameter in study.parameters}
+    if _POWER in keys:
+        return "constant power", "power_kw is varied: each point holds its power, the torque is P/ω1"
+    if _TORQUE in keys:
+        return "constant torque", "torque_nm is varied: each point holds its torque"
+    if _STAGE in keys:
+        return "constant torque", "fzg_load_stage is varied: each point holds the torque of its load stage"
+    operating = study.case.operating_point
+    torque = float(operating.torque_at(operating.speed_rpm))
+    if _SPEED in keys:
+        if operating.constant_power:
+            return "constant torque", (f"the case gives a power; the speed sweep holds its torque at "
+                                       f"{operating.speed_rpm:g} rpm, {torque:.4g} N·m; vary power_kw with the speed "
+                                       "for constant power")
+        return "constant torque", f"the case's torque, {torque:.4g} N·m, at every speed"
+    if operating.constant_power:
+        return "constant power", f"the case's power at its one speed {operating.speed_rpm:g} rpm ({torque:.4g} N·m)"
+    return "constant torque", f"the case's torque, {torque:.4g} N·m"
