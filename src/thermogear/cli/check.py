@@ -13,9 +13,6 @@ from rich.table import Table
 from thermogear.case import load_case
 from thermogear.cli.app import app, console, print_json
 from thermogear.cli.console import print_notes, warning_text
-from thermogear.gearbox.provider import register as register_gearbox_model
-
-register_gearbox_model()  # [temperature].model = "gearbox" (the CLI is a composition root, as thermogear.simulation)
 
 
 @app.command()

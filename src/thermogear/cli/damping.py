@@ -15,9 +15,6 @@ from thermogear.summaries.damping_plots import plot_damping
 from thermogear.summaries.damping import damping_summary
 from thermogear.lubricant import builtin_lubricant, builtin_lubricant_names
 from thermogear.warning_causes import distinct_warnings
-from thermogear.gearbox.provider import register as register_gearbox_model
-
-register_gearbox_model()  # [temperature].model = "gearbox" (the CLI is a composition root, as thermogear.simulation)
 
 
 @app.command()

@@ -11,7 +11,6 @@ from pathlib import Path
 import typer
 from rich.table import Table
 
-import thermogear.fem.provider  # noqa: F401  (registers the "fem" temperature and X_te providers)
 from thermogear.case import load_case
 from thermogear.cli.app import app, console, print_json
 from thermogear.cli.console import step_progress

@@ -18,9 +18,7 @@ from thermogear.cli.tables import dict_tables
 from thermogear.errors import ExtrapolationWarning, ThermogearError
 from thermogear.ownership import check_figure_file
 from thermogear.summaries.stiffness import POINTS, plot_stiffness, stiffness_summary
-from thermogear.gearbox.provider import register as register_gearbox_model
 
-register_gearbox_model()  # [temperature].model = "gearbox" (the CLI is a composition root, as thermogear.simulation)
 
 PLOT_SUFFIXES = (".png", ".svg", ".pdf")
 

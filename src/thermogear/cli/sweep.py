@@ -11,9 +11,6 @@ from thermogear.cli.app import app, console, error_console, print_json
 from thermogear.cli.console import print_warning
 from thermogear.cli.sweep_summary import load_held_summary, print_sweep_summary, response_summary
 from thermogear.errors import CaseError
-from thermogear.gearbox.provider import register as register_gearbox_model
-
-register_gearbox_model()  # [temperature].model = "gearbox" (the CLI is a composition root, as thermogear.simulation)
 
 
 @app.command()

@@ -10,10 +10,8 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from thermogear.case import register_case_check, register_temperature_model
-from thermogear.gearbox.case_model import check_gearbox_section, predicted_steady_state, with_predicted_temperatures
+from thermogear.gearbox.case_model import predicted_steady_state
 from thermogear.temperature_field import TemperatureField
-from thermogear.thermal.temperature import register_temperature_provider
 
 if TYPE_CHECKING:
     from thermogear.case import Case
@@ -35,11 +33,3 @@ def gearbox_temperature_field(case: "Case") -> TemperatureField:
                             wheel_base_c=wheel, wheel_bore_c=wheel, flank_coefficients=(pinion,),
                             wheel_flank_offset_c=wheel - pinion, source=source)
 
-
-def register() -> None:
-    """Plug the gearbox model in: ``[temperature].model = "gearbox"`` (the case's oil and housing temperatures
-    predicted at load time, the gear temperatures by :func:`gearbox_temperature_field`) and the load-time check
-    of a ``[gearbox]`` section under any temperature model."""
-    register_temperature_model(MODEL_NAME, with_predicted_temperatures)
-    register_temperature_provider(MODEL_NAME, gearbox_temperature_field)
-    register_case_check(check_gearbox_section)

@@ -33,9 +33,6 @@ def _initialise(document: dict, source: str, models: tuple[str, ...]) -> None:
     warnings.simplefilter("ignore")  # the case's own warnings were printed by the parent's checks
     from thermogear.case import case_from_document
     from thermogear.drivetrain.case_model import case_drivetrain
-    from thermogear.gearbox.provider import register
-
-    register()  # [temperature].model = "gearbox" (this process is a composition root of its own)
     _WORKER["built"] = case_drivetrain(case_from_document(document, source), models)
     _WORKER["models"] = models
 
