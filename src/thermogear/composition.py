@@ -2,7 +2,7 @@
 
 Some models are chosen by a name in the case file but live in a layer above the code that asks for them: the
 finite-element model is the ``"fem"`` source of the tooth temperatures and of X_te (asked for by
-:mod:`thermogear.thermal`), and the gearbox thermal network is the ``"gearbox"`` temperature model (its oil and
+:mod:`thermogear.luo2020`), and the gearbox thermal network is the ``"gearbox"`` temperature model (its oil and
 housing temperatures predicted when the case is loaded, :mod:`thermogear.case`) with a load-time check of the
 ``[gearbox]`` section. Registering them by importing their modules for the side effect made the result depend
 on what had been imported before (a mesh model of an ``"fem"`` case failed unless ``thermogear.simulation`` had

@@ -139,7 +139,7 @@ def evaluate_case(case, method: str = "periodic", models: tuple[str, ...] = MODE
     step("thermal stiffness")
 
     def thermal():
-        from thermogear.thermal.temperature import temperature_field_from_case
+        from thermogear.temperature_source import temperature_field_from_case
 
         evaluation.temperature_field = temperature_field_from_case(case)
         if uses_paper_thermal_stiffness(case):  # the paper's k_T curves (Fig. 4) belong to its model only

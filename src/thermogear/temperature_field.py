@@ -3,7 +3,7 @@
 This module holds what needs nothing but the section and the gear pair's path of contact: the
 :class:`TemperatureField` component, the flank-table checks, the polynomial fit (Luo & Li 2020 §2.1.5) and the
 range checks of :func:`check_temperatures`. It imports no case machinery, so the case loader runs these checks
-at load time (``thermogear check`` refuses what ``run`` would refuse). :mod:`thermogear.thermal.temperature`
+at load time (``thermogear check`` refuses what ``run`` would refuse). :mod:`thermogear.temperature_source`
 wires it to a :class:`~thermogear.case.Case` (and to the finite-element provider) and re-exports it.
 
 Temperatures are °C here; the expansion uses the rises above ``reference_c`` (Luo & Li Eq. 10 holds for rises
@@ -265,7 +265,7 @@ def temperature_field_from_section(section, directory: Path | None = None) -> Te
     if section.model == "tabulated":
         return _tabulated_field(section, directory)
     raise CaseError("temperature.model", section.model, "uniform | tabulated here",
-                    "this model's field comes from its provider (see thermogear.thermal.temperature)")
+                    "this model's field comes from its provider (see thermogear.temperature_source)")
 
 
 def _uniform_field(section) -> TemperatureField:

@@ -47,7 +47,7 @@ def test_fem_temperature_and_x_te_drive_the_chain():
     from thermogear.case import load_case
     from thermogear.fem.verification import cached_analysis
     from thermogear.simulation import Simulation
-    from thermogear.thermal.case_stiffness import thermal_stiffness
+    from thermogear.luo2020.case_stiffness import thermal_stiffness
 
     case = load_case("luo2019").with_changes(**{
         "temperature": {"model": "fem", "reference_c": 20.0},

@@ -14,7 +14,7 @@ from thermogear.case import case_from_document, load_case
 from thermogear.errors import CaseError
 from thermogear.gearbox.case_model import (gearbox_description_from_case, gearbox_model_from_case,
                                            gearbox_operating_point, predicted_steady_state)
-from thermogear.thermal.temperature import temperature_field_from_case
+from thermogear.temperature_source import temperature_field_from_case
 
 CASE = Path(__file__).parents[1] / "data" / "gearbox" / "fzg_gearbox.toml"
 

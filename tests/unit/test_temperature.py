@@ -11,8 +11,8 @@ import numpy as np
 import pytest
 
 from thermogear.errors import CaseError, ExtrapolationWarning, ModelAssumptionWarning, ThermogearError
-from thermogear.thermal import temperature as temperature_module
-from thermogear.thermal.temperature import (MATERIAL_MAXIMUM_C, TemperatureField, check_flank_table,
+import thermogear.temperature_source as temperature_module
+from thermogear.temperature_source import (MATERIAL_MAXIMUM_C, TemperatureField, check_flank_table,
                                             check_temperatures, temperature_field_from_case)
 
 BODY = dict(pinion_base_c=70.0, pinion_bore_c=65.0, wheel_base_c=70.0, wheel_bore_c=65.0)

@@ -9,7 +9,7 @@ import pytest
 from thermogear.case import load_case
 from thermogear.fem.verification import (UNIFORM_RISE, cached_analysis, fem_analysis, refinement_change_percent,
                                          stiffness_along_path)
-from thermogear.thermal.expansion import flank_expansion_along_line_of_action
+from thermogear.luo2020.expansion import flank_expansion_along_line_of_action
 
 GEARS = ("pinion", "wheel")
 

@@ -73,7 +73,7 @@ def stiffness(
                                help="built-in parameter set (see `thermogear cases`) or a .toml case file"),
     as_json: bool = typer.Option(False, "--json", help="one JSON object on stdout"),
     plot: Path | None = typer.Option(None, "--plot", help="write a figure (.png, .svg or .pdf)"),
-    thermal: bool = typer.Option(False, "--thermal", help="add the thermal stiffness (thermogear.thermal)"),
+    thermal: bool = typer.Option(False, "--thermal", help="add the case's thermal mesh stiffness"),
 ) -> None:
     """Elastic mesh stiffness along the path of contact and over one mesh period (per mm of face width)."""
     if plot is not None:

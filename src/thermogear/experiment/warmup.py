@@ -214,7 +214,7 @@ def state_case(case, temperature_c: float, speed_rpm: float | None = None):
     if case.thermal.model == "luo2020" and case.thermal.x_te_source == "calibrated":
         # the paper's X_te is calibrated once, at the case's own temperatures, and held through the warm-up: a
         # state near the assembly temperature has no thermal interference to calibrate against
-        from thermogear.thermal.calibration import resolve_x_te  # noqa: PLC0415
+        from thermogear.luo2020.calibration import resolve_x_te  # noqa: PLC0415
 
         changes.update({"thermal.x_te": resolve_x_te(case)[0], "thermal.x_te_source": "given",
                         "thermal.calibration_drop_percent": None})

@@ -11,7 +11,7 @@ from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
     from thermogear.case import Case
-    from thermogear.thermal.temperature import TemperatureField
+    from thermogear.temperature_source import TemperatureField
 
 
 def fem_temperature_field(case: "Case") -> "TemperatureField":

@@ -50,7 +50,7 @@ def temperature_field_from_fem(case: "Case", temperatures: dict[str, ToothTemper
     """TemperatureField (``source = "fem"``) from the two gears' FE temperatures: the pinion flank table along
     the path fitted in Γ, the wheel flank as the pinion's plus its mean offset along the path (the field holds one
     constant offset), base-circle and bore means."""
-    from thermogear.thermal.temperature import TemperatureField  # noqa: PLC0415
+    from thermogear.temperature_source import TemperatureField  # noqa: PLC0415
 
     pair = case.gear_pair
     roll = pair.roll_grid(FLANK_TABLE_POINTS)
@@ -122,7 +122,7 @@ class FemAnalysis:
     def thermal_result(self, x_te: float | None = None):
         """ThermalPairStiffness (Eqs. 13–23) with the FE tooth compliances, Eqs. 8–12 expansions of the FE field,
         the external normal load and the FE X_te."""
-        from thermogear.thermal.stiffness import thermal_pair_stiffness  # noqa: PLC0415
+        from thermogear.luo2020.stiffness import thermal_pair_stiffness  # noqa: PLC0415
 
         half = 0.5 * self.hertz
         with warnings.catch_warnings():
@@ -212,7 +212,7 @@ class FemAnalysis:
 
 
 def _expansion_analytical(case: "Case", which: str, roll, field) -> np.ndarray:
-    from thermogear.thermal.expansion import flank_expansion_along_line_of_action  # noqa: PLC0415
+    from thermogear.luo2020.expansion import flank_expansion_along_line_of_action  # noqa: PLC0415
 
     gear = getattr(case.gear_pair, which)
     gamma = case.gear_pair.gamma(roll)
@@ -232,7 +232,7 @@ def fem_analysis(case: "Case", refinement: float | None = None, settings: FemSec
     left out, and :meth:`FemAnalysis.summary` refuses the analysis."""
     import time  # noqa: PLC0415
 
-    from thermogear.thermal.expansion import flank_expansion_along_line_of_action  # noqa: PLC0415
+    from thermogear.luo2020.expansion import flank_expansion_along_line_of_action  # noqa: PLC0415
 
     settings = settings or fem_settings(case)
     refinement = settings.mesh_refinement if refinement is None else float(refinement)

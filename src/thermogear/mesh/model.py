@@ -27,7 +27,7 @@ from thermogear.mesh.model_names import MODELS, Model
 from thermogear.mesh.pair_models import PairModelBase, ThermoelasticPair, pair_model_for
 from thermogear.mesh.state import MeshState
 from thermogear.mesh_cycle import MeshCycle, MeshGrid, load_share_at, load_shares
-from thermogear.thermal.temperature import TemperatureField
+from thermogear.temperature_source import TemperatureField
 from thermogear.thermoelastic.load_sharing import loaded_transmission_error
 from thermogear.thermoelastic.mesh import ThermoelasticMesh
 

@@ -31,8 +31,8 @@ import numpy as np
 from thermogear.errors import CaseError
 from thermogear.mesh.secant_checks import secant_stiffness_drop_flag, secant_stiffness_in_nonlinear_mesh
 from thermogear.stiffness.table import pair_stiffness_at
-from thermogear.thermal.case_stiffness import thermal_pair_stiffness_at
-from thermogear.thermal.temperature import TemperatureField, temperature_field_from_case
+from thermogear.luo2020.case_stiffness import thermal_pair_stiffness_at
+from thermogear.temperature_source import TemperatureField, temperature_field_from_case
 from thermogear.thermoelastic.mesh import ThermoelasticMesh
 
 if TYPE_CHECKING:

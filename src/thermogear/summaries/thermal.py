@@ -11,11 +11,11 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from thermogear.thermal.case_stiffness import thermal_stiffness
-from thermogear.thermal.stiffness import ThermalStiffness
+from thermogear.luo2020.case_stiffness import thermal_stiffness
+from thermogear.luo2020.stiffness import ThermalStiffness
 from thermogear.mesh.model import MeshModel
-from thermogear.thermal.calibration import resolve_x_te
-from thermogear.thermal.temperature import temperature_field_from_case
+from thermogear.luo2020.calibration import resolve_x_te
+from thermogear.temperature_source import temperature_field_from_case
 
 if TYPE_CHECKING:
     from thermogear.case import Case

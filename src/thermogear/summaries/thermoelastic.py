@@ -19,7 +19,7 @@ import numpy as np
 
 from thermogear.case_keys import LUO2020_KEYS, luo2020_complete
 from thermogear.errors import ExtrapolationWarning
-from thermogear.thermal.temperature import temperature_field_from_case
+from thermogear.temperature_source import temperature_field_from_case
 from thermogear.thermoelastic.mesh import ThermoelasticMesh
 
 if TYPE_CHECKING:

@@ -22,7 +22,7 @@ from thermogear.mesh_cycle import MeshCycle, MeshGrid
 from thermogear.stiffness import scaled_compliance
 from thermogear.stiffness import table as stiffness_table
 from thermogear.stiffness.table import pair_stiffness_at
-from thermogear.thermal.temperature import TemperatureField, temperature_field_from_case
+from thermogear.temperature_source import TemperatureField, temperature_field_from_case
 from thermogear.thermoelastic.deviations import (base_pitch_deviation, equivalent_bulk_rise, flank_distortion,
                                                  tip_relief)
 from thermogear.thermoelastic.inputs import (GearInputs, HousingInputs, backlash_allowance, check_not_jammed,

@@ -17,10 +17,10 @@ from thermogear import warning_scope
 from thermogear.case import cached_per_case
 from thermogear.stiffness.potential_energy import pair_compliance
 from thermogear.stiffness.table import pair_compliance_table, tooth_compliance_at
-from thermogear.thermal.calibration import resolve_x_te
-from thermogear.thermal.case_inputs import PaperThermalInputs
-from thermogear.thermal.stiffness import (CONTACT_TOLERANCE, ThermalStiffness, check_x_te, thermal_pair_stiffness)
-from thermogear.thermal.temperature import TemperatureField, temperature_field_from_case
+from thermogear.luo2020.calibration import resolve_x_te
+from thermogear.luo2020.case_inputs import PaperThermalInputs
+from thermogear.luo2020.stiffness import (CONTACT_TOLERANCE, ThermalStiffness, check_x_te, thermal_pair_stiffness)
+from thermogear.temperature_source import TemperatureField, temperature_field_from_case
 
 if TYPE_CHECKING:
     from thermogear.case import Case

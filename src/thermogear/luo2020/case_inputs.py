@@ -13,9 +13,9 @@ from thermogear.errors import CaseError
 from thermogear.geometry import GearPair
 from thermogear.materials import Material
 from thermogear.stiffness.table import pair_stiffness_at
-from thermogear.thermal.expansion import pair_flank_expansion
-from thermogear.thermal.stiffness import pair_share_normal_load
-from thermogear.thermal.temperature import TemperatureField
+from thermogear.luo2020.expansion import pair_flank_expansion
+from thermogear.luo2020.stiffness import pair_share_normal_load
+from thermogear.temperature_source import TemperatureField
 
 if TYPE_CHECKING:
     from thermogear.case import Case

@@ -21,9 +21,9 @@ from thermogear.case import cached_per_case
 from thermogear.composition import X_TE_PROVIDERS, builtin
 from thermogear.errors import CaseError, ThermogearError
 from thermogear.stiffness.potential_energy import pair_compliance
-from thermogear.thermal.case_inputs import PaperThermalInputs
-from thermogear.thermal.stiffness import check_x_te
-from thermogear.thermal.temperature import TemperatureField, temperature_field_from_case
+from thermogear.luo2020.case_inputs import PaperThermalInputs
+from thermogear.luo2020.stiffness import check_x_te
+from thermogear.temperature_source import TemperatureField, temperature_field_from_case
 
 if TYPE_CHECKING:
     from thermogear.case import Case
