@@ -91,11 +91,10 @@ def shown_warnings() -> Iterator[list[str]]:
 def model_choice_flags(case) -> list[str]:
     """What ``run`` flags on every result of this choice of models, said by ``check`` before any solving (check =
     run): the paper's secant k_T used as the contact stiffness of the nonlinear mesh."""
-    from thermogear.mesh.plausibility import secant_stiffness_in_nonlinear_mesh  # noqa: PLC0415
+    from thermogear.mesh.pair_models import PAIR_MODELS, pair_model_name  # noqa: PLC0415
 
-    if case.thermal.model == "luo2020" and case.dynamics.mesh == "nonlinear":  # run's own condition (plausibility)
-        return [secant_stiffness_in_nonlinear_mesh(0.0)]
-    return []
+    pair_model = PAIR_MODELS.get(pair_model_name("thermal", case.thermal.model))
+    return [] if pair_model is None else pair_model.choice_flags(case.dynamics.mesh)
 
 
 def _check_study_table(case: str, loaded) -> None:

@@ -78,6 +78,12 @@ class PairModelBase:
     #: True for a thermal model: temperatures from the case's field, the friction oil at the flank temperature.
     thermal: ClassVar[bool] = True
 
+    @classmethod
+    def choice_flags(cls, mesh: str) -> list[str]:
+        """What every result of this model flags under the ``[dynamics] mesh`` kind, known before any solving
+        (``check`` says it as ``run`` will): nothing here."""
+        return []
+
     @property
     def has_profile_modifications(self) -> bool:
         gears = self.case.gears_input
@@ -184,6 +190,11 @@ class Luo2020Pair(PairModelBase):
     thermal distortion is not a deviation (the paper's model has none)."""
 
     name: ClassVar[str] = "luo2020"
+
+    @classmethod
+    def choice_flags(cls, mesh: str) -> list[str]:
+        """The secant k_T at the static load is no contact stiffness once the teeth separate (nonlinear mesh)."""
+        return [secant_stiffness_in_nonlinear_mesh(0.0)] if mesh == "nonlinear" else []
 
     @property
     def stiffness_depends_on_load(self) -> bool:
