@@ -115,6 +115,7 @@ STEADY = ("periodic", "subharmonic")
 def _model_defects(response) -> list[str]:
     """The defect classes of one model's response (empty: a clean result, valid or labelled)."""
     from thermogear.cli.run import model_json, response_status
+    from thermogear.dynamics.metric_results import typed_metrics
 
     metrics = response.metrics
     kind = metrics.get("response", "periodic")
@@ -125,7 +126,7 @@ def _model_defects(response) -> list[str]:
             defects.append("NaN called valid: " + ", ".join(bad))
         if kind not in STEADY:
             defects.append(f"'{kind}' response called valid")
-    elif response_status(metrics) == "valid":
+    elif response_status(typed_metrics(metrics)) == "valid":
         defects.append("invalid point with status valid")
     try:
         payload = model_json(response)

@@ -130,3 +130,22 @@ def test_warm_started_periodic_solves_give_the_reference_kv():
     warm_kv = np.array([state.kv for state in warm.states], dtype=float)
     afresh_kv = np.array([state.kv for state in afresh.states], dtype=float)
     assert np.all(np.isfinite(warm_kv)) and np.max(np.abs(warm_kv / afresh_kv - 1.0)) < BOUND
+
+
+def test_a_tooth_near_its_pointed_limit_falls_back_to_the_quadrature():
+    # found by the random-pair check: z 48 with x = 0.933 (a tip nearly pointed); the interpolant's range, widened
+    # by one angle step past the path, reached beyond the tip where the compliance is not defined, and the load
+    # failed with a ValueError. The warm table must then be the quadrature's own, equal to rounding.
+    from thermogear.case import case_from_document
+
+    case = case_from_document({
+        "case": {"name": "pointed"},
+        "gears": {"module_mm": 3.2955, "face_width_mm": 23.296, "pinion": {"teeth": 48, "profile_shift": 0.933},
+                  "wheel": {"teeth": 221, "profile_shift": 0.078}, "backlash_normal_um": 175.59},
+        "operating": {"speed_rpm": 1638.815, "torque_nm": 136.4},
+        "lubricant": {"name": "iso_vg_100_mineral", "operating_temperature_c": 58.7},
+        "temperature": {"bulk_c": 76.9}})
+    pair = operating_gear_pair(case.gear_pair, *STATES[1])
+    roll = np.linspace(pair.path_points["A"], pair.path_points["E"], 301)
+    assert np.max(np.abs(scaled_compliance.pair_stiffness_at(pair, case.material, roll)
+                         / stiffness_table.pair_stiffness_at(pair, case.material, roll) - 1.0)) < BOUND

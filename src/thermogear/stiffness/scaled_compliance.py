@@ -97,7 +97,10 @@ def _interpolant(key: tuple, poisson_ratio: float, low: float, high: float) -> T
 
     # check points: the midpoints between Chebyshev points of the highest degree tried, and the ends
     checks = 0.5 * (low + high) + 0.5 * (high - low) * np.cos(np.linspace(0.0, math.pi, CHECK_POINT_COUNT))
-    reference = direct(checks)
+    try:
+        reference = direct(checks)
+    except ValueError:  # the margin of the range reaches past the tooth (a short or pointed tooth): the caller
+        return None  # evaluates the quadrature at its own load angles, which lie on the tooth
     for degree in DEGREES:
         series = np.polynomial.Chebyshev.interpolate(direct, degree, domain=[low, high])
         error = float(np.max(np.abs(series(checks) / reference - 1.0)))
