@@ -72,7 +72,9 @@ BODY = "pinion_base_c = 76.0\npinion_bore_c = 72.0\nwheel_base_c = 76.0\nwheel_b
      None, "temperature.fit_degree"),
     ('model = "tabulated"\ngamma = [-0.3, 0.0, 0.3]\nflank_c = [81, 77, 80]\nfit_degree = 2\n' + BODY,
      None, "does not span the path"),
-    ('model = "uniform"\nbulk_c = 10.0\n', None, "below the stress-free reference"),
+    ('model = "uniform"\nbulk_c = 10.0\n', 'model = "luo2020"\nx_te = 1.0\n',
+     "under thermal.model = 'luo2020'"),
+    ('model = "uniform"\nbulk_c = -41.0\n', None, "under thermal.model = 'thermoelastic'"),
     ('model = "uniform"\nbulk_c = 250.0\n', None, "material data"),
     ('model = "uniform"\nbulk_c = 70.0\n', 'x_te_source = "given"\nx_te = -0.5\n', "thermal.x_te"),
     # the paper's model needs X_te (under the default thermo-elastic model the key only draws a warning that it has
