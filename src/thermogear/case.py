@@ -237,8 +237,8 @@ def _check_thermal_inputs(case: "Case") -> None:
         return
     if section.x_te_source == "given" and section.x_te is None:
         raise CaseError("thermal.x_te", None, ">= 0 (or x_te_source = 'calibrated')",
-                        "the paper's thermal stiffness (Luo & Li 2020 Eqs. 13–23) needs the thermal-load "
-                        "correction factor X_te; give thermal.x_te or calibrate it")
+                        "thermal.model = 'luo2020', the paper's thermal stiffness (Luo & Li 2020 Eqs. 13–23), needs "
+                        "the thermal-load correction factor X_te; give thermal.x_te or calibrate it")
     if section.x_te_source == "calibrated" and section.x_te is not None:
         raise CaseError("thermal.x_te", section.x_te, "absent with x_te_source = 'calibrated'",
                         "X_te is either given or calibrated; remove one of them")

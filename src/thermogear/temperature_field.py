@@ -342,7 +342,8 @@ def _tabulated_field(section, directory: Path | None) -> TemperatureField:
     if section.pinion_base_c is None or section.pinion_bore_c is None:
         name = "pinion_base_c" if section.pinion_base_c is None else "pinion_bore_c"
         raise CaseError(f"temperature.{name}", None, "a temperature in °C",
-                        "the base-circle expansion (Luo & Li Eq. 10) needs the base-circle and bore temperatures")
+                        "both thermal models (thermoelastic and luo2020) size each gear by its base-circle expansion "
+                        "(the annulus of Luo & Li Eq. 10), which needs the base-circle and bore temperatures")
     wheel = {}
     for part in ("base", "bore"):
         value = getattr(section, f"wheel_{part}_c")

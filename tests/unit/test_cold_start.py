@@ -68,3 +68,17 @@ def test_the_papers_model_refuses_a_cold_start_by_name():
         load_case("fzg_type_c").with_changes(**{"thermal.model": "luo2020", "thermal.x_te": 1.0,
                                                  "temperature.model": "uniform", "temperature.bulk_c": 0.0})
     assert "thermal.model = 'luo2020'" in str(caught.value)
+
+
+@pytest.mark.parametrize("changes, key, model", [
+    # the base-circle sizing serves both models: the message says so rather than citing the paper alone
+    ({"temperature": {"model": "tabulated", "gamma": [-1.5, 0.0, 1.5], "flank_c": [60.0, 60.0, 60.0],
+                      "fit_degree": 2}}, "temperature.pinion_base_c", "thermoelastic and luo2020"),
+    ({"thermal": {"model": "luo2020", "x_te_source": "given"}}, "thermal.x_te", "thermal.model = 'luo2020'"),
+])
+def test_refusals_citing_the_paper_name_the_model_they_apply_to(changes, key, model):
+    from thermogear import load_case
+
+    with pytest.raises(CaseError) as caught:
+        load_case("fzg_type_c").with_changes(**changes)
+    assert caught.value.key == key and model in str(caught.value), str(caught.value)
