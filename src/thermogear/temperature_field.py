@@ -33,8 +33,8 @@ MATERIAL_MAXIMUM_C = 200.0
 #: Lowest tooth temperature the thermo-elastic model evaluates [°C]: the coldest start the housing range allows
 #: (schema.housing.HOUSING_TEMPERATURE_RANGE_C). Below the assembly temperature the gears contract uniformly by
 #: λ·ΔT (ΔT < 0) and E(T) rises along the chord of Roark's table (fitted on 21–204 °C, so taken 61 K below its
-#: data at −40 °C, a third of its span; ferritic gear steels stiffen steadily on cooling, with no transformation
-#: in that range). Colder, the room-temperature constants are not a description of the gear any more.
+#: data at −40 °C, a third of its span: an extrapolation; ASME B31.3 Table C-6, the table's source, also lists E
+#: below room temperature, not yet compared here). Colder, the constants are not a description of the gear.
 MATERIAL_MINIMUM_C = -40.0
 
 #: Highest temperature of the usual viscosity data of a gear oil (ISO 3448 data sheets give 40 and 100 °C);
