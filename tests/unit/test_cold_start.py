@@ -82,3 +82,12 @@ def test_refusals_citing_the_paper_name_the_model_they_apply_to(changes, key, mo
     with pytest.raises(CaseError) as caught:
         load_case("fzg_type_c").with_changes(**changes)
     assert caught.value.key == key and model in str(caught.value), str(caught.value)
+
+
+def test_the_coldest_gear_is_the_coldest_start_elsewhere():
+    """One cold limit: the gears' (temperature_field), the housing's (schema) and the gearbox warm-up's start."""
+    from thermogear.gearbox.model import COLDEST_START_C
+    from thermogear.schema.housing import HOUSING_TEMPERATURE_RANGE_C
+    from thermogear.temperature_field import MATERIAL_MINIMUM_C, THERMOELASTIC_LIMITS
+
+    assert MATERIAL_MINIMUM_C == HOUSING_TEMPERATURE_RANGE_C[0] == COLDEST_START_C == THERMOELASTIC_LIMITS.lowest_c
