@@ -5,6 +5,7 @@ from __future__ import annotations
 import importlib
 import os
 import tempfile
+import textwrap
 import warnings
 from pathlib import Path
 
@@ -81,7 +82,11 @@ def _print_wrapped(renderables: list) -> None:
     width = min(max(widest, 1), TEXT_WIDTH_MAXIMUM) if tables else TEXT_WIDTH_MAXIMUM
     width = min(width, console.width)
     for item in renderables:
-        console.print(item, width=None if isinstance(item, Table) else width)
+        if isinstance(item, Table):
+            console.print(item)
+        else:  # at spaces, never inside a word or a number; no trailing blanks
+            console.print(textwrap.fill(str(item), width, break_long_words=False, break_on_hyphens=False),
+                          soft_wrap=True)
 
 
 @app.command()
