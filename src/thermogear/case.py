@@ -33,7 +33,7 @@ from thermogear.schema import (CaseFile, DampingSection, DrivetrainSection, Dyna
                                GearsSection, HousingSection, LubricantSection, MaterialSection, TemperatureSection,
                                ThermalSection)
 from thermogear.schema.drivetrain import check_drivetrain_fits_gears
-from thermogear.temperature_field import (check_temperatures, default_bulk_temperature,
+from thermogear.temperature_field import (TEMPERATURE_LIMITS, check_temperatures, default_bulk_temperature,
                                          temperature_field_from_section)
 from thermogear.text_files import is_existing_file, path_exists, read_user_text
 from thermogear.thermoelastic.inputs import check_thermoelastic_inputs
@@ -190,7 +190,7 @@ def check_case(case: "Case") -> None:
     Section-local checks run in the schema (values, lubricant name and viscosity points, the flank table's
     values); here run the checks that need the gear pair or several sections: the temperature field over the path
     of contact (:func:`~thermogear.temperature_field.check_temperatures`: table sorted and matched, fit degree,
-    temperatures between reference_c and the material limit) and the X_te the paper's thermal model needs.
+    temperatures within what the case's thermal model evaluates) and the X_te the paper's thermal model needs.
     Warnings of these checks are left to the stage that uses the value (it issues them once, there)."""
     with warning_scope.ignored():
         _check_temperature_field(case)
@@ -227,7 +227,8 @@ def _check_temperature_field(case: "Case") -> None:
     field = temperature_field_from_section(section, case.directory)
     pair = case.gear_pair
     points = pair.path_points
-    check_temperatures(field, float(pair.gamma(points["A"])), float(pair.gamma(points["E"])))
+    check_temperatures(field, float(pair.gamma(points["A"])), float(pair.gamma(points["E"])),
+                       limits=TEMPERATURE_LIMITS[case.thermal.model])
 
 
 def _check_thermal_inputs(case: "Case") -> None:
@@ -236,8 +237,8 @@ def _check_thermal_inputs(case: "Case") -> None:
         return
     if section.x_te_source == "given" and section.x_te is None:
         raise CaseError("thermal.x_te", None, ">= 0 (or x_te_source = 'calibrated')",
-                        "the paper's thermal stiffness (Luo & Li 2020 Eqs. 13–23) needs the thermal-load "
-                        "correction factor X_te; give thermal.x_te or calibrate it")
+                        "thermal.model = 'luo2020', the paper's thermal stiffness (Luo & Li 2020 Eqs. 13–23), needs "
+                        "the thermal-load correction factor X_te; give thermal.x_te or calibrate it")
     if section.x_te_source == "calibrated" and section.x_te is not None:
         raise CaseError("thermal.x_te", section.x_te, "absent with x_te_source = 'calibrated'",
                         "X_te is either given or calibrated; remove one of them")

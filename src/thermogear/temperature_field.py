@@ -7,7 +7,9 @@ at load time (``thermogear check`` refuses what ``run`` would refuse). :mod:`the
 wires it to a :class:`~thermogear.case.Case` (and to the finite-element provider) and re-exports it.
 
 Temperatures are °C here; the expansion uses the rises above ``reference_c`` (Luo & Li Eq. 10 holds for rises
-above the stress-free state, which the paper does not say).
+above the stress-free state, which the paper does not say). How cold the gears may be depends on the thermal
+model (:class:`TemperatureLimits`): the thermo-elastic model evaluates contraction below the assembly temperature
+(a cold start), the paper's k_T does not.
 """
 
 from __future__ import annotations
@@ -27,6 +29,13 @@ from thermogear.text_files import is_existing_file, read_user_text
 #: expansion coefficient; case-carburised and through-hardened gear steels are tempered at about 150–200 °C, above
 #: which they soften and those constants no longer describe the gear.
 MATERIAL_MAXIMUM_C = 200.0
+
+#: Lowest tooth temperature the thermo-elastic model evaluates [°C]: the coldest start the housing range allows
+#: (schema.housing.HOUSING_TEMPERATURE_RANGE_C). Below the assembly temperature the gears contract uniformly by
+#: λ·ΔT (ΔT < 0) and E(T) rises along the chord of Roark's table (fitted on 21–204 °C, so taken 61 K below its
+#: data at −40 °C, a third of its span: an extrapolation; ASME B31.3 Table C-6, the table's source, also lists E
+#: below room temperature, not yet compared here). Colder, the constants are not a description of the gear.
+MATERIAL_MINIMUM_C = -40.0
 
 #: Highest temperature of the usual viscosity data of a gear oil (ISO 3448 data sheets give 40 and 100 °C);
 #: used when the case names a built-in oil whose own range is not known to this module [°C].
@@ -159,6 +168,38 @@ def check_flank_table(gamma, flank_c, fit_degree: int, key: str = "temperature")
     return gamma, flank_c
 
 
+@dataclass(frozen=True)
+class TemperatureLimits:
+    """Range of gear temperatures a thermal model can evaluate: ``lowest_c`` [°C] (``None``: the stress-free
+    reference temperature itself) up to :data:`MATERIAL_MAXIMUM_C`; ``model`` names it in a refusal and
+    ``reason`` says why it stops there."""
+
+    model: str
+    lowest_c: float | None
+    reason: str
+
+
+#: The thermo-elastic model (thermal.model = 'thermoelastic'): uniform expansion or contraction of gears and
+#: housing by λ·(T − reference), E(T), backlash and jamming hold on either side of the assembly temperature.
+THERMOELASTIC_LIMITS = TemperatureLimits(
+    "thermal.model = 'thermoelastic'", MATERIAL_MINIMUM_C,
+    f"below {MATERIAL_MINIMUM_C:g} °C the material data (E(T) of Roark's table, a constant expansion coefficient) "
+    "are extrapolated too far to describe the gear")
+
+#: The paper's k_T (thermal.model = 'luo2020'): Luo & Li Eq. 13 turns a rise into the load p_t = k_e (Δ_t1 + Δ_t2)
+#: of fully restrained expansion, which the teeth carry in compression; a contraction (Δ_t < 0) would make it a
+#: tensile load that meshing teeth cannot carry, and Eq. 17 would return a mesh stiffer than the cold one.
+LUO2020_LIMITS = TemperatureLimits(
+    "thermal.model = 'luo2020'", None,
+    "the paper's thermal stiffness (Luo & Li Eqs. 13–17) describes the restrained expansion of heated teeth; a "
+    "contraction would make its thermal load p_t = k_e (Δ_t1 + Δ_t2) tensile, which meshing teeth cannot carry "
+    "(use thermal.model = 'thermoelastic' for a cold start, or lower temperature.reference_c if the gears were "
+    "assembled colder)")
+
+#: Limits per value of ``thermal.model``.
+TEMPERATURE_LIMITS = {"thermoelastic": THERMOELASTIC_LIMITS, "luo2020": LUO2020_LIMITS}
+
+
 def fit_flank_polynomial(gamma, flank_c, fit_degree: int) -> np.polynomial.Polynomial:
     """Least-squares polynomial T(Γ) of the given degree (Luo & Li 2020 §2.1.5: "fitted by a high-order
     polynomial"), on a scaled domain for conditioning. Raises CaseError if the fit is rank deficient."""
@@ -174,12 +215,13 @@ def fit_flank_polynomial(gamma, flank_c, fit_degree: int) -> np.polynomial.Polyn
 
 
 def check_temperatures(field: TemperatureField, gamma_start: float, gamma_end: float,
-                       lubricant_maximum_c: float | None = None, count: int = 401) -> None:
-    """Check a temperature field over the path of contact [Γ_A, Γ_E]:
+                       lubricant_maximum_c: float | None = None, count: int = 401, *,
+                       limits: TemperatureLimits = THERMOELASTIC_LIMITS) -> None:
+    """Check a temperature field over the path of contact [Γ_A, Γ_E] for the thermal model of ``limits``:
 
     - a tabulated flank curve must span the path (no silent extrapolation);
-    - every temperature (table, fitted curve on the path, base circles, bores) must be at or above the
-      reference (the model describes heating from the stress-free state) and at most MATERIAL_MAXIMUM_C;
+    - every temperature (table, fitted curve on the path, base circles, bores) must be at or above
+      ``limits.lowest_c`` (the reference temperature where that is None) and at most MATERIAL_MAXIMUM_C;
     - a fit that overshoots its table (polynomial wiggle) is reported (ModelAssumptionWarning);
     - a flank temperature above ``lubricant_maximum_c`` is reported (ExtrapolationWarning: the oil's viscosity
       law is used beyond its data by the damping model).
@@ -209,15 +251,17 @@ def check_temperatures(field: TemperatureField, gamma_start: float, gamma_end: f
         values["temperature.flank_c"] = ("the flank temperature (table and fit)",
                                          min(min(field.table_flank_c), float(flank.min())),
                                          max(max(field.table_flank_c), float(flank.max())))
+    floor = field.reference_c if limits.lowest_c is None else limits.lowest_c
+    floor_text = (f">= reference_c = {field.reference_c:g} °C" if limits.lowest_c is None else f">= {floor:g} °C")
     for key, (name, lowest, highest) in values.items():
         key = "temperature.bulk_c" if field.source == "uniform" else key
         if not (math.isfinite(lowest) and math.isfinite(highest)):
             raise CaseError(key, lowest, "finite", "a temperature is NaN or infinite")
-        if lowest < field.reference_c:
-            raise CaseError(key, round(lowest, 4), f">= reference_c = {field.reference_c} °C",
-                            f"{name} is below the stress-free reference temperature; the thermal stiffness model "
-                            "(Luo & Li Eqs. 8–23) describes expansion from heating; lower temperature.reference_c "
-                            "if the gears were assembled colder")
+        if lowest < floor:
+            below = ("below the stress-free reference temperature" if limits.lowest_c is None else
+                     f"below what {limits.model} evaluates")
+            raise CaseError(key, round(lowest, 4), f"{floor_text} under {limits.model}",
+                            f"{name} is {below}: {limits.reason}")
         if highest > MATERIAL_MAXIMUM_C:
             raise CaseError(key, round(highest, 4), f"<= {MATERIAL_MAXIMUM_C} °C",
                             f"{name} is above what the material data cover (room-temperature E, ν and a constant "
@@ -298,7 +342,8 @@ def _tabulated_field(section, directory: Path | None) -> TemperatureField:
     if section.pinion_base_c is None or section.pinion_bore_c is None:
         name = "pinion_base_c" if section.pinion_base_c is None else "pinion_bore_c"
         raise CaseError(f"temperature.{name}", None, "a temperature in °C",
-                        "the base-circle expansion (Luo & Li Eq. 10) needs the base-circle and bore temperatures")
+                        "both thermal models (thermoelastic and luo2020) size each gear by its base-circle expansion "
+                        "(the annulus of Luo & Li Eq. 10), which needs the base-circle and bore temperatures")
     wheel = {}
     for part in ("base", "bore"):
         value = getattr(section, f"wheel_{part}_c")
@@ -344,5 +389,6 @@ def read_flank_table_csv(name: str, directory: Path | None = None) -> tuple[list
 
 
 __all__ = ["DEFAULT_LUBRICANT_DATA_MAXIMUM_C", "FIT_OVERSHOOT_ABSOLUTE_K", "FIT_OVERSHOOT_RELATIVE", "GAMMA_SPAN_TOLERANCE",
-           "MATERIAL_MAXIMUM_C", "TemperatureField", "check_flank_table", "check_temperatures",
+           "LUO2020_LIMITS", "MATERIAL_MAXIMUM_C", "MATERIAL_MINIMUM_C", "TEMPERATURE_LIMITS", "THERMOELASTIC_LIMITS",
+           "TemperatureField", "TemperatureLimits", "check_flank_table", "check_temperatures",
            "fit_flank_polynomial", "read_flank_table_csv", "temperature_field_from_section"]

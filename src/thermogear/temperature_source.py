@@ -27,6 +27,7 @@ from thermogear.errors import ModelAssumptionWarning, ThermogearError
 # case loader can run them at load time; re-exported here, where the rest of the thermal model looks for them.
 from thermogear.temperature_field import (DEFAULT_LUBRICANT_DATA_MAXIMUM_C, FIT_OVERSHOOT_ABSOLUTE_K,  # noqa: F401
                                           FIT_OVERSHOOT_RELATIVE, GAMMA_SPAN_TOLERANCE, MATERIAL_MAXIMUM_C,
+                                          MATERIAL_MINIMUM_C, TEMPERATURE_LIMITS, TemperatureLimits,
                                           TemperatureField, check_flank_table, check_temperatures,
                                           fit_flank_polynomial, read_flank_table_csv,
                                           temperature_field_from_section)
@@ -63,7 +64,8 @@ def temperature_field_from_case(case: "Case") -> TemperatureField:
                                   "model is not registered (its module is not installed); use "
                                   "'uniform' or 'tabulated'")
         field = provider(case)
-    check_temperatures(field, gamma_start, gamma_end, _lubricant_data_maximum_c(case))
+    check_temperatures(field, gamma_start, gamma_end, _lubricant_data_maximum_c(case),
+                       limits=TEMPERATURE_LIMITS[case.thermal.model])
     return field
 
 

@@ -90,3 +90,20 @@ def test_the_calibrated_paper_case_is_told_its_calibration(run_json):
     assert not any("not predictive" in text for text in notes)
     # E(T) explains at most |β_E|·ΔT of the drop; the paper's 14.52 % drop is several times that
     assert 0.0 < data["interpretation"]["youngs_modulus_change_limit_percent"] < 5.0
+
+
+def test_a_cold_case_is_told_there_is_no_x_te_to_verify(tmp_path):
+    """Oil at −30 °C, assembled at 20 °C: the FE teeth contract; the paper's X_te (heating only) is not read as a
+    bad thermal.x_te (issue 28) but refused once, naming the model it belongs to."""
+    from thermogear.case import parameter_set_path
+
+    text = parameter_set_path("fzg_type_c").read_text(encoding="utf-8")
+    assert "operating_temperature_c = 60.0" in text
+    path = tmp_path / "cold.toml"
+    path.write_text(text.replace("operating_temperature_c = 60.0", "operating_temperature_c = -30.0"),
+                    encoding="utf-8")
+    result = subprocess.run([sys.executable, "-m", "thermogear", "fem", str(path), "--no-refinement", "--json"],
+                            capture_output=True, text=True)
+    assert result.returncode == 2, (result.stdout[-300:], result.stderr)
+    message = " ".join(result.stderr.split())
+    assert "no X_te to verify" in message and "thermal.model = 'luo2020'" in message and "Traceback" not in message

@@ -72,7 +72,9 @@ BODY = "pinion_base_c = 76.0\npinion_bore_c = 72.0\nwheel_base_c = 76.0\nwheel_b
      None, "temperature.fit_degree"),
     ('model = "tabulated"\ngamma = [-0.3, 0.0, 0.3]\nflank_c = [81, 77, 80]\nfit_degree = 2\n' + BODY,
      None, "does not span the path"),
-    ('model = "uniform"\nbulk_c = 10.0\n', None, "below the stress-free reference"),
+    ('model = "uniform"\nbulk_c = 10.0\n', 'model = "luo2020"\nx_te = 1.0\n',
+     "under thermal.model = 'luo2020'"),
+    ('model = "uniform"\nbulk_c = -41.0\n', None, "under thermal.model = 'thermoelastic'"),
     ('model = "uniform"\nbulk_c = 250.0\n', None, "material data"),
     ('model = "uniform"\nbulk_c = 70.0\n', 'x_te_source = "given"\nx_te = -0.5\n', "thermal.x_te"),
     # the paper's model needs X_te (under the default thermo-elastic model the key only draws a warning that it has
@@ -95,3 +97,35 @@ def test_csv_table_relative_to_the_case_file(tmp_path):
     assert result.returncode == 0, result.stderr
     thermal = json.loads(result.stdout)["thermal"]
     assert thermal["temperature"]["source"] == "tabulated (csv)"
+
+
+def test_assumption_lines_wrap_to_the_table_width():
+    """The thermo-elastic assumptions (one ~260-character sentence each) wrap at words to ≤ 120 characters."""
+    result = run("stiffness", "luo2019", "--thermal")
+    assert result.returncode == 0, result.stderr
+    lines = result.stdout.splitlines()
+    assert max(len(line) for line in lines) <= 120, max(lines, key=len)
+    text_lines = [line for line in lines if line and not line[0].isspace() and line[0] not in "│┃┏┡└"]
+    assert not any(line.endswith(" ") for line in text_lines)  # (rich centres table titles with blanks)
+    text = " ".join(" ".join(line.split()) for line in lines)
+    # the whole sentence is there, only broken between words
+    assert "E(T) = E(20 °C)·[1 + β_E (T − 20 °C)], β_E pinion" in text and "Roark's E(T) table, 21–204 °C)" in text
+
+
+def test_a_cold_start_runs_under_the_default_model(tmp_path):
+    """Issue 28: gears at −30 °C, assembled at 20 °C, in the (default) cast-iron housing at the oil's −30 °C."""
+    path = _case_file(tmp_path, 'model = "uniform"\nbulk_c = -30.0\n', "expansion_model = \"consistent\"\n")
+    path.write_text(path.read_text(encoding="utf-8").replace("operating_temperature_c = 60.0",
+                                                             "operating_temperature_c = -30.0"), encoding="utf-8")
+    result = run("stiffness", str(path), "--thermal", "--json")
+    assert result.returncode == 0 and "Traceback" not in result.stderr, result.stderr
+    thermal = json.loads(result.stdout)["thermal"]
+    assert thermal["model"] == "thermoelastic"
+    assert thermal["temperatures_c"]["housing"] == -30.0 and thermal["temperatures_c"]["bulk"]["pinion"] == -30.0
+    # the cold teeth are stiffer: E(T) rises as T falls (β_E < 0)
+    assert thermal["youngs_modulus_gpa"]["pinion"] > thermal["elastic"]["youngs_modulus_gpa"]["pinion"]
+    # cast iron (11.4e-6 1/K) contracts a little less than the steel gears (11.5e-6): the backlash opens slightly,
+    # ε_g·j_bn + 2·a·sin α_w·(ε_h − ε_g) = −0.11 + 0.32 ≈ +0.2 μm at ΔT = −50 K; the bounds leave a factor 5 either
+    # way and exclude the −40 μm of an aluminium housing (tests/unit/test_cold_start.py)
+    change = thermal["operating"]["backlash_normal_um"] - thermal["cold"]["backlash_normal_um"]
+    assert 0.04 < change < 1.0, change

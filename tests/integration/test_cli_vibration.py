@@ -65,6 +65,17 @@ def test_wav_with_scale_and_rate_from_header(tmp_path):
     assert payload["peaks"][0]["amplitude"] == pytest.approx(20 * 0.25 * 32767 / 32768, rel=0.01)
 
 
+def test_wav_cut_short_says_so_once_in_thermogears_format(tmp_path):
+    path = tmp_path / "acc.wav"
+    wavfile.write(path, 8000, np.round(8000 * np.sin(0.3 * np.arange(8000))).astype(np.int16))
+    path.write_bytes(path.read_bytes()[:8023])  # half the data (a copy interrupted), mid-sample
+    completed = run(str(path))
+    assert completed.returncode == 0, completed.stderr
+    lines = [line for line in completed.stderr.splitlines() if line.strip()]
+    assert len(lines) == 1 and lines[0].startswith("warning: ") and "cut short" in lines[0], completed.stderr
+    assert "EOF" not in completed.stderr and "WavFileWarning" not in completed.stderr
+
+
 def test_human_readable_output(rig_csv):
     completed = run(str(rig_csv), "--band", "300:400")
     assert completed.returncode == 0, completed.stderr

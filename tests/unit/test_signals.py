@@ -123,6 +123,33 @@ def test_wav_full_scale_of_other_types():
     np.testing.assert_allclose(wav_full_scale(np.array([0.25], dtype=np.float32)), [0.25])
 
 
+def test_wav_cut_short_is_read_with_one_warning_of_thermogear(tmp_path):
+    """A WAV whose data ends before its header's length: the frames present, one warning in thermogear's words
+    (how many frames the header announced, how many there are), none of SciPy's."""
+    import warnings
+
+    from thermogear.errors import ModelAssumptionWarning
+
+    rate = 8000
+    path = tmp_path / "acc.wav"
+    wavfile.write(path, rate, (np.arange(1000) % 100).astype(np.int16))
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        complete = read_wav_signal(path)
+    assert complete.values.size == 1000 and not caught  # a whole file: nothing to say
+    data = path.read_bytes()
+    path.write_bytes(data[:44 + 2 * 600 + 1])  # 44-byte header, 600 int16 frames and one byte of the next
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        short = read_wav_signal(path)
+    assert short.values.size == 600
+    np.testing.assert_array_equal(short.values, complete.values[:600])
+    assert [warning.category for warning in caught] == [ModelAssumptionWarning], [str(w.message) for w in caught]
+    message = str(caught[0].message)
+    assert "cut short" in message and "announces 1000 frames" in message and "holds 600" in message
+    assert "EOF" not in message
+
+
 @pytest.mark.filterwarnings("ignore::scipy.io.wavfile.WavFileWarning")
 def test_broken_wav_is_refused(tmp_path):
     path = tmp_path / "broken.wav"

@@ -12,6 +12,7 @@ import pytest
 
 from thermogear.errors import CaseError, ExtrapolationWarning, ModelAssumptionWarning, ThermogearError
 import thermogear.temperature_source as temperature_module
+from thermogear.temperature_field import LUO2020_LIMITS, MATERIAL_MINIMUM_C, THERMOELASTIC_LIMITS
 from thermogear.temperature_source import (MATERIAL_MAXIMUM_C, TemperatureField, check_flank_table,
                                             check_temperatures, temperature_field_from_case)
 
@@ -85,20 +86,35 @@ def test_table_must_span_the_path():
     ({"wheel_base_c": 10.0}, "temperature.wheel_base_c"),
     ({"wheel_flank_offset_c": -70.0}, "temperature.wheel_flank_offset_c"),
 ])
-def test_below_reference_is_refused(changes, key):
+def test_below_reference_is_refused_by_the_papers_model(changes, key):
     arguments = dict(BODY, **{k: v for k, v in changes.items() if k in BODY})
     offset = changes.get("wheel_flank_offset_c", 0.0)
     field = TemperatureField.from_table([-1, 0, 1], [80, 78, 80], 2, wheel_flank_offset_c=offset, **arguments)
     with pytest.raises(CaseError, match="below the stress-free reference") as caught:
-        check_temperatures(field, -0.5, 0.5)
+        check_temperatures(field, -0.5, 0.5, limits=LUO2020_LIMITS)
     assert caught.value.key == key
+    assert "thermal.model = 'luo2020'" in str(caught.value) and "Eqs. 13–17" in str(caught.value)
+    check_temperatures(field, -0.5, 0.5, limits=THERMOELASTIC_LIMITS)  # contraction: the thermo-elastic model runs
 
 
-def test_flank_table_below_reference_is_refused():
+def test_flank_table_below_reference_is_refused_by_the_papers_model():
     field = TemperatureField.from_table([-1, 0, 1], [30, 15, 30], 2, **BODY)
     with pytest.raises(CaseError, match="below the stress-free reference") as caught:
-        check_temperatures(field, -0.5, 0.5)
+        check_temperatures(field, -0.5, 0.5, limits=LUO2020_LIMITS)
     assert caught.value.key == "temperature.flank_c"
+
+
+@pytest.mark.parametrize("bulk_c", [0.0, -30.0, MATERIAL_MINIMUM_C])
+def test_cold_start_is_evaluated_by_the_thermoelastic_model(bulk_c):
+    """Gears colder than their assembly (issue 28: down to −40 °C) contract; the default model evaluates that."""
+    check_temperatures(TemperatureField.uniform(bulk_c, reference_c=20.0), -0.5, 0.5)
+
+
+def test_below_the_material_data_is_refused_naming_the_model():
+    field = TemperatureField.uniform(MATERIAL_MINIMUM_C - 0.5, reference_c=20.0)
+    with pytest.raises(CaseError, match="thermal.model = 'thermoelastic'") as caught:
+        check_temperatures(field, -0.5, 0.5)
+    assert caught.value.key == "temperature.bulk_c" and "Luo & Li" not in str(caught.value)
 
 
 def test_above_material_data_is_refused():

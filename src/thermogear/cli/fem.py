@@ -14,6 +14,7 @@ from rich.table import Table
 from thermogear.case import load_case
 from thermogear.cli.app import app, console, print_json
 from thermogear.cli.console import step_progress
+from thermogear.errors import CaseError
 
 
 def fem_summary(case_name: str, refine: bool = True, progress=None) -> tuple[dict, object]:
@@ -28,6 +29,7 @@ def fem_summary(case_name: str, refine: bool = True, progress=None) -> tuple[dic
     case = load_case(case_name)
     advance(FEM_STEPS[0])
     analysis = cached_analysis(case)
+    _check_heated(analysis.temperature_field)
     summary = analysis.summary()
     if refine:
         advance(FEM_STEPS[1])
@@ -43,6 +45,21 @@ def fem_summary(case_name: str, refine: bool = True, progress=None) -> tuple[dic
         summary["paper"] = {"flank_temperature_c": list(reference.flank_temperature_c),
                             "stiffness_drop_percent": dict(reference.stiffness_drop_percent)}
     return summary, analysis
+
+
+def _check_heated(field) -> None:
+    """Refuse FE tooth temperatures below the assembly temperature: the verification reads the paper's X_te
+    (thermal.model = 'luo2020', Luo & Li Eqs. 13–17), which describes the restrained expansion of heated teeth; a
+    contracted tooth gives it no meaning (it came out negative and was refused as a bad thermal.x_te)."""
+    flank = [*field.table_flank_c, *(value + field.wheel_flank_offset_c for value in field.table_flank_c)]
+    lowest = min(*flank, field.pinion_base_c, field.pinion_bore_c, field.wheel_base_c, field.wheel_bore_c)
+    if lowest < field.reference_c:
+        raise CaseError("temperature.reference_c", field.reference_c, f"<= {lowest:.1f} °C, the coldest FE tooth "
+                        "temperature", "thermogear fem verifies the paper's thermal chain (X_te of thermal.model = "
+                        "'luo2020', Luo & Li Eqs. 13–17), which describes heated teeth expanding from their assembly; "
+                        "these teeth (oil at lubricant.operating_temperature_c) are colder than it, so there is no "
+                        "X_te to verify (stiffness --thermal and run evaluate the cold pair with the thermo-elastic "
+                        "model)")
 
 
 #: The steps of `thermogear fem` as its progress display names them (the refinement study takes most of the time).

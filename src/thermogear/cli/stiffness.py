@@ -5,6 +5,7 @@ from __future__ import annotations
 import importlib
 import os
 import tempfile
+import textwrap
 import warnings
 from pathlib import Path
 
@@ -21,6 +22,10 @@ from thermogear.summaries.stiffness import POINTS, plot_stiffness, stiffness_sum
 
 
 PLOT_SUFFIXES = (".png", ".svg", ".pdf")
+
+#: Widest line of a sentence under the thermal table [characters]: texts wrap to the table's width, at most this
+#: (an 80-column terminal still wraps them to its own width).
+TEXT_WIDTH_MAXIMUM = 120
 
 
 def _atomic_figure(figure, path: Path) -> None:
@@ -67,6 +72,23 @@ def _print_table(summary: dict) -> None:
                   f"{summary['pem_mean_over_iso_c_gamma_alpha']:.3f}")
 
 
+def _print_wrapped(renderables: list) -> None:
+    """Tables as they are; the sentences after them (the assumptions) wrapped at word boundaries to the width of
+    the widest table, at most TEXT_WIDTH_MAXIMUM (off a terminal the console would print each on one line)."""
+    from rich.measure import Measurement  # noqa: PLC0415
+
+    tables = [item for item in renderables if isinstance(item, Table)]
+    widest = max((Measurement.get(console, console.options, table).maximum for table in tables), default=0)
+    width = min(max(widest, 1), TEXT_WIDTH_MAXIMUM) if tables else TEXT_WIDTH_MAXIMUM
+    width = min(width, console.width)
+    for item in renderables:
+        if isinstance(item, Table):
+            console.print(item)
+        else:  # at spaces, never inside a word or a number; no trailing blanks
+            console.print(textwrap.fill(str(item), width, break_long_words=False, break_on_hyphens=False),
+                          soft_wrap=True)
+
+
 @app.command()
 def stiffness(
     case: str = typer.Argument(..., metavar="CASE",
@@ -105,8 +127,7 @@ def stiffness(
         return
     _print_table(summary)
     if thermal_module is not None:
-        for table in dict_tables(f"Thermal mesh (model {summary['thermal']['model']})", summary["thermal"]):
-            console.print(table)
+        _print_wrapped(dict_tables(f"Thermal mesh (model {summary['thermal']['model']})", summary["thermal"]))
     print_notes(loaded.notes, console)
     if plot is not None:
         console.print(f"figure written to {plot}")

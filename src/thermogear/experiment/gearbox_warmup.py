@@ -10,9 +10,11 @@ Losses by source and the backlash come from the network at every output time.
 Coupling is one-way and quasi-static: the losses follow the temperatures (viscosity), the mesh follows the
 temperatures, but the mesh's dynamic response does not feed back into the losses (its Kv changes the tooth loads
 by a few per cent), and the thermal time constants (minutes) are far longer than a mesh period (milliseconds).
-The thermal mesh model describes heating from the stress-free (assembly) state: a state with a gear colder than
-``temperature.reference_c`` (a cold start below the assembly temperature) gets the network's backlash and losses
-but no mesh evaluation (reported as such).
+The thermo-elastic mesh model (the default) evaluates gears colder than their assembly temperature (contraction,
+E rising) down to the material data's limit; the paper's k_T (``thermal.model = 'luo2020'``) describes heating from
+the stress-free state only. A state with a gear colder than its model evaluates
+(:data:`~thermogear.temperature_field.TEMPERATURE_LIMITS`) gets the network's backlash and losses but no mesh
+evaluation (reported as such).
 """
 
 from __future__ import annotations
@@ -26,6 +28,7 @@ from thermogear.gearbox.backlash import ColdStart, cold_start_backlash
 from thermogear.gearbox.case_model import gearbox_model_from_case, gearbox_operating_point, gearbox_section
 from thermogear.gearbox.model import COLDEST_START_C, WarmUpHistory
 from thermogear.schema.temperature import TemperatureSection
+from thermogear.temperature_field import TEMPERATURE_LIMITS
 
 #: Longest warm-up accepted [s] (a day: the network's slowest time constants are hours at most).
 LONGEST_WARM_UP_S = 86400.0
@@ -180,14 +183,17 @@ def gearbox_warmup(case, duration_s: float = 1200.0, start_c: float | None = Non
     cold = cold_start_backlash(description.gear_pair, model.allowance, description.gear_expansion,
                                description.housing.expansion, start, description.assembly_c)
     states = []
+    limits = TEMPERATURE_LIMITS[case.thermal.model]
     reference = case.temperature.reference_c
+    floor = reference if limits.lowest_c is None else limits.lowest_c
     base = case.with_changes(**{"operating.speed_rpm": operating.speed_rpm}) if speed_rpm is not None else case
     orbit_start = None  # the previous state's orbit: where the next state's periodic solve starts
     for index in range(0, history.times.size, int(points_per_interval)):
         time, temperatures = float(history.times[index]), history.temperatures_c[:, index]
-        if min(temperatures[0], temperatures[1]) < reference:
-            states.append(MeshState(time, None, None, None, None, f"gears below the stress-free reference "
-                                                                 f"{reference:g} °C: mesh not evaluated"))
+        if min(temperatures[0], temperatures[1]) < floor:
+            below = (f"the stress-free reference {reference:g} °C" if limits.lowest_c is None else f"{floor:g} °C")
+            states.append(MeshState(time, None, None, None, None, f"gears below {below}, the coldest "
+                                                                 f"{limits.model} evaluates: mesh not evaluated"))
             continue
         sim = simulation(state_case(base, temperatures), gear_model)
         kv = None

@@ -17,12 +17,13 @@ from __future__ import annotations
 import csv
 import io
 import unicodedata
+import warnings
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
-from thermogear.errors import ThermogearError
+from thermogear.errors import ModelAssumptionWarning, ThermogearError
 
 #: Header names recognised as the time column [s] and as the temperature column [°C] (case-insensitive).
 TIME_COLUMN_NAMES = ("time", "time_s", "t", "t_s")
@@ -220,7 +221,11 @@ def read_wav_signal(path: str | Path, column: str | None = None, scale: float = 
 
     path = Path(path)
     try:
-        file_rate, data = wavfile.read(path)
+        with warnings.catch_warnings():
+            # SciPy's own notes (a file cut short, a metadata chunk skipped) are not shown: a short file is said
+            # below in thermogear's words, and the skipped chunks hold no samples
+            warnings.simplefilter("ignore", wavfile.WavFileWarning)
+            file_rate, data = wavfile.read(path)
     except Exception as error:  # noqa: BLE001  (SciPy's reader fails on damaged bytes with UnboundLocalError,
         # struct.error and others, not only ValueError: any failure to parse is "not a readable WAV", issue 25)
         raise SignalError(f"{path}: not a readable WAV file ({type(error).__name__}; a truncated or damaged "
@@ -241,7 +246,36 @@ def read_wav_signal(path: str | Path, column: str | None = None, scale: float = 
         raise SignalError(f"{path}: scale {scale!r}: allowed a finite non-zero number (unit per full scale)")
     with np.errstate(over="ignore"):  # an overflow is an infinite sample, refused by Signal
         values = wav_full_scale(data[:, channels.index(name)]) * scale
+    announced = wav_announced_frames(path)
+    if announced is not None and announced > data.shape[0]:
+        warnings.warn(f"{path}: the WAV file is cut short: its header announces {announced} frames, the file holds "
+                      f"{data.shape[0]} ({data.shape[0] / file_rate:.4g} of {announced / file_rate:.4g} s); the "
+                      "analysis uses the samples present — copy or export the recording again for the whole record",
+                      ModelAssumptionWarning, stacklevel=3)
     return Signal(values, float(file_rate), name, 0.0, None, str(path))
+
+
+def wav_announced_frames(path: Path) -> int | None:
+    """Frames the ``data`` chunk's header of a RIFF/WAVE file announces (its byte size over the ``fmt`` chunk's
+    block align), or None when the chunks cannot be read that far (the reader has then refused the file)."""
+    with open(path, "rb") as handle:
+        head = handle.read(12)
+        if len(head) < 12 or head[:4] not in (b"RIFF", b"RIFX") or head[8:12] != b"WAVE":
+            return None
+        order = "little" if head[:4] == b"RIFF" else "big"
+        block_align = None
+        while True:
+            chunk = handle.read(8)
+            if len(chunk) < 8:
+                return None
+            size = int.from_bytes(chunk[4:8], order)
+            if chunk[:4] == b"fmt ":
+                body = handle.read(size + size % 2)
+                block_align = int.from_bytes(body[12:14], order) if len(body) >= 14 else None
+            elif chunk[:4] == b"data":  # 0xFFFFFFFF: a streaming writer's "until the end of the file"
+                return size // block_align if block_align and size != 0xFFFFFFFF else None
+            else:
+                handle.seek(size + size % 2, 1)
 
 
 def wav_full_scale(samples: np.ndarray) -> np.ndarray:

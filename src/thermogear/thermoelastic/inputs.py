@@ -11,7 +11,7 @@ from dataclasses import dataclass
 
 from thermogear.errors import CaseError, JammingError
 from thermogear.geometry import GearPair
-from thermogear.temperature_field import MATERIAL_MAXIMUM_C  # the one limit of the material data [°C]
+from thermogear.temperature_field import MATERIAL_MAXIMUM_C, MATERIAL_MINIMUM_C  # the material data's range [°C]
 from thermogear.thermoelastic.materials import HOUSING_EXPANSION_PER_K, MODULUS_TEMPERATURE_COEFFICIENTS_PER_K
 from thermogear.thermoelastic.operating import (BacklashAllowance, agma_minimum_backlash, backlash_at,
                                                 jamming_rise, normal_backlash)
@@ -140,7 +140,7 @@ def check_not_jammed(pair: GearPair, allowance: BacklashAllowance, pinion: GearI
 def check_thermoelastic_inputs(pair: GearPair, document) -> None:
     """Load-time checks of a validated case file (:class:`thermogear.schema.CaseFile`) against its cold pair:
     tip reliefs, backlash, gear temperatures within the material data and, for the thermo-elastic model,
-    no jamming at the operating temperatures the case gives. Raises CaseError."""
+    no jamming at the operating temperatures the case gives (hot or, below the assembly temperature, cold). Raises CaseError."""
     inputs = {name: gear_inputs(document.gears, document.material, name) for name in GEAR_NAMES}
     for name in GEAR_NAMES:
         check_tip_relief(pair, name, inputs[name])
@@ -155,6 +155,10 @@ def check_thermoelastic_inputs(pair: GearPair, document) -> None:
         raise CaseError(key, max(bulk), f"<= {MATERIAL_MAXIMUM_C} °C",
                         "above what the material data cover (E(T) fitted on 21–204 °C; gear steels temper at "
                         "150–200 °C)")
+    if min(bulk) < MATERIAL_MINIMUM_C:
+        raise CaseError(key, min(bulk), f">= {MATERIAL_MINIMUM_C} °C under thermal.model = 'thermoelastic'",
+                        "below what the material data cover (E(T) fitted on 21–204 °C, taken down to the coldest "
+                        "start the housing range allows)")
     housing = housing_inputs(document.housing, document.lubricant)
     check_not_jammed(pair, allowance, inputs["pinion"], inputs["wheel"], housing, document.temperature.reference_c,
                      bulk, key)
