@@ -204,7 +204,8 @@ class DrivetrainSection(Section):
     bearings: Annotated[list[BearingSection], Field(min_length=1, max_length=200, description=(
         "[[drivetrain.bearings]] tables: name, shaft, position_mm, stiffness_x_n_per_m, stiffness_y_n_per_m, "
         "optional stiffness_z_n_per_m (locates the shaft axially), damping_x_n_s_per_m, damping_y_n_s_per_m, "
-        "damping_z_n_s_per_m; at least two bearing positions per shaft"))]
+        "damping_z_n_s_per_m, radial_clearance_um (≥ 0 μm, default 0; above 0 refused: the commands solve the "
+        "linear drivetrain); at least two bearing positions per shaft"))]
     disks: Annotated[list[DiskSection], Field(max_length=200, description=(
         "one table per rigid disk: name, shaft, position_mm, mass_kg, polar_inertia_kg_m2, optional "
         "diametral_inertia_kg_m2 (default half the polar one); motor rotors, loads, hubs"))] = []
