@@ -257,15 +257,18 @@ def test_the_speed_sweep_in_worker_processes_equals_the_one_in_this_process():
         assert here["dte_rms_um"].values[0, index] == pytest.approx(single.metrics["dte_rms"] * 1e6, rel=1e-9)
 
 
+@pytest.mark.slow
 def test_one_failing_speed_leaves_the_sweeps_other_speeds_computed():
-    # a speed whose mesh state cannot be built is marked, with the reason; the shared solve of the others holds
+    # at 1e-12 rpm the mesh period is ~1e11 s and the transition matrix overflows: the shared solve of the task
+    # fails, each speed is then solved on its own, and only that speed is marked, with the reason
     from thermogear.sweep.drivetrain_speeds import drivetrain_speed_sweep
 
     case = _load(_document())
     dataset = drivetrain_speed_sweep(case, np.array([1500.0, 1e-12, 4000.0]), ("elastic",),
                                      processes=False).dataset
     status = dataset["status"].values[0]
-    assert status[1].startswith("not computed") and not dataset["valid"].values[0, 1], status
+    assert status[1].startswith("not computed: the periodic solve failed") and not dataset["valid"].values[0, 1], \
+        status
     assert list(dataset["valid"].values[0, [0, 2]]) == [True, True]
     assert np.isnan(dataset["kv"].values[0, 1]) and np.all(np.isfinite(dataset["kv"].values[0, [0, 2]]))
 

@@ -47,6 +47,8 @@ _FAILURES = (ModelLimitError, CaseError, np.linalg.LinAlgError)
 def _point(response, harmonics: int) -> dict[str, Any]:
     from thermogear.drivetrain.case_model import bearing_force_summary
 
+    if isinstance(response, np.linalg.LinAlgError):  # e.g. a transition matrix that overflowed at a tiny speed
+        return {"status": f"not computed: the periodic solve failed ({response})"}
     if isinstance(response, Exception):
         return {"status": f"not computed: {response}"}
     multipliers = np.abs(response.multipliers)
