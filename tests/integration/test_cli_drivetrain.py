@@ -61,6 +61,22 @@ def test_check_and_run_refuse_a_bearing_off_its_shaft_the_same_way(tmp_path):
     assert answers[0].stderr == answers[1].stderr
 
 
+def test_check_run_and_sweep_refuse_a_bearing_clearance_with_the_reason(tmp_path):
+    # the linear drivetrain cannot represent a clearance: every command refuses it at load time, none ignores it
+    text = TWO_SHAFTS.read_text(encoding="utf-8").replace("position_mm = 300.0",
+                                                          "position_mm = 300.0\nradial_clearance_um = 15.0")
+    case = tmp_path / "clearance.toml"
+    case.write_text(text, encoding="utf-8")
+    answers = [_cli(*command) for command in (("check", str(case)), ("run", str(case)),
+                                              ("sweep", str(case), "--vary", "speed_rpm=1000,2000",
+                                               "--out", str(tmp_path / "x.zarr")))]
+    for answer in answers:
+        assert answer.returncode != 0 and "Traceback" not in answer.stderr, answer.stderr
+        assert "drivetrain.bearings 'wheel bearing B'.radial_clearance_um = 15" in answer.stderr, answer.stderr
+        assert "drivetrain_backlash_system" in answer.stderr
+    assert not (tmp_path / "x.zarr").exists()
+
+
 @pytest.mark.slow
 def test_sweep_of_a_drivetrain_case_stores_kv_dte_and_bearing_forces_per_speed(tmp_path):
     import xarray as xr

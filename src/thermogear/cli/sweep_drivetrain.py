@@ -65,7 +65,7 @@ def run_drivetrain_sweep(case, definition, out: Path, model: str, overwrite: boo
             plt.close(figure)
         figure_path = str(plot)
     data = sweep.dataset
-    summary = {"out": str(out), "path": "drivetrain per-speed path (modal reduction; linear mesh)",
+    summary = {"out": str(out), "path": "drivetrain per-speed path (modal reduction shared per task; linear mesh)",
                "models": list(models), "points": int(speeds.size), "seconds": time.perf_counter() - start,
                "valid_points": {m: int(data["valid"].sel(model=m).sum()) for m in models},
                "kv_max": {m: _finite_max(data["kv"].sel(model=m).where(data["valid"].sel(model=m)).values)

@@ -26,6 +26,7 @@ __all__ = ["drivetrain_from_section", "MESH_NAME"]
 MESH_NAME = "mesh"
 
 _MM = 1e-3
+_MICROMETRE = 1e-6
 
 
 def _shaft(section, material) -> tuple[Material, tuple[ShaftSegment, ...]]:
@@ -80,7 +81,8 @@ def drivetrain_from_section(section, pair, material, mesh_stiffness: float, mesh
              for disk in section.disks]
     bearings = [Bearing(b.name, NodeLocation(b.shaft, b.position_mm * _MM), b.stiffness_x_n_per_m,
                         b.stiffness_y_n_per_m, b.stiffness_z_n_per_m, b.damping_x_n_s_per_m, b.damping_y_n_s_per_m,
-                        b.damping_z_n_s_per_m) for b in section.bearings]
+                        b.damping_z_n_s_per_m, radial_clearance=b.radial_clearance_um * _MICROMETRE)
+                for b in section.bearings]
     couplings = [Coupling(c.name, NodeLocation(c.shaft_1, c.position_1_mm * _MM),
                           NodeLocation(c.shaft_2, c.position_2_mm * _MM), c.torsional_stiffness_n_m_per_rad,
                           c.torsional_damping_n_m_s_per_rad, c.lateral_stiffness_n_per_m,

@@ -27,7 +27,7 @@ from thermogear.drivetrain.assembly import Drivetrain
 from thermogear.drivetrain.case_layout import MESH_NAME, drivetrain_from_section
 from thermogear.drivetrain.heat import ModeShifts, WarmState, thermal_mode_shifts, warm_drivetrain
 from thermogear.drivetrain.modes import DrivetrainModes, drivetrain_modes
-from thermogear.drivetrain.response import DrivetrainResponse, drivetrain_periodic_response
+from thermogear.drivetrain.response import DrivetrainResponse, drivetrain_periodic_response, drivetrain_speed_sweep
 from thermogear.errors import CaseError
 from thermogear.mesh.model import MeshModel
 from thermogear.thermoelastic.materials import MODULUS_REFERENCE_C, MODULUS_TEMPERATURE_COEFFICIENTS_PER_K
@@ -137,6 +137,35 @@ class CaseDrivetrain:
                                          points_per_period=points_per_period or self.case.dynamics.points_per_period)
         return drivetrain_periodic_response(self.assembled(model), state, samples_per_piece=SAMPLES_PER_PIECE,
                                             cutoff_hz=self.section.response_cutoff_hz)
+
+    def speed_responses(self, model: str, speeds_rpm: list[float], points_per_period: int,
+                        failures: tuple[type[Exception], ...]) -> list[DrivetrainResponse | Exception]:
+        """:meth:`response` at each speed [rpm], sharing the rigid-body reduction and the modal basis of the first
+        speed whose state was built (:func:`~thermogear.drivetrain.response.drivetrain_speed_sweep`). A speed whose
+        state or response raises one of ``failures`` gets that exception in its place: if the shared solve fails,
+        each speed is solved on its own so that one bad speed does not take the others with it."""
+        results: list[DrivetrainResponse | Exception | None] = [None] * len(speeds_rpm)
+        states = {}
+        for index, speed in enumerate(speeds_rpm):
+            try:
+                states[index] = self.models[model].state(speed_rpm=speed, points_per_period=points_per_period)
+            except failures as error:
+                results[index] = error
+        assembled = self.assembled(model)
+        try:
+            solved = drivetrain_speed_sweep(assembled, list(states.values()), SAMPLES_PER_PIECE,
+                                            self.section.response_cutoff_hz)
+        except failures:
+            solved = []
+            for state in states.values():
+                try:
+                    solved.append(drivetrain_periodic_response(assembled, state, SAMPLES_PER_PIECE,
+                                                               self.section.response_cutoff_hz))
+                except failures as error:
+                    solved.append(error)
+        for index, response in zip(states, solved):
+            results[index] = response
+        return results
 
     def heat_shifts(self) -> ModeShifts:
         """Each mode's shift from the cold (elastic) to the hot (thermal) drivetrain, attributed per cause."""
