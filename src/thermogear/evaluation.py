@@ -35,7 +35,7 @@ def uses_paper_thermal_stiffness(case) -> bool:
     "luo2020"``): only then do its X_te, its stiffness curves along the path (Fig. 4) and its stiffness drop exist."""
     from thermogear.mesh.model import MeshModel
 
-    return MeshModel(case, "thermal").thermal_model == "luo2020"
+    return MeshModel(case, "thermal").pair_model.uses_x_te
 
 
 #: The reference key (:mod:`thermogear.citations`) of the paper whose numbers the paper table holds.

@@ -19,6 +19,7 @@ from thermogear.case import cached_per_case
 from thermogear.geometry import GearPair
 from thermogear.materials import Material
 from thermogear.mesh_cycle import MeshCycle, MeshGrid
+from thermogear.operating import OperatingPoint
 from thermogear.stiffness import scaled_compliance
 from thermogear.stiffness import table as stiffness_table
 from thermogear.stiffness.table import pair_stiffness_at
@@ -71,9 +72,18 @@ class ThermoelasticMesh:
     jamming_bulk_temperature_c: float | None
     distortion_gamma: np.ndarray  # Γ of the distortion table (cold pair)
     distortion: np.ndarray  # thermal flank distortion of a pair at distortion_gamma [m], + = material missing
-    speed_rpm: float
-    normal_load: float  # the case's static normal load [N]
+    operating_point: OperatingPoint  # the case's speed and load (the one place they are held)
     temperature_source: str
+
+    @property
+    def speed_rpm(self) -> float:
+        """Pinion speed of the operating point [rpm]."""
+        return self.operating_point.speed_rpm
+
+    @property
+    def normal_load(self) -> float:
+        """Static normal load of the operating point on the pair as built, w = T1/r_b1 [N] (total)."""
+        return self.operating_point.normal_load(self.cold_gear_pair.pinion.base_radius)
 
     # ---------------------------------------------------------------------------------------- construction
     @classmethod
@@ -235,8 +245,8 @@ def _thermoelastic_mesh(case: "Case") -> ThermoelasticMesh:
         gears=inputs, housing=housing, allowance=allowance, backlash_normal=hot_backlash,
         backlash_normal_cold=backlash_at(pair, allowance, 0.0, 0.0, 0.0),
         jamming_bulk_temperature_c=None if rise is None else reference + rise,
-        distortion_gamma=gamma, distortion=distortion, speed_rpm=case.operating_point.speed_rpm,
-        normal_load=case.normal_load, temperature_source=field.source)
+        distortion_gamma=gamma, distortion=distortion, operating_point=case.operating_point,
+        temperature_source=field.source)
 
 
 def _tooth_temperatures(field: TemperatureField, pair: GearPair) -> tuple[float, float]:
