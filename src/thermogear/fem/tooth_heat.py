@@ -42,15 +42,11 @@ DEFAULT_OIL_SPECIFIC_HEAT = 2000.0  # [J/(kg K)] (Luo & Li Table 1)
 INWARD_OFFSET = 2e-6
 
 
-def fem_settings(case: "Case") -> FemSection:
-    """The case's ``[fem]`` section (defaults when absent), validated when the case was loaded."""
-    return case.fem
-
-
-def gear_of(case: "Case", which: str):
+def gear_of(gear_pair, which: str):
+    """The ``which`` gear (``"pinion"`` or ``"wheel"``) of a gear pair."""
     if which not in ("pinion", "wheel"):
         raise ValueError(f"gear must be 'pinion' or 'wheel', not {which!r}")
-    return getattr(case.gear_pair, which)
+    return getattr(gear_pair, which)
 
 
 def angular_speed(gear_pair, speed_rpm: float, which: str) -> float:
@@ -101,8 +97,8 @@ def convection_coefficients(case: "Case", which: str, settings: FemSection | Non
     from thermogear.lubricant import lubricant_from_case  # noqa: PLC0415
     from thermogear.mesh.model import MeshModel  # noqa: PLC0415
 
-    settings = settings or fem_settings(case)
-    gear = gear_of(case, which)
+    settings = settings or case.fem
+    gear = gear_of(case.gear_pair, which)
     oil = lubricant_from_case(case)
     temperature = case.lubricant.operating_temperature_c
     section = case.lubricant
@@ -155,7 +151,7 @@ def flank_heat_input(case: "Case", which: str, settings: FemSection | None = Non
     """q̄ along the flank of ``which`` gear (module docstring). μ, the pair's load share and unit load come from the
     mesh model's friction damping (:meth:`~thermogear.mesh.model.MeshModel.pair_damping_at`) of ``mesh``
     (default :func:`friction_mesh_model`: the oil at the operating temperature); the speed is the mesh model's."""
-    settings = settings or fem_settings(case)
+    settings = settings or case.fem
     mesh = friction_mesh_model(case) if mesh is None else mesh
     pair = mesh.gear_pair
     roll = pair.roll_grid(count)
@@ -175,7 +171,7 @@ def flank_heat_input(case: "Case", which: str, settings: FemSection | None = Non
                                 settings.heat_conversion_factor)
     order = np.argsort(own_roll)
     return FlankHeatInput(own_roll[order], np.asarray(flux)[order], friction[order], np.asarray(share)[order],
-                          base_radius=gear_of(case, which).base_radius)
+                          base_radius=gear_of(case.gear_pair, which).base_radius)
 
 
 @dataclass(frozen=True, eq=False)
@@ -242,9 +238,9 @@ class ToothTemperature:
 def tooth_temperature(case: "Case", which: str = "pinion", settings: FemSection | None = None,
                       refinement: float | None = None) -> ToothTemperature:
     """Solve the steady bulk temperature of one gear's tooth (module docstring)."""
-    settings = settings or fem_settings(case)
+    settings = settings or case.fem
     refinement = settings.mesh_refinement if refinement is None else refinement
-    gear = gear_of(case, which)
+    gear = gear_of(case.gear_pair, which)
     mesh = tooth_mesh(gear, nominal_bore_radius(gear), teeth=1, refinement=refinement)
     friction = friction_mesh_model(case)  # one mesh model: the speed and the friction heat of the operating point
     coefficients = convection_coefficients(case, which, settings, speed_rpm=friction.speed_rpm)
@@ -264,4 +260,4 @@ def tooth_temperature(case: "Case", which: str = "pinion", settings: FemSection 
 
 
 __all__ = ["ConvectionCoefficients", "FlankHeatInput", "ToothTemperature", "angular_speed", "convection_coefficients",
-           "fem_settings", "flank_heat_input", "friction_mesh_model", "tooth_temperature"]
+           "flank_heat_input", "friction_mesh_model", "tooth_temperature"]
