@@ -10,8 +10,8 @@ import pytest
 
 from thermogear.errors import CaseError, ModelAssumptionWarning, ThermogearError
 from thermogear.luo2020 import calibration as calibration_module
-from thermogear.luo2020.calibration import calibrate_x_te, resolve_x_te, x_te_for_drop
-from thermogear.luo2020.case_stiffness import thermal_pair_stiffness_at, thermal_stiffness
+from thermogear.luo2020.calibration import x_te_for_drop
+from thermogear.luo2020.case_stiffness import calibrate_x_te, resolve_x_te, thermal_pair_stiffness_at, thermal_stiffness
 from thermogear.luo2020.stiffness import (pair_share_normal_load, thermal_pair_stiffness, thermal_stiffness_of_pair,
                                           thermal_stiffness_of_tooth)
 from thermogear.summaries.thermal import crossing_gammas

@@ -14,7 +14,7 @@ import numpy as np
 from thermogear.luo2020.case_stiffness import thermal_stiffness
 from thermogear.luo2020.stiffness import ThermalStiffness
 from thermogear.mesh.model import MeshModel
-from thermogear.luo2020.calibration import resolve_x_te
+from thermogear.luo2020.case_stiffness import resolve_x_te
 from thermogear.temperature_source import temperature_field_from_case
 
 if TYPE_CHECKING:
