@@ -143,10 +143,14 @@ def evaluate_case(case, method: str = "periodic", models: tuple[str, ...] = MODE
 
         evaluation.temperature_field = temperature_field_from_case(case)
         if uses_paper_thermal_stiffness(case):  # the paper's k_T curves (Fig. 4) belong to its model only
+            from thermogear.luo2020.case_stiffness import paper_thermal_model
+            from thermogear.mesh.model import MeshModel
             from thermogear.summaries.thermal import thermal_curves, thermal_stiffness_summary
 
-            evaluation.thermal_curves = thermal_curves(case)
-            evaluation.thermal_summary = thermal_stiffness_summary(case)
+            paper = paper_thermal_model(case)
+            evaluation.thermal_curves = thermal_curves(paper)
+            evaluation.thermal_summary = thermal_stiffness_summary(paper, MeshModel(case, "elastic"),
+                                                                   MeshModel(case, "thermal"))
             cite("timoshenko1951")
         else:
             from thermogear.summaries.thermoelastic import thermoelastic_summary

@@ -170,7 +170,8 @@ class FemAnalysis:
                                   for g in GEARS])
         homogeneous = np.concatenate([
             100.0 * (self.uniform_expansion_fe[g] / (self.case.material.thermal_expansion * UNIFORM_RISE
-                                                     * own_roll_of(self.case.gear_pair, g, self.roll)) - 1.0) for g in GEARS])
+                                                     * own_roll_of(self.case.gear_pair, g, self.roll)) - 1.0)
+            for g in GEARS])
         bulk = np.concatenate([100.0 * (self.expansion_fe[g] / self.expansion_analytical[g] - 1.0) for g in GEARS])
         result = self.thermal_result()
         drop = 100.0 * (1.0 - result.stiffness / result.elastic_stiffness)

@@ -98,7 +98,7 @@ def fig4(evaluation):
     except ImportError:
         plot_thermal_curves = None
     if plot_thermal_curves is not None:
-        return plot_thermal_curves(evaluation.thermal_curves, evaluation.case)
+        return plot_thermal_curves(evaluation.thermal_curves, evaluation.case.name)
     plt = _pyplot()  # fallback: the pair curves only
     curve = evaluation.thermal_curves.curve
     width = evaluation.case.gear_pair.face_width
