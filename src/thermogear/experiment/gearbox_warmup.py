@@ -118,7 +118,7 @@ def state_case(case, temperatures_c):
                                      wheel_flank_offset_c=round(wheel - pinion, 6))
     housing_update: dict[str, Any] = {"temperature_c": housing}
     if "material" not in case.housing.model_fields_set:
-        housing_update["material"] = gearbox_section(case).housing.material
+        housing_update["material"] = gearbox_section(case.gearbox).housing.material
     changes: dict[str, Any] = dict(
         temperature=temperature, lubricant=case.lubricant.model_copy(update={"operating_temperature_c": oil}),
         housing=case.housing.model_copy(update=housing_update))
