@@ -42,13 +42,13 @@ def uses_paper_thermal_stiffness(case) -> bool:
 PAPER_REFERENCE = "luo2020"
 
 
-def is_paper_case(case) -> bool:
-    """True for a parameter set of Luo & Li (2020): its ``[case] citation`` carries the paper's DOI. Then the
+def is_paper_case(citation: str | None) -> bool:
+    """True for a parameter set of Luo & Li (2020): its ``[case] citation`` (``citation``) carries the paper's DOI. Then the
     report has the paper column, the FE verification and the rig trend run, and the commands show the paper's
     numbers beside the case's. Decided by the case's content, never by its name: a renamed copy of the paper's
     parameter set that keeps its citation keeps the comparison; a pair of one's own that does not cite the paper
     never gets it."""
-    return cited_in(case.citation, PAPER_REFERENCE)
+    return cited_in(citation, PAPER_REFERENCE)
 
 
 @dataclass
@@ -76,7 +76,7 @@ class Evaluation:
 
     @property
     def paper(self) -> bool:
-        return is_paper_case(self.case)
+        return is_paper_case(self.case.citation)
 
     def problem(self, *stages: str) -> str:
         """The first recorded failure among ``stages`` ('' when none)."""

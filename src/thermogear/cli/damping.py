@@ -86,7 +86,7 @@ def _paper_means(case) -> dict | None:
     else None."""
     from thermogear.report.paper_table import paper_reference
 
-    reference = paper_reference(case)
+    reference = paper_reference(case.citation)
     return None if reference is None else reference.mean_damping_n_s_per_m
 
 

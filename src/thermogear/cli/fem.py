@@ -38,7 +38,7 @@ def fem_summary(case_name: str, refine: bool = True, progress=None) -> tuple[dic
         summary["refinement_compared"] = [analysis.refinement, fine.refinement]
     summary["interpretation"] = fem_interpretation(case, summary)
     summary["wall_time_s"] = time.perf_counter() - start
-    reference = paper_reference(case)
+    reference = paper_reference(case.citation)
     if reference is not None:  # a parameter set of the paper: its numbers beside the case's
         summary["paper"] = {"flank_temperature_c": list(reference.flank_temperature_c),
                             "stiffness_drop_percent": dict(reference.stiffness_drop_percent)}

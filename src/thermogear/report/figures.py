@@ -171,7 +171,7 @@ def _damping_figure(evaluation, model: str):
         if np.isfinite(means.get(region, np.nan)):
             right.axhline(means[region], color=_COLORS[model], ls=style, lw=0.8,
                           label=f"thermogear mean, {region}: {means[region]:.3g}")
-    reference = paper_reference(evaluation.case)  # None unless the case is a parameter set of the paper
+    reference = paper_reference(evaluation.case.citation)  # None unless the case is a parameter set of the paper
     if reference is not None:
         paper = reference.mean_damping_n_s_per_m[model]
         for region, style in (("single", "-."), ("double", ":")):

@@ -330,7 +330,7 @@ class Study:
             "models": list(self.models),
             "chunk_points": self.chunk_points,
             "fixed_changes": {key: value for key, value in self.fixed_changes},
-            "case_document_sha256": case_fingerprint(self.case),
+            "case_document_sha256": case_fingerprint(self.case.document),
         }
 
 
@@ -345,9 +345,9 @@ def _fixed_changes(operating: dict, torque: float, parameters) -> tuple[tuple[st
     return ()
 
 
-def case_fingerprint(case) -> str:
-    """SHA-256 of the case document (sorted JSON): two runs of one study must start from the same case."""
-    text = json.dumps(case.document, sort_keys=True, default=str)
+def case_fingerprint(document: dict) -> str:
+    """SHA-256 of a case's document (sorted JSON): two runs of one study must start from the same case."""
+    text = json.dumps(document, sort_keys=True, default=str)
     return hashlib.sha256(text.encode("utf-8")).hexdigest()
 
 
