@@ -162,9 +162,11 @@ def evaluate_case(case, method: str = "periodic", models: tuple[str, ...] = MODE
     step("damping")
 
     def damping():
+        from thermogear.mesh.model import MeshModel
         from thermogear.summaries.damping import damping_summary
 
-        evaluation.damping = damping_summary(case)
+        evaluation.damping = damping_summary({model: MeshModel(case, model) for model in MODELS}, case.damping,
+                                             case.name)
         cite("den_hartog1931", "iso_tr13989_1", "astm_d341")
 
     _run_stage(evaluation, "damping", damping)

@@ -14,6 +14,8 @@ from thermogear.cli.console import print_warning
 from thermogear.summaries.damping_plots import plot_damping
 from thermogear.summaries.damping import damping_summary
 from thermogear.lubricant import builtin_lubricant, builtin_lubricant_names
+from thermogear.mesh.model import MeshModel
+from thermogear.mesh.model_names import MODELS
 from thermogear.warning_causes import distinct_warnings
 
 
@@ -36,7 +38,8 @@ def damping(case: str = typer.Argument(..., metavar="CASE",
         loaded = loaded.with_changes(**{"damping.rule": rule})
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
-        summary = damping_summary(loaded, count=points)
+        summary = damping_summary({model: MeshModel(loaded, model) for model in MODELS}, loaded.damping,
+                                  loaded.name, count=points)
     messages = distinct_warnings(str(w.message) for w in caught)  # once per cause
     payload = summary.to_dict()
     reference = _paper_means(loaded)
