@@ -86,10 +86,14 @@ class ThermoelasticMesh:
         return self.operating_point.normal_load(self.cold_gear_pair.pinion.base_radius)
 
     # ---------------------------------------------------------------------------------------- construction
-    @classmethod
-    def from_case(cls, case: "Case") -> "ThermoelasticMesh":
-        """The component of a case, built once per case (raises CaseError when the gears jam)."""
-        return _thermoelastic_mesh(case)
+    @staticmethod
+    @cached_per_case
+    def from_case(case: "Case") -> "ThermoelasticMesh":
+        """The component of a case, built once per case (raises CaseError when the gears jam): the one place the
+        case is read (its temperature field, gear pair, sections and operating point)."""
+        return thermoelastic_mesh(temperature_field_from_case(case), case.gear_pair, case.gears_input,
+                                  case.material_input, case.material, case.housing, case.lubricant,
+                                  case.operating_point)
 
     # ------------------------------------------------------------------------------------------- stiffness
     @property
@@ -213,13 +217,14 @@ class ThermoelasticMesh:
 
 
 # --------------------------------------------------------------------------------------------- building
-@cached_per_case
-def _thermoelastic_mesh(case: "Case") -> ThermoelasticMesh:
-    field = temperature_field_from_case(case)
-    pair = case.gear_pair
-    gears_section = case.gears_input
-    inputs = tuple(gear_inputs(gears_section, case.material_input, name) for name in ("pinion", "wheel"))
-    housing = housing_inputs(case.housing, case.lubricant)
+def thermoelastic_mesh(field: TemperatureField, pair: GearPair, gears_section, material_section, material: Material,
+                       housing_section, lubricant_section, operating_point: OperatingPoint) -> ThermoelasticMesh:
+    """The thermo-elastic mesh of a gear pair (as built) of ``material``, with the expansion and E(T) inputs of the
+    ``[gears]`` and ``[material]`` sections, in the temperature field ``field``, inside the housing of the
+    ``[housing]`` section (its temperature defaulting from the ``[lubricant]`` section), at an operating point
+    (raises CaseError when the gears jam)."""
+    inputs = tuple(gear_inputs(gears_section, material_section, name) for name in ("pinion", "wheel"))
+    housing = housing_inputs(housing_section, lubricant_section)
     reference = field.reference_c
     bulk_rise = (equivalent_bulk_rise(pair.pinion, inputs[0].expansion_per_k, field.pinion_base_c - reference,
                                       field.pinion_bore_c - reference),
@@ -233,10 +238,10 @@ def _thermoelastic_mesh(case: "Case") -> ThermoelasticMesh:
                                     "temperature.bulk_c" if field.source == "uniform" else "temperature")
     rise = jamming_rise(pair, allowance, inputs[0].expansion_per_k, inputs[1].expansion_per_k, strains[2])
     tooth_c = _tooth_temperatures(field, pair)
-    modulus = case.material.youngs_modulus
+    modulus = material.youngs_modulus
     gamma, distortion = _distortion_table(field, pair, inputs, bulk_rise)
     return ThermoelasticMesh(
-        cold_gear_pair=pair, gear_pair=operating_gear_pair(pair, *strains), material=case.material,
+        cold_gear_pair=pair, gear_pair=operating_gear_pair(pair, *strains), material=material,
         reference_c=reference, housing_c=housing.temperature_c, bulk_c=bulk_c, tooth_c=tooth_c, strains=strains,
         youngs_modulus=tuple(youngs_modulus_at(modulus, g.modulus_coefficient_per_k, t)
                              for g, t in zip(inputs, tooth_c)),
@@ -245,7 +250,7 @@ def _thermoelastic_mesh(case: "Case") -> ThermoelasticMesh:
         gears=inputs, housing=housing, allowance=allowance, backlash_normal=hot_backlash,
         backlash_normal_cold=backlash_at(pair, allowance, 0.0, 0.0, 0.0),
         jamming_bulk_temperature_c=None if rise is None else reference + rise,
-        distortion_gamma=gamma, distortion=distortion, operating_point=case.operating_point,
+        distortion_gamma=gamma, distortion=distortion, operating_point=operating_point,
         temperature_source=field.source)
 
 
