@@ -91,7 +91,7 @@ def shown_warnings() -> Iterator[list[str]]:
 def model_choice_flags(case) -> list[str]:
     """What ``run`` flags on every result of this choice of models, said by ``check`` before any solving (check =
     run): the paper's secant k_T used as the contact stiffness of the nonlinear mesh."""
-    from thermogear.mesh.plausibility import secant_stiffness_in_nonlinear_mesh  # noqa: PLC0415
+    from thermogear.mesh.secant_checks import secant_stiffness_in_nonlinear_mesh  # noqa: PLC0415
 
     if case.thermal.model == "luo2020" and case.dynamics.mesh == "nonlinear":  # run's own condition (plausibility)
         return [secant_stiffness_in_nonlinear_mesh(0.0)]

@@ -42,7 +42,7 @@ def damping(case: str = typer.Argument(..., metavar="CASE",
                                   loaded.name, count=points)
     messages = distinct_warnings(str(w.message) for w in caught)  # once per cause
     payload = summary.to_dict()
-    reference = _paper_means(loaded)
+    reference = _paper_means(loaded.citation)
     if reference is not None:
         payload["paper_n_s_per_m"] = reference
     payload["warnings"] = messages
@@ -84,12 +84,12 @@ def damping(case: str = typer.Argument(..., metavar="CASE",
         console.print(f"figure written to {plot}")
 
 
-def _paper_means(case) -> dict | None:
-    """The paper's mean dampings {model: {region: N·s/m}} for a parameter set of the paper (from the paper table),
-    else None."""
+def _paper_means(citation: str | None) -> dict | None:
+    """The paper's mean dampings {model: {region: N·s/m}} for a parameter set of the paper (its ``citation``, from
+    the paper table), else None."""
     from thermogear.report.paper_table import paper_reference
 
-    reference = paper_reference(case.citation)
+    reference = paper_reference(citation)
     return None if reference is None else reference.mean_damping_n_s_per_m
 
 
