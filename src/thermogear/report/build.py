@@ -42,9 +42,10 @@ class ReportOutcome:
         return self.folder / "report.html"
 
 
-def report_steps(case, models=("elastic", "thermal")) -> list[str]:
-    """The progress steps of :func:`build_report` for ``case`` (for a progress bar's total)."""
-    return steps_of_report(is_paper_case(case.citation), models)
+def report_steps(citation: str | None, models=("elastic", "thermal")) -> list[str]:
+    """The progress steps of :func:`build_report` for a case whose ``[case] citation`` is ``citation`` (for a
+    progress bar's total)."""
+    return steps_of_report(is_paper_case(citation), models)
 
 
 def build_report(case, out: Path | str, *, force: bool = False, method: str = "periodic", paper: bool | None = None,
