@@ -170,7 +170,7 @@ def gearbox_warmup(case, duration_s: float = 1200.0, start_c: float | None = Non
     if count + 1 > MOST_STATES or abs(count * interval_s - duration_s) > 1e-9 * duration_s:
         raise CaseError("--interval-s", interval_s, f"a divisor of the duration giving at most {MOST_STATES} states",
                         "the mesh is re-evaluated at evenly spaced times that end at the duration")
-    operating = gearbox_operating_point(case, speed_rpm)
+    operating = gearbox_operating_point(case.operating_point, case.gearbox, speed_rpm)
     start = operating.ambient_c if start_c is None else float(start_c)
     if not (math.isfinite(start) and COLDEST_START_C <= start <= 150.0):
         raise CaseError("--start-c", start, f"[{COLDEST_START_C:g}, 150] °C", "the start temperature of every node")

@@ -33,6 +33,7 @@ if TYPE_CHECKING:
     from thermogear.schema.gearbox import GearboxSection
     from thermogear.schema.housing import HousingSection
     from thermogear.gearbox.model import GearboxSteadyState
+    from thermogear.operating import OperatingPoint
 
 #: Specific heats of the housing materials [J/(kg·K)] (module docstring).
 HOUSING_SPECIFIC_HEAT = {"cast_iron": 500.0, "steel": 434.0, "aluminium": 903.0}
@@ -149,12 +150,13 @@ def gearbox_description_from_case(case: "Case") -> GearboxDescription:
         oil_jet=jet)
 
 
-def gearbox_operating_point(case: "Case", speed_rpm: float | None = None,
-                            torque: float | None = None) -> GearboxOperatingPoint:
-    """The case's pinion speed and torque (or the ones given) with the ``[gearbox]`` ambient temperature."""
-    speed = case.operating_point.speed_rpm if speed_rpm is None else float(speed_rpm)
-    load = case.operating_point.torque_at(speed) if torque is None else float(torque)
-    return GearboxOperatingPoint(speed, load, gearbox_section(case.gearbox).ambient_c)
+def gearbox_operating_point(operating: "OperatingPoint", gearbox: "GearboxSection | None",
+                            speed_rpm: float | None = None, torque: float | None = None) -> GearboxOperatingPoint:
+    """The pinion speed [rpm] and torque [N·m] of a case's operating point ``operating`` (or the ones given) with the
+    ambient temperature of its ``[gearbox]`` section."""
+    speed = operating.speed_rpm if speed_rpm is None else float(speed_rpm)
+    load = operating.torque_at(speed) if torque is None else float(torque)
+    return GearboxOperatingPoint(speed, load, gearbox_section(gearbox).ambient_c)
 
 
 @cached_per_case
@@ -168,7 +170,7 @@ def gearbox_model_from_case(case: "Case"):
 @cached_per_case
 def predicted_steady_state(case: "Case") -> "GearboxSteadyState":
     """The steady state of the case's gearbox at its operating point (raises NoSteadyStateError on runaway)."""
-    return gearbox_model_from_case(case).steady_state(gearbox_operating_point(case))
+    return gearbox_model_from_case(case).steady_state(gearbox_operating_point(case.operating_point, case.gearbox))
 
 
 def describe_prediction(state: "GearboxSteadyState") -> str:
