@@ -2,18 +2,19 @@
 cached PEM table, flank expansions of the case's temperature field, X_te given / calibrated / from a provider,
 and the normal load of Eqs. 13–18 as an argument.
 
-:func:`paper_thermal_model` resolves a case once (per case) into a :class:`PaperThermalModel`: the small inputs
-(gear pair, material, ``[thermal]`` section, operating load), the temperature field and the X_te provider. The
-model answers everything else without the case. With the external load basis k_T is a smooth function of the roll
-distance for a given load: it is tabulated once per model and load on the PEM table's roll grid and interpolated
-by a cubic spline, like k_e, so every operating point and sweep at that load reuses it.
+:func:`paper_thermal_model` resolves a case into a :class:`PaperThermalModel`: the small inputs (gear pair,
+material, ``[thermal]`` section, operating load), the temperature field and the X_te provider. The model answers
+everything else without the case. With the external load basis k_T is a smooth function of the roll distance for a
+given load: it is tabulated once per case and load on the PEM table's roll grid and interpolated by a cubic spline,
+like k_e, so every operating point and sweep at that load reuses it. What is computed once per case (the splines,
+the case's own X_te) lives in a memo kept per case that holds no reference to the case, so a case is freed with
+its memo when nothing else holds it.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass, field
-from functools import cached_property
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -31,21 +32,21 @@ if TYPE_CHECKING:
     from thermogear.case import Case
     from thermogear.schema.thermal import ThermalSection
 
-#: Splines kept per model (one per distinct normal load) before the oldest is dropped.
-SPLINES_PER_MODEL = 64
+#: Splines kept per case (one per distinct normal load) before the oldest is dropped.
+SPLINES_PER_CASE = 64
 
 
 @dataclass(frozen=True, eq=False)
 class PaperThermalModel:
     """The paper's k_T of one case, resolved: its inputs, its ``[thermal]`` section, its temperature field (asked
-    for when first needed, ``field_of()``) and its X_te provider (``provided_x_te()``, asked only for a provider
-    source such as ``"fem"``)."""
+    for when first needed, ``field_of()``), its X_te provider (``provided_x_te()``, asked only for a provider
+    source such as ``"fem"``) and ``memo``, what is computed once per case (splines by load, the own X_te)."""
 
     inputs: PaperThermalInputs
     section: "ThermalSection"
     field_of: Callable[[], TemperatureField]
     provided_x_te: Callable[[], float]
-    splines: dict = field(default_factory=dict, repr=False)  # normal load [N] -> (spline, warnings)
+    memo: dict = field(default_factory=dict, repr=False)  # "splines": {load: (spline, warnings)}, "own_x_te"
 
     @property
     def temperature(self) -> TemperatureField:
@@ -68,18 +69,15 @@ class PaperThermalModel:
         settings (no option given) the answer is computed once."""
         if load_basis is None and temperature is None and (normal_load is None
                                                            or normal_load == self.inputs.normal_load):
-            value, kept = self.own_x_te
-            warning_scope.raise_again(kept)  # the cache never swallows a warning the second time
-            return value
+            entry = self.memo.get("own_x_te")
+            if entry is None:
+                with warning_scope.recorded() as caught:
+                    value = section_x_te(self.section, self.inputs, self.field_of, self.provided_x_te)
+                entry = self.memo["own_x_te"] = (value, warning_scope.kept(caught))
+            warning_scope.raise_again(entry[1])  # the cache never swallows a warning the second time
+            return entry[0]
         field_of = self.field_of if temperature is None else (lambda: temperature)
         return section_x_te(self.section, self.inputs, field_of, self.provided_x_te, load_basis, normal_load)
-
-    @cached_property
-    def own_x_te(self) -> tuple[tuple[float, str], tuple]:
-        """((X_te, source label), warnings) of the model's own settings, computed once."""
-        with warning_scope.recorded() as caught:
-            value = section_x_te(self.section, self.inputs, self.field_of, self.provided_x_te)
-        return value, warning_scope.kept(caught)
 
     # ------------------------------------------------------------------------------------------ stiffness
     def thermal_stiffness(self, roll, x_te: float | None = None, load_basis: str | None = None,
@@ -141,22 +139,28 @@ class PaperThermalModel:
         """Cubic spline of k_T over the PEM table's roll grid (401 points from A to E), once per load."""
         from scipy.interpolate import CubicSpline  # noqa: PLC0415  (scipy only where a spline is built)
 
-        entry = self.splines.get(normal_load)
+        splines = self.memo.setdefault("splines", {})
+        entry = splines.get(normal_load)
         if entry is None:
             with warning_scope.recorded() as caught:
                 roll = np.asarray(pair_compliance_table(self.inputs.gear_pair, self.inputs.material).roll)
                 spline = CubicSpline(roll, self.pair_stiffness_direct(roll, None, normal_load))
-            if len(self.splines) >= SPLINES_PER_MODEL:
-                self.splines.pop(next(iter(self.splines)))
-            entry = self.splines[normal_load] = (spline, warning_scope.kept(caught))
+            if len(splines) >= SPLINES_PER_CASE:
+                splines.pop(next(iter(splines)))
+            entry = splines[normal_load] = (spline, warning_scope.kept(caught))
         warning_scope.raise_again(entry[1])  # the cache never swallows a warning the second time
         return entry[0]
 
 
 # ------------------------------------------------------------------------------------ the case's resolver
 @cached_per_case
+def _memo_of_case(case: "Case") -> dict:
+    return {}
+
+
 def paper_thermal_model(case: "Case") -> PaperThermalModel:
-    """The paper's k_T model of a case, resolved once per case (the one place it reads the case)."""
+    """The paper's k_T model of a case (the one place it reads the case); what it computes once per case is kept in
+    the case's memo, which holds no reference to the case (a model is cheap to build, its memo is shared)."""
     section = case.thermal
 
     def field_of() -> TemperatureField:
@@ -168,7 +172,8 @@ def paper_thermal_model(case: "Case") -> PaperThermalModel:
     inputs = PaperThermalInputs(gear_pair=case.gear_pair, material=case.material,
                                 expansion_model=section.expansion_model, load_basis=section.load_basis,
                                 normal_load=case.normal_load)
-    return PaperThermalModel(inputs=inputs, section=section, field_of=field_of, provided_x_te=provided_x_te)
+    return PaperThermalModel(inputs=inputs, section=section, field_of=field_of, provided_x_te=provided_x_te,
+                             memo=_memo_of_case(case))
 
 
 # ---------------------------------------------------------------- the public functions of a case (resolvers)
