@@ -312,13 +312,14 @@ def cached_analysis(case: "Case", refinement: float | None = None, checks: bool 
     return _CACHE[key]
 
 
-def stiffness_along_path(case: "Case") -> dict:
+def stiffness_along_path(analysis: FemAnalysis) -> dict:
     """Fig. 15: FE elastic and thermo-elastic pair stiffness along the path [N/m, totals] and the driving tooth's
-    single-tooth stiffness: ``{gamma, elastic, thermal, driving_elastic, driving_thermal}`` (arrays).
+    single-tooth stiffness of an FE analysis: ``{gamma, elastic, thermal, driving_elastic, driving_thermal}``
+    (arrays). The pair stiffness needs neither the other plane nor the check (``cached_analysis(case,
+    checks=False)`` suffices).
 
     Elastic: 1/(δ1,FE + δ2,FE + δ_Hertz); thermal: Luo & Li Eqs. 21–23 with the FE compliances, the FE X_te and
     the Eqs. 8–12 expansions of the FE bulk temperature (external normal load)."""
-    analysis = cached_analysis(case, checks=False)  # the pair stiffness needs neither the other plane nor the check
     result = analysis.thermal_result()
     return {"gamma": analysis.gamma.copy(), "elastic": np.asarray(result.elastic_stiffness, dtype=float),
             "thermal": np.asarray(result.stiffness, dtype=float),
