@@ -146,6 +146,7 @@ def check_pair(document: dict, method: str = "periodic") -> dict:
     Returns ``{"outcome": "refused" | "computed" | "defect", "stage": …, "key"/"defects": …, "seconds": …}``."""
     from thermogear.case import case_from_document
     from thermogear.errors import CaseError, ModelLimitError
+    from thermogear.mesh.model import MeshModel
     from thermogear.preflight import preflight
     from thermogear.simulation import MODELS, Simulation
     from thermogear.evaluation import uses_paper_thermal_stiffness
@@ -168,7 +169,9 @@ def check_pair(document: dict, method: str = "periodic") -> dict:
                 stage = "check"
                 preflight(case, method=method)  # as run --method does
             stage = "stiffness"
-            summary, _ = stiffness_summary(cases["linear"])
+            linear = cases["linear"]
+            summary, _ = stiffness_summary(MeshModel(linear, "elastic"), linear.material, linear.operating_point,
+                                           linear.name)
             bad = _non_finite({k: v for k, v in summary.items() if k != "warnings"})
             if bad:
                 result["defects"].append("stiffness summary non-finite: " + ", ".join(bad[:3]))

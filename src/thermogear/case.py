@@ -301,7 +301,7 @@ def case_from_document(document: dict[str, Any], source: str = "<memory>") -> Ca
     if case.temperature.model not in ("uniform", "tabulated", "fem"):  # predicted at load time (see below)
         case = _resolve_temperature_model(case)
     check_case(case)
-    warn_keys_without_effect(case)
+    warn_keys_without_effect(case.thermal, case.dynamics)
     return case
 
 

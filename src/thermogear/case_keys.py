@@ -37,10 +37,10 @@ def luo2020_complete(thermal) -> bool:
     return True  # "fem": the FE model computes it
 
 
-def keys_without_effect(case) -> list[tuple[list[str], str]]:
-    """``[(keys, reason)]`` of a :class:`~thermogear.case.Case`: the keys the case sets that no output reads under its models (module docstring)."""
+def keys_without_effect(thermal, dynamics) -> list[tuple[list[str], str]]:
+    """``[(keys, reason)]`` of a case's ``[thermal]`` and ``[dynamics]`` sections: the keys the case sets that no
+    output reads under its models (module docstring)."""
     found = []
-    thermal = case.thermal
     paper_keys = [f"thermal.{key}" for key in LUO2020_KEYS if key in thermal.model_fields_set]
     if thermal.model != "luo2020" and paper_keys and not luo2020_complete(thermal):
         found.append((paper_keys, f"keys of the paper's thermal stiffness (thermal.model = 'luo2020'), not of "
@@ -48,15 +48,15 @@ def keys_without_effect(case) -> list[tuple[list[str], str]]:
                                   "or x_te_source = 'calibrated' with calibration_drop_percent, or 'fem'), so nothing "
                                   "reads them; remove them, or complete them and set thermal.model = 'luo2020' to "
                                   "run the paper's model"))
-    dynamics = case.dynamics
     if dynamics.mesh == "linear" and "damping_in_flight" in dynamics.model_fields_set:
         found.append((["dynamics.damping_in_flight"], "the linear mesh keeps every pair in contact, so the teeth "
                                                       "never fly; it acts with dynamics.mesh = 'nonlinear'"))
     return found
 
 
-def warn_keys_without_effect(case) -> None:
-    """One IneffectiveKeyWarning per rule that finds keys (module docstring)."""
-    for keys, reason in keys_without_effect(case):
+def warn_keys_without_effect(thermal, dynamics) -> None:
+    """One IneffectiveKeyWarning per rule that finds keys in a case's ``[thermal]`` and ``[dynamics]`` sections
+    (module docstring)."""
+    for keys, reason in keys_without_effect(thermal, dynamics):
         warnings.warn(f"{', '.join(keys)}: no effect under this case's model — {reason}", IneffectiveKeyWarning,
                       stacklevel=3)

@@ -20,8 +20,13 @@ that ``check`` refuses what ``stiffness``, ``run``, ``damping`` and ``sweep`` wo
 from __future__ import annotations
 
 import math
+from typing import TYPE_CHECKING
 
 from thermogear.errors import CaseError
+
+if TYPE_CHECKING:
+    from thermogear.geometry import GearPair
+    from thermogear.materials import Material
 
 #: Smallest line load F_bt / b [N/m] (0.01 N/mm). With a mesh stiffness near ISO 6336-1's c_γα ≈ 20 N/(mm·μm) it
 #: deflects the teeth by 0.5 nm, a few atomic spacings and a hundredth of the finest ground flank's roughness:
@@ -47,13 +52,13 @@ def _fit_coefficients_positive(teeth: int, root_to_bore: float, pressure_angle: 
                for a, b, c, d, e, f in SAINSOT_COEFFICIENTS.values())
 
 
-def check_fillet_fit(case) -> None:
+def check_fillet_fit(gear_pair: "GearPair") -> None:
     """Refuse a gear whose tooth count takes the Sainsot fillet-foundation fit to a non-positive coefficient
     (module docstring): its tooth compliance would be non-positive and no stiffness could be computed."""
     from thermogear.stiffness.fillet_foundation import root_to_bore_ratio
 
     for name in ("pinion", "wheel"):
-        gear = getattr(case.gear_pair, name)
+        gear = getattr(gear_pair, name)
         h_f = root_to_bore_ratio(gear.root_radius, gear.bore_radius, name)
         arguments = (gear.pressure_angle, gear.dedendum_coefficient, gear.tool_tip_radius_coefficient)
         if _fit_coefficients_positive(gear.teeth, h_f, *arguments):
@@ -67,24 +72,25 @@ def check_fillet_fit(case) -> None:
                         "tooth compliance with them, so no mesh stiffness can be computed")
 
 
-def estimated_frequency_ratio(case, inertias: tuple[float, float] | None) -> float:
-    """λ = f_mesh / f_n [–] with f_n = √(c_γα b / m_e) / 2π from ISO 6336-1 Method B's c_γα (clause 9) and the
-    equivalent mass m_e of the given inertias (None: solid discs)."""
+def estimated_frequency_ratio(pair: "GearPair", material: "Material", speed_rpm: float,
+                              inertias: tuple[float, float] | None) -> float:
+    """λ = f_mesh / f_n [–] at the pinion speed ``speed_rpm`` [rpm] with f_n = √(c_γα b / m_e) / 2π from ISO 6336-1
+    Method B's c_γα (clause 9) and the equivalent mass m_e of the given inertias [kg m²] (None: solid discs)."""
     from thermogear.stiffness.iso6336 import iso6336_stiffness
 
-    pair = case.gear_pair
-    stiffness = iso6336_stiffness(pair, case.material)["c_gamma_alpha"] * pair.face_width  # [N/m]
-    mass = pair.equivalent_mass(case.material.density, inertias)
+    stiffness = iso6336_stiffness(pair, material)["c_gamma_alpha"] * pair.face_width  # [N/m]
+    mass = pair.equivalent_mass(material.density, inertias)
     natural_frequency = math.sqrt(stiffness / mass) / (2.0 * math.pi)
-    return pair.mesh_frequency(case.operating_point.speed_rpm) / natural_frequency
+    return pair.mesh_frequency(speed_rpm) / natural_frequency
 
 
-def check_dynamic_range(case) -> None:
+def check_dynamic_range(pair: "GearPair", material: "Material", speed_rpm: float,
+                        inertias: tuple[float, float] | None) -> None:
     """Refuse an operating point whose frequency ratio λ lies outside :data:`FREQUENCY_RATIO_RANGE` (module
     docstring), naming the inertias when they are what takes it out (the same speed with solid-disc inertias is
     inside), the speed otherwise."""
     low, high = FREQUENCY_RATIO_RANGE
-    ratio = estimated_frequency_ratio(case, case.inertias)
+    ratio = estimated_frequency_ratio(pair, material, speed_rpm, inertias)
     if low <= ratio <= high:
         return
     why = ("a mesh period would hold more than 10⁵ natural oscillations, which the dynamics solvers integrate one "
@@ -92,27 +98,27 @@ def check_dynamic_range(case) -> None:
            "the gears would hardly move against the mesh (the inertia overwhelms the tooth stiffness), and the "
            "equations lose every digit")
     reason = f"the mesh-to-natural frequency ratio λ ≈ {ratio:.3g} is outside [{low:g}, {high:g}]: {why}"
-    if case.inertias is not None and low <= estimated_frequency_ratio(case, None) <= high:
-        raise CaseError("gears.pinion.inertia_kg_m2, gears.wheel.inertia_kg_m2", list(case.inertias),
+    if inertias is not None and low <= estimated_frequency_ratio(pair, material, speed_rpm, None) <= high:
+        raise CaseError("gears.pinion.inertia_kg_m2, gears.wheel.inertia_kg_m2", list(inertias),
                         "inertias that keep λ inside the range (solid discs of the gears do)", reason)
-    raise CaseError("operating.speed_rpm", case.operating_point.speed_rpm,
+    raise CaseError("operating.speed_rpm", speed_rpm,
                     f"a speed giving λ in [{low:g}, {high:g}]", reason)
 
 
-def load_key(case) -> str:
-    """The case-file key the load was given by."""
-    operating = case.document.get("operating", {})
+def load_key(operating: dict) -> str:
+    """The case-file key the load was given by, from the case file's ``[operating]`` table."""
     return next((f"operating.{name}" for name in ("power_kw", "torque_nm", "fzg_load_stage")
                  if operating.get(name) is not None), "operating.torque_nm")
 
 
-def check_load_range(case) -> None:
-    """Refuse a load below :data:`MINIMUM_LINE_LOAD`, naming the key it was given by."""
-    line_load = case.normal_load / case.gear_pair.face_width
+def check_load_range(normal_load: float, face_width: float, operating: dict) -> None:
+    """Refuse a normal load [N] on a face width [m] below :data:`MINIMUM_LINE_LOAD`, naming the key of the case
+    file's ``[operating]`` table it was given by."""
+    line_load = normal_load / face_width
     if line_load >= MINIMUM_LINE_LOAD:
         return
-    key = load_key(case)
-    value = case.document["operating"].get(key.split(".")[1])
+    key = load_key(operating)
+    value = operating.get(key.split(".")[1])
     raise CaseError(key, value, f"a load of at least {MINIMUM_LINE_LOAD * 1e-3:g} N/mm of face width (here "
                     f"{line_load * 1e-3:.3g} N/mm)", "the teeth would deflect by less than a nanometre, below any "
                     "flank's roughness: the transmission error has no meaning and the solvers lose the orbit")
@@ -120,6 +126,6 @@ def check_load_range(case) -> None:
 
 def check_model_limits(case) -> None:
     """Every limit of this module, in order (called by :func:`thermogear.case.check_case`)."""
-    check_fillet_fit(case)
-    check_load_range(case)
-    check_dynamic_range(case)
+    check_fillet_fit(case.gear_pair)
+    check_load_range(case.normal_load, case.gear_pair.face_width, case.document.get("operating", {}))
+    check_dynamic_range(case.gear_pair, case.material, case.operating_point.speed_rpm, case.inertias)

@@ -35,20 +35,20 @@ def uses_paper_thermal_stiffness(case) -> bool:
     "luo2020"``): only then do its X_te, its stiffness curves along the path (Fig. 4) and its stiffness drop exist."""
     from thermogear.mesh.model import MeshModel
 
-    return MeshModel(case, "thermal").thermal_model == "luo2020"
+    return MeshModel(case, "thermal").pair_model.uses_x_te
 
 
 #: The reference key (:mod:`thermogear.citations`) of the paper whose numbers the paper table holds.
 PAPER_REFERENCE = "luo2020"
 
 
-def is_paper_case(case) -> bool:
-    """True for a parameter set of Luo & Li (2020): its ``[case] citation`` carries the paper's DOI. Then the
+def is_paper_case(citation: str | None) -> bool:
+    """True for a parameter set of Luo & Li (2020): its ``[case] citation`` (``citation``) carries the paper's DOI. Then the
     report has the paper column, the FE verification and the rig trend run, and the commands show the paper's
     numbers beside the case's. Decided by the case's content, never by its name: a renamed copy of the paper's
     parameter set that keeps its citation keeps the comparison; a pair of one's own that does not cite the paper
     never gets it."""
-    return cited_in(case.citation, PAPER_REFERENCE)
+    return cited_in(citation, PAPER_REFERENCE)
 
 
 @dataclass
@@ -76,7 +76,7 @@ class Evaluation:
 
     @property
     def paper(self) -> bool:
-        return is_paper_case(self.case)
+        return is_paper_case(self.case.citation)
 
     def problem(self, *stages: str) -> str:
         """The first recorded failure among ``stages`` ('' when none)."""
@@ -143,10 +143,14 @@ def evaluate_case(case, method: str = "periodic", models: tuple[str, ...] = MODE
 
         evaluation.temperature_field = temperature_field_from_case(case)
         if uses_paper_thermal_stiffness(case):  # the paper's k_T curves (Fig. 4) belong to its model only
+            from thermogear.luo2020.case_stiffness import paper_thermal_model
+            from thermogear.mesh.model import MeshModel
             from thermogear.summaries.thermal import thermal_curves, thermal_stiffness_summary
 
-            evaluation.thermal_curves = thermal_curves(case)
-            evaluation.thermal_summary = thermal_stiffness_summary(case)
+            paper = paper_thermal_model(case)
+            evaluation.thermal_curves = thermal_curves(paper)
+            evaluation.thermal_summary = thermal_stiffness_summary(paper, MeshModel(case, "elastic"),
+                                                                   MeshModel(case, "thermal"))
             cite("timoshenko1951")
         else:
             from thermogear.summaries.thermoelastic import thermoelastic_summary
@@ -158,9 +162,11 @@ def evaluate_case(case, method: str = "periodic", models: tuple[str, ...] = MODE
     step("damping")
 
     def damping():
+        from thermogear.mesh.model import MeshModel
         from thermogear.summaries.damping import damping_summary
 
-        evaluation.damping = damping_summary(case)
+        evaluation.damping = damping_summary({model: MeshModel(case, model) for model in MODELS}, case.damping,
+                                             case.name)
         cite("den_hartog1931", "iso_tr13989_1", "astm_d341")
 
     _run_stage(evaluation, "damping", damping)
@@ -210,10 +216,10 @@ def finish_evaluation(evaluation: Evaluation) -> Evaluation:
 def fem_verification(case):
     """Fig. 15: thermogear's own FE verification of the elastic and thermal pair stiffness along the path,
     ``{"gamma", "elastic", "thermal", "driving_elastic", "driving_thermal"}`` arrays [N/m]."""
-    from thermogear.fem.verification import stiffness_along_path
+    from thermogear.fem.verification import cached_analysis, stiffness_along_path
 
     cite("scikit_fem")
-    return stiffness_along_path(case)
+    return stiffness_along_path(cached_analysis(case, checks=False))
 
 
 def _rig_trend() -> dict:

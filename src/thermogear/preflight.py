@@ -31,9 +31,9 @@ def preflight(case, models: tuple[str, ...] = ("elastic", "thermal"), quiet: boo
         try:
             if quiet:
                 with warning_scope.ignored():
-                    _build(simulation, case, method)
+                    _build(simulation, case.dynamics, method)
             else:
-                _build(simulation, case, method)
+                _build(simulation, case.dynamics, method)
         except ProblemError as error:
             key, scale = _KEYS.get(error.quantity, ("case", None))
             value = round(error.value * scale, 4) if scale is not None else error.value
@@ -41,11 +41,12 @@ def preflight(case, models: tuple[str, ...] = ("elastic", "thermal"), quiet: boo
                             f"{value} μm): {error.reason}" if scale else error.reason) from None
 
 
-def _build(simulation, case, method: str) -> None:
-    if case.dynamics.mesh == "nonlinear":
-        simulation.state.backlash_problem(case.dynamics.damping_in_flight)
+def _build(simulation, dynamics, method: str) -> None:
+    """Build the problem ``simulation`` would solve under the ``[dynamics]`` section and ``method`` (the check)."""
+    if dynamics.mesh == "nonlinear":
+        simulation.state.backlash_problem(dynamics.damping_in_flight)
     elif method == "transient":
-        check_transient_length(simulation.problem, case.dynamics.transient_periods, simulation.speed_rpm)
+        check_transient_length(simulation.problem, dynamics.transient_periods, simulation.speed_rpm)
     else:
         simulation.problem  # noqa: B018  (building it is the check)
 

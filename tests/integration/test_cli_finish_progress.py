@@ -69,7 +69,7 @@ def test_reproduce_progress_starts_before_the_model_loads_and_counts_every_step(
         yield shown["started"].append
 
     def fake_build_report(case, target, *, progress, timings, **options):
-        for name in build.report_steps(case):
+        for name in build.report_steps(case.citation):
             progress(name)
         shown["timings"] = timings
 
@@ -78,5 +78,5 @@ def test_reproduce_progress_starts_before_the_model_loads_and_counts_every_step(
     monkeypatch.setattr(build, "build_report", fake_build_report)
     command.reproduce("luo2019", out=tmp_path / "report", force=False, quiet=True)
     assert shown["started"][0] == command.LOADING
-    assert shown["started"] == shown["total"] == [command.LOADING, *build.report_steps(load_case("luo2019"))]
+    assert shown["started"] == shown["total"] == [command.LOADING, *build.report_steps(load_case("luo2019").citation)]
     assert set(shown["timings"]) == {"start-up", "imports"} and shown["timings"]["start-up"] > 0.0

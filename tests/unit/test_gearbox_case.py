@@ -75,7 +75,7 @@ def test_section_values_reach_the_description(case):
     assert description.housing.expansion == pytest.approx(11.4e-6, rel=1e-12)  # cast iron, thermoelastic table
     assert len(description.bearings) == 4 and sum(b.on_wheel_shaft for b in description.bearings) == 2
     assert description.wheel_immersion == pytest.approx(case.gear_pair.operating_pitch_radii[1], rel=1e-12)
-    operating = gearbox_operating_point(case)
+    operating = gearbox_operating_point(case.operating_point, case.gearbox)
     assert (operating.speed_rpm, operating.torque, operating.ambient_c) == (1400.0, 138.0, 20.0)
 
 
@@ -97,7 +97,7 @@ def test_other_temperature_model_keeps_given_temperatures_and_the_gearbox_still_
     document_uniform["temperature"]["bulk_c"] = 70.0
     case = case_from_document(document_uniform)
     assert case.lubricant.operating_temperature_c == 60.0 and temperature_field_from_case(case).pinion_base_c == 70.0
-    state = gearbox_model_from_case(case).steady_state(gearbox_operating_point(case))
+    state = gearbox_model_from_case(case).steady_state(gearbox_operating_point(case.operating_point, case.gearbox))
     assert state.oil_c > 20.0
 
 

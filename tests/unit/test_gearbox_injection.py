@@ -74,7 +74,7 @@ def test_the_gearbox_takes_the_jet_loss_into_the_oil():
     model = gearbox_model_from_case(case)
     description = model.description
     assert description.wheel_immersion == 0.0 and description.pinion_immersion == 0.0  # nothing dipped
-    losses_model = model.losses(gearbox_operating_point(case))
+    losses_model = model.losses(gearbox_operating_point(case.operating_point, case.gearbox))
     temperatures = np.array([70.0, 65.0, 60.0, 55.0, 45.0])
     losses = losses_model.at(temperatures)
     # by hand from the model's own oil density at 55 °C and the operating pitch-line speed
@@ -92,11 +92,12 @@ def test_the_gearbox_takes_the_jet_loss_into_the_oil():
 def test_steady_state_balances_with_a_jet():
     case = _injection_case()
     model = gearbox_model_from_case(case)
-    steady = model.steady_state(gearbox_operating_point(case))
+    steady = model.steady_state(gearbox_operating_point(case.operating_point, case.gearbox))
     assert steady.energy_residual < 1e-9  # the heat shed equals the losses, the jet's included
     assert steady.losses.injection > 0.0
     # more flow, more impulse loss, a warmer oil
-    stronger = gearbox_model_from_case(_injection_case(flow_l_min=40.0)).steady_state(gearbox_operating_point(case))
+    stronger = gearbox_model_from_case(_injection_case(flow_l_min=40.0)).steady_state(
+        gearbox_operating_point(case.operating_point, case.gearbox))
     assert stronger.losses.injection > steady.losses.injection and stronger.oil_c > steady.oil_c
 
 

@@ -75,9 +75,9 @@ def test_a_renamed_copy_of_the_paper_case_is_the_paper_case(tmp_path):
     uncited.write_text(text.replace(citation_line, 'citation = "my own drawing 4711"'), encoding="utf-8")
     copy, own = load_case(str(renamed)), load_case(str(uncited))
     assert copy.name == "my_copy" and own.name == "luo2019"
-    assert is_paper_case(copy) and paper_reference(copy) is not None
-    assert not is_paper_case(own) and paper_reference(own) is None
-    assert not is_paper_case(load_case("fzg_type_c"))
+    assert is_paper_case(copy.citation) and paper_reference(copy.citation) is not None
+    assert not is_paper_case(own.citation) and paper_reference(own.citation) is None
+    assert not is_paper_case(load_case("fzg_type_c").citation)
 
 
 def test_a_citation_names_a_reference_by_its_doi_only():

@@ -127,6 +127,7 @@ def test_frequency_ratio_estimate_is_near_the_computed_one():
     # estimate gives 0.1527 (2.6 % off: c_γα and the PEM mean differ by about 5 %). The bounds have decades of
     # margin; 10 % here only guards the estimate's form
     case = case_from_document(luo_document())
-    ratio = estimated_frequency_ratio(case, case.inertias)
+    ratio = estimated_frequency_ratio(case.gear_pair, case.material, case.operating_point.speed_rpm,
+                                      case.inertias)
     assert ratio == pytest.approx(0.1489, rel=0.10)
     assert FREQUENCY_RATIO_RANGE[0] < ratio < FREQUENCY_RATIO_RANGE[1]

@@ -10,8 +10,8 @@ import pytest
 
 from thermogear.errors import CaseError, ModelAssumptionWarning, ThermogearError
 from thermogear.luo2020 import calibration as calibration_module
-from thermogear.luo2020.calibration import calibrate_x_te, resolve_x_te, x_te_for_drop
-from thermogear.luo2020.case_stiffness import thermal_pair_stiffness_at, thermal_stiffness
+from thermogear.luo2020.calibration import x_te_for_drop
+from thermogear.luo2020.case_stiffness import calibrate_x_te, resolve_x_te, thermal_pair_stiffness_at, thermal_stiffness
 from thermogear.luo2020.stiffness import (pair_share_normal_load, thermal_pair_stiffness, thermal_stiffness_of_pair,
                                           thermal_stiffness_of_tooth)
 from thermogear.summaries.thermal import crossing_gammas
@@ -201,3 +201,31 @@ def test_a_given_x_te_makes_the_secant_k_t_depend_on_the_load(luo2019):
     drops = [float(1.0 - thermal_pair_stiffness_at(case, roll, normal_load=load)[0] / elastic[0])
              for load in (1.0e3, 8.0e3)]
     assert drops[0] > 2.0 * drops[1] > 0.0
+
+
+@pytest.mark.filterwarnings("ignore::thermogear.errors.ModelAssumptionWarning")
+def test_the_resolved_model_keeps_no_case_alive(luo2019):
+    # what paper_thermal_model computes once per case (splines, the own X_te) is memoised per case without a
+    # reference back to it: a case asked for its k_T is freed with its memo (a sweep makes thousands of cases)
+    import gc
+    import weakref
+
+    from thermogear.luo2020.case_stiffness import paper_thermal_model
+
+    case = luo2019.with_changes(**{"operating.speed_rpm": 1500.0})
+    roll = np.array([case.gear_pair.path_points["C"]])
+    first = paper_thermal_model(case)
+    value = first.pair_stiffness_at(roll)
+    # the memo is the case's: a second resolution reuses the spline and the X_te of the first
+    assert paper_thermal_model(case).memo is first.memo and first.memo["splines"]
+    np.testing.assert_array_equal(thermal_pair_stiffness_at(case, roll), value)
+    alive = weakref.ref(case)
+    del case, first
+    gc.collect()
+    assert alive() is None
+
+
+def test_only_the_papers_pair_model_uses_x_te():
+    from thermogear.mesh.pair_models import PAIR_MODELS
+
+    assert {name for name, model in PAIR_MODELS.items() if model.uses_x_te} == {"luo2020"}

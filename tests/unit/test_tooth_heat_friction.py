@@ -30,8 +30,8 @@ def case(request):
 
 
 def test_heat_input_friction_is_the_din_formula_at_the_operating_oil_temperature(case):
-    heat = flank_heat_input(case, "pinion")
     mesh = friction_mesh_model(case)
+    heat = flank_heat_input(mesh, "pinion", case.fem)
     pair = mesh.gear_pair
     roll = np.sort(pair.roll_grid(201))
     with warnings.catch_warnings():
@@ -53,7 +53,7 @@ def test_heat_input_friction_is_the_din_formula_at_the_operating_oil_temperature
 
 
 def test_the_heat_input_is_built_whole_and_stays_frozen(case):
-    heat = flank_heat_input(case, "wheel")
+    heat = flank_heat_input(friction_mesh_model(case), "wheel", case.fem)
     assert heat.base_radius == case.gear_pair.wheel.base_radius
     with pytest.raises(dataclasses.FrozenInstanceError):
         heat.base_radius = 0.0

@@ -83,6 +83,6 @@ def test_magnitude_beside_the_paper(summary, model, region):
     # (the paper gives neither bores nor its stiffness curve; k enters Eq. 28 linearly). The band 1.2-1.9 × is
     # that derivation widened by the flank-temperature reconstruction (±5 % on c_r). A units error (per width,
     # ×b, or total mesh stiffness) would be off by 25× or more.
-    paper = paper_reference(load_case("luo2019")).mean_damping_n_s_per_m  # the paper table's values
+    paper = paper_reference(load_case("luo2019").citation).mean_damping_n_s_per_m  # the paper table's values
     ratio = summary.region_means[model][region] / paper[model][region]
     assert 1.2 <= ratio <= 1.9

@@ -14,6 +14,8 @@ from thermogear.cli.console import print_warning
 from thermogear.summaries.damping_plots import plot_damping
 from thermogear.summaries.damping import damping_summary
 from thermogear.lubricant import builtin_lubricant, builtin_lubricant_names
+from thermogear.mesh.model import MeshModel
+from thermogear.mesh.model_names import MODELS
 from thermogear.warning_causes import distinct_warnings
 
 
@@ -36,10 +38,11 @@ def damping(case: str = typer.Argument(..., metavar="CASE",
         loaded = loaded.with_changes(**{"damping.rule": rule})
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
-        summary = damping_summary(loaded, count=points)
+        summary = damping_summary({model: MeshModel(loaded, model) for model in MODELS}, loaded.damping,
+                                  loaded.name, count=points)
     messages = distinct_warnings(str(w.message) for w in caught)  # once per cause
     payload = summary.to_dict()
-    reference = _paper_means(loaded)
+    reference = _paper_means(loaded.citation)
     if reference is not None:
         payload["paper_n_s_per_m"] = reference
     payload["warnings"] = messages
@@ -81,12 +84,12 @@ def damping(case: str = typer.Argument(..., metavar="CASE",
         console.print(f"figure written to {plot}")
 
 
-def _paper_means(case) -> dict | None:
-    """The paper's mean dampings {model: {region: N·s/m}} for a parameter set of the paper (from the paper table),
-    else None."""
+def _paper_means(citation: str | None) -> dict | None:
+    """The paper's mean dampings {model: {region: N·s/m}} for a parameter set of the paper (its ``citation``, from
+    the paper table), else None."""
     from thermogear.report.paper_table import paper_reference
 
-    reference = paper_reference(case)
+    reference = paper_reference(citation)
     return None if reference is None else reference.mean_damping_n_s_per_m
 
 

@@ -38,9 +38,9 @@ def fem_summary(case_name: str, refine: bool = True, progress=None) -> tuple[dic
         summary["refinement_change_percent"] = changes["max"]
         summary["refinement_change_by_quantity_percent"] = changes
         summary["refinement_compared"] = [analysis.refinement, fine.refinement]
-    summary["interpretation"] = fem_interpretation(case, summary)
+    summary["interpretation"] = fem_interpretation(case.temperature.reference_c, case.thermal, summary)
     summary["wall_time_s"] = time.perf_counter() - start
-    reference = paper_reference(case)
+    reference = paper_reference(case.citation)
     if reference is not None:  # a parameter set of the paper: its numbers beside the case's
         summary["paper"] = {"flank_temperature_c": list(reference.flank_temperature_c),
                             "stiffness_drop_percent": dict(reference.stiffness_drop_percent)}

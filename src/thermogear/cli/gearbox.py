@@ -25,7 +25,7 @@ def gearbox(case: str = typer.Argument(..., metavar="CASE", help="built-in param
     from thermogear.schema.values import parse_values  # noqa: PLC0415
 
     loaded = load_case(case)
-    operating = gearbox_operating_point(loaded)
+    operating = gearbox_operating_point(loaded.operating_point, loaded.gearbox)
     speed_values = [operating.speed_rpm] if speeds is None else parse_values(speeds, "--speeds")
     torque_values = [operating.torque] if torques is None else parse_values(torques, "--torques")
     result = steady_sweep(gearbox_model_from_case(loaded), speed_values, torque_values, operating.ambient_c)

@@ -107,7 +107,8 @@ def run(
     if out is not None:
         from thermogear.report.build import build_report, report_steps
 
-        with interruptible(out), step_progress(report_steps(case), quiet or as_json, error_console) as advance:
+        steps = report_steps(case.citation)
+        with interruptible(out), step_progress(steps, quiet or as_json, error_console) as advance:
             outcome = build_report(case, out, force=force, method=method, paper=False, progress=advance)
         responses = {name: outcome.evaluation.responses[name] for name in models
                      if name in outcome.evaluation.responses}

@@ -17,6 +17,7 @@ from thermogear.cli.app import app, console, error_console, print_json
 from thermogear.cli.console import print_notes, print_warning
 from thermogear.cli.tables import dict_tables
 from thermogear.errors import ExtrapolationWarning, ThermogearError
+from thermogear.mesh.model import MeshModel
 from thermogear.ownership import check_figure_file
 from thermogear.summaries.stiffness import POINTS, plot_stiffness, stiffness_summary
 
@@ -104,7 +105,8 @@ def stiffness(
     thermal_module = importlib.import_module("thermogear.summaries.thermoelastic") if thermal else None  # both models
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ExtrapolationWarning)  # collected into the summary instead
-        summary, _ = stiffness_summary(loaded)
+        summary, _ = stiffness_summary(MeshModel(loaded, "elastic"), loaded.material, loaded.operating_point,
+                                       loaded.name)
     for message in summary["warnings"]:
         print_warning(message, error_console)
     if thermal_module is not None:
@@ -115,7 +117,7 @@ def stiffness(
         else:
             import matplotlib.pyplot as plt
 
-            figure = plot_stiffness(loaded)
+            figure = plot_stiffness(MeshModel(loaded, "elastic"), loaded.material, loaded.name)
             try:
                 _atomic_figure(figure, plot)
             finally:

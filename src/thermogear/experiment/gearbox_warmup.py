@@ -121,12 +121,12 @@ def state_case(case, temperatures_c):
                                      wheel_flank_offset_c=round(wheel - pinion, 6))
     housing_update: dict[str, Any] = {"temperature_c": housing}
     if "material" not in case.housing.model_fields_set:
-        housing_update["material"] = gearbox_section(case).housing.material
+        housing_update["material"] = gearbox_section(case.gearbox).housing.material
     changes: dict[str, Any] = dict(
         temperature=temperature, lubricant=case.lubricant.model_copy(update={"operating_temperature_c": oil}),
         housing=case.housing.model_copy(update=housing_update))
     if case.thermal.model == "luo2020" and case.thermal.x_te_source == "calibrated":
-        from thermogear.luo2020.calibration import resolve_x_te  # noqa: PLC0415
+        from thermogear.luo2020.case_stiffness import resolve_x_te  # noqa: PLC0415
 
         changes["thermal"] = case.thermal.model_copy(update={"x_te": resolve_x_te(case)[0], "x_te_source": "given",
                                                              "calibration_drop_percent": None})
@@ -173,7 +173,7 @@ def gearbox_warmup(case, duration_s: float = 1200.0, start_c: float | None = Non
     if count + 1 > MOST_STATES or abs(count * interval_s - duration_s) > 1e-9 * duration_s:
         raise CaseError("--interval-s", interval_s, f"a divisor of the duration giving at most {MOST_STATES} states",
                         "the mesh is re-evaluated at evenly spaced times that end at the duration")
-    operating = gearbox_operating_point(case, speed_rpm)
+    operating = gearbox_operating_point(case.operating_point, case.gearbox, speed_rpm)
     start = operating.ambient_c if start_c is None else float(start_c)
     if not (math.isfinite(start) and COLDEST_START_C <= start <= 150.0):
         raise CaseError("--start-c", start, f"[{COLDEST_START_C:g}, 150] °C", "the start temperature of every node")

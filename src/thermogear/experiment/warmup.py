@@ -207,14 +207,18 @@ class WarmupResult:
 
 
 def state_case(case, temperature_c: float, speed_rpm: float | None = None):
-    """The case at one warm-up state: uniform bulk and oil temperature ``temperature_c`` (and the speed)."""
+    """The case at one warm-up state: uniform bulk and oil temperature ``temperature_c`` (and the speed).
+
+    A resolver: it writes a new case from the case's own keys, so it takes the whole case."""
+    from thermogear.mesh.pair_models import pair_model_for  # noqa: PLC0415  (the mesh layer only where it is used)
+
     # the whole [temperature] section is replaced: a uniform field takes no flank table, base or bore temperatures
     section = {"model": "uniform", "bulk_c": float(temperature_c), "reference_c": case.temperature.reference_c}
     changes: dict[str, Any] = {"temperature": section, "lubricant.operating_temperature_c": float(temperature_c)}
-    if case.thermal.model == "luo2020" and case.thermal.x_te_source == "calibrated":
+    if pair_model_for(case, "thermal").uses_x_te and case.thermal.x_te_source == "calibrated":
         # the paper's X_te is calibrated once, at the case's own temperatures, and held through the warm-up: a
         # state near the assembly temperature has no thermal interference to calibrate against
-        from thermogear.luo2020.calibration import resolve_x_te  # noqa: PLC0415
+        from thermogear.luo2020.case_stiffness import resolve_x_te  # noqa: PLC0415
 
         changes.update({"thermal.x_te": resolve_x_te(case)[0], "thermal.x_te_source": "given",
                         "thermal.calibration_drop_percent": None})
@@ -248,6 +252,8 @@ def warmup(case, history: TemperatureHistory, model: str = "thermal", speed_rpm:
     """
     if simulation is None:
         from thermogear.simulation import Simulation as simulation
+    # the speed of every state, from the case's operating point unless given (read once, here)
+    speed = case.operating_point.speed_rpm if speed_rpm is None else float(speed_rpm)
     states = []
     for time, temperature in zip(history.time_s, history.temperature_c):
         sim = simulation(state_case(case, temperature, speed_rpm), model)
@@ -260,5 +266,4 @@ def warmup(case, history: TemperatureHistory, model: str = "thermal", speed_rpm:
         states.append(OperatingState(float(time), float(temperature), sim.mesh_stiffness_mean,
                                      time_mean(sim.mesh_damping, sim.grid.nodes), sim.natural_frequency_hz,
                                      sim.mesh_frequency_hz, response))
-    speed = case.operating_point.speed_rpm if speed_rpm is None else float(speed_rpm)
     return WarmupResult(case.name, model, history.source, speed, case.gear_pair.face_width, tuple(states))

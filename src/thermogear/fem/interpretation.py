@@ -16,10 +16,11 @@ from thermogear.thermoelastic.materials import MODULUS_TEMPERATURE_COEFFICIENTS_
 __all__ = ["fem_interpretation"]
 
 
-def fem_interpretation(case, summary: dict) -> dict:
-    """``{"youngs_modulus_change_limit_percent", "notes"}`` for the summary of a case's FE run (module docstring):
-    the largest stiffness drop E(T) explains at the FE pitch-point flank temperature [%], and the notes in words."""
-    rise = float(summary["flank_temperature_c"]["C"]) - case.temperature.reference_c
+def fem_interpretation(reference_c: float, thermal, summary: dict) -> dict:
+    """``{"youngs_modulus_change_limit_percent", "notes"}`` for the summary of a case's FE run (module docstring),
+    given the case's reference temperature ``reference_c`` [°C] and ``[thermal]`` section: the largest stiffness
+    drop E(T) explains at the FE pitch-point flank temperature [%], and the notes in words."""
+    rise = float(summary["flank_temperature_c"]["C"]) - reference_c
     steepest = max(abs(value) for value in MODULUS_TEMPERATURE_COEFFICIENTS_PER_K.values())
     limit = 100.0 * steepest * max(rise, 0.0)
     drop = float(summary["stiffness_drop_percent"]["C"])
@@ -34,7 +35,6 @@ def fem_interpretation(case, summary: dict) -> dict:
         f"tooth's stiffness by at most {limit:.1f} %: the rest is the secant construction (it depends on the load and "
         "tends to 0 without load), not a softer tooth",
     ]
-    thermal = case.thermal
     if thermal.x_te_source == "calibrated" and thermal.calibration_drop_percent is not None:
         notes.append(f"this case calibrates X_te to a {thermal.calibration_drop_percent:g} % drop at "
                      f"{thermal.calibration_point}: the paper's model reproduces that drop by construction, and the FE "

@@ -34,7 +34,7 @@ from skfem.helpers import dot
 
 from thermogear.fem.elasticity import (solve_many, stiffness_matrix, thermal_load, traction_load, vector_basis)
 from thermogear.fem.sampling import probe_matrix
-from thermogear.fem.tooth_heat import fem_settings, gear_of
+from thermogear.fem.tooth_heat import gear_of
 from thermogear.fem.tooth_mesh import ToothMesh, nominal_bore_radius, tooth_mesh
 from thermogear.schema.fem import FemSection
 
@@ -189,9 +189,9 @@ class ToothModel:
 def tooth_model(case: "Case", which: str = "pinion", settings: FemSection | None = None,
                 refinement: float | None = None, plane: str | None = None, teeth: int | None = None) -> ToothModel:
     """Mesh and assemble the elasticity problem of one gear's tooth sector."""
-    settings = settings or fem_settings(case)
+    settings = settings or case.fem
     refinement = settings.mesh_refinement if refinement is None else refinement
-    gear = gear_of(case, which)
+    gear = gear_of(case.gear_pair, which)
     mesh = tooth_mesh(gear, nominal_bore_radius(gear), teeth=settings.sector_teeth if teeth is None else teeth,
                       refinement=refinement)
     basis = vector_basis(mesh.mesh, 2)
@@ -200,10 +200,10 @@ def tooth_model(case: "Case", which: str = "pinion", settings: FemSection | None
     return ToothModel(case, which, mesh, basis, matrix, plane)
 
 
-def own_roll_of(case: "Case", which: str, roll) -> np.ndarray:
-    """The gear's own roll distance ρ [m] of pair roll distances T1K [m]."""
+def own_roll_of(gear_pair, which: str, roll) -> np.ndarray:
+    """The ``which`` gear's own roll distance ρ [m] of pair roll distances T1K [m] of a gear pair."""
     roll = np.asarray(roll, dtype=float)
-    return roll if which == "pinion" else case.gear_pair.line_of_action_length - roll
+    return roll if which == "pinion" else gear_pair.line_of_action_length - roll
 
 
 @dataclass(frozen=True, eq=False)
@@ -230,7 +230,7 @@ def tooth_deflection(case: "Case", which: str, roll, model: ToothModel | None = 
 
     model = model or tooth_model(case, which, **options)
     roll = np.asarray(roll, dtype=float)
-    own = own_roll_of(case, which, roll)
+    own = own_roll_of(case.gear_pair, which, roll)
     width = model.gear.face_width
     unit_load = case.normal_load / case.gear_pair.face_width
     solutions = model.elastic_displacements(model.contact_loads(own, unit_load))

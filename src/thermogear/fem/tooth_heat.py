@@ -32,6 +32,8 @@ from thermogear.schema.fem import FemSection
 
 if TYPE_CHECKING:
     from thermogear.case import Case
+    from thermogear.lubricant import Lubricant
+    from thermogear.schema.lubricant import LubricantSection
 
 #: Oil properties used by the correlations when the case does not give them (typical mineral/PAO gear oil).
 DEFAULT_OIL_CONDUCTIVITY = 0.14  # [W/(m K)] (Luo & Li Table 1)
@@ -42,15 +44,11 @@ DEFAULT_OIL_SPECIFIC_HEAT = 2000.0  # [J/(kg K)] (Luo & Li Table 1)
 INWARD_OFFSET = 2e-6
 
 
-def fem_settings(case: "Case") -> FemSection:
-    """The case's ``[fem]`` section (defaults when absent), validated when the case was loaded."""
-    return case.fem
-
-
-def gear_of(case: "Case", which: str):
+def gear_of(gear_pair, which: str):
+    """The ``which`` gear (``"pinion"`` or ``"wheel"``) of a gear pair."""
     if which not in ("pinion", "wheel"):
         raise ValueError(f"gear must be 'pinion' or 'wheel', not {which!r}")
-    return getattr(case.gear_pair, which)
+    return getattr(gear_pair, which)
 
 
 def angular_speed(gear_pair, speed_rpm: float, which: str) -> float:
@@ -90,29 +88,23 @@ class ConvectionCoefficients:
                 "end_face": self.end_face, "bore": self.bore, "sources": dict(self.sources)}
 
 
-def convection_coefficients(case: "Case", which: str, settings: FemSection | None = None,
-                            speed_rpm: float | None = None) -> ConvectionCoefficients:
+def convection_coefficients(gear_pair, oil: "Lubricant", section: "LubricantSection", settings: FemSection,
+                            which: str, speed_rpm: float) -> ConvectionCoefficients:
     """Convection coefficients of one gear: the ``[fem]`` values where given, else the correlations of
     docs/fem.md evaluated with oil–air mist properties (oil fraction ``[fem].oil_fraction``) at the operating
     oil temperature: flanks and tip h = 0.228 Re^0.731 Pr^(1/3) k/L (L = tooth depth, r = reference radius), end
     faces the laminar rotating disc h = 0.308 k (m + 2)^0.5 Pr^0.5 (ω/ν)^0.5 with m = 2; a convective bore without
-    a value takes the end-face coefficient. ``speed_rpm``: the pinion speed [rpm] (default: the mesh model's, the
-    case's operating point)."""
-    from thermogear.lubricant import lubricant_from_case  # noqa: PLC0415
-    from thermogear.mesh.model import MeshModel  # noqa: PLC0415
-
-    settings = settings or fem_settings(case)
-    gear = gear_of(case, which)
-    oil = lubricant_from_case(case)
-    temperature = case.lubricant.operating_temperature_c
-    section = case.lubricant
+    a value takes the end-face coefficient. ``which`` gear of ``gear_pair``; ``oil`` the lubricant of the
+    ``[lubricant]`` section ``section``; ``settings`` the ``[fem]`` section; ``speed_rpm``: the pinion speed
+    [rpm]."""
+    gear = gear_of(gear_pair, which)
+    temperature = section.operating_temperature_c
     mist = mist_properties(settings.oil_fraction,
                            section.thermal_conductivity_w_per_m_k or DEFAULT_OIL_CONDUCTIVITY,
                            float(oil.density(temperature)),
                            section.specific_heat_j_per_kg_k or DEFAULT_OIL_SPECIFIC_HEAT,
                            float(oil.dynamic_viscosity(temperature, warn=False)))
-    speed = MeshModel(case, "elastic").speed_rpm if speed_rpm is None else float(speed_rpm)
-    omega = angular_speed(case.gear_pair, speed, which)
+    omega = angular_speed(gear_pair, float(speed_rpm), which)
     depth = gear.tip_radius - gear.root_radius
     surface = tooth_surface_coefficient(mist["k"], mist["prandtl"], omega, gear.reference_radius, depth, mist["nu"])
     end_face = rotating_disc_coefficient(mist["k"], mist["prandtl"], omega, mist["nu"])
@@ -150,13 +142,11 @@ class FlankHeatInput:
                          left=0.0, right=0.0)
 
 
-def flank_heat_input(case: "Case", which: str, settings: FemSection | None = None, count: int = 201,
-                     mesh=None) -> FlankHeatInput:
+def flank_heat_input(mesh, which: str, settings: FemSection, count: int = 201) -> FlankHeatInput:
     """q̄ along the flank of ``which`` gear (module docstring). μ, the pair's load share and unit load come from the
-    mesh model's friction damping (:meth:`~thermogear.mesh.model.MeshModel.pair_damping_at`) of ``mesh``
-    (default :func:`friction_mesh_model`: the oil at the operating temperature); the speed is the mesh model's."""
-    settings = settings or fem_settings(case)
-    mesh = friction_mesh_model(case) if mesh is None else mesh
+    mesh model's friction damping (:meth:`~thermogear.mesh.model.MeshModel.pair_damping_at`) of ``mesh`` (a case's
+    :func:`friction_mesh_model`: the oil at the operating temperature); the speed is the mesh model's; ``settings``
+    the case's ``[fem]`` section."""
     pair = mesh.gear_pair
     roll = pair.roll_grid(count)
     speed = mesh.speed_rpm
@@ -175,7 +165,7 @@ def flank_heat_input(case: "Case", which: str, settings: FemSection | None = Non
                                 settings.heat_conversion_factor)
     order = np.argsort(own_roll)
     return FlankHeatInput(own_roll[order], np.asarray(flux)[order], friction[order], np.asarray(share)[order],
-                          base_radius=gear_of(case, which).base_radius)
+                          base_radius=gear_of(pair, which).base_radius)
 
 
 @dataclass(frozen=True, eq=False)
@@ -242,13 +232,16 @@ class ToothTemperature:
 def tooth_temperature(case: "Case", which: str = "pinion", settings: FemSection | None = None,
                       refinement: float | None = None) -> ToothTemperature:
     """Solve the steady bulk temperature of one gear's tooth (module docstring)."""
-    settings = settings or fem_settings(case)
+    from thermogear.lubricant import lubricant_from_case  # noqa: PLC0415
+
+    settings = settings or case.fem
     refinement = settings.mesh_refinement if refinement is None else refinement
-    gear = gear_of(case, which)
+    gear = gear_of(case.gear_pair, which)
     mesh = tooth_mesh(gear, nominal_bore_radius(gear), teeth=1, refinement=refinement)
     friction = friction_mesh_model(case)  # one mesh model: the speed and the friction heat of the operating point
-    coefficients = convection_coefficients(case, which, settings, speed_rpm=friction.speed_rpm)
-    heat = flank_heat_input(case, which, settings, mesh=friction)
+    coefficients = convection_coefficients(case.gear_pair, lubricant_from_case(case), case.lubricant, settings, which,
+                                           friction.speed_rpm)
+    heat = flank_heat_input(friction, which, settings)
     oil_c = float(case.lubricant.operating_temperature_c)
     facets = mesh.facets
     boundaries = [RobinBoundary(facets("active_flank"), h=coefficients.meshing_flank, ambient=oil_c, flux=heat),
@@ -264,4 +257,4 @@ def tooth_temperature(case: "Case", which: str = "pinion", settings: FemSection 
 
 
 __all__ = ["ConvectionCoefficients", "FlankHeatInput", "ToothTemperature", "angular_speed", "convection_coefficients",
-           "fem_settings", "flank_heat_input", "friction_mesh_model", "tooth_temperature"]
+           "flank_heat_input", "friction_mesh_model", "tooth_temperature"]

@@ -28,7 +28,7 @@ import numpy as np
 from thermogear.errors import ModelAssumptionWarning
 from thermogear.fem.tooth_elastic import (ToothDeflection, contact_point_geometry, own_roll_of, tooth_deflection,
                                           tooth_model)
-from thermogear.fem.tooth_heat import ToothTemperature, fem_settings, tooth_temperature
+from thermogear.fem.tooth_heat import ToothTemperature, tooth_temperature
 from thermogear.schema.fem import FemSection
 
 if TYPE_CHECKING:
@@ -55,8 +55,8 @@ def temperature_field_from_fem(case: "Case", temperatures: dict[str, ToothTemper
     pair = case.gear_pair
     roll = pair.roll_grid(FLANK_TABLE_POINTS)
     gamma = np.asarray(pair.gamma(roll), dtype=float)
-    pinion = temperatures["pinion"].flank_c(own_roll_of(case, "pinion", roll))
-    wheel = temperatures["wheel"].flank_c(own_roll_of(case, "wheel", roll))
+    pinion = temperatures["pinion"].flank_c(own_roll_of(case.gear_pair, "pinion", roll))
+    wheel = temperatures["wheel"].flank_c(own_roll_of(case.gear_pair, "wheel", roll))
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ModelAssumptionWarning)
         return TemperatureField.from_table(
@@ -170,7 +170,8 @@ class FemAnalysis:
                                   for g in GEARS])
         homogeneous = np.concatenate([
             100.0 * (self.uniform_expansion_fe[g] / (self.case.material.thermal_expansion * UNIFORM_RISE
-                                                     * own_roll_of(self.case, g, self.roll)) - 1.0) for g in GEARS])
+                                                     * own_roll_of(self.case.gear_pair, g, self.roll)) - 1.0)
+            for g in GEARS])
         bulk = np.concatenate([100.0 * (self.expansion_fe[g] / self.expansion_analytical[g] - 1.0) for g in GEARS])
         result = self.thermal_result()
         drop = 100.0 * (1.0 - result.stiffness / result.elastic_stiffness)
@@ -211,17 +212,18 @@ class FemAnalysis:
         }
 
 
-def _expansion_analytical(case: "Case", which: str, roll, field) -> np.ndarray:
+def _expansion_analytical(pair, material, expansion_model: str, which: str, roll, field) -> np.ndarray:
+    """Flank expansion of Luo & Li (2020) Eqs. 8–12 of the ``which`` gear of ``pair`` [m] in a temperature field."""
     from thermogear.luo2020.expansion import flank_expansion_along_line_of_action  # noqa: PLC0415
 
-    gear = getattr(case.gear_pair, which)
-    gamma = case.gear_pair.gamma(roll)
+    gear = getattr(pair, which)
+    gamma = pair.gamma(roll)
     flank = field.pinion_flank_c(gamma) if which == "pinion" else field.wheel_flank_c(gamma)
     base = field.pinion_base_c if which == "pinion" else field.wheel_base_c
     bore = field.pinion_bore_c if which == "pinion" else field.wheel_bore_c
-    return flank_expansion_along_line_of_action(gear, own_roll_of(case, which, roll), field.rise(flank),
-                                                field.rise(base), field.rise(bore), case.material.thermal_expansion,
-                                                case.thermal.expansion_model)
+    return flank_expansion_along_line_of_action(gear, own_roll_of(pair, which, roll), field.rise(flank),
+                                                field.rise(base), field.rise(bore), material.thermal_expansion,
+                                                expansion_model)
 
 
 def fem_analysis(case: "Case", refinement: float | None = None, settings: FemSection | None = None,
@@ -234,7 +236,7 @@ def fem_analysis(case: "Case", refinement: float | None = None, settings: FemSec
 
     from thermogear.luo2020.expansion import flank_expansion_along_line_of_action  # noqa: PLC0415
 
-    settings = settings or fem_settings(case)
+    settings = settings or case.fem
     refinement = settings.mesh_refinement if refinement is None else float(refinement)
     pair = case.gear_pair
     roll = pair.roll_grid(settings.contact_positions)
@@ -258,13 +260,14 @@ def fem_analysis(case: "Case", refinement: float | None = None, settings: FemSec
     alpha = case.material.thermal_expansion
     for gear in GEARS:
         sector = tooth_model(case, gear, settings, refinement, teeth=1)
-        own = own_roll_of(case, gear, roll)
+        own = own_roll_of(case.gear_pair, gear, roll)
         _, _, _, normal = contact_point_geometry(sector.gear, own)
         temperature = temperatures[gear]
         bulk = sector.thermal_displacement(lambda x, y, t=temperature: t.at(x, y) - reference, alpha)
         thermal[gear] = sector.point_displacement(bulk, own)
         expansion_fe[gear] = np.sum(thermal[gear] * normal, axis=0)
-        expansion_an[gear] = _expansion_analytical(case, gear, roll, field_)
+        expansion_an[gear] = _expansion_analytical(case.gear_pair, case.material, case.thermal.expansion_model,
+                                                   gear, roll, field_)
         if not checks:
             continue
         uniform = sector.thermal_displacement(UNIFORM_RISE, alpha)
@@ -290,16 +293,15 @@ def refinement_change_percent(coarse: FemAnalysis, fine: FemAnalysis) -> dict[st
 _CACHE: dict[tuple[str, float, bool], FemAnalysis] = {}
 
 
-def _key(case: "Case", refinement: float | None, checks: bool) -> tuple[str, float, bool]:
-    settings = fem_settings(case)
+def _key(document: dict, settings: FemSection, refinement: float | None, checks: bool) -> tuple[str, float, bool]:
     value = settings.mesh_refinement if refinement is None else float(refinement)
-    return json.dumps(case.document, sort_keys=True, default=str), value, checks
+    return json.dumps(document, sort_keys=True, default=str), value, checks
 
 
 def cached_analysis(case: "Case", refinement: float | None = None, checks: bool = True) -> FemAnalysis:
     """:func:`fem_analysis`, memoised per case document, refinement and ``checks`` (the providers ask for it
     repeatedly); an analysis with its checks also answers a request without them."""
-    key = _key(case, refinement, checks)
+    key = _key(case.document, case.fem, refinement, checks)
     complete = key[:2] + (True,)
     if complete in _CACHE:
         return _CACHE[complete]
@@ -310,13 +312,14 @@ def cached_analysis(case: "Case", refinement: float | None = None, checks: bool 
     return _CACHE[key]
 
 
-def stiffness_along_path(case: "Case") -> dict:
+def stiffness_along_path(analysis: FemAnalysis) -> dict:
     """Fig. 15: FE elastic and thermo-elastic pair stiffness along the path [N/m, totals] and the driving tooth's
-    single-tooth stiffness: ``{gamma, elastic, thermal, driving_elastic, driving_thermal}`` (arrays).
+    single-tooth stiffness of an FE analysis: ``{gamma, elastic, thermal, driving_elastic, driving_thermal}``
+    (arrays). The pair stiffness needs neither the other plane nor the check (``cached_analysis(case,
+    checks=False)`` suffices).
 
     Elastic: 1/(δ1,FE + δ2,FE + δ_Hertz); thermal: Luo & Li Eqs. 21–23 with the FE compliances, the FE X_te and
     the Eqs. 8–12 expansions of the FE bulk temperature (external normal load)."""
-    analysis = cached_analysis(case, checks=False)  # the pair stiffness needs neither the other plane nor the check
     result = analysis.thermal_result()
     return {"gamma": analysis.gamma.copy(), "elastic": np.asarray(result.elastic_stiffness, dtype=float),
             "thermal": np.asarray(result.stiffness, dtype=float),

@@ -30,7 +30,10 @@ from thermogear.thermoelastic.materials import HOUSING_EXPANSION_PER_K
 
 if TYPE_CHECKING:
     from thermogear.case import Case
+    from thermogear.schema.gearbox import GearboxSection
+    from thermogear.schema.housing import HousingSection
     from thermogear.gearbox.model import GearboxSteadyState
+    from thermogear.operating import OperatingPoint
 
 #: Specific heats of the housing materials [J/(kg·K)] (module docstring).
 HOUSING_SPECIFIC_HEAT = {"cast_iron": 500.0, "steel": 434.0, "aluminium": 903.0}
@@ -40,8 +43,8 @@ BEARING_TYPES = {"cylindrical_roller": RollingBearing.cylindrical_roller,
                  "deep_groove_ball": RollingBearing.deep_groove_ball}
 
 
-def gearbox_section(case: "Case"):
-    section = getattr(case, "gearbox", None)
+def gearbox_section(section: "GearboxSection | None") -> "GearboxSection":
+    """A case's ``[gearbox]`` section, refused (CaseError) where the case has none."""
     if section is None:
         raise CaseError("gearbox", None, "a [gearbox] section (housing, oil, bearings, seals)",
                         "the gearbox thermal model needs the gearbox around the gear pair")
@@ -54,18 +57,18 @@ def check_gearbox_section(case: "Case") -> None:
         gearbox_description_from_case(case)
 
 
-def housing_expansion(case: "Case") -> float:
+def housing_expansion(housing: "HousingSection", gearbox: "GearboxSection | None") -> float:
     """Linear expansion of the housing [1/K]: ``[housing].thermal_expansion_per_k``, else the material of
     ``[housing]`` when it is given there, else that of ``[gearbox.housing]``."""
-    if case.housing.thermal_expansion_per_k is not None:
-        return float(case.housing.thermal_expansion_per_k)
-    material = case.housing.material if "material" in case.housing.model_fields_set else gearbox_section(
-        case).housing.material
+    if housing.thermal_expansion_per_k is not None:
+        return float(housing.thermal_expansion_per_k)
+    material = housing.material if "material" in housing.model_fields_set else gearbox_section(
+        gearbox).housing.material
     return HOUSING_EXPANSION_PER_K[material]
 
 
-def _housing(case: "Case") -> Housing:
-    section = gearbox_section(case)
+def _housing(section: "GearboxSection", expansion: float) -> Housing:
+    """The housing of a ``[gearbox]`` section (module docstring) with its linear expansion ``expansion`` [1/K]."""
     housing = section.housing
     if housing.outer_area_m2 is not None:
         side = math.sqrt(housing.outer_area_m2 / (6.0 if housing.bottom_cooled else 5.0))
@@ -81,7 +84,7 @@ def _housing(case: "Case") -> Housing:
         wetted = length * width + 2.0 * (length + width) * level
     specific_heat = housing.specific_heat_j_per_kg_k or HOUSING_SPECIFIC_HEAT[housing.material]
     return Housing(length=length, width=width, height=height, mass=housing.mass_kg, specific_heat=specific_heat,
-                   emissivity=housing.emissivity, expansion=housing_expansion(case), air_speed=housing.air_speed_m_s,
+                   emissivity=housing.emissivity, expansion=expansion, air_speed=housing.air_speed_m_s,
                    oil_wetted_area=wetted, bottom_cooled=housing.bottom_cooled)
 
 
@@ -109,7 +112,7 @@ def gearbox_description_from_case(case: "Case") -> GearboxDescription:
     """The :class:`GearboxDescription` of a case with a ``[gearbox]`` section (module docstring)."""
     from thermogear.lubricant import lubricant_from_case  # noqa: PLC0415
 
-    section = gearbox_section(case)
+    section = gearbox_section(case.gearbox)
     pair, material = case.gear_pair, case.material
 
     def disc_mass(gear) -> float:
@@ -129,7 +132,8 @@ def gearbox_description_from_case(case: "Case") -> GearboxDescription:
                             f"{2e3 * gear.tip_radius:.4g} mm", "a gear cannot dip deeper than it is tall")
     backlash_um = None if case.gears_input is None else case.gears_input.backlash_normal_um
     return GearboxDescription(
-        gear_pair=pair, lubricant=oil, housing=_housing(case), oil_volume=section.oil.volume_l * 1e-3,
+        gear_pair=pair, lubricant=oil, housing=_housing(section, housing_expansion(case.housing, section)),
+        oil_volume=section.oil.volume_l * 1e-3,
         pinion_mass=disc_mass(pair.pinion), wheel_mass=disc_mass(pair.wheel), shaft_mass=section.shaft_mass_kg,
         wheel_immersion=wheel_immersion, pinion_immersion=section.oil.pinion_immersion_mm * 1e-3,
         bearings=_bearings(section),
@@ -146,12 +150,13 @@ def gearbox_description_from_case(case: "Case") -> GearboxDescription:
         oil_jet=jet)
 
 
-def gearbox_operating_point(case: "Case", speed_rpm: float | None = None,
-                            torque: float | None = None) -> GearboxOperatingPoint:
-    """The case's pinion speed and torque (or the ones given) with the ``[gearbox]`` ambient temperature."""
-    speed = case.operating_point.speed_rpm if speed_rpm is None else float(speed_rpm)
-    load = case.operating_point.torque_at(speed) if torque is None else float(torque)
-    return GearboxOperatingPoint(speed, load, gearbox_section(case).ambient_c)
+def gearbox_operating_point(operating: "OperatingPoint", gearbox: "GearboxSection | None",
+                            speed_rpm: float | None = None, torque: float | None = None) -> GearboxOperatingPoint:
+    """The pinion speed [rpm] and torque [N·m] of a case's operating point ``operating`` (or the ones given) with the
+    ambient temperature of its ``[gearbox]`` section."""
+    speed = operating.speed_rpm if speed_rpm is None else float(speed_rpm)
+    load = operating.torque_at(speed) if torque is None else float(torque)
+    return GearboxOperatingPoint(speed, load, gearbox_section(gearbox).ambient_c)
 
 
 @cached_per_case
@@ -165,7 +170,7 @@ def gearbox_model_from_case(case: "Case"):
 @cached_per_case
 def predicted_steady_state(case: "Case") -> "GearboxSteadyState":
     """The steady state of the case's gearbox at its operating point (raises NoSteadyStateError on runaway)."""
-    return gearbox_model_from_case(case).steady_state(gearbox_operating_point(case))
+    return gearbox_model_from_case(case).steady_state(gearbox_operating_point(case.operating_point, case.gearbox))
 
 
 def describe_prediction(state: "GearboxSteadyState") -> str:
@@ -190,7 +195,7 @@ def with_predicted_temperatures(case: "Case") -> "Case":
     as ``lubricant.operating_temperature_c`` (viscosity, damping), the housing node's as ``housing.temperature_c``
     (centre distance, backlash) and the prediction added to the assumptions. The gear temperatures come from the
     ``"gearbox"`` temperature provider (:mod:`thermogear.gearbox.provider`)."""
-    gearbox_section(case)
+    gearbox_section(case.gearbox)
     if case.housing.temperature_c is not None:
         raise CaseError("housing.temperature_c", case.housing.temperature_c, "absent with temperature.model = "
                         "'gearbox'", "the gearbox model predicts the housing temperature")
@@ -200,7 +205,7 @@ def with_predicted_temperatures(case: "Case") -> "Case":
     state = predicted_steady_state(case)
     housing_update = {"temperature_c": round(state.housing_c, 6)}
     if "material" not in case.housing.model_fields_set:
-        housing_update["material"] = gearbox_section(case).housing.material
+        housing_update["material"] = gearbox_section(case.gearbox).housing.material
     return replace(case,
                    lubricant=case.lubricant.model_copy(update={"operating_temperature_c": round(state.oil_c, 6)}),
                    housing=case.housing.model_copy(update=housing_update),

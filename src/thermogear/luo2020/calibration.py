@@ -17,16 +17,16 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from thermogear.case import cached_per_case
 from thermogear.composition import X_TE_PROVIDERS, builtin
 from thermogear.errors import CaseError, ThermogearError
 from thermogear.stiffness.potential_energy import pair_compliance
 from thermogear.luo2020.case_inputs import PaperThermalInputs
 from thermogear.luo2020.stiffness import check_x_te
-from thermogear.temperature_source import TemperatureField, temperature_field_from_case
+from thermogear.temperature_source import TemperatureField
 
 if TYPE_CHECKING:
     from thermogear.case import Case
+    from thermogear.schema.thermal import ThermalSection
 
 XteProvider = Callable[["Case"], float]
 _PROVIDERS: dict[str, XteProvider] = {}
@@ -71,53 +71,49 @@ class Calibration:
                 f"(Γ={self.gamma:.4f}, F_n basis '{self.load_basis}')")
 
 
-def calibrate_x_te(case: "Case", drop_percent: float | None = None, point: str | None = None,
-                   load_basis: str | None = None, temperature: TemperatureField | None = None,
-                   normal_load: float | None = None) -> Calibration:
-    """Solve for the X_te that gives ``drop_percent`` at path point ``point`` (A–E) for a case under the external
-    normal load ``normal_load`` [N] (defaults from ``[thermal]`` and the case's operating point)."""
-    section = case.thermal
+def calibrate(inputs: PaperThermalInputs, section: "ThermalSection", temperature: TemperatureField,
+              drop_percent: float | None = None, point: str | None = None, load_basis: str | None = None,
+              normal_load: float | None = None) -> Calibration:
+    """Solve for the X_te that gives ``drop_percent`` at path point ``point`` (A–E) of the pair of ``inputs`` in the
+    temperature field ``temperature`` under the external normal load ``normal_load`` [N] (defaults from the
+    ``[thermal]`` section and the operating point of ``inputs``)."""
     drop_percent = section.calibration_drop_percent if drop_percent is None else drop_percent
     if drop_percent is None:
         raise CaseError("thermal.calibration_drop_percent", None, "(0, 100)",
                         "x_te_source = 'calibrated' needs the target stiffness drop")
     point = section.calibration_point if point is None else point
-    points = case.gear_pair.path_points
+    pair = inputs.gear_pair
+    points = pair.path_points
     if point not in points:
         raise CaseError("thermal.calibration_point", point, "one of A, B, C, D, E", "unknown path point")
     basis = section.load_basis if load_basis is None else load_basis
     roll = np.array([points[point]])
-    elastic = pair_compliance(case.gear_pair, case.material, roll)
+    elastic = pair_compliance(pair, inputs.material, roll)
     stiffness = np.asarray(elastic.stiffness, dtype=float)
-    inputs = PaperThermalInputs.from_case(case)
-    temperature = temperature_field_from_case(case) if temperature is None else temperature
     expansion_pinion, expansion_wheel = inputs.expansion(roll, temperature)
     load = inputs.normal_load_at(roll, basis, external_load=normal_load)
     x_te = float(np.ravel(x_te_for_drop(drop_percent, load, stiffness, expansion_pinion + expansion_wheel))[0])
-    return Calibration(x_te=x_te, point=point, gamma=float(case.gear_pair.gamma(points[point])),
+    return Calibration(x_te=x_te, point=point, gamma=float(pair.gamma(points[point])),
                        drop_percent=float(drop_percent), load_basis=basis)
 
 
-def resolve_x_te(case: "Case", load_basis: str | None = None, temperature: TemperatureField | None = None,
+def x_te_provider(name: str) -> XteProvider:
+    """The X_te provider registered (or built in) under ``name`` (``[thermal].x_te_source``); ThermogearError when
+    none is (its module is not installed)."""
+    provider = _PROVIDERS.get(name) or builtin(X_TE_PROVIDERS, name)
+    if provider is None:
+        raise ThermogearError(f"thermal.x_te_source = '{name}': the finite-element thermo-elastic "
+                              "analysis is not registered (its module is not installed); use "
+                              "'given' or 'calibrated'")
+    return provider
+
+
+def section_x_te(section: "ThermalSection", inputs: PaperThermalInputs, temperature: Callable[[], TemperatureField],
+                 provided: Callable[[], float], load_basis: str | None = None,
                  normal_load: float | None = None) -> tuple[float, str]:
-    """(X_te, source label) from ``[thermal]``: ``"given"``, ``"calibrated: X_te=… gives … % drop at …"`` or
-    ``"fem"``. Raises CaseError for missing or contradictory keys, ThermogearError when the FE model is absent.
-    A calibration is solved at ``normal_load`` [N] (default: the case's), so a case asked for another load keeps
-    its calibration target, exactly as the same case file at that load would. With the case's own settings (no
-    option given) the answer is computed once per case."""
-    if load_basis is None and temperature is None and (normal_load is None or normal_load == case.normal_load):
-        return _resolve_x_te_of_case(case)
-    return _resolve_x_te(case, load_basis, temperature, normal_load)
-
-
-@cached_per_case
-def _resolve_x_te_of_case(case: "Case") -> tuple[float, str]:
-    return _resolve_x_te(case, None, None, None)
-
-
-def _resolve_x_te(case: "Case", load_basis: str | None, temperature: TemperatureField | None,
-                  normal_load: float | None) -> tuple[float, str]:
-    section = case.thermal
+    """(X_te, source label) from a ``[thermal]`` section: ``"given"``, ``"calibrated: X_te=… gives … % drop at …"``
+    (solved by :func:`calibrate` in the field ``temperature()`` at ``normal_load`` [N], default the operating
+    point's) or the provider's value ``provided()``. Raises CaseError for missing or contradictory keys."""
     if section.x_te_source == "given":
         if section.x_te is None:
             raise CaseError("thermal.x_te", None, ">= 0", "x_te_source = 'given' needs thermal.x_te")
@@ -127,15 +123,9 @@ def _resolve_x_te(case: "Case", load_basis: str | None, temperature: Temperature
         if section.x_te is not None:
             raise CaseError("thermal.x_te", section.x_te, "absent with x_te_source = 'calibrated'",
                             "X_te is either given or calibrated; remove one of them")
-        temperature = temperature_field_from_case(case) if temperature is None else temperature
-        calibration = calibrate_x_te(case, load_basis=load_basis, temperature=temperature, normal_load=normal_load)
+        calibration = calibrate(inputs, section, temperature(), load_basis=load_basis, normal_load=normal_load)
         check_x_te(calibration.x_te)
         return calibration.x_te, calibration.label
-    provider = _PROVIDERS.get(section.x_te_source) or builtin(X_TE_PROVIDERS, section.x_te_source)
-    if provider is None:
-        raise ThermogearError(f"thermal.x_te_source = '{section.x_te_source}': the finite-element thermo-elastic "
-                              "analysis is not registered (its module is not installed); use "
-                              "'given' or 'calibrated'")
-    value = float(provider(case))
+    value = float(provided())
     check_x_te(value)
     return value, section.x_te_source

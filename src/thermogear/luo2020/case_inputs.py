@@ -5,7 +5,6 @@ and the normal load F_n of Eqs. 13–18 (the external load, or the pair's share 
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -16,9 +15,6 @@ from thermogear.stiffness.table import pair_stiffness_at
 from thermogear.luo2020.expansion import pair_flank_expansion
 from thermogear.luo2020.stiffness import pair_share_normal_load
 from thermogear.temperature_source import TemperatureField
-
-if TYPE_CHECKING:
-    from thermogear.case import Case
 
 
 @dataclass(frozen=True, eq=False)
@@ -31,12 +27,6 @@ class PaperThermalInputs:
     expansion_model: str
     load_basis: str
     normal_load: float
-
-    @classmethod
-    def from_case(cls, case: "Case") -> "PaperThermalInputs":
-        """The inputs of a case (the one place they are read from it)."""
-        return cls(gear_pair=case.gear_pair, material=case.material, expansion_model=case.thermal.expansion_model,
-                   load_basis=case.thermal.load_basis, normal_load=case.normal_load)
 
     def expansion(self, roll, temperature: TemperatureField):
         """(Δ_t1, Δ_t2) [m] of the pair at roll distances T1K [m] in a temperature field (Eqs. 8–12)."""

@@ -2,13 +2,19 @@
 cached PEM table, flank expansions of the case's temperature field, X_te given / calibrated / from a provider,
 and the normal load of Eqs. 13–18 as an argument.
 
-With the external load basis k_T is a smooth function of the roll distance for a given load: it is tabulated
-once per case and load on the PEM table's roll grid and interpolated by a cubic spline, like k_e, so every
-operating point and sweep at that load reuses it.
+:func:`paper_thermal_model` resolves a case into a :class:`PaperThermalModel`: the small inputs (gear pair,
+material, ``[thermal]`` section, operating load), the temperature field and the X_te provider. The model answers
+everything else without the case. With the external load basis k_T is a smooth function of the roll distance for a
+given load: it is tabulated once per case and load on the PEM table's roll grid and interpolated by a cubic spline,
+like k_e, so every operating point and sweep at that load reuses it. What is computed once per case (the splines,
+the case's own X_te) lives in a memo kept per case that holds no reference to the case, so a case is freed with
+its memo when nothing else holds it.
 """
 
 from __future__ import annotations
 
+from collections.abc import Callable
+from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -17,98 +23,186 @@ from thermogear import warning_scope
 from thermogear.case import cached_per_case
 from thermogear.stiffness.potential_energy import pair_compliance
 from thermogear.stiffness.table import pair_compliance_table, tooth_compliance_at
-from thermogear.luo2020.calibration import resolve_x_te
+from thermogear.luo2020.calibration import Calibration, calibrate, section_x_te, x_te_provider
 from thermogear.luo2020.case_inputs import PaperThermalInputs
 from thermogear.luo2020.stiffness import (CONTACT_TOLERANCE, ThermalStiffness, check_x_te, thermal_pair_stiffness)
 from thermogear.temperature_source import TemperatureField, temperature_field_from_case
 
 if TYPE_CHECKING:
     from thermogear.case import Case
+    from thermogear.schema.thermal import ThermalSection
 
 #: Splines kept per case (one per distinct normal load) before the oldest is dropped.
-_SPLINES_PER_CASE = 64
+SPLINES_PER_CASE = 64
 
 
+@dataclass(frozen=True, eq=False)
+class PaperThermalModel:
+    """The paper's k_T of one case, resolved: its inputs, its ``[thermal]`` section, its temperature field (asked
+    for when first needed, ``field_of()``), its X_te provider (``provided_x_te()``, asked only for a provider
+    source such as ``"fem"``) and ``memo``, what is computed once per case (splines by load, the own X_te)."""
+
+    inputs: PaperThermalInputs
+    section: "ThermalSection"
+    field_of: Callable[[], TemperatureField]
+    provided_x_te: Callable[[], float]
+    memo: dict = field(default_factory=dict, repr=False)  # "splines": {load: (spline, warnings)}, "own_x_te"
+
+    @property
+    def temperature(self) -> TemperatureField:
+        return self.field_of()
+
+    # ---------------------------------------------------------------------------------------------- X_te
+    def calibrate_x_te(self, drop_percent: float | None = None, point: str | None = None,
+                       load_basis: str | None = None, temperature: TemperatureField | None = None,
+                       normal_load: float | None = None) -> Calibration:
+        """The X_te that gives ``drop_percent`` at path point ``point`` (A–E) under the external normal load
+        ``normal_load`` [N] (defaults from ``[thermal]`` and the operating point; :func:`calibrate`)."""
+        return calibrate(self.inputs, self.section, self.temperature if temperature is None else temperature,
+                         drop_percent, point, load_basis, normal_load)
+
+    def resolve_x_te(self, load_basis: str | None = None, temperature: TemperatureField | None = None,
+                     normal_load: float | None = None) -> tuple[float, str]:
+        """(X_te, source label) from ``[thermal]`` (:func:`~thermogear.luo2020.calibration.section_x_te`). A
+        calibration is solved at ``normal_load`` [N] (default: the operating point's), so a case asked for another
+        load keeps its calibration target, exactly as the same case file at that load would. With the model's own
+        settings (no option given) the answer is computed once."""
+        if load_basis is None and temperature is None and (normal_load is None
+                                                           or normal_load == self.inputs.normal_load):
+            entry = self.memo.get("own_x_te")
+            if entry is None:
+                with warning_scope.recorded() as caught:
+                    value = section_x_te(self.section, self.inputs, self.field_of, self.provided_x_te)
+                entry = self.memo["own_x_te"] = (value, warning_scope.kept(caught))
+            warning_scope.raise_again(entry[1])  # the cache never swallows a warning the second time
+            return entry[0]
+        field_of = self.field_of if temperature is None else (lambda: temperature)
+        return section_x_te(self.section, self.inputs, field_of, self.provided_x_te, load_basis, normal_load)
+
+    # ------------------------------------------------------------------------------------------ stiffness
+    def thermal_stiffness(self, roll, x_te: float | None = None, load_basis: str | None = None,
+                          temperature: TemperatureField | None = None, normal_load: float | None = None
+                          ) -> ThermalStiffness:
+        """Thermal stiffness of the tooth pair at roll distances T1K [m] (Luo & Li Eqs. 8–23).
+
+        X_te is resolved from ``[thermal]`` (given / calibrated / provider) unless ``x_te`` is passed;
+        ``load_basis`` overrides ``[thermal].load_basis``; ``normal_load`` [N] the external load (default: the
+        operating point's)."""
+        roll = np.atleast_1d(np.asarray(roll, dtype=float))
+        basis = self.section.load_basis if load_basis is None else load_basis
+        temperature = self.temperature if temperature is None else temperature
+        if x_te is None:
+            x_te, source = self.resolve_x_te(load_basis=basis, temperature=temperature)
+        else:
+            check_x_te(x_te)
+            source = "given (argument)"
+        pair = self.inputs.gear_pair
+        elastic = pair_compliance(pair, self.inputs.material, roll)
+        expansion_pinion, expansion_wheel = self.inputs.expansion(roll, temperature)
+        load = self.inputs.normal_load_at(roll, basis, external_load=normal_load)
+        return ThermalStiffness(roll=roll, gamma=np.asarray(pair.gamma(roll)), elastic=elastic,
+                                expansion_pinion=np.asarray(expansion_pinion),
+                                expansion_wheel=np.asarray(expansion_wheel), x_te=float(x_te), x_te_source=source,
+                                load_basis=basis, normal_load=load, temperature=temperature)
+
+    def pair_stiffness_at(self, roll, x_te: float | None = None, normal_load: float | None = None) -> np.ndarray:
+        """k_T [N/m] (total over the face width) of one tooth pair at roll distances T1K [m] under the external
+        normal load ``normal_load`` [N] (default: the operating point's): what the dynamics use, summed over the
+        pairs in contact. Zero outside the path [A, E]. Tabulated per load with the model's own X_te and the
+        external load basis; evaluated directly otherwise."""
+        roll = np.asarray(roll, dtype=float)
+        points = self.inputs.gear_pair.path_points
+        inside = (roll >= points["A"] - CONTACT_TOLERANCE) & (roll <= points["E"] + CONTACT_TOLERANCE)
+        result = np.zeros(roll.shape)
+        load = self.inputs.normal_load if normal_load is None else float(normal_load)
+        if np.any(inside):
+            inner = np.clip(roll[inside], points["A"], points["E"])
+            if x_te is None and self.section.load_basis == "external":
+                result[inside] = self.spline(load)(inner)
+            else:
+                result[inside] = self.pair_stiffness_direct(inner, x_te, load)
+        return result if result.ndim else float(result)
+
+    def pair_stiffness_direct(self, roll: np.ndarray, x_te: float | None, normal_load: float) -> np.ndarray:
+        """k_T [N/m] at roll distances on [A, E] from Eqs. 8–23 directly (elastic compliances from the PEM
+        table)."""
+        temperature = self.temperature
+        if x_te is None:
+            x_te, _ = self.resolve_x_te(normal_load=normal_load)
+        check_x_te(x_te)
+        pinion, wheel = tooth_compliance_at(self.inputs.gear_pair, self.inputs.material, roll)
+        expansion_pinion, expansion_wheel = self.inputs.expansion(roll, temperature)
+        load = self.inputs.normal_load_at(roll, external_load=normal_load)
+        return thermal_pair_stiffness(pinion, wheel, expansion_pinion, expansion_wheel, load, x_te).stiffness
+
+    def spline(self, normal_load: float):
+        """Cubic spline of k_T over the PEM table's roll grid (401 points from A to E), once per load."""
+        from scipy.interpolate import CubicSpline  # noqa: PLC0415  (scipy only where a spline is built)
+
+        splines = self.memo.setdefault("splines", {})
+        entry = splines.get(normal_load)
+        if entry is None:
+            with warning_scope.recorded() as caught:
+                roll = np.asarray(pair_compliance_table(self.inputs.gear_pair, self.inputs.material).roll)
+                spline = CubicSpline(roll, self.pair_stiffness_direct(roll, None, normal_load))
+            if len(splines) >= SPLINES_PER_CASE:
+                splines.pop(next(iter(splines)))
+            entry = splines[normal_load] = (spline, warning_scope.kept(caught))
+        warning_scope.raise_again(entry[1])  # the cache never swallows a warning the second time
+        return entry[0]
+
+
+# ------------------------------------------------------------------------------------ the case's resolver
+@cached_per_case
+def _memo_of_case(case: "Case") -> dict:
+    return {}
+
+
+def paper_thermal_model(case: "Case") -> PaperThermalModel:
+    """The paper's k_T model of a case (the one place it reads the case); what it computes once per case is kept in
+    the case's memo, which holds no reference to the case (a model is cheap to build, its memo is shared)."""
+    section = case.thermal
+
+    def field_of() -> TemperatureField:
+        return temperature_field_from_case(case)
+
+    def provided_x_te() -> float:
+        return x_te_provider(section.x_te_source)(case)
+
+    inputs = PaperThermalInputs(gear_pair=case.gear_pair, material=case.material,
+                                expansion_model=section.expansion_model, load_basis=section.load_basis,
+                                normal_load=case.normal_load)
+    return PaperThermalModel(inputs=inputs, section=section, field_of=field_of, provided_x_te=provided_x_te,
+                             memo=_memo_of_case(case))
+
+
+# ---------------------------------------------------------------- the public functions of a case (resolvers)
 def thermal_stiffness(case: "Case", roll, x_te: float | None = None, load_basis: str | None = None,
                       temperature: TemperatureField | None = None, normal_load: float | None = None
                       ) -> ThermalStiffness:
-    """Thermal stiffness of a case's tooth pair at roll distances T1K [m] (Luo & Li Eqs. 8–23).
-
-    X_te is resolved from the case (given / calibrated / provider) unless ``x_te`` is passed; ``load_basis``
-    overrides ``[thermal].load_basis``; ``normal_load`` [N] the external load (default: the case's).
-    """
-    roll = np.atleast_1d(np.asarray(roll, dtype=float))
-    basis = case.thermal.load_basis if load_basis is None else load_basis
-    temperature = temperature_field_from_case(case) if temperature is None else temperature
-    if x_te is None:
-        x_te, source = resolve_x_te(case, load_basis=basis, temperature=temperature)
-    else:
-        check_x_te(x_te)
-        source = "given (argument)"
-    elastic = pair_compliance(case.gear_pair, case.material, roll)
-    inputs = PaperThermalInputs.from_case(case)
-    expansion_pinion, expansion_wheel = inputs.expansion(roll, temperature)
-    load = inputs.normal_load_at(roll, basis, external_load=normal_load)
-    return ThermalStiffness(roll=roll, gamma=np.asarray(case.gear_pair.gamma(roll)), elastic=elastic,
-                            expansion_pinion=np.asarray(expansion_pinion), expansion_wheel=np.asarray(expansion_wheel),
-                            x_te=float(x_te), x_te_source=source, load_basis=basis, normal_load=load,
-                            temperature=temperature)
+    """:meth:`PaperThermalModel.thermal_stiffness` of a case's pair at roll distances T1K [m]."""
+    return paper_thermal_model(case).thermal_stiffness(roll, x_te, load_basis, temperature, normal_load)
 
 
 def thermal_pair_stiffness_at(case: "Case", roll, x_te: float | None = None, normal_load: float | None = None
                               ) -> np.ndarray:
-    """k_T [N/m] (total over the face width) of one tooth pair at roll distances T1K [m] under the external normal
-    load ``normal_load`` [N] (default: the case's): what the dynamics use, summed over the pairs in contact.
-    Zero outside the path [A, E]. Tabulated per case and load with the case's own X_te and the external load
-    basis; evaluated directly otherwise."""
-    roll = np.asarray(roll, dtype=float)
-    points = case.gear_pair.path_points
-    inside = (roll >= points["A"] - CONTACT_TOLERANCE) & (roll <= points["E"] + CONTACT_TOLERANCE)
-    result = np.zeros(roll.shape)
-    load = case.normal_load if normal_load is None else float(normal_load)
-    if np.any(inside):
-        inner = np.clip(roll[inside], points["A"], points["E"])
-        if x_te is None and case.thermal.load_basis == "external":
-            result[inside] = _spline(case, load)(inner)
-        else:
-            result[inside] = _thermal_pair_stiffness_direct(case, inner, x_te, load)
-    return result if result.ndim else float(result)
+    """:meth:`PaperThermalModel.pair_stiffness_at` of a case: k_T [N/m] of one pair at roll distances T1K [m]."""
+    return paper_thermal_model(case).pair_stiffness_at(roll, x_te, normal_load)
 
 
-def _thermal_pair_stiffness_direct(case: "Case", roll: np.ndarray, x_te: float | None, normal_load: float
-                                   ) -> np.ndarray:
-    """k_T [N/m] at roll distances on [A, E] from Eqs. 8–23 directly (elastic compliances from the PEM table)."""
-    temperature = temperature_field_from_case(case)
-    if x_te is None:
-        x_te, _ = resolve_x_te(case, normal_load=normal_load)
-    check_x_te(x_te)
-    pinion, wheel = tooth_compliance_at(case.gear_pair, case.material, roll)
-    inputs = PaperThermalInputs.from_case(case)
-    expansion_pinion, expansion_wheel = inputs.expansion(roll, temperature)
-    load = inputs.normal_load_at(roll, external_load=normal_load)
-    return thermal_pair_stiffness(pinion, wheel, expansion_pinion, expansion_wheel, load, x_te).stiffness
+def calibrate_x_te(case: "Case", drop_percent: float | None = None, point: str | None = None,
+                   load_basis: str | None = None, temperature: TemperatureField | None = None,
+                   normal_load: float | None = None) -> Calibration:
+    """:meth:`PaperThermalModel.calibrate_x_te` of a case."""
+    return paper_thermal_model(case).calibrate_x_te(drop_percent, point, load_basis, temperature, normal_load)
 
 
-@cached_per_case
-def _splines_of_case(case: "Case") -> dict:
-    return {}
+def resolve_x_te(case: "Case", load_basis: str | None = None, temperature: TemperatureField | None = None,
+                 normal_load: float | None = None) -> tuple[float, str]:
+    """:meth:`PaperThermalModel.resolve_x_te` of a case: (X_te, source label). Raises CaseError for missing or
+    contradictory keys, ThermogearError when the FE model is absent."""
+    return paper_thermal_model(case).resolve_x_te(load_basis, temperature, normal_load)
 
 
-def _spline(case: "Case", normal_load: float):
-    """Cubic spline of k_T over the PEM table's roll grid (401 points from A to E), once per case and load."""
-    from scipy.interpolate import CubicSpline  # noqa: PLC0415  (scipy only where a spline is built)
-
-    splines = _splines_of_case(case)
-    entry = splines.get(normal_load)
-    if entry is None:
-        with warning_scope.recorded() as caught:
-            roll = np.asarray(pair_compliance_table(case.gear_pair, case.material).roll)
-            spline = CubicSpline(roll, _thermal_pair_stiffness_direct(case, roll, None, normal_load))
-        if len(splines) >= _SPLINES_PER_CASE:
-            splines.pop(next(iter(splines)))
-        entry = splines[normal_load] = (spline, warning_scope.kept(caught))
-    warning_scope.raise_again(entry[1])  # the cache never swallows a warning the second time
-    return entry[0]
-
-
-__all__ = ["thermal_pair_stiffness_at", "thermal_stiffness"]
+__all__ = ["PaperThermalModel", "calibrate_x_te", "paper_thermal_model", "resolve_x_te", "thermal_pair_stiffness_at",
+           "thermal_stiffness"]

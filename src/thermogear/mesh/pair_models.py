@@ -44,6 +44,7 @@ class PairModel(Protocol):
 
     name: ClassVar[str]
     thermal: ClassVar[bool]
+    uses_x_te: ClassVar[bool]
 
     @property
     def gear_pair(self): ...
@@ -77,6 +78,9 @@ class PairModelBase:
     name: ClassVar[str] = ""
     #: True for a thermal model: temperatures from the case's field, the friction oil at the flank temperature.
     thermal: ClassVar[bool] = True
+    #: True where the stiffness rests on the paper's factor X_te (Luo & Li (2020) Eqs. 13–23): only then do X_te,
+    #: its calibration and the paper's stiffness curves along the path exist.
+    uses_x_te: ClassVar[bool] = False
 
     @classmethod
     def choice_flags(cls, mesh: str) -> list[str]:
@@ -190,6 +194,7 @@ class Luo2020Pair(PairModelBase):
     thermal distortion is not a deviation (the paper's model has none)."""
 
     name: ClassVar[str] = "luo2020"
+    uses_x_te: ClassVar[bool] = True
 
     @classmethod
     def choice_flags(cls, mesh: str) -> list[str]:

@@ -42,9 +42,10 @@ class ReportOutcome:
         return self.folder / "report.html"
 
 
-def report_steps(case, models=("elastic", "thermal")) -> list[str]:
-    """The progress steps of :func:`build_report` for ``case`` (for a progress bar's total)."""
-    return steps_of_report(is_paper_case(case), models)
+def report_steps(citation: str | None, models=("elastic", "thermal")) -> list[str]:
+    """The progress steps of :func:`build_report` for a case whose ``[case] citation`` is ``citation`` (for a
+    progress bar's total)."""
+    return steps_of_report(is_paper_case(citation), models)
 
 
 def build_report(case, out: Path | str, *, force: bool = False, method: str = "periodic", paper: bool | None = None,
@@ -71,7 +72,7 @@ def build_report(case, out: Path | str, *, force: bool = False, method: str = "p
     folder = OutputFolder(Path(out), force=force)
     folder.check()
     clear_citations()
-    paper = is_paper_case(case) if paper is None else paper
+    paper = is_paper_case(case.citation) if paper is None else paper
     rig = start_rig_prediction() if paper else None  # the paper's rig, predicted in a child meanwhile
     evaluation = evaluate_case(case, method=method, progress=step, wait=False)  # FE: still in its child
     evaluation.timings = {**before, **evaluation.timings}
@@ -110,7 +111,7 @@ def build_report(case, out: Path | str, *, force: bool = False, method: str = "p
         messages = [text for model, response in evaluation.responses.items()
                     for text in model_messages(response, model)]
         citations = citations_used()
-        page = render_report(evaluation, version=__version__, toml_text=case_toml_text(case), pngs=pngs,
+        page = render_report(evaluation, version=__version__, toml_text=case_toml_text(case.source, case.document), pngs=pngs,
                              missing_figures=missing, results=results, verdicts=verdicts, messages=messages,
                              citations=citations)
         if paper:

@@ -53,10 +53,9 @@ def _stairs(ax, values, edges, **style):
     return ax.plot(np.repeat(edges, 2)[1:-1], np.repeat(values, 2), **style)
 
 
-def _mark_points(ax, case) -> None:
+def _mark_points(ax, pair) -> None:
     """Vertical lines at A–E with their letters above the axes; letters closer than 6 % of the path to the
     previous one go one row higher, so that B and C (or C and D) never overlap on a short single-contact zone."""
-    pair = case.gear_pair
     points = sorted(((float(pair.gamma(roll)), name) for name, roll in pair.path_points.items()))
     span = max(points[-1][0] - points[0][0], 1e-12)
     level, previous = 0, None
@@ -81,7 +80,7 @@ def fig3c(evaluation):
     table = case.temperature
     if getattr(table, "gamma", None) is not None and getattr(table, "flank_c", None) is not None:
         ax.plot(table.gamma, table.flank_c, "ko", ms=4, label="tabulated input")
-    _mark_points(ax, case)
+    _mark_points(ax, pair)
     ax.set_xlabel("contact position Γ [–]")
     ax.set_ylabel("flank temperature [°C]")
     ax.legend(fontsize=8, loc="best")
@@ -99,7 +98,7 @@ def fig4(evaluation):
     except ImportError:
         plot_thermal_curves = None
     if plot_thermal_curves is not None:
-        return plot_thermal_curves(evaluation.thermal_curves, evaluation.case)
+        return plot_thermal_curves(evaluation.thermal_curves, evaluation.case.name)
     plt = _pyplot()  # fallback: the pair curves only
     curve = evaluation.thermal_curves.curve
     width = evaluation.case.gear_pair.face_width
@@ -160,7 +159,7 @@ def _damping_figure(evaluation, model: str):
     left.set_xlabel("contact position Γ [–]")
     left.set_ylabel("damping of one tooth pair [N·s/m]")
     left.set_title("per pair along the path")
-    _mark_points(left, evaluation.case)
+    _mark_points(left, evaluation.case.gear_pair)
     grid = summary.grids[model]  # each model's own mesh grid (the thermoelastic one is the hot pair's)
     period = grid.nodes[-1]
     periods = 3
@@ -172,7 +171,7 @@ def _damping_figure(evaluation, model: str):
         if np.isfinite(means.get(region, np.nan)):
             right.axhline(means[region], color=_COLORS[model], ls=style, lw=0.8,
                           label=f"thermogear mean, {region}: {means[region]:.3g}")
-    reference = paper_reference(evaluation.case)  # None unless the case is a parameter set of the paper
+    reference = paper_reference(evaluation.case.citation)  # None unless the case is a parameter set of the paper
     if reference is not None:
         paper = reference.mean_damping_n_s_per_m[model]
         for region, style in (("single", "-."), ("double", ":")):

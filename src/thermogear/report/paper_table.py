@@ -53,13 +53,13 @@ class PaperReference:
     mean_damping_n_s_per_m: dict
 
 
-def paper_reference(case) -> PaperReference | None:
-    """The paper's numbers for ``case`` when the case is a parameter set of the paper (its citation carries the
-    paper's DOI: :func:`thermogear.evaluation.is_paper_case`), else None: a pair of one's own is never compared with
+def paper_reference(citation: str | None) -> PaperReference | None:
+    """The paper's numbers for a case whose ``[case] citation`` is ``citation`` when the case is a parameter set of
+    the paper (its citation carries the paper's DOI: :func:`thermogear.evaluation.is_paper_case`), else None: a pair of one's own is never compared with
     the paper's numbers."""
     from thermogear.evaluation import is_paper_case
 
-    if not is_paper_case(case):
+    if not is_paper_case(citation):
         return None
     damping_keys = {"elastic": "fig7.ce", "thermal": "fig8.cr"}
     return PaperReference(

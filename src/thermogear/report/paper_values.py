@@ -68,33 +68,30 @@ def _flank_temperature(evaluation: Evaluation) -> tuple[np.ndarray, np.ndarray]:
 
 
 # -------------------------------------------------------------------------------------- paper values
-def _input_values(case) -> dict[str, Any]:
-    from thermogear.lubricant import lubricant_from_case
-
-    pair, material, document = case.gear_pair, case.material, case.document
-    oil = lubricant_from_case(case)
+def _input_values(pair, material, operating, oil, lubricant, roughness_ra: float) -> dict[str, Any]:
+    """The rows of the paper's Table 1 (and Fig. 7's oil temperature) from a case's gear pair, material, operating
+    point, oil, ``[lubricant]`` section and roughness Ra [m]."""
     schema_gap = "not given in this case ([lubricant] specific_heat_j_per_kg_k / thermal_conductivity_w_per_m_k)"
     return {
         "table1.pinion_teeth": pair.pinion.teeth, "table1.wheel_teeth": pair.wheel.teeth,
         "table1.module": pair.module * 1e3, "table1.pressure_angle": np.degrees(pair.pinion.pressure_angle),
         "table1.face_width": pair.face_width * 1e3, "table1.pinion_profile_shift": pair.pinion.profile_shift,
         "table1.wheel_profile_shift": pair.wheel.profile_shift, "table1.centre_distance": pair.centre_distance * 1e3,
-        "table1.power": case.operating_point.power / 1e3, "table1.speed": case.operating_point.speed_rpm,
+        "table1.power": operating.power / 1e3, "table1.speed": operating.speed_rpm,
         "table1.youngs_modulus": material.youngs_modulus / 1e9, "table1.poisson_ratio": material.poisson_ratio,
         "table1.density": material.density, "table1.specific_heat": material.specific_heat,
         "table1.thermal_conductivity": material.thermal_conductivity,
         "table1.oil_density": oil.density_reference,
         "table1.oil_viscosity_40": float(oil.kinematic_viscosity(40.0, warn=False)) * 1e6,
         "table1.oil_viscosity_100": float(oil.kinematic_viscosity(100.0, warn=False)) * 1e6,
-        "table1.oil_specific_heat": (case.lubricant.specific_heat_j_per_kg_k
-                                     if case.lubricant.specific_heat_j_per_kg_k is not None else (None, schema_gap)),
-        "table1.oil_thermal_conductivity": (case.lubricant.thermal_conductivity_w_per_m_k
-                                            if case.lubricant.thermal_conductivity_w_per_m_k is not None
+        "table1.oil_specific_heat": (lubricant.specific_heat_j_per_kg_k
+                                     if lubricant.specific_heat_j_per_kg_k is not None else (None, schema_gap)),
+        "table1.oil_thermal_conductivity": (lubricant.thermal_conductivity_w_per_m_k
+                                            if lubricant.thermal_conductivity_w_per_m_k is not None
                                             else (None, schema_gap)),
-        "table1.oil_operating_temperature": case.lubricant.operating_temperature_c,
-        "table1.roughness": case.roughness_ra * 1e6,
-        "fig7.oil_temperature_elastic": case.lubricant.reference_temperature_c,
-        "_document": document,
+        "table1.oil_operating_temperature": lubricant.operating_temperature_c,
+        "table1.roughness": roughness_ra * 1e6,
+        "fig7.oil_temperature_elastic": lubricant.reference_temperature_c,
     }
 
 
@@ -102,8 +99,10 @@ def paper_values(evaluation: Evaluation) -> dict[str, Any]:
     """thermogear's value of every row: a number / bool, or ``(None, reason)`` when it cannot be computed."""
     case = evaluation.case
     values: dict[str, Any] = {}
-    values.update(_input_values(case))
-    values.pop("_document", None)
+    from thermogear.lubricant import lubricant_from_case
+
+    values.update(_input_values(case.gear_pair, case.material, case.operating_point, lubricant_from_case(case),
+                                case.lubricant, case.roughness_ra))
 
     def guarded(keys: tuple[str, ...], stages: tuple[str, ...], compute: Callable[[], dict]) -> None:
         reason = evaluation.problem(*stages)
@@ -266,9 +265,10 @@ def paper_values(evaluation: Evaluation) -> dict[str, Any]:
              "fig12.peaks_at_transitions", "fig12.max_pair_load_at_B"), ("elastic model", "thermal model"), response)
 
     def shares():
+        from thermogear.mesh.model import MeshModel
         from thermogear.summaries.load_share import pair_load_share_at_points
 
-        elastic, thermal = (pair_load_share_at_points(case, model) for model in ("elastic", "thermal"))
+        elastic, thermal = (pair_load_share_at_points(MeshModel(case, model)) for model in ("elastic", "thermal"))
         return {"fig12.single_pair_rises_at_A_E": bool(thermal["A"] > elastic["A"] and thermal["E"] > elastic["E"]
                                                        and thermal["B"] < elastic["B"] and thermal["D"] < elastic["D"]),
                 "_pair_share": {"elastic": elastic, "thermal": thermal}}

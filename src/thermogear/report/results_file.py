@@ -26,18 +26,19 @@ RESPONSE_GROUPS = {("responses", "elastic"): "elastic_steady", ("responses", "th
                    ("transients", "elastic"): "elastic_transient", ("transients", "thermal"): "thermal_transient"}
 
 
-def case_toml_text(case) -> str:
-    """The case file's text (the built-in parameter set or the user's file), else the document re-serialised."""
-    source = Path(str(case.source))
-    if source.suffix == ".toml" and source.is_file():
-        return source.read_text(encoding="utf-8")
+def case_toml_text(source: str, document: dict) -> str:
+    """A case file's text from the case's ``source`` (the built-in parameter set's name or the user's file), else
+    its ``document`` re-serialised."""
+    path = Path(str(source))
+    if path.suffix == ".toml" and path.is_file():
+        return path.read_text(encoding="utf-8")
     from thermogear.case import parameter_set_names, parameter_set_path
 
-    if str(case.source) in parameter_set_names():
-        return parameter_set_path(str(case.source)).read_text(encoding="utf-8")
+    if str(source) in parameter_set_names():
+        return parameter_set_path(str(source)).read_text(encoding="utf-8")
     import tomli_w
 
-    return tomli_w.dumps(case.document)
+    return tomli_w.dumps(document)
 
 
 def curves_dataset(evaluation):
@@ -96,7 +97,7 @@ def curves_parts(evaluation) -> tuple[dict, dict, dict]:
         data[f"{model}_cycle_mesh_damping"] = (f"{model}_cycle_time", np.asarray(mesh_damping), {"units": "N s/m"})
         data[f"{model}_cycle_contact_count"] = (f"{model}_cycle_time", np.asarray(grid.contact_count, dtype=np.int64))
     attrs = {"title": f"thermogear report data: {case.title or case.name}", "thermogear_version": __version__,
-             "case_name": case.name, "case_source": str(case.source), "case_toml": case_toml_text(case),
+             "case_name": case.name, "case_source": str(case.source), "case_toml": case_toml_text(case.source, case.document),
              "face_width_m": pair.face_width, "equivalent_mass_kg": case.equivalent_mass,
              "static_normal_load_n": case.normal_load,
              "groups": json.dumps({name: f"{model} model, {'steady state' if kind == 'responses' else 'from rest'}"

@@ -3,8 +3,8 @@ show it (Luo & Li (2020) Eqs. 26–28, Figs. 7–8), computed by the mesh model.
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -12,9 +12,7 @@ from thermogear.damping import MODELS, RULES, contact_region_means, mesh_damping
 from thermogear.errors import CaseError
 from thermogear.lubricant import Lubricant
 from thermogear.mesh.model import MeshModel
-
-if TYPE_CHECKING:
-    from thermogear.case import Case
+from thermogear.schema.dynamics import DampingSection
 
 
 @dataclass(frozen=True)
@@ -60,17 +58,18 @@ class DampingSummary:
         return result
 
 
-def damping_summary(case: "Case", count: int = 720, path_points: int = 81, rule: str | None = None
-                    ) -> DampingSummary:
-    """The elastic and thermal friction damping of a case at its operating point (per pair along the path and
-    over the mesh cycle), from the mesh model of each."""
-    rule = case.damping.rule if rule is None else rule
+def damping_summary(meshes: Mapping[str, MeshModel], section: DampingSection, name: str, count: int = 720,
+                    path_points: int = 81, rule: str | None = None) -> DampingSummary:
+    """The elastic and thermal friction damping of a case named ``name`` at its operating point (per pair along the
+    path and over the mesh cycle), from its mesh model of each model (``meshes``: model name → mesh model) and its
+    ``[damping]`` section (the rule unless ``rule`` is given)."""
+    rule = section.rule if rule is None else rule
     if rule not in RULES:
         raise CaseError("damping.rule", rule, " | ".join(RULES), "unknown mesh-damping rule")
     path, mesh, means, pitch, grids = {}, {}, {}, {}, {}
     oil = None
     for model in MODELS:
-        mesh_model = MeshModel(case, model)
+        mesh_model = meshes[model]
         oil = mesh_model.lubricant
         pair = mesh_model.gear_pair
         path[model] = mesh_model.pair_damping_at(pair.roll_grid(path_points))
@@ -79,7 +78,7 @@ def damping_summary(case: "Case", count: int = 720, path_points: int = 81, rule:
         grid = grids[model] = state.grid
         mesh[model] = mesh_damping(state.pair_damping, grid.in_contact, rule)
         means[model] = contact_region_means(mesh[model], grid.contact_count, grid.steps)
-    return DampingSummary(case_name=case.name, rule=rule, stiffness=case.damping.stiffness, lubricant=oil,
+    return DampingSummary(case_name=name, rule=rule, stiffness=section.stiffness, lubricant=oil,
                           path=path, grids=grids, mesh=mesh, region_means=means, pitch=pitch)
 
 

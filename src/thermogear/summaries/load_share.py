@@ -8,24 +8,18 @@ in mesh with it (:func:`thermogear.mesh_cycle.load_share_at`), with each model's
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 import numpy as np
 
 from thermogear.mesh.model import MeshModel
 from thermogear.mesh_cycle import load_share_at
 
-if TYPE_CHECKING:
-    from thermogear.case import Case
-
 __all__ = ["pair_load_share_at_points"]
 
 
-def pair_load_share_at_points(case: "Case", model: str, points: str = "ABDE") -> dict[str, float]:
+def pair_load_share_at_points(mesh: MeshModel, points: str = "ABDE") -> dict[str, float]:
     """Steady load share [–] of one tooth pair at the named points of the path (A meshing-in, B and D the ends of
-    single contact, C the pitch point, E meshing-out) under ``model`` ("elastic" or "thermal"), at the case's
-    operating load."""
-    mesh = MeshModel(case, model)
+    single contact, C the pitch point, E meshing-out) under the mesh model ``mesh`` (elastic or thermal), at the
+    load of its operating point."""
     path = mesh.gear_pair.path_points
     roll = np.array([path[name] for name in points])
     share, _ = load_share_at(roll, mesh.pair_stiffness_at, path["A"], path["E"], mesh.gear_pair.base_pitch)

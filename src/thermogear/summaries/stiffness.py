@@ -5,18 +5,16 @@ Method B cross-check, per unit face width in N/(mm·μm); and its figure."""
 from __future__ import annotations
 
 import warnings
-from typing import TYPE_CHECKING
 
 import numpy as np
 
 from thermogear.errors import ExtrapolationWarning
+from thermogear.materials import Material
 from thermogear.mesh.model import MeshModel
+from thermogear.operating import OperatingPoint
 from thermogear.stiffness.fillet_foundation import gear_sainsot_messages
 from thermogear.stiffness.iso6336 import N_PER_MM_UM, iso6336_stiffness
 from thermogear.stiffness.table import pair_compliance_table, tooth_compliance_at
-
-if TYPE_CHECKING:
-    from thermogear.case import Case
 
 __all__ = ["MESH_GRID_COUNT", "POINTS", "plot_stiffness", "stiffness_summary"]
 
@@ -24,11 +22,12 @@ POINTS = ("A", "B", "C", "D", "E")
 MESH_GRID_COUNT = 2048
 
 
-def stiffness_summary(case: "Case") -> tuple[dict, list[str]]:
-    """The JSON summary of the elastic stiffness of a case (per-unit-width values in N/(mm·μm)) and the
+def stiffness_summary(mesh: MeshModel, material: Material, operating: OperatingPoint, name: str
+                      ) -> tuple[dict, list[str]]:
+    """The JSON summary of the elastic stiffness of the elastic mesh model ``mesh`` of a case named ``name``, its
+    pair of ``material`` at the operating point ``operating`` (per-unit-width values in N/(mm·μm)), and the
     extrapolation warnings raised while computing it."""
-    mesh = MeshModel(case, "elastic")
-    pair, material = mesh.gear_pair, case.material
+    pair = mesh.gear_pair
     width = pair.face_width
     per_width = 1.0 / (width * N_PER_MM_UM)  # N/m total → N/(mm·μm)
     messages = (gear_sainsot_messages(pair.pinion, "pinion") + gear_sainsot_messages(pair.wheel, "wheel"))
@@ -41,13 +40,13 @@ def stiffness_summary(case: "Case") -> tuple[dict, list[str]]:
         table = pair_compliance_table(pair, material)
         state = mesh.state(points_per_period=MESH_GRID_COUNT, damping=False)
         grid, mesh_k = state.grid, state.mesh_stiffness
-        iso = iso6336_stiffness(pair, material, case.operating_point)  # ISO 6336-1 Method B of the same pair
+        iso = iso6336_stiffness(pair, material, operating)  # ISO 6336-1 Method B of the same pair
     messages += [str(w.message) for w in caught
                  if issubclass(w.category, ExtrapolationWarning) and "Sainsot" not in str(w.message)]
     gamma = pair.gamma(rolls)
     mean = float(grid.time_average(mesh_k))
     summary = {
-        "case": case.name,
+        "case": name,
         "contact_ratio": pair.contact_ratio,
         "centre_distance_mm": pair.centre_distance * 1e3,
         "operating_pressure_angle_deg": float(np.degrees(pair.operating_pressure_angle)),
@@ -75,13 +74,13 @@ def stiffness_summary(case: "Case") -> tuple[dict, list[str]]:
     return summary, messages
 
 
-def plot_stiffness(case: "Case", ax=None):
+def plot_stiffness(mesh: MeshModel, material: Material, name: str, ax=None):
     """Figure: pair and single-tooth stiffness along Γ, and the mesh stiffness over one period (per mm of face
-    width). ``ax``: an array of three axes, or None for a new figure. Returns the figure."""
+    width) of the elastic mesh model ``mesh`` of a case named ``name``, its pair of ``material``. ``ax``: an array of
+    three axes, or None for a new figure. Returns the figure."""
     import matplotlib.pyplot as plt
 
-    mesh = MeshModel(case, "elastic")
-    pair, material = mesh.gear_pair, case.material
+    pair = mesh.gear_pair
     per_width = 1.0 / (pair.face_width * N_PER_MM_UM)
     table = pair_compliance_table(pair, material)
     gamma = pair.gamma(table.roll)
@@ -108,5 +107,5 @@ def plot_stiffness(case: "Case", ax=None):
         ax[2].plot(grid.midpoints / period, values, lw=0.8, label=f"pair {slot}")
     ax[2].set(xlabel="τ / T_m", ylabel="stiffness [N/(mm·μm)]", title="Mesh stiffness over one period")
     ax[2].legend()
-    figure.suptitle(f"{case.name}: elastic mesh stiffness (potential energy method)")
+    figure.suptitle(f"{name}: elastic mesh stiffness (potential energy method)")
     return figure

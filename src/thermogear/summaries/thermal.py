@@ -7,18 +7,11 @@ per unit width in mm·μm/N, expansions in μm, loads in N (total) and N/mm.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
-
 import numpy as np
 
-from thermogear.luo2020.case_stiffness import thermal_stiffness
+from thermogear.luo2020.case_stiffness import PaperThermalModel
 from thermogear.luo2020.stiffness import ThermalStiffness
 from thermogear.mesh.model import MeshModel
-from thermogear.luo2020.calibration import resolve_x_te
-from thermogear.temperature_source import temperature_field_from_case
-
-if TYPE_CHECKING:
-    from thermogear.case import Case
 
 #: Roll positions of the curves along the path (A to E inclusive) used for crossings, extremes and the plot.
 CURVE_POINT_COUNT = 401
@@ -33,24 +26,25 @@ class ThermalCurves:
 
     curve: ThermalStiffness  # on CURVE_POINT_COUNT rolls from A to E
     points: ThermalStiffness  # at A, B, C, D, E
+    face_width: float  # of the pair [m] (the curves are totals over it)
     point_names: tuple[str, ...] = ("A", "B", "C", "D", "E")
 
 
-def thermal_curves(case: "Case", count: int = CURVE_POINT_COUNT, load_basis: str | None = None,
+def thermal_curves(model: PaperThermalModel, count: int = CURVE_POINT_COUNT, load_basis: str | None = None,
                    x_te: float | None = None) -> ThermalCurves:
-    """Thermal stiffness of the case's pair on an even roll grid A–E and at the points A–E."""
-    temperature = temperature_field_from_case(case)
-    pair = case.gear_pair
+    """Thermal stiffness of the paper's model of a pair on an even roll grid A–E and at the points A–E."""
+    temperature = model.temperature
+    pair = model.inputs.gear_pair
     if x_te is None:
-        x_te, source = resolve_x_te(case, load_basis=load_basis, temperature=temperature)
+        x_te, source = model.resolve_x_te(load_basis=load_basis, temperature=temperature)
     else:
         source = "given (argument)"
-    curve = thermal_stiffness(case, pair.roll_grid(count), x_te=x_te, load_basis=load_basis, temperature=temperature)
-    points = thermal_stiffness(case, np.array([pair.path_points[name] for name in "ABCDE"]), x_te=x_te,
-                               load_basis=load_basis, temperature=temperature)
+    curve = model.thermal_stiffness(pair.roll_grid(count), x_te=x_te, load_basis=load_basis, temperature=temperature)
+    points = model.thermal_stiffness(np.array([pair.path_points[name] for name in "ABCDE"]), x_te=x_te,
+                                     load_basis=load_basis, temperature=temperature)
     curve = _with_source(curve, source)
     points = _with_source(points, source)
-    return ThermalCurves(curve, points)
+    return ThermalCurves(curve, points, pair.face_width)
 
 
 def _with_source(result: ThermalStiffness, source: str) -> ThermalStiffness:
@@ -82,14 +76,14 @@ def _single_crossing(crossings: list[float]) -> float | None:
     return crossings[0] if crossings else None
 
 
-def thermal_stiffness_summary(case: "Case") -> dict:
-    """The ``thermal`` JSON object (plain floats): X_te and its source, drops at the path points, single-tooth
-    compliance changes at tips and roots, the crossings of single-tooth curves, per-width values at A–E, the
-    extremes of the curves, and the temperature input."""
-    curves = thermal_curves(case)
+def thermal_stiffness_summary(model: PaperThermalModel, elastic: MeshModel, thermal: MeshModel) -> dict:
+    """The ``thermal`` JSON object (plain floats) of the paper's model of a pair: X_te and its source, drops at the
+    path points, single-tooth compliance changes at tips and roots, the crossings of single-tooth curves,
+    per-width values at A–E, the extremes of the curves, the temperature input, and the mesh stiffness over one
+    cycle of the ``elastic`` and ``thermal`` mesh models of the same case."""
+    curves = thermal_curves(model)
     curve, points = curves.curve, curves.points
-    pair = case.gear_pair
-    width = pair.face_width
+    width = curves.face_width
     names = curves.point_names
     drop = dict(zip(names, (float(v) for v in points.drop_percent)))
     pinion_change = points.pinion_compliance_change_percent
@@ -135,17 +129,17 @@ def thermal_stiffness_summary(case: "Case") -> dict:
         "units": {"stiffness": "N/(mm·μm) per unit face width", "expansion": "μm along the line of action, "
                   "positive = interference", "normal_load_n": "N total over the face width"},
     }
-    summary["mesh_stiffness_n_per_mm_um"] = _mesh_stiffness_summary(case, width)
+    summary["mesh_stiffness_n_per_mm_um"] = _mesh_stiffness_summary({"elastic": elastic, "thermal": thermal}, width)
     return summary
 
 
-def _mesh_stiffness_summary(case: "Case", width: float) -> dict | None:
-    """Min/mean/max over one mesh cycle of the elastic and thermal mesh stiffness (pairs in parallel), from the
-    mesh model at the case's operating point."""
+def _mesh_stiffness_summary(meshes: dict[str, MeshModel], width: float) -> dict | None:
+    """Min/mean/max over one mesh cycle of the mesh stiffness (pairs in parallel) of each mesh model at its
+    operating point, per unit face width ``width`` [m]."""
     scale = PER_WIDTH_STIFFNESS_TO_N_PER_MM_UM / width
     result = {}
-    for name in ("elastic", "thermal"):
-        values = MeshModel(case, name).state(damping=False).mesh_stiffness
+    for name, mesh in meshes.items():
+        values = mesh.state(damping=False).mesh_stiffness
         result[name] = {"min": float(values.min() * scale), "mean": float(values.mean() * scale),
                         "max": float(values.max() * scale)}
     return result

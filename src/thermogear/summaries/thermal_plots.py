@@ -8,26 +8,21 @@ from __future__ import annotations
 import os
 import tempfile
 from pathlib import Path
-from typing import TYPE_CHECKING
 
-
-from thermogear.summaries.thermal import ThermalCurves, thermal_curves
-
-if TYPE_CHECKING:
-    from thermogear.case import Case
+from thermogear.summaries.thermal import ThermalCurves
 
 #: m/N total → mm·μm/N per unit face width (δ·b)
 _COMPLIANCE_SCALE = 1e9
 
 
-def plot_thermal_curves(curves: "ThermalCurves", case: "Case", axes=None):
+def plot_thermal_curves(curves: "ThermalCurves", name: str, axes=None):
     """Four panels: (a) k_e and k_T; (b) δ_e and δ_T; (c) driving tooth δ_e1 and δ_T1; (d) driven tooth δ_e2
-    and δ_T2, along Γ with the points A–E marked. ``axes``: four matplotlib axes, or None for a new figure.
-    Returns the figure."""
+    and δ_T2, along Γ with the points A–E marked; ``name`` (the case's) heads the title. ``axes``: four
+    matplotlib axes, or None for a new figure. Returns the figure."""
     import matplotlib.pyplot as plt  # noqa: PLC0415
 
     curve, points = curves.curve, curves.points
-    width = case.gear_pair.face_width  # totals → per unit face width
+    width = curves.face_width  # totals → per unit face width
     gamma = curve.gamma
     if axes is None:
         figure, grid = plt.subplots(2, 2, figsize=(10, 7), constrained_layout=True)
@@ -61,7 +56,7 @@ def plot_thermal_curves(curves: "ThermalCurves", case: "Case", axes=None):
         ax.legend(fontsize=8)
         ax.grid(alpha=0.3)
     drop = points.drop_percent
-    figure.suptitle(f"{case.name} thermal stiffness (Luo & Li Fig. 4): X_te = {curve.x_te:.4g} ({curve.load_basis} load), "
+    figure.suptitle(f"{name} thermal stiffness (Luo & Li Fig. 4): X_te = {curve.x_te:.4g} ({curve.load_basis} load), "
                     f"drop A {drop[0]:.2f} %, C {drop[2]:.2f} %, E {drop[4]:.2f} %", fontsize=10)
     return figure
 
@@ -84,10 +79,3 @@ def save_figure_atomically(figure, path) -> None:
         raise
     finally:
         plt.close(figure)
-
-
-def plot_thermal_stiffness(case: "Case", path) -> None:
-    """Write the Fig. 4 reproduction (k_e, k_T, δ_e, δ_T, δ_e1, δ_T1, δ_e2, δ_T2 along Γ) to ``path``
-    atomically (format from the suffix)."""
-    figure = plot_thermal_curves(thermal_curves(case), case)
-    save_figure_atomically(figure, path)

@@ -19,6 +19,7 @@ import numpy as np
 
 from thermogear.case_keys import LUO2020_KEYS, luo2020_complete
 from thermogear.errors import ExtrapolationWarning
+from thermogear.mesh.model import MeshModel
 from thermogear.temperature_source import temperature_field_from_case
 from thermogear.thermoelastic.mesh import ThermoelasticMesh
 
@@ -104,25 +105,30 @@ def thermoelastic_summary(case: "Case") -> dict:
     }
 
 
-def _luo2020_configured(case: "Case") -> bool:
-    """The case sets the paper's keys and they define X_te completely (else they are named as having no effect
-    when the case loads, :mod:`thermogear.case_keys`)."""
-    return bool(set(LUO2020_KEYS) & case.thermal.model_fields_set) and luo2020_complete(case.thermal)
+def _luo2020_configured(section) -> bool:
+    """The ``[thermal]`` section sets the paper's keys and they define X_te completely (else they are named as
+    having no effect when the case loads, :mod:`thermogear.case_keys`)."""
+    return bool(set(LUO2020_KEYS) & section.model_fields_set) and luo2020_complete(section)
+
+
+def _paper_summary(case: "Case") -> dict:
+    """The paper's k_T summary of a case (:func:`thermogear.summaries.thermal.thermal_stiffness_summary`)."""
+    from thermogear.luo2020.case_stiffness import paper_thermal_model  # noqa: PLC0415  (the paper's model)
+    from thermogear.summaries.thermal import thermal_stiffness_summary  # noqa: PLC0415
+
+    return thermal_stiffness_summary(paper_thermal_model(case), MeshModel(case, "elastic"),
+                                     MeshModel(case, "thermal"))
 
 
 def thermal_block(case: "Case") -> dict:
     """The ``thermal`` object of the stiffness command for the case's thermal model (module docstring)."""
-    if case.thermal.model == "luo2020":
-        from thermogear.summaries.thermal import thermal_stiffness_summary  # noqa: PLC0415  (the paper's model)
-
-        block = {"model": "luo2020", **thermal_stiffness_summary(case)}
+    if MeshModel(case, "thermal").pair_model.uses_x_te:
+        block = {"model": "luo2020", **_paper_summary(case)}
         block["thermoelastic"] = thermoelastic_summary(case)
         return block
     block = thermoelastic_summary(case)
-    if _luo2020_configured(case):
-        from thermogear.summaries.thermal import thermal_stiffness_summary  # noqa: PLC0415
-
-        block["luo2020"] = thermal_stiffness_summary(case)
+    if _luo2020_configured(case.thermal):
+        block["luo2020"] = _paper_summary(case)
     return block
 
 
@@ -131,11 +137,12 @@ def write_thermal_plot(case: "Case", path) -> None:
     paper's Fig. 4 for ``luo2020``, else deviation, loaded STE and load share, elastic and thermal."""
     from thermogear.summaries.thermal_plots import save_figure_atomically  # noqa: PLC0415
 
-    if case.thermal.model == "luo2020":
+    if MeshModel(case, "thermal").pair_model.uses_x_te:
+        from thermogear.luo2020.case_stiffness import paper_thermal_model  # noqa: PLC0415
         from thermogear.summaries.thermal_plots import plot_thermal_curves  # noqa: PLC0415
         from thermogear.summaries.thermal import thermal_curves  # noqa: PLC0415
 
-        figure = plot_thermal_curves(thermal_curves(case), case)
+        figure = plot_thermal_curves(thermal_curves(paper_thermal_model(case)), case.name)
     else:
         from thermogear.summaries.thermoelastic_plots import plot_thermoelastic  # noqa: PLC0415
 

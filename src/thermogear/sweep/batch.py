@@ -118,11 +118,12 @@ def group_tables(mesh: MeshModel, normal_load: float | None = None, points_per_p
                        load_exponent=scaling[1])
 
 
-def fast_path_applies(case, models) -> bool:
-    """True where every model of ``models`` runs ``case`` on the fast path (a study's scheduler choice: its other
-    points may still differ, and each group falls back to the per-point path where it must)."""
+def fast_path_applies(meshes) -> bool:
+    """True where every mesh model of ``meshes`` (one per model of a study's case) runs on the fast path (a study's
+    scheduler choice: its other points may still differ, and each group falls back to the per-point path where it
+    must)."""
     with warning_scope.ignored():  # the blocks raise these warnings again, and report them
-        return all(group_tables(MeshModel(case, model)) is not None for model in models)
+        return all(group_tables(mesh) is not None for mesh in meshes)
 
 
 # ------------------------------------------------------------------------------------------- fast path

@@ -33,6 +33,7 @@ import numpy as np
 
 from thermogear import warning_scope
 from thermogear.errors import CaseError
+from thermogear.mesh.model import MeshModel
 from thermogear.sweep.batch import evaluate_block, fast_path_applies
 from thermogear.sweep.store import ResultStore
 from thermogear.warning_causes import WarningTally, warning_text
@@ -148,7 +149,8 @@ def local_scheduler(study, method: str, dashboard: str | None = None) -> str:
     """The local scheduler for a study: ``"threads"`` where every model of its case runs on the fast path (the
     numba kernel releases the GIL), ``"processes"`` otherwise (pure-Python points need processes to run in
     parallel) and wherever a dashboard is asked for (the Dask cluster serves it)."""
-    if dashboard is None and method == "batch" and fast_path_applies(study.case, study.models):
+    if dashboard is None and method == "batch" and fast_path_applies(MeshModel(study.case, model)
+                                                                      for model in study.models):
         return "threads"
     return "processes"
 

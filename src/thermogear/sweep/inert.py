@@ -19,8 +19,8 @@ __all__ = ["inert_parameters"]
 _ALWAYS_ACTIVE = ("operating.speed_rpm",)
 
 
-def _signature(case, model: str) -> list[np.ndarray]:
-    state = MeshModel(case, model).state()
+def _signature(mesh: MeshModel) -> list[np.ndarray]:
+    state = mesh.state()
     return [state.grid.nodes, state.pair_stiffness, state.mesh_damping, state.pair_deviation,
             np.array([state.normal_load, state.mass, float(state.backlash or 0.0)])]
 
@@ -41,7 +41,7 @@ def inert_parameters(study) -> list[str]:
         except JammingError:  # an end of the axis jams: the axis does something
             continue
         same = all(np.array_equal(a, b) for model in study.models
-                   for a, b in zip(_signature(start, model), _signature(end, model)))
+                   for a, b in zip(_signature(MeshModel(start, model)), _signature(MeshModel(end, model))))
         if same:
             inert.append(parameter.name)
     return inert

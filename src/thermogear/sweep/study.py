@@ -229,9 +229,10 @@ class Study:
             raise CaseError("chunk_points", chunk_points, ">= 1", "a chunk holds at least one point")
         flank = None
         if any(p.key == FLANK_OFFSET_KEY for p in parameters):
-            flank = _flank_table_of(case)
+            flank = _flank_table_of(case.temperature)
         study = cls(case=case, parameters=tuple(parameters), models=models, chunk_points=chunk,
-                    fixed_changes=_fixed_changes(case, parameters), _flank_table=flank)
+                    fixed_changes=_fixed_changes(case.document.get("operating", {}),
+                                                  case.operating_point.torque, parameters), _flank_table=flank)
         study.check_values()
         return study
 
@@ -306,7 +307,7 @@ class Study:
         changes: dict[str, Any] = dict(self.fixed_changes)
         for parameter, value in pairs:
             if parameter.key == FLANK_OFFSET_KEY:
-                table = self._flank_table if self._flank_table is not None else _flank_table_of(self.case)
+                table = self._flank_table if self._flank_table is not None else _flank_table_of(self.case.temperature)
                 changes["temperature.flank_c"] = [t + float(value) for t in table]
                 continue
             changes.update(COMPANION_CHANGES.get(parameter.key, {}))
@@ -329,30 +330,29 @@ class Study:
             "models": list(self.models),
             "chunk_points": self.chunk_points,
             "fixed_changes": {key: value for key, value in self.fixed_changes},
-            "case_document_sha256": case_fingerprint(self.case),
+            "case_document_sha256": case_fingerprint(self.case.document),
         }
 
 
-def _fixed_changes(case, parameters) -> tuple[tuple[str, Any], ...]:
+def _fixed_changes(operating: dict, torque: float, parameters) -> tuple[tuple[str, Any], ...]:
     """Changes applied to every point. A speed sweep runs at constant torque: a case whose load is a power is
     turned into the torque of that power at the case's speed (sweeping speed at constant power would change the
     load with speed; vary ``power_kw`` together with the speed to study that)."""
     keys = {p.key for p in parameters}
     load_keys = {"operating.torque_nm", "operating.power_kw", "operating.fzg_load_stage"}
-    operating = case.document.get("operating", {})
     if "operating.speed_rpm" in keys and not keys & load_keys and operating.get("power_kw") is not None:
-        return (("operating.power_kw", None), ("operating.torque_nm", float(case.operating_point.torque)))
+        return (("operating.power_kw", None), ("operating.torque_nm", float(torque)))
     return ()
 
 
-def case_fingerprint(case) -> str:
-    """SHA-256 of the case document (sorted JSON): two runs of one study must start from the same case."""
-    text = json.dumps(case.document, sort_keys=True, default=str)
+def case_fingerprint(document: dict) -> str:
+    """SHA-256 of a case's document (sorted JSON): two runs of one study must start from the same case."""
+    text = json.dumps(document, sort_keys=True, default=str)
     return hashlib.sha256(text.encode("utf-8")).hexdigest()
 
 
-def _flank_table_of(case) -> tuple[float, ...]:
-    section = case.temperature
+def _flank_table_of(section) -> tuple[float, ...]:
+    """The inline flank temperatures [°C] of a ``[temperature]`` section (the table a flank offset shifts)."""
     if section.model != "tabulated" or section.flank_c is None:
         raise CaseError("vary.flank_temperature_offset_c", section.model,
                         "a case with temperature.model = 'tabulated' and flank_c given inline",

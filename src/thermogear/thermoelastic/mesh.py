@@ -19,6 +19,7 @@ from thermogear.case import cached_per_case
 from thermogear.geometry import GearPair
 from thermogear.materials import Material
 from thermogear.mesh_cycle import MeshCycle, MeshGrid
+from thermogear.operating import OperatingPoint
 from thermogear.stiffness import scaled_compliance
 from thermogear.stiffness import table as stiffness_table
 from thermogear.stiffness.table import pair_stiffness_at
@@ -71,15 +72,28 @@ class ThermoelasticMesh:
     jamming_bulk_temperature_c: float | None
     distortion_gamma: np.ndarray  # Γ of the distortion table (cold pair)
     distortion: np.ndarray  # thermal flank distortion of a pair at distortion_gamma [m], + = material missing
-    speed_rpm: float
-    normal_load: float  # the case's static normal load [N]
+    operating_point: OperatingPoint  # the case's speed and load (the one place they are held)
     temperature_source: str
 
+    @property
+    def speed_rpm(self) -> float:
+        """Pinion speed of the operating point [rpm]."""
+        return self.operating_point.speed_rpm
+
+    @property
+    def normal_load(self) -> float:
+        """Static normal load of the operating point on the pair as built, w = T1/r_b1 [N] (total)."""
+        return self.operating_point.normal_load(self.cold_gear_pair.pinion.base_radius)
+
     # ---------------------------------------------------------------------------------------- construction
-    @classmethod
-    def from_case(cls, case: "Case") -> "ThermoelasticMesh":
-        """The component of a case, built once per case (raises CaseError when the gears jam)."""
-        return _thermoelastic_mesh(case)
+    @staticmethod
+    @cached_per_case
+    def from_case(case: "Case") -> "ThermoelasticMesh":
+        """The component of a case, built once per case (raises CaseError when the gears jam): the one place the
+        case is read (its temperature field, gear pair, sections and operating point)."""
+        return thermoelastic_mesh(temperature_field_from_case(case), case.gear_pair, case.gears_input,
+                                  case.material_input, case.material, case.housing, case.lubricant,
+                                  case.operating_point)
 
     # ------------------------------------------------------------------------------------------- stiffness
     @property
@@ -203,13 +217,14 @@ class ThermoelasticMesh:
 
 
 # --------------------------------------------------------------------------------------------- building
-@cached_per_case
-def _thermoelastic_mesh(case: "Case") -> ThermoelasticMesh:
-    field = temperature_field_from_case(case)
-    pair = case.gear_pair
-    gears_section = case.gears_input
-    inputs = tuple(gear_inputs(gears_section, case.material_input, name) for name in ("pinion", "wheel"))
-    housing = housing_inputs(case.housing, case.lubricant)
+def thermoelastic_mesh(field: TemperatureField, pair: GearPair, gears_section, material_section, material: Material,
+                       housing_section, lubricant_section, operating_point: OperatingPoint) -> ThermoelasticMesh:
+    """The thermo-elastic mesh of a gear pair (as built) of ``material``, with the expansion and E(T) inputs of the
+    ``[gears]`` and ``[material]`` sections, in the temperature field ``field``, inside the housing of the
+    ``[housing]`` section (its temperature defaulting from the ``[lubricant]`` section), at an operating point
+    (raises CaseError when the gears jam)."""
+    inputs = tuple(gear_inputs(gears_section, material_section, name) for name in ("pinion", "wheel"))
+    housing = housing_inputs(housing_section, lubricant_section)
     reference = field.reference_c
     bulk_rise = (equivalent_bulk_rise(pair.pinion, inputs[0].expansion_per_k, field.pinion_base_c - reference,
                                       field.pinion_bore_c - reference),
@@ -223,10 +238,10 @@ def _thermoelastic_mesh(case: "Case") -> ThermoelasticMesh:
                                     "temperature.bulk_c" if field.source == "uniform" else "temperature")
     rise = jamming_rise(pair, allowance, inputs[0].expansion_per_k, inputs[1].expansion_per_k, strains[2])
     tooth_c = _tooth_temperatures(field, pair)
-    modulus = case.material.youngs_modulus
+    modulus = material.youngs_modulus
     gamma, distortion = _distortion_table(field, pair, inputs, bulk_rise)
     return ThermoelasticMesh(
-        cold_gear_pair=pair, gear_pair=operating_gear_pair(pair, *strains), material=case.material,
+        cold_gear_pair=pair, gear_pair=operating_gear_pair(pair, *strains), material=material,
         reference_c=reference, housing_c=housing.temperature_c, bulk_c=bulk_c, tooth_c=tooth_c, strains=strains,
         youngs_modulus=tuple(youngs_modulus_at(modulus, g.modulus_coefficient_per_k, t)
                              for g, t in zip(inputs, tooth_c)),
@@ -235,8 +250,8 @@ def _thermoelastic_mesh(case: "Case") -> ThermoelasticMesh:
         gears=inputs, housing=housing, allowance=allowance, backlash_normal=hot_backlash,
         backlash_normal_cold=backlash_at(pair, allowance, 0.0, 0.0, 0.0),
         jamming_bulk_temperature_c=None if rise is None else reference + rise,
-        distortion_gamma=gamma, distortion=distortion, speed_rpm=case.operating_point.speed_rpm,
-        normal_load=case.normal_load, temperature_source=field.source)
+        distortion_gamma=gamma, distortion=distortion, operating_point=operating_point,
+        temperature_source=field.source)
 
 
 def _tooth_temperatures(field: TemperatureField, pair: GearPair) -> tuple[float, float]:
