@@ -27,6 +27,7 @@ from thermogear.errors import CaseError
 from thermogear.gearbox.backlash import ColdStart, cold_start_backlash
 from thermogear.gearbox.case_model import gearbox_model_from_case, gearbox_operating_point, gearbox_section
 from thermogear.gearbox.model import COLDEST_START_C, WarmUpHistory
+from thermogear.mesh.pair_models import PAIR_MODELS, pair_model_name
 from thermogear.schema.temperature import TemperatureSection
 from thermogear.temperature_field import TEMPERATURE_LIMITS
 
@@ -125,7 +126,8 @@ def state_case(case, temperatures_c):
     changes: dict[str, Any] = dict(
         temperature=temperature, lubricant=case.lubricant.model_copy(update={"operating_temperature_c": oil}),
         housing=case.housing.model_copy(update=housing_update))
-    if case.thermal.model == "luo2020" and case.thermal.x_te_source == "calibrated":
+    thermal_pair_model = PAIR_MODELS[pair_model_name("thermal", case.thermal.model)]
+    if thermal_pair_model.uses_x_te and case.thermal.x_te_source == "calibrated":
         from thermogear.luo2020.case_stiffness import resolve_x_te  # noqa: PLC0415
 
         changes["thermal"] = case.thermal.model_copy(update={"x_te": resolve_x_te(case)[0], "x_te_source": "given",
