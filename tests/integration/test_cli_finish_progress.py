@@ -19,8 +19,12 @@ def test_fem_summary_reports_each_step(monkeypatch):
             return {"case": "luo2019", "flank_temperature_c": {"C": 80.0}, "stiffness_drop_percent": {"C": 14.5},
                     "x_te": 1.6, "x_te_line_of_action": -0.9}  # what the summary's interpretation reads
 
-    monkeypatch.setattr(verification, "cached_analysis", lambda case: Analysis(refinement=1.0))
-    monkeypatch.setattr(verification, "fem_analysis", lambda case, refinement: Analysis(refinement=refinement))
+    heated = SimpleNamespace(reference_c=20.0, table_flank_c=(80.0,), wheel_flank_offset_c=1.0, pinion_base_c=70.0,
+                             pinion_bore_c=60.0, wheel_base_c=70.0, wheel_bore_c=60.0)  # fem refuses cold teeth
+    monkeypatch.setattr(verification, "cached_analysis",
+                        lambda case: Analysis(refinement=1.0, temperature_field=heated))
+    monkeypatch.setattr(verification, "fem_analysis",
+                        lambda case, refinement: Analysis(refinement=refinement, temperature_field=heated))
     monkeypatch.setattr(verification, "refinement_change_percent", lambda coarse, fine: {"max": 0.5})
     steps = []
     summary, _ = fem_command.fem_summary("luo2019", refine=True, progress=steps.append)
