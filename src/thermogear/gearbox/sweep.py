@@ -1,6 +1,6 @@
 """Steady temperatures, losses and backlash of a gearbox over a grid of pinion speeds × torques.
 
-Each grid point is one steady solve of the network (:meth:`GearboxThermalModel.steady_state`, about 20 ms), in a
+Each grid point is one steady solve of the network (:meth:`GearboxThermalModel.steady_state`, about 2 ms), in a
 loop or on a pool of threads (``workers``). The study machinery (:mod:`thermogear.sweep`) stores the outputs of the
 dynamics and would need new variables and a new kernel for these, so this sweep is a function of its own; its grid
 is written to a zarr store like a study's by :mod:`thermogear.sweep.steady_store` (the dynamics of a case with
@@ -84,7 +84,8 @@ def steady_point(model, speed_rpm: float, torque: float, ambient_c: float):
 def _solve_points(model, points, ambient_c: float, workers: int | None) -> list:
     """Steady states (or None) of ``points`` [(speed, torque)], in their order: in this thread when ``workers``
     is None or 1, else on a pool of that many threads (each point is a pure function of the model and the point,
-    so the results do not depend on where or in which order they are computed)."""
+    so the results do not depend on where or in which order they are computed; the solve holds the GIL, so
+    threads do not make it faster today)."""
     count = min(workers or 1, len(points))
     if count <= 1:
         return [steady_point(model, speed, torque, ambient_c) for speed, torque in points]
