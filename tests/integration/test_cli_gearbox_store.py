@@ -131,3 +131,8 @@ def test_without_out_the_command_writes_nothing_and_prints_as_before(tmp_path, m
     assert code == 0, stderr
     assert '"oil_c"' in stdout and "wrote" not in stderr
     assert list(tmp_path.iterdir()) == []
+
+
+def test_overwrite_without_out_is_refused():
+    code, _, stderr = gearbox_command("--overwrite")
+    assert code != 0 and "--overwrite" in stderr and "only with --out" in stderr
