@@ -106,6 +106,8 @@ def export(
         if group is not None:
             raise CaseError("--group", group, "no --group for a sweep store", "a store has one table")
         dataset = xr.open_dataset(source, engine="zarr")
+        if dimensions is None and dataset.attrs.get("row_dimensions"):  # a store that names its grid
+            dimensions = tuple(str(dataset.attrs["row_dimensions"]).split(","))
         datasets = [({}, dataset, dataset.attrs)]
         what = "sweep store, one row per point"
     elif source.is_file() and source.suffix == ".nc":

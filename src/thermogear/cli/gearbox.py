@@ -3,11 +3,14 @@ point or over a grid of speeds × torques."""
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import typer
 from rich.table import Table
 
 from thermogear.case import load_case
-from thermogear.cli.app import app, console, print_json
+from thermogear.cli.app import app, console, error_console, print_json
+from thermogear.errors import CaseError
 
 
 @app.command()
@@ -17,9 +20,33 @@ def gearbox(case: str = typer.Argument(..., metavar="CASE", help="built-in param
                                                                      "(default the case's)"),
             torques: str | None = typer.Option(None, "--torques", help="pinion torques [N·m]: 'a:b:n' or "
                                                                        "'v1,v2,...' (default the case's)"),
-            as_json: bool = typer.Option(False, "--json", help="one JSON object on stdout")) -> None:
+            as_json: bool = typer.Option(False, "--json", help="one JSON object on stdout"),
+            out: Path | None = typer.Option(None, "--out", help="also write the grid to this zarr store (like "
+                                                                "`thermogear sweep`; `thermogear export` reads it)"),
+            overwrite: bool = typer.Option(False, "--overwrite", help="replace an existing store at --out that "
+                                                                      "thermogear wrote"),
+            workers: int | None = typer.Option(None, "--workers", min=1, help="threads that solve the points "
+                                                                              "(default 1)")) -> None:
     """Steady temperatures, power losses by source, efficiency and backlash of the case's gearbox, at its
-    operating point or over speeds × torques."""
+    operating point or over speeds × torques (with --out also as a zarr store)."""
+    if out is None:
+        if overwrite:
+            raise CaseError("--overwrite", True, "only with --out", "there is no store to replace")
+        _steady_table(case, speeds, torques, as_json, workers)
+        return
+    from thermogear.ownership import check_output_folder, exclusive_writer  # noqa: PLC0415
+    from thermogear.sweep.steady_store import check_steady_store_target, write_steady_store  # noqa: PLC0415
+
+    check_output_folder(out, "--out")  # the output path before any work
+    with exclusive_writer(out):  # one writer per store: a second command writing it is refused at once
+        check_steady_store_target(out, overwrite)
+        loaded, result = _steady_table(case, speeds, torques, as_json, workers)
+        target = write_steady_store(result, loaded, out, overwrite=overwrite)
+    error_console.print(f"wrote {result.runaway.size} points to {target}", highlight=False)
+
+
+def _steady_table(case: str, speeds: str | None, torques: str | None, as_json: bool, workers: int | None):
+    """Solve the grid and print it (a table, or JSON); returns the loaded case and the SteadySweep."""
     from thermogear.gearbox.case_model import gearbox_model_from_case, gearbox_operating_point  # noqa: PLC0415
     from thermogear.gearbox.sweep import steady_sweep  # noqa: PLC0415
     from thermogear.schema.values import parse_values  # noqa: PLC0415
@@ -28,10 +55,11 @@ def gearbox(case: str = typer.Argument(..., metavar="CASE", help="built-in param
     operating = gearbox_operating_point(loaded.operating_point, loaded.gearbox)
     speed_values = [operating.speed_rpm] if speeds is None else parse_values(speeds, "--speeds")
     torque_values = [operating.torque] if torques is None else parse_values(torques, "--torques")
-    result = steady_sweep(gearbox_model_from_case(loaded), speed_values, torque_values, operating.ambient_c)
+    result = steady_sweep(gearbox_model_from_case(loaded), speed_values, torque_values, operating.ambient_c,
+                          workers=workers)
     if as_json:
         print_json({"case": loaded.name, **result.as_dict()})
-        return
+        return loaded, result
     table = Table(title=f"steady state of the gearbox of {loaded.name} (ambient {operating.ambient_c:g} °C)")
     for name in ("n [rpm]", "T [N·m]", "pinion [°C]", "wheel [°C]", "oil [°C]", "housing [°C]", "mesh [W]",
                  "bearings [W]", "seals [W]", "churning/jet [W]", "η [%]", "j_bn [μm]"):
@@ -49,3 +77,4 @@ def gearbox(case: str = typer.Argument(..., metavar="CASE", help="built-in param
                           f"{result.seal_loss[i, j]:.1f}", f"{no_load[i, j]:.1f}",
                           f"{result.efficiency[i, j] * 100:.2f}", f"{result.backlash[i, j] * 1e6:.1f}")
     console.print(table)
+    return loaded, result

@@ -1,8 +1,9 @@
 """Steady temperatures, losses and backlash of a gearbox over a grid of pinion speeds × torques.
 
-Each grid point is one steady solve of the network (:meth:`GearboxThermalModel.steady_state`, about 20 ms), in a
-plain loop: the study machinery (:mod:`thermogear.sweep`) stores the outputs of the dynamics and would need new
-variables and a new kernel for these, so this sweep is a function of its own (the dynamics of a case with
+Each grid point is one steady solve of the network (:meth:`GearboxThermalModel.steady_state`, about 2 ms), in a
+loop or on a pool of threads (``workers``). The study machinery (:mod:`thermogear.sweep`) stores the outputs of the
+dynamics and would need new variables and a new kernel for these, so this sweep is a function of its own; its grid
+is written to a zarr store like a study's by :mod:`thermogear.sweep.steady_store` (the dynamics of a case with
 ``temperature.model = "gearbox"`` does run on the study machinery: every point's case predicts its own
 temperatures). A point without a steady state (thermal runaway) is masked, never a number.
 """
@@ -72,8 +73,31 @@ class SteadySweep:
                 "runaway": self.runaway.tolist()}
 
 
-def steady_sweep(model, speeds_rpm, torques, ambient_c: float = 20.0) -> SteadySweep:
-    """Steady states of ``model`` (a :class:`~thermogear.gearbox.model.GearboxThermalModel`) on the grid."""
+def steady_point(model, speed_rpm: float, torque: float, ambient_c: float):
+    """The steady state of ``model`` at one point, or None where the network has none (thermal runaway)."""
+    try:
+        return model.steady_state(GearboxOperatingPoint(float(speed_rpm), float(torque), float(ambient_c)))
+    except NoSteadyStateError:
+        return None
+
+
+def _solve_points(model, points, ambient_c: float, workers: int | None) -> list:
+    """Steady states (or None) of ``points`` [(speed, torque)], in their order: in this thread when ``workers``
+    is None or 1, else on a pool of that many threads (each point is a pure function of the model and the point,
+    so the results do not depend on where or in which order they are computed; the solve holds the GIL, so
+    threads do not make it faster today)."""
+    count = min(workers or 1, len(points))
+    if count <= 1:
+        return [steady_point(model, speed, torque, ambient_c) for speed, torque in points]
+    from concurrent.futures import ThreadPoolExecutor  # noqa: PLC0415
+
+    with ThreadPoolExecutor(count, "thermogear-gearbox") as pool:
+        return list(pool.map(lambda point: steady_point(model, point[0], point[1], ambient_c), points))
+
+
+def steady_sweep(model, speeds_rpm, torques, ambient_c: float = 20.0, workers: int | None = None) -> SteadySweep:
+    """Steady states of ``model`` (a :class:`~thermogear.gearbox.model.GearboxThermalModel`) on the grid;
+    ``workers``: threads that solve the points (default 1: this thread)."""
     speeds = np.atleast_1d(np.asarray(speeds_rpm, dtype=float))
     loads = np.atleast_1d(np.asarray(torques, dtype=float))
     if speeds.ndim != 1 or loads.ndim != 1 or speeds.size * loads.size > MOST_POINTS:
@@ -83,22 +107,21 @@ def steady_sweep(model, speeds_rpm, torques, ambient_c: float = 20.0) -> SteadyS
     temperatures = np.ma.masked_all((5,) + shape)
     outputs = {name: np.ma.masked_all(shape) for name in ("mesh", "bearings", "seals", "churning", "efficiency",
                                                           "backlash", "injection")}
+    points = [(i, j) for i in range(speeds.size) for j in range(loads.size)]
     with warnings.catch_warnings():
         # the viscosity-range warning of each point is raised once below for the whole grid
         warnings.simplefilter("ignore", ExtrapolationWarning)
-        for i, speed in enumerate(speeds):
-            for j, torque in enumerate(loads):
-                try:
-                    state = model.steady_state(GearboxOperatingPoint(float(speed), float(torque), ambient_c))
-                except NoSteadyStateError:
-                    continue
-                temperatures[:, i, j] = state.temperatures_c
-                losses = state.losses
-                for name, value in (("mesh", losses.mesh), ("bearings", losses.bearings), ("seals", losses.seals),
-                                    ("churning", losses.churning), ("efficiency", losses.efficiency),
-                                    ("injection", losses.injection),
-                                    ("backlash", state.backlash)):
-                    outputs[name][i, j] = value
+        for (i, j), state in zip(points, _solve_points(model, [(speeds[i], loads[j]) for i, j in points],
+                                                      ambient_c, workers)):
+            if state is None:  # no steady state: the point stays masked
+                continue
+            temperatures[:, i, j] = state.temperatures_c
+            losses = state.losses
+            for name, value in (("mesh", losses.mesh), ("bearings", losses.bearings), ("seals", losses.seals),
+                                ("churning", losses.churning), ("efficiency", losses.efficiency),
+                                ("injection", losses.injection),
+                                ("backlash", state.backlash)):
+                outputs[name][i, j] = value
     fitted = model.description.lubricant.fitted_range_c
     if temperatures.count() and (temperatures[2:4].min() < fitted[0] or temperatures[2:4].max() > fitted[1]):
         warnings.warn(f"gearbox: oil temperatures {float(temperatures[2:4].min()):.1f}…"
