@@ -28,7 +28,7 @@ def gearbox(case: str = typer.Argument(..., metavar="CASE", help="built-in param
             workers: int | None = typer.Option(None, "--workers", min=1, help="threads that solve the points "
                                                                               "(default 1)")) -> None:
     """Steady temperatures, power losses by source, efficiency and backlash of the case's gearbox, at its
-    operating point or over speeds × torques (with --out also as a zarr store)."""
+    operating point or over speeds × torques. With --out, the grid is also written as a zarr store."""
     if out is None:
         if overwrite:
             raise CaseError("--overwrite", True, "only with --out", "there is no store to replace")
@@ -41,17 +41,17 @@ def gearbox(case: str = typer.Argument(..., metavar="CASE", help="built-in param
     with exclusive_writer(out):  # one writer per store: a second command writing it is refused at once
         check_steady_store_target(out, overwrite)
         loaded, result = _steady_table(case, speeds, torques, as_json, workers)
-        target = write_steady_store(result, loaded, out, overwrite=overwrite)
+        target = write_steady_store(result, loaded.name, loaded.source, loaded.document, out, overwrite=overwrite)
     error_console.print(f"wrote {result.runaway.size} points to {target}", highlight=False)
 
 
-def _steady_table(case: str, speeds: str | None, torques: str | None, as_json: bool, workers: int | None):
+def _steady_table(case_name: str, speeds: str | None, torques: str | None, as_json: bool, workers: int | None):
     """Solve the grid and print it (a table, or JSON); returns the loaded case and the SteadySweep."""
     from thermogear.gearbox.case_model import gearbox_model_from_case, gearbox_operating_point  # noqa: PLC0415
     from thermogear.gearbox.sweep import steady_sweep  # noqa: PLC0415
     from thermogear.schema.values import parse_values  # noqa: PLC0415
 
-    loaded = load_case(case)
+    loaded = load_case(case_name)
     operating = gearbox_operating_point(loaded.operating_point, loaded.gearbox)
     speed_values = [operating.speed_rpm] if speeds is None else parse_values(speeds, "--speeds")
     torque_values = [operating.torque] if torques is None else parse_values(torques, "--torques")

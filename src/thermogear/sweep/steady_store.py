@@ -47,8 +47,9 @@ def check_steady_store_target(path: str | Path, overwrite: bool) -> Path:
     return target
 
 
-def steady_dataset(result, case):
-    """The :class:`~thermogear.gearbox.sweep.SteadySweep` ``result`` of ``case`` as an xarray Dataset (dims
+def steady_dataset(result, case_name: str, case_source: str, case_document: dict):
+    """The :class:`~thermogear.gearbox.sweep.SteadySweep` ``result`` of a case (its name, source and document as
+    loaded) as an xarray Dataset (dims
     ``speed_rpm`` × ``torque_nm``), NaN where ``runaway`` is 1."""
     import xarray as xr  # noqa: PLC0415
 
@@ -83,15 +84,18 @@ def steady_dataset(result, case):
               "torque_nm": ("torque_nm", np.asarray(result.torques, dtype=float),
                             {"units": "N m", "long_name": "pinion torque"})}
     attrs = {"title": "thermogear steady gearbox sweep", "thermogear_version": __version__,
-             "case_name": case.name, "case_source": str(case.source),
-             "case_json": json.dumps(case.document, sort_keys=True, default=str),
+             "case_name": case_name, "case_source": str(case_source),
+             "case_json": json.dumps(case_document, sort_keys=True, default=str),
              "ambient_c": float(result.ambient_c), "load": "constant torque",
              "row_dimensions": ",".join(dims)}  # `thermogear export`: one row per point
     return xr.Dataset(data_vars, coords=coords, attrs=attrs)
 
 
-def write_steady_store(result, case, path: str | Path, overwrite: bool = False) -> Path:
-    """Write the steady sweep ``result`` of ``case`` to the zarr store ``path`` (see the module docstring)."""
+def write_steady_store(result, case_name: str, case_source: str, case_document: dict, path: str | Path,
+                       overwrite: bool = False) -> Path:
+    """Write the steady sweep ``result`` of a case (name, source, document) to the zarr store ``path`` (see the
+    module docstring)."""
     from thermogear.sweep.branches import write_branch_store  # noqa: PLC0415
 
-    return write_branch_store(steady_dataset(result, case), path, overwrite=overwrite)
+    return write_branch_store(steady_dataset(result, case_name, case_source, case_document), path,
+                              overwrite=overwrite)
