@@ -49,7 +49,11 @@ def resolve(target: str) -> Callable | None:
     module_name, _, attribute = target.partition(":")
     try:
         module = importlib.import_module(module_name)
-    except ImportError:
+    except ModuleNotFoundError as error:
+        # only the provider's own module (or a package above it) being absent means "not installed"; a missing
+        # import inside it is a defect of that module and must surface, not read as an absent model
+        if error.name is None or not (module_name + ".").startswith(error.name + "."):
+            raise
         return None
     found = getattr(module, attribute, None)
     return found if callable(found) else None

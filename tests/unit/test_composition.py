@@ -52,3 +52,15 @@ def test_models_that_live_above_the_thermal_chain_need_no_prior_import():
                             capture_output=True, text=True, timeout=300, cwd=ROOT)
     assert result.returncode == 0, result.stderr
     assert result.stdout.split() == ["fem", "gearbox", "False"]
+
+
+def test_an_absent_provider_module_is_none_but_a_broken_one_raises(tmp_path, monkeypatch):
+    # "not installed" is the provider's own module missing; a module that exists but fails to import is a defect
+    # that must not be reported as an absent model
+    from thermogear.composition import resolve
+
+    assert resolve("thermogear_no_such_package.module:function") is None
+    (tmp_path / "thermogear_broken_provider.py").write_text("import thermogear_no_such_dependency\n")
+    monkeypatch.syspath_prepend(str(tmp_path))
+    with pytest.raises(ModuleNotFoundError, match="thermogear_no_such_dependency"):
+        resolve("thermogear_broken_provider:function")
