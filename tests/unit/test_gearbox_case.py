@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import tomllib
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -12,6 +13,7 @@ import pytest
 import thermogear.simulation  # noqa: F401  (the composition root registers the "gearbox" temperature provider)
 from thermogear.case import case_from_document, load_case
 from thermogear.errors import CaseError
+from thermogear.gearbox.description import GearboxOperatingPoint
 from thermogear.gearbox.case_model import (gearbox_description_from_case, gearbox_model_from_case,
                                            gearbox_operating_point, predicted_steady_state)
 from thermogear.temperature_source import temperature_field_from_case
@@ -41,6 +43,12 @@ def case():
     return load_case(CASE)
 
 
+def steady(case):
+    """The steady state the case's gearbox model predicts at its operating point."""
+    return predicted_steady_state(gearbox_model_from_case(case), gearbox_operating_point(case.operating_point,
+                                                                                         case.gearbox))
+
+
 def test_case_without_gearbox_is_as_before():
     case = load_case("fzg_type_c")
     assert case.gearbox is None
@@ -49,7 +57,7 @@ def test_case_without_gearbox_is_as_before():
 
 
 def test_predicted_temperatures_are_the_steady_state(case):
-    state = predicted_steady_state(case)
+    state = steady(case)
     assert state.energy_residual < 1e-9  # the network's acceptance: heat out equals the losses
     # every command reads the oil and housing from the case: the predicted values (rounded to 1e-6 K)
     assert case.lubricant.operating_temperature_c == pytest.approx(state.oil_c, abs=1e-6)
@@ -66,6 +74,37 @@ def test_predicted_temperatures_are_the_steady_state(case):
 def test_prediction_follows_the_operating_point(case):
     slow = case.with_changes(**{"operating.speed_rpm": 400.0})
     assert slow.lubricant.operating_temperature_c < case.lubricant.operating_temperature_c - 5.0
+
+
+def test_steady_state_is_solved_once_per_model_and_operating_point(case):
+    # the memo is keyed on what determines the state: the same model and operating point give the state solved
+    # first (the same object), another operating point of the same model its own solution, bit for bit the
+    # model's own (a memo keyed on the model alone would hand back the first point's state)
+    model = gearbox_model_from_case(case)
+    operating = gearbox_operating_point(case.operating_point, case.gearbox)
+    assert predicted_steady_state(model, operating) is predicted_steady_state(model, operating)
+    slower = gearbox_operating_point(case.operating_point, case.gearbox, speed_rpm=0.5 * operating.speed_rpm)
+    state = predicted_steady_state(model, slower)
+    np.testing.assert_array_equal(state.temperatures_c, model.steady_state(slower).temperatures_c)
+    assert state.oil_c < predicted_steady_state(model, operating).oil_c  # less speed, less loss, cooler oil
+
+
+def test_steady_state_memo_raises_its_warnings_again():
+    # a model that warns and counts its solutions: solved once, its warning raised again on the second call
+    class WarningModel:
+        solved = 0
+
+        def steady_state(self, operating):
+            WarningModel.solved += 1
+            warnings.warn("viscosity fit extrapolated", UserWarning, stacklevel=1)
+            return object()
+
+    model, operating = WarningModel(), GearboxOperatingPoint(1000.0, 100.0)
+    with pytest.warns(UserWarning, match="extrapolated"):
+        first = predicted_steady_state(model, operating)
+    with pytest.warns(UserWarning, match="extrapolated"):
+        second = predicted_steady_state(model, operating)
+    assert first is second and WarningModel.solved == 1
 
 
 def test_section_values_reach_the_description(case):
@@ -87,8 +126,8 @@ def test_outer_area_is_a_cube_of_that_area():
     for key in ("width_mm", "height_mm"):
         by_area["gearbox"]["housing"].pop(key)
     by_area["gearbox"]["housing"]["outer_area_m2"] = 5.0 * side**2  # four walls and the top
-    first = predicted_steady_state(case_from_document(base))
-    second = predicted_steady_state(case_from_document(by_area))
+    first = steady(case_from_document(base))
+    second = steady(case_from_document(by_area))
     np.testing.assert_allclose(first.temperatures_c, second.temperatures_c, rtol=1e-9)
 
 
@@ -144,8 +183,8 @@ def test_explicit_bearing_constants_equal_the_designation():
                      width_mm=23.0, rolling_constant=1.00e-6, sliding_constants=[0.16, 0.0015],
                      geometry_constant=5.1, drag_variable=1.49e-4)
     explicit["gearbox"]["bearings"][0] = constants
-    first = predicted_steady_state(case_from_document(document()))
-    second = predicted_steady_state(case_from_document(explicit))
+    first = steady(case_from_document(document()))
+    second = steady(case_from_document(explicit))
     assert second.losses.bearings == pytest.approx(first.losses.bearings, rel=1e-12)
 
 

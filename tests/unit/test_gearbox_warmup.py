@@ -13,7 +13,7 @@ from thermogear.case import load_case
 from thermogear.errors import CaseError
 from thermogear.experiment.gearbox_warmup import gearbox_warmup, state_case
 from thermogear.gearbox.backlash import backlash_change_estimate
-from thermogear.gearbox.case_model import predicted_steady_state
+from thermogear.gearbox.case_model import gearbox_model_from_case, gearbox_operating_point, predicted_steady_state
 from thermogear.simulation import Simulation
 from thermogear.temperature_source import temperature_field_from_case
 
@@ -24,6 +24,12 @@ pytestmark = pytest.mark.filterwarnings("ignore::UserWarning")
 @pytest.fixture(scope="module")
 def case():
     return load_case(CASE)
+
+
+def steady(case):
+    """The steady state the case's gearbox model predicts at its operating point."""
+    return predicted_steady_state(gearbox_model_from_case(case), gearbox_operating_point(case.operating_point,
+                                                                                         case.gearbox))
 
 
 @pytest.fixture(scope="module")
@@ -48,7 +54,7 @@ def test_states_follow_the_network(short):
 
 def test_state_case_at_the_steady_state_is_the_gearbox_case(case):
     # the warm-up's state case at the steady temperatures and the "gearbox" temperature model give the same mesh
-    state = predicted_steady_state(case)
+    state = steady(case)
     at_state = Simulation(state_case(case, state.temperatures_c), "thermal")
     predicted = Simulation(case, "thermal")
     assert at_state.mesh_stiffness_mean == pytest.approx(predicted.mesh_stiffness_mean, rel=1e-9)
@@ -58,7 +64,7 @@ def test_state_case_at_the_steady_state_is_the_gearbox_case(case):
 def test_warm_up_ends_at_the_steady_state(case):
     long = gearbox_warmup(case, duration_s=6 * 3600.0, interval_s=3 * 3600.0, dynamics=False)
     # six hours is several of the slowest time constants (the housing's, about an hour here): within 0.5 K
-    np.testing.assert_allclose(long.history.temperatures_c[:, -1], predicted_steady_state(case).temperatures_c,
+    np.testing.assert_allclose(long.history.temperatures_c[:, -1], steady(case).temperatures_c,
                                atol=0.5)
 
 

@@ -10,6 +10,7 @@ import pytest
 from thermogear.case import load_case
 from thermogear.errors import CaseError
 from thermogear.mesh.model import MeshModel
+from thermogear.simulation import Simulation
 from thermogear.sweep.batch import MODEL_VARIABLES, POINT_VARIABLES, evaluate_block, evaluate_point, \
     evaluate_speeds, group_tables
 from thermogear.sweep.study import Study, _chunk_shape, parse_values, resolve_key
@@ -133,7 +134,7 @@ def test_batch_equals_one_simulation_per_point(luo, model):
         warnings.simplefilter("ignore")
         fast = evaluate_speeds(group_tables(MeshModel(case, model)), speeds)
         for index, speed in enumerate(speeds):
-            slow = evaluate_point(case.with_changes(**{"operating.speed_rpm": float(speed)}), model)
+            slow = evaluate_point(Simulation(case.with_changes(**{"operating.speed_rpm": float(speed)}), model))
             for name in (*MODEL_VARIABLES, *POINT_VARIABLES):
                 assert _relative(fast[name][index], slow[name]) < 1e-9, (name, speed)
 

@@ -26,7 +26,7 @@ def check(case: str = typer.Argument(..., metavar="CASE",
     with shown_warnings() as shown:  # printed on stderr as they come, and listed in the JSON
         loaded = load_case(case)
         preflight(loaded)  # what run builds before it solves (the hot backlash of the whole temperature field)
-        _check_study_table(case, loaded)
+        _check_study_table(case, loaded.document.get("sweep"))
     pair = loaded.gear_pair
     payload = {
         "case": loaded.name,
@@ -97,10 +97,10 @@ def model_choice_flags(case) -> list[str]:
     return [] if pair_model is None else pair_model.choice_flags(case.dynamics.mesh)
 
 
-def _check_study_table(case: str, loaded) -> None:
-    """A [sweep] table is defined as ``thermogear sweep`` defines it (names resolved, every value's case
-    checked), so a table ``check`` accepts is one ``sweep`` runs."""
-    if loaded.document.get("sweep") is None:
+def _check_study_table(case: str, sweep_table) -> None:
+    """A [sweep] table (``sweep_table``, the case file's, None where it has none) is defined as ``thermogear sweep``
+    defines it (names resolved, every value's case checked), so a table ``check`` accepts is one ``sweep`` runs."""
+    if sweep_table is None:
         return
     from thermogear.sweep.study import Study, load_study_case
 

@@ -62,15 +62,16 @@ def _header(source: str, attrs: dict, what: str, left_out: list[str]) -> list[st
     return lines
 
 
-def responses_csv(path: Path | None, case, responses: dict) -> int:
-    """The steady responses of ``run`` (or any responses by model) as one CSV: a row per time sample and model."""
+def responses_csv(path: Path | None, responses: dict, *, case_name: str, case_source: str, load_held: str) -> int:
+    """The steady responses of ``run`` (or any responses by model) as one CSV: a row per time sample and model,
+    headed by the case's name, its source and the load the point holds (``OperatingPoint.load_held``)."""
     from thermogear.report.csv_table import dataset_rows, write_csv  # noqa: PLC0415
 
     blocks = [({"model": name}, dataset_rows(response.to_xarray(), ("time",))) for name, response in
               responses.items()]
     left_out = sorted({name for _, block in blocks for name in block.left_out})
-    attributes = {"case_name": case.name, "case_source": str(case.source), "load": case.operating_point.load_held}
-    header = _header(f"thermogear run {case.name}", attributes,
+    attributes = {"case_name": case_name, "case_source": case_source, "load": load_held}
+    header = _header(f"thermogear run {case_name}", attributes,
                      "steady responses, one row per time sample and model", left_out)
     return write_csv(path if path is not None else sys.stdout, header, blocks)
 

@@ -10,7 +10,8 @@ import typer
 from thermogear.cli.app import app, console, error_console, print_json
 from thermogear.report.terminal import interruptible
 from thermogear.errors import CaseError, ModelLimitError
-from thermogear.gearbox.case_model import prediction_note
+from thermogear.gearbox.case_model import (describe_prediction, gearbox_model_from_case, gearbox_operating_point,
+                                           predicted_steady_state)
 
 if TYPE_CHECKING:
     from thermogear.dynamics.metric_results import LinearMetrics, NonlinearMetrics
@@ -137,7 +138,12 @@ def run(
     if csv is not None:
         from thermogear.cli.export import responses_csv
 
-        responses_csv(csv, case, responses)
+        responses_csv(csv, responses, case_name=case.name, case_source=str(case.source),
+                      load_held=case.operating_point.load_held)
+    predicted = None  # the gearbox model's prediction, said beside the outputs where it set the temperatures
+    if case.temperature.model == "gearbox":
+        predicted = describe_prediction(predicted_steady_state(
+            gearbox_model_from_case(case), gearbox_operating_point(case.operating_point, case.gearbox)))
     if as_json:
         payload = {"case": case.name, "method": method, "load_held": case.operating_point.load_held,
                    "models": {name: {**model_json(response), "messages": model_messages(response, name)}
@@ -149,8 +155,8 @@ def run(
             payload["not_computed"] = failed
         if drivetrain is not None:
             payload["drivetrain"] = drivetrain
-        if prediction_note(case):
-            payload["temperatures"] = prediction_note(case)
+        if predicted:
+            payload["temperatures"] = predicted
         if out is not None:
             payload["report"] = str(outcome.report)
         print_messages(messages, error_console)
@@ -170,8 +176,8 @@ def run(
     print_drivetrain(drivetrain, console)
     console.print(_load_held_line(case.operating_point))
     print_notes(case.notes, console)
-    if prediction_note(case):
-        console.print(prediction_note(case), highlight=False)
+    if predicted:
+        console.print(predicted, highlight=False)
     print_messages(messages, console)
     for name, reason in failed.items():  # as the report says it (run --out)
         error_console.print(f"{name} model not computed: {reason}", highlight=False)

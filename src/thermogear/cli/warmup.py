@@ -47,10 +47,10 @@ def warmup(
         from thermogear.ownership import check_figure_file
 
         check_figure_file(plot)  # before any work
-    base = load_case(case)
-    if rig_comparison:
-        _rig_comparison(base, gear_model, as_json, plot)
+    if rig_comparison:  # the comparison loads the case itself, one case per Table 3 state
+        _rig_comparison(case, gear_model, as_json, plot)
         return
+    base = load_case(case)
     from thermogear.experiment.warmup import first_order_history, read_temperature_history, warmup as run_warmup
 
     if (temperature_history is None) == (model is None):
@@ -99,10 +99,10 @@ def warmup(
         console.print(f"figure written to {plot}")
 
 
-def _rig_comparison(base, gear_model: str, as_json: bool, plot: Path | None) -> None:
+def _rig_comparison(case: str, gear_model: str, as_json: bool, plot: Path | None) -> None:
     from thermogear.experiment.comparison import compare_with_rig
 
-    comparison = compare_with_rig(base, gear_model)
+    comparison = compare_with_rig(case, gear_model)
     payload = comparison.as_dict()
     if plot is not None:
         _save(comparison.plot(), plot)

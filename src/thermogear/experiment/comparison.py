@@ -209,16 +209,19 @@ def dynamic_force_rms(response) -> float:
     return time_mean_and_rms(response.time, response.system_load())[1]
 
 
-def compare_with_rig(case=STAND_IN_CASE, model: str = "thermal", dynamics: bool = True,
+def compare_with_rig(case: str = STAND_IN_CASE, model: str = "thermal", dynamics: bool = True,
                      simulation: Callable | None = None) -> RigComparison:
-    """The model (``case`` name or Case, default the FZG type C stand-in) at every Table 3 state, beside the
-    measurements. With ``dynamics`` the periodic steady state of each state gives the RMS dynamic mesh force.
-    ``simulation`` is a factory ``(case, model) -> Simulation`` (default the real one)."""
+    """The model (``case``: a built-in parameter set or a case file, default the FZG type C stand-in) at every
+    Table 3 state, beside the measurements. With ``dynamics`` the periodic steady state of each state gives the RMS
+    dynamic mesh force. ``simulation`` is a factory ``(case, model) -> Simulation`` (default the real one).
+
+    It loads the case itself and writes one case per state (:func:`~thermogear.experiment.warmup.state_case`), as a
+    command does: it takes the name, never a built Case."""
     from thermogear.case import load_case
 
     if simulation is None:
         from thermogear.simulation import Simulation as simulation
-    base = load_case(case) if isinstance(case, str) else case
+    base = load_case(case)
     rows, shifts = [], []
     measured = measured_resonance_shift()
     for speed in rig_speeds_rpm():

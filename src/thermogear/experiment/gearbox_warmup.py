@@ -110,7 +110,9 @@ class GearboxWarmupResult:
 def state_case(case, temperatures_c):
     """The case at one state of the network: pinion and wheel uniform at their node temperatures (a flat flank
     table over the path, wheel offset), oil and housing at theirs. Built without re-reading the case file: the
-    sections are validated one by one."""
+    sections are validated one by one.
+
+    A resolver: it writes a new case from the case's own sections, so it takes the whole case."""
     pinion, wheel, _, oil, housing = (round(float(value), 6) for value in temperatures_c)
     pair = case.gear_pair
     points = pair.path_points

@@ -17,9 +17,11 @@ L·W plus the walls up to the oil level V/(L·W).
 from __future__ import annotations
 
 import math
+import weakref
 from dataclasses import replace
 from typing import TYPE_CHECKING
 
+from thermogear import warning_scope
 from thermogear.case import cached_per_case
 from thermogear.errors import CaseError
 from thermogear.gearbox.bearing_loss import NJ406_CONSTANTS, RollingBearing
@@ -32,7 +34,7 @@ if TYPE_CHECKING:
     from thermogear.case import Case
     from thermogear.schema.gearbox import GearboxSection
     from thermogear.schema.housing import HousingSection
-    from thermogear.gearbox.model import GearboxSteadyState
+    from thermogear.gearbox.model import GearboxSteadyState, GearboxThermalModel
     from thermogear.operating import OperatingPoint
 
 #: Specific heats of the housing materials [J/(kg·K)] (module docstring).
@@ -52,7 +54,10 @@ def gearbox_section(section: "GearboxSection | None") -> "GearboxSection":
 
 
 def check_gearbox_section(case: "Case") -> None:
-    """Load-time check of a ``[gearbox]`` section under any temperature model: the description builds."""
+    """Load-time check of a ``[gearbox]`` section under any temperature model: the description builds.
+
+    Keeps the Case: it is a load-time check (``check(case)``, :data:`thermogear.composition.CASE_CHECKS`) that
+    resolves the case's description."""
     if getattr(case, "gearbox", None) is not None:
         gearbox_description_from_case(case)
 
@@ -109,7 +114,9 @@ def _bearings(section) -> tuple[MountedBearing, ...]:
 
 
 def gearbox_description_from_case(case: "Case") -> GearboxDescription:
-    """The :class:`GearboxDescription` of a case with a ``[gearbox]`` section (module docstring)."""
+    """The :class:`GearboxDescription` of a case with a ``[gearbox]`` section (module docstring).
+
+    Keeps the Case: it is the resolver that turns the case's sections into the description."""
     from thermogear.lubricant import lubricant_from_case  # noqa: PLC0415
 
     section = gearbox_section(case.gearbox)
@@ -161,16 +168,32 @@ def gearbox_operating_point(operating: "OperatingPoint", gearbox: "GearboxSectio
 
 @cached_per_case
 def gearbox_model_from_case(case: "Case"):
-    """The :class:`~thermogear.gearbox.model.GearboxThermalModel` of a case (memoised per case)."""
+    """The :class:`~thermogear.gearbox.model.GearboxThermalModel` of a case (memoised per case).
+
+    Keeps the Case: a resolver (the description of the case, built once)."""
     from thermogear.gearbox.model import GearboxThermalModel  # noqa: PLC0415
 
     return GearboxThermalModel(gearbox_description_from_case(case))
 
 
-@cached_per_case
-def predicted_steady_state(case: "Case") -> "GearboxSteadyState":
-    """The steady state of the case's gearbox at its operating point (raises NoSteadyStateError on runaway)."""
-    return gearbox_model_from_case(case).steady_state(gearbox_operating_point(case.operating_point, case.gearbox))
+#: Steady states already solved, per thermal model (by identity: the model is built once per case and compares by
+#: identity) and per operating point (a frozen value: speed, torque, ambient), with the warnings their solution
+#: raised. Weakly keyed, so the entries go with the model (and so with the case that built it).
+_STEADY_STATES: "weakref.WeakKeyDictionary[GearboxThermalModel, dict]" = weakref.WeakKeyDictionary()
+
+
+def predicted_steady_state(model: "GearboxThermalModel", operating: GearboxOperatingPoint) -> "GearboxSteadyState":
+    """The steady state of the gearbox ``model`` at ``operating`` (raises NoSteadyStateError on runaway), solved once
+    per model and operating point: the case's temperature model, its temperature provider and the commands' note
+    all ask for it. The warnings of the first solution are raised again on every later call."""
+    states = _STEADY_STATES.setdefault(model, {})
+    entry = states.get(operating)
+    if entry is None:
+        with warning_scope.recorded() as caught:
+            state = model.steady_state(operating)
+        entry = states[operating] = (state, warning_scope.kept(caught))
+    warning_scope.raise_again(entry[1])  # the memo never swallows a warning the second time
+    return entry[0]
 
 
 def describe_prediction(state: "GearboxSteadyState") -> str:
@@ -183,18 +206,14 @@ def describe_prediction(state: "GearboxSteadyState") -> str:
             + (f", oil jet {losses.injection:.1f}" if losses.injection else "") + " W)")
 
 
-def prediction_note(case: "Case") -> str | None:
-    """What the outputs of a case say about its temperatures when the gearbox model predicted them (else None)."""
-    if case.temperature.model != "gearbox":
-        return None
-    return describe_prediction(predicted_steady_state(case))
-
-
 def with_predicted_temperatures(case: "Case") -> "Case":
     """The case as every command sees it under ``temperature.model = "gearbox"``: the predicted oil temperature
     as ``lubricant.operating_temperature_c`` (viscosity, damping), the housing node's as ``housing.temperature_c``
     (centre distance, backlash) and the prediction added to the assumptions. The gear temperatures come from the
-    ``"gearbox"`` temperature provider (:mod:`thermogear.gearbox.provider`)."""
+    ``"gearbox"`` temperature provider (:mod:`thermogear.gearbox.provider`).
+
+    Keeps the Case: it is the ``"gearbox"`` temperature model's resolver (``resolver(case) -> Case``,
+    :data:`thermogear.composition.TEMPERATURE_MODELS`), which writes the predicted temperatures into the case."""
     gearbox_section(case.gearbox)
     if case.housing.temperature_c is not None:
         raise CaseError("housing.temperature_c", case.housing.temperature_c, "absent with temperature.model = "
@@ -202,7 +221,8 @@ def with_predicted_temperatures(case: "Case") -> "Case":
     if "operating_temperature_c" in case.lubricant.model_fields_set:
         raise CaseError("lubricant.operating_temperature_c", case.lubricant.operating_temperature_c,
                         "absent with temperature.model = 'gearbox'", "the gearbox model predicts the oil temperature")
-    state = predicted_steady_state(case)
+    state = predicted_steady_state(gearbox_model_from_case(case),
+                                   gearbox_operating_point(case.operating_point, case.gearbox))
     housing_update = {"temperature_c": round(state.housing_c, 6)}
     if "material" not in case.housing.model_fields_set:
         housing_update["material"] = gearbox_section(case.gearbox).housing.material

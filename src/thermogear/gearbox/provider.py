@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from thermogear.gearbox.case_model import predicted_steady_state
+from thermogear.gearbox.case_model import gearbox_model_from_case, gearbox_operating_point, predicted_steady_state
 from thermogear.temperature_field import TemperatureField
 
 if TYPE_CHECKING:
@@ -22,8 +22,12 @@ MODEL_NAME = "gearbox"
 
 def gearbox_temperature_field(case: "Case") -> TemperatureField:
     """Pinion flank, base circle and bore at the pinion node's temperature, the wheel's at the wheel node's
-    (``wheel_flank_offset_c`` = wheel − pinion) [°C], stress-free at ``temperature.reference_c``."""
-    state = predicted_steady_state(case)
+    (``wheel_flank_offset_c`` = wheel − pinion) [°C], stress-free at ``temperature.reference_c``.
+
+    Keeps the Case: it is a temperature provider (``provider(case) -> TemperatureField``,
+    :data:`thermogear.composition.TEMPERATURE_PROVIDERS`)."""
+    state = predicted_steady_state(gearbox_model_from_case(case),
+                                   gearbox_operating_point(case.operating_point, case.gearbox))
     pinion, wheel = round(state.pinion_c, 6), round(state.wheel_c, 6)
     losses = state.losses
     source = (f"gearbox (predicted steady state: oil {state.oil_c:.1f} °C, housing {state.housing_c:.1f} °C; "

@@ -26,7 +26,7 @@ difference of at most 1e-9 on every stored variable.
 
 Slow path
 ---------
-:func:`evaluate_point` runs ``Simulation(case, model).run("periodic")`` for one point.
+:func:`evaluate_point` runs a point's ``Simulation(case, model)``: ``.run("periodic")``.
 """
 
 from __future__ import annotations
@@ -222,12 +222,11 @@ def evaluate_group(mesh: MeshModel, speeds_rpm, reference: GroupTables | None = 
 
 
 # ------------------------------------------------------------------------------------------- slow path
-def evaluate_point(case, model: str, points_per_period: int | None = None) -> dict[str, float]:
-    """Metrics of one point from ``Simulation(case, model).run("periodic")`` (the reference path)."""
+def evaluate_point(simulation) -> dict[str, float]:
+    """Metrics of one point from its :class:`~thermogear.simulation.Simulation` (one case under one model, the
+    reference path): ``simulation.run("periodic")``, and its dynamics problem where the solution is refused."""
     from thermogear.dynamics.periodic import floquet_multipliers
-    from thermogear.simulation import Simulation
 
-    simulation = Simulation(case, model, points_per_period)
     problem = simulation.problem
     result = {name: math.nan for name in MODEL_VARIABLES}
     result.update(natural_frequency_hz=problem.natural_frequency, mean_mesh_stiffness=problem.mean_stiffness,
@@ -313,6 +312,8 @@ def evaluate_block(study, block, method: str = "batch") -> tuple[dict[str, np.nd
 def _evaluate_model(study, method, shared, group_case, model, model_index, values, axes, layout, speeds, indices,
                     result) -> None:
     """One model over one group of a block: the fast path where it is exact, else one Simulation per point."""
+    from thermogear.simulation import Simulation  # noqa: PLC0415  (the model chain only where a point runs it)
+
     speed_axis, load_axes, members = layout
     if method == "batch":
         mesh = MeshModel(group_case, model)
@@ -329,7 +330,7 @@ def _evaluate_model(study, method, shared, group_case, model, model_index, value
         if member:
             values[speed_axis] = axes[speed_axis][member]
         point_case = group_case if member == 0 else study.case_at(tuple(values))
-        one = {k: np.array([v]) for k, v in evaluate_point(point_case, model).items()}
+        one = {k: np.array([v]) for k, v in evaluate_point(Simulation(point_case, model)).items()}
         _store(result, one, model_index, tuple(np.array([index[member]]) for index in indices))
 
 
