@@ -231,10 +231,10 @@ def _expansion_analytical(pair, material, expansion_model: str, which: str, roll
 def fem_analysis(inputs: "FemInputs", refinement: float | None = None, settings: FemSection | None = None,
                  checks: bool = True) -> FemAnalysis:
     """Run the FE verification of a case (both gears) at one mesh refinement, from its resolved inputs
-    (:func:`thermogear.fem.inputs.fem_inputs`; ``settings``: their ``[fem]`` section unless given). ``checks=False``: only what the
-    FE pair stiffness needs (:meth:`FemAnalysis.thermal_result`, Fig. 15): the compliances in the other plane and
-    the uniform-rise expansion check (two of the four elastic solves per gear, one of the two thermal ones) are
-    left out, and :meth:`FemAnalysis.summary` refuses the analysis."""
+    (:func:`thermogear.fem.inputs.fem_inputs`; ``settings``: their ``[fem]`` section unless given).
+    ``checks=False``: only what the FE pair stiffness needs (:meth:`FemAnalysis.thermal_result`, Fig. 15): the
+    compliances in the other plane and the uniform-rise expansion check (two of the four elastic solves per gear,
+    one of the two thermal ones) are left out, and :meth:`FemAnalysis.summary` refuses the analysis."""
     import time  # noqa: PLC0415
 
     from thermogear.luo2020.expansion import flank_expansion_along_line_of_action  # noqa: PLC0415
