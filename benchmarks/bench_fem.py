@@ -37,6 +37,7 @@ def main(case_name: str = "luo2019", repeats: int = 3) -> dict:
     cores = _cores()
     from thermogear.case import load_case
     from thermogear.fem import verification
+    from thermogear.fem.inputs import fem_inputs
     from thermogear.fem.verification import fem_analysis, refinement_change_percent
     from thermogear.stiffness.potential_energy import pair_compliance
     from thermogear.luo2020.case_inputs import expansion_for_case
@@ -48,8 +49,8 @@ def main(case_name: str = "luo2019", repeats: int = 3) -> dict:
         start = time.perf_counter()
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
-            coarse = fem_analysis(case)
-            fine = fem_analysis(case, 2.0 * coarse.refinement)
+            coarse = fem_analysis(fem_inputs(case))
+            fine = fem_analysis(coarse.inputs, 2.0 * coarse.refinement)
             change = refinement_change_percent(coarse, fine)["max"]
         full.append(time.perf_counter() - start)
         start = time.perf_counter()

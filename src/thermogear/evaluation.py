@@ -117,8 +117,13 @@ def evaluate_case(case, method: str = "periodic", models: tuple[str, ...] = MODE
 
     evaluation = Evaluation(case=case, method=method)
     step = progress or (lambda name: None)
-    # the FE verification needs nothing the other stages compute: it runs beside them on a second core
-    fe_verification = forked.start("FE verification", fem_verification, case) if evaluation.paper else None
+    # the FE verification needs nothing the other stages compute: it runs beside them on a second core, the case
+    # resolved into its FE inputs there too (its warnings and failures stay the stage's)
+    fe_verification = None
+    if evaluation.paper:
+        from thermogear.fem.inputs import fem_inputs
+
+        fe_verification = forked.start("FE verification", lambda: fem_verification(fem_inputs(case)))
     cite("luo2020", "iso21771", "iso53", "yang1987", "tian2004", "sainsot2004", "chaari2009")
     if case.citation and "14635" in case.citation:
         cite("iso14635_1")
@@ -213,13 +218,14 @@ def finish_evaluation(evaluation: Evaluation) -> Evaluation:
 
 
 # -------------------------------------------------------------------------------------------- stages
-def fem_verification(case):
+def fem_verification(inputs):
     """Fig. 15: thermogear's own FE verification of the elastic and thermal pair stiffness along the path,
-    ``{"gamma", "elastic", "thermal", "driving_elastic", "driving_thermal"}`` arrays [N/m]."""
+    ``{"gamma", "elastic", "thermal", "driving_elastic", "driving_thermal"}`` arrays [N/m], from a case's FE inputs
+    (:func:`thermogear.fem.inputs.fem_inputs`)."""
     from thermogear.fem.verification import cached_analysis, stiffness_along_path
 
     cite("scikit_fem")
-    return stiffness_along_path(cached_analysis(case, checks=False))
+    return stiffness_along_path(cached_analysis(inputs, checks=False))
 
 
 def _rig_trend() -> dict:

@@ -45,6 +45,7 @@ def test_bad_case_exits_2():
 def test_fem_temperature_and_x_te_drive_the_chain():
     import thermogear.fem.provider  # noqa: F401
     from thermogear.case import load_case
+    from thermogear.fem.inputs import fem_inputs
     from thermogear.fem.verification import cached_analysis
     from thermogear.simulation import Simulation
     from thermogear.luo2020.case_stiffness import thermal_stiffness
@@ -54,7 +55,7 @@ def test_fem_temperature_and_x_te_drive_the_chain():
         "thermal": {"model": "luo2020", "x_te_source": "fem", "load_basis": "external"}})
     points = case.gear_pair.path_points
     result = thermal_stiffness(case, np.array([points[name] for name in "ACE"]))
-    analysis = cached_analysis(case)
+    analysis = cached_analysis(fem_inputs(case))
     assert result.x_te == pytest.approx(analysis.x_te)
     assert result.temperature.source == "fem"
     assert np.all(result.drop_percent > 0)

@@ -22,9 +22,9 @@ def test_fem_summary_reports_each_step(monkeypatch):
     heated = SimpleNamespace(reference_c=20.0, table_flank_c=(80.0,), wheel_flank_offset_c=1.0, pinion_base_c=70.0,
                              pinion_bore_c=60.0, wheel_base_c=70.0, wheel_bore_c=60.0)  # fem refuses cold teeth
     monkeypatch.setattr(verification, "cached_analysis",
-                        lambda case: Analysis(refinement=1.0, temperature_field=heated))
+                        lambda inputs: Analysis(refinement=1.0, temperature_field=heated))
     monkeypatch.setattr(verification, "fem_analysis",
-                        lambda case, refinement: Analysis(refinement=refinement, temperature_field=heated))
+                        lambda inputs, refinement: Analysis(refinement=refinement, temperature_field=heated))
     monkeypatch.setattr(verification, "refinement_change_percent", lambda coarse, fine: {"max": 0.5})
     steps = []
     summary, _ = fem_command.fem_summary("luo2019", refine=True, progress=steps.append)

@@ -16,7 +16,8 @@ import numpy as np
 import pytest
 
 from thermogear import load_case
-from thermogear.fem.tooth_heat import FlankHeatInput, angular_speed, flank_heat_input, friction_mesh_model
+from thermogear.fem.inputs import fem_inputs
+from thermogear.fem.tooth_heat import FlankHeatInput, angular_speed, flank_heat_input
 from thermogear.friction import mean_friction_coefficient
 from thermogear.lubricant import lubricant_from_case
 from thermogear.mesh.model import MeshModel
@@ -30,7 +31,7 @@ def case(request):
 
 
 def test_heat_input_friction_is_the_din_formula_at_the_operating_oil_temperature(case):
-    mesh = friction_mesh_model(case)
+    mesh = fem_inputs(case).friction
     heat = flank_heat_input(mesh, "pinion", case.fem)
     pair = mesh.gear_pair
     roll = np.sort(pair.roll_grid(201))
@@ -53,7 +54,7 @@ def test_heat_input_friction_is_the_din_formula_at_the_operating_oil_temperature
 
 
 def test_the_heat_input_is_built_whole_and_stays_frozen(case):
-    heat = flank_heat_input(friction_mesh_model(case), "wheel", case.fem)
+    heat = flank_heat_input(fem_inputs(case).friction, "wheel", case.fem)
     assert heat.base_radius == case.gear_pair.wheel.base_radius
     with pytest.raises(dataclasses.FrozenInstanceError):
         heat.base_radius = 0.0

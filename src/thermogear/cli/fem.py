@@ -20,6 +20,7 @@ from thermogear.errors import CaseError
 def fem_summary(case_name: str, refine: bool = True, progress=None) -> tuple[dict, object]:
     """(JSON summary, FemAnalysis) of a case; with ``refine`` the study at twice the refinement is added.
     ``progress(step_name)`` is called as each step starts (see :data:`FEM_STEPS`)."""
+    from thermogear.fem.inputs import fem_inputs  # noqa: PLC0415
     from thermogear.fem.interpretation import fem_interpretation  # noqa: PLC0415
     from thermogear.fem.verification import cached_analysis, fem_analysis, refinement_change_percent  # noqa: PLC0415
     from thermogear.report.paper_table import paper_reference  # noqa: PLC0415
@@ -28,12 +29,13 @@ def fem_summary(case_name: str, refine: bool = True, progress=None) -> tuple[dic
     start = time.perf_counter()
     case = load_case(case_name)
     advance(FEM_STEPS[0])
-    analysis = cached_analysis(case)
+    inputs = fem_inputs(case)
+    analysis = cached_analysis(inputs)
     _check_heated(analysis.temperature_field)
     summary = analysis.summary()
     if refine:
         advance(FEM_STEPS[1])
-        fine = fem_analysis(case, 2.0 * analysis.refinement)
+        fine = fem_analysis(inputs, 2.0 * analysis.refinement)
         changes = refinement_change_percent(analysis, fine)
         summary["refinement_change_percent"] = changes["max"]
         summary["refinement_change_by_quantity_percent"] = changes

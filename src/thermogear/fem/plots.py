@@ -34,7 +34,7 @@ def plot_flank_temperature(analysis, ax=None, paper_band: tuple[float, float] | 
     (lowest, highest) [°C]: the paper's range, shaded (the caller passes it for a parameter set of the paper:
     :func:`thermogear.report.paper_table.paper_reference`)."""
     figure, ax = _axes(ax)
-    pair = analysis.case.gear_pair
+    pair = analysis.gear_pair
     roll = pair.roll_grid(81)
     gamma = pair.gamma(roll)
     ax.plot(gamma, analysis.temperatures["pinion"].flank_c(roll), label="FE pinion flank")
@@ -54,13 +54,13 @@ def plot_stiffness_along_path(analysis, ax=None):
     from thermogear.stiffness.potential_energy import pair_compliance  # noqa: PLC0415
 
     figure, ax = _axes(ax, (6.5, 4.0))
-    case = analysis.case
-    width = case.gear_pair.face_width
+    pair, material = analysis.gear_pair, analysis.inputs.material
+    width = pair.face_width
     scale = 1.0 / (width * 1e9)
     result = analysis.thermal_result()
     ax.plot(analysis.gamma, result.elastic_stiffness * scale, "o-", label="FE elastic")
     ax.plot(analysis.gamma, result.stiffness * scale, "s-", label=f"FE thermo-elastic (X_te = {analysis.x_te:.3g})")
-    pem = pair_compliance(case.gear_pair, case.material, analysis.roll)
+    pem = pair_compliance(pair, material, analysis.roll)
     ax.plot(analysis.gamma, pem.stiffness * scale, "k:", label="PEM elastic")
     ax.set_xlabel("contact position Γ [–]")
     ax.set_ylabel("pair stiffness [N/(mm·μm)]")
@@ -71,7 +71,7 @@ def plot_stiffness_along_path(analysis, ax=None):
 def plot_compliance_comparison(analysis, ax=None):
     """FE and PEM single-tooth stiffness of both gears along the path [N/(mm·μm)]."""
     figure, ax = _axes(ax)
-    width = analysis.case.gear_pair.face_width
+    width = analysis.gear_pair.face_width
     for name, marker in (("pinion", "o"), ("wheel", "s")):
         item = analysis.deflection[name]
         ax.plot(analysis.gamma, 1.0 / (item.compliance * width * 1e9), marker + "-", label=f"{name} FE")

@@ -39,7 +39,8 @@ from thermogear.fem.tooth_mesh import ToothMesh, nominal_bore_radius, tooth_mesh
 from thermogear.schema.fem import FemSection
 
 if TYPE_CHECKING:
-    from thermogear.case import Case
+    from thermogear.geometry import GearPair
+    from thermogear.materials import Material
 
 #: Chord of the section reading, as fractions of x_K (the contact point's distance from the centreline).
 SECTION_FROM, SECTION_TO, SECTION_POINTS = -0.75, 0.5, 13
@@ -87,9 +88,10 @@ def section_deflection(ux, uy, chord_x, contact_x, normal):
 # ------------------------------------------------------------------------------------------------ model
 @dataclass(frozen=True, eq=False)
 class ToothModel:
-    """The assembled elasticity problem of one gear's tooth sector."""
+    """The assembled elasticity problem of one gear's tooth sector (the ``which`` gear of ``gear_pair``)."""
 
-    case: object
+    gear_pair: "GearPair"
+    material: "Material"
     which: str
     mesh: ToothMesh
     basis: skfem.CellBasis
@@ -111,9 +113,9 @@ class ToothModel:
     def contact_loads(self, own_roll, unit_load: float) -> np.ndarray:
         """Load columns (dofs, contacts) of a unit resultant [N per m of face width] pressing on the right flank
         of the middle tooth at each contact point, spread over the Hertz half-width of ``unit_load`` [N/m]."""
-        gear, material = self.gear, self.case.material
+        gear, material = self.gear, self.material
         x_k, y_k, _, normal = contact_point_geometry(gear, own_roll)
-        relative = self.case.gear_pair.relative_radius_of_curvature(self._pair_roll(own_roll))
+        relative = self.gear_pair.relative_radius_of_curvature(self._pair_roll(own_roll))
         half_width = hertz_half_width(unit_load, relative, material.youngs_modulus, material.poisson_ratio)
         facets = self.mesh.facets("active_flank")
         facet_basis = skfem.FacetBasis(self.mesh.mesh, self.basis.elem, facets=facets, intorder=6)
@@ -138,7 +140,7 @@ class ToothModel:
         return np.column_stack(columns)
 
     def _pair_roll(self, own_roll):
-        pair = self.case.gear_pair
+        pair = self.gear_pair
         return own_roll if self.which == "pinion" else pair.line_of_action_length - np.asarray(own_roll)
 
     def elastic_displacements(self, loads: np.ndarray) -> np.ndarray:
@@ -164,7 +166,7 @@ class ToothModel:
     def thermal_displacement(self, rise: Callable | float, expansion_coefficient: float) -> np.ndarray:
         """Displacement field [m] of a free gear (rollers on the cut faces, free bore) under a temperature rise
         ``rise`` [K] (number or function of (x, y))."""
-        material = self.case.material
+        material = self.material
         load = thermal_load(self.basis, material.youngs_modulus, material.poisson_ratio, self.plane,
                             expansion_coefficient, rise)
         penalty = ROLLER_PENALTY * material.youngs_modulus / self.gear.module
@@ -186,18 +188,18 @@ class ToothModel:
         return values.reshape(2, -1)
 
 
-def tooth_model(case: "Case", which: str = "pinion", settings: FemSection | None = None,
+def tooth_model(gear_pair: "GearPair", material: "Material", which: str, settings: FemSection,
                 refinement: float | None = None, plane: str | None = None, teeth: int | None = None) -> ToothModel:
-    """Mesh and assemble the elasticity problem of one gear's tooth sector."""
-    settings = settings or case.fem
+    """Mesh and assemble the elasticity problem of the ``which`` gear's tooth sector of ``gear_pair`` in
+    ``material``; ``settings``: the case's ``[fem]`` section (refinement, plane and sector teeth where not given)."""
     refinement = settings.mesh_refinement if refinement is None else refinement
-    gear = gear_of(case.gear_pair, which)
+    gear = gear_of(gear_pair, which)
     mesh = tooth_mesh(gear, nominal_bore_radius(gear), teeth=settings.sector_teeth if teeth is None else teeth,
                       refinement=refinement)
     basis = vector_basis(mesh.mesh, 2)
     plane = settings.plane if plane is None else plane
-    matrix = stiffness_matrix(basis, case.material.youngs_modulus, case.material.poisson_ratio, plane)
-    return ToothModel(case, which, mesh, basis, matrix, plane)
+    matrix = stiffness_matrix(basis, material.youngs_modulus, material.poisson_ratio, plane)
+    return ToothModel(gear_pair, material, which, mesh, basis, matrix, plane)
 
 
 def own_roll_of(gear_pair, which: str, roll) -> np.ndarray:
@@ -224,20 +226,22 @@ class ToothDeflection:
         return 100.0 * (self.compliance / self.pem - 1.0)
 
 
-def tooth_deflection(case: "Case", which: str, roll, model: ToothModel | None = None, **options) -> ToothDeflection:
-    """FE compliance of one gear's tooth at pair roll distances ``roll`` [m], with the PEM's beside it."""
+def tooth_deflection(model: ToothModel, roll, normal_load: float) -> ToothDeflection:
+    """FE compliance of the tooth of ``model`` at pair roll distances ``roll`` [m] under the external normal load
+    ``normal_load`` F_n [N, total over the face width] (it sets the Hertz width of the load), with the PEM's beside
+    it."""
     from thermogear.stiffness.potential_energy import tooth_compliance  # noqa: PLC0415
 
-    model = model or tooth_model(case, which, **options)
+    pair, which = model.gear_pair, model.which
     roll = np.asarray(roll, dtype=float)
-    own = own_roll_of(case.gear_pair, which, roll)
+    own = own_roll_of(pair, which, roll)
     width = model.gear.face_width
-    unit_load = case.normal_load / case.gear_pair.face_width
+    unit_load = normal_load / pair.face_width
     solutions = model.elastic_displacements(model.contact_loads(own, unit_load))
     deflection, displacement = model.section_reading(solutions, own)
     _, _, load_angle, _ = contact_point_geometry(model.gear, own)
-    pem = tooth_compliance(model.gear, load_angle, case.material, width, which, warn=False).total
-    return ToothDeflection(which, roll, np.asarray(case.gear_pair.gamma(roll)), deflection / width, pem,
+    pem = tooth_compliance(model.gear, load_angle, model.material, width, which, warn=False).total
+    return ToothDeflection(which, roll, np.asarray(pair.gamma(roll)), deflection / width, pem,
                            displacement, model.plane, model.mesh.element_count)
 
 

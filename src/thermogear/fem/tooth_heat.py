@@ -31,7 +31,7 @@ from thermogear.fem.tooth_mesh import ToothMesh, nominal_bore_radius, tooth_mesh
 from thermogear.schema.fem import FemSection
 
 if TYPE_CHECKING:
-    from thermogear.case import Case
+    from thermogear.fem.inputs import FemInputs
     from thermogear.lubricant import Lubricant
     from thermogear.schema.lubricant import LubricantSection
 
@@ -55,21 +55,6 @@ def angular_speed(gear_pair, speed_rpm: float, which: str) -> float:
     """ω of the gear [rad/s] at the pinion speed ``speed_rpm`` [rpm]."""
     omega = speed_rpm * math.pi / 30.0
     return omega if which == "pinion" else omega / gear_pair.gear_ratio
-
-
-def friction_mesh_model(case: "Case"):
-    """The elastic mesh model whose friction formula (Luo & Li Eq. 27, DIN 3990-4) sees the oil at the operating
-    temperature ``[lubricant].operating_temperature_c``, the ambient of the heat model: the mesh model's friction
-    takes the oil at ``[lubricant].reference_temperature_c`` for the elastic model, so the case is re-resolved with
-    that temperature set to the operating one. Its speed and load are the case's operating point; its μ, load
-    shares and unit loads are those of :meth:`~thermogear.mesh.model.MeshModel.pair_damping_at` (one computation
-    of the friction for the damping and the heat)."""
-    from thermogear.mesh.model import MeshModel  # noqa: PLC0415
-
-    oil_c = case.lubricant.operating_temperature_c
-    with warning_scope.ignored(ExtrapolationWarning):  # the case as loaded reported its oil's range already
-        changed = case.with_changes(**{"lubricant.reference_temperature_c": oil_c})
-    return MeshModel(changed, "elastic")
 
 
 @dataclass(frozen=True)
@@ -144,9 +129,9 @@ class FlankHeatInput:
 
 def flank_heat_input(mesh, which: str, settings: FemSection, count: int = 201) -> FlankHeatInput:
     """q̄ along the flank of ``which`` gear (module docstring). μ, the pair's load share and unit load come from the
-    mesh model's friction damping (:meth:`~thermogear.mesh.model.MeshModel.pair_damping_at`) of ``mesh`` (a case's
-    :func:`friction_mesh_model`: the oil at the operating temperature); the speed is the mesh model's; ``settings``
-    the case's ``[fem]`` section."""
+    mesh model's friction damping (:meth:`~thermogear.mesh.model.MeshModel.pair_damping_at`) of ``mesh`` (the
+    ``friction`` model of :func:`thermogear.fem.inputs.fem_inputs`: the oil at the operating temperature); the speed
+    is the mesh model's; ``settings`` the case's ``[fem]`` section."""
     pair = mesh.gear_pair
     roll = pair.roll_grid(count)
     speed = mesh.speed_rpm
@@ -229,20 +214,19 @@ class ToothTemperature:
         return self.values[self.basis.nodal_dofs[0]]
 
 
-def tooth_temperature(case: "Case", which: str = "pinion", settings: FemSection | None = None,
+def tooth_temperature(inputs: "FemInputs", which: str = "pinion", settings: FemSection | None = None,
                       refinement: float | None = None) -> ToothTemperature:
-    """Solve the steady bulk temperature of one gear's tooth (module docstring)."""
-    from thermogear.lubricant import lubricant_from_case  # noqa: PLC0415
-
-    settings = settings or case.fem
+    """Solve the steady bulk temperature of one gear's tooth (module docstring) from a case's resolved FE inputs
+    (``settings``: their ``[fem]`` section unless given)."""
+    settings = settings or inputs.settings
     refinement = settings.mesh_refinement if refinement is None else refinement
-    gear = gear_of(case.gear_pair, which)
+    gear = gear_of(inputs.gear_pair, which)
     mesh = tooth_mesh(gear, nominal_bore_radius(gear), teeth=1, refinement=refinement)
-    friction = friction_mesh_model(case)  # one mesh model: the speed and the friction heat of the operating point
-    coefficients = convection_coefficients(case.gear_pair, lubricant_from_case(case), case.lubricant, settings, which,
+    friction = inputs.friction  # one mesh model: the speed and the friction heat of the operating point
+    coefficients = convection_coefficients(inputs.gear_pair, inputs.oil, inputs.lubricant, settings, which,
                                            friction.speed_rpm)
     heat = flank_heat_input(friction, which, settings)
-    oil_c = float(case.lubricant.operating_temperature_c)
+    oil_c = float(inputs.lubricant.operating_temperature_c)
     facets = mesh.facets
     boundaries = [RobinBoundary(facets("active_flank"), h=coefficients.meshing_flank, ambient=oil_c, flux=heat),
                   RobinBoundary(facets("passive_flank", "fillet", "root"), h=coefficients.passive_flank,
@@ -251,10 +235,10 @@ def tooth_temperature(case: "Case", which: str = "pinion", settings: FemSection 
     if coefficients.bore > 0.0:
         boundaries.append(RobinBoundary(facets("bore"), h=coefficients.bore, ambient=oil_c))
     sink = 2.0 * coefficients.end_face / gear.face_width
-    basis, values = solve_steady_conduction(mesh.mesh, case.material.thermal_conductivity, boundaries, sink=sink,
+    basis, values = solve_steady_conduction(mesh.mesh, inputs.material.thermal_conductivity, boundaries, sink=sink,
                                             ambient=oil_c)
     return ToothTemperature(which, mesh, basis, values, coefficients, heat, oil_c)
 
 
 __all__ = ["ConvectionCoefficients", "FlankHeatInput", "ToothTemperature", "angular_speed", "convection_coefficients",
-           "flank_heat_input", "friction_mesh_model", "tooth_temperature"]
+           "flank_heat_input", "tooth_temperature"]

@@ -17,8 +17,6 @@ action the heated flank moves *towards* the mate. docs/fem.md discusses why the 
 
 from __future__ import annotations
 
-import json
-
 import warnings
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
@@ -32,7 +30,8 @@ from thermogear.fem.tooth_heat import ToothTemperature, tooth_temperature
 from thermogear.schema.fem import FemSection
 
 if TYPE_CHECKING:
-    from thermogear.case import Case
+    from thermogear.fem.inputs import FemInputs
+    from thermogear.geometry import GearPair
 
 GEARS = ("pinion", "wheel")
 
@@ -46,23 +45,23 @@ FLANK_TABLE_POINTS = 41
 FLANK_FIT_DEGREE = 6
 
 
-def temperature_field_from_fem(case: "Case", temperatures: dict[str, ToothTemperature]):
-    """TemperatureField (``source = "fem"``) from the two gears' FE temperatures: the pinion flank table along
-    the path fitted in Γ, the wheel flank as the pinion's plus its mean offset along the path (the field holds one
-    constant offset), base-circle and bore means."""
+def temperature_field_from_fem(pair: "GearPair", reference_c: float, temperatures: dict[str, ToothTemperature]):
+    """TemperatureField (``source = "fem"``) from the two gears' FE temperatures of the gear pair ``pair``: the
+    pinion flank table along the path fitted in Γ, the wheel flank as the pinion's plus its mean offset along the
+    path (the field holds one constant offset), base-circle and bore means; ``reference_c`` the stress-free
+    temperature [°C]."""
     from thermogear.temperature_source import TemperatureField  # noqa: PLC0415
 
-    pair = case.gear_pair
     roll = pair.roll_grid(FLANK_TABLE_POINTS)
     gamma = np.asarray(pair.gamma(roll), dtype=float)
-    pinion = temperatures["pinion"].flank_c(own_roll_of(case.gear_pair, "pinion", roll))
-    wheel = temperatures["wheel"].flank_c(own_roll_of(case.gear_pair, "wheel", roll))
+    pinion = temperatures["pinion"].flank_c(own_roll_of(pair, "pinion", roll))
+    wheel = temperatures["wheel"].flank_c(own_roll_of(pair, "wheel", roll))
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ModelAssumptionWarning)
         return TemperatureField.from_table(
             gamma, pinion, FLANK_FIT_DEGREE, pinion_base_c=temperatures["pinion"].base_c,
             pinion_bore_c=temperatures["pinion"].bore_c, wheel_base_c=temperatures["wheel"].base_c,
-            wheel_bore_c=temperatures["wheel"].bore_c, reference_c=case.temperature.reference_c,
+            wheel_bore_c=temperatures["wheel"].bore_c, reference_c=reference_c,
             wheel_flank_offset_c=float(np.mean(wheel - pinion)), source="fem")
 
 
@@ -70,7 +69,7 @@ def temperature_field_from_fem(case: "Case", temperatures: dict[str, ToothTemper
 class FemAnalysis:
     """Everything the FE verification computes for one case at one mesh refinement (SI, totals)."""
 
-    case: object
+    inputs: "FemInputs"  # what the analysis read of the case
     settings: FemSection
     refinement: float
     roll: np.ndarray
@@ -89,20 +88,24 @@ class FemAnalysis:
 
     # ------------------------------------------------------------------------------- derived quantities
     @property
+    def gear_pair(self) -> "GearPair":
+        return self.inputs.gear_pair
+
+    @property
     def normal_load(self) -> float:
-        return float(self.case.normal_load)
+        return float(self.inputs.normal_load)
 
     @property
     def hertz(self) -> float:
         from thermogear.stiffness.potential_energy import hertz_compliance  # noqa: PLC0415
 
-        material = self.case.material
-        return hertz_compliance(material.youngs_modulus, material.poisson_ratio, self.case.gear_pair.face_width)
+        material = self.inputs.material
+        return hertz_compliance(material.youngs_modulus, material.poisson_ratio, self.gear_pair.face_width)
 
     @property
     def x_te_profile(self) -> np.ndarray:
         """X_te(Γ) by the magnitude reading (module docstring)."""
-        load = self.normal_load / self.case.gear_pair.face_width
+        load = self.normal_load / self.gear_pair.face_width
         excess = 0.0
         for gear in GEARS:
             elastic = self.deflection[gear].unit_displacement * load
@@ -134,8 +137,7 @@ class FemAnalysis:
                                           self.x_te if x_te is None else x_te)
 
     def flank_temperature_points(self) -> dict[str, float]:
-        pair = self.case.gear_pair
-        points = pair.path_points
+        points = self.gear_pair.path_points
         return {name: float(self.temperatures["pinion"].flank_c(np.array([points[name]]))[0]) for name in "ACE"}
 
     def quantities(self) -> dict[str, np.ndarray]:
@@ -159,7 +161,7 @@ class FemAnalysis:
             raise ValueError("this FE analysis ran without its checks (fem_analysis(..., checks=False)): the other "
                              "plane's compliances and the uniform-rise expansion check that the summary reports "
                              "were not computed")
-        pair = self.case.gear_pair
+        pair = self.gear_pair
         width = pair.face_width
         per_width = 1.0 / (width * 1e9)
         points = pair.path_points
@@ -169,8 +171,8 @@ class FemAnalysis:
         uniform = np.concatenate([100.0 * (self.uniform_expansion_fe[g] / self.uniform_expansion_analytical[g] - 1.0)
                                   for g in GEARS])
         homogeneous = np.concatenate([
-            100.0 * (self.uniform_expansion_fe[g] / (self.case.material.thermal_expansion * UNIFORM_RISE
-                                                     * own_roll_of(self.case.gear_pair, g, self.roll)) - 1.0)
+            100.0 * (self.uniform_expansion_fe[g] / (self.inputs.material.thermal_expansion * UNIFORM_RISE
+                                                     * own_roll_of(pair, g, self.roll)) - 1.0)
             for g in GEARS])
         bulk = np.concatenate([100.0 * (self.expansion_fe[g] / self.expansion_analytical[g] - 1.0) for g in GEARS])
         result = self.thermal_result()
@@ -178,7 +180,7 @@ class FemAnalysis:
         drop_at = {name: float(np.interp(points[name], self.roll, drop)) for name in "ACE"}
         temperatures = self.temperatures
         return {
-            "case": self.case.name,
+            "case": self.inputs.name,
             "refinement": self.refinement,
             "plane": self.settings.plane,
             "elements": {g: self.deflection[g].elements for g in GEARS},
@@ -203,7 +205,7 @@ class FemAnalysis:
             "mean_friction_coefficient": float(np.mean(temperatures["pinion"].heat_input.friction_coefficient)),
             "expansion_fe_vs_analytical_percent": {
                 "max_abs": float(np.max(np.abs(uniform))), "mean_abs": float(np.mean(np.abs(uniform))),
-                "uniform_rise_k": UNIFORM_RISE, "eq9_form": self.case.thermal.expansion_model,
+                "uniform_rise_k": UNIFORM_RISE, "eq9_form": self.inputs.expansion_model,
                 "vs_homogeneous_expansion_max_abs": float(np.max(np.abs(homogeneous))),
                 "bulk_field_max_abs": float(np.max(np.abs(bulk)))},
             "expansion_um": {g: {"fe": (self.expansion_fe[g] * 1e6).tolist(),
@@ -226,56 +228,57 @@ def _expansion_analytical(pair, material, expansion_model: str, which: str, roll
                                                 expansion_model)
 
 
-def fem_analysis(case: "Case", refinement: float | None = None, settings: FemSection | None = None,
+def fem_analysis(inputs: "FemInputs", refinement: float | None = None, settings: FemSection | None = None,
                  checks: bool = True) -> FemAnalysis:
-    """Run the FE verification of a case (both gears) at one mesh refinement. ``checks=False``: only what the
-    FE pair stiffness needs (:meth:`FemAnalysis.thermal_result`, Fig. 15): the compliances in the other plane and
-    the uniform-rise expansion check (two of the four elastic solves per gear, one of the two thermal ones) are
-    left out, and :meth:`FemAnalysis.summary` refuses the analysis."""
+    """Run the FE verification of a case (both gears) at one mesh refinement, from its resolved inputs
+    (:func:`thermogear.fem.inputs.fem_inputs`; ``settings``: their ``[fem]`` section unless given).
+    ``checks=False``: only what the FE pair stiffness needs (:meth:`FemAnalysis.thermal_result`, Fig. 15): the
+    compliances in the other plane and the uniform-rise expansion check (two of the four elastic solves per gear,
+    one of the two thermal ones) are left out, and :meth:`FemAnalysis.summary` refuses the analysis."""
     import time  # noqa: PLC0415
 
     from thermogear.luo2020.expansion import flank_expansion_along_line_of_action  # noqa: PLC0415
 
-    settings = settings or case.fem
+    settings = settings or inputs.settings
     refinement = settings.mesh_refinement if refinement is None else float(refinement)
-    pair = case.gear_pair
+    pair, material = inputs.gear_pair, inputs.material
     roll = pair.roll_grid(settings.contact_positions)
     gamma = np.asarray(pair.gamma(roll), dtype=float)
     timings = {}
     start = time.perf_counter()
-    temperatures = {g: tooth_temperature(case, g, settings, refinement) for g in GEARS}
-    field_ = temperature_field_from_fem(case, temperatures)
+    temperatures = {g: tooth_temperature(inputs, g, settings, refinement) for g in GEARS}
+    field_ = temperature_field_from_fem(pair, inputs.reference_c, temperatures)
     timings["heat"] = time.perf_counter() - start
     other_plane = "strain" if settings.plane == "stress" else "stress"
     deflection, deflection_other, thermal, expansion_fe, expansion_an, uniform_fe, uniform_an = ({} for _ in range(7))
     start = time.perf_counter()
     for gear in GEARS:
-        deflection[gear] = tooth_deflection(case, gear, roll, model=tooth_model(case, gear, settings, refinement))
+        deflection[gear] = tooth_deflection(tooth_model(pair, material, gear, settings, refinement), roll,
+                                            inputs.normal_load)
         if checks:
             deflection_other[gear] = tooth_deflection(
-                case, gear, roll, model=tooth_model(case, gear, settings, refinement, plane=other_plane))
+                tooth_model(pair, material, gear, settings, refinement, plane=other_plane), roll, inputs.normal_load)
     timings["elastic"] = time.perf_counter() - start
     start = time.perf_counter()
-    reference = case.temperature.reference_c
-    alpha = case.material.thermal_expansion
+    reference = inputs.reference_c
+    alpha = material.thermal_expansion
     for gear in GEARS:
-        sector = tooth_model(case, gear, settings, refinement, teeth=1)
-        own = own_roll_of(case.gear_pair, gear, roll)
+        sector = tooth_model(pair, material, gear, settings, refinement, teeth=1)
+        own = own_roll_of(pair, gear, roll)
         _, _, _, normal = contact_point_geometry(sector.gear, own)
         temperature = temperatures[gear]
         bulk = sector.thermal_displacement(lambda x, y, t=temperature: t.at(x, y) - reference, alpha)
         thermal[gear] = sector.point_displacement(bulk, own)
         expansion_fe[gear] = np.sum(thermal[gear] * normal, axis=0)
-        expansion_an[gear] = _expansion_analytical(case.gear_pair, case.material, case.thermal.expansion_model,
-                                                   gear, roll, field_)
+        expansion_an[gear] = _expansion_analytical(pair, material, inputs.expansion_model, gear, roll, field_)
         if not checks:
             continue
         uniform = sector.thermal_displacement(UNIFORM_RISE, alpha)
         uniform_fe[gear] = np.sum(sector.point_displacement(uniform, own) * normal, axis=0)
         uniform_an[gear] = flank_expansion_along_line_of_action(sector.gear, own, UNIFORM_RISE, UNIFORM_RISE,
-                                                                UNIFORM_RISE, alpha, case.thermal.expansion_model)
+                                                                UNIFORM_RISE, alpha, inputs.expansion_model)
     timings["thermoelastic"] = time.perf_counter() - start
-    return FemAnalysis(case, settings, refinement, roll, gamma, temperatures, field_, deflection, deflection_other,
+    return FemAnalysis(inputs, settings, refinement, roll, gamma, temperatures, field_, deflection, deflection_other,
                        thermal, expansion_fe, expansion_an, uniform_fe, uniform_an, timings, checks)
 
 
@@ -293,29 +296,30 @@ def refinement_change_percent(coarse: FemAnalysis, fine: FemAnalysis) -> dict[st
 _CACHE: dict[tuple[str, float, bool], FemAnalysis] = {}
 
 
-def _key(document: dict, settings: FemSection, refinement: float | None, checks: bool) -> tuple[str, float, bool]:
-    value = settings.mesh_refinement if refinement is None else float(refinement)
-    return json.dumps(document, sort_keys=True, default=str), value, checks
+def _key(inputs: "FemInputs", refinement: float | None, checks: bool) -> tuple[str, float, bool]:
+    value = inputs.settings.mesh_refinement if refinement is None else float(refinement)
+    return inputs.document_key, value, checks
 
 
-def cached_analysis(case: "Case", refinement: float | None = None, checks: bool = True) -> FemAnalysis:
-    """:func:`fem_analysis`, memoised per case document, refinement and ``checks`` (the providers ask for it
+def cached_analysis(inputs: "FemInputs", refinement: float | None = None, checks: bool = True) -> FemAnalysis:
+    """:func:`fem_analysis`, memoised per case document (the inputs' ``document_key``: they are resolved from it,
+    so two resolutions of one case share an analysis), refinement and ``checks`` (the providers ask for it
     repeatedly); an analysis with its checks also answers a request without them."""
-    key = _key(case.document, case.fem, refinement, checks)
+    key = _key(inputs, refinement, checks)
     complete = key[:2] + (True,)
     if complete in _CACHE:
         return _CACHE[complete]
     if key not in _CACHE:
         if len(_CACHE) > 16:
             _CACHE.clear()
-        _CACHE[key] = fem_analysis(case, refinement, checks=checks)
+        _CACHE[key] = fem_analysis(inputs, refinement, checks=checks)
     return _CACHE[key]
 
 
 def stiffness_along_path(analysis: FemAnalysis) -> dict:
     """Fig. 15: FE elastic and thermo-elastic pair stiffness along the path [N/m, totals] and the driving tooth's
     single-tooth stiffness of an FE analysis: ``{gamma, elastic, thermal, driving_elastic, driving_thermal}``
-    (arrays). The pair stiffness needs neither the other plane nor the check (``cached_analysis(case,
+    (arrays). The pair stiffness needs neither the other plane nor the check (``cached_analysis(inputs,
     checks=False)`` suffices).
 
     Elastic: 1/(δ1,FE + δ2,FE + δ_Hertz); thermal: Luo & Li Eqs. 21–23 with the FE compliances, the FE X_te and
