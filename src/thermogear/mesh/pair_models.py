@@ -15,8 +15,10 @@ Three models (``PAIR_MODELS``, resolved once by :func:`pair_model_for`):
 * ``"thermoelastic"`` — :class:`ThermoelasticPair`: the predictive model of :mod:`thermogear.thermoelastic` (E(T),
   gears and housing expanded, backlash and flank deviations at temperature).
 
-Adding a model is one subclass of :class:`PairModelBase` overriding what differs, and one line in ``PAIR_MODELS``
-(its name then is a valid ``[thermal] model`` once the schema allows it).
+Adding a model is one subclass of :class:`PairModelBase` overriding what differs, and one line in ``PAIR_MODELS``:
+it then runs by its name, ``Simulation(case, model=name)``. A model that a case file chooses as its ``[thermal]
+model`` also declares its input rules (temperature limits, X_te, own keys): one line in
+:data:`thermogear.thermal_model_rules.THERMAL_MODEL_RULES` (which the schema reads), held as the class's ``rules``.
 """
 
 from __future__ import annotations
