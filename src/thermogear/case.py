@@ -33,8 +33,9 @@ from thermogear.schema import (CaseFile, DampingSection, DrivetrainSection, Dyna
                                GearsSection, HousingSection, LubricantSection, MaterialSection, TemperatureSection,
                                ThermalSection)
 from thermogear.schema.drivetrain import check_drivetrain_fits_gears
-from thermogear.temperature_field import (TEMPERATURE_LIMITS, check_temperatures, default_bulk_temperature,
+from thermogear.temperature_field import (check_temperatures, default_bulk_temperature,
                                          temperature_field_from_section)
+from thermogear.thermal_model_rules import thermal_model_rules
 from thermogear.text_files import is_existing_file, path_exists, read_user_text
 from thermogear.thermoelastic.inputs import check_thermoelastic_inputs
 
@@ -228,12 +229,12 @@ def _check_temperature_field(case: "Case") -> None:
     pair = case.gear_pair
     points = pair.path_points
     check_temperatures(field, float(pair.gamma(points["A"])), float(pair.gamma(points["E"])),
-                       limits=TEMPERATURE_LIMITS[case.thermal.model])
+                       limits=thermal_model_rules(case.thermal.model).temperature_limits)
 
 
 def _check_thermal_inputs(case: "Case") -> None:
     section = case.thermal
-    if getattr(section, "model", "luo2020") != "luo2020":  # only the paper's k_T (Eqs. 13–23) uses X_te
+    if not thermal_model_rules(section.model).reads_x_te:  # e.g. the paper's k_T (Eqs. 13–23) uses X_te
         return
     if section.x_te_source == "given" and section.x_te is None:
         raise CaseError("thermal.x_te", None, ">= 0 (or x_te_source = 'calibrated')",

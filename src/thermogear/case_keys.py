@@ -8,9 +8,10 @@ at load time, with the model that would read it, as one :class:`~thermogear.erro
 
 Rules (each from what the code reads, not from a case's name):
 
-* ``thermal.model = "thermoelastic"``: the paper's keys (:data:`LUO2020_KEYS`) have no effect unless they make a
-  complete X_te (given with ``x_te``, calibrated with ``calibration_drop_percent``, or from the FE model): only then
-  is the paper's model computed beside the default;
+* keys that another thermal model declares its own (:attr:`~thermogear.thermal_model_rules.ThermalModelRules.own_keys`)
+  have no effect under the case's ``thermal.model``; the paper's keys (:data:`LUO2020_KEYS`), of a model that
+  reads X_te, are excepted when they make a complete X_te (given with ``x_te``, calibrated with
+  ``calibration_drop_percent``, or from the FE model): only then is the paper's model computed beside the default;
 * ``dynamics.mesh = "linear"``: ``dynamics.damping_in_flight`` (teeth in flight through the backlash) has no effect,
   since the linear mesh keeps every pair in contact.
 """
@@ -20,12 +21,12 @@ from __future__ import annotations
 import warnings
 
 from thermogear.errors import IneffectiveKeyWarning
+from thermogear.thermal_model_rules import LUO2020_RULES, THERMAL_MODEL_RULES, thermal_model_rules
 
 __all__ = ["LUO2020_KEYS", "keys_without_effect", "luo2020_complete", "warn_keys_without_effect"]
 
-#: [thermal] keys read only by the paper's thermal stiffness (thermal.model = "luo2020").
-LUO2020_KEYS = ("x_te", "x_te_source", "calibration_drop_percent", "calibration_point", "load_basis",
-                "expansion_model")
+#: [thermal] keys read only by the paper's thermal stiffness (its rules' own keys).
+LUO2020_KEYS = LUO2020_RULES.own_keys
 
 
 def luo2020_complete(thermal) -> bool:
@@ -41,13 +42,19 @@ def keys_without_effect(thermal, dynamics) -> list[tuple[list[str], str]]:
     """``[(keys, reason)]`` of a case's ``[thermal]`` and ``[dynamics]`` sections: the keys the case sets that no
     output reads under its models (module docstring)."""
     found = []
-    paper_keys = [f"thermal.{key}" for key in LUO2020_KEYS if key in thermal.model_fields_set]
-    if thermal.model != "luo2020" and paper_keys and not luo2020_complete(thermal):
-        found.append((paper_keys, f"keys of the paper's thermal stiffness (thermal.model = 'luo2020'), not of "
-                                  f"thermal.model = '{thermal.model}', and they do not define X_te completely (x_te, "
-                                  "or x_te_source = 'calibrated' with calibration_drop_percent, or 'fem'), so nothing "
-                                  "reads them; remove them, or complete them and set thermal.model = 'luo2020' to "
-                                  "run the paper's model"))
+    chosen = thermal_model_rules(thermal.model)
+    for other in THERMAL_MODEL_RULES.values():
+        keys = [f"thermal.{key}" for key in other.own_keys
+                if key in thermal.model_fields_set and key not in chosen.own_keys]
+        if other is chosen or not keys or (other.reads_x_te and luo2020_complete(thermal)):
+            continue
+        found.append((keys, f"keys of thermal.model = '{other.name}', not of thermal.model = '{chosen.name}', and "
+                            "they do not define X_te completely (x_te, or x_te_source = 'calibrated' with "
+                            "calibration_drop_percent, or 'fem'), so nothing reads them; remove them, or complete "
+                            f"them and set thermal.model = '{other.name}' to run that model"
+                      if other.reads_x_te else
+                      f"keys of thermal.model = '{other.name}', not of thermal.model = '{chosen.name}', so nothing "
+                      f"reads them; remove them, or set thermal.model = '{other.name}'"))
     if dynamics.mesh == "linear" and "damping_in_flight" in dynamics.model_fields_set:
         found.append((["dynamics.damping_in_flight"], "the linear mesh keeps every pair in contact, so the teeth "
                                                       "never fly; it acts with dynamics.mesh = 'nonlinear'"))

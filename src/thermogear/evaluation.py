@@ -18,7 +18,8 @@ import numpy as np
 
 from thermogear import forked
 from thermogear.citations import cite, cited_in
-from thermogear.mesh.model_names import MODELS
+from thermogear.mesh.model_names import ELASTIC, MODELS, THERMAL
+from thermogear.thermal_model_rules import LUO2020_RULES, THERMOELASTIC_RULES
 from thermogear.warning_causes import warning_text
 
 __all__ = ["Evaluation", "MODELS", "PAPER_REFERENCE", "STEPS", "evaluate_case", "finish_evaluation", "is_paper_case",
@@ -136,7 +137,7 @@ def evaluate_case(case, method: str = "periodic", models: tuple[str, ...] = MODE
             evaluation.simulations[model] = simulation
             evaluation.responses[model] = simulation.run(method)
             cite("floquet1883" if method == "periodic" else "rk4", "den_hartog1931", "iso_tr13989_1", "astm_d341")
-            if model == "thermal":
+            if simulation.mesh_model.thermal:
                 cite("timoshenko1951")
 
         _run_stage(evaluation, f"{model} model", run_model)
@@ -258,9 +259,10 @@ def thermoelastic_beside_paper(case) -> dict:
     from thermogear.simulation import Simulation
     from thermogear.thermoelastic.mesh import ThermoelasticMesh
 
-    predictive = case.with_changes(**{"thermal.model": "thermoelastic"})
+    paper_model, predictive_model = LUO2020_RULES.name, THERMOELASTIC_RULES.name
+    predictive = case.with_changes(**{"thermal.model": predictive_model})
     width = case.gear_pair.face_width
-    models = {"elastic": (case, "elastic"), "luo2020": (case, "thermal"), "thermoelastic": (predictive, "thermal")}
+    models = {ELASTIC: (case, ELASTIC), paper_model: (case, THERMAL), predictive_model: (predictive, THERMAL)}
     result: dict = {}
     for name, (chosen, model) in models.items():
         simulation = Simulation(chosen, model)
@@ -274,12 +276,12 @@ def thermoelastic_beside_paper(case) -> dict:
                         "dte_peak_to_peak_um": metrics["dte_peak_to_peak"] * 1e6,
                         "static_transmission_error_peak_to_peak_um": float(np.ptp(static)) * 1e6,
                         "backlash_normal_um": None if mesh.backlash is None else mesh.backlash * 1e6}
-    elastic = result["elastic"]["mean_mesh_stiffness_n_per_mm_um"]
-    for name in ("luo2020", "thermoelastic"):
+    elastic = result[ELASTIC]["mean_mesh_stiffness_n_per_mm_um"]
+    for name in (paper_model, predictive_model):
         result[name]["stiffness_change_percent"] = 100.0 * (result[name]["mean_mesh_stiffness_n_per_mm_um"] / elastic - 1)
     component = ThermoelasticMesh.from_case(predictive)
-    result["elastic"]["backlash_normal_um"] = component.backlash_normal_cold * 1e6  # the cold mesh's
-    result["thermoelastic"].update(
+    result[ELASTIC]["backlash_normal_um"] = component.backlash_normal_cold * 1e6  # the cold mesh's
+    result[predictive_model].update(
         backlash_cold_um=component.backlash_normal_cold * 1e6, backlash_hot_um=component.backlash_normal * 1e6,
         jamming_bulk_temperature_c=component.jamming_bulk_temperature_c, flags=list(component.plausibility),
         youngs_modulus_gpa=[value * 1e-9 for value in component.youngs_modulus])

@@ -22,6 +22,7 @@ from thermogear.dynamics.solvers import (BacklashShootingSolver, BacklashTransie
 from thermogear.errors import CaseError
 from thermogear.mesh.model import MeshModel
 from thermogear.mesh.model_names import MODELS, Model
+from thermogear.mesh.pair_models import check_model
 from thermogear.mesh.state import MeshState
 
 Method = Literal["periodic", "transient"]
@@ -37,8 +38,9 @@ class Simulation:
     case:
         The validated case.
     model:
-        ``"elastic"`` (k_e, damping with oil at the reference temperature) or ``"thermal"`` (k_T, damping with
-        the viscosity at the flank temperature).
+        ``"elastic"`` (k_e, damping with oil at the reference temperature), ``"thermal"`` (the case's ``[thermal]
+        model``, damping with the viscosity at the flank temperature), or the name of another registered pair
+        model (:data:`thermogear.mesh.pair_models.PAIR_MODELS`).
     points_per_period:
         Intervals of the mesh-cycle grid; default from the case's [dynamics] section.
     solver:
@@ -47,13 +49,12 @@ class Simulation:
     """
 
     case: Case
-    model: Model = "thermal"
+    model: Model | str = "thermal"
     points_per_period: int | None = None
     solver: Solver | None = None
 
     def __post_init__(self) -> None:
-        if self.model not in MODELS:
-            raise CaseError("model", self.model, " | ".join(MODELS), "unknown model")
+        check_model(self.model)
 
     # ------------------------------------------------------------------------------------ mesh model
     @cached_property
@@ -128,7 +129,7 @@ class Simulation:
         case = self.case
         flags = load_flags(case.gear_pair, case.material, case.operating_point.torque)  # a load no tooth carries
         flags += damping_ratio_flags(self.state)
-        if self.model == "thermal":
+        if self.mesh_model.thermal:
             flags += thermal_result_flags(self.mesh_model, self.state, response.metrics)
         return replace(response, flags=flags)
 

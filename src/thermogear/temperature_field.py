@@ -196,10 +196,6 @@ LUO2020_LIMITS = TemperatureLimits(
     "(use thermal.model = 'thermoelastic' for a cold start, or lower temperature.reference_c if the gears were "
     "assembled colder)")
 
-#: Limits per value of ``thermal.model``.
-TEMPERATURE_LIMITS = {"thermoelastic": THERMOELASTIC_LIMITS, "luo2020": LUO2020_LIMITS}
-
-
 def fit_flank_polynomial(gamma, flank_c, fit_degree: int) -> np.polynomial.Polynomial:
     """Least-squares polynomial T(Γ) of the given degree (Luo & Li 2020 §2.1.5: "fitted by a high-order
     polynomial"), on a scaled domain for conditioning. Raises CaseError if the fit is rank deficient."""
@@ -389,6 +385,6 @@ def read_flank_table_csv(name: str, directory: Path | None = None) -> tuple[list
 
 
 __all__ = ["DEFAULT_LUBRICANT_DATA_MAXIMUM_C", "FIT_OVERSHOOT_ABSOLUTE_K", "FIT_OVERSHOOT_RELATIVE", "GAMMA_SPAN_TOLERANCE",
-           "LUO2020_LIMITS", "MATERIAL_MAXIMUM_C", "MATERIAL_MINIMUM_C", "TEMPERATURE_LIMITS", "THERMOELASTIC_LIMITS",
+           "LUO2020_LIMITS", "MATERIAL_MAXIMUM_C", "MATERIAL_MINIMUM_C", "THERMOELASTIC_LIMITS",
            "TemperatureField", "TemperatureLimits", "check_flank_table", "check_temperatures",
            "fit_flank_polynomial", "read_flank_table_csv", "temperature_field_from_section"]

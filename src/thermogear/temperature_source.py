@@ -23,11 +23,12 @@ from thermogear import warning_scope
 from thermogear.case import cached_per_case
 from thermogear.composition import TEMPERATURE_PROVIDERS, builtin
 from thermogear.errors import ModelAssumptionWarning, ThermogearError
+from thermogear.thermal_model_rules import thermal_model_rules
 # The field, its checks and the fit need no case machinery: they live in thermogear.temperature_field so that the
 # case loader can run them at load time; re-exported here, where the rest of the thermal model looks for them.
 from thermogear.temperature_field import (DEFAULT_LUBRICANT_DATA_MAXIMUM_C, FIT_OVERSHOOT_ABSOLUTE_K,  # noqa: F401
                                           FIT_OVERSHOOT_RELATIVE, GAMMA_SPAN_TOLERANCE, MATERIAL_MAXIMUM_C,
-                                          MATERIAL_MINIMUM_C, TEMPERATURE_LIMITS, TemperatureLimits,
+                                          MATERIAL_MINIMUM_C, TemperatureLimits,
                                           TemperatureField, check_flank_table, check_temperatures,
                                           fit_flank_polynomial, read_flank_table_csv,
                                           temperature_field_from_section)
@@ -65,7 +66,7 @@ def temperature_field_from_case(case: "Case") -> TemperatureField:
                                   "'uniform' or 'tabulated'")
         field = provider(case)
     check_temperatures(field, gamma_start, gamma_end, _lubricant_data_maximum_c(case),
-                       limits=TEMPERATURE_LIMITS[case.thermal.model])
+                       limits=thermal_model_rules(case.thermal.model).temperature_limits)
     return field
 
 

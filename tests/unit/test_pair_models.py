@@ -95,7 +95,7 @@ def _compared_model_names(path: Path) -> list[str]:
 def test_the_mesh_model_and_its_checks_never_test_a_model_name(tmp_path):
     # the seam's promise: the mesh model and its result checks compare no string with a pair model's name (the
     # per-model answers live in pair_models.py)
-    assert _compared_model_names(MESH / "model.py") == ["thermal"]  # the one "is this the thermal model?"
+    assert _compared_model_names(MESH / "model.py") == []  # "is this the thermal model?" is the pair model's answer
     assert _compared_model_names(MESH / "plausibility.py") == []
     planted = tmp_path / "planted.py"  # the scan can fail: a planted test of a model name is found
     planted.write_text('if mesh.thermal_model == "luo2020":\n    pass\n', encoding="utf-8")
@@ -133,11 +133,33 @@ def test_normal_loads_at_many_speeds_equal_the_one_by_one_loads(luo2019, load):
 
 
 def test_every_thermal_model_the_schema_allows_has_a_pair_model():
-    # the case file's [thermal] model names and the registry must agree (the schema sits below the mesh model and
-    # cannot import the registry; this test keeps the two lists one)
+    # the case file's [thermal] model names (read by the schema from the thermal models' rules, below the mesh
+    # model) and the pair-model registry must agree
     import typing
 
     from thermogear.schema.thermal import ThermalSection
 
     allowed = set(typing.get_args(ThermalSection.model_fields["model"].annotation))
     assert allowed | {"elastic"} == set(PAIR_MODELS)
+
+
+def test_each_thermal_pair_model_declares_the_rules_of_its_name():
+    # the input rules checked at load time (thermal_model_rules) are the pair model's own: one object per model
+    from thermogear.thermal_model_rules import THERMAL_MODEL_RULES
+
+    with_rules = {name: model for name, model in PAIR_MODELS.items() if model.rules is not None}
+    assert set(with_rules) == set(THERMAL_MODEL_RULES)
+    for name, model in with_rules.items():
+        assert model.rules is THERMAL_MODEL_RULES[name] and model.name == name
+        assert model.uses_x_te == model.rules.reads_x_te
+    assert ElasticPair.rules is None
+
+
+def test_a_model_with_rules_runs_only_on_a_case_of_its_thermal_model(luo2019):
+    # the thermo-elastic case was not checked against the paper's rules (X_te, heating only) when it was loaded
+    predictive = luo2019.with_changes(**{"thermal.model": "thermoelastic"})
+    with pytest.raises(CaseError, match="thermal.model"):
+        pair_model_for(predictive, "luo2020")
+    assert isinstance(pair_model_for(luo2019, "luo2020"), Luo2020Pair)
+    with pytest.raises(CaseError, match="unknown model"):
+        MeshModel(luo2019, "no_such_model")

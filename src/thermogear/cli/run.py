@@ -12,6 +12,7 @@ from thermogear.report.terminal import interruptible
 from thermogear.errors import CaseError, ModelLimitError
 from thermogear.gearbox.case_model import (describe_prediction, gearbox_model_from_case, gearbox_operating_point,
                                            predicted_steady_state)
+from thermogear.mesh.model_names import THERMAL
 
 if TYPE_CHECKING:
     from thermogear.dynamics.metric_results import LinearMetrics, NonlinearMetrics
@@ -115,7 +116,7 @@ def run(
                      if name in outcome.evaluation.responses}
         failed = {name: outcome.evaluation.problems[f"{name} model"] for name in models
                   if f"{name} model" in outcome.evaluation.problems}
-        thermoelastic = outcome.evaluation.thermoelastic_summary if "thermal" in models else None
+        thermoelastic = outcome.evaluation.thermoelastic_summary if THERMAL in models else None
     else:
         from thermogear.simulation import Simulation, solver_for
 
@@ -130,7 +131,7 @@ def run(
                     failed[name], limit = f"{type(error).__name__}: {error}", limit or error
         if not responses:
             raise limit
-        thermoelastic = _thermoelastic_summary(case) if "thermal" in models else None
+        thermoelastic = _thermoelastic_summary(case) if THERMAL in models else None
     messages = [text for name, response in responses.items() for text in model_messages(response, name)]
     from thermogear.cli.run_drivetrain import drivetrain_outputs, print_drivetrain  # [drivetrain] (issue 27)
 

@@ -185,8 +185,7 @@ def case_drivetrain(case, models: tuple[str, ...] = ("elastic", "thermal")) -> C
     if section is None:
         raise CaseError("drivetrain", None, "a [drivetrain] section", "this case is the pair on rigid supports")
     points = case.dynamics.points_per_period
-    mesh_models = {name: MeshModel(case, "elastic" if name == "elastic" else "thermal") for name in
-                   ("elastic", "thermal")}
+    mesh_models = {name: MeshModel(case, name) for name in ("elastic", "thermal")}  # the simulation models
     stiffness, damping = _mean_state(mesh_models["elastic"], points)
     cold = drivetrain_from_section(section, case.gear_pair, case.material, stiffness, damping, case.inertias)
     drivetrains = {"elastic": cold}

@@ -13,8 +13,8 @@ by a few per cent), and the thermal time constants (minutes) are far longer than
 The thermo-elastic mesh model (the default) evaluates gears colder than their assembly temperature (contraction,
 E rising) down to the material data's limit; the paper's k_T (``thermal.model = 'luo2020'``) describes heating from
 the stress-free state only. A state with a gear colder than its model evaluates
-(:data:`~thermogear.temperature_field.TEMPERATURE_LIMITS`) gets the network's backlash and losses but no mesh
-evaluation (reported as such).
+(:attr:`~thermogear.thermal_model_rules.ThermalModelRules.temperature_limits`) gets the network's backlash and
+losses but no mesh evaluation (reported as such).
 """
 
 from __future__ import annotations
@@ -27,9 +27,8 @@ from thermogear.errors import CaseError
 from thermogear.gearbox.backlash import ColdStart, cold_start_backlash
 from thermogear.gearbox.case_model import gearbox_model_from_case, gearbox_operating_point, gearbox_section
 from thermogear.gearbox.model import COLDEST_START_C, WarmUpHistory
-from thermogear.mesh.pair_models import PAIR_MODELS, pair_model_name
 from thermogear.schema.temperature import TemperatureSection
-from thermogear.temperature_field import TEMPERATURE_LIMITS
+from thermogear.thermal_model_rules import thermal_model_rules
 
 #: Longest warm-up accepted [s] (a day: the network's slowest time constants are hours at most).
 LONGEST_WARM_UP_S = 86400.0
@@ -128,8 +127,7 @@ def state_case(case, temperatures_c):
     changes: dict[str, Any] = dict(
         temperature=temperature, lubricant=case.lubricant.model_copy(update={"operating_temperature_c": oil}),
         housing=case.housing.model_copy(update=housing_update))
-    thermal_pair_model = PAIR_MODELS[pair_model_name("thermal", case.thermal.model)]
-    if thermal_pair_model.uses_x_te and case.thermal.x_te_source == "calibrated":
+    if thermal_model_rules(case.thermal.model).reads_x_te and case.thermal.x_te_source == "calibrated":
         from thermogear.luo2020.case_stiffness import resolve_x_te  # noqa: PLC0415
 
         changes["thermal"] = case.thermal.model_copy(update={"x_te": resolve_x_te(case)[0], "x_te_source": "given",
@@ -187,7 +185,7 @@ def gearbox_warmup(case, duration_s: float = 1200.0, start_c: float | None = Non
     cold = cold_start_backlash(description.gear_pair, model.allowance, description.gear_expansion,
                                description.housing.expansion, start, description.assembly_c)
     states = []
-    limits = TEMPERATURE_LIMITS[case.thermal.model]
+    limits = thermal_model_rules(case.thermal.model).temperature_limits
     reference = case.temperature.reference_c
     floor = reference if limits.lowest_c is None else limits.lowest_c
     base = case.with_changes(**{"operating.speed_rpm": operating.speed_rpm}) if speed_rpm is not None else case

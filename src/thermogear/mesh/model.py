@@ -24,7 +24,7 @@ from thermogear.damping import (FRICTION_DAMPING_LOAD_EXPONENT, FRICTION_DAMPING
 from thermogear.errors import CaseError
 from thermogear.lubricant import Lubricant, lubricant_from_case
 from thermogear.mesh.model_names import MODELS, Model
-from thermogear.mesh.pair_models import PairModelBase, ThermoelasticPair, pair_model_for
+from thermogear.mesh.pair_models import PairModelBase, check_model, pair_model_for
 from thermogear.mesh.state import MeshState
 from thermogear.mesh_cycle import MeshCycle, MeshGrid, load_share_at, load_shares
 from thermogear.temperature_source import TemperatureField
@@ -54,17 +54,17 @@ class MeshModel:
     model:
         ``"elastic"`` or ``"thermal"``: the case's ``[thermal] model``, the predictive ``"thermoelastic"`` (E(T),
         gears and housing expanded, backlash, flank deviations: :mod:`thermogear.thermoelastic`) or the paper's
-        ``"luo2020"`` (secant k_T with X_te, Eqs. 13–23, to reproduce the paper).
+        ``"luo2020"`` (secant k_T with X_te, Eqs. 13–23, to reproduce the paper); or the name of another registered
+        pair model (:data:`~thermogear.mesh.pair_models.PAIR_MODELS`).
 
     Profile modifications (tip relief) are deviations of both models; the elastic model has no thermal ones.
     """
 
     case: "Case"
-    model: Model = "thermal"
+    model: Model | str = "thermal"
 
     def __post_init__(self) -> None:
-        if self.model not in MODELS:
-            raise CaseError("model", self.model, " | ".join(MODELS), "unknown model")
+        check_model(self.model)
 
     # ------------------------------------------------------------------------------------ what it is
     @cached_property
@@ -74,16 +74,13 @@ class MeshModel:
 
     @property
     def thermal(self) -> bool:
-        return self.model == "thermal"
+        """True for a thermal pair model (temperatures from the case's field), as the pair model declares."""
+        return self.pair_model.thermal
 
     @property
     def thermal_model(self) -> str | None:
         """Name of the thermal mesh model in use (``"thermoelastic"`` or ``"luo2020"``), None for the elastic one."""
         return self.pair_model.name if self.thermal else None
-
-    @property
-    def thermoelastic(self) -> bool:
-        return self.thermal_model == ThermoelasticPair.name
 
     @property
     def thermoelastic_mesh(self) -> ThermoelasticMesh | None:

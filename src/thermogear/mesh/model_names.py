@@ -11,6 +11,9 @@ from __future__ import annotations
 from typing import Literal
 
 Model = Literal["elastic", "thermal"]
-MODELS: tuple[str, ...] = ("elastic", "thermal")
+#: The two simulation models, each name once: callers that pick one of the two runs (a report column, a user's
+#: ``--model`` choice) use these constants, never the string.
+ELASTIC, THERMAL = "elastic", "thermal"
+MODELS: tuple[str, ...] = (ELASTIC, THERMAL)
 
-__all__ = ["MODELS", "Model"]
+__all__ = ["ELASTIC", "MODELS", "Model", "THERMAL"]

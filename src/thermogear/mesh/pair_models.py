@@ -15,8 +15,10 @@ Three models (``PAIR_MODELS``, resolved once by :func:`pair_model_for`):
 * ``"thermoelastic"`` — :class:`ThermoelasticPair`: the predictive model of :mod:`thermogear.thermoelastic` (E(T),
   gears and housing expanded, backlash and flank deviations at temperature).
 
-Adding a model is one subclass of :class:`PairModelBase` overriding what differs, and one line in ``PAIR_MODELS``
-(its name then is a valid ``[thermal] model`` once the schema allows it).
+Adding a model is one subclass of :class:`PairModelBase` overriding what differs, and one line in ``PAIR_MODELS``:
+it then runs by its name, ``Simulation(case, model=name)``. A model that a case file chooses as its ``[thermal]
+model`` also declares its input rules (temperature limits, X_te, own keys): one line in
+:data:`thermogear.thermal_model_rules.THERMAL_MODEL_RULES` (which the schema reads), held as the class's ``rules``.
 """
 
 from __future__ import annotations
@@ -29,10 +31,12 @@ from typing import TYPE_CHECKING, Any, ClassVar, Protocol
 import numpy as np
 
 from thermogear.errors import CaseError
+from thermogear.mesh.model_names import MODELS, THERMAL
 from thermogear.mesh.secant_checks import secant_stiffness_drop_flag, secant_stiffness_in_nonlinear_mesh
 from thermogear.stiffness.table import pair_stiffness_at
 from thermogear.luo2020.case_stiffness import thermal_pair_stiffness_at
 from thermogear.temperature_source import TemperatureField, temperature_field_from_case
+from thermogear.thermal_model_rules import LUO2020_RULES, THERMOELASTIC_RULES, ThermalModelRules
 from thermogear.thermoelastic.mesh import ThermoelasticMesh
 
 if TYPE_CHECKING:
@@ -81,6 +85,9 @@ class PairModelBase:
     #: True where the stiffness rests on the paper's factor X_te (Luo & Li (2020) Eqs. 13–23): only then do X_te,
     #: its calibration and the paper's stiffness curves along the path exist.
     uses_x_te: ClassVar[bool] = False
+    #: The input rules of a ``[thermal] model`` (its temperature limits, whether it reads X_te, its own keys),
+    #: checked when a case is loaded; None for a model no case file chooses by name (the elastic one).
+    rules: ClassVar[ThermalModelRules | None] = None
 
     @classmethod
     def choice_flags(cls, mesh: str) -> list[str]:
@@ -193,8 +200,9 @@ class Luo2020Pair(PairModelBase):
     """The paper's secant k_T with X_te (Luo & Li (2020) Eqs. 13–23); the geometry is not expanded and the
     thermal distortion is not a deviation (the paper's model has none)."""
 
-    name: ClassVar[str] = "luo2020"
-    uses_x_te: ClassVar[bool] = True
+    rules: ClassVar[ThermalModelRules] = LUO2020_RULES
+    name: ClassVar[str] = LUO2020_RULES.name
+    uses_x_te: ClassVar[bool] = LUO2020_RULES.reads_x_te
 
     @classmethod
     def choice_flags(cls, mesh: str) -> list[str]:
@@ -248,7 +256,9 @@ class ThermoelasticPair(PairModelBase):
     backlash and the flank deviations at temperature; its damping uses its own stiffness (its path of contact is
     that of the hot pair, where the cold k_e is not defined)."""
 
-    name: ClassVar[str] = "thermoelastic"
+    rules: ClassVar[ThermalModelRules] = THERMOELASTIC_RULES
+    name: ClassVar[str] = THERMOELASTIC_RULES.name
+    uses_x_te: ClassVar[bool] = THERMOELASTIC_RULES.reads_x_te
 
     @cached_property
     def thermoelastic_mesh(self) -> ThermoelasticMesh:
@@ -302,17 +312,36 @@ PAIR_MODELS: dict[str, type[PairModelBase]] = {
 
 
 def pair_model_name(model: str, thermal_model: str) -> str:
-    """The pair model a simulation model means: ``"elastic"``, or the case's ``[thermal] model`` for ``"thermal"``."""
-    return ElasticPair.name if model == ElasticPair.name else thermal_model
+    """The pair model a simulation model means: the case's ``[thermal] model`` for ``"thermal"``, else ``model``
+    itself (``"elastic"`` or the name of another registered pair model)."""
+    return thermal_model if model == THERMAL else model
+
+
+def check_model(model: str) -> None:
+    """Raise CaseError unless ``model`` is a simulation model (``"elastic"``, ``"thermal"``) or a registered pair
+    model's name."""
+    if model not in MODELS and model not in PAIR_MODELS:
+        allowed = " | ".join(dict.fromkeys((*MODELS, *PAIR_MODELS)))
+        raise CaseError("model", model, allowed, "unknown model")
 
 
 def pair_model_for(case: "Case", model: str) -> PairModelBase:
-    """The one place a model name becomes a pair model (``model``: ``"elastic"`` or ``"thermal"``)."""
+    """The one place a model name becomes a pair model (``model``: ``"elastic"``, ``"thermal"`` for the case's
+    ``[thermal] model``, or a registered pair model's name).
+
+    A model with input rules (one a case file chooses by name) runs only on a case of that ``[thermal] model``:
+    its rules (temperature limits, X_te) were checked when that case was loaded, and would not have been otherwise."""
+    check_model(model)
     name = pair_model_name(model, case.thermal.model)
     if name not in PAIR_MODELS:
         raise CaseError("thermal.model", name, " | ".join(PAIR_MODELS), "no pair model of this name")
-    return PAIR_MODELS[name](case)
+    chosen = PAIR_MODELS[name]
+    if chosen.rules is not None and chosen.rules.name != case.thermal.model:
+        raise CaseError("thermal.model", case.thermal.model, chosen.rules.name,
+                        f"the pair model '{name}' checks its input when the case is loaded: set thermal.model = "
+                        f"'{chosen.rules.name}' in the case and run the \"{THERMAL}\" model")
+    return chosen(case)
 
 
 __all__ = ["ElasticPair", "Luo2020Pair", "PAIR_MODELS", "PairModel", "PairModelBase", "ThermoelasticPair",
-           "pair_model_for", "pair_model_name"]
+           "check_model", "pair_model_for", "pair_model_name"]

@@ -6,6 +6,7 @@ from __future__ import annotations
 import numpy as np
 
 from thermogear.evaluation import MODELS, STEPS, Evaluation, evaluate_case, is_paper_case
+from thermogear.mesh.model_names import THERMAL
 from thermogear.report.paper_table import PAPER_ROWS, Verdict, judge
 from thermogear.report.paper_values import paper_values
 
@@ -40,7 +41,7 @@ def key_results(evaluation: Evaluation) -> list[dict]:
                      "note": note})
 
     pair = evaluation.case.gear_pair
-    thermal_pair = (evaluation.simulations["thermal"].mesh_model.gear_pair if "thermal" in evaluation.simulations
+    thermal_pair = (evaluation.simulations[THERMAL].mesh_model.gear_pair if THERMAL in evaluation.simulations
                     else pair)  # at temperature under the thermo-elastic model
     add("contact ratio ε", "–", pair.contact_ratio, thermal_pair.contact_ratio)
     metrics = {model: response.metrics for model, response in evaluation.responses.items()}

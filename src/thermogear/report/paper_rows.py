@@ -207,9 +207,9 @@ def _damping_and_dynamics() -> list[PaperRow]:
                      "X_te calibrated at C the drops at A and E carry ±2.5 points each, and the assumed bores shift "
                      "the shape of the stiffness by ±5 %: ±6 points.",
                      "Depends on the reconstructed temperature field and the calibration of X_te at C.", figure="9"))
-    for model, region, value in (("elastic", "single", 5.31), ("elastic", "double", 7.21),
-                                 ("thermal", "single", 4.13), ("thermal", "double", 6.82)):
-        gap = "" if (model, region) == ("elastic", "single") else _AMPLITUDE_GAP
+    for model, region, value, gap in (("elastic", "single", 5.31, ""), ("elastic", "double", 7.21, _AMPLITUDE_GAP),
+                                      ("thermal", "single", 4.13, _AMPLITUDE_GAP),
+                                      ("thermal", "double", 6.82, _AMPLITUDE_GAP)):
         add(PaperRow(f"fig9.amplitude_{model}_{region}", "§4.1, Fig. 9", f"amplitude (peak − equilibrium), {model}, "
                      f"{region} region", value, "μm", Relative(0.20), _AMPLITUDE_ARGUMENT, figure="9", gap=gap))
     for region, value in (("single", -22.3), ("double", -5.5)):

@@ -29,7 +29,7 @@ def thermoelastic_section(data: dict | None) -> str:
     rows = "".join(
         f"<tr><td>{html.escape(label)}</td><td>{html.escape(unit)}</td>"
         + "".join(f"<td class='num'>{html.escape(_cell(data[name], key, pattern))}</td>"
-                  for name in ("elastic", "luo2020", "thermoelastic")) + "</tr>"
+                  for name in data) + "</tr>"  # the models in the order the comparison ran them
         for label, unit, key, pattern in _ROWS)
     predictive = data["thermoelastic"]
     jamming = predictive.get("jamming_bulk_temperature_c")

@@ -7,6 +7,7 @@ from typing import Annotated, Literal
 from pydantic import Field
 
 from thermogear.schema.base import Section
+from thermogear.thermal_model_rules import THERMAL_MODEL_RULES
 
 
 class ThermalSection(Section):
@@ -18,8 +19,9 @@ class ThermalSection(Section):
     (``"external"``) or the pair's share (``"pair_share"``).
     """
 
-    model: Literal["thermoelastic", "luo2020"] = Field(
-        "thermoelastic", description="'thermoelastic': E(T), expansion of gears and housing, backlash, flank "
+    # the names of the thermal models' rules, the first the default: a model added there is a valid value here
+    model: Literal[tuple(THERMAL_MODEL_RULES)] = Field(  # type: ignore[valid-type]
+        next(iter(THERMAL_MODEL_RULES)), description="'thermoelastic': E(T), expansion of gears and housing, backlash, flank "
                                      "deviations (no fitted factor; docs/thermal.md); 'luo2020': the paper's k_T "
                                      "with X_te (Luo & Li 2020 Eqs. 13–23), kept to reproduce the paper")
     x_te: Annotated[float, Field(ge=0.0, le=100.0, description="thermal-load correction factor X_te [–]")] | None = None

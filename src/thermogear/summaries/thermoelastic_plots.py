@@ -37,10 +37,10 @@ def plot_thermoelastic(component: ThermoelasticMesh, ax=None, title: str = ""):
         warnings.simplefilter("ignore", ExtrapolationWarning)
         results = {"thermal": component.loaded_transmission_error(),
                    "elastic": component.loaded_transmission_error(cold=True)}
-    for label, style in (("thermal", "-"), ("elastic", "--")):
+    for label, style, color in (("thermal", "-", "k"), ("elastic", "--", "0.5")):
         grid, result = results[label]
         phase = grid.midpoints / grid.nodes[-1]
-        ax[1].plot(phase, result.approach * 1e6, ls=style, color="k" if label == "thermal" else "0.5", label=label)
+        ax[1].plot(phase, result.approach * 1e6, ls=style, color=color, label=label)
         for slot in range(result.load_share.shape[0]):
             share = np.where(grid.in_contact[slot], result.load_share[slot], np.nan)
             ax[2].plot(phase, share, ls=style, lw=0.9, label=f"{label} pair {slot}")

@@ -12,6 +12,7 @@ from dataclasses import dataclass
 from thermogear.errors import CaseError, JammingError
 from thermogear.geometry import GearPair
 from thermogear.temperature_field import MATERIAL_MAXIMUM_C, MATERIAL_MINIMUM_C  # the material data's range [°C]
+from thermogear.thermal_model_rules import thermal_model_rules
 from thermogear.thermoelastic.materials import HOUSING_EXPANSION_PER_K, MODULUS_TEMPERATURE_COEFFICIENTS_PER_K
 from thermogear.thermoelastic.operating import (BacklashAllowance, agma_minimum_backlash, backlash_at,
                                                 jamming_rise, normal_backlash)
@@ -145,7 +146,7 @@ def check_thermoelastic_inputs(pair: GearPair, document) -> None:
     for name in GEAR_NAMES:
         check_tip_relief(pair, name, inputs[name])
     allowance = backlash_allowance(pair, document.gears)
-    if document.thermal.model != "thermoelastic":
+    if not thermal_model_rules(document.thermal.model).expands_geometry:
         return
     bulk = bulk_temperatures_c(document.temperature)
     if bulk is None:

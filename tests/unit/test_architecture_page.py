@@ -1,0 +1,80 @@
+"""docs/architecture.md cannot go stale: its layers are the import-linter contract's, in the same order, and its
+example of adding a model runs as written."""
+
+from __future__ import annotations
+
+import re
+import sys
+import tomllib
+import types
+from pathlib import Path
+
+import numpy as np
+
+from thermogear.mesh.pair_models import PAIR_MODELS
+
+ROOT = Path(__file__).resolve().parents[2]
+PAGE = ROOT / "docs" / "architecture.md"
+
+
+def _contract_layers() -> list[str]:
+    config = tomllib.loads((ROOT / "pyproject.toml").read_text(encoding="utf-8"))
+    contracts = [contract for contract in config["tool"]["importlinter"]["contracts"] if contract["type"] == "layers"]
+    assert len(contracts) == 1
+    return list(contracts[0]["layers"])
+
+
+def _page_layers() -> list[str]:
+    # the numbered list of the "Layers" section: "1. `thermogear.cli` — ..."
+    section = PAGE.read_text(encoding="utf-8").split("## Layers", 1)[1].split("\n## ", 1)[0]
+    return re.findall(r"^\d+\. `(thermogear(?:\.\w+)*)`", section, flags=re.MULTILINE)
+
+
+def _numbers() -> list[int]:
+    section = PAGE.read_text(encoding="utf-8").split("## Layers", 1)[1].split("\n## ", 1)[0]
+    return [int(number) for number in re.findall(r"^(\d+)\. ", section, flags=re.MULTILINE)]
+
+
+def test_the_page_lists_the_contract_layers_in_order():
+    layers = _contract_layers()
+    assert len(layers) >= 10 and layers[0] == "thermogear.cli" and layers[-1] == "thermogear.dynamics"
+    assert _page_layers() == layers
+    assert _numbers() == list(range(1, len(layers) + 1))
+
+
+def _example() -> str:
+    text = PAGE.read_text(encoding="utf-8").split("## Adding a model", 1)[1]
+    blocks = re.findall(r"```python\n(.*?)```", text, flags=re.DOTALL)
+    assert len(blocks) == 1
+    return blocks[0]
+
+
+def test_the_example_of_adding_a_model_runs(capsys, monkeypatch):
+    code = _example()
+    lines = [line for line in code.splitlines() if line.strip() and not line.lstrip().startswith(('"""', "#"))]
+    assert len(lines) <= 16  # "a ten-line example": imports, the class and the two lines that use it
+    saved = dict(PAIR_MODELS)
+    module = types.ModuleType("architecture_example")  # a module of its own, as a script would run in
+    monkeypatch.setitem(sys.modules, module.__name__, module)
+    namespace = module.__dict__
+    try:
+        exec(compile(code, str(PAGE), "exec"), namespace)  # noqa: S102 - the page's own example, run as written
+        assert "softer" in PAIR_MODELS
+        from thermogear.simulation import Simulation
+
+        case = namespace["load_case"]("luo2019")
+        softer, elastic = Simulation(case, "softer").state, Simulation(case, "elastic").state
+    finally:
+        PAIR_MODELS.clear()
+        PAIR_MODELS.update(saved)
+    response = namespace["response"]
+    assert response.label == "softer" and np.all(np.abs(response.multipliers) < 1.0)
+    assert re.fullmatch(r"Kv = \d+\.\d{4}\n", capsys.readouterr().out)
+    # the stiffness is 0.9 k_e everywhere, so the mesh stiffness is 0.9 times the elastic one (rounding only)
+    np.testing.assert_allclose(softer.mesh_stiffness, 0.9 * elastic.mesh_stiffness, rtol=1e-12)
+    assert "softer" not in PAIR_MODELS
+
+
+def test_the_page_cites_no_internal_file():
+    text = PAGE.read_text(encoding="utf-8")
+    assert "/work/" not in text and "design.md" not in text
