@@ -11,8 +11,9 @@ from __future__ import annotations
 
 import time as _time
 import warnings
+from collections.abc import Mapping
 from dataclasses import dataclass, field
-from typing import Any, Callable
+from typing import TYPE_CHECKING, Any, Callable
 
 import numpy as np
 
@@ -20,6 +21,10 @@ from thermogear import forked
 from thermogear.citations import cite, cited_in
 from thermogear.mesh.model_names import MODELS
 from thermogear.warning_causes import warning_text
+
+if TYPE_CHECKING:
+    from thermogear.mesh.model import MeshModel
+    from thermogear.simulation import Simulation
 
 __all__ = ["Evaluation", "MODELS", "PAPER_REFERENCE", "STEPS", "evaluate_case", "finish_evaluation", "is_paper_case",
            "thermoelastic_beside_paper", "uses_paper_thermal_stiffness"]
@@ -30,7 +35,7 @@ STEPS = ("elastic model", "thermal model", "thermal stiffness", "damping", "star
          "thermoelastic prediction", "rig trend", "FE verification")
 
 
-def uses_paper_thermal_stiffness(thermal) -> bool:
+def uses_paper_thermal_stiffness(thermal: MeshModel) -> bool:
     """True when the thermal mesh model ``thermal`` (a :class:`~thermogear.mesh.model.MeshModel`) is the paper's k_T
     (Luo & Li 2020 Eqs. 13–23, ``thermal.model = "luo2020"``): only then do its X_te, its stiffness curves along the
     path (Fig. 4) and its stiffness drop exist."""
@@ -248,7 +253,7 @@ def _rig_trend() -> dict:
             "relative_change": frequencies[last] / frequencies[first] - 1.0}
 
 
-def thermoelastic_beside_paper(simulations: dict) -> dict:
+def thermoelastic_beside_paper(simulations: Mapping[str, Simulation]) -> dict:
     """The paper's own pair under the predictive thermo-elastic model beside the paper's model (``luo2020``) and
     the elastic one, at the same operating point and temperatures: ``simulations`` of ``"elastic"`` and ``"luo2020"``
     (the paper's case, elastic and thermal) and ``"thermoelastic"`` (the same case with ``thermal.model =

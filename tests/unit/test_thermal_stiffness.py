@@ -215,9 +215,11 @@ def test_the_resolved_model_keeps_no_case_alive(luo2019):
     import gc
     import weakref
 
+    from thermogear.luo2020 import case_stiffness
     from thermogear.luo2020.case_stiffness import paper_thermal_model
 
     case = luo2019.with_changes(**{"operating.speed_rpm": 1500.0})
+    key = id(case)
     roll = np.array([case.gear_pair.path_points["C"]])
     first = paper_thermal_model(case)
     value = first.pair_stiffness_at(roll)
@@ -228,6 +230,7 @@ def test_the_resolved_model_keeps_no_case_alive(luo2019):
     del case, first
     gc.collect()
     assert alive() is None
+    assert key not in case_stiffness._MEMOS  # the memo went with its case: the table does not grow over a sweep
 
 
 def test_only_the_papers_pair_model_uses_x_te():
