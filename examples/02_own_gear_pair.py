@@ -82,7 +82,7 @@ def main(out: Path) -> dict:
     case = load_case(case_path)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        responses = compare(case)
+        responses = compare(Simulation(case))  # both models at the case's operating point
         simulations = {model: Simulation(case, model) for model in ("elastic", "thermal")}
         stiffness = {model: simulation.mesh_stiffness for model, simulation in simulations.items()}
     pair = case.gear_pair

@@ -24,7 +24,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 from thermogear import load_case  # noqa: E402
-from thermogear.simulation import compare  # noqa: E402
+from thermogear.simulation import Simulation, compare  # noqa: E402
 from thermogear.thermoelastic.mesh import ThermoelasticMesh  # noqa: E402
 
 CASE_FILE = """\
@@ -97,7 +97,7 @@ def main(out: Path) -> dict:
             cold = mesh.cold_gear_pair
             expected = backlash_by_hand(mesh.backlash_normal_cold, cold.centre_distance,
                                         cold.operating_pressure_angle, gear_strain, coefficient * (60.0 - reference_c))
-            responses = compare(case)
+            responses = compare(Simulation(case))
             results[material] = {"mesh": mesh, "expected_backlash": expected,
                                  "natural_hz": {m: r.metrics["natural_frequency_hz"] for m, r in responses.items()}}
         sweep = {material: [] for material in HOUSINGS}

@@ -22,7 +22,8 @@ import numpy as np  # noqa: E402
 
 from thermogear.case import case_from_document, parameter_set_path  # noqa: E402
 from thermogear.experiment.gearbox_warmup import gearbox_warmup  # noqa: E402
-from thermogear.gearbox.case_model import predicted_steady_state  # noqa: E402
+from thermogear.gearbox.case_model import (gearbox_model_from_case, gearbox_operating_point,  # noqa: E402
+                                           predicted_steady_state)
 from thermogear.simulation import Simulation  # noqa: E402  (also registers the "gearbox" temperature model)
 
 # the [gearbox] section as it would stand in a TOML case file (every value an assumption: docs/gearbox-temperature.md)
@@ -50,7 +51,8 @@ def gearbox_case():
 def main(out: Path) -> dict:
     out.mkdir(parents=True, exist_ok=True)
     case = gearbox_case()
-    state = predicted_steady_state(case)
+    state = predicted_steady_state(gearbox_model_from_case(case),
+                                   gearbox_operating_point(case.operating_point, case.gearbox))
     simulation = Simulation(case, "thermal")
     response = simulation.run(method="periodic")
     warm_up = gearbox_warmup(case, duration_s=1200.0, interval_s=60.0)

@@ -11,8 +11,9 @@ from __future__ import annotations
 
 import time as _time
 import warnings
+from collections.abc import Mapping
 from dataclasses import dataclass, field
-from typing import Any, Callable
+from typing import TYPE_CHECKING, Any, Callable
 
 import numpy as np
 
@@ -21,6 +22,10 @@ from thermogear.citations import cite, cited_in
 from thermogear.mesh.model_names import ELASTIC, MODELS, THERMAL
 from thermogear.thermal_model_rules import LUO2020_RULES, THERMOELASTIC_RULES
 from thermogear.warning_causes import warning_text
+
+if TYPE_CHECKING:
+    from thermogear.mesh.model import MeshModel
+    from thermogear.simulation import Simulation
 
 __all__ = ["Evaluation", "MODELS", "PAPER_REFERENCE", "STEPS", "evaluate_case", "finish_evaluation", "is_paper_case",
            "thermoelastic_beside_paper", "uses_paper_thermal_stiffness"]
@@ -31,12 +36,11 @@ STEPS = ("elastic model", "thermal model", "thermal stiffness", "damping", "star
          "thermoelastic prediction", "rig trend", "FE verification")
 
 
-def uses_paper_thermal_stiffness(case) -> bool:
-    """True when the case's thermal model is the paper's k_T (Luo & Li 2020 Eqs. 13–23, ``thermal.model =
-    "luo2020"``): only then do its X_te, its stiffness curves along the path (Fig. 4) and its stiffness drop exist."""
-    from thermogear.mesh.model import MeshModel
-
-    return MeshModel(case, "thermal").pair_model.uses_x_te
+def uses_paper_thermal_stiffness(thermal: MeshModel) -> bool:
+    """True when the thermal mesh model ``thermal`` (a :class:`~thermogear.mesh.model.MeshModel`) is the paper's k_T
+    (Luo & Li 2020 Eqs. 13–23, ``thermal.model = "luo2020"``): only then do its X_te, its stiffness curves along the
+    path (Fig. 4) and its stiffness drop exist."""
+    return thermal.pair_model.uses_x_te
 
 
 #: The reference key (:mod:`thermogear.citations`) of the paper whose numbers the paper table holds.
@@ -145,23 +149,24 @@ def evaluate_case(case, method: str = "periodic", models: tuple[str, ...] = MODE
     step("thermal stiffness")
 
     def thermal():
+        from thermogear.mesh.model import MeshModel
         from thermogear.temperature_source import temperature_field_from_case
 
         evaluation.temperature_field = temperature_field_from_case(case)
-        if uses_paper_thermal_stiffness(case):  # the paper's k_T curves (Fig. 4) belong to its model only
+        thermal_mesh = MeshModel(case, "thermal")
+        if uses_paper_thermal_stiffness(thermal_mesh):  # the paper's k_T curves (Fig. 4) belong to its model only
             from thermogear.luo2020.case_stiffness import paper_thermal_model
-            from thermogear.mesh.model import MeshModel
             from thermogear.summaries.thermal import thermal_curves, thermal_stiffness_summary
 
             paper = paper_thermal_model(case)
             evaluation.thermal_curves = thermal_curves(paper)
-            evaluation.thermal_summary = thermal_stiffness_summary(paper, MeshModel(case, "elastic"),
-                                                                   MeshModel(case, "thermal"))
+            evaluation.thermal_summary = thermal_stiffness_summary(paper, MeshModel(case, "elastic"), thermal_mesh)
             cite("timoshenko1951")
-        else:
+        else:  # the thermo-elastic model: its mesh model holds the case's component
             from thermogear.summaries.thermoelastic import thermoelastic_summary
 
-            evaluation.thermoelastic_summary = thermoelastic_summary(case)
+            evaluation.thermoelastic_summary = thermoelastic_summary(
+                thermal_mesh.thermoelastic_mesh, thermal_mesh.thermal_model, thermal_mesh.temperature)
 
     _run_stage(evaluation, "thermal stiffness", thermal)
 
@@ -190,8 +195,15 @@ def evaluate_case(case, method: str = "periodic", models: tuple[str, ...] = MODE
 
     if evaluation.paper:
         step("thermoelastic prediction")
-        _run_stage(evaluation, "thermoelastic prediction",
-                   lambda: setattr(evaluation, "thermoelastic", thermoelastic_beside_paper(case)))
+
+        def beside_paper():
+            paper_model, predictive_model = LUO2020_RULES.name, THERMOELASTIC_RULES.name
+            predictive = case.with_changes(**{"thermal.model": predictive_model})
+            simulations = {ELASTIC: Simulation(case, ELASTIC), paper_model: Simulation(case, THERMAL),
+                           predictive_model: Simulation(predictive, THERMAL)}
+            evaluation.thermoelastic = thermoelastic_beside_paper(simulations)
+
+        _run_stage(evaluation, "thermoelastic prediction", beside_paper)
         step("rig trend")
         _run_stage(evaluation, "rig trend", lambda: setattr(evaluation, "rig_trend", _rig_trend()))
         evaluation.pending["FE verification"] = fe_verification
@@ -249,25 +261,21 @@ def _rig_trend() -> dict:
             "relative_change": frequencies[last] / frequencies[first] - 1.0}
 
 
-def thermoelastic_beside_paper(case) -> dict:
+def thermoelastic_beside_paper(simulations: Mapping[str, Simulation]) -> dict:
     """The paper's own pair under the predictive thermo-elastic model beside the paper's model (``luo2020``) and
-    the elastic one, at the same operating point and temperatures: mean mesh stiffness per width [N/(mm·μm)],
-    its change against the elastic model [%], the natural frequency [Hz], Kv and the DTE peak-to-peak [μm] of the
-    steady state, the normal backlash cold and hot [μm], the loaded static transmission error [μm], the jamming
-    temperature [°C] and what the model flags. Nothing is fitted: the thermo-elastic model takes no X_te."""
-    from thermogear.mesh.model import MeshModel
-    from thermogear.simulation import Simulation
-    from thermogear.thermoelastic.mesh import ThermoelasticMesh
-
+    the elastic one, at the same operating point and temperatures: ``simulations`` of the elastic model and of the
+    paper's ``luo2020`` model (the paper's case, elastic and thermal) and of ``thermoelastic`` (the same case with
+    the predictive thermal model, as :func:`evaluate_case` builds them), keyed by those names. Mean mesh stiffness per
+    width [N/(mm·μm)], its change against the elastic model [%], the natural frequency [Hz], Kv and the DTE
+    peak-to-peak [μm] of the steady state, the normal backlash cold and hot [μm], the loaded static transmission
+    error [μm], the jamming temperature [°C] and what the model flags. Nothing is fitted: the thermo-elastic model
+    takes no X_te."""
     paper_model, predictive_model = LUO2020_RULES.name, THERMOELASTIC_RULES.name
-    predictive = case.with_changes(**{"thermal.model": predictive_model})
-    width = case.gear_pair.face_width
-    models = {ELASTIC: (case, ELASTIC), paper_model: (case, THERMAL), predictive_model: (predictive, THERMAL)}
+    width = simulations[ELASTIC].mesh_model.face_width  # the pair as built (the elastic model's)
     result: dict = {}
-    for name, (chosen, model) in models.items():
-        simulation = Simulation(chosen, model)
+    for name, simulation in simulations.items():
         metrics = simulation.run("periodic").metrics
-        mesh = MeshModel(chosen, model)
+        mesh = simulation.mesh_model
         state = simulation.state
         static = state.static_transmission_error
         static = state.problem().static_transmission_error if static is None else static
@@ -279,7 +287,7 @@ def thermoelastic_beside_paper(case) -> dict:
     elastic = result[ELASTIC]["mean_mesh_stiffness_n_per_mm_um"]
     for name in (paper_model, predictive_model):
         result[name]["stiffness_change_percent"] = 100.0 * (result[name]["mean_mesh_stiffness_n_per_mm_um"] / elastic - 1)
-    component = ThermoelasticMesh.from_case(predictive)
+    component = simulations[predictive_model].mesh_model.thermoelastic_mesh  # the predictive case's
     result[ELASTIC]["backlash_normal_um"] = component.backlash_normal_cold * 1e6  # the cold mesh's
     result[predictive_model].update(
         backlash_cold_um=component.backlash_normal_cold * 1e6, backlash_hot_um=component.backlash_normal * 1e6,

@@ -170,6 +170,7 @@ def solver_for(dynamics, method: str | None = None) -> Solver:
     return _SOLVERS[(dynamics.mesh, method)](dynamics)
 
 
-def compare(case: Case, method: Method | None = None, points_per_period: int | None = None) -> dict:
-    """Run the elastic and the thermal model of one case: ``{"elastic": response, "thermal": response}``."""
-    return {model: Simulation(case, model, points_per_period).run(method) for model in MODELS}
+def compare(simulation: Simulation, method: Method | None = None) -> dict:
+    """Run the elastic and the thermal model of a simulation's operating point (its case, points per period and
+    solver; its own model is one of the two): ``{"elastic": response, "thermal": response}``."""
+    return {model: replace(simulation, model=model).run(method) for model in MODELS}

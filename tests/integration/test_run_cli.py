@@ -163,11 +163,15 @@ def test_run_gives_what_the_thermoelastic_model_is_for():
     # the numbers are the summary's (summaries.thermoelastic), not recomputed by the command
     from thermogear.case import load_case
     from thermogear.summaries.thermoelastic import thermoelastic_summary
+    from thermogear.temperature_source import temperature_field_from_case
+    from thermogear.thermoelastic.mesh import ThermoelasticMesh
 
     result = _run(str(USER_PAIR), "--json")
     assert result.returncode == 0, result.stderr
     block = json.loads(result.stdout)["thermoelastic"]
-    expected = json.loads(json.dumps(thermoelastic_summary(load_case(str(USER_PAIR)))))
+    case = load_case(str(USER_PAIR))
+    expected = json.loads(json.dumps(thermoelastic_summary(ThermoelasticMesh.from_case(case), case.thermal.model,
+                                                           temperature_field_from_case(case))))
     for path in (("operating", "centre_distance_mm"), ("operating", "pressure_angle_deg"), ("operating", "contact_ratio"),
                  ("cold", "backlash_normal_um"), ("operating", "backlash_normal_um"), ("jamming_bulk_temperature_c",),
                  ("jamming_margin_k",), ("youngs_modulus_gpa", "pinion"), ("loaded_transmission_error_um", "mean"),

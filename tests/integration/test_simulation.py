@@ -62,7 +62,7 @@ def test_thermal_model_without_coupling_has_the_elastic_stiffness(luo2019):
 
 
 def test_compare_runs_both_models_and_heat_lowers_the_mesh_stiffness(luo2019):
-    responses = compare(luo2019, points_per_period=256)
+    responses = compare(Simulation(luo2019, points_per_period=256))
     assert set(responses) == {"elastic", "thermal"}
     assert responses["thermal"].metrics["natural_frequency_hz"] < responses["elastic"].metrics["natural_frequency_hz"]
     for response in responses.values():

@@ -10,8 +10,10 @@ import warnings
 import pytest
 
 from thermogear.case import case_from_document, load_case
+from thermogear.luo2020.case_stiffness import paper_thermal_model
+from thermogear.mesh.model import MeshModel
 from thermogear.thermoelastic.mesh import ThermoelasticMesh
-from thermogear.summaries.thermoelastic import thermal_block
+from thermogear.summaries.thermoelastic import ThermalModels, thermal_block
 
 from test_thermoelastic_operating import document
 
@@ -19,9 +21,13 @@ GEOMETRY_KEYS = {"centre_distance_mm", "pressure_angle_deg", "contact_ratio", "b
 
 
 def _block(case):
+    # resolved as the stiffness command resolves the case
+    models = ThermalModels(paper=paper_thermal_model(case), elastic=MeshModel(case, "elastic"),
+                           thermal=MeshModel(case, "thermal"), component_of=lambda: ThermoelasticMesh.from_case(case),
+                           name=case.name)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        return thermal_block(case)
+        return thermal_block(models)
 
 
 def test_thermoelastic_block_has_the_documented_keys():

@@ -215,9 +215,9 @@ def test_a_warm_up_state_of_the_papers_case_keeps_its_calibrated_x_te():
     # interference) keeps that X_te instead of failing to calibrate, and replaces the whole temperature section
     from thermogear.case import load_case
     from thermogear.experiment.warmup import state_case
-    from thermogear.luo2020.case_stiffness import resolve_x_te
+    from thermogear.luo2020.case_stiffness import paper_thermal_model
 
     case = load_case("luo2019")
     cold = state_case(case, 20.0)
     assert cold.temperature.model == "uniform" and cold.temperature.flank_c is None
-    assert cold.thermal.x_te_source == "given" and cold.thermal.x_te == resolve_x_te(case)[0]
+    assert cold.thermal.x_te_source == "given" and cold.thermal.x_te == paper_thermal_model(case).resolve_x_te()[0]

@@ -12,14 +12,14 @@ from __future__ import annotations
 
 import pytest
 
-from thermogear.simulation import compare
+from thermogear.simulation import Simulation, compare
 
 pytestmark = pytest.mark.filterwarnings("ignore::thermogear.errors.ExtrapolationWarning")
 
 
 @pytest.fixture(scope="module")
 def responses(luo2019):
-    return {model: response.metrics for model, response in compare(luo2019, method="periodic").items()}
+    return {model: response.metrics for model, response in compare(Simulation(luo2019), method="periodic").items()}
 
 
 def test_frequency_ratio(responses):

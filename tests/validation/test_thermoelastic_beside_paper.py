@@ -16,13 +16,17 @@ import pytest
 from thermogear.case import load_case
 from thermogear.evaluation import thermoelastic_beside_paper
 from thermogear.report.thermoelastic_section import thermoelastic_section
+from thermogear.simulation import Simulation
 
 
 @pytest.fixture(scope="module")
 def comparison():
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        return thermoelastic_beside_paper(load_case("luo2019"))
+        case = load_case("luo2019")
+        predictive = case.with_changes(**{"thermal.model": "thermoelastic"})
+        return thermoelastic_beside_paper({"elastic": Simulation(case, "elastic"), "luo2020": Simulation(case, "thermal"),
+                                           "thermoelastic": Simulation(predictive, "thermal")})
 
 
 def test_predictive_stiffness_change_is_what_e_and_geometry_give(comparison):

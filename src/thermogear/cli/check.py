@@ -45,7 +45,7 @@ def check(case: str = typer.Argument(..., metavar="CASE",
         "load_checks": list(load_flags(pair, loaded.material, loaded.operating_point.torque)),
     }
     payload["notes"] = list(loaded.notes)
-    payload["model_checks"] = model_choice_flags(loaded)
+    payload["model_checks"] = model_choice_flags(loaded.thermal.model, loaded.dynamics.mesh)
     payload["warnings"] = list(dict.fromkeys(shown))  # keys without effect, extrapolated fits, … (once each)
     if as_json:
         print_json(payload)
@@ -88,13 +88,14 @@ def shown_warnings() -> Iterator[list[str]]:
         warnings.showwarning = previous
 
 
-def model_choice_flags(case) -> list[str]:
-    """What ``run`` flags on every result of this choice of models, said by ``check`` before any solving (check =
-    run): the paper's secant k_T used as the contact stiffness of the nonlinear mesh."""
+def model_choice_flags(thermal_model: str, mesh: str) -> list[str]:
+    """What ``run`` flags on every result of this choice of models (``[thermal] model`` and ``[dynamics] mesh``), said
+    by ``check`` before any solving (check = run): the paper's secant k_T used as the contact stiffness of the
+    nonlinear mesh."""
     from thermogear.mesh.pair_models import PAIR_MODELS, pair_model_name  # noqa: PLC0415
 
-    pair_model = PAIR_MODELS.get(pair_model_name("thermal", case.thermal.model))
-    return [] if pair_model is None else pair_model.choice_flags(case.dynamics.mesh)
+    pair_model = PAIR_MODELS.get(pair_model_name("thermal", thermal_model))
+    return [] if pair_model is None else pair_model.choice_flags(mesh)
 
 
 def _check_study_table(case: str, sweep_table) -> None:

@@ -16,6 +16,7 @@ from thermogear.mesh.model_names import THERMAL
 
 if TYPE_CHECKING:
     from thermogear.dynamics.metric_results import LinearMetrics, NonlinearMetrics
+    from thermogear.mesh.model import MeshModel
 
 _MODELS = {"elastic": ("elastic",), "thermal": ("thermal",), "both": ("elastic", "thermal")}
 
@@ -118,6 +119,7 @@ def run(
                   if f"{name} model" in outcome.evaluation.problems}
         thermoelastic = outcome.evaluation.thermoelastic_summary if THERMAL in models else None
     else:
+        from thermogear.mesh.model import MeshModel
         from thermogear.simulation import Simulation, solver_for
 
         solver = solver_for(case.dynamics, method)  # the --method string, resolved once
@@ -131,7 +133,7 @@ def run(
                     failed[name], limit = f"{type(error).__name__}: {error}", limit or error
         if not responses:
             raise limit
-        thermoelastic = _thermoelastic_summary(case) if THERMAL in models else None
+        thermoelastic = _thermoelastic_summary(MeshModel(case, THERMAL)) if THERMAL in models else None
     messages = [text for name, response in responses.items() for text in model_messages(response, name)]
     from thermogear.cli.run_drivetrain import drivetrain_outputs, print_drivetrain  # [drivetrain] (issue 27)
 
@@ -191,16 +193,17 @@ def _load_held_line(operating_point) -> str:
     return f"load held: {held} ({source})"
 
 
-def _thermoelastic_summary(case) -> dict | None:
+def _thermoelastic_summary(thermal: MeshModel) -> dict | None:
     """What the thermo-elastic model is for (operating geometry, backlash, jamming, E(T), loaded STE), where it is
-    the case's thermal model; None under the paper's model (its k_T has none of these)."""
+    the case's thermal model (``thermal``, its thermal MeshModel, holds the component); None under the paper's model
+    (its k_T has none of these)."""
     from thermogear.evaluation import uses_paper_thermal_stiffness
 
-    if uses_paper_thermal_stiffness(case):
+    if uses_paper_thermal_stiffness(thermal):
         return None
     from thermogear.summaries.thermoelastic import thermoelastic_summary
 
-    return thermoelastic_summary(case)
+    return thermoelastic_summary(thermal.thermoelastic_mesh, thermal.thermal_model, thermal.temperature)
 
 
 def _print_table(case_name: str, responses, console, thermoelastic: dict | None = None) -> None:

@@ -110,10 +110,17 @@ def stiffness(
     for message in summary["warnings"]:
         print_warning(message, error_console)
     if thermal_module is not None:
-        summary["thermal"] = thermal_module.thermal_stiffness_summary(loaded)
+        from thermogear.luo2020.case_stiffness import paper_thermal_model  # noqa: PLC0415
+        from thermogear.thermoelastic.mesh import ThermoelasticMesh  # noqa: PLC0415
+
+        thermal_models = thermal_module.ThermalModels(
+            paper=paper_thermal_model(loaded), elastic=MeshModel(loaded, "elastic"),
+            thermal=MeshModel(loaded, "thermal"), component_of=lambda: ThermoelasticMesh.from_case(loaded),
+            name=loaded.name)
+        summary["thermal"] = thermal_module.thermal_stiffness_summary(thermal_models)
     if plot is not None:
         if thermal_module is not None:
-            thermal_module.plot_thermal_stiffness(loaded, plot)
+            thermal_module.plot_thermal_stiffness(thermal_models, plot)
         else:
             import matplotlib.pyplot as plt
 

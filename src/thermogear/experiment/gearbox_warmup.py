@@ -128,9 +128,10 @@ def state_case(case, temperatures_c):
         temperature=temperature, lubricant=case.lubricant.model_copy(update={"operating_temperature_c": oil}),
         housing=case.housing.model_copy(update=housing_update))
     if thermal_model_rules(case.thermal.model).reads_x_te and case.thermal.x_te_source == "calibrated":
-        from thermogear.luo2020.case_stiffness import resolve_x_te  # noqa: PLC0415
+        from thermogear.luo2020.case_stiffness import paper_thermal_model  # noqa: PLC0415
 
-        changes["thermal"] = case.thermal.model_copy(update={"x_te": resolve_x_te(case)[0], "x_te_source": "given",
+        x_te = paper_thermal_model(case).resolve_x_te()[0]
+        changes["thermal"] = case.thermal.model_copy(update={"x_te": x_te, "x_te_source": "given",
                                                              "calibration_drop_percent": None})
     return replace(case, **changes)
 

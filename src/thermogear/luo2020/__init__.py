@@ -6,8 +6,9 @@ It is the ``"luo2020"`` pair model (``[thermal] model = "luo2020"``); thermogear
 
 - :mod:`~thermogear.luo2020.expansion`: flank expansion along the line of action (Eqs. 8–12);
 - :mod:`~thermogear.luo2020.stiffness`: k_T, k_Ti, δ_T, δ_Ti, δ_Tp (Eqs. 13–23);
-- :mod:`~thermogear.luo2020.case_stiffness`: k_T of a case at a given normal load (a case resolved once into a
-  :class:`~thermogear.luo2020.case_stiffness.PaperThermalModel`), and X_te of a case;
+- :mod:`~thermogear.luo2020.case_stiffness`: k_T of a case at a given normal load and X_te of a case, from the
+  :class:`~thermogear.luo2020.case_stiffness.PaperThermalModel` the case resolves into once
+  (:func:`~thermogear.luo2020.case_stiffness.paper_thermal_model`);
 - :mod:`~thermogear.luo2020.calibration`: X_te given, calibrated or from the FE model;
 (The CLI's JSON object and Fig. 4 are in :mod:`thermogear.summaries`.)
 """
@@ -15,11 +16,9 @@ It is the ``"luo2020"`` pair model (``[thermal] model = "luo2020"``); thermogear
 from thermogear.luo2020.calibration import Calibration, register_x_te_provider
 from thermogear.luo2020.expansion import (base_circle_radial_expansion, flank_expansion_along_line_of_action,
                                           pair_flank_expansion)
-from thermogear.luo2020.case_stiffness import (PaperThermalModel, calibrate_x_te, paper_thermal_model, resolve_x_te,
-                                               thermal_pair_stiffness_at, thermal_stiffness)
+from thermogear.luo2020.case_stiffness import PaperThermalModel, paper_thermal_model
 from thermogear.luo2020.stiffness import ThermalPairStiffness, ThermalStiffness, thermal_pair_stiffness
 
 __all__ = ["Calibration", "PaperThermalModel", "ThermalPairStiffness", "ThermalStiffness", "base_circle_radial_expansion",
-           "calibrate_x_te", "flank_expansion_along_line_of_action", "pair_flank_expansion", "paper_thermal_model",
-           "register_x_te_provider", "resolve_x_te", "thermal_pair_stiffness", "thermal_pair_stiffness_at",
-           "thermal_stiffness"]
+           "flank_expansion_along_line_of_action", "pair_flank_expansion", "paper_thermal_model",
+           "register_x_te_provider", "thermal_pair_stiffness"]

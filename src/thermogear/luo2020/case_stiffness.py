@@ -13,6 +13,7 @@ its memo when nothing else holds it.
 
 from __future__ import annotations
 
+import weakref
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
@@ -20,7 +21,6 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from thermogear import warning_scope
-from thermogear.case import cached_per_case
 from thermogear.stiffness.potential_energy import pair_compliance
 from thermogear.stiffness.table import pair_compliance_table, tooth_compliance_at
 from thermogear.luo2020.calibration import Calibration, calibrate, section_x_te, x_te_provider
@@ -153,14 +153,18 @@ class PaperThermalModel:
 
 
 # ------------------------------------------------------------------------------------ the case's resolver
-@cached_per_case
-def _memo_of_case(case: "Case") -> dict:
-    return {}
+#: The memo of each case's model (splines by load, the case's own X_te), keyed by the case's identity and dropped with
+#: the case. Identity, deliberately: what the memo holds depends on the temperature field and the X_te provider,
+#: which are functions of the whole case (a provider such as the FE model reads more than the ``[thermal]`` section),
+#: so no smaller key determines it; and a Case holds lists, so it is not hashable. The entry holds a weak reference
+#: to the case only, so a case is freed with its memo when nothing else holds it.
+_MEMOS: dict[int, tuple[weakref.ref, dict]] = {}
 
 
 def paper_thermal_model(case: "Case") -> PaperThermalModel:
-    """The paper's k_T model of a case (the one place it reads the case); what it computes once per case is kept in
-    the case's memo, which holds no reference to the case (a model is cheap to build, its memo is shared)."""
+    """The paper's k_T model of a case: the resolver, the one place the paper's model reads the case (so it keeps
+    the Case); what the model computes once per case is kept in the case's memo (``_MEMOS``), which holds no reference
+    to the case (a model is cheap to build, its memo is shared)."""
     section = case.thermal
 
     def field_of() -> TemperatureField:
@@ -169,40 +173,15 @@ def paper_thermal_model(case: "Case") -> PaperThermalModel:
     def provided_x_te() -> float:
         return x_te_provider(section.x_te_source)(case)
 
+    key = id(case)
+    entry = _MEMOS.get(key)
+    if entry is None or entry[0]() is not case:  # a new case, or a freed one's identity reused
+        entry = _MEMOS[key] = (weakref.ref(case, lambda _, key=key: _MEMOS.pop(key, None)), {})
     inputs = PaperThermalInputs(gear_pair=case.gear_pair, material=case.material,
                                 expansion_model=section.expansion_model, load_basis=section.load_basis,
                                 normal_load=case.normal_load)
     return PaperThermalModel(inputs=inputs, section=section, field_of=field_of, provided_x_te=provided_x_te,
-                             memo=_memo_of_case(case))
+                             memo=entry[1])
 
 
-# ---------------------------------------------------------------- the public functions of a case (resolvers)
-def thermal_stiffness(case: "Case", roll, x_te: float | None = None, load_basis: str | None = None,
-                      temperature: TemperatureField | None = None, normal_load: float | None = None
-                      ) -> ThermalStiffness:
-    """:meth:`PaperThermalModel.thermal_stiffness` of a case's pair at roll distances T1K [m]."""
-    return paper_thermal_model(case).thermal_stiffness(roll, x_te, load_basis, temperature, normal_load)
-
-
-def thermal_pair_stiffness_at(case: "Case", roll, x_te: float | None = None, normal_load: float | None = None
-                              ) -> np.ndarray:
-    """:meth:`PaperThermalModel.pair_stiffness_at` of a case: k_T [N/m] of one pair at roll distances T1K [m]."""
-    return paper_thermal_model(case).pair_stiffness_at(roll, x_te, normal_load)
-
-
-def calibrate_x_te(case: "Case", drop_percent: float | None = None, point: str | None = None,
-                   load_basis: str | None = None, temperature: TemperatureField | None = None,
-                   normal_load: float | None = None) -> Calibration:
-    """:meth:`PaperThermalModel.calibrate_x_te` of a case."""
-    return paper_thermal_model(case).calibrate_x_te(drop_percent, point, load_basis, temperature, normal_load)
-
-
-def resolve_x_te(case: "Case", load_basis: str | None = None, temperature: TemperatureField | None = None,
-                 normal_load: float | None = None) -> tuple[float, str]:
-    """:meth:`PaperThermalModel.resolve_x_te` of a case: (X_te, source label). Raises CaseError for missing or
-    contradictory keys, ThermogearError when the FE model is absent."""
-    return paper_thermal_model(case).resolve_x_te(load_basis, temperature, normal_load)
-
-
-__all__ = ["PaperThermalModel", "calibrate_x_te", "paper_thermal_model", "resolve_x_te", "thermal_pair_stiffness_at",
-           "thermal_stiffness"]
+__all__ = ["PaperThermalModel", "paper_thermal_model"]

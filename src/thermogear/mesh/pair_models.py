@@ -34,7 +34,7 @@ from thermogear.errors import CaseError
 from thermogear.mesh.model_names import MODELS, THERMAL
 from thermogear.mesh.secant_checks import secant_stiffness_drop_flag, secant_stiffness_in_nonlinear_mesh
 from thermogear.stiffness.table import pair_stiffness_at
-from thermogear.luo2020.case_stiffness import thermal_pair_stiffness_at
+from thermogear.luo2020.case_stiffness import paper_thermal_model
 from thermogear.temperature_source import TemperatureField, temperature_field_from_case
 from thermogear.thermal_model_rules import LUO2020_RULES, THERMOELASTIC_RULES, ThermalModelRules
 from thermogear.thermoelastic.mesh import ThermoelasticMesh
@@ -227,8 +227,8 @@ class Luo2020Pair(PairModelBase):
         return self.thermoelastic_mesh is not None or self.damping_uses_pair_stiffness
 
     def pair_stiffness_at(self, roll, normal_load: float) -> np.ndarray:
-        return np.asarray(thermal_pair_stiffness_at(self.case, np.asarray(roll, dtype=float),
-                                                    normal_load=normal_load), dtype=float)
+        return np.asarray(paper_thermal_model(self.case).pair_stiffness_at(np.asarray(roll, dtype=float),
+                                                                           normal_load=normal_load), dtype=float)
 
     def damping_stiffness_at(self, roll, normal_load: float) -> np.ndarray:
         if self.damping_uses_pair_stiffness:

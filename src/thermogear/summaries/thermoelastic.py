@@ -1,6 +1,6 @@
 """The ``thermal`` object of ``thermogear stiffness CASE --thermal --json`` and its figure.
 
-:func:`thermal_block` answers for either thermal model: the thermo-elastic model's keys (``model``, ``operating``,
+:func:`thermal_block` answers for either thermal model of a case resolved into :class:`ThermalModels`: the thermo-elastic model's keys (``model``, ``operating``,
 ``cold``, ``youngs_modulus_gpa``, ``mesh_stiffness_n_per_mm_um``, ``deviation_um``,
 ``loaded_transmission_error_um``, ``jamming_bulk_temperature_c``, ``jamming_margin_k`` — the jamming
 temperature above the hotter gear's operating bulk temperature —, …) and, where the case configures X_te, the
@@ -13,6 +13,8 @@ from __future__ import annotations
 
 import math
 import warnings
+from collections.abc import Callable
+from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -20,11 +22,11 @@ import numpy as np
 from thermogear.case_keys import LUO2020_KEYS, luo2020_complete
 from thermogear.errors import ExtrapolationWarning
 from thermogear.mesh.model import MeshModel
-from thermogear.temperature_source import temperature_field_from_case
+from thermogear.temperature_source import TemperatureField
 from thermogear.thermoelastic.mesh import ThermoelasticMesh
 
 if TYPE_CHECKING:
-    from thermogear.case import Case
+    from thermogear.luo2020.case_stiffness import PaperThermalModel
 
 #: N/m per metre of face width → N/(mm·μm)
 PER_WIDTH_TO_N_PER_MM_UM = 1e-9
@@ -45,9 +47,24 @@ def _statistics(grid, values, scale: float) -> dict:
             "max": float(values.max() * scale)}
 
 
-def thermoelastic_summary(case: "Case") -> dict:
-    """The thermo-elastic model's JSON object for a case (module docstring)."""
-    component = ThermoelasticMesh.from_case(case)
+@dataclass(frozen=True, eq=False)
+class ThermalModels:
+    """What the stiffness command shows of a case's thermal models, resolved by the command: the paper's k_T model
+    ``paper`` (Luo & Li 2020; cheap to resolve, and it holds the case's ``[thermal]`` section and temperature field,
+    which the thermo-elastic summary reads too), the ``elastic`` and ``thermal`` mesh models, the thermo-elastic
+    component (``component_of()``, built when first asked: the paper's figure does not need it) and the case's name
+    (``name``, the figure's title)."""
+
+    paper: "PaperThermalModel"
+    elastic: MeshModel
+    thermal: MeshModel
+    component_of: Callable[[], ThermoelasticMesh]
+    name: str
+
+
+def thermoelastic_summary(component: ThermoelasticMesh, thermal_model: str, temperature: TemperatureField) -> dict:
+    """The thermo-elastic model's JSON object (module docstring) of the ``component`` of a case whose ``[thermal]
+    model`` is ``thermal_model``, with the case's ``temperature`` field described."""
     hot, cold = component.gear_pair, component.cold_gear_pair
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ExtrapolationWarning)  # the elastic summary reports them
@@ -64,7 +81,7 @@ def thermoelastic_summary(case: "Case") -> dict:
     mean_change = grid.time_average(stiffness) / cold_grid.time_average(cold_stiffness) - 1.0
     pinion, wheel = component.gears
     return {
-        "model": case.thermal.model,
+        "model": thermal_model,
         "operating": _geometry(hot, component.backlash_normal),
         "cold": _geometry(cold, component.backlash_normal_cold),
         "temperatures_c": {"reference": component.reference_c, "housing": component.housing_c,
@@ -101,7 +118,7 @@ def thermoelastic_summary(case: "Case") -> dict:
                         "Eqs. 8–12)",
         },
         "plausibility": flags,
-        "temperature": temperature_field_from_case(case).describe(),
+        "temperature": temperature.describe(),
     }
 
 
@@ -111,42 +128,44 @@ def _luo2020_configured(section) -> bool:
     return bool(set(LUO2020_KEYS) & section.model_fields_set) and luo2020_complete(section)
 
 
-def _paper_summary(case: "Case") -> dict:
-    """The paper's k_T summary of a case (:func:`thermogear.summaries.thermal.thermal_stiffness_summary`)."""
-    from thermogear.luo2020.case_stiffness import paper_thermal_model  # noqa: PLC0415  (the paper's model)
-    from thermogear.summaries.thermal import thermal_stiffness_summary  # noqa: PLC0415
+def _paper_summary(models: ThermalModels) -> dict:
+    """The paper's k_T summary (:func:`thermogear.summaries.thermal.thermal_stiffness_summary`)."""
+    from thermogear.summaries.thermal import thermal_stiffness_summary  # noqa: PLC0415  (the paper's model)
 
-    return thermal_stiffness_summary(paper_thermal_model(case), MeshModel(case, "elastic"),
-                                     MeshModel(case, "thermal"))
+    return thermal_stiffness_summary(models.paper, models.elastic, models.thermal)
 
 
-def thermal_block(case: "Case") -> dict:
+def _thermoelastic_summary(models: ThermalModels) -> dict:
+    """:func:`thermoelastic_summary` of the case's thermo-elastic component."""
+    return thermoelastic_summary(models.component_of(), models.paper.section.model, models.paper.temperature)
+
+
+def thermal_block(models: ThermalModels) -> dict:
     """The ``thermal`` object of the stiffness command for the case's thermal model (module docstring)."""
-    if MeshModel(case, "thermal").pair_model.uses_x_te:
-        block = {"model": "luo2020", **_paper_summary(case)}
-        block["thermoelastic"] = thermoelastic_summary(case)
+    if models.thermal.pair_model.uses_x_te:
+        block = {"model": "luo2020", **_paper_summary(models)}
+        block["thermoelastic"] = _thermoelastic_summary(models)
         return block
-    block = thermoelastic_summary(case)
-    if _luo2020_configured(case.thermal):
-        block["luo2020"] = _paper_summary(case)
+    block = _thermoelastic_summary(models)
+    if _luo2020_configured(models.paper.section):
+        block["luo2020"] = _paper_summary(models)
     return block
 
 
-def write_thermal_plot(case: "Case", path) -> None:
+def write_thermal_plot(models: ThermalModels, path) -> None:
     """Write the thermal figure of the stiffness command to ``path`` (atomically; format from the suffix): the
     paper's Fig. 4 for ``luo2020``, else deviation, loaded STE and load share, elastic and thermal."""
     from thermogear.summaries.thermal_plots import save_figure_atomically  # noqa: PLC0415
 
-    if MeshModel(case, "thermal").pair_model.uses_x_te:
-        from thermogear.luo2020.case_stiffness import paper_thermal_model  # noqa: PLC0415
+    if models.thermal.pair_model.uses_x_te:
         from thermogear.summaries.thermal_plots import plot_thermal_curves  # noqa: PLC0415
         from thermogear.summaries.thermal import thermal_curves  # noqa: PLC0415
 
-        figure = plot_thermal_curves(thermal_curves(paper_thermal_model(case)), case.name)
+        figure = plot_thermal_curves(thermal_curves(models.paper), models.name)
     else:
         from thermogear.summaries.thermoelastic_plots import plot_thermoelastic  # noqa: PLC0415
 
-        figure = plot_thermoelastic(ThermoelasticMesh.from_case(case), title=case.name)
+        figure = plot_thermoelastic(models.component_of(), title=models.name)
     save_figure_atomically(figure, path)
 
 
