@@ -175,9 +175,11 @@ def check_pair(document: dict, method: str = "periodic") -> dict:
             bad = _non_finite({k: v for k, v in summary.items() if k != "warnings"})
             if bad:
                 result["defects"].append("stiffness summary non-finite: " + ", ".join(bad[:3]))
-            if not uses_paper_thermal_stiffness(cases["linear"]):
+            thermal = MeshModel(linear, "thermal")
+            if not uses_paper_thermal_stiffness(thermal):
                 stage = "thermo-elastic summary"  # run's rows: backlash cold/hot, jamming, E(T), loaded STE
-                json.dumps(json_ready(thermoelastic_summary(cases["linear"]), non_finite="null"), allow_nan=False)
+                summary = thermoelastic_summary(thermal.thermoelastic_mesh, thermal.thermal_model, thermal.temperature)
+                json.dumps(json_ready(summary, non_finite="null"), allow_nan=False)
             for mesh, case in cases.items():
                 for model in MODELS:
                     stage = f"{mesh} {model}"
