@@ -39,7 +39,7 @@ def main(out: Path) -> dict:
         built = case_drivetrain(case)
         cold = mode_table(built.modes("elastic"), built.drivetrains["elastic"])
         heat = heat_table(built.heat_shifts(), built.drivetrains["elastic"])
-        sweep = drivetrain_speed_sweep(case, SPEEDS, ("elastic", "thermal"), workers=2)
+        sweep = drivetrain_speed_sweep(built, SPEEDS, ("elastic", "thermal"), workers=2)
     data = sweep.dataset
     first = data["bearing_harmonic_amplitude_n"].sel(harmonic=1).max("bearing")  # largest bearing, 1× mesh
     teeth = case.gear_pair.pinion.teeth

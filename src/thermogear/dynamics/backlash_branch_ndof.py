@@ -7,11 +7,16 @@ over). Where that Newton fails or lands on an unstable orbit the branch has ende
 neighbour's state for ``run_in_periods`` periods of the exact flow (what a slowly swept gearbox does: it falls on the
 attractor that is left) and shot again from there. Up and down sweeps through the resonance then jump at different
 speeds (Kahraman & Singh, J. Sound Vib. 142 (1990) 49–75). Knows nothing of gears: matrices only.
+
+Systems solved on different bases of one full system (e.g. each speed's modal reduction) give ``coordinates``, each
+system's basis B_i (q = B_i η), and the ``metric`` M under which every B_i is orthonormal (B_iᵀ M B_i = I, a mass
+matrix): the neighbour's state then carries over as η_i = B_iᵀ M B_j η_j for positions and velocities, the
+M-orthogonal projection, exact where the two bases span the same subspace.
 """
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -55,10 +60,23 @@ def _peak_to_peak(system: BacklashSystem, state: np.ndarray, substeps: int) -> f
     return float(np.ptp(mesh))
 
 
+def _carry(state: np.ndarray, source: int, target: int, coordinates, metric) -> np.ndarray:
+    """The state (η, η̇) of system ``source`` in the coordinates of system ``target`` (module docstring)."""
+    if coordinates is None:
+        return state
+    transfer = coordinates[target].T @ metric @ coordinates[source]
+    half = coordinates[source].shape[1]
+    return np.concatenate((transfer @ state[:half], transfer @ state[half:]))
+
+
 def follow_backlash_branch(systems: Sequence[BacklashSystem], direction: str = "up",
                            parameter: Sequence[float] | None = None, substeps: int = 8, run_in_periods: int = 200,
-                           tolerance: float = 1e-10, max_iterations: int = 30) -> BacklashBranchNDOF:
-    """Continuation over ``systems`` (ordered by speed) ``direction`` "up" or "down" (module docstring)."""
+                           tolerance: float = 1e-10, max_iterations: int = 30,
+                           coordinates: Sequence[np.ndarray] | None = None, metric: np.ndarray | None = None,
+                           progress: Callable[[int], None] | None = None) -> BacklashBranchNDOF:
+    """Continuation over ``systems`` (ordered by speed) ``direction`` "up" or "down" (module docstring);
+    ``coordinates`` and ``metric`` for systems on different bases (module docstring); ``progress(1)`` is called
+    after each point."""
     if direction not in ("up", "down"):
         raise ProblemError("direction", direction, "up | down", "sweep from the first system to the last or back")
     count = len(systems)
@@ -68,11 +86,20 @@ def follow_backlash_branch(systems: Sequence[BacklashSystem], direction: str = "
     if labels.shape != (count,):
         raise ProblemError("parameter", f"shape {labels.shape}", f"({count},)", "one label per system")
     size = 2 * systems[0].linear.size
+    if any(2 * system.linear.size != size for system in systems):
+        raise ProblemError("systems", "of different sizes", "systems of one size",
+                           "the branch's states are stored side by side")
+    if coordinates is not None and (metric is None or len(coordinates) != count or any(
+            basis.shape != (metric.shape[0], size // 2) for basis in coordinates)):
+        raise ProblemError("coordinates", "not one (n, m) basis per system with an (n, n) metric",
+                           "a basis per system and the metric", "the state carries over through the full system")
     converged, stable, run_in = (np.zeros(count, dtype=bool) for _ in range(3))
     fraction, peak, states = np.full(count, np.nan), np.full(count, np.nan), np.full((count, size), np.nan)
-    state = None
+    state, source = None, None
     for index in (range(count) if direction == "up" else range(count - 1, -1, -1)):
         system = systems[index]
+        if state is not None:  # the neighbour's state, in this system's coordinates
+            state, source = _carry(state, source, index, coordinates, metric), index
         try:
             orbit = backlash_periodic_orbit(system, state, substeps, tolerance, max_iterations)
             if not orbit.stable and state is not None:
@@ -82,11 +109,15 @@ def follow_backlash_branch(systems: Sequence[BacklashSystem], direction: str = "
                 orbit = backlash_periodic_orbit(system, start, substeps, tolerance, max_iterations)
                 run_in[index] = True
         except (ModelLimitError, ProblemError):
+            if progress is not None:
+                progress(1)
             continue
         converged[index], stable[index] = orbit.converged, orbit.stable
         if orbit.converged:
-            state = orbit.initial_state
+            state, source = orbit.initial_state, index
             states[index] = state
             fraction[index] = orbit.free_flight_time / system.linear.period
             peak[index] = _peak_to_peak(system, state, substeps)
+        if progress is not None:
+            progress(1)
     return BacklashBranchNDOF(labels, direction, converged, stable, run_in, fraction, peak, states)

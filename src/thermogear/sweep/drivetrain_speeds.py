@@ -83,10 +83,11 @@ class DrivetrainSweep:
         self.resonances = resonances
 
 
-def drivetrain_speed_sweep(case, speeds: np.ndarray, models: tuple[str, ...], workers: int | None = None,
+def drivetrain_speed_sweep(built, speeds: np.ndarray, models: tuple[str, ...], workers: int | None = None,
                            progress: Callable[[int], None] | None = None,
                            processes: bool = True) -> DrivetrainSweep:
-    """Sweep the pinion speed [rpm] of a drivetrain case (module docstring). ``progress(count)`` is called as
+    """Sweep the pinion speed [rpm] of a built drivetrain case (a :class:`~thermogear.drivetrain.case_model.
+    CaseDrivetrain` holding ``models``; module docstring). ``progress(count)`` is called as
     speeds finish. ``workers`` (default: the cores) processes are started by the "spawn" method, so a script that
     calls this at its top level needs Python's ``if __name__ == "__main__":`` guard; ``processes=False``
     computes in this process instead, with its BLAS threads as they are (measured 7× the CPU time on a busy
@@ -97,16 +98,19 @@ def drivetrain_speed_sweep(case, speeds: np.ndarray, models: tuple[str, ...], wo
 
     import xarray as xr
 
-    from thermogear.drivetrain.case_model import case_drivetrain, mode_table, resonance_speeds
+    from thermogear.drivetrain.case_model import mode_table, resonance_speeds
 
     speeds = np.asarray(speeds, dtype=float)
     if speeds.ndim != 1 or speeds.size == 0 or np.any(speeds <= 0.0) or not np.all(np.isfinite(speeds)):
         raise CaseError("speed_rpm", speeds.tolist(), "positive, finite speeds [rpm]",
                         "a speed sweep of the drivetrain")
-    section = case.drivetrain
+    case, section = built.case, built.section
+    missing = [model for model in models if model not in built.drivetrains]
+    if missing:
+        raise CaseError("models", ", ".join(missing), ", ".join(built.drivetrains),
+                        "the drivetrain was built for these models only")
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        built = case_drivetrain(case, models)
         resonances = {model: [r for r in resonance_speeds(mode_table(built.modes(model), built.drivetrains[model]),
                                                           case.gear_pair.pinion.teeth, section.bearing_harmonics)
                               if speeds.min() <= r["speed_rpm"] <= speeds.max()] for model in models}
