@@ -31,9 +31,11 @@ from thermogear.dynamics.periodic_ndof import PiecewiseLinearSystem, periodic_re
 from thermogear.dynamics.problem import checked_array
 from thermogear.errors import ProblemError
 
-__all__ = ["BacklashSystem", "BacklashOrbitNDOF", "DeadZone", "backlash_flow_ndof", "backlash_periodic_orbit"]
+__all__ = ["BACK_CONTACT", "DRIVING_CONTACT", "FREE_FLIGHT", "BacklashSystem", "BacklashOrbitNDOF", "DeadZone",
+           "backlash_flow_ndof", "backlash_periodic_orbit"]
 
-_DRIVE, _FREE, _BACK = 0, 1, 2
+DRIVING_CONTACT, FREE_FLIGHT, BACK_CONTACT = 0, 1, 2  # the mesh's contact regions (driving flanks, none, back flanks)
+_DRIVE, _FREE, _BACK = DRIVING_CONTACT, FREE_FLIGHT, BACK_CONTACT
 
 
 @dataclass(frozen=True, eq=False)
@@ -133,7 +135,9 @@ class BacklashSystem:
 def backlash_flow_ndof(system: BacklashSystem, state: np.ndarray, substeps: int = 16,
                        record: bool = False) -> tuple[np.ndarray, np.ndarray, dict]:
     """φ_T(state): end state (2n,), monodromy (2n, 2n) and {"switches", "free_flight_time", "back_contact_time",
-    "zone_switches", "time", "states"} (the last two filled when ``record``: the state after every segment)."""
+    "zone_switches", "time", "states", "segments"} (the last three filled when ``record``: the state after every
+    segment and the (piece, region, dead-zone sides) that held on it; a segment may be empty, h = 0, where a switch
+    was found at its start)."""
     from scipy.linalg import expm
 
     linear = system.linear
@@ -142,7 +146,7 @@ def backlash_flow_ndof(system: BacklashSystem, state: np.ndarray, substeps: int 
     z = np.append(np.asarray(state, dtype=float), 1.0)
     total = np.eye(2 * n + 1)
     info = {"switches": 0, "free_flight_time": 0.0, "back_contact_time": 0.0, "zone_switches": 0, "time": [0.0],
-            "states": [z[:-1]]}
+            "states": [z[:-1]], "segments": []}
     for piece in range(linear.nodes.size - 1):
         start, stop = linear.nodes[piece], linear.nodes[piece + 1]
         step = (stop - start) / substeps
@@ -175,10 +179,11 @@ def backlash_flow_ndof(system: BacklashSystem, state: np.ndarray, substeps: int 
                 if following not in matrices:
                     matrices[following] = system.region_matrix(piece, following[0], inverse, following[1])
                 total = _saltation(matrix, matrices[following], system.dead_zones[zone].vector, z) @ total
-            key = following
             if record:
                 info["time"].append(t)
                 info["states"].append(z[:-1])
+                info["segments"].append((piece, key[0], key[1]))
+            key = following
             if not np.all(np.isfinite(z)):
                 raise ProblemError("state", "not finite", "a bounded motion", "the coefficients are out of range")
     return z[:-1], total[:-1, :-1], info

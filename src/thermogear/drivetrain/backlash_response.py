@@ -1,0 +1,245 @@
+"""The drivetrain with the backlash mesh: its periodic orbit sampled in time, the mesh and bearing forces, metrics.
+
+The system is :func:`~thermogear.drivetrain.response.drivetrain_backlash_system` (the mesh coordinate
+g = wᵀq − ē_j with the dead zone of the normal backlash b; a bearing with a radial clearance adds a dead zone in x and
+one in y). Its periodic orbit is found by shooting (:func:`~thermogear.dynamics.backlash_ndof.backlash_periodic_orbit`)
+and sampled exactly (:func:`~thermogear.dynamics.backlash_trajectory.backlash_trajectory`). Forces:
+
+* mesh force F = k_j·φ(g) + c_j·ġ [N] with φ(g) = g in driving contact, 0 in free flight and g + b on the back
+  flanks (Kahraman & Singh, J. Sound Vib. 142 (1990) 49). The mesh damping c_j acts in free flight too, as in the
+  :class:`~thermogear.dynamics.backlash_ndof.BacklashSystem` (its vector field is continuous at a contact switch);
+* bearing force on the housing per direction: K·u + C·u̇ without clearance; with a radial clearance δ, in x and in y
+  each, 0 for |u| <= δ and k(u ∓ δ) + c·u̇ beyond ±δ (a square dead zone, the stated approximation of a circular
+  clearance: see :class:`~thermogear.drivetrain.point_elements.Bearing`).
+
+Metrics (keys of the linear :class:`~thermogear.drivetrain.response.DrivetrainResponse` where they mean the same):
+``kv`` = max pair load / W (W the static normal load, the pair load the elastic share k_s(δ − e_s) of a pair on the
+driving flanks, zero off them; as the linear chain and as the 1-DOF backlash solver's Kv without damping force —
+where no pair stiffness is known, the mesh's elastic force in single contact); ``max_system_load`` the largest
+elastic mesh force k_j·φ(g); ``contact_loss_fraction`` the free-flight time over the period (exact: summed over the
+segments between located switches) and ``back_contact_fraction`` likewise on the back flanks; DTE mean, RMS and
+peak-to-peak of δ over the samples (trapezoid rule; every switch and node sampled on both sides).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from thermogear.drivetrain.assembly import AssembledDrivetrain
+from thermogear.drivetrain.response import drivetrain_backlash_system
+from thermogear.dynamics.backlash_ndof import (BACK_CONTACT, DRIVING_CONTACT, FREE_FLIGHT, BacklashSystem, DeadZone,
+                                               backlash_periodic_orbit)
+from thermogear.dynamics.backlash_trajectory import BacklashTrajectory, backlash_trajectory
+from thermogear.dynamics.metrics import sampled_load
+from thermogear.dynamics.spectra import harmonic_spectrum, time_mean_and_rms
+from thermogear.errors import CaseError, ModelLimitError, ProblemError
+from thermogear.mesh.state import MeshState
+
+__all__ = ["DrivetrainBacklashResponse", "drivetrain_backlash_response", "reduced_backlash_system"]
+
+
+@dataclass(frozen=True, eq=False)
+class DrivetrainBacklashResponse:
+    """Periodic response with backlash over one mesh period (module docstring): ``time`` (S,) [s] (a switch
+    instant twice, left side first); ``transmission_error`` δ = wᵀq [m] and its ``transmission_error_rate``
+    [m/s]; ``mesh_force`` [N]; ``bearing_forces`` name → (S, 3) on the housing in x, y, z [N]; ``displacement``
+    (S, DOFs) [SI]; ``region`` (S,) the mesh's contact region; Floquet ``multipliers``; ``converged``; ``failure``
+    why not ('' when converged); ``switches`` of the mesh per period; ``contact_loss_fraction`` and
+    ``back_contact_fraction`` [-]; ``metrics``; ``period`` [s]."""
+
+    time: np.ndarray
+    transmission_error: np.ndarray
+    transmission_error_rate: np.ndarray
+    mesh_force: np.ndarray
+    bearing_forces: dict[str, np.ndarray]
+    displacement: np.ndarray
+    region: np.ndarray
+    multipliers: np.ndarray
+    converged: bool
+    failure: str
+    switches: int
+    contact_loss_fraction: float
+    back_contact_fraction: float
+    metrics: dict[str, Any]
+    period: float
+
+    @property
+    def stable(self) -> bool:
+        """Converged with every Floquet multiplier inside the unit circle."""
+        return bool(self.converged and self.multipliers.size and np.abs(self.multipliers).max() < 1.0)
+
+    @property
+    def kv(self) -> float | None:
+        """Dynamic factor Kv [-] (``metrics["kv"]``), None where the orbit was not found."""
+        return self.metrics.get("kv") if self.converged else None
+
+    def bearing_spectrum(self, name: str, points: int = 1024) -> tuple[np.ndarray, np.ndarray]:
+        """(frequencies [Hz] of the mesh harmonics 0, f_m, 2f_m, …; amplitudes (3, harmonics) [N] in x, y, z) of
+        one bearing's force on its housing; harmonic 0 is the mean force."""
+        if name not in self.bearing_forces:
+            raise CaseError("bearing", name, f"one of {sorted(self.bearing_forces)}", "bearing forces by name")
+        amplitudes = []
+        for axis in range(3):
+            frequencies, values = harmonic_spectrum(self.time, self.bearing_forces[name][:, axis], self.period,
+                                                    points)
+            amplitudes.append(values)
+        return frequencies, np.array(amplitudes)
+
+
+def reduced_backlash_system(system: BacklashSystem, cutoff_hz: float):
+    """(the system on a modal basis, the basis): the modes of the mean system up to ``cutoff_hz`` [Hz] and the
+    static corrections of the mesh vector, the torque loads and every dead zone's vector
+    (:func:`thermogear.dynamics.modal_reduction.modal_basis`), so that each contact state's quasi-static response
+    stays in the basis."""
+    from thermogear.dynamics.modal_reduction import modal_basis
+
+    if not math.isfinite(cutoff_hz) or cutoff_hz <= 0.0:
+        raise CaseError("cutoff_hz", cutoff_hz, "> 0 Hz, finite", "the highest mode frequency kept")
+    basis = modal_basis(system.linear, 2.0 * math.pi * cutoff_hz, [zone.vector for zone in system.dead_zones])
+    b = basis.basis
+    zones = tuple(DeadZone(b.T @ zone.vector, zone.stiffness, zone.damping, zone.clearance)
+                  for zone in system.dead_zones)
+    return BacklashSystem(basis.reduce(system.linear), b.T @ system.mesh_vector, system.deviation, system.backlash,
+                          zones), basis
+
+
+def drivetrain_backlash_response(assembled: AssembledDrivetrain, state: MeshState,
+                                 initial_state: np.ndarray | None = None, substeps: int = 16,
+                                 samples_per_piece: int = 8, cutoff_hz: float | None = None
+                                 ) -> DrivetrainBacklashResponse:
+    """The periodic orbit of the drivetrain with the backlash mesh (module docstring), shot from
+    ``initial_state`` (in the solver's coordinates, e.g. a neighbouring speed's ``metrics["initial_state"]``) or
+    from the linear periodic state; ``substeps`` per piece to find the switches; ``samples_per_piece`` samples per
+    piece; ``cutoff_hz`` [Hz] solves on a modal basis (:func:`reduced_backlash_system`), None on every DOF."""
+    system, reduction = drivetrain_backlash_system(assembled, state)
+    basis = None
+    if cutoff_hz is not None:
+        system, basis = reduced_backlash_system(system, cutoff_hz)
+    failure = ""
+    try:
+        orbit = backlash_periodic_orbit(system, initial_state, substeps)
+        if not orbit.converged:
+            failure = getattr(orbit, "failure", "") or f"shooting did not converge (residual {orbit.residual:.3g})"
+        trajectory = backlash_trajectory(system, orbit.initial_state, 1, samples_per_piece, substeps)
+    except (ProblemError, ModelLimitError, np.linalg.LinAlgError) as error:
+        return _failed(state, f"no orbit: {error}")
+    return _response(assembled, state, system, reduction, basis, trajectory, orbit.initial_state, orbit.multipliers,
+                     orbit.converged, failure, orbit.switches)
+
+
+def _expanded(reduction, basis, values: np.ndarray) -> np.ndarray:
+    """(S, m) solver coordinates → (S, DOFs)."""
+    values = values.T
+    if basis is not None:
+        values = basis.expand(values)
+    return reduction.expand(values).T
+
+
+def _failed(state: MeshState, failure: str) -> DrivetrainBacklashResponse:
+    """A response that carries no motion, only why."""
+    empty = np.zeros(0)
+    metrics = {"static_load": state.normal_load, "kv": None, "valid": False, "converged": False, "stable": False}
+    return DrivetrainBacklashResponse(empty, empty, empty, empty, {}, np.zeros((0, 0)), np.zeros(0, dtype=int),
+                                      empty, False, failure, 0, math.nan, math.nan, metrics,
+                                      state.problem().period)
+
+
+def bearing_forces(assembled: AssembledDrivetrain, displacement: np.ndarray, velocity: np.ndarray
+                   ) -> dict[str, np.ndarray]:
+    """Force of each bearing on its housing (S, 3) [N] at the samples: K·u + C·u̇, and per direction x, y of a
+    bearing with a radial clearance δ, zero for |u| <= δ and k(u ∓ δ) + c·u̇ beyond."""
+    forces = {}
+    for bearing in assembled.drivetrain.bearings:
+        dofs = [assembled.dof(bearing.location, name) for name in ("x", "y", "z")]
+        stiffness, damping = bearing.stiffness_matrix()[:3, :3], bearing.damping_matrix()[:3, :3]
+        u, rate = displacement[:, dofs], velocity[:, dofs]
+        if bearing.radial_clearance > 0.0:  # no x–y coupling with a clearance (refused at construction)
+            gap = bearing.radial_clearance
+            beyond = np.abs(u) > gap
+            u = np.where(beyond, u - np.sign(u) * gap, 0.0)
+            rate = np.where(beyond, rate, 0.0)
+            u[:, 2], rate[:, 2] = displacement[:, dofs[2]], velocity[:, dofs[2]]
+        forces[bearing.name] = u @ stiffness.T + rate @ damping.T
+    return forces
+
+
+def _response(assembled: AssembledDrivetrain, state: MeshState, system: BacklashSystem, reduction, basis,
+              trajectory: BacklashTrajectory, initial_state: np.ndarray, multipliers: np.ndarray, converged: bool,
+              failure: str, switches: int) -> DrivetrainBacklashResponse:
+    """The sampled orbit expanded to every DOF, with δ, the forces and the metrics."""
+    problem = state.problem()
+    displacement = _expanded(reduction, basis, trajectory.displacement)
+    velocity = _expanded(reduction, basis, trajectory.velocity)
+    w = assembled.mesh_vectors[0]
+    delta, rate = displacement @ w, velocity @ w
+    piece, region = trajectory.piece, trajectory.region
+    gap = delta - system.deviation[piece]
+    elastic = np.where(region == DRIVING_CONTACT, gap, np.where(region == BACK_CONTACT, gap + system.backlash, 0.0))
+    elastic = problem.stiffness[piece] * elastic
+    force = elastic + problem.damping[piece] * rate
+    forces = bearing_forces(assembled, displacement, velocity)
+    period = problem.period
+    metrics = _metrics(problem, trajectory, delta, rate, elastic, multipliers, converged)
+    metrics["initial_state"] = [float(value) for value in initial_state]
+    return DrivetrainBacklashResponse(trajectory.time, delta, rate, force, forces, displacement, region,
+                                      multipliers, bool(converged), failure, int(switches),
+                                      trajectory.free_flight_time / period, trajectory.back_contact_time / period,
+                                      metrics, period)
+
+
+def _metrics(problem, trajectory: BacklashTrajectory, delta: np.ndarray, rate: np.ndarray, elastic: np.ndarray,
+             multipliers: np.ndarray, converged: bool) -> dict[str, Any]:
+    """The module docstring's metrics of one sampled orbit."""
+    w0, period, piece = problem.static_load, problem.period, trajectory.piece
+    driving = trajectory.region == DRIVING_CONTACT
+    pair = problem.pair_arrays()
+    if pair is not None:
+        loads = sampled_load(pair[0], pair[1], problem.pair_offset, piece, delta, rate, False)
+        max_pair, basis = float(np.max(np.where(driving[None, :], loads, 0.0))), "pair_loads"
+    elif np.any(problem.contact_count == 1):
+        single = problem.contact_count[piece] == 1
+        max_pair, basis = float(np.max(np.where(single & driving, elastic, 0.0))), "system_load_in_single_contact"
+    else:
+        max_pair, basis = None, "unavailable: no pair stiffness and no single-contact interval"
+    mean, rms = time_mean_and_rms(trajectory.time, delta)
+    moduli = np.sort(np.abs(np.asarray(multipliers)))[::-1]
+    stable = bool(converged and moduli.size and moduli[0] < 1.0)
+    free = trajectory.region == FREE_FLIGHT
+    starts, durations = _runs(trajectory.time, free)
+    max_system = float(np.max(elastic))
+    metrics: dict[str, Any] = {
+        "static_load": w0, "static_load_n_per_mm": w0 / problem.face_width / 1e3,
+        "kv": None if max_pair is None else max_pair / w0, "kv_basis": basis, "max_pair_load": max_pair,
+        "max_pair_load_n_per_mm": None if max_pair is None else max_pair / problem.face_width / 1e3,
+        "max_system_load": max_system, "max_system_load_n_per_mm": max_system / problem.face_width / 1e3,
+        "max_system_load_ratio": max_system / w0,
+        "dte_mean": mean, "dte_rms": rms, "dte_peak_to_peak": float(np.ptp(delta)),
+        "max_velocity": float(np.max(np.abs(rate))),
+        "natural_frequency_hz": problem.natural_frequency, "mesh_frequency_hz": problem.mesh_frequency,
+        "frequency_ratio": problem.frequency_ratio,
+        "floquet_multipliers_abs": [float(m) for m in moduli], "converged": bool(converged), "stable": stable,
+        "contact_loss": {"detected": bool(trajectory.free_flight_time > 0.0), "start_times": starts,
+                         "durations": durations, "total_duration": float(trajectory.free_flight_time / trajectory.periods),
+                         "min_force": float(np.min(elastic)), "min_force_ratio": float(np.min(elastic) / w0)},
+        "contact_loss_fraction": float(trajectory.free_flight_time / (period * trajectory.periods)),
+        "back_side_contact": bool(trajectory.back_contact_time > 0.0),
+        "back_contact_fraction": float(trajectory.back_contact_time / (period * trajectory.periods)),
+        "switches_per_period": float(trajectory.switches / trajectory.periods),
+    }
+    finite = all(math.isfinite(value) for value in (mean, rms, max_system) + (() if max_pair is None else (max_pair,)))
+    metrics["valid"] = bool(converged and stable and finite)
+    return metrics
+
+
+def _runs(time: np.ndarray, mask: np.ndarray) -> tuple[list[float], list[float]]:
+    """Start times and durations [s] of the runs of ``mask`` (a run ends at the first sample outside it, which a
+    switch's right-side sample places at the switch)."""
+    edges = np.diff(np.concatenate([[0], mask.astype(np.int8), [0]]))
+    first, last = np.flatnonzero(edges == 1), np.flatnonzero(edges == -1)
+    starts = [float(time[a]) for a in first]
+    durations = [float(time[min(b, time.size - 1)] - time[a]) for a, b in zip(first, last, strict=True)]
+    return starts, durations
