@@ -8,10 +8,10 @@ neighbour's state for ``run_in_periods`` periods of the exact flow (what a slowl
 attractor that is left) and shot again from there. Up and down sweeps through the resonance then jump at different
 speeds (Kahraman & Singh, J. Sound Vib. 142 (1990) 49–75). Knows nothing of gears: matrices only.
 
-Systems solved on different bases of one full system (e.g. each speed's modal reduction) give ``coordinates``, each
-system's basis B_i (q = B_i η), and the ``metric`` M under which every B_i is orthonormal (B_iᵀ M B_i = I, a mass
-matrix): the neighbour's state then carries over as η_i = B_iᵀ M B_j η_j for positions and velocities, the
-M-orthogonal projection, exact where the two bases span the same subspace.
+Systems solved on different bases of one full system (e.g. each speed's reduction) give ``coordinates``, each
+system's basis C_i (q = C_i η, q the full coordinates), and the full system's mass matrix as ``metric`` M: the
+neighbour's state then carries over by the M-orthogonal projection η_i = (C_iᵀ M C_i)⁻¹ C_iᵀ M C_j η_j of its
+positions and of its velocities, exact where the two bases span the same subspace.
 """
 
 from __future__ import annotations
@@ -64,7 +64,8 @@ def _carry(state: np.ndarray, source: int, target: int, coordinates, metric) -> 
     """The state (η, η̇) of system ``source`` in the coordinates of system ``target`` (module docstring)."""
     if coordinates is None:
         return state
-    transfer = coordinates[target].T @ metric @ coordinates[source]
+    weighted = coordinates[target].T @ metric
+    transfer = np.linalg.solve(weighted @ coordinates[target], weighted @ coordinates[source])
     half = coordinates[source].shape[1]
     return np.concatenate((transfer @ state[:half], transfer @ state[half:]))
 
@@ -73,10 +74,12 @@ def follow_backlash_branch(systems: Sequence[BacklashSystem], direction: str = "
                            parameter: Sequence[float] | None = None, substeps: int = 8, run_in_periods: int = 200,
                            tolerance: float = 1e-10, max_iterations: int = 30,
                            coordinates: Sequence[np.ndarray] | None = None, metric: np.ndarray | None = None,
-                           progress: Callable[[int], None] | None = None) -> BacklashBranchNDOF:
+                           progress: Callable[[int], None] | None = None,
+                           measure_swing: bool = True) -> BacklashBranchNDOF:
     """Continuation over ``systems`` (ordered by speed) ``direction`` "up" or "down" (module docstring);
     ``coordinates`` and ``metric`` for systems on different bases (module docstring); ``progress(1)`` is called
-    after each point."""
+    after each point. ``measure_swing=False`` leaves ``peak_to_peak`` NaN (and :meth:`BacklashBranchNDOF.jumps`
+    empty) and saves one recorded flow per point, for a caller that samples each orbit itself."""
     if direction not in ("up", "down"):
         raise ProblemError("direction", direction, "up | down", "sweep from the first system to the last or back")
     count = len(systems)
@@ -117,7 +120,8 @@ def follow_backlash_branch(systems: Sequence[BacklashSystem], direction: str = "
             state, source = orbit.initial_state, index
             states[index] = state
             fraction[index] = orbit.free_flight_time / system.linear.period
-            peak[index] = _peak_to_peak(system, state, substeps)
+            if measure_swing:
+                peak[index] = _peak_to_peak(system, state, substeps)
         if progress is not None:
             progress(1)
     return BacklashBranchNDOF(labels, direction, converged, stable, run_in, fraction, peak, states)

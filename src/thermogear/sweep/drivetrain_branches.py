@@ -32,9 +32,11 @@ DIRECTIONS = ("up", "down")
 #: (fewer let a switch go unseen on stiff supports, the solver's tests), the same for the branch and the response,
 #: so the response re-solves exactly the system whose orbit the branch found.
 SUBSTEPS = 16
-#: Samples per mesh-grid interval of the response (bearing-force RMS and harmonics, DTE); the linear drivetrain
-#: sweep's 4 would do for the harmonics, but the orbit with contact loss changes slope inside an interval.
-SAMPLES_PER_PIECE = 8
+#: Samples per mesh-grid interval of the response (bearing-force RMS and harmonics, DTE), as the linear drivetrain
+#: sweep: with ``sweep_points_per_period`` intervals (≥ 16, 128 by default) that is ≥ 64 samples per mesh period
+#: besides both sides of every contact switch, which the trajectory samples exactly; the sampling costs about
+#: half of a point's time.
+SAMPLES_PER_PIECE = 4
 _FAILURES = (ModelLimitError, CaseError, ProblemError, np.linalg.LinAlgError)
 
 
@@ -87,7 +89,8 @@ def _branch_points(built, model: str, states: dict[int, Any], direction: str,
     assembled = built.assembled(model)
     try:
         branch = drivetrain_backlash_branch(assembled, [states[i] for i in order], direction, substeps=SUBSTEPS,
-                                            cutoff_hz=section.response_cutoff_hz, progress=progress)
+                                            cutoff_hz=section.response_cutoff_hz, progress=progress,
+                                            measure_swing=False)
     except _FAILURES as error:  # e.g. the backlash unknown, or a reduction that differs between speeds
         if progress is not None:
             progress(len(order))
