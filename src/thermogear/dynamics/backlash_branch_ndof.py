@@ -32,7 +32,8 @@ class BacklashBranchNDOF:
     """One entry per system in the order given: ``parameter`` labels (e.g. speed [rpm]); ``direction``;
     ``converged`` and ``stable``; ``run_in`` (the neighbour's orbit was lost and the point was run in);
     ``free_flight_fraction`` of the period out of contact [-]; ``peak_to_peak`` of the mesh coordinate wᵀq over the
-    orbit [m]; ``initial_state`` (m, 2n)."""
+    orbit [m]; ``initial_state`` (m, 2n) with n the largest system's size: system i's state (η, η̇) is the first
+    2·n_i entries of its row (systems on bases of different sizes, module docstring), NaN where not converged."""
 
     parameter: np.ndarray
     direction: str
@@ -88,14 +89,14 @@ def follow_backlash_branch(systems: Sequence[BacklashSystem], direction: str = "
     labels = np.arange(count, dtype=float) if parameter is None else np.asarray(parameter, dtype=float)
     if labels.shape != (count,):
         raise ProblemError("parameter", f"shape {labels.shape}", f"({count},)", "one label per system")
-    size = 2 * systems[0].linear.size
-    if any(2 * system.linear.size != size for system in systems):
-        raise ProblemError("systems", "of different sizes", "systems of one size",
-                           "the branch's states are stored side by side")
-    if coordinates is not None and (metric is None or len(coordinates) != count or any(
-            basis.shape != (metric.shape[0], size // 2) for basis in coordinates)):
-        raise ProblemError("coordinates", "not one (n, m) basis per system with an (n, n) metric",
-                           "a basis per system and the metric", "the state carries over through the full system")
+    sizes = [2 * system.linear.size for system in systems]
+    size = max(sizes)
+    if (coordinates is None and min(sizes) != size) or (coordinates is not None and (
+            metric is None or len(coordinates) != count or any(
+                basis.shape != (metric.shape[0], n // 2) for basis, n in zip(coordinates, sizes)))):
+        raise ProblemError("coordinates", "absent for systems of different sizes, or not one (N, n_i) basis per "
+                           "system with an (N, N) metric", "a basis per system and the metric",
+                           "the state carries over through the full system")
     converged, stable, run_in = (np.zeros(count, dtype=bool) for _ in range(3))
     fraction, peak, states = np.full(count, np.nan), np.full(count, np.nan), np.full((count, size), np.nan)
     state, source = None, None
@@ -111,14 +112,16 @@ def follow_backlash_branch(systems: Sequence[BacklashSystem], direction: str = "
                     start, _, _ = backlash_flow_ndof(system, start, substeps)
                 orbit = backlash_periodic_orbit(system, start, substeps, tolerance, max_iterations)
                 run_in[index] = True
-        except (ModelLimitError, ProblemError):
+        except (ModelLimitError, ProblemError, np.linalg.LinAlgError, ValueError):
+            # no orbit at this point (ValueError: SciPy's "Array must not contain infs or NaNs" of a flow that
+            # overflowed); the branch goes on from the last orbit found
             if progress is not None:
                 progress(1)
             continue
         converged[index], stable[index] = orbit.converged, orbit.stable
         if orbit.converged:
             state, source = orbit.initial_state, index
-            states[index] = state
+            states[index, :state.size] = state
             fraction[index] = orbit.free_flight_time / system.linear.period
             if measure_swing:
                 peak[index] = _peak_to_peak(system, state, substeps)

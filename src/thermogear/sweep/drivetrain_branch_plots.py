@@ -43,8 +43,8 @@ def plot_drivetrain_branches(sweep):
     bottom.set_xlabel("pinion speed [rpm]")
     top.legend(fontsize=8)
     top.set_title(f"{data.attrs['case']}: drivetrain with backlash, orbit followed up and down in speed "
-                  f"({data.attrs['load_held']}); jumps: dotted up, dash-dotted down; shaded: branches differ",
-                  fontsize=9)
+                  f"({data.attrs['load_held']})\njumps: dotted up sweep, dash-dotted down sweep; shaded: the "
+                  "branches differ", fontsize=9)
     if not np.any(data["valid"].values):
         top.text(0.5, 0.5, "no valid point", transform=top.transAxes, ha="center")
     return figure

@@ -37,7 +37,9 @@ SUBSTEPS = 16
 #: besides both sides of every contact switch, which the trajectory samples exactly; the sampling costs about
 #: half of a point's time.
 SAMPLES_PER_PIECE = 4
-_FAILURES = (ModelLimitError, CaseError, ProblemError, np.linalg.LinAlgError)
+#: What a speed's numerics may raise: the solver's and the case's refusals, a singular or overflowing matrix
+#: (LinAlgError; SciPy's ValueError "Array must not contain infs or NaNs", e.g. the modal basis at 1e-12 rpm).
+_FAILURES = (ModelLimitError, CaseError, ProblemError, np.linalg.LinAlgError, ValueError)
 
 
 @dataclass(frozen=True, eq=False)
@@ -91,10 +93,17 @@ def _branch_points(built, model: str, states: dict[int, Any], direction: str,
         branch = drivetrain_backlash_branch(assembled, [states[i] for i in order], direction, substeps=SUBSTEPS,
                                             cutoff_hz=section.response_cutoff_hz, progress=progress,
                                             measure_swing=False)
-    except _FAILURES as error:  # e.g. the backlash unknown, or a reduction that differs between speeds
+    except _FAILURES as error:  # a speed whose system cannot be built takes the branch down: find it, go on
+        bad = _unbuildable(assembled, states, section.response_cutoff_hz)
+        if not bad or len(bad) == len(order):  # not one speed's fault (e.g. the backlash unknown), or all of them
+            if progress is not None:
+                progress(len(order))
+            return {i: _missing(f"not computed: {bad.get(i, error)}") for i in order}
         if progress is not None:
-            progress(len(order))
-        return {i: _missing(f"not computed: {error}") for i in order}
+            progress(len(bad))
+        rest = {i: state for i, state in states.items() if i not in bad}
+        return {**{i: _missing(f"not computed: {reason}") for i, reason in bad.items()},
+                **_branch_points(built, model, rest, direction, progress)}
     points = {}
     for place, index in enumerate(order):
         if not branch.converged[place]:
@@ -102,13 +111,28 @@ def _branch_points(built, model: str, states: dict[int, Any], direction: str,
                                      "the neighbour's orbit nor after running in)")
             continue
         try:
-            response = drivetrain_backlash_response(assembled, states[index], branch.initial_state[place],
+            start = branch.initial_state[place]
+            response = drivetrain_backlash_response(assembled, states[index], start[np.isfinite(start)],
                                                     SUBSTEPS, SAMPLES_PER_PIECE, section.response_cutoff_hz)
         except _FAILURES as error:
             points[index] = _missing(f"not computed: {error}")
             continue
         points[index] = _point(response, bool(branch.run_in[place]), section.bearing_harmonics)
     return points
+
+
+def _unbuildable(assembled, states: dict[int, Any], cutoff_hz: float) -> dict[int, Exception]:
+    """The speeds whose backlash system (and modal basis) cannot be built, with the error."""
+    from thermogear.drivetrain.backlash_response import reduced_backlash_system
+    from thermogear.drivetrain.response import drivetrain_backlash_system
+
+    bad = {}
+    for index, state in states.items():
+        try:
+            reduced_backlash_system(drivetrain_backlash_system(assembled, state)[0], cutoff_hz)
+        except _FAILURES as error:
+            bad[index] = error
+    return bad
 
 
 def drivetrain_branch_sweep(built, speeds: np.ndarray, models: tuple[str, ...],
@@ -157,7 +181,9 @@ def drivetrain_branch_sweep(built, speeds: np.ndarray, models: tuple[str, ...],
         "mesh": "nonlinear (backlash; the orbit followed in speed)", "directions": ", ".join(directions),
         "points_per_period": section.sweep_points_per_period, "response_cutoff_hz": section.response_cutoff_hz,
         "substeps": SUBSTEPS, "resonances": json.dumps(resonances), "load_held": built.case.operating_point.load_held})
-    hysteresis = hysteresis_bands(dataset, variable="dte_peak_to_peak_um") if directions == DIRECTIONS else {}
+    # the branches a swept gearbox follows: unstable orbits and missing points left out (NaN ends a band)
+    swings = dataset[["dte_peak_to_peak_um"]].where(dataset["valid"])
+    hysteresis = hysteresis_bands(swings, variable="dte_peak_to_peak_um") if directions == DIRECTIONS else {}
     dataset.attrs["hysteresis"] = json.dumps(hysteresis)
     return DrivetrainBranchSweep(dataset, resonances, hysteresis)
 
