@@ -264,8 +264,8 @@ def test_one_failing_speed_leaves_the_sweeps_other_speeds_computed():
     from thermogear.sweep.drivetrain_speeds import drivetrain_speed_sweep
 
     case = _load(_document())
-    dataset = drivetrain_speed_sweep(case_drivetrain(case, ("elastic",)), np.array([1500.0, 1e-12, 4000.0]), ("elastic",),
-                                     processes=False).dataset
+    built = case_drivetrain(case, ("elastic",))
+    dataset = drivetrain_speed_sweep(built, np.array([1500.0, 1e-12, 4000.0]), ("elastic",), processes=False).dataset
     status = dataset["status"].values[0]
     assert status[1].startswith("not computed: the periodic solve failed") and not dataset["valid"].values[0, 1], \
         status

@@ -64,7 +64,7 @@ def run_drivetrain_sweep(built, models: tuple[str, ...], definition, out: Path, 
         from thermogear.cli.sweep_drivetrain_branches import run_drivetrain_branches
 
         return run_drivetrain_branches(built, models, speeds, out, overwrite, plot, progress, as_json, console,
-                                       direction or "both")
+                                       direction or "both", workers)
     case = built.case
     start = time.perf_counter()
     with point_progress("drivetrain sweep", total=int(speeds.size), unit="speeds",

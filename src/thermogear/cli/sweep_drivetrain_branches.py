@@ -36,8 +36,10 @@ def drivetrain_branch_summary(dataset) -> dict:
 
 
 def run_drivetrain_branches(built, models: tuple[str, ...], speeds: np.ndarray, out: Path, overwrite: bool,
-                            plot: Path | None, progress: bool, as_json: bool, console, direction: str) -> dict:
-    """Compute, store, plot and summarise the backlash sweep of ``built`` (``direction`` up | down | both)."""
+                            plot: Path | None, progress: bool, as_json: bool, console, direction: str,
+                            workers: int | None = None) -> dict:
+    """Compute, store, plot and summarise the backlash sweep of ``built`` (``direction`` up | down | both; each
+    model and direction a task for one of ``workers`` processes, default the cores)."""
     from thermogear.cli.app import print_json
     from thermogear.cli.console import point_progress
     from thermogear.sweep.branches import write_branch_store
@@ -51,7 +53,7 @@ def run_drivetrain_branches(built, models: tuple[str, ...], speeds: np.ndarray, 
     total = int(np.unique(speeds).size) * len(models) * len(directions)
     with point_progress("drivetrain branches", total=total, unit="points",
                         enabled=progress and not as_json) as advance:
-        sweep = drivetrain_branch_sweep(built, speeds, models, directions, progress=advance)
+        sweep = drivetrain_branch_sweep(built, speeds, models, directions, progress=advance, workers=workers)
     target = write_branch_store(sweep.dataset, out, overwrite=overwrite)
     figure_path = None
     if plot is not None:
@@ -72,7 +74,7 @@ def run_drivetrain_branches(built, models: tuple[str, ...], speeds: np.ndarray, 
     summary = {"out": str(target), "path": "drivetrain backlash branches (orbit followed in speed, modal reduction "
                f"up to {data.attrs['response_cutoff_hz']:g} Hz)", "mesh": "nonlinear", "models": list(models),
                "directions": list(directions), "points": int(data["speed_rpm"].size),
-               "seconds": time.perf_counter() - start, "cpu_seconds": time.process_time() - cpu,
+               "seconds": time.perf_counter() - start, "cpu_seconds_this_process": time.process_time() - cpu,
                **drivetrain_branch_summary(data), "hysteresis": sweep.hysteresis, "resonances": sweep.resonances,
                "plot": figure_path}
     if as_json:

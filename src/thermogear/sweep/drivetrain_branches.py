@@ -16,6 +16,7 @@ as valid; an orbit found but unstable keeps its numbers, marked "unstable".
 from __future__ import annotations
 
 import json
+import os
 import warnings
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
@@ -135,13 +136,36 @@ def _unbuildable(assembled, states: dict[int, Any], cutoff_hz: float) -> dict[in
     return bad
 
 
+def _task(built, task: tuple[str, str, list[float]],
+          progress: Callable[[int], None] | None = None) -> dict[int, dict[str, Any]]:
+    """One model and direction over the speeds (a worker's task): the mesh state of each speed (a speed whose state
+    fails is missing with the reason), then the branch and the responses."""
+    model, direction, speeds = task
+    states, failed = {}, {}
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # the case's warnings were printed by its checks
+        for index, speed in enumerate(speeds):
+            try:
+                states[index] = built.models[model].state(speed_rpm=speed,
+                                                          points_per_period=built.section.sweep_points_per_period)
+            except _FAILURES as error:
+                failed[index] = _missing(f"not computed: {error}")
+        if progress is not None and failed:
+            progress(len(failed))
+        return {**failed, **(_branch_points(built, model, states, direction, progress) if states else {})}
+
+
 def drivetrain_branch_sweep(built, speeds: np.ndarray, models: tuple[str, ...],
-                            directions: Sequence[str] = DIRECTIONS,
-                            progress: Callable[[int], None] | None = None) -> DrivetrainBranchSweep:
-    """Follow the backlash orbit of ``built`` (a :class:`~thermogear.drivetrain.case_model.CaseDrivetrain`) over
-    the pinion ``speeds`` [rpm] in each direction for each model (module docstring). ``progress(count)`` is called
-    as points finish (one per model, direction and speed)."""
+                            directions: Sequence[str] = DIRECTIONS, progress: Callable[[int], None] | None = None,
+                            workers: int | None = None, processes: bool = True) -> DrivetrainBranchSweep:
+    """Follow the backlash orbit of ``built`` (a :class:`~thermogear.drivetrain.case_model.CaseDrivetrain` holding
+    ``models``) over the pinion ``speeds`` [rpm] in each direction for each model (module docstring). Each model
+    and direction is one task: ``workers`` (default: the cores) processes take them as the linear drivetrain sweep
+    does (:func:`~thermogear.sweep.drivetrain_speeds.worker_map`: "spawn", one BLAS thread each) and
+    ``progress(count)`` is called as tasks finish; ``processes=False`` (or one task) computes in this process with
+    its BLAS threads as they are, ``progress`` then called per point."""
     from thermogear.drivetrain.case_model import mode_table, resonance_speeds
+    from thermogear.sweep.drivetrain_speeds import worker_map
     from thermogear.sweep.hysteresis import hysteresis_bands
 
     speeds = np.asarray(speeds, dtype=float)
@@ -153,26 +177,27 @@ def drivetrain_branch_sweep(built, speeds: np.ndarray, models: tuple[str, ...],
     if not directions or any(d not in DIRECTIONS for d in directions) or len(set(directions)) != len(directions):
         raise CaseError("--direction", ", ".join(directions), "up | down | both",
                         "the orbit is followed from the lowest speed up, from the highest down, or both")
-    section = built.section
+    section, teeth = built.section, built.case.gear_pair.pinion.teeth
+    keys = [(model, direction) for model in models for direction in directions]
+    tasks = [(model, direction, speeds.tolist()) for model, direction in keys]
+    workers = max(1, min(workers or os.cpu_count() or 1, len(tasks)))
     points: dict[tuple[str, str], dict[int, dict[str, Any]]] = {}
+    if processes and workers > 1:
+        def done(index: int, result: dict[int, dict[str, Any]]) -> None:
+            points[keys[index]] = result
+            if progress is not None:
+                progress(speeds.size)
+
+        worker_map(built, models, _task, tasks, workers, done)
+    else:
+        for key, task in zip(keys, tasks):
+            points[key] = _task(built, task, progress)
     resonances = {}
     with warnings.catch_warnings():
-        warnings.simplefilter("ignore")  # the case's warnings were printed by its checks
+        warnings.simplefilter("ignore")
         for model in models:
-            states, failed = {}, {}
-            for index, speed in enumerate(speeds):
-                try:
-                    states[index] = built.models[model].state(speed_rpm=float(speed),
-                                                              points_per_period=section.sweep_points_per_period)
-                except _FAILURES as error:
-                    failed[index] = _missing(f"not computed: {error}")
-            for direction in directions:
-                if progress is not None and failed:
-                    progress(len(failed))
-                found = _branch_points(built, model, states, direction, progress) if states else {}
-                points[(model, direction)] = {**failed, **found}
-            resonances[model] = [r for r in resonance_speeds(mode_table(built.modes(model), built.drivetrains[model]),
-                                                             built.case.gear_pair.pinion.teeth, section.bearing_harmonics)
+            rows = mode_table(built.modes(model), built.drivetrains[model])
+            resonances[model] = [r for r in resonance_speeds(rows, teeth, section.bearing_harmonics)
                                  if speeds.min() <= r["speed_rpm"] <= speeds.max()]
     bearings = [bearing.name for bearing in built.drivetrains[models[0]].bearings]
     dataset = _dataset(points, models, directions, speeds, bearings, section.bearing_harmonics)

@@ -24,7 +24,7 @@ import numpy as np
 
 from thermogear.errors import CaseError, ModelLimitError
 
-__all__ = ["DrivetrainSweep", "drivetrain_speed_sweep", "plot_drivetrain_sweep"]
+__all__ = ["DrivetrainSweep", "drivetrain_speed_sweep", "plot_drivetrain_sweep", "worker_map"]
 
 _THREAD_VARIABLES = ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS")
 _WORKER: dict[str, Any] = {}
@@ -38,7 +38,6 @@ def _initialise(document: dict, source: str, models: tuple[str, ...]) -> None:
     from thermogear.case import case_from_document
     from thermogear.drivetrain.case_model import case_drivetrain
     _WORKER["built"] = case_drivetrain(case_from_document(document, source), models)
-    _WORKER["models"] = models
 
 
 _FAILURES = (ModelLimitError, CaseError, np.linalg.LinAlgError)
@@ -70,8 +69,37 @@ def _compute_with(built, models: tuple[str, ...], speeds: list[float]) -> list[d
             for index in range(len(speeds))]
 
 
-def _compute(speeds: list[float]) -> list[dict[str, dict[str, Any]]]:
-    return _compute_with(_WORKER["built"], _WORKER["models"], speeds)
+def _compute_chunk(built, task: tuple[tuple[str, ...], list[float]]) -> list[dict[str, dict[str, Any]]]:
+    return _compute_with(built, *task)
+
+
+def _call(compute: Callable[[Any, Any], Any], task: Any) -> Any:
+    return compute(_WORKER["built"], task)
+
+
+def worker_map(built, models: tuple[str, ...], compute: Callable[[Any, Any], Any], tasks: list,
+               workers: int, done: Callable[[int, Any], None]) -> None:
+    """``compute(drivetrain, task)`` for each task in ``workers`` processes started by "spawn" with one BLAS thread
+    each (module docstring), each process building the drivetrain of ``built``'s case for ``models`` once;
+    ``done(index, result)`` as the tasks finish. ``compute`` must be a module-level function (it is pickled)."""
+    import multiprocessing
+    from concurrent.futures import ProcessPoolExecutor, as_completed
+
+    case = built.case
+    saved = {name: os.environ.get(name) for name in _THREAD_VARIABLES}
+    os.environ.update({name: "1" for name in _THREAD_VARIABLES})  # inherited by the spawned workers only
+    try:
+        with ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context("spawn"), initializer=_initialise,
+                                 initargs=(case.document, str(case.source), models)) as pool:
+            futures = {pool.submit(_call, compute, task): index for index, task in enumerate(tasks)}
+            for future in as_completed(futures):
+                done(futures[future], future.result())
+    finally:
+        for name, value in saved.items():
+            if value is None:
+                os.environ.pop(name, None)
+            else:
+                os.environ[name] = value
 
 
 class DrivetrainSweep:
@@ -93,8 +121,6 @@ def drivetrain_speed_sweep(built, speeds: np.ndarray, models: tuple[str, ...], w
     computes in this process instead, with its BLAS threads as they are (measured 7× the CPU time on a busy
     2-core machine)."""
     import json
-    import multiprocessing
-    from concurrent.futures import ProcessPoolExecutor, as_completed
 
     import xarray as xr
 
@@ -126,23 +152,12 @@ def drivetrain_speed_sweep(built, speeds: np.ndarray, models: tuple[str, ...], w
                 if progress is not None:
                     progress(len(chunk))
     else:
-        saved = {name: os.environ.get(name) for name in _THREAD_VARIABLES}
-        os.environ.update({name: "1" for name in _THREAD_VARIABLES})  # inherited by the spawned workers only
-        try:
-            with ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context("spawn"),
-                                     initializer=_initialise,
-                                     initargs=(case.document, str(case.source), models)) as pool:
-                futures = {pool.submit(_compute, chunk): index for index, chunk in enumerate(chunks)}
-                for future in as_completed(futures):
-                    results[futures[future]] = future.result()
-                    if progress is not None:
-                        progress(len(chunks[futures[future]]))
-        finally:
-            for name, value in saved.items():
-                if value is None:
-                    os.environ.pop(name, None)
-                else:
-                    os.environ[name] = value
+        def done(index: int, result: list) -> None:
+            results[index] = result
+            if progress is not None:
+                progress(len(chunks[index]))
+
+        worker_map(built, models, _compute_chunk, [(models, chunk) for chunk in chunks], workers, done)
     points = [point for index in range(len(chunks)) for point in results[index]]
     harmonics = section.bearing_harmonics
     shape = (len(models), speeds.size)
