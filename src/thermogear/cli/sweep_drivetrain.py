@@ -73,17 +73,9 @@ def run_drivetrain_sweep(built, models: tuple[str, ...], definition, out: Path, 
     write_branch_store(sweep.dataset, out, overwrite=overwrite)
     figure_path = None
     if plot is not None:
-        import matplotlib.pyplot as plt
+        from thermogear.cli.sweep_drivetrain_branches import save_figure
 
-        figure = plot_drivetrain_sweep(sweep)
-        try:
-            figure.savefig(plot, dpi=120)
-        except OSError as error:
-            raise CaseError("--plot", str(plot), "a writable figure file", f"the study is complete in {out}, but "
-                            f"its figure could not be written: {error.strerror or error}") from None
-        finally:
-            plt.close(figure)
-        figure_path = str(plot)
+        figure_path = save_figure(plot_drivetrain_sweep(sweep), plot, out)
     data = sweep.dataset
     summary = {"out": str(out), "path": "drivetrain per-speed path (modal reduction shared per task; linear mesh)",
                "models": list(models), "points": int(speeds.size), "seconds": time.perf_counter() - start,

@@ -11,7 +11,7 @@ import numpy as np
 
 from thermogear.errors import CaseError
 
-__all__ = ["drivetrain_branch_summary", "run_drivetrain_branches"]
+__all__ = ["drivetrain_branch_summary", "run_drivetrain_branches", "save_figure"]
 
 
 def drivetrain_branch_summary(dataset) -> dict:
@@ -33,6 +33,21 @@ def drivetrain_branch_summary(dataset) -> dict:
             counts["contact_loss_points"][key] = int((np.nan_to_num(part["contact_loss_fraction"].values) > 0).sum())
             counts["back_side_contact_points"][key] = int((np.nan_to_num(part["back_side_contact"].values) == 1).sum())
     return {**counts, "kv_max": largest_kv(dataset)}
+
+
+def save_figure(figure, plot: Path, store: Path) -> str:
+    """Write a sweep's ``figure`` to ``plot`` and close it; the path written. A disk that refuses is a CaseError
+    that says the study itself is complete in ``store``."""
+    import matplotlib.pyplot as plt
+
+    try:
+        figure.savefig(plot, dpi=120)
+    except OSError as error:
+        raise CaseError("--plot", str(plot), "a writable figure file", f"the study is complete in {store}, but "
+                        f"its figure could not be written: {error.strerror or error}") from None
+    finally:
+        plt.close(figure)
+    return str(plot)
 
 
 def run_drivetrain_branches(built, models: tuple[str, ...], speeds: np.ndarray, out: Path, overwrite: bool,
@@ -57,19 +72,9 @@ def run_drivetrain_branches(built, models: tuple[str, ...], speeds: np.ndarray, 
     target = write_branch_store(sweep.dataset, out, overwrite=overwrite)
     figure_path = None
     if plot is not None:
-        import matplotlib.pyplot as plt
-
         from thermogear.sweep.drivetrain_branch_plots import plot_drivetrain_branches
 
-        figure = plot_drivetrain_branches(sweep)
-        try:
-            figure.savefig(plot, dpi=120)
-        except OSError as error:
-            raise CaseError("--plot", str(plot), "a writable figure file", f"the study is complete in {target}, "
-                            f"but its figure could not be written: {error.strerror or error}") from None
-        finally:
-            plt.close(figure)
-        figure_path = str(plot)
+        figure_path = save_figure(plot_drivetrain_branches(sweep), plot, target)
     data = sweep.dataset
     summary = {"out": str(target), "path": "drivetrain backlash branches (orbit followed in speed, modal reduction "
                f"up to {data.attrs['response_cutoff_hz']:g} Hz)", "mesh": "nonlinear", "models": list(models),
