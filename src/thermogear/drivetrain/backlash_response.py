@@ -32,16 +32,16 @@ from typing import Any
 import numpy as np
 
 from thermogear.drivetrain.assembly import AssembledDrivetrain
-from thermogear.drivetrain.response import drivetrain_backlash_system
+from thermogear.drivetrain.response import bearing_force_spectrum, drivetrain_backlash_system
 from thermogear.dynamics.backlash_ndof import (BACK_CONTACT, DRIVING_CONTACT, FREE_FLIGHT, BacklashSystem, DeadZone,
                                                backlash_periodic_orbit)
 from thermogear.dynamics.backlash_trajectory import BacklashTrajectory, backlash_trajectory
 from thermogear.dynamics.metrics import sampled_load
-from thermogear.dynamics.spectra import harmonic_spectrum, time_mean_and_rms
+from thermogear.dynamics.spectra import time_mean_and_rms
 from thermogear.errors import CaseError, ModelLimitError, ProblemError
 from thermogear.mesh.state import MeshState
 
-__all__ = ["DrivetrainBacklashResponse", "SampledMotion", "bearing_forces", "drivetrain_backlash_response",
+__all__ = ["DrivetrainBacklashResponse", "PeriodForces", "SampledMotion", "bearing_forces", "drivetrain_backlash_response",
            "reduced_backlash_system", "sampled_metrics", "sampled_motion"]
 
 
@@ -76,6 +76,11 @@ class DrivetrainBacklashResponse:
         return bool(self.converged and self.multipliers.size and np.abs(self.multipliers).max() < 1.0)
 
     @property
+    def bearing_names(self) -> tuple[str, ...]:
+        """The bearings' names (also where no orbit was found)."""
+        return tuple(self.metrics.get("bearings", ())) or tuple(self.bearing_forces)
+
+    @property
     def kv(self) -> float | None:
         """Dynamic factor Kv [-] (``metrics["kv"]``), None where the orbit was not found."""
         return self.metrics.get("kv") if self.converged else None
@@ -83,14 +88,21 @@ class DrivetrainBacklashResponse:
     def bearing_spectrum(self, name: str, points: int = 1024) -> tuple[np.ndarray, np.ndarray]:
         """(frequencies [Hz] of the mesh harmonics 0, f_m, 2f_m, …; amplitudes (3, harmonics) [N] in x, y, z) of
         one bearing's force on its housing; harmonic 0 is the mean force."""
-        if name not in self.bearing_forces:
-            raise CaseError("bearing", name, f"one of {sorted(self.bearing_forces)}", "bearing forces by name")
-        amplitudes = []
-        for axis in range(3):
-            frequencies, values = harmonic_spectrum(self.time, self.bearing_forces[name][:, axis], self.period,
-                                                    points)
-            amplitudes.append(values)
-        return frequencies, np.array(amplitudes)
+        return bearing_force_spectrum(self.time, self.bearing_forces, name, self.period, points)
+
+
+@dataclass(frozen=True, eq=False)
+class PeriodForces:
+    """The bearing forces of one mesh period: ``time`` (S,) [s] from 0 to ``period`` [s], ``bearing_forces``
+    name → (S, 3) [N] (e.g. the last period of a motion from rest)."""
+
+    time: np.ndarray
+    bearing_forces: dict[str, np.ndarray]
+    period: float
+
+    def bearing_spectrum(self, name: str, points: int = 1024) -> tuple[np.ndarray, np.ndarray]:
+        """As :meth:`DrivetrainBacklashResponse.bearing_spectrum`."""
+        return bearing_force_spectrum(self.time, self.bearing_forces, name, self.period, points)
 
 
 def reduced_backlash_system(system: BacklashSystem, cutoff_hz: float):
@@ -129,7 +141,7 @@ def drivetrain_backlash_response(assembled: AssembledDrivetrain, state: MeshStat
         trajectory = backlash_trajectory(system, orbit.initial_state, 1, samples_per_piece, orbit.substeps,
                                          system.mesh_vector)
     except (ProblemError, ModelLimitError, np.linalg.LinAlgError) as error:
-        return _failed(state, f"no orbit: {error}")
+        return _failed(state, f"no orbit: {error}", [bearing.name for bearing in assembled.drivetrain.bearings])
     return _response(assembled, state, system, reduction, basis, trajectory, orbit.initial_state, orbit.multipliers,
                      orbit.converged, failure, orbit.switches)
 
@@ -142,10 +154,11 @@ def _expanded(reduction, basis, values: np.ndarray) -> np.ndarray:
     return reduction.expand(values).T
 
 
-def _failed(state: MeshState, failure: str) -> DrivetrainBacklashResponse:
+def _failed(state: MeshState, failure: str, bearings: list[str]) -> DrivetrainBacklashResponse:
     """A response that carries no motion, only why."""
     empty = np.zeros(0)
-    metrics = {"static_load": state.normal_load, "kv": None, "valid": False, "converged": False, "stable": False}
+    metrics = {"static_load": state.normal_load, "kv": None, "valid": False, "converged": False, "stable": False,
+               "bearings": bearings}
     return DrivetrainBacklashResponse(empty, empty, empty, empty, {}, np.zeros((0, 0)), np.zeros(0, dtype=int),
                                       empty, False, failure, 0, math.nan, math.nan, metrics,
                                       state.problem().period)

@@ -14,7 +14,7 @@ from typing import Any
 import numpy as np
 
 from thermogear.drivetrain.assembly import AssembledDrivetrain
-from thermogear.drivetrain.backlash_response import sampled_metrics, sampled_motion
+from thermogear.drivetrain.backlash_response import PeriodForces, sampled_metrics, sampled_motion
 from thermogear.drivetrain.response import drivetrain_backlash_system, drivetrain_periodic_system
 from thermogear.dynamics.backlash_trajectory import backlash_trajectory, linear_trajectory
 from thermogear.errors import CaseError
@@ -31,7 +31,8 @@ class DrivetrainTransient:
     ``transmission_error`` δ [m], its rate [m/s], ``mesh_force`` [N], ``bearing_forces`` name → (S, 3) [N],
     ``displacement`` (S, DOFs), ``region`` (S,) of the mesh; ``backlash`` whether the mesh may separate;
     ``end_state`` the solver's state after the last period; ``last_period`` the metrics of the last period (keys of
-    :func:`~thermogear.drivetrain.backlash_response.sampled_metrics` less the orbit's)."""
+    :func:`~thermogear.drivetrain.backlash_response.sampled_metrics` less the orbit's) and ``last_period_forces``
+    its bearing forces."""
 
     time: np.ndarray
     transmission_error: np.ndarray
@@ -43,6 +44,7 @@ class DrivetrainTransient:
     backlash: bool
     end_state: np.ndarray
     last_period: dict[str, Any]
+    last_period_forces: PeriodForces
     period: float
     periods: int
 
@@ -69,10 +71,12 @@ def drivetrain_transient(assembled: AssembledDrivetrain, state: MeshState, perio
         gap = np.inf
     motion = sampled_motion(assembled, problem, reduction, None, trajectory, deviation, gap)
     last = trajectory.last_period()
-    metrics = sampled_metrics(problem, last, sampled_motion(assembled, problem, reduction, None, last, deviation, gap),
-                              np.zeros(0), True)
+    last_motion = sampled_motion(assembled, problem, reduction, None, last, deviation, gap)
+    metrics = sampled_metrics(problem, last, last_motion, np.zeros(0), True)
     for key in _ORBIT_KEYS:
         metrics.pop(key, None)
     return DrivetrainTransient(trajectory.time, motion.transmission_error, motion.transmission_error_rate,
                               motion.mesh_force, motion.bearing_forces, motion.displacement, trajectory.region,
-                              bool(backlash), trajectory.end_state, metrics, problem.period, int(periods))
+                              bool(backlash), trajectory.end_state, metrics,
+                              PeriodForces(last.time, last_motion.bearing_forces, problem.period), problem.period,
+                              int(periods))

@@ -5,22 +5,25 @@ from __future__ import annotations
 
 import html
 import math
+from collections.abc import Callable
 from typing import Any
 
 __all__ = ["drivetrain_report_data", "drivetrain_section"]
 
 
-def drivetrain_report_data(case, models: tuple[str, ...] = ("elastic", "thermal")) -> dict[str, Any] | None:
-    """The drivetrain results of ``case`` as JSON-ready numbers, None for a case without ``[drivetrain]``; where
-    they cannot be computed, ``{"not_computed": reason}`` (the rest of the report stands)."""
-    if getattr(case, "drivetrain", None) is None:
+def drivetrain_report_data(build: Callable[[], Any] | None, models: tuple[str, ...] = ("elastic", "thermal"),
+                           transient: bool = False, progress=None) -> dict[str, Any] | None:
+    """The drivetrain results as JSON-ready numbers (:func:`~thermogear.drivetrain.case_model.drivetrain_results`
+    of the CaseDrivetrain that ``build()`` returns; None for a case without ``[drivetrain]``, ``build`` None);
+    where they cannot be computed, ``{"not_computed": reason}`` (the rest of the report stands)."""
+    if build is None:
         return None
     from thermogear.drivetrain.case_model import drivetrain_results
     from thermogear.errors import CaseError, ModelLimitError
     from thermogear.serialization import json_ready
 
     try:
-        return json_ready(drivetrain_results(case, models), non_finite="null")
+        return json_ready(drivetrain_results(build(), models, transient, progress), non_finite="null")
     except ModelLimitError as error:  # most often a mode nothing damps: say where damping comes from
         return {"not_computed": f"{error} (every mode needs damping: give the shafts material_damping_s and the "
                                 "bearings damping in x, y and, where they locate the shaft, z)"}
