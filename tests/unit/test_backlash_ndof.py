@@ -130,3 +130,25 @@ def test_trajectory_samples_are_the_flow_s_exact_states():
     assert np.all((gap[free] <= 1e-12 * scale) & (gap[free] >= -system.backlash - 1e-12 * scale))
     assert np.all(np.diff(trajectory.time) >= 0.0) and trajectory.time[-1] == pytest.approx(2 * period, rel=1e-12)
     assert np.abs(trajectory.end_state - trajectory.state[-1]).max() < 1e-12 * scale
+
+
+@pytest.mark.parametrize("odd_below, substeps, converged", [(8, 8, True), (10**6, 64, False)])
+def test_an_odd_crossing_count_refines_the_substeps_or_fails(monkeypatch, odd_below, substeps, converged):
+    # the flow made to report one extra crossing of g = 0 below ``odd_below`` sub-steps: the guard shoots again
+    # with 8 (and finds the orbit, even again) or, still odd at 64, says not converged and why
+    import thermogear.dynamics.backlash_ndof as module
+
+    flow = module.backlash_flow_ndof
+
+    def missing_one(system, state, steps=16, record=False):
+        end, matrix, info = flow(system, state, steps, record)
+        if steps < odd_below:
+            info["crossings"][("mesh", 0)] = info["crossings"].get(("mesh", 0), 0) + 1
+        return end, matrix, info
+
+    monkeypatch.setattr(module, "backlash_flow_ndof", missing_one)
+    orbit = module.backlash_periodic_orbit(_textbook_system(0.5, 0.1), substeps=4)
+    assert orbit.substeps == substeps and orbit.converged == converged
+    assert (orbit.failure == "") == converged
+    if not converged:
+        assert "odd number of times" in orbit.failure and "('mesh', 0)" in orbit.failure and not orbit.stable
