@@ -7,8 +7,8 @@ import numpy as np
 import pytest
 from backlash_textbook import FORCE, textbook_problem
 
-from thermogear.dynamics.backlash_ndof import (BACK_CONTACT, FREE_FLIGHT, BacklashSystem, backlash_flow_ndof, backlash_periodic_orbit,
-                                               odd_crossings)
+from thermogear.dynamics.backlash_ndof import (BACK_CONTACT, FREE_FLIGHT, BacklashSystem, backlash_flow_ndof,
+                                               backlash_periodic_orbit, odd_crossings)
 from thermogear.dynamics.backlash_trajectory import backlash_trajectory
 from thermogear.dynamics.backlash_periodic import periodic_response as one_dof_backlash_response
 from thermogear.dynamics.periodic_ndof import PiecewiseLinearSystem, periodic_response
@@ -75,13 +75,9 @@ def test_bad_backlash_is_refused():
 
 def _textbook_system(deviation: float = 0.3, backlash: float = 1.0) -> BacklashSystem:
     """The textbook oscillator near resonance (0.9, ζ = 0.08) as an n-DOF system of one coordinate."""
-    problem = textbook_problem(0.9, 0.08, deviation=deviation, backlash=backlash, n=8)
-    stiffness, error, one = problem.pair_stiffness[0], problem.pair_deviation[0], np.ones((1, 1))
-    linear = PiecewiseLinearSystem(mass=one, stiffness=np.zeros((1, 1)), damping=np.zeros((1, 1)), force=[FORCE],
-                                   nodes=problem.nodes, stiffness_pattern=one, stiffness_factor=stiffness,
-                                   damping_pattern=one, damping_factor=problem.damping, force_pattern=[1.0],
-                                   force_factor=stiffness * error)
-    return BacklashSystem(linear, [1.0], error, problem.backlash)
+    from test_backlash_branch_ndof import _as_matrices
+
+    return _as_matrices(textbook_problem(0.9, 0.08, deviation=deviation, backlash=backlash, n=8))
 
 
 def test_parity_rule_flags_an_odd_crossing():

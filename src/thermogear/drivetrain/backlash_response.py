@@ -41,8 +41,8 @@ from thermogear.dynamics.spectra import time_mean_and_rms
 from thermogear.errors import CaseError, ModelLimitError, ProblemError
 from thermogear.mesh.state import MeshState
 
-__all__ = ["DrivetrainBacklashResponse", "PeriodForces", "SampledMotion", "bearing_forces", "drivetrain_backlash_response",
-           "reduced_backlash_system", "sampled_metrics", "sampled_motion"]
+__all__ = ["DrivetrainBacklashResponse", "PeriodForces", "SampledMotion", "bearing_forces",
+           "drivetrain_backlash_response", "reduced_backlash_system", "sampled_metrics", "sampled_motion"]
 
 
 @dataclass(frozen=True, eq=False)

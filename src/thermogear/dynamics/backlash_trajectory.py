@@ -130,7 +130,10 @@ def backlash_trajectory(system: BacklashSystem, state: np.ndarray, periods: int 
     for t, k in zip(grid, segment_of):
         if any(round(float(t) / tolerance) + shift in changes for shift in (-1, 0, 1)):
             continue  # the switch's own right-side sample stands for it
-        samples.append((float(t), 1, int(k), min(float(t) - bounds[k, 0], bounds[k, 1] - bounds[k, 0])))
+        into = min(float(t) - bounds[k, 0], bounds[k, 1] - bounds[k, 0])
+        # a grid time on a recorded segment start (sub-steps a multiple of the grid) differs from it by rounding of
+        # the summed times only: the recorded state stands for it (no exponential; the shift is ~1e-16 of T)
+        samples.append((float(t), 1, int(k), 0.0 if into <= 1e-13 * period else into))
     inverse = np.linalg.inv(linear.mass)
     matrices: dict[tuple, np.ndarray] = {}
 
