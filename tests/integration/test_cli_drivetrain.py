@@ -183,3 +183,33 @@ def test_the_report_has_a_drivetrain_section_and_summary_json_its_numbers(tmp_pa
     # run --json and the report's summary.json carry the same drivetrain numbers (computed once, by the report)
     assert summary["drivetrain"] == payload["drivetrain"]
     assert len(summary["drivetrain"]["heat"]) == 12
+
+
+def test_a_drivetrain_orbit_not_found_prints_no_number_and_says_why():
+    # a backlash drivetrain whose shooting failed: every number of the model reads "not found", the orbit row "NO",
+    # and the reason is printed (table and report alike), never a value labelled valid
+    import io
+
+    from rich.console import Console
+
+    from thermogear.cli.run_drivetrain import print_drivetrain
+    from thermogear.report.drivetrain_section import drivetrain_section
+
+    unknown = {"mean_radial_n": None, "dynamic_rms_n": None, "harmonic_hz": [500.0], "harmonic_amplitude_n": [None]}
+    model = {"kv": None, "dte_rms_um": None, "dte_peak_to_peak_um": None, "largest_floquet_multiplier_abs": None,
+             "stable": False, "converged": False, "failure": "Newton stopped at residual 0.3 > 1e-08",
+             "contact_loss_fraction": None, "back_side_contact": None, "back_contact_fraction": None,
+             "switches_per_period": None, "bearing_forces": {"bearing A": unknown},
+             "modes": [{"frequency_hz": 900.0, "label": "torsional", "mesh_share": 0.9, "mesh_dominated": True,
+                        "energy_shares": {"mesh": 0.9}, "element_shares": {}}], "resonances": []}
+    data = {"degrees_of_freedom": 12, "response_cutoff_hz": 3e4, "mesh": "nonlinear (backlash) on the drivetrain",
+            "backlash_mesh": True, "transient": False, "solved_on": "every DOF", "notes": [],
+            "models": {"elastic": model}}
+    buffer = io.StringIO()
+    print_drivetrain(data, Console(file=buffer, width=200))
+    text = buffer.getvalue()
+    assert "no periodic orbit — Newton stopped" in text and "periodic orbit found (stable)" in text
+    kv_row = next(line for line in text.splitlines() if "│ Kv" in line)
+    assert "not found" in kv_row and not any(character.isdigit() for character in kv_row)
+    page = drivetrain_section(data)
+    assert "no periodic orbit — Newton stopped" in page and "<td class=num>NO</td>" in page

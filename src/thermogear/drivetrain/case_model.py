@@ -37,9 +37,9 @@ if TYPE_CHECKING:
     from thermogear.drivetrain.backlash_response import DrivetrainBacklashResponse
     from thermogear.drivetrain.transient_response import DrivetrainTransient
 
-__all__ = ["BACKLASH_CUTOFF_HZ", "MESH_COUPLED_SHARE", "MESH_DOMINATED_SHARE", "CaseDrivetrain",
-           "bearing_force_summary", "case_drivetrain", "drivetrain_builder", "drivetrain_results", "heat_table", "mode_table",
-           "resonance_speeds"]
+__all__ = ["BACKLASH_CUTOFF_HZ", "BACKLASH_SUBSTEPS_PER_PERIOD", "MESH_COUPLED_SHARE", "MESH_DOMINATED_SHARE",
+           "CaseDrivetrain", "backlash_substeps", "bearing_force_summary", "case_drivetrain", "drivetrain_builder",
+           "drivetrain_results", "heat_table", "mode_table", "resonance_speeds"]
 
 #: A mode is "mesh-dominated" when the mesh holds more than this share of its strain energy: a threshold chosen
 #: here (Velex & Berthe 1989 rank modes by this share; no source fixes a value). Kept low so that no mode the mesh
