@@ -13,8 +13,12 @@ from thermogear.case import case_from_document
 from thermogear.drivetrain.backlash_response import drivetrain_backlash_response
 from thermogear.drivetrain.case_model import bearing_force_summary, case_drivetrain
 from thermogear.sweep.drivetrain_branches import SAMPLES_PER_PIECE, SUBSTEPS, drivetrain_branch_sweep
+from thermogear.sweep.drivetrain_speeds import SweepOrigin
 
 DATA = Path(__file__).resolve().parents[1] / "data"
+
+
+ORIGIN = SweepOrigin("two_shaft_backlash", "test", {}, "constant torque")  # recorded only (no worker here)
 
 
 def _built():
@@ -32,7 +36,7 @@ def _built():
 def test_each_point_is_the_backlash_response_at_its_speed():
     built = _built()
     speeds = np.array([3000.0, 5000.0])  # well below the mesh-coupled modes: one orbit, in permanent contact
-    data = drivetrain_branch_sweep(built, speeds, ("elastic",), processes=False).dataset
+    data = drivetrain_branch_sweep(built, ORIGIN, speeds, ("elastic",), processes=False).dataset
     assert bool(data["valid"].all())
     section = built.section
     for index, speed in enumerate(speeds):
@@ -58,7 +62,7 @@ def test_a_point_without_an_orbit_is_missing_with_its_reason():
     # at 1e-12 rpm the mesh period is ~1e11 s: the flow overflows and the shooting fails; the other speed is
     # computed, its branch starting afresh
     built = _built()
-    data = drivetrain_branch_sweep(built, np.array([1e-12, 3000.0]), ("elastic",), processes=False).dataset
+    data = drivetrain_branch_sweep(built, ORIGIN, np.array([1e-12, 3000.0]), ("elastic",), processes=False).dataset
     for direction in ("up", "down"):
         point = data.sel(direction=direction, model="elastic")
         status = [str(value) for value in point["status"].values]
@@ -72,4 +76,4 @@ def test_directions_are_checked():
     from thermogear.errors import CaseError
 
     with pytest.raises(CaseError, match="--direction"):
-        drivetrain_branch_sweep(_built(), np.array([3000.0]), ("elastic",), ("sideways",))
+        drivetrain_branch_sweep(_built(), ORIGIN, np.array([3000.0]), ("elastic",), ("sideways",))

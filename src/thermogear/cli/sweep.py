@@ -76,6 +76,7 @@ def sweep(
 
             from thermogear.cli.sweep_drivetrain import drivetrain_models, run_drivetrain_sweep
             from thermogear.drivetrain.case_model import case_drivetrain
+            from thermogear.sweep.drivetrain_speeds import SweepOrigin
 
             if multistart:
                 raise CaseError("--multistart", multistart, "0 for a case with a [drivetrain]",
@@ -84,8 +85,10 @@ def sweep(
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore")  # the case's warnings are its checks'; the sweep states its own
                 built = case_drivetrain(loaded, models)
-            run_drivetrain_sweep(built, models, definition, out, overwrite, resume, plot, progress, as_json, workers,
-                                 console, error_console, direction)
+            origin = SweepOrigin(loaded.name, str(loaded.source), loaded.document,
+                                 loaded.operating_point.load_held)
+            run_drivetrain_sweep(built, origin, models, definition, out, overwrite, resume, plot, progress, as_json,
+                                 workers, console, error_console, direction)
             return
         chunks = chunk_points or (section.chunk_points if section is not None else None)
         if stored is not None:

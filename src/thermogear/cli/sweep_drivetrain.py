@@ -37,18 +37,19 @@ def _speeds(definition) -> "object":
     return parse_values(items["speed_rpm"], "speed_rpm")
 
 
-def run_drivetrain_sweep(built, models: tuple[str, ...], definition, out: Path, overwrite: bool, resume: bool,
-                         plot: Path | None, progress: bool, as_json: bool, workers: int | None, console,
+def run_drivetrain_sweep(built, origin, models: tuple[str, ...], definition, out: Path, overwrite: bool,
+                         resume: bool, plot: Path | None, progress: bool, as_json: bool, workers: int | None, console,
                          error_console, direction: str | None = None) -> dict:
     """Run the speed sweep of ``built`` (a :class:`~thermogear.drivetrain.case_model.CaseDrivetrain` holding
-    ``models``) into ``out`` and print its summary (table or JSON): the backlash orbit up and down in speed where
-    the case's mesh is nonlinear, the linear per-speed path otherwise."""
+    ``models``; ``origin`` its case's :class:`~thermogear.sweep.drivetrain_speeds.SweepOrigin`) into ``out`` and
+    print its summary (table or JSON): the backlash orbit up and down in speed where the case's mesh is nonlinear,
+    the linear per-speed path otherwise."""
     from thermogear.cli.app import print_json
     from thermogear.cli.console import point_progress
     from thermogear.sweep.branches import write_branch_store
     from thermogear.sweep.drivetrain_speeds import drivetrain_speed_sweep, plot_drivetrain_sweep
 
-    nonlinear = built.case.dynamics.mesh == "nonlinear"
+    nonlinear = built.backlash_mesh
     if resume:
         raise CaseError("--resume", True, "absent for a drivetrain case", "the drivetrain sweep is written whole "
                         "at its end (a backlash branch also needs every speed before it in its direction); run it "
@@ -63,13 +64,12 @@ def run_drivetrain_sweep(built, models: tuple[str, ...], definition, out: Path, 
     if nonlinear:
         from thermogear.cli.sweep_drivetrain_branches import run_drivetrain_branches
 
-        return run_drivetrain_branches(built, models, speeds, out, overwrite, plot, progress, as_json, console,
+        return run_drivetrain_branches(built, origin, models, speeds, out, overwrite, plot, progress, as_json, console,
                                        direction or "both", workers)
-    case = built.case
     start = time.perf_counter()
     with point_progress("drivetrain sweep", total=int(speeds.size), unit="speeds",
                         enabled=progress and not as_json) as advance:
-        sweep = drivetrain_speed_sweep(built, speeds, models, workers=workers, progress=advance)
+        sweep = drivetrain_speed_sweep(built, origin, speeds, models, workers=workers, progress=advance)
     write_branch_store(sweep.dataset, out, overwrite=overwrite)
     figure_path = None
     if plot is not None:
@@ -86,7 +86,7 @@ def run_drivetrain_sweep(built, models: tuple[str, ...], definition, out: Path, 
     if as_json:
         print_json(summary)
     else:
-        console.print(f"drivetrain sweep of {case.name}: {speeds.size} speeds × {len(models)} model(s) in "
+        console.print(f"drivetrain sweep of {origin.name}: {speeds.size} speeds × {len(models)} model(s) in "
                       f"{summary['seconds']:.1f} s on the per-speed path (modal reduction, linear mesh) → {out}",
                       highlight=False)
         for m in models:

@@ -50,7 +50,7 @@ def save_figure(figure, plot: Path, store: Path) -> str:
     return str(plot)
 
 
-def run_drivetrain_branches(built, models: tuple[str, ...], speeds: np.ndarray, out: Path, overwrite: bool,
+def run_drivetrain_branches(built, origin, models: tuple[str, ...], speeds: np.ndarray, out: Path, overwrite: bool,
                             plot: Path | None, progress: bool, as_json: bool, console, direction: str,
                             workers: int | None = None) -> dict:
     """Compute, store, plot and summarise the backlash sweep of ``built`` (``direction`` up | down | both; each
@@ -68,7 +68,8 @@ def run_drivetrain_branches(built, models: tuple[str, ...], speeds: np.ndarray, 
     total = int(np.unique(speeds).size) * len(models) * len(directions)
     with point_progress("drivetrain branches", total=total, unit="points",
                         enabled=progress and not as_json) as advance:
-        sweep = drivetrain_branch_sweep(built, speeds, models, directions, progress=advance, workers=workers)
+        sweep = drivetrain_branch_sweep(built, origin, speeds, models, directions, progress=advance,
+                                        workers=workers)
     target = write_branch_store(sweep.dataset, out, overwrite=overwrite)
     figure_path = None
     if plot is not None:

@@ -18,7 +18,9 @@ driving flanks, zero off them; as the linear chain and as the 1-DOF backlash sol
 where no pair stiffness is known, the mesh's elastic force in single contact); ``max_system_load`` the largest
 elastic mesh force k_j·φ(g); ``contact_loss_fraction`` the free-flight time over the period (exact: summed over the
 segments between located switches) and ``back_contact_fraction`` likewise on the back flanks; DTE mean, RMS and
-peak-to-peak of δ over the samples (trapezoid rule; every switch and node sampled on both sides).
+peak-to-peak of δ over the samples (trapezoid rule; every switch and node sampled on both sides, and every extremum
+of δ, so that the maxima of the forces, monotone in δ on a piece in one contact region, and the peak-to-peak are
+exact).
 """
 
 from __future__ import annotations
@@ -30,16 +32,24 @@ from typing import Any
 import numpy as np
 
 from thermogear.drivetrain.assembly import AssembledDrivetrain
-from thermogear.drivetrain.response import drivetrain_backlash_system
+from thermogear.drivetrain.response import bearing_force_spectrum, drivetrain_backlash_system
 from thermogear.dynamics.backlash_ndof import (BACK_CONTACT, DRIVING_CONTACT, FREE_FLIGHT, BacklashSystem, DeadZone,
                                                backlash_periodic_orbit)
 from thermogear.dynamics.backlash_trajectory import BacklashTrajectory, backlash_trajectory
 from thermogear.dynamics.metrics import sampled_load
-from thermogear.dynamics.spectra import harmonic_spectrum, time_mean_and_rms
+from thermogear.dynamics.spectra import time_mean_and_rms
 from thermogear.errors import CaseError, ModelLimitError, ProblemError
 from thermogear.mesh.state import MeshState
 
-__all__ = ["DrivetrainBacklashResponse", "drivetrain_backlash_response", "reduced_backlash_system"]
+__all__ = ["SHOOTING_TOLERANCE", "DrivetrainBacklashResponse", "PeriodForces", "SampledMotion", "bearing_forces",
+           "drivetrain_backlash_response", "reduced_backlash_system", "sampled_metrics", "sampled_motion"]
+
+
+#: Relative residual |φ_T(z₀) − z₀| the shooting must reach. A drivetrain's stiff coordinates leave a rounding floor
+#: above the 1e-10 of the small systems: measured 4.4e-10 at the linear orbit of fzg_rig_type_c (107 coordinates,
+#: 1024 intervals), so Newton could never meet 1e-10 there; 1e-8 is 20× above that floor and far below what Kv or
+#: the DTE resolve (an orbit off by 1e-8 of its state moves them by ~1e-8).
+SHOOTING_TOLERANCE = 1e-8
 
 
 @dataclass(frozen=True, eq=False)
@@ -73,6 +83,11 @@ class DrivetrainBacklashResponse:
         return bool(self.converged and self.multipliers.size and np.abs(self.multipliers).max() < 1.0)
 
     @property
+    def bearing_names(self) -> tuple[str, ...]:
+        """The bearings' names (also where no orbit was found)."""
+        return tuple(self.metrics.get("bearings", ())) or tuple(self.bearing_forces)
+
+    @property
     def kv(self) -> float | None:
         """Dynamic factor Kv [-] (``metrics["kv"]``), None where the orbit was not found."""
         return self.metrics.get("kv") if self.converged else None
@@ -80,14 +95,21 @@ class DrivetrainBacklashResponse:
     def bearing_spectrum(self, name: str, points: int = 1024) -> tuple[np.ndarray, np.ndarray]:
         """(frequencies [Hz] of the mesh harmonics 0, f_m, 2f_m, …; amplitudes (3, harmonics) [N] in x, y, z) of
         one bearing's force on its housing; harmonic 0 is the mean force."""
-        if name not in self.bearing_forces:
-            raise CaseError("bearing", name, f"one of {sorted(self.bearing_forces)}", "bearing forces by name")
-        amplitudes = []
-        for axis in range(3):
-            frequencies, values = harmonic_spectrum(self.time, self.bearing_forces[name][:, axis], self.period,
-                                                    points)
-            amplitudes.append(values)
-        return frequencies, np.array(amplitudes)
+        return bearing_force_spectrum(self.time, self.bearing_forces, name, self.period, points)
+
+
+@dataclass(frozen=True, eq=False)
+class PeriodForces:
+    """The bearing forces of one mesh period: ``time`` (S,) [s] from 0 to ``period`` [s], ``bearing_forces``
+    name → (S, 3) [N] (e.g. the last period of a motion from rest)."""
+
+    time: np.ndarray
+    bearing_forces: dict[str, np.ndarray]
+    period: float
+
+    def bearing_spectrum(self, name: str, points: int = 1024) -> tuple[np.ndarray, np.ndarray]:
+        """As :meth:`DrivetrainBacklashResponse.bearing_spectrum`."""
+        return bearing_force_spectrum(self.time, self.bearing_forces, name, self.period, points)
 
 
 def reduced_backlash_system(system: BacklashSystem, cutoff_hz: float):
@@ -109,24 +131,24 @@ def reduced_backlash_system(system: BacklashSystem, cutoff_hz: float):
 
 def drivetrain_backlash_response(assembled: AssembledDrivetrain, state: MeshState,
                                  initial_state: np.ndarray | None = None, substeps: int = 16,
-                                 samples_per_piece: int = 8, cutoff_hz: float | None = None
-                                 ) -> DrivetrainBacklashResponse:
+                                 samples_per_piece: int = 8, cutoff_hz: float | None = None,
+                                 tolerance: float = SHOOTING_TOLERANCE) -> DrivetrainBacklashResponse:
     """The periodic orbit of the drivetrain with the backlash mesh (module docstring), shot from
     ``initial_state`` (in the solver's coordinates, e.g. a neighbouring speed's ``metrics["initial_state"]``) or
     from the linear periodic state; ``substeps`` per piece to find the switches; ``samples_per_piece`` samples per
-    piece; ``cutoff_hz`` [Hz] solves on a modal basis (:func:`reduced_backlash_system`), None on every DOF."""
+    piece; ``cutoff_hz`` [Hz] solves on a modal basis (:func:`reduced_backlash_system`), None on every DOF;
+    ``tolerance`` the shooting's relative residual."""
     system, reduction = drivetrain_backlash_system(assembled, state)
     basis = None
     if cutoff_hz is not None:
         system, basis = reduced_backlash_system(system, cutoff_hz)
-    failure = ""
     try:
-        orbit = backlash_periodic_orbit(system, initial_state, substeps)
-        if not orbit.converged:
-            failure = getattr(orbit, "failure", "") or f"shooting did not converge (residual {orbit.residual:.3g})"
-        trajectory = backlash_trajectory(system, orbit.initial_state, 1, samples_per_piece, substeps)
+        orbit = backlash_periodic_orbit(system, initial_state, substeps, tolerance)
+        failure = orbit.failure
+        trajectory = backlash_trajectory(system, orbit.initial_state, 1, samples_per_piece, orbit.substeps,
+                                         system.mesh_vector)
     except (ProblemError, ModelLimitError, np.linalg.LinAlgError) as error:
-        return _failed(state, f"no orbit: {error}")
+        return _failed(state, f"no orbit: {error}", [bearing.name for bearing in assembled.drivetrain.bearings])
     return _response(assembled, state, system, reduction, basis, trajectory, orbit.initial_state, orbit.multipliers,
                      orbit.converged, failure, orbit.switches)
 
@@ -139,10 +161,11 @@ def _expanded(reduction, basis, values: np.ndarray) -> np.ndarray:
     return reduction.expand(values).T
 
 
-def _failed(state: MeshState, failure: str) -> DrivetrainBacklashResponse:
+def _failed(state: MeshState, failure: str, bearings: list[str]) -> DrivetrainBacklashResponse:
     """A response that carries no motion, only why."""
     empty = np.zeros(0)
-    metrics = {"static_load": state.normal_load, "kv": None, "valid": False, "converged": False, "stable": False}
+    metrics = {"static_load": state.normal_load, "kv": None, "valid": False, "converged": False, "stable": False,
+               "bearings": bearings}
     return DrivetrainBacklashResponse(empty, empty, empty, empty, {}, np.zeros((0, 0)), np.zeros(0, dtype=int),
                                       empty, False, failure, 0, math.nan, math.nan, metrics,
                                       state.problem().period)
@@ -172,28 +195,50 @@ def _response(assembled: AssembledDrivetrain, state: MeshState, system: Backlash
               failure: str, switches: int) -> DrivetrainBacklashResponse:
     """The sampled orbit expanded to every DOF, with δ, the forces and the metrics."""
     problem = state.problem()
+    motion = sampled_motion(assembled, problem, reduction, basis, trajectory, system.deviation, system.backlash)
+    metrics = sampled_metrics(problem, trajectory, motion, multipliers, converged)
+    metrics["initial_state"] = [float(value) for value in initial_state]
+    period = problem.period
+    return DrivetrainBacklashResponse(trajectory.time, motion.transmission_error, motion.transmission_error_rate,
+                                      motion.mesh_force, motion.bearing_forces, motion.displacement,
+                                      trajectory.region, multipliers, bool(converged), failure, int(switches),
+                                      trajectory.free_flight_time / period, trajectory.back_contact_time / period,
+                                      metrics, period)
+
+
+@dataclass(frozen=True, eq=False)
+class SampledMotion:
+    """A sampled motion on every DOF: ``displacement`` (S, DOFs), δ = wᵀq [m] and its rate [m/s], the
+    ``mesh_force`` k_j·φ(g) + c_j·ġ and its elastic part k_j·φ(g) [N], ``bearing_forces`` name → (S, 3) [N]."""
+
+    displacement: np.ndarray
+    transmission_error: np.ndarray
+    transmission_error_rate: np.ndarray
+    mesh_force: np.ndarray
+    elastic_force: np.ndarray
+    bearing_forces: dict[str, np.ndarray]
+
+
+def sampled_motion(assembled: AssembledDrivetrain, problem, reduction, basis, trajectory: BacklashTrajectory,
+                   deviation: np.ndarray, backlash: float) -> SampledMotion:
+    """The trajectory (in the solver's coordinates) on every DOF with δ and the forces of the module docstring;
+    ``deviation`` ē_j [m] per piece and the ``backlash`` b [m] of the mesh coordinate g = δ − ē_j."""
     displacement = _expanded(reduction, basis, trajectory.displacement)
     velocity = _expanded(reduction, basis, trajectory.velocity)
     w = assembled.mesh_vectors[0]
     delta, rate = displacement @ w, velocity @ w
     piece, region = trajectory.piece, trajectory.region
-    gap = delta - system.deviation[piece]
-    elastic = np.where(region == DRIVING_CONTACT, gap, np.where(region == BACK_CONTACT, gap + system.backlash, 0.0))
+    gap = delta - deviation[piece]
+    elastic = np.where(region == DRIVING_CONTACT, gap, np.where(region == BACK_CONTACT, gap + backlash, 0.0))
     elastic = problem.stiffness[piece] * elastic
-    force = elastic + problem.damping[piece] * rate
-    forces = bearing_forces(assembled, displacement, velocity)
-    period = problem.period
-    metrics = _metrics(problem, trajectory, delta, rate, elastic, multipliers, converged)
-    metrics["initial_state"] = [float(value) for value in initial_state]
-    return DrivetrainBacklashResponse(trajectory.time, delta, rate, force, forces, displacement, region,
-                                      multipliers, bool(converged), failure, int(switches),
-                                      trajectory.free_flight_time / period, trajectory.back_contact_time / period,
-                                      metrics, period)
+    return SampledMotion(displacement, delta, rate, elastic + problem.damping[piece] * rate, elastic,
+                         bearing_forces(assembled, displacement, velocity))
 
 
-def _metrics(problem, trajectory: BacklashTrajectory, delta: np.ndarray, rate: np.ndarray, elastic: np.ndarray,
-             multipliers: np.ndarray, converged: bool) -> dict[str, Any]:
-    """The module docstring's metrics of one sampled orbit."""
+def sampled_metrics(problem, trajectory: BacklashTrajectory, motion: SampledMotion, multipliers: np.ndarray,
+                    converged: bool) -> dict[str, Any]:
+    """The module docstring's metrics of one sampled period (of an orbit, or the last of a motion)."""
+    delta, rate, elastic = motion.transmission_error, motion.transmission_error_rate, motion.elastic_force
     w0, period, piece = problem.static_load, problem.period, trajectory.piece
     driving = trajectory.region == DRIVING_CONTACT
     pair = problem.pair_arrays()
@@ -223,7 +268,8 @@ def _metrics(problem, trajectory: BacklashTrajectory, delta: np.ndarray, rate: n
         "frequency_ratio": problem.frequency_ratio,
         "floquet_multipliers_abs": [float(m) for m in moduli], "converged": bool(converged), "stable": stable,
         "contact_loss": {"detected": bool(trajectory.free_flight_time > 0.0), "start_times": starts,
-                         "durations": durations, "total_duration": float(trajectory.free_flight_time / trajectory.periods),
+                         "durations": durations,
+                         "total_duration": float(trajectory.free_flight_time / trajectory.periods),
                          "min_force": float(np.min(elastic)), "min_force_ratio": float(np.min(elastic) / w0)},
         "contact_loss_fraction": float(trajectory.free_flight_time / (period * trajectory.periods)),
         "back_side_contact": bool(trajectory.back_contact_time > 0.0),

@@ -155,11 +155,12 @@ def _task(built, task: tuple[str, str, list[float]],
         return {**failed, **(_branch_points(built, model, states, direction, progress) if states else {})}
 
 
-def drivetrain_branch_sweep(built, speeds: np.ndarray, models: tuple[str, ...],
+def drivetrain_branch_sweep(built, origin, speeds: np.ndarray, models: tuple[str, ...],
                             directions: Sequence[str] = DIRECTIONS, progress: Callable[[int], None] | None = None,
                             workers: int | None = None, processes: bool = True) -> DrivetrainBranchSweep:
     """Follow the backlash orbit of ``built`` (a :class:`~thermogear.drivetrain.case_model.CaseDrivetrain` holding
-    ``models``) over the pinion ``speeds`` [rpm] in each direction for each model (module docstring). Each model
+    ``models``; ``origin`` its case's :class:`~thermogear.sweep.drivetrain_speeds.SweepOrigin`) over the pinion
+    ``speeds`` [rpm] in each direction for each model (module docstring). Each model
     and direction is one task: ``workers`` (default: the cores) processes take them as the linear drivetrain sweep
     does (:func:`~thermogear.sweep.drivetrain_speeds.worker_map`: "spawn", one BLAS thread each) and
     ``progress(count)`` is called as tasks finish; ``processes=False`` (or one task) computes in this process with
@@ -177,7 +178,7 @@ def drivetrain_branch_sweep(built, speeds: np.ndarray, models: tuple[str, ...],
     if not directions or any(d not in DIRECTIONS for d in directions) or len(set(directions)) != len(directions):
         raise CaseError("--direction", ", ".join(directions), "up | down | both",
                         "the orbit is followed from the lowest speed up, from the highest down, or both")
-    section, teeth = built.section, built.case.gear_pair.pinion.teeth
+    section, teeth = built.section, built.teeth
     keys = [(model, direction) for model in models for direction in directions]
     tasks = [(model, direction, speeds.tolist()) for model, direction in keys]
     workers = max(1, min(workers or os.cpu_count() or 1, len(tasks)))
@@ -188,7 +189,7 @@ def drivetrain_branch_sweep(built, speeds: np.ndarray, models: tuple[str, ...],
             if progress is not None:
                 progress(speeds.size)
 
-        worker_map(built, models, _task, tasks, workers, done)
+        worker_map(origin, models, _task, tasks, workers, done)
     else:
         for key, task in zip(keys, tasks):
             points[key] = _task(built, task, progress)
@@ -202,10 +203,10 @@ def drivetrain_branch_sweep(built, speeds: np.ndarray, models: tuple[str, ...],
     bearings = [bearing.name for bearing in built.drivetrains[models[0]].bearings]
     dataset = _dataset(points, models, directions, speeds, bearings, section.bearing_harmonics)
     dataset.attrs.update({
-        "case": built.case.name, "kind": "drivetrain backlash speed sweep",
+        "case": origin.name, "kind": "drivetrain backlash speed sweep",
         "mesh": "nonlinear (backlash; the orbit followed in speed)", "directions": ", ".join(directions),
         "points_per_period": section.sweep_points_per_period, "response_cutoff_hz": section.response_cutoff_hz,
-        "substeps": SUBSTEPS, "resonances": json.dumps(resonances), "load_held": built.case.operating_point.load_held})
+        "substeps": SUBSTEPS, "resonances": json.dumps(resonances), "load_held": origin.load_held})
     # the branches a swept gearbox follows: unstable orbits and missing points left out (NaN ends a band)
     swings = dataset[["dte_peak_to_peak_um"]].where(dataset["valid"])
     hysteresis = hysteresis_bands(swings, variable="dte_peak_to_peak_um") if directions == DIRECTIONS else {}

@@ -18,13 +18,26 @@ from __future__ import annotations
 
 import os
 import warnings
+from dataclasses import dataclass
 from typing import Any, Callable
 
 import numpy as np
 
 from thermogear.errors import CaseError, ModelLimitError
 
-__all__ = ["DrivetrainSweep", "drivetrain_speed_sweep", "plot_drivetrain_sweep", "worker_map"]
+__all__ = ["DrivetrainSweep", "SweepOrigin", "drivetrain_speed_sweep", "plot_drivetrain_sweep", "worker_map"]
+
+@dataclass(frozen=True)
+class SweepOrigin:
+    """What a drivetrain sweep records of its case and what its worker processes rebuild it from: ``name``,
+    ``source`` (where the case was read), ``document`` (the case as read: the workers build the drivetrain from it)
+    and ``load_held`` (what stays fixed as the speed varies, e.g. "constant torque")."""
+
+    name: str
+    source: str
+    document: dict
+    load_held: str
+
 
 _THREAD_VARIABLES = ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS")
 _WORKER: dict[str, Any] = {}
@@ -77,20 +90,19 @@ def _call(compute: Callable[[Any, Any], Any], task: Any) -> Any:
     return compute(_WORKER["built"], task)
 
 
-def worker_map(built, models: tuple[str, ...], compute: Callable[[Any, Any], Any], tasks: list,
+def worker_map(origin: SweepOrigin, models: tuple[str, ...], compute: Callable[[Any, Any], Any], tasks: list,
                workers: int, done: Callable[[int, Any], None]) -> None:
     """``compute(drivetrain, task)`` for each task in ``workers`` processes started by "spawn" with one BLAS thread
-    each (module docstring), each process building the drivetrain of ``built``'s case for ``models`` once;
+    each (module docstring), each process building the drivetrain of ``origin``'s case for ``models`` once;
     ``done(index, result)`` as the tasks finish. ``compute`` must be a module-level function (it is pickled)."""
     import multiprocessing
     from concurrent.futures import ProcessPoolExecutor, as_completed
 
-    case = built.case
     saved = {name: os.environ.get(name) for name in _THREAD_VARIABLES}
     os.environ.update({name: "1" for name in _THREAD_VARIABLES})  # inherited by the spawned workers only
     try:
         with ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context("spawn"), initializer=_initialise,
-                                 initargs=(case.document, str(case.source), models)) as pool:
+                                 initargs=(origin.document, origin.source, models)) as pool:
             futures = {pool.submit(_call, compute, task): index for index, task in enumerate(tasks)}
             for future in as_completed(futures):
                 done(futures[future], future.result())
@@ -111,11 +123,13 @@ class DrivetrainSweep:
         self.resonances = resonances
 
 
-def drivetrain_speed_sweep(built, speeds: np.ndarray, models: tuple[str, ...], workers: int | None = None,
+def drivetrain_speed_sweep(built, origin: SweepOrigin, speeds: np.ndarray, models: tuple[str, ...],
+                           workers: int | None = None,
                            progress: Callable[[int], None] | None = None,
                            processes: bool = True) -> DrivetrainSweep:
     """Sweep the pinion speed [rpm] of a built drivetrain case (a :class:`~thermogear.drivetrain.case_model.
-    CaseDrivetrain` holding ``models``; module docstring). ``progress(count)`` is called as
+    CaseDrivetrain` holding ``models``; ``origin`` its case's name, source and document). ``progress(count)`` is
+    called as
     speeds finish. ``workers`` (default: the cores) processes are started by the "spawn" method, so a script that
     calls this at its top level needs Python's ``if __name__ == "__main__":`` guard; ``processes=False``
     computes in this process instead, with its BLAS threads as they are (measured 7× the CPU time on a busy
@@ -130,7 +144,7 @@ def drivetrain_speed_sweep(built, speeds: np.ndarray, models: tuple[str, ...], w
     if speeds.ndim != 1 or speeds.size == 0 or np.any(speeds <= 0.0) or not np.all(np.isfinite(speeds)):
         raise CaseError("speed_rpm", speeds.tolist(), "positive, finite speeds [rpm]",
                         "a speed sweep of the drivetrain")
-    case, section = built.case, built.section
+    section = built.section
     missing = [model for model in models if model not in built.drivetrains]
     if missing:
         raise CaseError("models", ", ".join(missing), ", ".join(built.drivetrains),
@@ -138,7 +152,7 @@ def drivetrain_speed_sweep(built, speeds: np.ndarray, models: tuple[str, ...], w
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         resonances = {model: [r for r in resonance_speeds(mode_table(built.modes(model), built.drivetrains[model]),
-                                                          case.gear_pair.pinion.teeth, section.bearing_harmonics)
+                                                          built.teeth, section.bearing_harmonics)
                               if speeds.min() <= r["speed_rpm"] <= speeds.max()] for model in models}
     bearings = [bearing.name for bearing in built.drivetrains["elastic"].bearings]
     chunks = [speeds[i:i + _SPEEDS_PER_TASK].tolist() for i in range(0, speeds.size, _SPEEDS_PER_TASK)]
@@ -157,7 +171,7 @@ def drivetrain_speed_sweep(built, speeds: np.ndarray, models: tuple[str, ...], w
             if progress is not None:
                 progress(len(chunks[index]))
 
-        worker_map(built, models, _compute_chunk, [(models, chunk) for chunk in chunks], workers, done)
+        worker_map(origin, models, _compute_chunk, [(models, chunk) for chunk in chunks], workers, done)
     points = [point for index in range(len(chunks)) for point in results[index]]
     harmonics = section.bearing_harmonics
     shape = (len(models), speeds.size)
@@ -183,9 +197,9 @@ def drivetrain_speed_sweep(built, speeds: np.ndarray, models: tuple[str, ...], w
                                           field("bearing_harmonics", (len(bearings), harmonics)))},
         coords={"model": list(models), "speed_rpm": speeds, "bearing": bearings,
                 "harmonic": np.arange(1, harmonics + 1)},
-        attrs={"case": case.name, "kind": "drivetrain speed sweep", "mesh": "linear (permanent contact)",
+        attrs={"case": origin.name, "kind": "drivetrain speed sweep", "mesh": "linear (permanent contact)",
                "points_per_period": section.sweep_points_per_period, "response_cutoff_hz": section.response_cutoff_hz,
-               "resonances": json.dumps(resonances), "load_held": case.operating_point.load_held})
+               "resonances": json.dumps(resonances), "load_held": origin.load_held})
     for name, unit in (("kv", "-"), ("dte_rms_um", "um"), ("dte_peak_to_peak_um", "um"),
                        ("bearing_dynamic_rms_n", "N"), ("bearing_harmonic_amplitude_n", "N")):
         dataset[name].attrs["units"] = unit
