@@ -84,7 +84,7 @@ def _branch_points(built, model: str, states: dict[int, Any], direction: str,
                    progress: Callable[[int], None] | None) -> dict[int, dict[str, Any]]:
     """The points of one model and direction: the continuation over the speeds whose state was built, then the
     response at each speed where the orbit was found."""
-    from thermogear.drivetrain.backlash_response import drivetrain_backlash_response
+    from thermogear.drivetrain.backlash_response import SHOOTING_TOLERANCE, drivetrain_backlash_response
     from thermogear.drivetrain.backlash_sweep import drivetrain_backlash_branch
 
     section = built.section
@@ -92,8 +92,8 @@ def _branch_points(built, model: str, states: dict[int, Any], direction: str,
     assembled = built.assembled(model)
     try:
         branch = drivetrain_backlash_branch(assembled, [states[i] for i in order], direction, substeps=SUBSTEPS,
-                                            cutoff_hz=section.response_cutoff_hz, progress=progress,
-                                            measure_swing=False)
+                                            tolerance=SHOOTING_TOLERANCE, cutoff_hz=section.response_cutoff_hz,
+                                            progress=progress, measure_swing=False)
     except _FAILURES as error:  # a speed whose system cannot be built takes the branch down: find it, go on
         bad = _unbuildable(assembled, states, section.response_cutoff_hz)
         if not bad or len(bad) == len(order):  # not one speed's fault (e.g. the backlash unknown), or all of them
