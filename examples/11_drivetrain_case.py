@@ -26,7 +26,7 @@ import numpy as np  # noqa: E402
 
 from thermogear import load_case  # noqa: E402
 from thermogear.drivetrain.case_model import case_drivetrain, heat_table, mode_table  # noqa: E402
-from thermogear.sweep.drivetrain_speeds import drivetrain_speed_sweep  # noqa: E402
+from thermogear.sweep.drivetrain_speeds import SweepOrigin, drivetrain_speed_sweep  # noqa: E402
 
 SPEEDS = np.linspace(1000.0, 14000.0, 53)  # pinion speeds [rpm]: 250 rpm steps, through the lateral resonances
 
@@ -39,7 +39,8 @@ def main(out: Path) -> dict:
         built = case_drivetrain(case)
         cold = mode_table(built.modes("elastic"), built.drivetrains["elastic"])
         heat = heat_table(built.heat_shifts(), built.drivetrains["elastic"])
-        sweep = drivetrain_speed_sweep(case, SPEEDS, ("elastic", "thermal"), workers=2)
+        origin = SweepOrigin(case.name, str(case.source), case.document, case.operating_point.load_held)
+        sweep = drivetrain_speed_sweep(built, origin, SPEEDS, ("elastic", "thermal"), workers=2)
     data = sweep.dataset
     first = data["bearing_harmonic_amplitude_n"].sel(harmonic=1).max("bearing")  # largest bearing, 1× mesh
     teeth = case.gear_pair.pinion.teeth

@@ -124,8 +124,24 @@ def check_load_range(normal_load: float, face_width: float, operating: dict) -> 
                     "flank's roughness: the transmission error has no meaning and the solvers lose the orbit")
 
 
+def check_bearing_clearance(drivetrain, mesh: str) -> None:
+    """Refuse a bearing's radial clearance under the linear mesh: the clearance is a dead zone, which only the
+    backlash solver of the nonlinear mesh takes; the linear drivetrain in permanent contact would ignore it.
+    ``drivetrain`` the [drivetrain] section or None, ``mesh`` the case's ``dynamics.mesh``."""
+    if drivetrain is None or mesh == "nonlinear":
+        return
+    for bearing in drivetrain.bearings:
+        if bearing.radial_clearance_um > 0.0:
+            raise CaseError(f"drivetrain.bearings '{bearing.name}'.radial_clearance_um", bearing.radial_clearance_um,
+                            "0 (the bearing in permanent contact) with dynamics.mesh = 'linear'",
+                            "with a clearance the bearing is a dead zone, which the linear mesh in permanent "
+                            "contact cannot represent; set dynamics.mesh = 'nonlinear' to solve the drivetrain's "
+                            "backlash orbit with the clearance")
+
+
 def check_model_limits(case) -> None:
     """Every limit of this module, in order (called by :func:`thermogear.case.check_case`)."""
     check_fillet_fit(case.gear_pair)
     check_load_range(case.normal_load, case.gear_pair.face_width, case.document.get("operating", {}))
     check_dynamic_range(case.gear_pair, case.material, case.operating_point.speed_rpm, case.inertias)
+    check_bearing_clearance(case.drivetrain, case.dynamics.mesh)

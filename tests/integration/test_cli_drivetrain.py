@@ -61,8 +61,9 @@ def test_check_and_run_refuse_a_bearing_off_its_shaft_the_same_way(tmp_path):
     assert answers[0].stderr == answers[1].stderr
 
 
-def test_check_run_and_sweep_refuse_a_bearing_clearance_with_the_reason(tmp_path):
-    # the linear drivetrain cannot represent a clearance: every command refuses it at load time, none ignores it
+def test_check_run_and_sweep_refuse_a_bearing_clearance_under_the_linear_mesh(tmp_path):
+    # the worked case's mesh is linear, which cannot represent a clearance: every command refuses it at load time,
+    # none ignores it, and the reason says which mesh takes it
     text = TWO_SHAFTS.read_text(encoding="utf-8").replace("position_mm = 300.0",
                                                           "position_mm = 300.0\nradial_clearance_um = 15.0")
     case = tmp_path / "clearance.toml"
@@ -73,8 +74,62 @@ def test_check_run_and_sweep_refuse_a_bearing_clearance_with_the_reason(tmp_path
     for answer in answers:
         assert answer.returncode != 0 and "Traceback" not in answer.stderr, answer.stderr
         assert "drivetrain.bearings 'wheel bearing B'.radial_clearance_um = 15" in answer.stderr, answer.stderr
-        assert "drivetrain_backlash_system" in answer.stderr
+        assert "dynamics.mesh = 'nonlinear'" in answer.stderr
     assert not (tmp_path / "x.zarr").exists()
+
+
+def _nonlinear_case(tmp_path, clearance_um: float = 0.0) -> Path:
+    """The worked case with the nonlinear (backlash) mesh and, optionally, a clearance in one wheel bearing."""
+    text = TWO_SHAFTS.read_text(encoding="utf-8")
+    assert 'mesh = "linear"' in text
+    text = text.replace('mesh = "linear"', 'mesh = "nonlinear"')
+    if clearance_um:
+        text = text.replace("position_mm = 300.0", f"position_mm = 300.0\nradial_clearance_um = {clearance_um}")
+    case = tmp_path / "nonlinear.toml"
+    case.write_text(text, encoding="utf-8")
+    return case
+
+
+@pytest.mark.slow
+def test_run_solves_the_backlash_drivetrain_with_a_bearing_clearance(tmp_path):
+    # the nonlinear mesh takes a bearing clearance (accepted at load), and run reports the backlash orbit: found,
+    # its contact loss and back-flank contact, Kv from it; the linear keys keep their meaning; the table says so
+    import io
+
+    from rich.console import Console
+
+    from thermogear.cli.run_drivetrain import print_drivetrain
+
+    case = _nonlinear_case(tmp_path, clearance_um=2.0)
+    assert _cli("check", str(case)).returncode == 0
+    result = _cli("run", str(case), "--model", "elastic", "--json")
+    assert result.returncode == 0, result.stderr
+    drivetrain = json.loads(result.stdout)["drivetrain"]
+    assert drivetrain["backlash_mesh"] and drivetrain["mesh"] == "nonlinear (backlash) on the drivetrain"
+    elastic = drivetrain["models"]["elastic"]
+    assert elastic["converged"] and elastic["failure"] == "" and elastic["stable"]
+    assert 0.0 <= elastic["contact_loss_fraction"] < 1.0 and elastic["back_side_contact"] in (True, False)
+    assert elastic["kv"] > 1.0 and elastic["dte_rms_um"] > 0.0
+    assert not any("permanent contact" in note for note in drivetrain["notes"])
+    # the clearance lets the wheel shaft move inside ±2 μm: its bearing still carries the mean load
+    assert elastic["bearing_forces"]["wheel bearing B"]["mean_radial_n"] > 0.0
+    buffer = io.StringIO()
+    print_drivetrain(drivetrain, Console(file=buffer, width=200))
+    text = buffer.getvalue()
+    for words in ("mesh nonlinear (backlash)", "time without contact", "back flanks struck",
+                  "periodic orbit found (stable)"):
+        assert words in text, words
+
+
+@pytest.mark.slow
+def test_run_transient_on_a_drivetrain_case_reports_the_last_period_from_rest(tmp_path):
+    result = _cli("run", str(TWO_SHAFTS), "--model", "elastic", "--method", "transient", "--json")
+    assert result.returncode == 0, result.stderr
+    drivetrain = json.loads(result.stdout)["drivetrain"]
+    assert drivetrain["transient"] and "periods from rest" in drivetrain["mesh"]
+    elastic = drivetrain["models"]["elastic"]
+    assert elastic["transient_periods"] >= 1 and elastic["kv"] > 1.0
+    assert elastic["largest_floquet_multiplier_abs"] is None  # no orbit: no multipliers said
 
 
 @pytest.mark.slow
@@ -128,3 +183,33 @@ def test_the_report_has_a_drivetrain_section_and_summary_json_its_numbers(tmp_pa
     # run --json and the report's summary.json carry the same drivetrain numbers (computed once, by the report)
     assert summary["drivetrain"] == payload["drivetrain"]
     assert len(summary["drivetrain"]["heat"]) == 12
+
+
+def test_a_drivetrain_orbit_not_found_prints_no_number_and_says_why():
+    # a backlash drivetrain whose shooting failed: every number of the model reads "not found", the orbit row "NO",
+    # and the reason is printed (table and report alike), never a value labelled valid
+    import io
+
+    from rich.console import Console
+
+    from thermogear.cli.run_drivetrain import print_drivetrain
+    from thermogear.report.drivetrain_section import drivetrain_section
+
+    unknown = {"mean_radial_n": None, "dynamic_rms_n": None, "harmonic_hz": [500.0], "harmonic_amplitude_n": [None]}
+    model = {"kv": None, "dte_rms_um": None, "dte_peak_to_peak_um": None, "largest_floquet_multiplier_abs": None,
+             "stable": False, "converged": False, "failure": "Newton stopped at residual 0.3 > 1e-08",
+             "contact_loss_fraction": None, "back_side_contact": None, "back_contact_fraction": None,
+             "switches_per_period": None, "bearing_forces": {"bearing A": unknown},
+             "modes": [{"frequency_hz": 900.0, "label": "torsional", "mesh_share": 0.9, "mesh_dominated": True,
+                        "energy_shares": {"mesh": 0.9}, "element_shares": {}}], "resonances": []}
+    data = {"degrees_of_freedom": 12, "response_cutoff_hz": 3e4, "mesh": "nonlinear (backlash) on the drivetrain",
+            "backlash_mesh": True, "transient": False, "solved_on": "every DOF", "notes": [],
+            "models": {"elastic": model}}
+    buffer = io.StringIO()
+    print_drivetrain(data, Console(file=buffer, width=200))
+    text = buffer.getvalue()
+    assert "no periodic orbit — Newton stopped" in text and "periodic orbit found (stable)" in text
+    kv_row = next(line for line in text.splitlines() if "│ Kv" in line)
+    assert "not found" in kv_row and not any(character.isdigit() for character in kv_row)
+    page = drivetrain_section(data)
+    assert "no periodic orbit — Newton stopped" in page and "<td class=num>NO</td>" in page

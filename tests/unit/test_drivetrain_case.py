@@ -235,12 +235,14 @@ def test_the_results_hold_modes_bearing_forces_and_what_heat_moved():
 
 @pytest.mark.slow
 def test_the_speed_sweep_in_worker_processes_equals_the_one_in_this_process():
-    from thermogear.sweep.drivetrain_speeds import drivetrain_speed_sweep
+    from thermogear.sweep.drivetrain_speeds import SweepOrigin, drivetrain_speed_sweep
 
     case = _load(_document())
     speeds = np.array([1500.0, 4000.0, 9300.0])
-    here = drivetrain_speed_sweep(case, speeds, ("elastic",), processes=False).dataset
-    there = drivetrain_speed_sweep(case, speeds, ("elastic",), workers=2).dataset
+    built = case_drivetrain(case, ("elastic",))
+    origin = SweepOrigin(case.name, str(case.source), case.document, case.operating_point.load_held)
+    here = drivetrain_speed_sweep(built, origin, speeds, ("elastic",), processes=False).dataset
+    there = drivetrain_speed_sweep(built, origin, speeds, ("elastic",), workers=2).dataset
     for name in ("kv", "dte_rms_um", "bearing_harmonic_amplitude_n"):
         # the same arithmetic; only the BLAS thread count differs (summation order: ~1e-15 per operation)
         np.testing.assert_allclose(there[name].values, here[name].values, rtol=1e-9, err_msg=name)
@@ -250,7 +252,6 @@ def test_the_speed_sweep_in_worker_processes_equals_the_one_in_this_process():
     # mean mesh stiffness does not change with speed, as under this case's constant torque: rounding only
     # (measured 5e-12 Kv, 8e-12 DTE, 9e-11 bearing harmonics over 8 speeds of this case; 6e-13, 8e-13, 2e-11 on
     # the FZG rig set). 1e-9 lets rounding through but not a different basis (truncated modes: ~1e-4 at worst)
-    built = case_drivetrain(case, ("elastic",))
     for index, speed in enumerate(speeds):
         single = built.response("elastic", float(speed), case.drivetrain.sweep_points_per_period)
         assert here["kv"].values[0, index] == pytest.approx(single.kv, rel=1e-9)
@@ -261,10 +262,12 @@ def test_the_speed_sweep_in_worker_processes_equals_the_one_in_this_process():
 def test_one_failing_speed_leaves_the_sweeps_other_speeds_computed():
     # at 1e-12 rpm the mesh period is ~1e11 s and the transition matrix overflows: the shared solve of the task
     # fails, each speed is then solved on its own, and only that speed is marked, with the reason
-    from thermogear.sweep.drivetrain_speeds import drivetrain_speed_sweep
+    from thermogear.sweep.drivetrain_speeds import SweepOrigin, drivetrain_speed_sweep
 
     case = _load(_document())
-    dataset = drivetrain_speed_sweep(case, np.array([1500.0, 1e-12, 4000.0]), ("elastic",),
+    built = case_drivetrain(case, ("elastic",))
+    origin = SweepOrigin(case.name, str(case.source), case.document, case.operating_point.load_held)
+    dataset = drivetrain_speed_sweep(built, origin, np.array([1500.0, 1e-12, 4000.0]), ("elastic",),
                                      processes=False).dataset
     status = dataset["status"].values[0]
     assert status[1].startswith("not computed: the periodic solve failed") and not dataset["valid"].values[0, 1], \

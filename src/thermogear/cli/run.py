@@ -136,8 +136,13 @@ def run(
         thermoelastic = _thermoelastic_summary(MeshModel(case, THERMAL)) if THERMAL in models else None
     messages = [text for name, response in responses.items() for text in model_messages(response, name)]
     from thermogear.cli.run_drivetrain import drivetrain_outputs, print_drivetrain  # [drivetrain] (issue 27)
+    from thermogear.drivetrain.case_model import drivetrain_builder
 
-    drivetrain = drivetrain_outputs(case, models, outcome if out is not None else None, responses)
+    build = drivetrain_builder(case, models)
+    steps = [f"drivetrain, {name} model" for name in models] if build is not None and out is None else []
+    with step_progress(steps, quiet or as_json or not steps, error_console) as advance:
+        drivetrain = drivetrain_outputs(build, models, outcome if out is not None else None, responses,
+                                        transient=method == "transient", progress=advance)
     if csv is not None:
         from thermogear.cli.export import responses_csv
 

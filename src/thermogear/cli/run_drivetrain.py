@@ -8,21 +8,24 @@ from typing import Any
 __all__ = ["drivetrain_outputs", "print_drivetrain"]
 
 
-def drivetrain_outputs(case, models: tuple[str, ...], outcome=None, responses=None) -> dict[str, Any] | None:
-    """The drivetrain results of ``case`` (None without a ``[drivetrain]``): those the report computed when there
-    is one (``outcome``), computed here otherwise. Where the pair's own ``responses`` find the teeth separating,
-    a note says that the drivetrain's numbers assume permanent contact."""
-    if case.drivetrain is None:
+def drivetrain_outputs(build, models: tuple[str, ...], outcome=None, responses=None, transient: bool = False,
+                       progress=None) -> dict[str, Any] | None:
+    """The drivetrain results (None without a ``[drivetrain]``: ``build`` None, else the function that builds the
+    case's CaseDrivetrain, :func:`~thermogear.drivetrain.case_model.drivetrain_builder`): those the report computed
+    when there is one (``outcome``), computed here otherwise (``transient``: the last period of the motion from
+    rest; ``progress`` called before each model). Where the drivetrain's mesh was linear and the pair's own
+    ``responses`` find the teeth separating, a note says that the drivetrain's numbers assume permanent contact."""
+    if build is None:
         return None
     if outcome is not None and getattr(outcome.evaluation, "drivetrain", None) is not None:
         data = outcome.evaluation.drivetrain
     else:
         from thermogear.report.drivetrain_section import drivetrain_report_data
 
-        data = drivetrain_report_data(case, models)
+        data = drivetrain_report_data(build, models, transient, progress)
     separated = [name for name, response in (responses or {}).items()
                  if response.metrics.get("contact_loss", {}).get("detected")]
-    if separated and "notes" in data:
+    if separated and "notes" in data and not data.get("backlash_mesh"):
         data = {**data, "notes": [*data["notes"], f"drivetrain: the pair's {' and '.join(separated)} model finds "
                                   "the teeth separating; the drivetrain's numbers assume permanent contact (linear "
                                   "mesh) and overstate the mesh force there"]}
@@ -67,15 +70,22 @@ def print_drivetrain(data: dict[str, Any] | None, console) -> None:
                                f"{r['label']}{' *' if r['mesh_dominated'] else ''}, {name})"
                                for name, model in models.items() for r in model["resonances"]) or "none"),
                   highlight=False)
-    response = Table(title=f"drivetrain response (mesh {data['mesh']}; modes up to {data['response_cutoff_hz']:.0f} "
-                           "Hz)", header_style="bold")
+    response = Table(title=f"drivetrain response (mesh {data['mesh']}; {data['solved_on']})", header_style="bold")
     for column in ("quantity", *models, "unit"):
         response.add_column(column, justify="left" if column in ("quantity", "unit") else "right")
-    for label, key, pattern, unit in (("Kv", "kv", "{:.4f}", "–"), ("DTE RMS", "dte_rms_um", "{:.3f}", "μm"),
-                                      ("DTE peak-to-peak", "dte_peak_to_peak_um", "{:.3f}", "μm"),
-                                      ("largest |Floquet multiplier|", "largest_floquet_multiplier_abs", "{:.4f}",
-                                       "–")):
+    rows = [("Kv", "kv", "{:.4f}", "–"), ("DTE RMS", "dte_rms_um", "{:.3f}", "μm"),
+            ("DTE peak-to-peak", "dte_peak_to_peak_um", "{:.3f}", "μm")]
+    if not data.get("transient"):
+        rows.append(("largest |Floquet multiplier|", "largest_floquet_multiplier_abs", "{:.4f}", "–"))
+    for label, key, pattern, unit in rows:
         response.add_row(label, *(_number(model[key], pattern) for model in models.values()), unit)
+    if data.get("backlash_mesh"):
+        response.add_row("time without contact", *(_number(_percent(model["contact_loss_fraction"]), "{:.2f}")
+                                                   for model in models.values()), "%")
+        response.add_row("back flanks struck", *(_yes_no(model["back_side_contact"]) for model in models.values()),
+                         "")
+    if data.get("backlash_mesh") and not data.get("transient"):
+        response.add_row("periodic orbit found (stable)", *(_found(model) for model in models.values()), "")
     for bearing in first["bearing_forces"]:
         forces = {name: model["bearing_forces"][bearing] for name, model in models.items()}
         response.add_section()
@@ -85,5 +95,23 @@ def print_drivetrain(data: dict[str, Any] | None, console) -> None:
             response.add_row(f"{bearing}: {j + 1}× mesh ({frequency:.0f} Hz)",
                              *(_number(f["harmonic_amplitude_n"][j], "{:.2f}") for f in forces.values()), "N")
     console.print(response)
+    for name, model in models.items():
+        if model.get("failure"):
+            console.print(f"drivetrain, {name} model: no periodic orbit — {model['failure']}", highlight=False)
     for note in data.get("notes", []):
         console.print(f"note: {note}", highlight=False)
+
+
+def _percent(value):
+    return None if value is None else 100.0 * value
+
+
+def _yes_no(value) -> str:
+    return "not found" if value is None else "yes" if value else "no"
+
+
+def _found(model: dict[str, Any]) -> str:
+    """'yes' for a converged stable orbit, 'yes (unstable)', or 'NO' where none was found."""
+    if not model.get("converged"):
+        return "NO"
+    return "yes" if model.get("stable") else "yes (unstable)"

@@ -71,11 +71,24 @@ def sweep(
             raise CaseError("vary", None, "--vary NAME=VALUES (repeatable) or a [sweep] table in the case file",
                             "a sweep needs something to vary")
         chosen_model = model or (section.model if section is not None else None)
-        if loaded.drivetrain is not None:  # per-speed path on the drivetrain's modal reduction (issue 27)
-            from thermogear.cli.sweep_drivetrain import run_drivetrain_sweep
+        if loaded.drivetrain is not None:  # the drivetrain's speed sweep (issue 27): linear or backlash mesh
+            import warnings
 
-            run_drivetrain_sweep(loaded, definition, out, chosen_model or "both", overwrite, resume, plot, progress,
-                                 as_json, workers, console, error_console)
+            from thermogear.cli.sweep_drivetrain import drivetrain_models, run_drivetrain_sweep
+            from thermogear.drivetrain.case_model import case_drivetrain
+            from thermogear.sweep.drivetrain_speeds import SweepOrigin
+
+            if multistart:
+                raise CaseError("--multistart", multistart, "0 for a case with a [drivetrain]",
+                                "the drivetrain sweep follows the orbit in speed; the state search is the pair's")
+            models = drivetrain_models(chosen_model or "both")
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")  # the case's warnings are its checks'; the sweep states its own
+                built = case_drivetrain(loaded, models)
+            origin = SweepOrigin(loaded.name, str(loaded.source), loaded.document,
+                                 loaded.operating_point.load_held)
+            run_drivetrain_sweep(built, origin, models, definition, out, overwrite, resume, plot, progress, as_json,
+                                 workers, console, error_console, direction)
             return
         chunks = chunk_points or (section.chunk_points if section is not None else None)
         if stored is not None:

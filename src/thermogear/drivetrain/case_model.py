@@ -19,7 +19,8 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import Any
+from functools import partial
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -32,7 +33,12 @@ from thermogear.errors import CaseError
 from thermogear.mesh.model import MeshModel
 from thermogear.thermoelastic.materials import MODULUS_REFERENCE_C, MODULUS_TEMPERATURE_COEFFICIENTS_PER_K
 
-__all__ = ["MESH_COUPLED_SHARE", "MESH_DOMINATED_SHARE", "CaseDrivetrain", "bearing_force_summary", "case_drivetrain",
+if TYPE_CHECKING:
+    from thermogear.drivetrain.backlash_response import DrivetrainBacklashResponse
+    from thermogear.drivetrain.transient_response import DrivetrainTransient
+
+__all__ = ["BACKLASH_CUTOFF_HZ", "BACKLASH_SUBSTEPS_PER_PERIOD", "MESH_COUPLED_SHARE", "MESH_DOMINATED_SHARE",
+           "CaseDrivetrain", "backlash_substeps", "bearing_force_summary", "case_drivetrain", "drivetrain_builder",
            "drivetrain_results", "heat_table", "mode_table", "resonance_speeds"]
 
 #: A mode is "mesh-dominated" when the mesh holds more than this share of its strain energy: a threshold chosen
@@ -47,6 +53,22 @@ MESH_COUPLED_SHARE = 0.01
 #: Samples per mesh-grid interval of the periodic response (the bearing-force RMS is a trapezoidal integral over
 #: them; the harmonics come from the exact orbit resampled uniformly).
 SAMPLES_PER_PIECE = 4
+#: The backlash drivetrain of ``run`` is solved on every DOF (None): the modal cut-off was measured against the full
+#: system on fzg_rig_type_c (docs/drivetrain.md) and is not used by default.
+BACKLASH_CUTOFF_HZ = None
+#: Sub-steps per mesh period on which the backlash shooting looks for contact switches: T/2048 is short against the
+#: mesh modes (fzg_rig_type_c: 0.84 μs at 2175 rpm against the 149 μs period of its 6.7 kHz torsional mode), and a
+#: switch missed within a sub-step is caught by the odd-crossing guard, which refines them.
+BACKLASH_SUBSTEPS_PER_PERIOD = 2048
+
+
+def backlash_substeps(pieces: int) -> int:
+    """Sub-steps per piece: :data:`BACKLASH_SUBSTEPS_PER_PERIOD` over the period, a multiple of
+    :data:`SAMPLES_PER_PIECE` (the samples then fall on the flow's own sub-step ends, at no cost)."""
+    wanted = math.ceil(BACKLASH_SUBSTEPS_PER_PERIOD / max(pieces, 1))
+    return SAMPLES_PER_PIECE * max(1, math.ceil(wanted / SAMPLES_PER_PIECE))
+
+
 #: Uniform samples per period for the bearing-force harmonics (the first mesh harmonics need far fewer).
 SPECTRUM_POINTS = 256
 
@@ -107,18 +129,23 @@ def resonance_speeds(rows: list[dict[str, Any]], teeth: int, harmonics: int) -> 
 
 @dataclass(frozen=True, eq=False)
 class CaseDrivetrain:
-    """The drivetrain of a case in the states of its mesh models: ``drivetrains`` model → Drivetrain, ``models``
-    model → MeshModel, ``notes`` what was assumed (shaft temperatures)."""
+    """The drivetrain of a case in the states of its mesh models: ``section`` the case's [drivetrain] section,
+    ``dynamics`` its [dynamics] section (mesh, method, points per period, transient periods), ``teeth`` the
+    pinion's, ``drivetrains`` model → Drivetrain, ``models`` model → MeshModel, ``notes`` what was assumed (shaft
+    temperatures)."""
 
-    case: Any
+    section: Any
+    dynamics: Any
+    teeth: int
     drivetrains: dict[str, Drivetrain]
     models: dict[str, MeshModel]
     notes: tuple[str, ...] = ()
     _assembled: dict = field(default_factory=dict, repr=False)
 
     @property
-    def section(self):
-        return self.case.drivetrain
+    def backlash_mesh(self) -> bool:
+        """Whether the drivetrain's mesh may separate (the case's ``dynamics.mesh`` is nonlinear)."""
+        return self.dynamics.mesh == "nonlinear"
 
     def assembled(self, model: str):
         """The assembled drivetrain of one model (cached)."""
@@ -134,9 +161,29 @@ class CaseDrivetrain:
                  points_per_period: int | None = None) -> DrivetrainResponse:
         """Exact periodic response to one mesh period of ``model`` at a pinion speed [rpm] (default the case's)."""
         state = self.models[model].state(speed_rpm=speed_rpm,
-                                         points_per_period=points_per_period or self.case.dynamics.points_per_period)
+                                         points_per_period=points_per_period or self.dynamics.points_per_period)
         return drivetrain_periodic_response(self.assembled(model), state, samples_per_piece=SAMPLES_PER_PIECE,
                                             cutoff_hz=self.section.response_cutoff_hz)
+
+    def backlash_response(self, model: str, speed_rpm: float | None = None,
+                          initial_state: np.ndarray | None = None) -> DrivetrainBacklashResponse:
+        """The periodic orbit with the backlash mesh (and the bearings' clearances) of ``model`` at a pinion speed
+        [rpm] (default the case's), on every DOF (:data:`BACKLASH_CUTOFF_HZ`)."""
+        from thermogear.drivetrain.backlash_response import drivetrain_backlash_response
+
+        state = self.models[model].state(speed_rpm=speed_rpm, points_per_period=self.dynamics.points_per_period)
+        return drivetrain_backlash_response(self.assembled(model), state, initial_state,
+                                            substeps=backlash_substeps(state.grid.nodes.size - 1),
+                                            samples_per_piece=SAMPLES_PER_PIECE, cutoff_hz=BACKLASH_CUTOFF_HZ)
+
+    def transient(self, model: str) -> DrivetrainTransient:
+        """The motion from rest over the case's ``dynamics.transient_periods`` mesh periods, with the backlash mesh
+        where the case's mesh is nonlinear, else in permanent contact."""
+        from thermogear.drivetrain.transient_response import drivetrain_transient
+
+        state = self.models[model].state(points_per_period=self.dynamics.points_per_period)
+        return drivetrain_transient(self.assembled(model), state, self.dynamics.transient_periods,
+                                    backlash=self.backlash_mesh, samples_per_piece=SAMPLES_PER_PIECE)
 
     def speed_responses(self, model: str, speeds_rpm: list[float], points_per_period: int,
                         failures: tuple[type[Exception], ...]) -> list[DrivetrainResponse | Exception]:
@@ -216,7 +263,16 @@ def case_drivetrain(case, models: tuple[str, ...] = ("elastic", "thermal")) -> C
                          "the mesh keeps its cold geometry, only its stiffness changes")
         warm = WarmState(temperatures, beta, mesh_stiffness=hot_stiffness, **geometry)
         drivetrains["thermal"] = warm_drivetrain(cold, warm)
-    return CaseDrivetrain(case, drivetrains, mesh_models, tuple(notes))
+    return CaseDrivetrain(section, case.dynamics, case.gear_pair.pinion.teeth, drivetrains, mesh_models, tuple(notes))
+
+
+def drivetrain_builder(case, models: tuple[str, ...] = ("elastic", "thermal")):
+    """None for a case without a [drivetrain], else a function of no argument that builds its
+    :class:`CaseDrivetrain` (:func:`case_drivetrain`) when called — so that whoever reports the results can say
+    why the build failed."""
+    if case.drivetrain is None:
+        return None
+    return partial(case_drivetrain, case, models)
 
 
 def _response_summary(response: DrivetrainResponse, harmonics: int) -> dict[str, Any]:
@@ -242,21 +298,78 @@ def heat_table(shifts: ModeShifts, drivetrain: Drivetrain) -> list[dict[str, Any
              "dominant_cause": names[shifts.dominant_cause(i)]} for i in range(shifts.exact.size)]
 
 
-def drivetrain_results(case, models: tuple[str, ...] = ("elastic", "thermal")) -> dict[str, Any]:
-    """Everything ``run`` reports of a case's drivetrain, as plain numbers (JSON-ready): per model the modes
-    (:func:`mode_table`), the response (Kv, DTE, Floquet stability, bearing forces) and the speeds where mesh
-    harmonics meet mesh-dominated modes; with both models, what heat moved per mode (:func:`heat_table`)."""
-    built = case_drivetrain(case, models)
-    section = case.drivetrain
-    teeth = case.gear_pair.pinion.teeth
+def _backlash_summary(response: DrivetrainBacklashResponse, harmonics: int) -> dict[str, Any]:
+    """The backlash orbit's numbers: those of the linear summary, None where the orbit was not found (with the
+    reason), and the contact it makes."""
+    metrics, found = response.metrics, response.converged
+    multipliers = np.abs(response.multipliers)
+
+    def shown(key: str, scale: float = 1.0):
+        value = metrics.get(key)
+        return None if not found or value is None or not math.isfinite(value) else scale * value
+
+    if found:
+        forces = bearing_force_summary(response, harmonics)
+    else:  # no orbit: every force is unknown
+        frequency = 1.0 / response.period
+        forces = {name: {"mean_radial_n": None, "dynamic_rms_n": None,
+                         "harmonic_hz": [j * frequency for j in range(1, harmonics + 1)],
+                         "harmonic_amplitude_n": [None] * harmonics} for name in response.bearing_names}
+    return {"kv": shown("kv"), "dte_rms_um": shown("dte_rms", 1e6), "dte_peak_to_peak_um": shown("dte_peak_to_peak",
+                                                                                                1e6),
+            "largest_floquet_multiplier_abs": float(multipliers.max()) if found and multipliers.size else None,
+            "stable": response.stable, "converged": bool(found), "failure": response.failure,
+            "contact_loss_fraction": shown("contact_loss_fraction"), "back_side_contact":
+                bool(metrics.get("back_side_contact")) if found else None,
+            "back_contact_fraction": shown("back_contact_fraction"),
+            "switches_per_period": shown("switches_per_period"), "bearing_forces": forces}
+
+
+def _transient_summary(transient: DrivetrainTransient, harmonics: int) -> dict[str, Any]:
+    """The last period of the motion from rest: Kv, DTE, contact and bearing forces (no orbit: no multipliers)."""
+    metrics = transient.last_period
+    return {"kv": metrics["kv"], "dte_rms_um": metrics["dte_rms"] * 1e6,
+            "dte_peak_to_peak_um": metrics["dte_peak_to_peak"] * 1e6, "largest_floquet_multiplier_abs": None,
+            "stable": None, "transient_periods": transient.periods,
+            "contact_loss_fraction": metrics["contact_loss_fraction"],
+            "back_side_contact": metrics["back_side_contact"],
+            "back_contact_fraction": metrics["back_contact_fraction"],
+            "bearing_forces": bearing_force_summary(transient.last_period_forces, harmonics)}
+
+
+def drivetrain_results(built: CaseDrivetrain, models: tuple[str, ...] = ("elastic", "thermal"),
+                       transient: bool = False, progress=None) -> dict[str, Any]:
+    """Everything ``run`` reports of a case's drivetrain (``built`` by :func:`case_drivetrain`), as plain numbers
+    (JSON-ready): per model the modes (:func:`mode_table`), the response (Kv, DTE, Floquet stability, bearing
+    forces; with the case's nonlinear mesh the backlash orbit, its contact loss and whether it was found; with
+    ``transient`` the last period of the motion from rest instead) and the speeds where mesh harmonics meet
+    mesh-dominated modes; with both models, what heat moved per mode (:func:`heat_table`). ``progress`` is called
+    with a step's name before each model's response."""
+    section = built.section
+    if transient:
+        mesh = (f"{'nonlinear (backlash)' if built.backlash_mesh else 'linear (permanent contact)'} on the "
+                f"drivetrain; last of {built.dynamics.transient_periods} periods from rest")
+    else:
+        mesh = ("nonlinear (backlash) on the drivetrain" if built.backlash_mesh
+                else "linear (permanent contact) on the drivetrain")
     result: dict[str, Any] = {
         "degrees_of_freedom": built.assembled("elastic").size, "response_cutoff_hz": section.response_cutoff_hz,
-        "mesh": "linear (permanent contact) on the drivetrain", "notes": list(built.notes), "models": {}}
+        "mesh": mesh, "backlash_mesh": built.backlash_mesh, "transient": bool(transient),
+        "solved_on": ("every DOF" if transient or (built.backlash_mesh and BACKLASH_CUTOFF_HZ is None)
+                      else f"modes up to {section.response_cutoff_hz:.0f} Hz"),
+        "notes": list(built.notes), "models": {}}
     for model in models:
+        if progress is not None:
+            progress(f"drivetrain, {model} model")
         rows = mode_table(built.modes(model), built.drivetrains[model])
-        result["models"][model] = {**_response_summary(built.response(model), section.bearing_harmonics),
-                                   "modes": rows,
-                                   "resonances": resonance_speeds(rows, teeth, section.bearing_harmonics)}
+        if transient:
+            summary = _transient_summary(built.transient(model), section.bearing_harmonics)
+        elif built.backlash_mesh:
+            summary = _backlash_summary(built.backlash_response(model), section.bearing_harmonics)
+        else:
+            summary = _response_summary(built.response(model), section.bearing_harmonics)
+        result["models"][model] = {**summary, "modes": rows,
+                                   "resonances": resonance_speeds(rows, built.teeth, section.bearing_harmonics)}
     if "elastic" in models and "thermal" in models:
         result["heat"] = heat_table(built.heat_shifts(), built.drivetrains["elastic"])
     return result

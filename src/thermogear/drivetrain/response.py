@@ -33,7 +33,7 @@ from thermogear.dynamics.spectra import harmonic_spectrum
 from thermogear.errors import CaseError
 from thermogear.mesh.state import MeshState
 
-__all__ = ["DrivetrainResponse", "drivetrain_backlash_system", "drivetrain_periodic_system",
+__all__ = ["DrivetrainResponse", "bearing_force_spectrum", "drivetrain_backlash_system", "drivetrain_periodic_system",
            "drivetrain_periodic_response", "drivetrain_speed_sweep"]
 
 
@@ -130,14 +130,20 @@ class DrivetrainResponse:
     def bearing_spectrum(self, name: str, points: int = 1024) -> tuple[np.ndarray, np.ndarray]:
         """(frequencies [Hz] of the mesh harmonics 0, f_m, 2f_m, …; amplitudes (3, harmonics) [N] in x, y, z) of
         one bearing's force on its housing; harmonic 0 is the mean (static) force."""
-        if name not in self.bearing_forces:
-            raise CaseError("bearing", name, f"one of {sorted(self.bearing_forces)}", "bearing forces by name")
-        amplitudes = []
-        for axis in range(3):
-            frequencies, values = harmonic_spectrum(self.time, self.bearing_forces[name][:, axis], self.period,
-                                                    points)
-            amplitudes.append(values)
-        return frequencies, np.array(amplitudes)
+        return bearing_force_spectrum(self.time, self.bearing_forces, name, self.period, points)
+
+
+def bearing_force_spectrum(time: np.ndarray, forces: dict[str, np.ndarray], name: str, period: float,
+                           points: int = 1024) -> tuple[np.ndarray, np.ndarray]:
+    """(frequencies [Hz] of the mesh harmonics 0, 1/T, 2/T, …; amplitudes (3, harmonics) [N] in x, y, z) of
+    ``forces[name]`` (S, 3) sampled at ``time`` over one ``period`` T [s]; harmonic 0 is the mean."""
+    if name not in forces:
+        raise CaseError("bearing", name, f"one of {sorted(forces)}", "bearing forces by name")
+    amplitudes = []
+    for axis in range(3):
+        frequencies, values = harmonic_spectrum(time, forces[name][:, axis], period, points)
+        amplitudes.append(values)
+    return frequencies, np.array(amplitudes)
 
 
 def drivetrain_periodic_response(assembled: AssembledDrivetrain, state: MeshState, samples_per_piece: int = 8,

@@ -7,11 +7,16 @@ over). Where that Newton fails or lands on an unstable orbit the branch has ende
 neighbour's state for ``run_in_periods`` periods of the exact flow (what a slowly swept gearbox does: it falls on the
 attractor that is left) and shot again from there. Up and down sweeps through the resonance then jump at different
 speeds (Kahraman & Singh, J. Sound Vib. 142 (1990) 49–75). Knows nothing of gears: matrices only.
+
+Systems solved on different bases of one full system (e.g. each speed's reduction) give ``coordinates``, each
+system's basis C_i (q = C_i η, q the full coordinates), and the full system's mass matrix as ``metric`` M: the
+neighbour's state then carries over by the M-orthogonal projection η_i = (C_iᵀ M C_i)⁻¹ C_iᵀ M C_j η_j of its
+positions and of its velocities, exact where the two bases span the same subspace.
 """
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -27,7 +32,8 @@ class BacklashBranchNDOF:
     """One entry per system in the order given: ``parameter`` labels (e.g. speed [rpm]); ``direction``;
     ``converged`` and ``stable``; ``run_in`` (the neighbour's orbit was lost and the point was run in);
     ``free_flight_fraction`` of the period out of contact [-]; ``peak_to_peak`` of the mesh coordinate wᵀq over the
-    orbit [m]; ``initial_state`` (m, 2n)."""
+    orbit [m]; ``initial_state`` (m, 2n) with n the largest system's size: system i's state (η, η̇) is the first
+    2·n_i entries of its row (systems on bases of different sizes, module docstring), NaN where not converged."""
 
     parameter: np.ndarray
     direction: str
@@ -55,10 +61,26 @@ def _peak_to_peak(system: BacklashSystem, state: np.ndarray, substeps: int) -> f
     return float(np.ptp(mesh))
 
 
+def _carry(state: np.ndarray, source: int, target: int, coordinates, metric) -> np.ndarray:
+    """The state (η, η̇) of system ``source`` in the coordinates of system ``target`` (module docstring)."""
+    if coordinates is None:
+        return state
+    weighted = coordinates[target].T @ metric
+    transfer = np.linalg.solve(weighted @ coordinates[target], weighted @ coordinates[source])
+    half = coordinates[source].shape[1]
+    return np.concatenate((transfer @ state[:half], transfer @ state[half:]))
+
+
 def follow_backlash_branch(systems: Sequence[BacklashSystem], direction: str = "up",
                            parameter: Sequence[float] | None = None, substeps: int = 8, run_in_periods: int = 200,
-                           tolerance: float = 1e-10, max_iterations: int = 30) -> BacklashBranchNDOF:
-    """Continuation over ``systems`` (ordered by speed) ``direction`` "up" or "down" (module docstring)."""
+                           tolerance: float = 1e-10, max_iterations: int = 30,
+                           coordinates: Sequence[np.ndarray] | None = None, metric: np.ndarray | None = None,
+                           progress: Callable[[int], None] | None = None,
+                           measure_swing: bool = True) -> BacklashBranchNDOF:
+    """Continuation over ``systems`` (ordered by speed) ``direction`` "up" or "down" (module docstring);
+    ``coordinates`` and ``metric`` for systems on different bases (module docstring); ``progress(1)`` is called
+    after each point. ``measure_swing=False`` leaves ``peak_to_peak`` NaN (and :meth:`BacklashBranchNDOF.jumps`
+    empty) and saves one recorded flow per point, for a caller that samples each orbit itself."""
     if direction not in ("up", "down"):
         raise ProblemError("direction", direction, "up | down", "sweep from the first system to the last or back")
     count = len(systems)
@@ -67,12 +89,21 @@ def follow_backlash_branch(systems: Sequence[BacklashSystem], direction: str = "
     labels = np.arange(count, dtype=float) if parameter is None else np.asarray(parameter, dtype=float)
     if labels.shape != (count,):
         raise ProblemError("parameter", f"shape {labels.shape}", f"({count},)", "one label per system")
-    size = 2 * systems[0].linear.size
+    sizes = [2 * system.linear.size for system in systems]
+    size = max(sizes)
+    if (coordinates is None and min(sizes) != size) or (coordinates is not None and (
+            metric is None or len(coordinates) != count or any(
+                basis.shape != (metric.shape[0], n // 2) for basis, n in zip(coordinates, sizes)))):
+        raise ProblemError("coordinates", "absent for systems of different sizes, or not one (N, n_i) basis per "
+                           "system with an (N, N) metric", "a basis per system and the metric",
+                           "the state carries over through the full system")
     converged, stable, run_in = (np.zeros(count, dtype=bool) for _ in range(3))
     fraction, peak, states = np.full(count, np.nan), np.full(count, np.nan), np.full((count, size), np.nan)
-    state = None
+    state, source = None, None
     for index in (range(count) if direction == "up" else range(count - 1, -1, -1)):
         system = systems[index]
+        if state is not None:  # the neighbour's state, in this system's coordinates
+            state, source = _carry(state, source, index, coordinates, metric), index
         try:
             orbit = backlash_periodic_orbit(system, state, substeps, tolerance, max_iterations)
             if not orbit.stable and state is not None:
@@ -81,12 +112,19 @@ def follow_backlash_branch(systems: Sequence[BacklashSystem], direction: str = "
                     start, _, _ = backlash_flow_ndof(system, start, substeps)
                 orbit = backlash_periodic_orbit(system, start, substeps, tolerance, max_iterations)
                 run_in[index] = True
-        except (ModelLimitError, ProblemError):
+        except (ModelLimitError, ProblemError, np.linalg.LinAlgError, ValueError):
+            # no orbit at this point (ValueError: SciPy's "Array must not contain infs or NaNs" of a flow that
+            # overflowed); the branch goes on from the last orbit found
+            if progress is not None:
+                progress(1)
             continue
         converged[index], stable[index] = orbit.converged, orbit.stable
         if orbit.converged:
-            state = orbit.initial_state
-            states[index] = state
+            state, source = orbit.initial_state, index
+            states[index, :state.size] = state
             fraction[index] = orbit.free_flight_time / system.linear.period
-            peak[index] = _peak_to_peak(system, state, substeps)
+            if measure_swing:
+                peak[index] = _peak_to_peak(system, state, substeps)
+        if progress is not None:
+            progress(1)
     return BacklashBranchNDOF(labels, direction, converged, stable, run_in, fraction, peak, states)

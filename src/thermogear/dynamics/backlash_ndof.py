@@ -23,7 +23,7 @@ against the fastest mode the mesh coordinate takes part in.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -31,9 +31,11 @@ from thermogear.dynamics.periodic_ndof import PiecewiseLinearSystem, periodic_re
 from thermogear.dynamics.problem import checked_array
 from thermogear.errors import ProblemError
 
-__all__ = ["BacklashSystem", "BacklashOrbitNDOF", "DeadZone", "backlash_flow_ndof", "backlash_periodic_orbit"]
+__all__ = ["BACK_CONTACT", "DRIVING_CONTACT", "FREE_FLIGHT", "BacklashSystem", "BacklashOrbitNDOF", "DeadZone",
+           "backlash_flow_ndof", "backlash_periodic_orbit", "odd_crossings"]
 
-_DRIVE, _FREE, _BACK = 0, 1, 2
+DRIVING_CONTACT, FREE_FLIGHT, BACK_CONTACT = 0, 1, 2  # the mesh's contact regions (driving flanks, none, back flanks)
+_DRIVE, _FREE, _BACK = DRIVING_CONTACT, FREE_FLIGHT, BACK_CONTACT
 
 
 @dataclass(frozen=True, eq=False)
@@ -133,7 +135,9 @@ class BacklashSystem:
 def backlash_flow_ndof(system: BacklashSystem, state: np.ndarray, substeps: int = 16,
                        record: bool = False) -> tuple[np.ndarray, np.ndarray, dict]:
     """φ_T(state): end state (2n,), monodromy (2n, 2n) and {"switches", "free_flight_time", "back_contact_time",
-    "zone_switches", "time", "states"} (the last two filled when ``record``: the state after every segment)."""
+    "zone_switches", "time", "states", "segments"} (the last three filled when ``record``: the state after every
+    segment and the (piece, region, dead-zone sides) that held on it; a segment may be empty, h = 0, where a switch
+    was found at its start)."""
     from scipy.linalg import expm
 
     linear = system.linear
@@ -142,12 +146,15 @@ def backlash_flow_ndof(system: BacklashSystem, state: np.ndarray, substeps: int 
     z = np.append(np.asarray(state, dtype=float), 1.0)
     total = np.eye(2 * n + 1)
     info = {"switches": 0, "free_flight_time": 0.0, "back_contact_time": 0.0, "zone_switches": 0, "time": [0.0],
-            "states": [z[:-1]]}
+            "states": [z[:-1]], "segments": [], "crossings": {}}
+    key = None
     for piece in range(linear.nodes.size - 1):
         start, stop = linear.nodes[piece], linear.nodes[piece + 1]
         step = (stop - start) / substeps
         matrices, full_steps = {}, {}
-        key = (system.region(z, piece), system.sides(z))  # at a node the deviation steps: decided afresh
+        previous, key = key, (system.region(z, piece), system.sides(z))  # at a node the deviation steps: afresh
+        if previous is not None:
+            _count_crossings(info["crossings"], previous, key)
         t = start
         while t < stop - 1e-12 * (stop - start):
             if key not in matrices:
@@ -160,8 +167,11 @@ def backlash_flow_ndof(system: BacklashSystem, state: np.ndarray, substeps: int 
             after = (system.region(trial, piece), system.sides(trial))
             following, zone = key, None
             if after != key:
-                h, following, zone, switched = _first_switch(system, piece, key, after, matrix, z, h, stop - start)
+                h, following, zone, switched, seen = _first_switch(system, piece, key, after, matrix, z, h,
+                                                                   stop - start)
                 info["switches" if zone is None else "zone_switches"] += switched
+                if seen:  # a crossing at a known instant (not a change taken over a whole sub-step)
+                    _count_crossings(info["crossings"], key, following)
             if h > 0.0:
                 segment = full_steps[key] if h == step else expm(matrix * h)
                 total = segment @ total
@@ -175,20 +185,45 @@ def backlash_flow_ndof(system: BacklashSystem, state: np.ndarray, substeps: int 
                 if following not in matrices:
                     matrices[following] = system.region_matrix(piece, following[0], inverse, following[1])
                 total = _saltation(matrix, matrices[following], system.dead_zones[zone].vector, z) @ total
-            key = following
             if record:
                 info["time"].append(t)
                 info["states"].append(z[:-1])
+                info["segments"].append((piece, key[0], key[1]))
+            key = following
             if not np.all(np.isfinite(z)):
                 raise ProblemError("state", "not finite", "a bounded motion", "the coefficients are out of range")
+    _count_crossings(info["crossings"], key, (system.region(z, 0), system.sides(z)))  # the period's end node
     return z[:-1], total[:-1, :-1], info
 
 
+def _count_crossings(counts: dict, before: tuple, after: tuple) -> None:
+    """Add the boundaries crossed from contact state ``before`` to ``after`` to ``counts``: ("mesh", 0) the
+    driving-flank boundary g = 0, ("mesh", 1) the back-flank one g = −b, ("zone", i, ±1) dead zone i's u = ±δ."""
+    regions = {before[0], after[0]}
+    if regions & {_DRIVE} and regions - {_DRIVE}:
+        counts[("mesh", 0)] = counts.get(("mesh", 0), 0) + 1
+    if regions & {_BACK} and regions - {_BACK}:
+        counts[("mesh", 1)] = counts.get(("mesh", 1), 0) + 1
+    for index, (old, new) in enumerate(zip(before[1], after[1])):
+        for side in (1, -1):
+            if (old == side) != (new == side):
+                counts[("zone", index, side)] = counts.get(("zone", index, side), 0) + 1
+
+
+def odd_crossings(counts: dict) -> list:
+    """The boundaries crossed an odd number of times (``counts`` as the flow's "crossings"). A closed orbit crosses
+    each boundary an even number of times per period (it returns to the side it started on), counting the jumps of
+    the boundary at the nodes (the deviation steps); an odd count on a "periodic" point means a crossing that was
+    not located — a change of region taken over a whole sub-step — so the point is no orbit of the system."""
+    return sorted(boundary for boundary, count in counts.items() if count % 2)
+
+
 def _first_switch(system: BacklashSystem, piece: int, key: tuple, after: tuple, matrix: np.ndarray, z: np.ndarray,
-                  h: float, width: float) -> tuple[float, tuple, int | None, int]:
+                  h: float, width: float) -> tuple[float, tuple, int | None, int, bool]:
     """The first boundary crossed within h: (time to it, the region after it, the dead zone's index or None for the
-    mesh, 1 when a crossing was located). Without a located crossing (a double crossing or a boundary state) the
-    step is taken whole and the region of the first changed element moves on, as for one element."""
+    mesh, 1 when a crossing was located by a sign change, whether its instant is known at all — on the boundary
+    already counts). Without a crossing found (a double crossing or a boundary state) the step is taken whole and
+    the region of the first changed element moves on, as for one element."""
     from scipy.linalg import expm
     from scipy.optimize import brentq
 
@@ -224,8 +259,8 @@ def _first_switch(system: BacklashSystem, piece: int, key: tuple, after: tuple, 
             best = (root, following, index, located)
     if best is None:
         _, _, following, index = candidates[0]
-        return h, following, index, 0
-    return best
+        return h, following, index, 0, False
+    return (*best, True)
 
 
 def _saltation(before: np.ndarray, after: np.ndarray, vector: np.ndarray, z: np.ndarray) -> np.ndarray:
@@ -243,7 +278,9 @@ def _saltation(before: np.ndarray, after: np.ndarray, vector: np.ndarray, z: np.
 @dataclass(frozen=True, eq=False)
 class BacklashOrbitNDOF:
     """A periodic orbit with backlash: ``initial_state`` z₀ (2n,), Floquet ``multipliers`` of its monodromy,
-    ``converged`` (Newton residual below tolerance), ``residual`` (relative), contact statistics per period."""
+    ``converged`` (Newton residual below tolerance and every boundary crossed an even number of times),
+    ``residual`` (relative), contact statistics per period, ``substeps`` the sub-steps per piece it was found
+    with, ``failure`` why it is not converged ('' when it is)."""
 
     initial_state: np.ndarray
     multipliers: np.ndarray
@@ -253,6 +290,8 @@ class BacklashOrbitNDOF:
     switches: int
     free_flight_time: float
     back_contact_time: float
+    failure: str = ""
+    substeps: int = 16
 
     @property
     def stable(self) -> bool:
@@ -260,11 +299,37 @@ class BacklashOrbitNDOF:
         return bool(self.converged and np.abs(self.multipliers).max() < 1.0)
 
 
+MAX_SUBSTEPS = 64  # the odd-crossing guard refines the sub-steps up to this many per piece
+
+
 def backlash_periodic_orbit(system: BacklashSystem, initial_state: np.ndarray | None = None, substeps: int = 16,
                             tolerance: float = 1e-10, max_iterations: int = 30) -> BacklashOrbitNDOF:
-    """Shooting (damped Newton with the exact monodromy) from ``initial_state`` or the linear periodic state."""
+    """Shooting (damped Newton with the exact monodromy) from ``initial_state`` or the linear periodic state.
+
+    A point where Newton converged but some boundary is crossed an odd number of times (:func:`odd_crossings`: a
+    switch was missed within a sub-step) is shot again from there with twice the sub-steps, up to
+    :data:`MAX_SUBSTEPS`; if the count is still odd the orbit is returned with ``converged`` False and the reason in
+    ``failure``.
+    """
     state = (periodic_response(system.linear, 1).initial_state if initial_state is None
              else np.asarray(initial_state, dtype=float))
+    steps = int(substeps)
+    while True:
+        orbit, crossings = _shoot(system, state, steps, tolerance, max_iterations)
+        odd = odd_crossings(crossings)
+        if not orbit.converged or not odd:
+            return replace(orbit, failure="" if orbit.converged else
+                           f"Newton stopped at residual {orbit.residual:.3g} > {tolerance:g}")
+        if 2 * steps > MAX_SUBSTEPS:
+            return replace(orbit, converged=False, failure=(
+                f"boundaries crossed an odd number of times per period ({', '.join(map(str, odd))}) with "
+                f"{steps} sub-steps per piece: a switch is missed, the point is no closed orbit"))
+        state, steps = orbit.initial_state, 2 * steps
+
+
+def _shoot(system: BacklashSystem, state: np.ndarray, substeps: int, tolerance: float, max_iterations: int
+           ) -> tuple[BacklashOrbitNDOF, dict]:
+    """Damped Newton from ``state``: the orbit (failure not yet set) and the crossings of its last flow."""
     n = system.linear.size
     scale = np.concatenate([np.full(n, max(np.abs(state[:n]).max(), 1e-300)),
                             np.full(n, max(np.abs(state[n:]).max(), 1e-300))])
@@ -289,5 +354,7 @@ def backlash_periodic_orbit(system: BacklashSystem, initial_state: np.ndarray | 
             break
         state, end, matrix, info, residual = trial, trial_end, trial_matrix, trial_info, trial_residual
     multipliers = np.linalg.eigvals(matrix)
-    return BacklashOrbitNDOF(state, multipliers[np.argsort(-np.abs(multipliers))], residual <= tolerance, residual,
-                             iterations, info["switches"], info["free_flight_time"], info["back_contact_time"])
+    orbit = BacklashOrbitNDOF(state, multipliers[np.argsort(-np.abs(multipliers))], residual <= tolerance, residual,
+                              iterations, info["switches"], info["free_flight_time"], info["back_contact_time"],
+                              substeps=substeps)
+    return orbit, info["crossings"]

@@ -14,6 +14,7 @@ coupling of the reduced matrices are dropped (exact: their motion is zero). Know
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -54,9 +55,12 @@ class ModalBasis:
         return self.basis @ reduced
 
 
-def modal_basis(system: PiecewiseLinearSystem, cutoff: float) -> ModalBasis:
+def modal_basis(system: PiecewiseLinearSystem, cutoff: float, loads: Sequence[np.ndarray] = ()) -> ModalBasis:
     """The modes of the mean system up to ``cutoff`` ω_c [rad/s] plus the static corrections (see the module
-    docstring). ``cutoff`` above the highest mode keeps every mode: the reduction is then exact."""
+    docstring). ``cutoff`` above the highest mode keeps every mode: the reduction is then exact. ``loads``: further
+    load vectors (n,) whose static corrections join the basis and which count as forcing the system (e.g. the
+    vector of a dead zone, whose force switches on and off: its static response must lie in the basis as the mesh
+    vector's does)."""
     from scipy.linalg import eigh, solve
 
     if not np.isfinite(cutoff) or cutoff <= 0.0:
@@ -68,9 +72,10 @@ def modal_basis(system: PiecewiseLinearSystem, cutoff: float) -> ModalBasis:
     keep = values <= cutoff**2
     modes, frequencies = modes[:, keep], np.sqrt(np.clip(values[keep], 0.0, None))
     pattern_values, pattern_vectors = np.linalg.eigh(system.stiffness_pattern)
+    extra = tuple(loads)
     loads = [pattern_vectors[:, index] for index in np.flatnonzero(
         np.abs(pattern_values) > 1e-12 * max(np.abs(pattern_values).max(), 1e-300))]
-    loads += [system.force_pattern, system.force]
+    loads += [system.force_pattern, system.force, *(np.asarray(load, dtype=float) for load in extra)]
     columns = [modes]
     for load in loads:
         if not np.any(load):
@@ -84,18 +89,19 @@ def modal_basis(system: PiecewiseLinearSystem, cutoff: float) -> ModalBasis:
         if norm > 1e-8 * scale:  # a correction already in the span adds nothing
             columns.append((vector / norm)[:, None])
     basis = np.hstack(columns)
-    excited = _excited_columns(basis, system)
+    excited = _excited_columns(basis, system, extra)
     kept_modes = excited[:modes.shape[1]]
     return ModalBasis(basis[:, excited], int(kept_modes.sum()), float(cutoff), frequencies[kept_modes])
 
 
-def _excited_columns(basis: np.ndarray, system: PiecewiseLinearSystem) -> np.ndarray:
+def _excited_columns(basis: np.ndarray, system: PiecewiseLinearSystem, extra: Sequence[np.ndarray] = ()
+                     ) -> np.ndarray:
     """Mask of the basis columns that the loads reach: those the forces load directly, closed under every coupling
     of the reduced matrices (stiffness, damping with the gyroscopic terms, both patterns). The columns left out
     span an invariant subspace that starts at rest and is never forced, so their motion is identically zero and
     dropping them is exact (for a spur mesh: the axial modes and the bending out of the line of action's plane
     when no damping or gyroscopic term couples them)."""
-    forces = [basis.T @ system.force, basis.T @ system.force_pattern]
+    forces = [basis.T @ system.force, basis.T @ system.force_pattern, *(basis.T @ load for load in extra)]
     couplings = [basis.T @ getattr(system, name) @ basis for name in (
         "mass", "stiffness", "damping", "stiffness_pattern", "damping_pattern")]
     excited = np.zeros(basis.shape[1], dtype=bool)

@@ -76,9 +76,12 @@ def build_report(case, out: Path | str, *, force: bool = False, method: str = "p
     rig = start_rig_prediction() if paper else None  # the paper's rig, predicted in a child meanwhile
     evaluation = evaluate_case(case, method=method, progress=step, wait=False)  # FE: still in its child
     evaluation.timings = {**before, **evaluation.timings}
+    from thermogear.drivetrain.case_model import drivetrain_builder
     from thermogear.report.drivetrain_section import drivetrain_report_data  # [drivetrain] cases (issue 27)
 
-    evaluation.drivetrain = drivetrain_report_data(case, tuple(evaluation.responses) or ("elastic",))
+    drivetrain_models = tuple(evaluation.responses) or ("elastic",)
+    evaluation.drivetrain = drivetrain_report_data(drivetrain_builder(case, drivetrain_models), drivetrain_models,
+                                                   transient=method == "transient")
     with folder:
         step("figures")
         figure_start = time.perf_counter()

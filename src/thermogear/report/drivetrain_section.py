@@ -5,22 +5,25 @@ from __future__ import annotations
 
 import html
 import math
+from collections.abc import Callable
 from typing import Any
 
 __all__ = ["drivetrain_report_data", "drivetrain_section"]
 
 
-def drivetrain_report_data(case, models: tuple[str, ...] = ("elastic", "thermal")) -> dict[str, Any] | None:
-    """The drivetrain results of ``case`` as JSON-ready numbers, None for a case without ``[drivetrain]``; where
-    they cannot be computed, ``{"not_computed": reason}`` (the rest of the report stands)."""
-    if getattr(case, "drivetrain", None) is None:
+def drivetrain_report_data(build: Callable[[], Any] | None, models: tuple[str, ...] = ("elastic", "thermal"),
+                           transient: bool = False, progress=None) -> dict[str, Any] | None:
+    """The drivetrain results as JSON-ready numbers (:func:`~thermogear.drivetrain.case_model.drivetrain_results`
+    of the CaseDrivetrain that ``build()`` returns; None for a case without ``[drivetrain]``, ``build`` None);
+    where they cannot be computed, ``{"not_computed": reason}`` (the rest of the report stands)."""
+    if build is None:
         return None
     from thermogear.drivetrain.case_model import drivetrain_results
     from thermogear.errors import CaseError, ModelLimitError
     from thermogear.serialization import json_ready
 
     try:
-        return json_ready(drivetrain_results(case, models), non_finite="null")
+        return json_ready(drivetrain_results(build(), models, transient, progress), non_finite="null")
     except ModelLimitError as error:  # most often a mode nothing damps: say where damping comes from
         return {"not_computed": f"{error} (every mode needs damping: give the shafts material_damping_s and the "
                                 "bearings damping in x, y and, where they locate the shaft, z)"}
@@ -75,6 +78,18 @@ def _bearings_table(data: dict[str, Any]) -> str:
     return "<table>" + "".join(rows) + "</table>"
 
 
+def _orbit_found(model: dict[str, Any]) -> str:
+    if not model.get("converged"):
+        return "NO"
+    return "yes" if model.get("stable") else "yes (unstable)"
+
+
+def _extent(data: dict[str, Any]) -> str:
+    """On what the response was solved: every DOF, or the modes up to the cut-off plus the static corrections."""
+    solved_on = data.get("solved_on", f"modes up to {data['response_cutoff_hz']:.0f} Hz")
+    return solved_on + ("" if solved_on == "every DOF" else " plus the static corrections")
+
+
 def drivetrain_section(data: dict[str, Any] | None) -> str:
     """HTML of the drivetrain results (empty for a case without a drivetrain)."""
     if not data:
@@ -83,10 +98,24 @@ def drivetrain_section(data: dict[str, Any] | None) -> str:
         return ("<h2 id='drivetrain'>The pair in its drivetrain</h2><div class='warn'>Not computed: "
                 f"{html.escape(data['not_computed'])}</div>")
     models = data["models"]
-    response = "".join(_cells([name, _number(m["kv"], "{:.4f}"), _number(m["dte_rms_um"], "{:.3f}"),
-                               _number(m["dte_peak_to_peak_um"], "{:.3f}"),
-                               _number(m["largest_floquet_multiplier_abs"], "{:.4f}")])
-                       for name, m in models.items())
+    backlash = bool(data.get("backlash_mesh"))
+    header = ["model", "Kv", "DTE RMS [μm]", "DTE peak-to-peak [μm]", "largest |Floquet multiplier|"]
+    if backlash:
+        header += ["time without contact [%]", "back flanks struck", "periodic orbit found"]
+    rows = []
+    for name, m in models.items():
+        cells = [name, _number(m["kv"], "{:.4f}"), _number(m["dte_rms_um"], "{:.3f}"),
+                 _number(m["dte_peak_to_peak_um"], "{:.3f}"), _number(m["largest_floquet_multiplier_abs"], "{:.4f}")]
+        if backlash:
+            fraction = m.get("contact_loss_fraction")
+            struck = m.get("back_side_contact")
+            cells += [_number(None if fraction is None else 100.0 * fraction, "{:.2f}"),
+                      "not found" if struck is None else "yes" if struck else "no",
+                      "—" if data.get("transient") else _orbit_found(m)]
+        rows.append(_cells(cells))
+    response = "".join(rows)
+    failures = "".join(f"<p class='small'>{html.escape(name)} model: no periodic orbit — "
+                       f"{html.escape(m['failure'])}</p>" for name, m in models.items() if m.get("failure"))
     resonances = sorted({(round(r["speed_rpm"]), r["harmonic"], round(r["mode_hz"]), r["label"],
                           " (mesh-dominated)" if r["mesh_dominated"] else "", name)
                          for name, m in models.items() for r in m["resonances"]})
@@ -95,14 +124,12 @@ def drivetrain_section(data: dict[str, Any] | None) -> str:
     notes = "".join(f"<p class='small'>{html.escape(note)}</p>" for note in data.get("notes", []))
     return ("<h2 id='drivetrain'>The pair in its drivetrain</h2>"
             f"<p>{data['degrees_of_freedom']} degrees of freedom (Timoshenko shafts, gear bodies, bearings, "
-            f"couplings, the mesh along the line of action); the periodic response is solved exactly on the modes "
-            f"up to {data['response_cutoff_hz']:.0f} Hz plus the static corrections, with the mesh "
-            f"{html.escape(data['mesh'])}. Cold: the elastic mesh model, shafts at 20 °C; hot: the case's thermal "
+            f"couplings, the mesh along the line of action); the response is solved exactly "
+            f"({html.escape(_extent(data))}), with the mesh {html.escape(data['mesh'])}. Cold: the elastic mesh model, shafts at 20 °C; hot: the case's thermal "
             "model, shafts' E(T), hot mesh stiffness and geometry. Energy shares are of the modal strain energy "
             "(mesh-dominated: mesh share above 0.1).</p>"
             + _modes_table(data)
-            + "<table>" + _cells(["model", "Kv", "DTE RMS [μm]", "DTE peak-to-peak [μm]", "largest |Floquet "
-                                  "multiplier|"], header=True) + response + "</table>"
+            + "<table>" + _cells(header, header=True) + response + "</table>" + failures
             + f"<p>Mesh harmonics meet modes with a mesh share above 0.01 at: {html.escape(resonance_text)}.</p>"
             + "<h3>Dynamic bearing forces on the housing</h3>"
             "<p>Radial force of each bearing over one mesh period: its mean, the RMS of its dynamic part and the "

@@ -128,8 +128,9 @@ class BearingSection(Section):
     damping_z_n_s_per_m: Annotated[float, Field(ge=_DAMPING[0], le=_DAMPING[1],
                                                 description="axial damping [N·s/m]")] = 0.0
     radial_clearance_um: Annotated[float, Field(ge=0.0, le=1000.0, description=(
-        "radial clearance [μm]: the shaft moves freely within ± this of the bearing centre in x and in y; "
-        "0 (the default) is the bearing in permanent contact, the only value the commands compute today"))] = 0.0
+        "radial clearance [μm]: the shaft moves freely within ± this of the bearing centre in x and in y (a "
+        "square dead zone); 0 (the default) is the bearing in permanent contact; above 0 only with the nonlinear "
+        "mesh (dynamics.mesh), whose backlash solver takes the clearance"))] = 0.0
 
 
 class DiskSection(Section):
@@ -204,8 +205,8 @@ class DrivetrainSection(Section):
     bearings: Annotated[list[BearingSection], Field(min_length=1, max_length=200, description=(
         "[[drivetrain.bearings]] tables: name, shaft, position_mm, stiffness_x_n_per_m, stiffness_y_n_per_m, "
         "optional stiffness_z_n_per_m (locates the shaft axially), damping_x_n_s_per_m, damping_y_n_s_per_m, "
-        "damping_z_n_s_per_m, radial_clearance_um (≥ 0 μm, default 0; above 0 refused: the commands solve the "
-        "linear drivetrain); at least two bearing positions per shaft"))]
+        "damping_z_n_s_per_m, radial_clearance_um (≥ 0 μm, default 0; above 0 only with dynamics.mesh = "
+        "'nonlinear'); at least two bearing positions per shaft"))]
     disks: Annotated[list[DiskSection], Field(max_length=200, description=(
         "one table per rigid disk: name, shaft, position_mm, mass_kg, polar_inertia_kg_m2, optional "
         "diametral_inertia_kg_m2 (default half the polar one); motor rotors, loads, hubs"))] = []
@@ -253,13 +254,6 @@ def check_drivetrain_section(section: DrivetrainSection) -> None:
                         "the mesh joins two shafts (parallel axes a centre distance apart)")
     for bearing in section.bearings:
         _point_on_shaft(f"drivetrain.bearings '{bearing.name}'", bearing.shaft, bearing.position_mm, shafts)
-        if bearing.radial_clearance_um > 0.0:
-            raise CaseError(f"drivetrain.bearings '{bearing.name}'.radial_clearance_um", bearing.radial_clearance_um,
-                            "0 (the bearing in permanent contact)",
-                            "with a clearance the bearing is a dead zone, which the linear modes and periodic "
-                            "response of run, sweep and the report cannot represent, and the commands do not yet "
-                            "solve the drivetrain's backlash orbit; build the drivetrain in Python with "
-                            "Bearing(radial_clearance=...) and solve it with drivetrain_backlash_system")
     for disk in section.disks:
         _point_on_shaft(f"drivetrain.disks '{disk.name}'", disk.shaft, disk.position_mm, shafts)
     for coupling in section.couplings:

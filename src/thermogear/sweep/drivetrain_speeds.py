@@ -18,13 +18,26 @@ from __future__ import annotations
 
 import os
 import warnings
+from dataclasses import dataclass
 from typing import Any, Callable
 
 import numpy as np
 
 from thermogear.errors import CaseError, ModelLimitError
 
-__all__ = ["DrivetrainSweep", "drivetrain_speed_sweep", "plot_drivetrain_sweep"]
+__all__ = ["DrivetrainSweep", "SweepOrigin", "drivetrain_speed_sweep", "plot_drivetrain_sweep", "worker_map"]
+
+@dataclass(frozen=True)
+class SweepOrigin:
+    """What a drivetrain sweep records of its case and what its worker processes rebuild it from: ``name``,
+    ``source`` (where the case was read), ``document`` (the case as read: the workers build the drivetrain from it)
+    and ``load_held`` (what stays fixed as the speed varies, e.g. "constant torque")."""
+
+    name: str
+    source: str
+    document: dict
+    load_held: str
+
 
 _THREAD_VARIABLES = ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS")
 _WORKER: dict[str, Any] = {}
@@ -38,7 +51,6 @@ def _initialise(document: dict, source: str, models: tuple[str, ...]) -> None:
     from thermogear.case import case_from_document
     from thermogear.drivetrain.case_model import case_drivetrain
     _WORKER["built"] = case_drivetrain(case_from_document(document, source), models)
-    _WORKER["models"] = models
 
 
 _FAILURES = (ModelLimitError, CaseError, np.linalg.LinAlgError)
@@ -70,8 +82,36 @@ def _compute_with(built, models: tuple[str, ...], speeds: list[float]) -> list[d
             for index in range(len(speeds))]
 
 
-def _compute(speeds: list[float]) -> list[dict[str, dict[str, Any]]]:
-    return _compute_with(_WORKER["built"], _WORKER["models"], speeds)
+def _compute_chunk(built, task: tuple[tuple[str, ...], list[float]]) -> list[dict[str, dict[str, Any]]]:
+    return _compute_with(built, *task)
+
+
+def _call(compute: Callable[[Any, Any], Any], task: Any) -> Any:
+    return compute(_WORKER["built"], task)
+
+
+def worker_map(origin: SweepOrigin, models: tuple[str, ...], compute: Callable[[Any, Any], Any], tasks: list,
+               workers: int, done: Callable[[int, Any], None]) -> None:
+    """``compute(drivetrain, task)`` for each task in ``workers`` processes started by "spawn" with one BLAS thread
+    each (module docstring), each process building the drivetrain of ``origin``'s case for ``models`` once;
+    ``done(index, result)`` as the tasks finish. ``compute`` must be a module-level function (it is pickled)."""
+    import multiprocessing
+    from concurrent.futures import ProcessPoolExecutor, as_completed
+
+    saved = {name: os.environ.get(name) for name in _THREAD_VARIABLES}
+    os.environ.update({name: "1" for name in _THREAD_VARIABLES})  # inherited by the spawned workers only
+    try:
+        with ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context("spawn"), initializer=_initialise,
+                                 initargs=(origin.document, origin.source, models)) as pool:
+            futures = {pool.submit(_call, compute, task): index for index, task in enumerate(tasks)}
+            for future in as_completed(futures):
+                done(futures[future], future.result())
+    finally:
+        for name, value in saved.items():
+            if value is None:
+                os.environ.pop(name, None)
+            else:
+                os.environ[name] = value
 
 
 class DrivetrainSweep:
@@ -83,32 +123,36 @@ class DrivetrainSweep:
         self.resonances = resonances
 
 
-def drivetrain_speed_sweep(case, speeds: np.ndarray, models: tuple[str, ...], workers: int | None = None,
+def drivetrain_speed_sweep(built, origin: SweepOrigin, speeds: np.ndarray, models: tuple[str, ...],
+                           workers: int | None = None,
                            progress: Callable[[int], None] | None = None,
                            processes: bool = True) -> DrivetrainSweep:
-    """Sweep the pinion speed [rpm] of a drivetrain case (module docstring). ``progress(count)`` is called as
+    """Sweep the pinion speed [rpm] of a built drivetrain case (a :class:`~thermogear.drivetrain.case_model.
+    CaseDrivetrain` holding ``models``; ``origin`` its case's name, source and document). ``progress(count)`` is
+    called as
     speeds finish. ``workers`` (default: the cores) processes are started by the "spawn" method, so a script that
     calls this at its top level needs Python's ``if __name__ == "__main__":`` guard; ``processes=False``
     computes in this process instead, with its BLAS threads as they are (measured 7× the CPU time on a busy
     2-core machine)."""
     import json
-    import multiprocessing
-    from concurrent.futures import ProcessPoolExecutor, as_completed
 
     import xarray as xr
 
-    from thermogear.drivetrain.case_model import case_drivetrain, mode_table, resonance_speeds
+    from thermogear.drivetrain.case_model import mode_table, resonance_speeds
 
     speeds = np.asarray(speeds, dtype=float)
     if speeds.ndim != 1 or speeds.size == 0 or np.any(speeds <= 0.0) or not np.all(np.isfinite(speeds)):
         raise CaseError("speed_rpm", speeds.tolist(), "positive, finite speeds [rpm]",
                         "a speed sweep of the drivetrain")
-    section = case.drivetrain
+    section = built.section
+    missing = [model for model in models if model not in built.drivetrains]
+    if missing:
+        raise CaseError("models", ", ".join(missing), ", ".join(built.drivetrains),
+                        "the drivetrain was built for these models only")
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        built = case_drivetrain(case, models)
         resonances = {model: [r for r in resonance_speeds(mode_table(built.modes(model), built.drivetrains[model]),
-                                                          case.gear_pair.pinion.teeth, section.bearing_harmonics)
+                                                          built.teeth, section.bearing_harmonics)
                               if speeds.min() <= r["speed_rpm"] <= speeds.max()] for model in models}
     bearings = [bearing.name for bearing in built.drivetrains["elastic"].bearings]
     chunks = [speeds[i:i + _SPEEDS_PER_TASK].tolist() for i in range(0, speeds.size, _SPEEDS_PER_TASK)]
@@ -122,23 +166,12 @@ def drivetrain_speed_sweep(case, speeds: np.ndarray, models: tuple[str, ...], wo
                 if progress is not None:
                     progress(len(chunk))
     else:
-        saved = {name: os.environ.get(name) for name in _THREAD_VARIABLES}
-        os.environ.update({name: "1" for name in _THREAD_VARIABLES})  # inherited by the spawned workers only
-        try:
-            with ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context("spawn"),
-                                     initializer=_initialise,
-                                     initargs=(case.document, str(case.source), models)) as pool:
-                futures = {pool.submit(_compute, chunk): index for index, chunk in enumerate(chunks)}
-                for future in as_completed(futures):
-                    results[futures[future]] = future.result()
-                    if progress is not None:
-                        progress(len(chunks[futures[future]]))
-        finally:
-            for name, value in saved.items():
-                if value is None:
-                    os.environ.pop(name, None)
-                else:
-                    os.environ[name] = value
+        def done(index: int, result: list) -> None:
+            results[index] = result
+            if progress is not None:
+                progress(len(chunks[index]))
+
+        worker_map(origin, models, _compute_chunk, [(models, chunk) for chunk in chunks], workers, done)
     points = [point for index in range(len(chunks)) for point in results[index]]
     harmonics = section.bearing_harmonics
     shape = (len(models), speeds.size)
@@ -164,9 +197,9 @@ def drivetrain_speed_sweep(case, speeds: np.ndarray, models: tuple[str, ...], wo
                                           field("bearing_harmonics", (len(bearings), harmonics)))},
         coords={"model": list(models), "speed_rpm": speeds, "bearing": bearings,
                 "harmonic": np.arange(1, harmonics + 1)},
-        attrs={"case": case.name, "kind": "drivetrain speed sweep", "mesh": "linear (permanent contact)",
+        attrs={"case": origin.name, "kind": "drivetrain speed sweep", "mesh": "linear (permanent contact)",
                "points_per_period": section.sweep_points_per_period, "response_cutoff_hz": section.response_cutoff_hz,
-               "resonances": json.dumps(resonances), "load_held": case.operating_point.load_held})
+               "resonances": json.dumps(resonances), "load_held": origin.load_held})
     for name, unit in (("kv", "-"), ("dte_rms_um", "um"), ("dte_peak_to_peak_um", "um"),
                        ("bearing_dynamic_rms_n", "N"), ("bearing_harmonic_amplitude_n", "N")):
         dataset[name].attrs["units"] = unit

@@ -1,0 +1,291 @@
+"""The drivetrain with the backlash mesh: its periodic orbit sampled in time, the mesh and bearing forces, metrics.
+
+The system is :func:`~thermogear.drivetrain.response.drivetrain_backlash_system` (the mesh coordinate
+g = wᵀq − ē_j with the dead zone of the normal backlash b; a bearing with a radial clearance adds a dead zone in x and
+one in y). Its periodic orbit is found by shooting (:func:`~thermogear.dynamics.backlash_ndof.backlash_periodic_orbit`)
+and sampled exactly (:func:`~thermogear.dynamics.backlash_trajectory.backlash_trajectory`). Forces:
+
+* mesh force F = k_j·φ(g) + c_j·ġ [N] with φ(g) = g in driving contact, 0 in free flight and g + b on the back
+  flanks (Kahraman & Singh, J. Sound Vib. 142 (1990) 49). The mesh damping c_j acts in free flight too, as in the
+  :class:`~thermogear.dynamics.backlash_ndof.BacklashSystem` (its vector field is continuous at a contact switch);
+* bearing force on the housing per direction: K·u + C·u̇ without clearance; with a radial clearance δ, in x and in y
+  each, 0 for |u| <= δ and k(u ∓ δ) + c·u̇ beyond ±δ (a square dead zone, the stated approximation of a circular
+  clearance: see :class:`~thermogear.drivetrain.point_elements.Bearing`).
+
+Metrics (keys of the linear :class:`~thermogear.drivetrain.response.DrivetrainResponse` where they mean the same):
+``kv`` = max pair load / W (W the static normal load, the pair load the elastic share k_s(δ − e_s) of a pair on the
+driving flanks, zero off them; as the linear chain and as the 1-DOF backlash solver's Kv without damping force —
+where no pair stiffness is known, the mesh's elastic force in single contact); ``max_system_load`` the largest
+elastic mesh force k_j·φ(g); ``contact_loss_fraction`` the free-flight time over the period (exact: summed over the
+segments between located switches) and ``back_contact_fraction`` likewise on the back flanks; DTE mean, RMS and
+peak-to-peak of δ over the samples (trapezoid rule; every switch and node sampled on both sides, and every extremum
+of δ, so that the maxima of the forces, monotone in δ on a piece in one contact region, and the peak-to-peak are
+exact).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from thermogear.drivetrain.assembly import AssembledDrivetrain
+from thermogear.drivetrain.response import bearing_force_spectrum, drivetrain_backlash_system
+from thermogear.dynamics.backlash_ndof import (BACK_CONTACT, DRIVING_CONTACT, FREE_FLIGHT, BacklashSystem, DeadZone,
+                                               backlash_periodic_orbit)
+from thermogear.dynamics.backlash_trajectory import BacklashTrajectory, backlash_trajectory
+from thermogear.dynamics.metrics import sampled_load
+from thermogear.dynamics.spectra import time_mean_and_rms
+from thermogear.errors import CaseError, ModelLimitError, ProblemError
+from thermogear.mesh.state import MeshState
+
+__all__ = ["SHOOTING_TOLERANCE", "DrivetrainBacklashResponse", "PeriodForces", "SampledMotion", "bearing_forces",
+           "drivetrain_backlash_response", "reduced_backlash_system", "sampled_metrics", "sampled_motion"]
+
+
+#: Relative residual |φ_T(z₀) − z₀| the shooting must reach. A drivetrain's stiff coordinates leave a rounding floor
+#: above the 1e-10 of the small systems: measured 4.4e-10 at the linear orbit of fzg_rig_type_c (107 coordinates,
+#: 1024 intervals), so Newton could never meet 1e-10 there; 1e-8 is 20× above that floor and far below what Kv or
+#: the DTE resolve (an orbit off by 1e-8 of its state moves them by ~1e-8).
+SHOOTING_TOLERANCE = 1e-8
+
+
+@dataclass(frozen=True, eq=False)
+class DrivetrainBacklashResponse:
+    """Periodic response with backlash over one mesh period (module docstring): ``time`` (S,) [s] (a switch
+    instant twice, left side first); ``transmission_error`` δ = wᵀq [m] and its ``transmission_error_rate``
+    [m/s]; ``mesh_force`` [N]; ``bearing_forces`` name → (S, 3) on the housing in x, y, z [N]; ``displacement``
+    (S, DOFs) [SI]; ``region`` (S,) the mesh's contact region; Floquet ``multipliers``; ``converged``; ``failure``
+    why not ('' when converged); ``switches`` of the mesh per period; ``contact_loss_fraction`` and
+    ``back_contact_fraction`` [-]; ``metrics``; ``period`` [s]."""
+
+    time: np.ndarray
+    transmission_error: np.ndarray
+    transmission_error_rate: np.ndarray
+    mesh_force: np.ndarray
+    bearing_forces: dict[str, np.ndarray]
+    displacement: np.ndarray
+    region: np.ndarray
+    multipliers: np.ndarray
+    converged: bool
+    failure: str
+    switches: int
+    contact_loss_fraction: float
+    back_contact_fraction: float
+    metrics: dict[str, Any]
+    period: float
+
+    @property
+    def stable(self) -> bool:
+        """Converged with every Floquet multiplier inside the unit circle."""
+        return bool(self.converged and self.multipliers.size and np.abs(self.multipliers).max() < 1.0)
+
+    @property
+    def bearing_names(self) -> tuple[str, ...]:
+        """The bearings' names (also where no orbit was found)."""
+        return tuple(self.metrics.get("bearings", ())) or tuple(self.bearing_forces)
+
+    @property
+    def kv(self) -> float | None:
+        """Dynamic factor Kv [-] (``metrics["kv"]``), None where the orbit was not found."""
+        return self.metrics.get("kv") if self.converged else None
+
+    def bearing_spectrum(self, name: str, points: int = 1024) -> tuple[np.ndarray, np.ndarray]:
+        """(frequencies [Hz] of the mesh harmonics 0, f_m, 2f_m, …; amplitudes (3, harmonics) [N] in x, y, z) of
+        one bearing's force on its housing; harmonic 0 is the mean force."""
+        return bearing_force_spectrum(self.time, self.bearing_forces, name, self.period, points)
+
+
+@dataclass(frozen=True, eq=False)
+class PeriodForces:
+    """The bearing forces of one mesh period: ``time`` (S,) [s] from 0 to ``period`` [s], ``bearing_forces``
+    name → (S, 3) [N] (e.g. the last period of a motion from rest)."""
+
+    time: np.ndarray
+    bearing_forces: dict[str, np.ndarray]
+    period: float
+
+    def bearing_spectrum(self, name: str, points: int = 1024) -> tuple[np.ndarray, np.ndarray]:
+        """As :meth:`DrivetrainBacklashResponse.bearing_spectrum`."""
+        return bearing_force_spectrum(self.time, self.bearing_forces, name, self.period, points)
+
+
+def reduced_backlash_system(system: BacklashSystem, cutoff_hz: float):
+    """(the system on a modal basis, the basis): the modes of the mean system up to ``cutoff_hz`` [Hz] and the
+    static corrections of the mesh vector, the torque loads and every dead zone's vector
+    (:func:`thermogear.dynamics.modal_reduction.modal_basis`), so that each contact state's quasi-static response
+    stays in the basis."""
+    from thermogear.dynamics.modal_reduction import modal_basis
+
+    if not math.isfinite(cutoff_hz) or cutoff_hz <= 0.0:
+        raise CaseError("cutoff_hz", cutoff_hz, "> 0 Hz, finite", "the highest mode frequency kept")
+    basis = modal_basis(system.linear, 2.0 * math.pi * cutoff_hz, [zone.vector for zone in system.dead_zones])
+    b = basis.basis
+    zones = tuple(DeadZone(b.T @ zone.vector, zone.stiffness, zone.damping, zone.clearance)
+                  for zone in system.dead_zones)
+    return BacklashSystem(basis.reduce(system.linear), b.T @ system.mesh_vector, system.deviation, system.backlash,
+                          zones), basis
+
+
+def drivetrain_backlash_response(assembled: AssembledDrivetrain, state: MeshState,
+                                 initial_state: np.ndarray | None = None, substeps: int = 16,
+                                 samples_per_piece: int = 8, cutoff_hz: float | None = None,
+                                 tolerance: float = SHOOTING_TOLERANCE) -> DrivetrainBacklashResponse:
+    """The periodic orbit of the drivetrain with the backlash mesh (module docstring), shot from
+    ``initial_state`` (in the solver's coordinates, e.g. a neighbouring speed's ``metrics["initial_state"]``) or
+    from the linear periodic state; ``substeps`` per piece to find the switches; ``samples_per_piece`` samples per
+    piece; ``cutoff_hz`` [Hz] solves on a modal basis (:func:`reduced_backlash_system`), None on every DOF;
+    ``tolerance`` the shooting's relative residual."""
+    system, reduction = drivetrain_backlash_system(assembled, state)
+    basis = None
+    if cutoff_hz is not None:
+        system, basis = reduced_backlash_system(system, cutoff_hz)
+    try:
+        orbit = backlash_periodic_orbit(system, initial_state, substeps, tolerance)
+        failure = orbit.failure
+        trajectory = backlash_trajectory(system, orbit.initial_state, 1, samples_per_piece, orbit.substeps,
+                                         system.mesh_vector)
+    except (ProblemError, ModelLimitError, np.linalg.LinAlgError) as error:
+        return _failed(state, f"no orbit: {error}", [bearing.name for bearing in assembled.drivetrain.bearings])
+    return _response(assembled, state, system, reduction, basis, trajectory, orbit.initial_state, orbit.multipliers,
+                     orbit.converged, failure, orbit.switches)
+
+
+def _expanded(reduction, basis, values: np.ndarray) -> np.ndarray:
+    """(S, m) solver coordinates → (S, DOFs)."""
+    values = values.T
+    if basis is not None:
+        values = basis.expand(values)
+    return reduction.expand(values).T
+
+
+def _failed(state: MeshState, failure: str, bearings: list[str]) -> DrivetrainBacklashResponse:
+    """A response that carries no motion, only why."""
+    empty = np.zeros(0)
+    metrics = {"static_load": state.normal_load, "kv": None, "valid": False, "converged": False, "stable": False,
+               "bearings": bearings}
+    return DrivetrainBacklashResponse(empty, empty, empty, empty, {}, np.zeros((0, 0)), np.zeros(0, dtype=int),
+                                      empty, False, failure, 0, math.nan, math.nan, metrics,
+                                      state.problem().period)
+
+
+def bearing_forces(assembled: AssembledDrivetrain, displacement: np.ndarray, velocity: np.ndarray
+                   ) -> dict[str, np.ndarray]:
+    """Force of each bearing on its housing (S, 3) [N] at the samples: K·u + C·u̇, and per direction x, y of a
+    bearing with a radial clearance δ, zero for |u| <= δ and k(u ∓ δ) + c·u̇ beyond."""
+    forces = {}
+    for bearing in assembled.drivetrain.bearings:
+        dofs = [assembled.dof(bearing.location, name) for name in ("x", "y", "z")]
+        stiffness, damping = bearing.stiffness_matrix()[:3, :3], bearing.damping_matrix()[:3, :3]
+        u, rate = displacement[:, dofs], velocity[:, dofs]
+        if bearing.radial_clearance > 0.0:  # no x–y coupling with a clearance (refused at construction)
+            gap = bearing.radial_clearance
+            beyond = np.abs(u) > gap
+            u = np.where(beyond, u - np.sign(u) * gap, 0.0)
+            rate = np.where(beyond, rate, 0.0)
+            u[:, 2], rate[:, 2] = displacement[:, dofs[2]], velocity[:, dofs[2]]
+        forces[bearing.name] = u @ stiffness.T + rate @ damping.T
+    return forces
+
+
+def _response(assembled: AssembledDrivetrain, state: MeshState, system: BacklashSystem, reduction, basis,
+              trajectory: BacklashTrajectory, initial_state: np.ndarray, multipliers: np.ndarray, converged: bool,
+              failure: str, switches: int) -> DrivetrainBacklashResponse:
+    """The sampled orbit expanded to every DOF, with δ, the forces and the metrics."""
+    problem = state.problem()
+    motion = sampled_motion(assembled, problem, reduction, basis, trajectory, system.deviation, system.backlash)
+    metrics = sampled_metrics(problem, trajectory, motion, multipliers, converged)
+    metrics["initial_state"] = [float(value) for value in initial_state]
+    period = problem.period
+    return DrivetrainBacklashResponse(trajectory.time, motion.transmission_error, motion.transmission_error_rate,
+                                      motion.mesh_force, motion.bearing_forces, motion.displacement,
+                                      trajectory.region, multipliers, bool(converged), failure, int(switches),
+                                      trajectory.free_flight_time / period, trajectory.back_contact_time / period,
+                                      metrics, period)
+
+
+@dataclass(frozen=True, eq=False)
+class SampledMotion:
+    """A sampled motion on every DOF: ``displacement`` (S, DOFs), δ = wᵀq [m] and its rate [m/s], the
+    ``mesh_force`` k_j·φ(g) + c_j·ġ and its elastic part k_j·φ(g) [N], ``bearing_forces`` name → (S, 3) [N]."""
+
+    displacement: np.ndarray
+    transmission_error: np.ndarray
+    transmission_error_rate: np.ndarray
+    mesh_force: np.ndarray
+    elastic_force: np.ndarray
+    bearing_forces: dict[str, np.ndarray]
+
+
+def sampled_motion(assembled: AssembledDrivetrain, problem, reduction, basis, trajectory: BacklashTrajectory,
+                   deviation: np.ndarray, backlash: float) -> SampledMotion:
+    """The trajectory (in the solver's coordinates) on every DOF with δ and the forces of the module docstring;
+    ``deviation`` ē_j [m] per piece and the ``backlash`` b [m] of the mesh coordinate g = δ − ē_j."""
+    displacement = _expanded(reduction, basis, trajectory.displacement)
+    velocity = _expanded(reduction, basis, trajectory.velocity)
+    w = assembled.mesh_vectors[0]
+    delta, rate = displacement @ w, velocity @ w
+    piece, region = trajectory.piece, trajectory.region
+    gap = delta - deviation[piece]
+    elastic = np.where(region == DRIVING_CONTACT, gap, np.where(region == BACK_CONTACT, gap + backlash, 0.0))
+    elastic = problem.stiffness[piece] * elastic
+    return SampledMotion(displacement, delta, rate, elastic + problem.damping[piece] * rate, elastic,
+                         bearing_forces(assembled, displacement, velocity))
+
+
+def sampled_metrics(problem, trajectory: BacklashTrajectory, motion: SampledMotion, multipliers: np.ndarray,
+                    converged: bool) -> dict[str, Any]:
+    """The module docstring's metrics of one sampled period (of an orbit, or the last of a motion)."""
+    delta, rate, elastic = motion.transmission_error, motion.transmission_error_rate, motion.elastic_force
+    w0, period, piece = problem.static_load, problem.period, trajectory.piece
+    driving = trajectory.region == DRIVING_CONTACT
+    pair = problem.pair_arrays()
+    if pair is not None:
+        loads = sampled_load(pair[0], pair[1], problem.pair_offset, piece, delta, rate, False)
+        max_pair, basis = float(np.max(np.where(driving[None, :], loads, 0.0))), "pair_loads"
+    elif np.any(problem.contact_count == 1):
+        single = problem.contact_count[piece] == 1
+        max_pair, basis = float(np.max(np.where(single & driving, elastic, 0.0))), "system_load_in_single_contact"
+    else:
+        max_pair, basis = None, "unavailable: no pair stiffness and no single-contact interval"
+    mean, rms = time_mean_and_rms(trajectory.time, delta)
+    moduli = np.sort(np.abs(np.asarray(multipliers)))[::-1]
+    stable = bool(converged and moduli.size and moduli[0] < 1.0)
+    free = trajectory.region == FREE_FLIGHT
+    starts, durations = _runs(trajectory.time, free)
+    max_system = float(np.max(elastic))
+    metrics: dict[str, Any] = {
+        "static_load": w0, "static_load_n_per_mm": w0 / problem.face_width / 1e3,
+        "kv": None if max_pair is None else max_pair / w0, "kv_basis": basis, "max_pair_load": max_pair,
+        "max_pair_load_n_per_mm": None if max_pair is None else max_pair / problem.face_width / 1e3,
+        "max_system_load": max_system, "max_system_load_n_per_mm": max_system / problem.face_width / 1e3,
+        "max_system_load_ratio": max_system / w0,
+        "dte_mean": mean, "dte_rms": rms, "dte_peak_to_peak": float(np.ptp(delta)),
+        "max_velocity": float(np.max(np.abs(rate))),
+        "natural_frequency_hz": problem.natural_frequency, "mesh_frequency_hz": problem.mesh_frequency,
+        "frequency_ratio": problem.frequency_ratio,
+        "floquet_multipliers_abs": [float(m) for m in moduli], "converged": bool(converged), "stable": stable,
+        "contact_loss": {"detected": bool(trajectory.free_flight_time > 0.0), "start_times": starts,
+                         "durations": durations,
+                         "total_duration": float(trajectory.free_flight_time / trajectory.periods),
+                         "min_force": float(np.min(elastic)), "min_force_ratio": float(np.min(elastic) / w0)},
+        "contact_loss_fraction": float(trajectory.free_flight_time / (period * trajectory.periods)),
+        "back_side_contact": bool(trajectory.back_contact_time > 0.0),
+        "back_contact_fraction": float(trajectory.back_contact_time / (period * trajectory.periods)),
+        "switches_per_period": float(trajectory.switches / trajectory.periods),
+    }
+    finite = all(math.isfinite(value) for value in (mean, rms, max_system) + (() if max_pair is None else (max_pair,)))
+    metrics["valid"] = bool(converged and stable and finite)
+    return metrics
+
+
+def _runs(time: np.ndarray, mask: np.ndarray) -> tuple[list[float], list[float]]:
+    """Start times and durations [s] of the runs of ``mask`` (a run ends at the first sample outside it, which a
+    switch's right-side sample places at the switch)."""
+    edges = np.diff(np.concatenate([[0], mask.astype(np.int8), [0]]))
+    first, last = np.flatnonzero(edges == 1), np.flatnonzero(edges == -1)
+    starts = [float(time[a]) for a in first]
+    durations = [float(time[min(b, time.size - 1)] - time[a]) for a, b in zip(first, last, strict=True)]
+    return starts, durations

@@ -1,0 +1,82 @@
+"""The drivetrain's motion from rest: q = q̇ = 0 (in the coordinates without the free rotation) when the torque and
+the mesh act at τ = 0, over N mesh periods, by the exact flow of the piecewise-linear system with (backlash mesh)
+or without (mesh in permanent contact) its switches (:mod:`thermogear.dynamics.backlash_trajectory`): no
+integration error beyond the exponentials. The samples and forces are those of
+:mod:`thermogear.drivetrain.backlash_response`; the metrics are those of the last period, which approaches the
+periodic orbit as the slowest Floquet multiplier's modulus to the power N.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from thermogear.drivetrain.assembly import AssembledDrivetrain
+from thermogear.drivetrain.backlash_response import PeriodForces, sampled_metrics, sampled_motion
+from thermogear.drivetrain.response import drivetrain_backlash_system, drivetrain_periodic_system
+from thermogear.dynamics.backlash_trajectory import backlash_trajectory, linear_trajectory
+from thermogear.errors import CaseError
+from thermogear.mesh.state import MeshState
+
+__all__ = ["DrivetrainTransient", "drivetrain_transient"]
+
+_ORBIT_KEYS = ("floquet_multipliers_abs", "converged", "stable", "valid")  # no orbit: these do not apply
+
+
+@dataclass(frozen=True, eq=False)
+class DrivetrainTransient:
+    """The motion from rest: ``time`` (S,) [s] over ``periods`` mesh periods of ``period`` [s];
+    ``transmission_error`` δ [m], its rate [m/s], ``mesh_force`` [N], ``bearing_forces`` name → (S, 3) [N],
+    ``displacement`` (S, DOFs), ``region`` (S,) of the mesh; ``backlash`` whether the mesh may separate;
+    ``end_state`` the solver's state after the last period; ``last_period`` the metrics of the last period (keys of
+    :func:`~thermogear.drivetrain.backlash_response.sampled_metrics` less the orbit's) and ``last_period_forces``
+    its bearing forces."""
+
+    time: np.ndarray
+    transmission_error: np.ndarray
+    transmission_error_rate: np.ndarray
+    mesh_force: np.ndarray
+    bearing_forces: dict[str, np.ndarray]
+    displacement: np.ndarray
+    region: np.ndarray
+    backlash: bool
+    end_state: np.ndarray
+    last_period: dict[str, Any]
+    last_period_forces: PeriodForces
+    period: float
+    periods: int
+
+
+def drivetrain_transient(assembled: AssembledDrivetrain, state: MeshState, periods: int, backlash: bool = True,
+                         samples_per_piece: int = 8, substeps: int = 16) -> DrivetrainTransient:
+    """The motion from rest over ``periods`` mesh periods (module docstring): with ``backlash`` the backlash mesh
+    (and every bearing clearance), else the linear mesh in permanent contact; ``samples_per_piece`` per piece;
+    ``substeps`` per piece to find the switches."""
+    if isinstance(periods, bool) or int(periods) != periods or periods < 1:
+        raise CaseError("periods", periods, "integer >= 1", "whole mesh periods of the motion from rest")
+    problem = state.problem()
+    if backlash:
+        system, reduction = drivetrain_backlash_system(assembled, state)
+        start = np.zeros(2 * system.linear.size)
+        trajectory = backlash_trajectory(system, start, int(periods), samples_per_piece, substeps,
+                                         system.mesh_vector)
+        deviation, gap = system.deviation, system.backlash
+    else:
+        linear, reduction = drivetrain_periodic_system(assembled, state)
+        trajectory = linear_trajectory(linear, np.zeros(2 * linear.size), int(periods), samples_per_piece)
+        deviation = np.divide(linear.force_factor, linear.stiffness_factor,
+                              out=np.zeros_like(linear.force_factor), where=linear.stiffness_factor != 0.0)
+        gap = np.inf
+    motion = sampled_motion(assembled, problem, reduction, None, trajectory, deviation, gap)
+    last = trajectory.last_period()
+    last_motion = sampled_motion(assembled, problem, reduction, None, last, deviation, gap)
+    metrics = sampled_metrics(problem, last, last_motion, np.zeros(0), True)
+    for key in _ORBIT_KEYS:
+        metrics.pop(key, None)
+    return DrivetrainTransient(trajectory.time, motion.transmission_error, motion.transmission_error_rate,
+                              motion.mesh_force, motion.bearing_forces, motion.displacement, trajectory.region,
+                              bool(backlash), trajectory.end_state, metrics,
+                              PeriodForces(last.time, last_motion.bearing_forces, problem.period), problem.period,
+                              int(periods))
