@@ -143,10 +143,11 @@ def drivetrain_backlash_response(assembled: AssembledDrivetrain, state: MeshStat
     if cutoff_hz is not None:
         system, basis = reduced_backlash_system(system, cutoff_hz)
     try:
-        orbit = backlash_periodic_orbit(system, initial_state, substeps, tolerance)
+        cache: dict = {}  # the pieces' exponentials, computed by the shooting and reused by the sampling
+        orbit = backlash_periodic_orbit(system, initial_state, substeps, tolerance, cache=cache)
         failure = orbit.failure
         trajectory = backlash_trajectory(system, orbit.initial_state, 1, samples_per_piece, orbit.substeps,
-                                         system.mesh_vector)
+                                         system.mesh_vector, cache)
     except (ProblemError, ModelLimitError, np.linalg.LinAlgError) as error:
         return _failed(state, f"no orbit: {error}", [bearing.name for bearing in assembled.drivetrain.bearings])
     return _response(assembled, state, system, reduction, basis, trajectory, orbit.initial_state, orbit.multipliers,
