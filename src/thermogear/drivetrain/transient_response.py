@@ -14,7 +14,8 @@ from typing import Any
 import numpy as np
 
 from thermogear.drivetrain.assembly import AssembledDrivetrain
-from thermogear.drivetrain.backlash_response import PeriodForces, SampledMotion, sampled_metrics, sampled_motion
+from thermogear.drivetrain.backlash_response import (PeriodForces, SampledMotion, one_blas_thread, sampled_metrics,
+                                                    sampled_motion)
 from thermogear.drivetrain.response import drivetrain_backlash_system, drivetrain_periodic_system
 from thermogear.dynamics.backlash_trajectory import backlash_trajectory, linear_trajectory
 from thermogear.errors import CaseError
@@ -61,8 +62,9 @@ def drivetrain_transient(assembled: AssembledDrivetrain, state: MeshState, perio
     if backlash:
         system, reduction = drivetrain_backlash_system(assembled, state)
         start = np.zeros(2 * system.linear.size)
-        trajectory = backlash_trajectory(system, start, int(periods), samples_per_piece, substeps,
-                                         system.mesh_vector)
+        with one_blas_thread():
+            trajectory = backlash_trajectory(system, start, int(periods), samples_per_piece, substeps,
+                                             system.mesh_vector)
         deviation, gap = system.deviation, system.backlash
     else:
         linear, reduction = drivetrain_periodic_system(assembled, state)
