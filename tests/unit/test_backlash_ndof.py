@@ -136,8 +136,8 @@ def test_an_odd_crossing_count_refines_the_substeps_or_fails(monkeypatch, odd_be
 
     flow = module.backlash_flow_ndof
 
-    def missing_one(system, state, steps=16, record=False):
-        end, matrix, info = flow(system, state, steps, record)
+    def missing_one(system, state, steps=16, **options):
+        end, matrix, info = flow(system, state, steps, **options)
         if steps < odd_below:
             info["crossings"][("mesh", 0)] = info["crossings"].get(("mesh", 0), 0) + 1
         return end, matrix, info

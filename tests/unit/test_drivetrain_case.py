@@ -16,7 +16,7 @@ import pytest
 from thermogear.case import case_from_document, load_case
 from thermogear.drivetrain import (Bearing, CrossSection, Drivetrain, GearMesh, Material, NodeLocation, RigidDisk,
                                    Shaft, ShaftSegment)
-from thermogear.drivetrain.case_model import case_drivetrain, drivetrain_results
+from thermogear.drivetrain.case_model import case_drivetrain, drivetrain_builder, drivetrain_results
 from thermogear.errors import CaseError
 
 TWO_SHAFTS = Path(__file__).resolve().parents[1] / "data" / "two_shaft_drivetrain.toml"
@@ -66,9 +66,9 @@ def _set(path: tuple, value):
     (_set(("bearings", 0, "stiffness_x_n_per_m"), -1.0), "stiffness_x_n_per_m", ">= 0"),
     (_set(("bearings", 0, "radial_clearance_um"), -1.0), "radial_clearance_um", ">= 0"),
     (_set(("bearings", 0, "radial_clearance_um"), True), "radial_clearance_um", ""),
-    # a clearance is a dead zone the linear commands cannot represent: refused with the reason, never ignored
+    # a clearance is a dead zone the linear mesh cannot represent: refused with the reason, never ignored
     (_set(("bearings", 2, "radial_clearance_um"), 20.0), "drivetrain.bearings 'wheel bearing A'.radial_clearance_um",
-     "drivetrain_backlash_system"),
+     "dynamics.mesh = 'nonlinear'"),
 ])
 def test_a_wrong_drivetrain_is_refused_at_load_time_naming_the_key(change, key, words):
     with pytest.raises(CaseError) as caught:
@@ -211,7 +211,7 @@ def test_stiff_supports_in_the_case_file_give_back_the_one_dof_pair():
 
 
 def test_the_results_hold_modes_bearing_forces_and_what_heat_moved():
-    results = drivetrain_results(_load(_document()))
+    results = drivetrain_results(case_drivetrain(_load(_document())))
     for model in ("elastic", "thermal"):
         data = results["models"][model]
         assert len(data["modes"]) == 12
@@ -332,7 +332,13 @@ def test_run_says_when_the_pairs_teeth_separate_under_a_linear_drivetrain_mesh()
     computed = SimpleNamespace(evaluation=SimpleNamespace(drivetrain={"notes": [], "models": {}}))
     separated = {"elastic": SimpleNamespace(metrics={"contact_loss": {"detected": False}}),
                  "thermal": SimpleNamespace(metrics={"contact_loss": {"detected": True}})}
-    (note,) = drivetrain_outputs(case, ("elastic", "thermal"), computed, separated)["notes"]
+    build = drivetrain_builder(case, ("elastic", "thermal"))
+    (note,) = drivetrain_outputs(build, ("elastic", "thermal"), computed, separated)["notes"]
     assert "pair's thermal model finds the teeth separating" in note and "permanent contact" in note
-    assert drivetrain_outputs(case, ("elastic",), computed, {"elastic": separated["elastic"]})["notes"] == []
-    assert drivetrain_outputs(load_case("fzg_type_c"), ("elastic",), computed, separated) is None
+    assert drivetrain_outputs(build, ("elastic",), computed, {"elastic": separated["elastic"]})["notes"] == []
+    assert drivetrain_builder(load_case("fzg_type_c")) is None
+    assert drivetrain_outputs(None, ("elastic",), computed, separated) is None
+    # with the backlash mesh solved on the drivetrain the note has no place
+    solved = SimpleNamespace(evaluation=SimpleNamespace(drivetrain={"notes": [], "models": {},
+                                                                    "backlash_mesh": True}))
+    assert drivetrain_outputs(build, ("elastic", "thermal"), solved, separated)["notes"] == []

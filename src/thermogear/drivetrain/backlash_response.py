@@ -42,7 +42,8 @@ from thermogear.errors import CaseError, ModelLimitError, ProblemError
 from thermogear.mesh.state import MeshState
 
 __all__ = ["SHOOTING_TOLERANCE", "DrivetrainBacklashResponse", "PeriodForces", "SampledMotion", "bearing_forces",
-           "drivetrain_backlash_response", "reduced_backlash_system", "sampled_metrics", "sampled_motion"]
+           "drivetrain_backlash_response", "one_blas_thread", "reduced_backlash_system", "sampled_metrics",
+           "sampled_motion"]
 
 
 #: Relative residual |φ_T(z₀) − z₀| the shooting must reach. A drivetrain's stiff coordinates leave a rounding floor
@@ -112,6 +113,20 @@ class PeriodForces:
         return bearing_force_spectrum(self.time, self.bearing_forces, name, self.period, points)
 
 
+def one_blas_thread():
+    """A context in which BLAS runs on one thread, where threadpoolctl is installed (else no change). The backlash
+    flow multiplies small matrices (~200²) thousands of times, where BLAS threads only contend: on the loaded 2-core
+    development machine fzg_rig_type_c's response took 27 s CPU on one thread and had not finished after 9 min of
+    CPU with the default threads."""
+    try:
+        from threadpoolctl import threadpool_limits
+    except ImportError:  # an optional speed-up: without it the result is the same, only slower
+        from contextlib import nullcontext
+
+        return nullcontext()
+    return threadpool_limits(limits=1, user_api="blas")
+
+
 def reduced_backlash_system(system: BacklashSystem, cutoff_hz: float):
     """(the system on a modal basis, the basis): the modes of the mean system up to ``cutoff_hz`` [Hz] and the
     static corrections of the mesh vector, the torque loads and every dead zone's vector
@@ -143,10 +158,12 @@ def drivetrain_backlash_response(assembled: AssembledDrivetrain, state: MeshStat
     if cutoff_hz is not None:
         system, basis = reduced_backlash_system(system, cutoff_hz)
     try:
-        orbit = backlash_periodic_orbit(system, initial_state, substeps, tolerance)
+        cache: dict = {}  # the pieces' exponentials, computed by the shooting and reused by the sampling
+        with one_blas_thread():
+            orbit = backlash_periodic_orbit(system, initial_state, substeps, tolerance, cache=cache)
+            trajectory = backlash_trajectory(system, orbit.initial_state, 1, samples_per_piece, orbit.substeps,
+                                             system.mesh_vector, cache)
         failure = orbit.failure
-        trajectory = backlash_trajectory(system, orbit.initial_state, 1, samples_per_piece, orbit.substeps,
-                                         system.mesh_vector)
     except (ProblemError, ModelLimitError, np.linalg.LinAlgError) as error:
         return _failed(state, f"no orbit: {error}", [bearing.name for bearing in assembled.drivetrain.bearings])
     return _response(assembled, state, system, reduction, basis, trajectory, orbit.initial_state, orbit.multipliers,

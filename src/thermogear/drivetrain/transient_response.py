@@ -14,7 +14,8 @@ from typing import Any
 import numpy as np
 
 from thermogear.drivetrain.assembly import AssembledDrivetrain
-from thermogear.drivetrain.backlash_response import PeriodForces, sampled_metrics, sampled_motion
+from thermogear.drivetrain.backlash_response import (PeriodForces, SampledMotion, one_blas_thread, sampled_metrics,
+                                                    sampled_motion)
 from thermogear.drivetrain.response import drivetrain_backlash_system, drivetrain_periodic_system
 from thermogear.dynamics.backlash_trajectory import backlash_trajectory, linear_trajectory
 from thermogear.errors import CaseError
@@ -27,19 +28,15 @@ _ORBIT_KEYS = ("floquet_multipliers_abs", "converged", "stable", "valid")  # no 
 
 @dataclass(frozen=True, eq=False)
 class DrivetrainTransient:
-    """The motion from rest: ``time`` (S,) [s] over ``periods`` mesh periods of ``period`` [s];
-    ``transmission_error`` δ [m], its rate [m/s], ``mesh_force`` [N], ``bearing_forces`` name → (S, 3) [N],
-    ``displacement`` (S, DOFs), ``region`` (S,) of the mesh; ``backlash`` whether the mesh may separate;
-    ``end_state`` the solver's state after the last period; ``last_period`` the metrics of the last period (keys of
-    :func:`~thermogear.drivetrain.backlash_response.sampled_metrics` less the orbit's) and ``last_period_forces``
-    its bearing forces."""
+    """The motion from rest: ``time`` (S,) [s] over ``periods`` mesh periods of ``period`` [s]; ``motion`` its
+    samples on every DOF (δ, its rate, the mesh and bearing forces:
+    :class:`~thermogear.drivetrain.backlash_response.SampledMotion`); ``region`` (S,) of the mesh; ``backlash``
+    whether the mesh may separate; ``end_state`` the solver's state after the last period; ``last_period`` the
+    metrics of the last period (keys of :func:`~thermogear.drivetrain.backlash_response.sampled_metrics` less the
+    orbit's) and ``last_period_forces`` its bearing forces."""
 
     time: np.ndarray
-    transmission_error: np.ndarray
-    transmission_error_rate: np.ndarray
-    mesh_force: np.ndarray
-    bearing_forces: dict[str, np.ndarray]
-    displacement: np.ndarray
+    motion: SampledMotion
     region: np.ndarray
     backlash: bool
     end_state: np.ndarray
@@ -47,6 +44,11 @@ class DrivetrainTransient:
     last_period_forces: PeriodForces
     period: float
     periods: int
+
+    @property
+    def transmission_error(self) -> np.ndarray:
+        """δ = wᵀq [m] at the samples."""
+        return self.motion.transmission_error
 
 
 def drivetrain_transient(assembled: AssembledDrivetrain, state: MeshState, periods: int, backlash: bool = True,
@@ -60,8 +62,9 @@ def drivetrain_transient(assembled: AssembledDrivetrain, state: MeshState, perio
     if backlash:
         system, reduction = drivetrain_backlash_system(assembled, state)
         start = np.zeros(2 * system.linear.size)
-        trajectory = backlash_trajectory(system, start, int(periods), samples_per_piece, substeps,
-                                         system.mesh_vector)
+        with one_blas_thread():
+            trajectory = backlash_trajectory(system, start, int(periods), samples_per_piece, substeps,
+                                             system.mesh_vector)
         deviation, gap = system.deviation, system.backlash
     else:
         linear, reduction = drivetrain_periodic_system(assembled, state)
@@ -75,8 +78,6 @@ def drivetrain_transient(assembled: AssembledDrivetrain, state: MeshState, perio
     metrics = sampled_metrics(problem, last, last_motion, np.zeros(0), True)
     for key in _ORBIT_KEYS:
         metrics.pop(key, None)
-    return DrivetrainTransient(trajectory.time, motion.transmission_error, motion.transmission_error_rate,
-                              motion.mesh_force, motion.bearing_forces, motion.displacement, trajectory.region,
-                              bool(backlash), trajectory.end_state, metrics,
-                              PeriodForces(last.time, last_motion.bearing_forces, problem.period), problem.period,
-                              int(periods))
+    return DrivetrainTransient(trajectory.time, motion, trajectory.region, bool(backlash), trajectory.end_state,
+                               metrics, PeriodForces(last.time, last_motion.bearing_forces, problem.period),
+                               problem.period, int(periods))

@@ -132,38 +132,47 @@ class BacklashSystem:
         return _FREE
 
 
-def backlash_flow_ndof(system: BacklashSystem, state: np.ndarray, substeps: int = 16,
-                       record: bool = False) -> tuple[np.ndarray, np.ndarray, dict]:
-    """φ_T(state): end state (2n,), monodromy (2n, 2n) and {"switches", "free_flight_time", "back_contact_time",
-    "zone_switches", "time", "states", "segments"} (the last three filled when ``record``: the state after every
-    segment and the (piece, region, dead-zone sides) that held on it; a segment may be empty, h = 0, where a switch
-    was found at its start)."""
+def backlash_flow_ndof(system: BacklashSystem, state: np.ndarray, substeps: int = 16, record: bool = False,
+                       monodromy: bool = True, cache: dict | None = None
+                       ) -> tuple[np.ndarray, np.ndarray | None, dict]:
+    """φ_T(state): end state (2n,), monodromy (2n, 2n) (None without ``monodromy``) and {"switches",
+    "free_flight_time", "back_contact_time", "zone_switches", "crossings", "time", "states", "segments"} (the last
+    three filled when ``record``: the state after every segment and the (piece, region, dead-zone sides) that held on
+    it; a segment may be empty, h = 0, where a switch was found at its start). ``cache``: a dict kept between calls
+    on the same system (the exponentials of each piece's contact states are computed once per ``substeps``). A piece
+    crossed without a switch enters the monodromy as one cached power of its sub-step exponential."""
     from scipy.linalg import expm
 
     linear = system.linear
     n = linear.size
     inverse = np.linalg.inv(linear.mass)
     z = np.append(np.asarray(state, dtype=float), 1.0)
-    total = np.eye(2 * n + 1)
+    total = np.eye(2 * n + 1) if monodromy else None
+    cache = {} if cache is None else cache
     info = {"switches": 0, "free_flight_time": 0.0, "back_contact_time": 0.0, "zone_switches": 0, "time": [0.0],
             "states": [z[:-1]], "segments": [], "crossings": {}}
+
+    def exponentials(piece: int, key: tuple) -> tuple[np.ndarray, np.ndarray]:
+        """(augmented matrix, its exponential over one sub-step) of a piece in one contact state, cached."""
+        if (piece, key, substeps) not in cache:
+            matrix = system.region_matrix(piece, key[0], inverse, key[1])
+            width = linear.nodes[piece + 1] - linear.nodes[piece]
+            cache[(piece, key, substeps)] = (matrix, expm(matrix * (width / substeps)))
+        return cache[(piece, key, substeps)]
+
     key = None
     for piece in range(linear.nodes.size - 1):
         start, stop = linear.nodes[piece], linear.nodes[piece + 1]
         step = (stop - start) / substeps
-        matrices, full_steps = {}, {}
         previous, key = key, (system.region(z, piece), system.sides(z))  # at a node the deviation steps: afresh
         if previous is not None:
             _count_crossings(info["crossings"], previous, key)
+        first_key, uniform, product = key, True, []
         t = start
         while t < stop - 1e-12 * (stop - start):
-            if key not in matrices:
-                matrices[key] = system.region_matrix(piece, key[0], inverse, key[1])
-            matrix = matrices[key]
+            matrix, full_step = exponentials(piece, key)
             h = min(step, stop - t)
-            if key not in full_steps:
-                full_steps[key] = expm(matrix * step)
-            trial = (full_steps[key] if h == step else expm(matrix * h)) @ z
+            trial = (full_step if h == step else expm(matrix * h)) @ z
             after = (system.region(trial, piece), system.sides(trial))
             following, zone = key, None
             if after != key:
@@ -173,8 +182,10 @@ def backlash_flow_ndof(system: BacklashSystem, state: np.ndarray, substeps: int 
                 if seen:  # a crossing at a known instant (not a change taken over a whole sub-step)
                     _count_crossings(info["crossings"], key, following)
             if h > 0.0:
-                segment = full_steps[key] if h == step else expm(matrix * h)
-                total = segment @ total
+                segment = full_step if h == step else expm(matrix * h)
+                uniform = uniform and h == step and key == first_key
+                if monodromy:
+                    product.append(segment)
                 z = segment @ z
                 if key[0] == _FREE:
                     info["free_flight_time"] += h
@@ -182,9 +193,10 @@ def backlash_flow_ndof(system: BacklashSystem, state: np.ndarray, substeps: int 
                     info["back_contact_time"] += h
                 t += h
             if zone is not None:  # the dead zone's dashpot starts or stops: the vector field jumps
-                if following not in matrices:
-                    matrices[following] = system.region_matrix(piece, following[0], inverse, following[1])
-                total = _saltation(matrix, matrices[following], system.dead_zones[zone].vector, z) @ total
+                uniform = False
+                if monodromy:
+                    product.append(_saltation(matrix, exponentials(piece, following)[0],
+                                              system.dead_zones[zone].vector, z))
             if record:
                 info["time"].append(t)
                 info["states"].append(z[:-1])
@@ -192,8 +204,23 @@ def backlash_flow_ndof(system: BacklashSystem, state: np.ndarray, substeps: int 
             key = following
             if not np.all(np.isfinite(z)):
                 raise ProblemError("state", "not finite", "a bounded motion", "the coefficients are out of range")
+        if monodromy:
+            total = _piece_product(cache, (piece, first_key, substeps), product, uniform) @ total
     _count_crossings(info["crossings"], key, (system.region(z, 0), system.sides(z)))  # the period's end node
-    return z[:-1], total[:-1, :-1], info
+    return z[:-1], None if total is None else total[:-1, :-1], info
+
+
+def _piece_product(cache: dict, entry: tuple, product: list, uniform: bool) -> np.ndarray:
+    """The transition over one piece: where one contact state held throughout in full sub-steps, the cached power
+    of its sub-step exponential (exact: the same linear flow), else the product of its segments and saltations."""
+    if uniform and product:
+        if ("piece", *entry) not in cache:
+            cache[("piece", *entry)] = np.linalg.matrix_power(cache[entry][1], len(product))
+        return cache[("piece", *entry)]
+    result = np.eye(cache[entry][0].shape[0])
+    for matrix in product:
+        result = matrix @ result
+    return result
 
 
 def _count_crossings(counts: dict, before: tuple, after: tuple) -> None:
@@ -303,19 +330,22 @@ MAX_SUBSTEPS = 64  # the odd-crossing guard refines the sub-steps up to this man
 
 
 def backlash_periodic_orbit(system: BacklashSystem, initial_state: np.ndarray | None = None, substeps: int = 16,
-                            tolerance: float = 1e-10, max_iterations: int = 30) -> BacklashOrbitNDOF:
+                            tolerance: float = 1e-10, max_iterations: int = 30, cache: dict | None = None
+                            ) -> BacklashOrbitNDOF:
     """Shooting (damped Newton with the exact monodromy) from ``initial_state`` or the linear periodic state.
 
     A point where Newton converged but some boundary is crossed an odd number of times (:func:`odd_crossings`: a
     switch was missed within a sub-step) is shot again from there with twice the sub-steps, up to
     :data:`MAX_SUBSTEPS`; if the count is still odd the orbit is returned with ``converged`` False and the reason in
-    ``failure``.
+    ``failure``. ``cache``: the flows' exponentials (:func:`backlash_flow_ndof`), shared with a later flow of the
+    same system (e.g. its sampling).
     """
+    cache = {} if cache is None else cache
     state = (periodic_response(system.linear, 1).initial_state if initial_state is None
              else np.asarray(initial_state, dtype=float))
     steps = int(substeps)
     while True:
-        orbit, crossings = _shoot(system, state, steps, tolerance, max_iterations)
+        orbit, crossings = _shoot(system, state, steps, tolerance, max_iterations, cache)
         odd = odd_crossings(crossings)
         if not orbit.converged or not odd:
             return replace(orbit, failure="" if orbit.converged else
@@ -327,8 +357,8 @@ def backlash_periodic_orbit(system: BacklashSystem, initial_state: np.ndarray | 
         state, steps = orbit.initial_state, 2 * steps
 
 
-def _shoot(system: BacklashSystem, state: np.ndarray, substeps: int, tolerance: float, max_iterations: int
-           ) -> tuple[BacklashOrbitNDOF, dict]:
+def _shoot(system: BacklashSystem, state: np.ndarray, substeps: int, tolerance: float, max_iterations: int,
+           cache: dict) -> tuple[BacklashOrbitNDOF, dict]:
     """Damped Newton from ``state``: the orbit (failure not yet set) and the crossings of its last flow."""
     n = system.linear.size
     scale = np.concatenate([np.full(n, max(np.abs(state[:n]).max(), 1e-300)),
@@ -337,7 +367,7 @@ def _shoot(system: BacklashSystem, state: np.ndarray, substeps: int, tolerance: 
     def measure(difference):
         return float(np.abs(difference / scale).max())
 
-    end, matrix, info = backlash_flow_ndof(system, state, substeps)
+    end, matrix, info = backlash_flow_ndof(system, state, substeps, cache=cache)
     residual, iterations = measure(end - state), 0
     while residual > tolerance and iterations < max_iterations:
         iterations += 1
@@ -345,7 +375,7 @@ def _shoot(system: BacklashSystem, state: np.ndarray, substeps: int, tolerance: 
         factor = 1.0
         for _ in range(9):
             trial = state + factor * step
-            trial_end, trial_matrix, trial_info = backlash_flow_ndof(system, trial, substeps)
+            trial_end, trial_matrix, trial_info = backlash_flow_ndof(system, trial, substeps, cache=cache)
             trial_residual = measure(trial_end - trial)
             if trial_residual < residual:
                 break

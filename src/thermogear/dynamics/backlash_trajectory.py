@@ -86,13 +86,15 @@ class BacklashTrajectory:
 
 
 def backlash_trajectory(system: BacklashSystem, state: np.ndarray, periods: int = 1, samples_per_piece: int = 8,
-                        substeps: int = 16, extremum_vector: np.ndarray | None = None) -> BacklashTrajectory:
+                        substeps: int = 16, extremum_vector: np.ndarray | None = None,
+                        cache: dict | None = None) -> BacklashTrajectory:
     """The motion from ``state`` (2n,) at τ = 0 over ``periods`` periods, sampled as the module docstring says.
 
     ``substeps`` per piece to find the switches (see :func:`~thermogear.dynamics.backlash_ndof.backlash_flow_ndof`).
     ``extremum_vector`` v (n,): also sample every extremum of vᵀq inside a segment (a zero of vᵀq̇ between two
     samples, located by Brent's method on the exact solution), so that a quantity monotone in vᵀq on a segment (a
-    mesh force in one contact region) takes its exact maximum at a sample.
+    mesh force in one contact region) takes its exact maximum at a sample. ``cache``: the flow's exponentials,
+    e.g. those of the shooting that found the orbit (:func:`~thermogear.dynamics.backlash_ndof.backlash_flow_ndof`).
     """
     from scipy.linalg import expm
 
@@ -104,8 +106,9 @@ def backlash_trajectory(system: BacklashSystem, state: np.ndarray, periods: int 
     z = np.asarray(state, dtype=float)
     times, starts, keys = [], [], []
     totals = {"switches": 0, "zone_switches": 0, "free_flight_time": 0.0, "back_contact_time": 0.0}
+    cache = {} if cache is None else cache  # the pieces' exponentials, computed once, reused by every period
     for index in range(int(periods)):
-        z, _, info = backlash_flow_ndof(system, z, substeps, record=True)
+        z, _, info = backlash_flow_ndof(system, z, substeps, record=True, monodromy=False, cache=cache)
         for name in totals:
             totals[name] += info[name]
         offset = index * period
@@ -140,8 +143,11 @@ def backlash_trajectory(system: BacklashSystem, state: np.ndarray, periods: int 
     def evaluate(k: int, into: float) -> np.ndarray:
         if keys[k] not in matrices:
             matrices[keys[k]] = system.region_matrix(keys[k][0], keys[k][1], inverse, keys[k][2])
-        start = np.append(starts[k], 1.0)
-        return start[:-1] if into == 0.0 else (expm(matrices[keys[k]] * into) @ start)[:-1]
+        if into == 0.0:
+            return starts[k]
+        if k + 1 < len(starts) and abs(bounds[k, 1] - bounds[k, 0] - into) <= 1e-13 * period:
+            return starts[k + 1]  # the segment's end: the state is continuous across every switch
+        return (expm(matrices[keys[k]] * into) @ np.append(starts[k], 1.0))[:-1]
 
     samples.sort(key=lambda item: (item[0], item[1]))
     values = [evaluate(k, into) for _, _, k, into in samples]
