@@ -114,16 +114,11 @@ class PeriodForces:
 
 
 def one_blas_thread():
-    """A context in which BLAS runs on one thread, where threadpoolctl is installed (else no change). The backlash
-    flow multiplies small matrices (~200²) thousands of times, where BLAS threads only contend: on the loaded 2-core
-    development machine fzg_rig_type_c's response took 27 s CPU on one thread and had not finished after 9 min of
-    CPU with the default threads."""
-    try:
-        from threadpoolctl import threadpool_limits
-    except ImportError:  # an optional speed-up: without it the result is the same, only slower
-        from contextlib import nullcontext
+    """A context in which BLAS runs on one thread (threadpoolctl). The backlash flow multiplies small matrices (~200²)
+    thousands of times, where BLAS threads only contend: on the loaded 2-core development machine fzg_rig_type_c's
+    response took 27 s CPU on one thread and had not finished after 9 min of CPU with the default threads."""
+    from threadpoolctl import threadpool_limits
 
-        return nullcontext()
     return threadpool_limits(limits=1, user_api="blas")
 
 

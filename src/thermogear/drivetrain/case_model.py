@@ -29,6 +29,7 @@ from thermogear.drivetrain.case_layout import MESH_NAME, drivetrain_from_section
 from thermogear.drivetrain.heat import ModeShifts, WarmState, thermal_mode_shifts, warm_drivetrain
 from thermogear.drivetrain.modes import DrivetrainModes, drivetrain_modes
 from thermogear.drivetrain.response import DrivetrainResponse, drivetrain_periodic_response, drivetrain_speed_sweep
+from thermogear.mesh.model_names import ELASTIC, THERMAL
 from thermogear.errors import CaseError
 from thermogear.mesh.model import MeshModel
 from thermogear.thermoelastic.materials import MODULUS_REFERENCE_C, MODULUS_TEMPERATURE_COEFFICIENTS_PER_K
@@ -37,7 +38,7 @@ if TYPE_CHECKING:
     from thermogear.drivetrain.backlash_response import DrivetrainBacklashResponse
     from thermogear.drivetrain.transient_response import DrivetrainTransient
 
-__all__ = ["BACKLASH_CUTOFF_HZ", "BACKLASH_SUBSTEPS_PER_PERIOD", "MESH_COUPLED_SHARE", "MESH_DOMINATED_SHARE",
+__all__ = ["BACKLASH_SUBSTEPS_PER_PERIOD", "MESH_COUPLED_SHARE", "MESH_DOMINATED_SHARE",
            "CaseDrivetrain", "backlash_substeps", "bearing_force_summary", "case_drivetrain", "drivetrain_builder",
            "drivetrain_results", "heat_table", "mode_table", "resonance_speeds"]
 
@@ -53,9 +54,6 @@ MESH_COUPLED_SHARE = 0.01
 #: Samples per mesh-grid interval of the periodic response (the bearing-force RMS is a trapezoidal integral over
 #: them; the harmonics come from the exact orbit resampled uniformly).
 SAMPLES_PER_PIECE = 4
-#: The backlash drivetrain of ``run`` is solved on every DOF (None): the modal cut-off was measured against the full
-#: system on fzg_rig_type_c (docs/drivetrain.md) and is not used by default.
-BACKLASH_CUTOFF_HZ = None
 #: Sub-steps per mesh period on which the backlash shooting looks for contact switches: T/2048 is short against the
 #: mesh modes (fzg_rig_type_c: 0.84 μs at 2175 rpm against the 149 μs period of its 6.7 kHz torsional mode), and a
 #: switch missed within a sub-step is caught by the odd-crossing guard, which refines them.
@@ -168,13 +166,16 @@ class CaseDrivetrain:
     def backlash_response(self, model: str, speed_rpm: float | None = None,
                           initial_state: np.ndarray | None = None) -> DrivetrainBacklashResponse:
         """The periodic orbit with the backlash mesh (and the bearings' clearances) of ``model`` at a pinion speed
-        [rpm] (default the case's), on every DOF (:data:`BACKLASH_CUTOFF_HZ`)."""
+        [rpm] (default the case's), on the modes up to the section's ``response_cutoff_hz`` plus the static
+        corrections of the mesh, the torque loads and every clearance, as the linear response (its error in Kv is the
+        linear cut-off's: 2.5e-4 on fzg_rig_type_c at 30 kHz; set the cut-off higher to approach every DOF)."""
         from thermogear.drivetrain.backlash_response import drivetrain_backlash_response
 
         state = self.models[model].state(speed_rpm=speed_rpm, points_per_period=self.dynamics.points_per_period)
         return drivetrain_backlash_response(self.assembled(model), state, initial_state,
                                             substeps=backlash_substeps(state.grid.nodes.size - 1),
-                                            samples_per_piece=SAMPLES_PER_PIECE, cutoff_hz=BACKLASH_CUTOFF_HZ)
+                                            samples_per_piece=SAMPLES_PER_PIECE,
+                                            cutoff_hz=self.section.response_cutoff_hz)
 
     def transient(self, model: str) -> DrivetrainTransient:
         """The motion from rest over the case's ``dynamics.transient_periods`` mesh periods, with the backlash mesh
@@ -216,7 +217,7 @@ class CaseDrivetrain:
 
     def heat_shifts(self) -> ModeShifts:
         """Each mode's shift from the cold (elastic) to the hot (thermal) drivetrain, attributed per cause."""
-        return thermal_mode_shifts(self.drivetrains["elastic"], self.drivetrains["thermal"],
+        return thermal_mode_shifts(self.drivetrains[ELASTIC], self.drivetrains[THERMAL],
                                    count=self.section.mode_count)
 
 
@@ -226,19 +227,19 @@ def _mean_state(model: MeshModel, points: int) -> tuple[float, float]:
     return float(state.mean_mesh_stiffness), float(np.dot(state.mesh_damping, weights))
 
 
-def case_drivetrain(case, models: tuple[str, ...] = ("elastic", "thermal")) -> CaseDrivetrain:
+def case_drivetrain(case, models: tuple[str, ...] = (ELASTIC, THERMAL)) -> CaseDrivetrain:
     """Build the case's drivetrain for its elastic (cold) and thermal (hot) mesh models (module docstring)."""
     section = case.drivetrain
     if section is None:
         raise CaseError("drivetrain", None, "a [drivetrain] section", "this case is the pair on rigid supports")
     points = case.dynamics.points_per_period
-    mesh_models = {name: MeshModel(case, name) for name in ("elastic", "thermal")}  # the simulation models
-    stiffness, damping = _mean_state(mesh_models["elastic"], points)
+    mesh_models = {name: MeshModel(case, name) for name in (ELASTIC, THERMAL)}  # the simulation models
+    stiffness, damping = _mean_state(mesh_models[ELASTIC], points)
     cold = drivetrain_from_section(section, case.gear_pair, case.material, stiffness, damping, case.inertias)
-    drivetrains = {"elastic": cold}
+    drivetrains = {ELASTIC: cold}
     notes: list[str] = []
-    if "thermal" in models:
-        hot_model = mesh_models["thermal"]
+    if THERMAL in models:
+        hot_model = mesh_models[THERMAL]
         hot_stiffness, _ = _mean_state(hot_model, points)
         thermoelastic = hot_model.thermoelastic_mesh
         if thermoelastic is not None:
@@ -262,11 +263,11 @@ def case_drivetrain(case, models: tuple[str, ...] = ("elastic", "thermal")) -> C
                          "bulk temperature, else 20 °C) with carbon steel's β_E; under the paper's thermal model "
                          "the mesh keeps its cold geometry, only its stiffness changes")
         warm = WarmState(temperatures, beta, mesh_stiffness=hot_stiffness, **geometry)
-        drivetrains["thermal"] = warm_drivetrain(cold, warm)
+        drivetrains[THERMAL] = warm_drivetrain(cold, warm)
     return CaseDrivetrain(section, case.dynamics, case.gear_pair.pinion.teeth, drivetrains, mesh_models, tuple(notes))
 
 
-def drivetrain_builder(case, models: tuple[str, ...] = ("elastic", "thermal")):
+def drivetrain_builder(case, models: tuple[str, ...] = (ELASTIC, THERMAL)):
     """None for a case without a [drivetrain], else a function of no argument that builds its
     :class:`CaseDrivetrain` (:func:`case_drivetrain`) when called — so that whoever reports the results can say
     why the build failed."""
@@ -337,7 +338,7 @@ def _transient_summary(transient: DrivetrainTransient, harmonics: int) -> dict[s
             "bearing_forces": bearing_force_summary(transient.last_period_forces, harmonics)}
 
 
-def drivetrain_results(built: CaseDrivetrain, models: tuple[str, ...] = ("elastic", "thermal"),
+def drivetrain_results(built: CaseDrivetrain, models: tuple[str, ...] = (ELASTIC, THERMAL),
                        transient: bool = False, progress=None) -> dict[str, Any]:
     """Everything ``run`` reports of a case's drivetrain (``built`` by :func:`case_drivetrain`), as plain numbers
     (JSON-ready): per model the modes (:func:`mode_table`), the response (Kv, DTE, Floquet stability, bearing
@@ -353,9 +354,9 @@ def drivetrain_results(built: CaseDrivetrain, models: tuple[str, ...] = ("elasti
         mesh = ("nonlinear (backlash) on the drivetrain" if built.backlash_mesh
                 else "linear (permanent contact) on the drivetrain")
     result: dict[str, Any] = {
-        "degrees_of_freedom": built.assembled("elastic").size, "response_cutoff_hz": section.response_cutoff_hz,
+        "degrees_of_freedom": built.assembled(ELASTIC).size, "response_cutoff_hz": section.response_cutoff_hz,
         "mesh": mesh, "backlash_mesh": built.backlash_mesh, "transient": bool(transient),
-        "solved_on": ("every DOF" if transient or (built.backlash_mesh and BACKLASH_CUTOFF_HZ is None)
+        "solved_on": ("every DOF" if transient
                       else f"modes up to {section.response_cutoff_hz:.0f} Hz"),
         "notes": list(built.notes), "models": {}}
     for model in models:
@@ -370,6 +371,6 @@ def drivetrain_results(built: CaseDrivetrain, models: tuple[str, ...] = ("elasti
             summary = _response_summary(built.response(model), section.bearing_harmonics)
         result["models"][model] = {**summary, "modes": rows,
                                    "resonances": resonance_speeds(rows, built.teeth, section.bearing_harmonics)}
-    if "elastic" in models and "thermal" in models:
-        result["heat"] = heat_table(built.heat_shifts(), built.drivetrains["elastic"])
+    if ELASTIC in models and THERMAL in models:
+        result["heat"] = heat_table(built.heat_shifts(), built.drivetrains[ELASTIC])
     return result
