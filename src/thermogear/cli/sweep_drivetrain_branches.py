@@ -94,9 +94,9 @@ def run_drivetrain_branches(built, origin, models: tuple[str, ...], speeds: np.n
                                                           f"{largest['speed_rpm']:.0f} rpm")
         console.print(f"  {key}: {where}; {summary['valid_points'][key]} valid, {summary['unstable_points'][key]} "
                       f"unstable, {summary['missing_points'][key]} not computed (in the store with the reason), "
-                      f"run in after losing the branch at {summary['run_in_points'][key]}, contact loss at "
-                      f"{summary['contact_loss_points'][key]}, back-flank contact at "
-                      f"{summary['back_side_contact_points'][key]}", highlight=False)
+                      f"{summary['run_in_points'][key]} run in after losing the branch; teeth separating at "
+                      f"{summary['contact_loss_points'][key]}, back flanks struck at "
+                      f"{summary['back_side_contact_points'][key]} of the speeds", highlight=False)
     for model, band in sweep.hysteresis.items():
         if not band.get("differ"):
             console.print(f"  {model}: up and down branches coincide (no jump in the range)", highlight=False)
