@@ -69,3 +69,58 @@ def test_warm_drivetrain_scales_the_shaft_moduli():
         WarmState({}, 0.01)
     with pytest.raises(CaseError, match="shaft_temperature_c"):
         WarmState({"pinion shaft": 900.0}, BETA)
+
+
+def _shaft_on_rigid_bearings():
+    """A 0.5 m shaft (d 40 mm) with a disk at 0.2 m on bearings at both ends that are rigid against it (1e13 N/m,
+    against a bending stiffness of order 48EI/L³ ≈ 1e7 N/m and an axial one EA/L ≈ 5e8 N/m)."""
+    from drivetrain_builders import uniform_shaft
+
+    from thermogear.drivetrain import Bearing, Drivetrain, NodeLocation, RigidDisk
+
+    shaft = uniform_shaft(0.5, 0.04, 10)
+    disk = RigidDisk.annulus("disk", NodeLocation("shaft", 0.2), 7810.0, 0.03, 0.12, 0.04)
+    bearings = tuple(Bearing(f"bearing {end}", NodeLocation("shaft", position), 1e13, 1e13, 1e13)
+                     for end, position in (("A", 0.0), ("B", 0.5)))
+    return Drivetrain((shaft,), (disk,), bearings)
+
+
+def test_free_expansion_on_rigid_supports_scales_every_frequency_by_the_root_of_one_plus_strain():
+    # Every length ×(1 + ε), density ×(1 + ε)⁻³ (mass conserved), E held: a beam's (and the disk's) frequencies
+    # go as sqrt(E/ρ)/L, so each one by (1 + ε)^(3/2)/(1 + ε) = sqrt(1 + ε) exactly, Timoshenko or not (shear and
+    # rotary terms are ratios of lengths). The held supports break it only through their strain-energy share,
+    # largest in the axial mode (an element's EA/l ≈ 5e9 N/m against 1e13: ≤ 5e-4), so δ(shift) ≲ share·ε/2 ≈
+    # 2.4e-7 (measured 7.8e-8 axially, ≤ 1e-9 for the bending and torsional modes).
+    cold = _shaft_on_rigid_bearings()
+    expansion, rise = 1.2e-5, 80.0
+    strain = expansion * rise
+    warm = WarmState({"shaft": 20.0 + rise}, 0.0, expansion_coefficient_per_k=expansion)
+    hot = warm_drivetrain(cold, warm)
+    moduli_only = warm_drivetrain(cold, WarmState({"shaft": 20.0 + rise}, 0.0))
+    cold_assembled, hot_assembled = cold.assemble(), hot.assemble()
+    translation = np.zeros(cold_assembled.size)
+    translation[cold_assembled.dof_mask(("x",))] = 1.0
+    assert translation @ hot_assembled.mass @ translation == pytest.approx(
+        translation @ cold_assembled.mass @ translation, rel=1e-12)  # the mass is conserved
+    assert hot_assembled.node_positions["shaft"][-1] == pytest.approx(0.5 * (1.0 + strain), rel=1e-14)
+    result = thermal_mode_shifts(cold, hot, count=8, expansion_from=moduli_only)
+    np.testing.assert_allclose(result.exact, math.sqrt(1.0 + strain) - 1.0, rtol=0, atol=2.5e-7)
+    # E held: the expansion is the whole shift, re-solved (the other causes are zero)
+    np.testing.assert_allclose(result.contributions["thermal expansion"], result.exact, rtol=0, atol=1e-12)
+    np.testing.assert_allclose(result.first_order, result.exact, rtol=0, atol=1e-12)
+    with pytest.raises(CaseError, match="masses"):  # an expanded drivetrain needs its state before the expansion
+        thermal_mode_shifts(cold, hot, count=8)
+
+
+def test_expansion_attribution_sums_to_the_exact_shift_to_first_order():
+    # the geared pair warmed with expansion: the remainder (exact − Σ attributions) still falls as the square
+    cold = geared_pair(elements=3)
+    remainders = []
+    for rise in (70.0, 35.0):
+        warm = _warm(rise)
+        expanded = WarmState(**{**warm.__dict__, "expansion_coefficient_per_k": 11.5e-6})
+        result = thermal_mode_shifts(cold, warm_drivetrain(cold, expanded), count=12,
+                                     expansion_from=warm_drivetrain(cold, warm))
+        assert np.abs(result.contributions["thermal expansion"]).max() > 1e-5  # the expansion moves the modes
+        remainders.append(np.abs(result.exact - result.first_order).max())
+    assert 3.6 < remainders[0] / remainders[1] < 4.4

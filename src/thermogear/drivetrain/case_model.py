@@ -18,7 +18,7 @@ period, and the amplitude of the first mesh harmonics). The mesh is linear here 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import partial
 from typing import TYPE_CHECKING, Any
 
@@ -130,7 +130,8 @@ class CaseDrivetrain:
     """The drivetrain of a case in the states of its mesh models: ``section`` the case's [drivetrain] section,
     ``dynamics`` its [dynamics] section (mesh, method, points per period, transient periods), ``teeth`` the
     pinion's, ``drivetrains`` model → Drivetrain, ``models`` model → MeshModel, ``notes`` what was assumed (shaft
-    temperatures)."""
+    temperatures); ``warm_moduli`` the hot drivetrain before its thermal expansion (None where it did not expand),
+    for the attribution of the expansion."""
 
     section: Any
     dynamics: Any
@@ -138,6 +139,7 @@ class CaseDrivetrain:
     drivetrains: dict[str, Drivetrain]
     models: dict[str, MeshModel]
     notes: tuple[str, ...] = ()
+    warm_moduli: Drivetrain | None = None
     _assembled: dict = field(default_factory=dict, repr=False)
 
     @property
@@ -218,7 +220,7 @@ class CaseDrivetrain:
     def heat_shifts(self) -> ModeShifts:
         """Each mode's shift from the cold (elastic) to the hot (thermal) drivetrain, attributed per cause."""
         return thermal_mode_shifts(self.drivetrains[ELASTIC], self.drivetrains[THERMAL],
-                                   count=self.section.mode_count)
+                                   count=self.section.mode_count, expansion_from=self.warm_moduli)
 
 
 def _mean_state(model: MeshModel, points: int) -> tuple[float, float]:
@@ -238,6 +240,7 @@ def case_drivetrain(case, models: tuple[str, ...] = (ELASTIC, THERMAL)) -> CaseD
     cold = drivetrain_from_section(section, case.gear_pair, case.material, stiffness, damping, case.inertias)
     drivetrains = {ELASTIC: cold}
     notes: list[str] = []
+    warm_moduli = None
     if THERMAL in models:
         hot_model = mesh_models[THERMAL]
         hot_stiffness, _ = _mean_state(hot_model, points)
@@ -245,6 +248,7 @@ def case_drivetrain(case, models: tuple[str, ...] = (ELASTIC, THERMAL)) -> CaseD
         if thermoelastic is not None:
             tooth_c = float(np.mean(thermoelastic.tooth_c))
             beta = thermoelastic.gears[0].modulus_coefficient_per_k
+            expansion = thermoelastic.gears[0].expansion_per_k  # the shafts of the case's [material], as the gears
             pair = hot_model.gear_pair
             geometry = {"base_radius_1": pair.pinion.base_radius, "base_radius_2": pair.wheel.base_radius,
                         "operating_pressure_angle": pair.operating_pressure_angle}
@@ -252,6 +256,7 @@ def case_drivetrain(case, models: tuple[str, ...] = (ELASTIC, THERMAL)) -> CaseD
             bulk = getattr(case.temperature, "bulk_c", None)
             tooth_c = MODULUS_REFERENCE_C if bulk is None else float(bulk)
             beta, geometry = MODULUS_TEMPERATURE_COEFFICIENTS_PER_K["carbon_steel"], {}
+            expansion = 0.0  # the paper's model keeps the cold geometry
         temperatures = {shaft.name: shaft.temperature_c if shaft.temperature_c is not None else tooth_c
                         for shaft in section.shafts}
         defaulted = [shaft.name for shaft in section.shafts if shaft.temperature_c is None]
@@ -262,9 +267,13 @@ def case_drivetrain(case, models: tuple[str, ...] = (ELASTIC, THERMAL)) -> CaseD
             notes.append(f"drivetrain: {', '.join(defaulted)} taken at {tooth_c:g} °C in the warm state (the case's "
                          "bulk temperature, else 20 °C) with carbon steel's β_E; under the paper's thermal model "
                          "the mesh keeps its cold geometry, only its stiffness changes")
-        warm = WarmState(temperatures, beta, mesh_stiffness=hot_stiffness, **geometry)
+        warm = WarmState(temperatures, beta, mesh_stiffness=hot_stiffness, expansion_coefficient_per_k=expansion,
+                         **geometry)
         drivetrains[THERMAL] = warm_drivetrain(cold, warm)
-    return CaseDrivetrain(section, case.dynamics, case.gear_pair.pinion.teeth, drivetrains, mesh_models, tuple(notes))
+        if expansion:
+            warm_moduli = warm_drivetrain(cold, replace(warm, expansion_coefficient_per_k=0.0))
+    return CaseDrivetrain(section, case.dynamics, case.gear_pair.pinion.teeth, drivetrains, mesh_models, tuple(notes),
+                          warm_moduli)
 
 
 def drivetrain_builder(case, models: tuple[str, ...] = (ELASTIC, THERMAL)):
