@@ -73,6 +73,8 @@ class Evaluation:
     rig_trend: dict | None = None
     fem: Any = None
     thermoelastic: dict | None = None  # the predictive model beside the paper's (paper's case only)
+    drivetrain: dict | None = None  # [drivetrain] cases: the JSON-ready results (report.drivetrain_section)
+    drivetrain_series: dict = field(default_factory=dict)  # model -> arrays of its drivetrain response (results.nc)
     problems: dict = field(default_factory=dict)  # stage -> reason it failed
     timings: dict = field(default_factory=dict)  # stage -> seconds, one after the other (they add up to the run)
     background_timings: dict = field(default_factory=dict)  # stage run beside the others -> its own seconds

@@ -348,13 +348,15 @@ def _transient_summary(transient: DrivetrainTransient, harmonics: int) -> dict[s
 
 
 def drivetrain_results(built: CaseDrivetrain, models: tuple[str, ...] = (ELASTIC, THERMAL),
-                       transient: bool = False, progress=None) -> dict[str, Any]:
+                       transient: bool = False, progress=None, series: dict | None = None) -> dict[str, Any]:
     """Everything ``run`` reports of a case's drivetrain (``built`` by :func:`case_drivetrain`), as plain numbers
     (JSON-ready): per model the modes (:func:`mode_table`), the response (Kv, DTE, Floquet stability, bearing
     forces; with the case's nonlinear mesh the backlash orbit, its contact loss and whether it was found; with
     ``transient`` the last period of the motion from rest instead) and the speeds where mesh harmonics meet
     mesh-dominated modes; with both models, what heat moved per mode (:func:`heat_table`). ``progress`` is called
-    with a step's name before each model's response."""
+    with a step's name before each model's response. A ``series`` dict receives, per model, the periodic
+    response's arrays for a results file (:func:`~thermogear.drivetrain.response_dataset.response_dataset_parts`:
+    DTE, mesh force and bearing forces over one mesh period, the bearings' mesh harmonics)."""
     section = built.section
     if transient:
         mesh = (f"{'nonlinear (backlash)' if built.backlash_mesh else 'linear (permanent contact)'} on the "
@@ -374,10 +376,18 @@ def drivetrain_results(built: CaseDrivetrain, models: tuple[str, ...] = (ELASTIC
         rows = mode_table(built.modes(model), built.drivetrains[model])
         if transient:
             summary = _transient_summary(built.transient(model), section.bearing_harmonics)
-        elif built.backlash_mesh:
-            summary = _backlash_summary(built.backlash_response(model), section.bearing_harmonics)
         else:
-            summary = _response_summary(built.response(model), section.bearing_harmonics)
+            response = built.backlash_response(model) if built.backlash_mesh else built.response(model)
+            summary = (_backlash_summary if built.backlash_mesh else _response_summary)(response,
+                                                                                      section.bearing_harmonics)
+            if series is not None:
+                from thermogear.drivetrain.response_dataset import response_dataset_parts
+
+                parts = response_dataset_parts(response, section.bearing_harmonics,
+                                               {"model": model, "mesh": mesh, "speed_rpm": built.models[model].speed_rpm},
+                                               SPECTRUM_POINTS)
+                if parts is not None:
+                    series[model] = parts
         result["models"][model] = {**summary, "modes": rows,
                                    "resonances": resonance_speeds(rows, built.teeth, section.bearing_harmonics)}
     if ELASTIC in models and THERMAL in models:

@@ -81,7 +81,8 @@ def build_report(case, out: Path | str, *, force: bool = False, method: str = "p
 
     drivetrain_models = tuple(evaluation.responses) or ("elastic",)
     evaluation.drivetrain = drivetrain_report_data(drivetrain_builder(case, drivetrain_models), drivetrain_models,
-                                                   transient=method == "transient")
+                                                   transient=method == "transient",
+                                                   series=evaluation.drivetrain_series)
     with folder:
         step("figures")
         figure_start = time.perf_counter()

@@ -12,10 +12,12 @@ __all__ = ["drivetrain_report_data", "drivetrain_section"]
 
 
 def drivetrain_report_data(build: Callable[[], Any] | None, models: tuple[str, ...] = ("elastic", "thermal"),
-                           transient: bool = False, progress=None) -> dict[str, Any] | None:
+                           transient: bool = False, progress=None, series: dict | None = None
+                           ) -> dict[str, Any] | None:
     """The drivetrain results as JSON-ready numbers (:func:`~thermogear.drivetrain.case_model.drivetrain_results`
     of the CaseDrivetrain that ``build()`` returns; None for a case without ``[drivetrain]``, ``build`` None);
-    where they cannot be computed, ``{"not_computed": reason}`` (the rest of the report stands)."""
+    where they cannot be computed, ``{"not_computed": reason}`` (the rest of the report stands). ``series``: filled
+    per model with the response's arrays for results.nc."""
     if build is None:
         return None
     from thermogear.drivetrain.case_model import drivetrain_results
@@ -23,7 +25,7 @@ def drivetrain_report_data(build: Callable[[], Any] | None, models: tuple[str, .
     from thermogear.serialization import json_ready
 
     try:
-        return json_ready(drivetrain_results(build(), models, transient, progress), non_finite="null")
+        return json_ready(drivetrain_results(build(), models, transient, progress, series), non_finite="null")
     except ModelLimitError as error:  # most often a mode nothing damps: say where damping comes from
         return {"not_computed": f"{error} (every mode needs damping: give the shafts material_damping_s and the "
                                 "bearings damping in x, y and, where they locate the shaft, z)"}
@@ -134,5 +136,7 @@ def drivetrain_section(data: dict[str, Any] | None) -> str:
             + "<h3>Dynamic bearing forces on the housing</h3>"
             "<p>Radial force of each bearing over one mesh period: its mean, the RMS of its dynamic part and the "
             "amplitude √(X_j² + Y_j²) of the first mesh harmonics — what an accelerometer on the housing "
-            "sees.</p>"
+            "sees. The forces in time (x, y, z over one mesh period, with the DTE and the mesh force) and their "
+            "mesh harmonics per direction are in <code>results.nc</code>, group <code>drivetrain_&lt;model&gt;</code>"
+            " (the transient's are not stored).</p>"
             + _bearings_table(data) + notes)

@@ -42,7 +42,12 @@ def _write_group(group, parts: DatasetParts) -> None:
     for name, (dims, values, own) in variables.items():
         if values.dtype == bool:
             values = values.astype(np.int8)
-        variable = group.create_variable(name, dims, data=values)
+        if values.dtype.kind in "OU":  # names (e.g. bearings): HDF5 variable-length strings, which xarray reads back
+            import h5py  # noqa: PLC0415
+
+            variable = group.create_variable(name, dims, dtype=h5py.string_dtype(), data=values.astype(object))
+        else:
+            variable = group.create_variable(name, dims, data=values)
         labels = [other for other in auxiliary if other != name and set(variables[other][0]) <= set(dims)]
         if labels and name not in coords:
             own = {**own, "coordinates": " ".join(labels)}

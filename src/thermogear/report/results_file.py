@@ -106,7 +106,8 @@ def curves_parts(evaluation) -> tuple[dict, dict, dict]:
 
 
 def write_results_netcdf(evaluation, path: Path) -> list[str]:
-    """Write results.nc (root: curves; one group per response). Returns the group names written. Written with
+    """Write results.nc (root: curves; one group per response; for a drivetrain case ``drivetrain_<model>``: DTE,
+    mesh force and bearing forces over one mesh period, the bearings' mesh harmonics). Returns the group names written. Written with
     h5netcdf directly (:mod:`thermogear.report.netcdf_file`); xarray reads it as before."""
     from thermogear.report.netcdf_file import write_groups
 
@@ -115,6 +116,8 @@ def write_results_netcdf(evaluation, path: Path) -> list[str]:
         response = getattr(evaluation, kind).get(model)
         if response is not None:
             groups[group] = response.dataset_parts()
+    for model, parts in getattr(evaluation, "drivetrain_series", {}).items():  # [drivetrain] cases (issue 27)
+        groups[f"drivetrain_{model}"] = parts
     return write_groups(path, curves_parts(evaluation), groups)
 
 
