@@ -32,7 +32,7 @@ from typing import Any
 import numpy as np
 
 from thermogear.drivetrain.assembly import AssembledDrivetrain
-from thermogear.drivetrain.response import bearing_force_spectrum, drivetrain_backlash_system
+from thermogear.drivetrain.response import bearing_force_spectrum, bearing_forces, drivetrain_backlash_system
 from thermogear.dynamics.backlash_ndof import (BACK_CONTACT, DRIVING_CONTACT, FREE_FLIGHT, BacklashSystem, DeadZone,
                                                backlash_periodic_orbit)
 from thermogear.dynamics.backlash_trajectory import BacklashTrajectory, backlash_trajectory
@@ -181,25 +181,6 @@ def _failed(state: MeshState, failure: str, bearings: list[str]) -> DrivetrainBa
     return DrivetrainBacklashResponse(empty, empty, empty, empty, {}, np.zeros((0, 0)), np.zeros(0, dtype=int),
                                       empty, False, failure, 0, math.nan, math.nan, metrics,
                                       state.problem().period)
-
-
-def bearing_forces(assembled: AssembledDrivetrain, displacement: np.ndarray, velocity: np.ndarray
-                   ) -> dict[str, np.ndarray]:
-    """Force of each bearing on its housing (S, 3) [N] at the samples: K·u + C·u̇, and per direction x, y of a
-    bearing with a radial clearance δ, zero for |u| <= δ and k(u ∓ δ) + c·u̇ beyond."""
-    forces = {}
-    for bearing in assembled.drivetrain.bearings:
-        dofs = [assembled.dof(bearing.location, name) for name in ("x", "y", "z")]
-        stiffness, damping = bearing.stiffness_matrix()[:3, :3], bearing.damping_matrix()[:3, :3]
-        u, rate = displacement[:, dofs], velocity[:, dofs]
-        if bearing.radial_clearance > 0.0:  # no x–y coupling with a clearance (refused at construction)
-            gap = bearing.radial_clearance
-            beyond = np.abs(u) > gap
-            u = np.where(beyond, u - np.sign(u) * gap, 0.0)
-            rate = np.where(beyond, rate, 0.0)
-            u[:, 2], rate[:, 2] = displacement[:, dofs[2]], velocity[:, dofs[2]]
-        forces[bearing.name] = u @ stiffness.T + rate @ damping.T
-    return forces
 
 
 def _response(assembled: AssembledDrivetrain, state: MeshState, system: BacklashSystem, reduction, basis,

@@ -33,7 +33,7 @@ from thermogear.dynamics.spectra import harmonic_spectrum
 from thermogear.errors import CaseError
 from thermogear.mesh.state import MeshState
 
-__all__ = ["DrivetrainResponse", "bearing_force_spectrum", "drivetrain_backlash_system", "drivetrain_periodic_system",
+__all__ = ["DrivetrainResponse", "bearing_force_spectrum", "bearing_forces", "drivetrain_backlash_system", "drivetrain_periodic_system",
            "drivetrain_periodic_response", "drivetrain_speed_sweep"]
 
 
@@ -201,11 +201,27 @@ def _response(assembled: AssembledDrivetrain, state: MeshState, problem, system:
     interval = np.minimum(np.arange(delta.size) // samples_per_piece, pieces - 1)
     excitation = problem.force_per_interval - state.normal_load
     force = problem.stiffness[interval] * delta - excitation[interval] + problem.damping[interval] * rate
+    forces = bearing_forces(assembled, displacement, velocity, clearance=False)  # the linear system: in contact
+    metrics = compute_metrics(problem, response.time, delta, rate, interval, response.multipliers)
+    return DrivetrainResponse(response.time, delta, rate, force, forces, displacement, response.multipliers,
+                              metrics, problem.period)
+
+
+def bearing_forces(assembled: AssembledDrivetrain, displacement: np.ndarray, velocity: np.ndarray,
+                   clearance: bool = True) -> dict[str, np.ndarray]:
+    """Force of each bearing on its housing (S, 3) [N] at the samples (S, DOFs): K·u + C·u̇, and per direction x, y
+    of a bearing with a radial clearance δ, zero for |u| <= δ and k(u ∓ δ) + c·u̇ beyond (``clearance`` False: every
+    bearing in contact, as the linear system solves it)."""
     forces = {}
     for bearing in assembled.drivetrain.bearings:
         dofs = [assembled.dof(bearing.location, name) for name in ("x", "y", "z")]
         stiffness, damping = bearing.stiffness_matrix()[:3, :3], bearing.damping_matrix()[:3, :3]
-        forces[bearing.name] = displacement[:, dofs] @ stiffness.T + velocity[:, dofs] @ damping.T
-    metrics = compute_metrics(problem, response.time, delta, rate, interval, response.multipliers)
-    return DrivetrainResponse(response.time, delta, rate, force, forces, displacement, response.multipliers,
-                              metrics, problem.period)
+        u, rate = displacement[:, dofs], velocity[:, dofs]
+        if clearance and bearing.radial_clearance > 0.0:  # no x–y coupling with a clearance (refused at construction)
+            gap = bearing.radial_clearance
+            beyond = np.abs(u) > gap
+            u = np.where(beyond, u - np.sign(u) * gap, 0.0)
+            rate = np.where(beyond, rate, 0.0)
+            u[:, 2], rate[:, 2] = displacement[:, dofs[2]], velocity[:, dofs[2]]
+        forces[bearing.name] = u @ stiffness.T + rate @ damping.T
+    return forces
