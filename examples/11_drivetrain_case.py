@@ -15,6 +15,7 @@ sees — with the speeds where mesh harmonics meet the modes the mesh excites. T
 from __future__ import annotations
 
 import sys
+import tempfile
 import warnings
 from pathlib import Path
 
@@ -91,4 +92,7 @@ def main(out: Path) -> dict:
 
 
 if __name__ == "__main__":
-    main(Path(sys.argv[1]) if len(sys.argv) > 1 else Path("example-output"))
+    # without a folder argument the output goes to the temporary directory, never into the folder the script is
+    # run from (a checkout's root would gain an untracked folder)
+    default = Path(tempfile.gettempdir()) / "thermogear-examples" / Path(__file__).stem
+    main(Path(sys.argv[1]) if len(sys.argv) > 1 else default)

@@ -5,7 +5,12 @@ Start with :func:`load_case` (a built-in parameter set such as ``"luo2019"`` or 
 
 from __future__ import annotations
 
-from importlib.metadata import PackageNotFoundError, version
+import time as _time
+
+#: When Python began importing thermogear [s, time.perf_counter]: the origin of the command line's start-up time.
+IMPORT_STARTED = _time.perf_counter()
+
+from importlib.metadata import PackageNotFoundError, version  # noqa: E402
 
 try:
     __version__ = version("thermogear")

@@ -30,7 +30,8 @@ from thermogear.materials import Material
 from thermogear.operating import OperatingPoint
 from thermogear.schema.base import StrictTypeError
 from thermogear.schema import (CaseFile, DampingSection, DrivetrainSection, DynamicsSection, FemSection, GearboxSection,
-                               GearsSection, HousingSection, LubricantSection, MaterialSection, TemperatureSection,
+                               GearSection, GearsSection, HousingSection, LubricantSection, MaterialSection,
+                               TemperatureSection,
                                ThermalSection)
 from thermogear.schema.drivetrain import check_drivetrain_fits_gears
 from thermogear.temperature_field import (check_temperatures, default_bulk_temperature,
@@ -96,10 +97,32 @@ class Case:
         for dotted, value in changes.items():
             node = document
             *parents, last = dotted.split(".")
+            if parents and parents[0] not in document:  # a section the file leaves to its default
+                document[parents[0]] = _section_default(parents[0])
             for part in parents:
                 node = node.setdefault(part, {})
             node[last] = value
         return case_from_document(document, source=self.source)
+
+
+def _gears_key(key: str) -> str:
+    """The case-file key of a key the geometry names within ``[gears]`` (``pinion.profile_shift`` →
+    ``gears.pinion.profile_shift``); a derived quantity (``contact_ratio``) is named as such, within [gears]."""
+    section, _, rest = key.partition(".")
+    if section in GearsSection.model_fields or (section in ("pinion", "wheel") and rest in GearSection.model_fields):
+        return f"gears.{key}"
+    return f"gears ({key}, derived)"
+
+
+def _section_default(name: str) -> dict[str, Any]:
+    """The keys a top-level section absent from a case file takes by default (``[lubricant]`` names its default
+    oil), so that a change to one key of such a section keeps the others' defaults: ``thermogear fem`` set the
+    oil temperature of a case without ``[lubricant]`` and lost the default oil's name (issue 36)."""
+    field = CaseFile.model_fields.get(name)
+    default = None if field is None else field.default
+    if isinstance(default, pydantic.BaseModel):
+        return default.model_dump(exclude_unset=True)
+    return {}
 
 
 def cached_per_case(function):
@@ -269,7 +292,10 @@ def case_from_document(document: dict[str, Any], source: str = "<memory>") -> Ca
 
     centre = None if gears.centre_distance_mm is None else gears.centre_distance_mm * 1e-3
     check_profile_shift_sum(gears)
-    pair = GearPair.create(gear(gears.pinion), gear(gears.wheel), centre, tip_shortening=gears.tip_shortening)
+    try:
+        pair = GearPair.create(gear(gears.pinion), gear(gears.wheel), centre, tip_shortening=gears.tip_shortening)
+    except CaseError as error:  # the geometry names its keys within [gears]: the case file's key is gears.<key>
+        raise type(error)(_gears_key(error.key), error.value, error.allowed, error.reason) from None
     check_thermoelastic_inputs(pair, model)
     if model.drivetrain is not None:  # the gears' seats on their shafts (the drivetrain is built by its resolver)
         check_drivetrain_fits_gears(model.drivetrain, (pair.pinion.bore_radius * 1e3, pair.wheel.bore_radius * 1e3),

@@ -38,6 +38,19 @@ MINIMUM_LINE_LOAD = 10.0
 #: Allowed range of λ = f_mesh / f_n [–] (module docstring). Ordinary gearboxes run at 0.01 to 5.
 FREQUENCY_RATIO_RANGE = (1e-5, 1e3)
 
+#: Largest centrifugal hoop stress ρ·v_a² at the tip circle [Pa] (v_a the tip speed). A thin ring spinning at
+#: rim speed v carries the hoop stress σ = ρ·v² whatever its radius (Timoshenko, Strength of Materials II, §67),
+#: the rim of a gear more than that with its teeth hanging on it. 1000 MPa is about the core yield strength of
+#: case-hardened gear steels (18CrNiMo7-6: R_p0.2 ≈ 800–1050 MPa, stated as an assumption): above it the rim
+#: would yield before any tooth load; steel turbo gears run to about 200 m/s (ρ v² ≈ 310 MPa).
+MAXIMUM_RIM_HOOP_STRESS = 1.0e9
+
+#: A tip relief deeper than this many static deflections of one tooth pair under the nominal load (F_bt / (b·c′),
+#: ISO 6336-1 c′) is flagged: a relief is designed about equal to that deflection (Sigg 1965; Niemann & Winter
+#: §21.2), and one several times deeper keeps the relieved flank out of contact at any load the case runs, so it
+#: acts as a profile error, not as a correction.
+TIP_RELIEF_DEFLECTIONS_FLAGGED = 5.0
+
 
 def _fit_coefficients_positive(teeth: int, root_to_bore: float, pressure_angle: float, rack_dedendum: float,
                                rack_tip_radius: float) -> bool:
@@ -143,5 +156,51 @@ def check_model_limits(case) -> None:
     """Every limit of this module, in order (called by :func:`thermogear.case.check_case`)."""
     check_fillet_fit(case.gear_pair)
     check_load_range(case.normal_load, case.gear_pair.face_width, case.document.get("operating", {}))
+    check_rim_speed(case.gear_pair, case.material, case.operating_point.speed_rpm)  # before λ: the cause first
     check_dynamic_range(case.gear_pair, case.material, case.operating_point.speed_rpm, case.inertias)
     check_bearing_clearance(case.drivetrain, case.dynamics.mesh)
+    flag_deep_tip_relief(case.gear_pair, case.material, case.normal_load, case.gears_input)
+
+
+def check_rim_speed(pair: "GearPair", material: "Material", speed_rpm: float) -> None:
+    """Refuse a speed whose tip speed v_a [m/s] gives a rim hoop stress ρ·v_a² above :data:`MAXIMUM_RIM_HOOP_STRESS`
+    (a 10 km/s pitch-line speed passed without a word, issue 36). The faster gear rim is the larger one: both gears
+    share the pitch-line speed, the tip speeds differ by their tip-to-pitch radius ratios."""
+    omega = speed_rpm * math.pi / 30.0
+    tip_speed = max(omega * pair.pinion.tip_radius,
+                    omega * pair.pinion.reference_radius / pair.wheel.reference_radius * pair.wheel.tip_radius)
+    stress = material.density * tip_speed**2
+    if stress <= MAXIMUM_RIM_HOOP_STRESS:
+        return
+    most = speed_rpm * math.sqrt(MAXIMUM_RIM_HOOP_STRESS / stress)
+    raise CaseError("operating.speed_rpm", speed_rpm, f"<= {most:.6g} rpm for this pair (a tip speed of at most "
+                    f"{tip_speed * most / speed_rpm:.0f} m/s)",
+                    f"the tip speed {tip_speed:.4g} m/s (pitch-line speed {omega * pair.pinion.reference_radius:.4g} "
+                    f"m/s) loads the rim with a centrifugal hoop stress ρ·v² = {stress * 1e-6:.0f} MPa, above "
+                    f"{MAXIMUM_RIM_HOOP_STRESS * 1e-6:.0f} MPa, the core yield strength of case-hardened gear steels: "
+                    "the gear would burst before it meshed")
+
+
+def flag_deep_tip_relief(pair: "GearPair", material: "Material", normal_load: float, gears_section) -> None:
+    """Warn (:class:`~thermogear.errors.ModelAssumptionWarning`) about a tip relief deeper than
+    :data:`TIP_RELIEF_DEFLECTIONS_FLAGGED` static deflections of one tooth pair under the case's load (a 1000 μm
+    relief on a module 4.5 tooth passed without a flag, issue 36)."""
+    import warnings
+
+    from thermogear.errors import ModelAssumptionWarning
+    from thermogear.stiffness.iso6336 import iso6336_stiffness
+
+    deflection = None
+    for name in ("pinion", "wheel"):
+        relief_um = getattr(gears_section, name).tip_relief_um
+        if relief_um <= 0.0:
+            continue
+        if deflection is None:
+            deflection = normal_load / (iso6336_stiffness(pair, material)["c_prime"] * pair.face_width)
+        if relief_um * 1e-6 > TIP_RELIEF_DEFLECTIONS_FLAGGED * deflection:
+            warnings.warn(f"gears.{name}.tip_relief_um = {relief_um:g}: {relief_um * 1e-6 / deflection:.0f} times "
+                          f"the static deflection of one tooth pair under the case's load ({deflection * 1e6:.2f} "
+                          f"μm, F_bt/(b·c′) with ISO 6336-1's c′); a relief is designed about equal to it, so this "
+                          "one keeps the relieved flank out of contact at this load and acts as a profile error",
+                          ModelAssumptionWarning, stacklevel=2)
+

@@ -21,6 +21,11 @@ from thermogear.errors import CaseError
 # Smallest tooth thickness at the tip, in modules, below which a tip is refused as too thin. Common design
 # practice (e.g. Niemann/Winter, ISO 21771 commentary) asks for at least 0.2·m for through-hardened gears.
 MINIMUM_TIP_THICKNESS_MODULES = 0.2
+#: Largest normal backlash as a share of the base pitch [–], whatever makes it (a thinning of the teeth given as
+#: ``gears.backlash_normal_um``, or a centre distance above the zero-backlash one). The tooth models use the
+#: unthinned tooth: 0.1 p_b of thinning changes a tooth's bending stiffness (∝ thickness³) by about 30 %; usual
+#: backlashes (AGMA 2002 / ISO/TR 10064-2 tables, 0.02 to 0.1 m) are a few hundredths of p_b.
+MAXIMUM_BACKLASH_SHARE_OF_BASE_PITCH = 0.1
 
 
 from thermogear.involute import (disc_polar_inertia, equivalent_mass, gamma_from_roll,  # noqa: E402,F401
@@ -139,6 +144,24 @@ class GearPair:
                             f">= {shift_distance * 1e3:.4f} mm",
                             "the profile shifts give a zero-backlash centre distance larger than this: the teeth "
                             "would have to penetrate each other")
+        base_radii = reference_distance * math.cos(pinion.pressure_angle)
+        if centre_distance > base_radii:
+            opened = 2.0 * base_radii * (float(involute(math.acos(base_radii / centre_distance)))
+                                         - float(involute(alpha_w_shift)))
+            base_pitch = math.pi * pinion.module * math.cos(pinion.pressure_angle)
+            if opened > MAXIMUM_BACKLASH_SHARE_OF_BASE_PITCH * base_pitch:
+                needed = ((float(involute(math.acos(base_radii / centre_distance))) - float(involute(
+                    pinion.pressure_angle))) * (pinion.teeth + wheel.teeth) / (2.0 * math.tan(pinion.pressure_angle)))
+                raise CaseError("centre_distance_mm", round(centre_distance * 1e3, 6),
+                                f"<= {_widest_centre_distance(reference_distance, pinion, alpha_w_shift) * 1e3:.4f}"
+                                f" mm with these profile shifts (a normal backlash of at most a tenth of the base "
+                                f"pitch, {MAXIMUM_BACKLASH_SHARE_OF_BASE_PITCH * base_pitch * 1e6:.0f} μm)",
+                                f"{(centre_distance - shift_distance) * 1e3:.3f} mm above the zero-backlash centre "
+                                f"distance {shift_distance * 1e3:.4f} mm the unthinned teeth leave a normal backlash "
+                                f"of {opened * 1e6:.0f} μm: no designed pair runs so (backlash tables of ISO/TR "
+                                f"10064-2 and AGMA 2002 stay within a few hundredths of the base pitch) and the "
+                                f"contact ratio falls; a pair meant for this centre distance has profile shifts "
+                                f"x1 + x2 = {needed:.4f} (ISO 21771: inv α_w = inv α + 2 tan α (x1 + x2)/(z1 + z2))")
         shortening = (pinion.profile_shift + wheel.profile_shift
                       - (centre_distance - reference_distance) / pinion.module)
         shortening = max(shortening, 0.0) if tip_shortening else 0.0
@@ -330,6 +353,16 @@ class GearPair:
             raise CaseError("contact_ratio", round(self.contact_ratio, 4), "> 1",
                             "with a contact ratio of 1 or less the mesh loses contact between tooth pairs; "
                             "raise the addendum, lower the pressure angle or use more teeth")
+
+
+def _widest_centre_distance(reference_distance: float, pinion: Gear, alpha_w_shift: float) -> float:
+    """Centre distance [m] at which the unthinned teeth leave a normal backlash of
+    :data:`MAXIMUM_BACKLASH_SHARE_OF_BASE_PITCH` base pitches: j_bn = 2(r_b1 + r_b2)(inv α_w − inv α_w0) solved for
+    α_w (ISO 21771), a = (r_b1 + r_b2)/cos α_w."""
+    base_radii = reference_distance * math.cos(pinion.pressure_angle)
+    base_pitch = math.pi * pinion.module * math.cos(pinion.pressure_angle)
+    target = float(involute(alpha_w_shift)) + MAXIMUM_BACKLASH_SHARE_OF_BASE_PITCH * base_pitch / (2.0 * base_radii)
+    return base_radii / math.cos(float(inverse_involute(target)))
 
 
 def _check_gear_inputs(key: str, gear: Gear) -> None:

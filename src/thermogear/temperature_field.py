@@ -210,6 +210,15 @@ def fit_flank_polynomial(gamma, flank_c, fit_degree: int) -> np.polynomial.Polyn
     return polynomial
 
 
+def case_key_of(source: str, key: str) -> str:
+    """The case-file key a temperature of a field from ``source`` came from: the table's own key, ``bulk_c`` of a
+    uniform field, ``csv`` for a CSV table's flanks, ``model`` for a field a model predicts (FE, gearbox network):
+    never a key the user did not write (``temperature.flank_c`` was named for a gearbox case, issue 36)."""
+    if source.startswith("tabulated"):
+        return "temperature.csv" if source == "tabulated (csv)" and key.endswith(".flank_c") else key
+    return "temperature.bulk_c" if source == "uniform" else f"temperature.model = '{source.split()[0]}'"
+
+
 def check_temperatures(field: TemperatureField, gamma_start: float, gamma_end: float,
                        lubricant_maximum_c: float | None = None, count: int = 401, *,
                        limits: TemperatureLimits = THERMOELASTIC_LIMITS) -> None:
@@ -250,7 +259,7 @@ def check_temperatures(field: TemperatureField, gamma_start: float, gamma_end: f
     floor = field.reference_c if limits.lowest_c is None else limits.lowest_c
     floor_text = (f">= reference_c = {field.reference_c:g} °C" if limits.lowest_c is None else f">= {floor:g} °C")
     for key, (name, lowest, highest) in values.items():
-        key = "temperature.bulk_c" if field.source == "uniform" else key
+        key = case_key_of(field.source, key)
         if not (math.isfinite(lowest) and math.isfinite(highest)):
             raise CaseError(key, lowest, "finite", "a temperature is NaN or infinite")
         if lowest < floor:

@@ -30,10 +30,10 @@ def reproduce(
     import time  # noqa: PLC0415
 
     from thermogear.cli.console import step_progress  # noqa: PLC0415
-    from thermogear.cli.timing import seconds_since_process_start  # noqa: PLC0415
+    from thermogear.cli.timing import seconds_since_import  # noqa: PLC0415
     from thermogear.report.steps import steps_of_report  # noqa: PLC0415
 
-    start_up = seconds_since_process_start()
+    start_up = seconds_since_import()
     # at the interpreter's exit its last full collections would walk every object once more only to free memory
     # the system takes back anyway: 0.3-0.5 s CPU, over a second of wall on a loaded machine. Frozen first, they
     # are skipped (atexit runs before those collections, and only when the process really ends)

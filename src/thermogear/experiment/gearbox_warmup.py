@@ -179,7 +179,10 @@ def gearbox_warmup(case, duration_s: float = 1200.0, start_c: float | None = Non
     operating = gearbox_operating_point(case.operating_point, case.gearbox, speed_rpm)
     start = operating.ambient_c if start_c is None else float(start_c)
     if not (math.isfinite(start) and COLDEST_START_C <= start <= 150.0):
-        raise CaseError("--start-c", start, f"[{COLDEST_START_C:g}, 150] °C", "the start temperature of every node")
+        # the start is the ambient unless --start-c gives it: name the input the user actually set (issue 36)
+        key, what = (("--start-c", "the start temperature of every node") if start_c is not None else
+                     ("gearbox.ambient_c", "the ambient is every node's start temperature unless --start-c gives one"))
+        raise CaseError(key, start, f"[{COLDEST_START_C:g}, 150] °C", what)
     model = gearbox_model_from_case(case)
     history = model.warm_up(operating, duration_s, points=count * int(points_per_interval) + 1, initial_c=start)
     description = model.description

@@ -17,6 +17,11 @@ from thermogear.schema.base import Section
 MAX_TRANSIENT_PERIODS = 500
 #: Most samples of a transient history (periods × points per period) [–]: 500 periods of 1024 samples, ≈ 0.55 GB.
 MAX_TRANSIENT_SAMPLES = MAX_TRANSIENT_PERIODS * 1024
+#: Most samples of one periodic orbit (points_per_period × samples_per_interval) [–]. Each sample keeps the state,
+#: the mesh force and the metrics' series of both models, about 300 bytes: 100 000 × 256 samples took 7.3 GB and
+#: 5 min (and a memory traceback on a smaller machine, issue 36); 2²⁰ samples stay near 0.3 GB, and 1024 points
+#: of 1024 samples each resolve a mesh period far finer than any plot or spectrum needs.
+MAX_ORBIT_SAMPLES = 1024 * 1024
 
 
 class DampingSection(Section):
@@ -59,6 +64,17 @@ class DynamicsSection(Section):
     transient_periods: Annotated[int, Field(ge=1, le=MAX_TRANSIENT_PERIODS, description=(
         "mesh periods integrated from rest (the history is kept: about 1 kB per sample)"))] = 60
     include_damping_force: bool = Field(False, description="dynamic load k·x + c·ẋ instead of the paper's k·x")
+
+    @model_validator(mode="after")
+    def _orbit_memory(self):
+        samples = self.points_per_period * self.samples_per_interval
+        if samples > MAX_ORBIT_SAMPLES:
+            raise CaseError("dynamics.samples_per_interval", self.samples_per_interval,
+                            f"<= {MAX_ORBIT_SAMPLES // self.points_per_period} with points_per_period = "
+                            f"{self.points_per_period}", f"the periodic orbit keeps every sample (about 300 bytes "
+                            f"each): {samples:,} samples would need about {samples * 3e-7:.1f} GB; at most "
+                            f"{MAX_ORBIT_SAMPLES:,} samples per period")
+        return self
 
     @model_validator(mode="after")
     def _transient_memory(self):

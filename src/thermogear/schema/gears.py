@@ -8,17 +8,13 @@ from typing import Annotated, Literal
 from pydantic import Field, model_validator
 
 from thermogear.errors import CaseError
+from thermogear.geometry import MAXIMUM_BACKLASH_SHARE_OF_BASE_PITCH
 from thermogear.schema.base import Section
 
 
 #: Smallest face width [mm]: the smallest module the schema takes (0.1 mm); a thinner gear is no gear the
 #: tooth models describe (1e-9 mm passed and gave a static line load of 4·10¹² N/mm, issue 25).
 MINIMUM_FACE_WIDTH_MM = 0.1
-#: Largest normal backlash as a share of the base pitch [–]. The backlash is made by thinning the teeth, and
-#: the tooth models use the unthinned tooth: a normal backlash of 0.1 p_b thins each tooth (half each) by about a
-#: tenth of its thickness at the pitch point (≈ p_b/2), which already changes its bending stiffness (∝ thickness³)
-#: by about 30 %. Usual backlashes (AGMA 2002 / ISO/TR 10064-2 tables, 0.02 to 0.1 m) are a few hundredths of p_b.
-MAXIMUM_BACKLASH_SHARE_OF_BASE_PITCH = 0.1
 
 
 class GearSection(Section):
