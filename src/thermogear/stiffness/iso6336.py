@@ -48,7 +48,8 @@ def iso6336_single_stiffness(teeth_1: int, teeth_2: int, shift_1: float, shift_2
                              youngs_modulus_1: float, youngs_modulus_2: float | None = None,
                              rack_dedendum_coefficient: float = 1.25, pressure_angle: float = math.radians(20.0),
                              line_load: float | None = None, rim_factor: float = 1.0,
-                             helix_angle: float = 0.0, warn: bool = True) -> float:
+                             helix_angle: float = 0.0, warn: bool = True,
+                             virtual_teeth: tuple[float, float] | None = None) -> float:
     """Single stiffness c′ per unit face width [N/m²] (ISO 6336-1:2006 Method B, §9.3; ISO 6336-1 clause 9).
 
     c′ = (1/q′)·C_M·C_R·C_B·cos β·(E_r/206 GPa), E_r = 2E1E2/(E1 + E2); C_M = 0.8 (solid discs), C_R the rim
@@ -61,8 +62,9 @@ def iso6336_single_stiffness(teeth_1: int, teeth_2: int, shift_1: float, shift_2
                       "−0.5 ≤ x1 + x2 ≤ 2)", ExtrapolationWarning, stacklevel=2)
     e_2 = youngs_modulus_1 if youngs_modulus_2 is None else youngs_modulus_2
     reduced_modulus = 2.0 * youngs_modulus_1 * e_2 / (youngs_modulus_1 + e_2)
-    teeth_n1 = teeth_1 / (math.cos(helix_angle) ** 3)
-    teeth_n2 = teeth_2 / (math.cos(helix_angle) ** 3)
+    if virtual_teeth is None:  # z_n ≈ z/cos³β; a helical pair gives the exact z/(cos²β_b cos β) (ISO 21771)
+        virtual_teeth = (teeth_1 / (math.cos(helix_angle) ** 3), teeth_2 / (math.cos(helix_angle) ** 3))
+    teeth_n1, teeth_n2 = virtual_teeth
     theoretical = 1.0 / iso6336_flexibility(teeth_n1, teeth_n2, shift_1, shift_2)
     stiffness = (theoretical * SOLID_DISC_FACTOR * rim_factor
                  * basic_rack_factor(rack_dedendum_coefficient, pressure_angle)
