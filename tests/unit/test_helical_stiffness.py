@@ -40,23 +40,28 @@ def test_a_zero_helix_gives_the_spur_mesh_stiffness(section):
     roll = pair.path_points["A"] + phase[:, None] + pair.base_pitch * np.arange(-1, 3)
     inside = (roll >= pair.path_points["A"]) & (roll <= pair.path_points["E"])
     spur = np.where(inside, pair_stiffness_at(pair, STEEL, np.where(inside, roll, pair.path_points["A"])), 0.0)
-    result = helical_mesh_stiffness(helical, STEEL, phase, slices=7, section=section)
-    # seven equal slices of b/7: only the summation's rounding separates them from the whole face
-    np.testing.assert_allclose(result.stiffness, spur.sum(axis=1), rtol=1e-13)
+    for slices in (None, 7):  # the face integral, and seven equal slices of b/7
+        result = helical_mesh_stiffness(helical, STEEL, phase, slices=slices, section=section)
+        # only the summation's rounding separates them from the whole face's stiffness
+        np.testing.assert_allclose(result.stiffness, spur.sum(axis=1), rtol=1e-13)
 
 
-def test_the_slice_sum_converges_with_the_number_of_slices():
+@pytest.mark.parametrize("section", ["normal", "transverse"])
+def test_the_slice_sum_converges_to_the_face_integral(section):
     helical = _pair(15.0)
     phase = np.linspace(0.0, helical.transverse_base_pitch, 41, endpoint=False)
-    reference = helical_mesh_stiffness(helical, STEEL, phase, slices=3200).stiffness
-    errors = np.array([np.sqrt(np.mean((helical_mesh_stiffness(helical, STEEL, phase, slices=n).stiffness
+    reference = helical_mesh_stiffness(helical, STEEL, phase, section=section).stiffness
+    errors = np.array([np.sqrt(np.mean((helical_mesh_stiffness(helical, STEEL, phase, n, section).stiffness
                                         - reference) ** 2)) for n in (25, 50, 100, 200)])
     # a contact line's stiffness jumps from 0 where it crosses A or E, inside one slice: the midpoint rule is
     # first order there (second order elsewhere), its error O(Δz) with a constant that depends on where the jump
     # falls in its slice, so the rate is measured over three halvings
     assert np.all(np.diff(errors) < 0.0)
     assert math.log2(errors[0] / errors[-1]) / 3.0 > 0.9
-    assert errors[2] / np.mean(reference) < 2e-3  # the default 100 slices
+    assert errors[2] / np.mean(reference) < 2e-3  # 100 slices, the face load's default
+    fine = helical_mesh_stiffness(helical, STEEL, phase, 12800, section).stiffness
+    # the limit is the integral: 128 times finer than 100 slices, first order, leaves about 2e-3/128 ≈ 2e-5
+    assert np.max(np.abs(fine - reference)) / np.mean(reference) < 1e-4
 
 
 def test_the_ripple_falls_as_the_overlap_ratio_approaches_an_integer():

@@ -31,9 +31,9 @@ from thermogear.geometry import GearPair
 from thermogear.helical.contact_lines import line_entries
 from thermogear.helical.geometry import HelicalPair
 from thermogear.materials import Material
-from thermogear.stiffness.table import pair_stiffness_at
+from thermogear.stiffness.table import pair_stiffness_at, pair_stiffness_integral
 
-__all__ = ["HelicalMeshStiffness", "helical_mesh_stiffness", "SLICE_SECTIONS", "DEFAULT_SLICES"]
+__all__ = ["HelicalMeshStiffness", "contact_stiffness", "helical_mesh_stiffness", "SLICE_SECTIONS", "DEFAULT_SLICES"]
 
 #: Slices across the face by default: the midpoint sum converges at first order (a contact line's stiffness
 #: jumps where it crosses A or E, inside one slice; tested), within 0.2 % of the mean at 100 slices.
@@ -64,7 +64,7 @@ class HelicalMeshStiffness:
     phase: np.ndarray  # [m]
     stiffness: np.ndarray  # K_t, total over the face [N/m]
     normal_stiffness: np.ndarray  # K_n = K_t / cos²β_b [N/m]
-    slices: int
+    slices: int  # 0: the exact integral over the face
     section: str
 
     @property
@@ -85,9 +85,10 @@ def _per_unit_stiffness(spur: GearPair, material: Material, fraction: np.ndarray
     return values
 
 
-def helical_mesh_stiffness(helical: HelicalPair, material: Material, phase, slices: int = DEFAULT_SLICES,
-                           section: str = "normal") -> HelicalMeshStiffness:
-    """K_t(φ) of the slice model (module docstring) at mesh phases ``phase`` [m] (φ in [0, p_bt) is one period)."""
+def contact_stiffness(helical: HelicalPair, material: Material, phase, slices: int = DEFAULT_SLICES,
+                      section: str = "normal") -> tuple[np.ndarray, np.ndarray]:
+    """(slice centres z [m] from the first end face, the stiffness [N/m] of each slice on each contact line,
+    shape (..., lines, slices), 0 out of the zone of action) at mesh phases ``phase`` [m] (module docstring)."""
     if section not in SLICE_SECTIONS:
         raise ValueError(f"section: one of {', '.join(SLICE_SECTIONS)}")
     if slices < 1:
@@ -96,11 +97,47 @@ def helical_mesh_stiffness(helical: HelicalPair, material: Material, phase, slic
     transverse = helical.transverse
     path_length = transverse.path_length
     width = helical.face_width / slices
-    shift = (np.arange(slices) + 0.5) * width * math.tan(helical.base_helix_angle)  # slice centres along the path
+    centres = (np.arange(slices) + 0.5) * width
+    shift = centres * math.tan(helical.base_helix_angle)  # each slice's contact, along the path
     entries = line_entries(phase, path_length, helical.face_advance, transverse.base_pitch)  # (..., lines)
     positions = entries[..., None] + shift  # (..., lines, slices) along the transverse path from A
+    per_unit = _per_unit_stiffness(choice.pair(helical), material, positions / path_length)
+    return centres, choice.factor(helical) * width * per_unit
+
+
+def face_integral_stiffness(helical: HelicalPair, material: Material, phase, section: str = "normal") -> np.ndarray:
+    """K_t(φ) [N/m] as the exact integral over the face (the slice sum's limit of infinitely many slices): with
+    s = φ + k p_bt + z tan β_b, Σ_k ∫_0^b k′(s) dz = Σ_k (1/tan β_b) ∫_{φ + k p_bt}^{φ + k p_bt + g_β} k′(s) ds,
+    the inner integral exact for the interpolating cubic of the section's stiffness table."""
+    choice = SLICE_SECTIONS[section]
+    transverse = helical.transverse
     spur = choice.pair(helical)
-    per_unit = _per_unit_stiffness(spur, material, positions / path_length)
-    stiffness = choice.factor(helical) * width * per_unit.sum(axis=(-2, -1))
-    normal = stiffness / math.cos(helical.base_helix_angle) ** 2
-    return HelicalMeshStiffness(np.asarray(phase, dtype=float), stiffness, normal, slices, section)
+    path_length = transverse.path_length
+    entries = line_entries(phase, path_length, helical.face_advance, transverse.base_pitch)
+    start, end = spur.path_points["A"], spur.path_points["E"]
+    scale = (end - start) / path_length  # the section's path per unit of the transverse path
+    if helical.base_helix_angle == 0.0:
+        inside = (entries >= 0.0) & (entries <= path_length)
+        roll = start + np.where(inside, entries, 0.0) * scale
+        values = np.where(inside, pair_stiffness_at(spur, material, np.clip(roll, start, end)), 0.0)
+        return choice.factor(helical) * helical.face_width / spur.face_width * values.sum(axis=-1)
+    integral = pair_stiffness_integral(spur, material, start + entries * scale,
+                                       start + (entries + helical.face_advance) * scale)
+    return (choice.factor(helical) / spur.face_width / scale / math.tan(helical.base_helix_angle)
+            * integral.sum(axis=-1))
+
+
+def helical_mesh_stiffness(helical: HelicalPair, material: Material, phase, slices: int | None = None,
+                           section: str = "normal") -> HelicalMeshStiffness:
+    """K_t(φ) (module docstring) at mesh phases ``phase`` [m] (φ in [0, p_bt) is one period): the exact integral
+    over the face (``slices`` None, the default) or the midpoint sum of ``slices`` slices (what the face load
+    solver uses; it converges to the integral)."""
+    if section not in SLICE_SECTIONS:
+        raise ValueError(f"section: one of {', '.join(SLICE_SECTIONS)}")
+    if slices is None:
+        total = face_integral_stiffness(helical, material, phase, section)
+    else:
+        total = contact_stiffness(helical, material, phase, slices, section)[1].sum(axis=(-2, -1))
+    normal = total / math.cos(helical.base_helix_angle) ** 2
+    return HelicalMeshStiffness(np.asarray(phase, dtype=float), total, normal, 0 if slices is None else slices,
+                                section)

@@ -82,6 +82,22 @@ def pair_stiffness_at(gear_pair: GearPair, material: Material, roll) -> np.ndarr
     return _splines(gear_pair, material)["stiffness"](_checked_roll(gear_pair, roll))
 
 
+@lru_cache(maxsize=64)
+def _stiffness_antiderivative(gear_pair: GearPair, material: Material):
+    return _spline_set(gear_pair, material)[0]["stiffness"].antiderivative()
+
+
+def pair_stiffness_integral(gear_pair: GearPair, material: Material, start, end) -> np.ndarray:
+    """∫ k_e(s) ds [N] over [start, end] ∩ [A, E] (roll distances [m]; k_e the total over the face width), exact
+    for the interpolating cubic of :func:`pair_stiffness_at` (its antiderivative, cached with the table)."""
+    low, high = gear_pair.path_points["A"], gear_pair.path_points["E"]
+    start = np.clip(np.asarray(start, dtype=float), low, high)
+    end = np.clip(np.asarray(end, dtype=float), low, high)
+    _splines(gear_pair, material)  # the table's warnings, raised again
+    primitive = _stiffness_antiderivative(gear_pair, material)
+    return np.where(end > start, primitive(end) - primitive(start), 0.0)
+
+
 def tooth_compliance_at(gear_pair: GearPair, material: Material, roll) -> tuple[np.ndarray, np.ndarray]:
     """(δ1, δ2) [m/N]: each tooth's compliance including half the Hertz compliance (δ1 + δ2 = 1/k_e),
     interpolated from the cached table at roll distances on [A, E]."""
@@ -94,7 +110,8 @@ def clear_cache() -> None:
     """Drop every cached table (tests, memory)."""
     _table_with_warnings.cache_clear()
     _spline_set.cache_clear()
+    _stiffness_antiderivative.cache_clear()
 
 
 __all__ = ["TABLE_POINT_COUNT", "PairCompliance", "ToothCompliance", "clear_cache", "pair_compliance_table",
-           "pair_stiffness_at", "tooth_compliance_at"]
+           "pair_stiffness_at", "pair_stiffness_integral", "tooth_compliance_at"]
