@@ -63,8 +63,8 @@ def as_assembled(drivetrain: Drivetrain | AssembledDrivetrain) -> AssembledDrive
     if isinstance(drivetrain, Drivetrain):
         return drivetrain.assemble()
     raise CaseError("drivetrain", type(drivetrain).__name__, "a Drivetrain or an AssembledDrivetrain",
-                    "the diagram is solved on the drivetrain's matrices (a case's CaseDrivetrain: use its "
-                    ".campbell(model, speeds_rpm) or its .drivetrains[model])")
+                    "the diagram is solved on the drivetrain's matrices (of a case's CaseDrivetrain: give "
+                    "its .drivetrains[model])")
 
 
 @dataclass(frozen=True)

@@ -217,15 +217,6 @@ class CaseDrivetrain:
             results[index] = response
         return results
 
-    def campbell(self, model: str, speeds_rpm, harmonics: tuple[int, ...] = (1, 2, 3),
-                 mode_count: int | None = None):
-        """The interference (Campbell) diagram of ``model``'s drivetrain over pinion speeds [rpm]
-        (:func:`~thermogear.drivetrain.campbell.campbell_diagram`; by default the section's ``mode_count`` modes)."""
-        from thermogear.drivetrain.campbell import campbell_diagram
-
-        return campbell_diagram(self.assembled(model), speeds_rpm, self.teeth, harmonics,
-                                mode_count or self.section.mode_count)
-
     def heat_shifts(self) -> ModeShifts:
         """Each mode's shift from the cold (elastic) to the hot (thermal) drivetrain, attributed per cause."""
         return thermal_mode_shifts(self.drivetrains[ELASTIC], self.drivetrains[THERMAL],

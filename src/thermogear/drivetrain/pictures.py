@@ -118,7 +118,9 @@ def campbell_for_case(built: CaseDrivetrain, model: str):
     speed = built.models[model].speed_rpm
     meets = 60.0 * modes.frequencies_hz[mesh_mode] / built.teeth
     speeds = np.linspace(0.0, 1.2 * max(speed, meets), CAMPBELL_SPEEDS)
-    return built.campbell(model, speeds, mode_count=count), speed
+    from thermogear.drivetrain.campbell import campbell_diagram
+
+    return campbell_diagram(built.assembled(model), speeds, built.teeth, mode_count=count), speed
 
 
 def _campbell_figure(built: CaseDrivetrain, model: str):
