@@ -98,3 +98,44 @@ def test_screenshot_shows_the_report(report, tmp_path):
     # the headline block's tinted background (#f7fafc) fills a good part of the first screen
     tint = np.all(np.abs(pixels[..., :3] - np.array([0xF7, 0xFA, 0xFC]) / 255.0) < 0.01, axis=-1)
     assert tint.mean() > 0.15, tint.mean()
+
+
+@pytest.fixture(scope="module")
+def drivetrain_report(tmp_path_factory):
+    from pathlib import Path
+
+    from thermogear.case import load_case
+    from thermogear.report.build import build_report
+
+    out = tmp_path_factory.mktemp("browser") / "drivetrain"
+    case = Path(__file__).resolve().parents[1] / "data" / "two_shaft_drivetrain.toml"
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        return build_report(load_case(case), out)
+
+
+_PICTURE_CHECK = ("<script>window.addEventListener('load',function(){var r={};"
+                  "['drivetrain_layout','drivetrain_modes','drivetrain_campbell','drivetrain_bearing_spectra']"
+                  ".forEach(function(n){var f=document.getElementById(n);var i=f&&f.querySelector('img');"
+                  "r[n]=i?{loaded:i.complete&&i.naturalWidth>0,width:i.getBoundingClientRect().width,"
+                  "height:i.getBoundingClientRect().height}:null});var a=document.querySelector("
+                  "\"a[href='#drivetrain_layout']\");r.link=a?a.getBoundingClientRect().top:null;"
+                  "var d=document.createElement('pre');d.id='tg-picture-check';d.textContent=JSON.stringify(r);"
+                  "document.body.appendChild(d);});</script>")
+
+
+def test_the_drivetrain_pictures_load_and_are_readable_in_the_page(drivetrain_report, tmp_path):
+    """Chromium at 1280 × 800: each of the four drivetrain pictures loads and is laid out at a readable size (at
+    least 600 px wide: the page's 1180 px column, not a thumbnail), and the link to them is on the first screen."""
+    page = drivetrain_report.report.read_text(encoding="utf-8")
+    checked = tmp_path / "pictures.html"
+    checked.write_text(page.replace("</body>", _PICTURE_CHECK + "</body>"), encoding="utf-8")
+    result = _chromium(tmp_path / "profile", f"--window-size={FIRST_SCREEN[0]},{FIRST_SCREEN[1]}",
+                       "--virtual-time-budget=10000", "--dump-dom", checked.as_uri())
+    match = re.search(r'<pre id="tg-picture-check">([^<]*)</pre>', result.stdout)
+    assert match, f"the page did not finish loading in chromium: {result.stderr[-2000:]}"
+    state = json.loads(match.group(1))
+    for name in ("drivetrain_layout", "drivetrain_modes", "drivetrain_campbell", "drivetrain_bearing_spectra"):
+        assert state[name] is not None and state[name]["loaded"], (name, state)
+        assert state[name]["width"] >= 600 and state[name]["height"] >= 250, (name, state)
+    assert state["link"] is not None and 0 <= state["link"] < FIRST_SCREEN[1], state

@@ -105,7 +105,8 @@ class CampbellDiagram:
         """Draw the diagram on ``ax`` (a new figure if None) and return the figure: each mode a line coloured by
         its mesh share of strain energy at each speed (colour bar), the mesh harmonics as dashed lines labelled
         "j× mesh", every crossing marked (one marker per crossing, in the artist with gid "crossings"), and
-        those of modes with a mesh share ≥ ``label_share`` labelled with their speed and harmonic."""
+        those of modes with a mesh share ≥ ``label_share`` numbered in order of speed, the legend saying for each
+        its harmonic, speed, frequency, mode and mesh share."""
         from thermogear.drivetrain.plots import draw_campbell
 
         return draw_campbell(self, ax, label_share)

@@ -13,13 +13,13 @@ diagram and bearing-force spectra (:mod:`thermogear.drivetrain.plots` draws them
 
 from __future__ import annotations
 
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from thermogear.drivetrain.case_model import MESH_DOMINATED_SHARE, CaseDrivetrain, bearing_force_summary
-from thermogear.drivetrain.case_layout import MESH_NAME
-from thermogear.drivetrain.modes import DrivetrainModes, drivetrain_modes
+if TYPE_CHECKING:  # the captions are imported with the report; the drivetrain's modules when a picture is drawn
+    from thermogear.drivetrain.case_model import CaseDrivetrain
+    from thermogear.drivetrain.modes import DrivetrainModes
 
 __all__ = ["CAMPBELL_SPEEDS", "PICTURES", "drivetrain_pictures", "largest_bearing_force", "pictured_modes"]
 
@@ -32,8 +32,8 @@ PICTURES: dict[str, str] = {
                         "translation and its torsion at the surface r·θ (dotted), on the shaft axes of the layout.",
     "drivetrain_campbell": "Interference (Campbell) diagram of the cold drivetrain: the damped, spinning modes "
                            "coloured by their mesh share of strain energy, the mesh harmonics (dashed), every "
-                           "crossing marked and those of modes the mesh reaches (share ≥ 0.01) labelled; the "
-                           "vertical line is the case's speed.",
+                           "crossing marked and those of modes the mesh reaches (share ≥ 0.01) numbered and listed "
+                           "below; the vertical line is the case's speed.",
     "drivetrain_bearing_spectra": "Bearing forces on the housing at the case's speed: the radial amplitude "
                                   "√(X_j² + Y_j²) of each bearing's force at the first mesh harmonics, per model.",
 }
@@ -54,6 +54,8 @@ def largest_bearing_force(built: CaseDrivetrain, data: dict[str, Any] | None,
     """(bearing, harmonic j, frequency [Hz], radial amplitude [N]) of the largest bearing-force harmonic of
     ``model`` (from ``data``, the results ``run`` reports, else from the periodic response solved here); None
     where no force is known (no orbit found)."""
+    from thermogear.drivetrain.case_model import bearing_force_summary
+
     if data and model in data.get("models", {}):
         forces = data["models"][model]["bearing_forces"]
     else:
@@ -70,6 +72,8 @@ def pictured_modes(built: CaseDrivetrain, modes: DrivetrainModes, data: dict[str
                    model: str) -> list[tuple[int, str]]:
     """(index, why) of the modes to draw: the mesh-dominated one first, then the modes behind the largest bearing
     force (module docstring), each once."""
+    from thermogear.drivetrain.case_layout import MESH_NAME
+    from thermogear.drivetrain.case_model import MESH_DOMINATED_SHARE
     from thermogear.drivetrain.participation import bearing_force_terms
 
     shares = modes.mesh_share(MESH_NAME)
@@ -94,6 +98,7 @@ def pictured_modes(built: CaseDrivetrain, modes: DrivetrainModes, data: dict[str
 def _modes_figure(built: CaseDrivetrain, data: dict[str, Any] | None, model: str):
     import matplotlib.pyplot as plt
 
+    from thermogear.drivetrain.modes import drivetrain_modes
     from thermogear.drivetrain.plots import plot_mode_shape
 
     assembled = built.assembled(model)
@@ -110,6 +115,10 @@ def _modes_figure(built: CaseDrivetrain, data: dict[str, Any] | None, model: str
 
 def campbell_for_case(built: CaseDrivetrain, model: str):
     """The interference diagram the report draws (module docstring)."""
+    from thermogear.drivetrain.case_layout import MESH_NAME
+    from thermogear.drivetrain.case_model import MESH_DOMINATED_SHARE
+    from thermogear.drivetrain.modes import drivetrain_modes
+
     modes = drivetrain_modes(built.assembled(model))
     shares = modes.mesh_share(MESH_NAME)
     dominated = np.flatnonzero(shares > MESH_DOMINATED_SHARE)
@@ -136,6 +145,7 @@ def _campbell_figure(built: CaseDrivetrain, model: str):
 def _spectra_figure(built: CaseDrivetrain, data: dict[str, Any] | None):
     import matplotlib.pyplot as plt
 
+    from thermogear.drivetrain.case_model import bearing_force_summary
     from thermogear.drivetrain.plots import plot_bearing_spectra
 
     if data and data.get("models"):

@@ -128,7 +128,7 @@ def plot_layout(drivetrain: Drivetrain | AssembledDrivetrain, ax=None):
                                    gid=f"shaft:{shaft.name}"))
         ax.plot([place.offset * mm - 0.03 * longest, (place.offset + shaft.length) * mm + 0.03 * longest],
                 [place.row * mm] * 2, color="0.4", lw=0.6, ls="-.")  # the axis
-        ax.annotate(shaft.name, (place.offset * mm - 0.04 * longest, place.row * mm), ha="right", va="center",
+        ax.annotate(shaft.name, (place.offset * mm - 0.07 * longest, place.row * mm), ha="right", va="center",
                     fontsize=8, color=colour, fontweight="bold")
     gear_width = 0.06 * longest
     gears = set(radii)
@@ -296,23 +296,29 @@ def draw_campbell(diagram, ax=None, label_share: float = 0.01):
     labelled = [c for c in crossings if c.mesh_share >= label_share]
     ax.set_xlim(speeds[0], speeds[-1])
     ax.set_ylim(0.0, top)
-    taken: list[tuple[float, float]] = []  # label positions in axes fractions, to keep labels apart
-    for crossing in sorted(labelled, key=lambda c: (c.speed_rpm, c.frequency_hz)):
+    taken: list[tuple[float, float]] = []  # number positions in axes fractions, to keep them apart
+    for number, crossing in enumerate(sorted(labelled, key=lambda c: (c.speed_rpm, c.frequency_hz)), start=1):
         x = (crossing.speed_rpm - speeds[0]) / (speeds[-1] - speeds[0])
         y = crossing.frequency_hz / top
         lift = 0
-        while any(abs(x - a) < 0.16 and abs(y + lift * 0.035 - b) < 0.03 for a, b in taken):
+        while any(abs(x - a) < 0.03 and abs(y + lift * 0.03 - b) < 0.025 for a, b in taken):
             lift += 1
-        taken.append((x, y + lift * 0.035))
-        ax.annotate(f"{crossing.harmonic}×: {crossing.speed_rpm:.0f} rpm", (crossing.speed_rpm, crossing.frequency_hz),
-                    xytext=(5, 3 + 10 * lift), textcoords="offset points", fontsize=7, gid="crossing-label",
+        taken.append((x, y + lift * 0.03))
+        ax.annotate(str(number), (crossing.speed_rpm, crossing.frequency_hz), xytext=(4, 2 + 9 * lift),
+                    textcoords="offset points", fontsize=7, fontweight="bold", gid="crossing-label",
                     bbox={"boxstyle": "round,pad=0.1", "facecolor": "white", "edgecolor": "none", "alpha": 0.8},
                     arrowprops={"arrowstyle": "-", "color": "0.5", "lw": 0.5} if lift else None)
+        # an empty line whose marker is the number: the legend entry (also where a report gathers legends)
+        ax.plot([], [], ls="none", marker=f"${number}$", color="k", markersize=5 + 2 * len(str(number)),
+                label=f"{crossing.harmonic}× at {crossing.speed_rpm:.0f} rpm, {crossing.frequency_hz:.0f} Hz "
+                      f"{crossing.label}, share {crossing.mesh_share:.2f}")
+    if labelled:
+        ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(0.0, -0.14), ncol=2, frameon=False)
     if lines is not None:
         colourbar = ax.figure.colorbar(lines, ax=ax, pad=0.01)
         colourbar.set_label("mesh share of modal strain energy [–]", fontsize=8)
     ax.set_xlabel("pinion speed [rpm]")
     ax.set_ylabel("frequency [Hz]")
-    ax.set_title(f"interference diagram: {len(crossings)} crossings, {len(labelled)} of modes with a mesh share "
-                 f"≥ {label_share:g} labelled", fontsize=9)
+    ax.set_title(f"interference diagram: {len(crossings)} crossings marked, the {len(labelled)} of modes with a "
+                 f"mesh share ≥ {label_share:g} numbered", fontsize=9)
     return ax.figure
