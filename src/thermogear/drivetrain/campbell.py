@@ -107,9 +107,9 @@ class CampbellDiagram:
         "j× mesh", every crossing marked (one marker per crossing, in the artist with gid "crossings"), and
         those of modes with a mesh share ≥ ``label_share`` numbered in order of speed, the legend saying for each
         its harmonic, speed, frequency, mode and mesh share."""
-        from thermogear.drivetrain.plots import draw_campbell
+        from thermogear.drivetrain.plots import plot_campbell
 
-        return draw_campbell(self, ax, label_share)
+        return plot_campbell(self, ax, label_share)
 
 
 class _ReducedSpinningModes:

@@ -21,7 +21,7 @@ import numpy as np
 
 from thermogear.drivetrain.assembly import AssembledDrivetrain, Drivetrain
 
-__all__ = ["draw_campbell", "plot_bearing_spectra", "plot_layout", "plot_mode_shape", "shaft_placement"]
+__all__ = ["plot_bearing_spectra", "plot_campbell", "plot_layout", "plot_mode_shape", "shaft_placement"]
 
 _COLOURS = ("tab:blue", "tab:orange", "tab:green", "tab:purple", "tab:brown", "tab:pink", "tab:olive", "tab:cyan")
 
@@ -264,8 +264,9 @@ def plot_bearing_spectra(spectra: dict[str, tuple[np.ndarray, np.ndarray]], ax=N
     return ax.figure
 
 
-def draw_campbell(diagram, ax=None, label_share: float = 0.01):
-    """:meth:`~thermogear.drivetrain.campbell.CampbellDiagram.plot_campbell`."""
+def plot_campbell(diagram, ax=None, label_share: float = 0.01):
+    """Draw a :class:`~thermogear.drivetrain.campbell.CampbellDiagram` on ``ax`` (a new figure if None) and return
+    the figure (:meth:`~thermogear.drivetrain.campbell.CampbellDiagram.plot_campbell` says what it shows)."""
     from matplotlib.collections import LineCollection
     from matplotlib.colors import LinearSegmentedColormap, Normalize
 
