@@ -164,3 +164,26 @@ def test_a_case_gives_its_four_pictures_and_they_name_why_each_mode_is_drawn(rig
     markers = next(c for c in ax.collections if c.get_gid() == "crossings")
     assert len(markers.get_offsets()) == len(diagram.crossings)
     assert any(line.get_gid() == "operating-speed" and line.get_xdata()[0] == speed for line in ax.lines)
+
+
+def test_the_modal_terms_of_a_bearing_force_add_up_to_the_direct_solution():
+    """Identity: without damping, the sum over every elastic mode of K_b φ_i,b (φ_iᵀw)/(ω_i² − ω²) is the bearing's
+    force K_b u_b with (K − ω²M) u = w solved directly on the elastic coordinates (w does not move the free rigid
+    rotation of the train, which the modes leave out)."""
+    from thermogear.drivetrain.participation import bearing_force_modal_terms, bearing_force_terms
+    from thermogear.dynamics.rigid_body import rigid_body_reduction
+
+    assembled = geared_pair(elements=4).assemble()  # no damping anywhere
+    modes = drivetrain_modes(assembled)  # every elastic mode
+    frequency = 0.7 * modes.frequencies_hz[5] + 0.3 * modes.frequencies_hz[6]  # between two modes
+    terms = bearing_force_modal_terms(assembled, modes, "wheel shaft bearing A", frequency)
+    reduction = rigid_body_reduction(assembled.mass, assembled.connection_stiffness(), assembled.rigid_candidates())
+    omega = 2.0 * np.pi * frequency
+    dynamic = reduction.project(assembled.stiffness() - omega ** 2 * assembled.mass)
+    displacement = reduction.expand(np.linalg.solve(dynamic, reduction.project_vector(assembled.mesh_vectors[0])))
+    bearing = next(b for b in assembled.drivetrain.bearings if b.name == "wheel shaft bearing A")
+    dofs = [assembled.dof(bearing.location, name) for name in ("x", "y", "z")]
+    direct = bearing.stiffness_matrix()[:2, :3] @ displacement[dofs]
+    np.testing.assert_allclose(terms.sum(axis=1).real, direct, rtol=1e-9, atol=1e-12 * np.abs(direct).max())
+    sizes = bearing_force_terms(assembled, modes, "wheel shaft bearing A", frequency)
+    assert sizes.shape == modes.frequencies_hz.shape and np.all(sizes >= 0.0)

@@ -21,13 +21,20 @@ from thermogear.drivetrain.assembly import AssembledDrivetrain
 from thermogear.drivetrain.modes import DrivetrainModes
 from thermogear.errors import CaseError
 
-__all__ = ["bearing_force_terms"]
+__all__ = ["bearing_force_modal_terms", "bearing_force_terms"]
 
 
 def bearing_force_terms(assembled: AssembledDrivetrain, modes: DrivetrainModes, bearing: str,
                         frequency_hz: float, mesh: int = 0) -> np.ndarray:
-    """The radial size [N/N] of each mode's term in the force of ``bearing`` on its housing per unit mesh force at
-    ``frequency_hz`` [Hz] (module docstring); ``modes`` undamped (M-normalised real shapes)."""
+    """The radial size √(|X_i|² + |Y_i|²) [N/N] of each mode's term in the force of ``bearing`` on its housing per
+    unit mesh force at ``frequency_hz`` [Hz] (module docstring); ``modes`` undamped (M-normalised real shapes)."""
+    return np.hypot(*np.abs(bearing_force_modal_terms(assembled, modes, bearing, frequency_hz, mesh)))
+
+
+def bearing_force_modal_terms(assembled: AssembledDrivetrain, modes: DrivetrainModes, bearing: str,
+                              frequency_hz: float, mesh: int = 0) -> np.ndarray:
+    """The complex terms (x, y; modes) [N/N] of the modal sum of the module docstring: their sum over every mode is
+    the bearing's force per unit mesh force (exactly, where the damping is modal)."""
     found = [item for item in assembled.drivetrain.bearings if item.name == bearing]
     if not found:
         raise CaseError("bearing", bearing, f"one of {[b.name for b in assembled.drivetrain.bearings]}",
@@ -45,4 +52,4 @@ def bearing_force_terms(assembled: AssembledDrivetrain, modes: DrivetrainModes, 
     excitation = 2.0 * np.pi * frequency_hz
     denominator = omega ** 2 - excitation ** 2 + 2j * zeta * omega * excitation
     forces = item.stiffness_matrix()[:2, :3] @ shapes[dofs]  # (x, y) force per unit modal coordinate
-    return np.hypot(*(np.abs(forces * forcing / denominator)))
+    return forces * forcing / denominator
