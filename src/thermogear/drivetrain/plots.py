@@ -221,6 +221,8 @@ def plot_mode_shape(assembled: AssembledDrivetrain, shape: np.ndarray, title: st
         z = (place.offset + assembled.node_positions[shaft.name]) * mm
         colour = _COLOURS[number % len(_COLOURS)]
         ax.plot([z[0], z[-1]], [place.row * mm] * 2, color="0.7", lw=0.8)
+        ax.annotate(shaft.name, (z[0], place.row * mm), xytext=(-8, 0), textcoords="offset points", ha="right",
+                    va="center", fontsize=7, color=colour)
         for component, values in parts[shaft.name].items():
             ax.plot(z, (place.row + scale * values) * mm, styles[component], color=colour, lw=1.4,
                     gid=f"mode:{shaft.name}:{component}",
