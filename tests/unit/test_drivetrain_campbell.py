@@ -133,3 +133,14 @@ def test_the_diagram_takes_what_a_case_builds():
     np.testing.assert_array_equal(direct.frequencies_hz, assembled.frequencies_hz)
     with pytest.raises(CaseError, match="drivetrain"):
         campbell_diagram(built, speeds, built.teeth)
+
+
+def test_without_damping_and_spin_the_basis_holds_the_modes_exactly():
+    """Limit: no damping and no gyroscopic terms leave no force to couple the kept modes to the others, so the
+    diagram's frequencies are the undamped modes at every speed, to rounding (and no augmentation vector is added)."""
+    still = geared_pair(elements=2).assemble()  # no damping anywhere
+    still = replace(still, gyroscopic=np.zeros_like(still.gyroscopic), _cache={})
+    diagram = campbell_diagram(still, np.linspace(0.0, 30000.0, 5), TEETH, mode_count=4)
+    exact = drivetrain_modes(still, count=4).frequencies_hz
+    np.testing.assert_allclose(diagram.frequencies_hz, np.broadcast_to(exact, (5, 4)), rtol=1e-9)
+    assert diagram.basis_size == 4 + 6  # the modes drawn and the spare ones offered to the shape matching

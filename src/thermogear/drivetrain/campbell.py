@@ -135,8 +135,8 @@ class _ReducedSpinningModes:
         # (modal truncation augmentation): K⁻¹·(C, G)·φ_i, made M-orthogonal to the kept modes
         loads = np.hstack([reduction.project(assembled.damping(0.0)) @ modes.shapes[:, :wanted],
                            reduction.project(assembled.gyroscopic) @ modes.shapes[:, :wanted]])
-        loads = loads[:, np.abs(loads).max(axis=0) > 0.0]  # no gyroscopic terms: no gyroscopic vectors
-        static = solve(stiffness_q, loads, assume_a="pos")
+        loads = loads[:, np.abs(loads).max(axis=0, initial=0.0) > 0.0]  # no damping or spin: no such vectors
+        static = solve(stiffness_q, loads, assume_a="pos") if loads.shape[1] else loads
         static /= np.sqrt(np.einsum("ij,ij->j", static, mass_q @ static))  # unit M-norm before the projection
         static -= shapes @ (shapes.T @ (mass_q @ static))
         gram_values, gram_vectors = eigh(static.T @ mass_q @ static)
