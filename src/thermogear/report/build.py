@@ -109,7 +109,8 @@ def build_report(case, out: Path | str, *, force: bool = False, method: str = "p
         step("files")
         write_start = time.perf_counter()
         missing = {name: missing[name] for name in FIGURES if name in missing}
-        figures = [name for name in FIGURES if name not in missing]
+        figures = [name for name in FIGURES  # a picture with nothing to draw (no [drivetrain]) is neither
+                   if name not in missing and (figure_folder / f"{name}.png").is_file()]
         pngs = {name: (figure_folder / f"{name}.png").read_bytes() for name in figures}
         verdicts = paper_verdicts(evaluation) + rig_verdicts(rig) if paper else []
         results = key_results(evaluation)
