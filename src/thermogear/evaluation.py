@@ -75,6 +75,7 @@ class Evaluation:
     thermoelastic: dict | None = None  # the predictive model beside the paper's (paper's case only)
     drivetrain: dict | None = None  # [drivetrain] cases: the JSON-ready results (report.drivetrain_section)
     drivetrain_series: dict = field(default_factory=dict)  # model -> arrays of its drivetrain response (results.nc)
+    drivetrain_built: Any = None  # the CaseDrivetrain those results came from (the report's drivetrain pictures)
     problems: dict = field(default_factory=dict)  # stage -> reason it failed
     timings: dict = field(default_factory=dict)  # stage -> seconds, one after the other (they add up to the run)
     background_timings: dict = field(default_factory=dict)  # stage run beside the others -> its own seconds

@@ -31,6 +31,19 @@ def _chromium(profile, *args: str) -> subprocess.CompletedProcess:
                            f"--user-data-dir={profile}", *args], capture_output=True, text=True, timeout=120)
 
 
+def _page_state(report_page, script: str, marker: str, tmp_path, *arguments: str) -> dict:
+    """Open the report with ``script`` added in chromium and return the JSON that the script wrote into the
+    element ``marker`` once the page had loaded."""
+    checked = tmp_path / f"{marker}.html"
+    checked.write_text(report_page.read_text(encoding="utf-8").replace("</body>", script + "</body>"),
+                       encoding="utf-8")
+    result = _chromium(tmp_path / "profile", *arguments, "--virtual-time-budget=10000", "--dump-dom",
+                       checked.as_uri())
+    match = re.search(f'<pre id="{marker}">([^<]*)</pre>', result.stdout)
+    assert match, f"the page did not finish loading in chromium: {result.stderr[-2000:]}"
+    return json.loads(match.group(1))
+
+
 @pytest.fixture(scope="module")
 def report(tmp_path_factory):
     from thermogear.case import load_case
@@ -44,13 +57,7 @@ def report(tmp_path_factory):
 
 
 def test_every_image_loads(report, tmp_path):
-    page = report.report.read_text(encoding="utf-8")
-    checked = tmp_path / "checked.html"
-    checked.write_text(page.replace("</body>", _CHECK + "</body>"), encoding="utf-8")
-    result = _chromium(tmp_path / "profile", "--virtual-time-budget=10000", "--dump-dom", checked.as_uri())
-    match = re.search(r'<pre id="tg-image-check">([^<]*)</pre>', result.stdout)
-    assert match, f"the page did not finish loading in chromium: {result.stderr[-2000:]}"
-    state = json.loads(match.group(1))
+    state = _page_state(report.report, _CHECK, "tg-image-check", tmp_path)
     assert state["total"] >= len(report.figures) >= 9  # every figure, plus the key figures of the headline
     assert state["loaded"] == state["total"], f"broken images: {state['broken']}"
 
@@ -67,14 +74,8 @@ FIRST_SCREEN = (1280, 800)
 def test_headline_is_on_the_first_screen(report, tmp_path):
     """Chromium lays the page out in a 1280 × 800 window: the headline block starts on the first screen and its
     numbers (predictions within, known gaps) lie wholly inside it; the long table starts below it."""
-    page = report.report.read_text(encoding="utf-8")
-    checked = tmp_path / "headline.html"
-    checked.write_text(page.replace("</body>", _HEADLINE + "</body>"), encoding="utf-8")
-    result = _chromium(tmp_path / "profile", f"--window-size={FIRST_SCREEN[0]},{FIRST_SCREEN[1]}",
-                       "--virtual-time-budget=10000", "--dump-dom", checked.as_uri())
-    match = re.search(r'<pre id="tg-headline-check">([^<]*)</pre>', result.stdout)
-    assert match, f"the page did not finish loading in chromium: {result.stderr[-2000:]}"
-    state = json.loads(match.group(1))
+    state = _page_state(report.report, _HEADLINE, "tg-headline-check", tmp_path,
+                        f"--window-size={FIRST_SCREEN[0]},{FIRST_SCREEN[1]}")
     width, height = state["viewport"]
     assert state["headline"] is not None and state["numbers"] is not None, "no headline block in the page"
     assert 0 <= state["headline"]["top"] < height / 2, state
@@ -98,3 +99,38 @@ def test_screenshot_shows_the_report(report, tmp_path):
     # the headline block's tinted background (#f7fafc) fills a good part of the first screen
     tint = np.all(np.abs(pixels[..., :3] - np.array([0xF7, 0xFA, 0xFC]) / 255.0) < 0.01, axis=-1)
     assert tint.mean() > 0.15, tint.mean()
+
+
+@pytest.fixture(scope="module")
+def drivetrain_report(tmp_path_factory):
+    from pathlib import Path
+
+    from thermogear.case import load_case
+    from thermogear.report.build import build_report
+
+    out = tmp_path_factory.mktemp("browser") / "drivetrain"
+    case = Path(__file__).resolve().parents[1] / "data" / "two_shaft_drivetrain.toml"
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        return build_report(load_case(case), out)
+
+
+_PICTURE_CHECK = ("<script>window.addEventListener('load',function(){var r={};"
+                  "['drivetrain_layout','drivetrain_modes','drivetrain_campbell','drivetrain_bearing_spectra']"
+                  ".forEach(function(n){var f=document.getElementById(n);var i=f&&f.querySelector('img');"
+                  "r[n]=i?{loaded:i.complete&&i.naturalWidth>0,width:i.getBoundingClientRect().width,"
+                  "height:i.getBoundingClientRect().height}:null});var a=document.querySelector("
+                  "\"a[href='#drivetrain_layout']\");r.link=a?a.getBoundingClientRect().top:null;"
+                  "var d=document.createElement('pre');d.id='tg-picture-check';d.textContent=JSON.stringify(r);"
+                  "document.body.appendChild(d);});</script>")
+
+
+def test_the_drivetrain_pictures_load_and_are_readable_in_the_page(drivetrain_report, tmp_path):
+    """Chromium at 1280 × 800: each of the four drivetrain pictures loads and is laid out at a readable size (at
+    least 600 px wide: the page's 1180 px column, not a thumbnail), and the link to them is on the first screen."""
+    state = _page_state(drivetrain_report.report, _PICTURE_CHECK, "tg-picture-check", tmp_path,
+                        f"--window-size={FIRST_SCREEN[0]},{FIRST_SCREEN[1]}")
+    for name in ("drivetrain_layout", "drivetrain_modes", "drivetrain_campbell", "drivetrain_bearing_spectra"):
+        assert state[name] is not None and state[name]["loaded"], (name, state)
+        assert state[name]["width"] >= 600 and state[name]["height"] >= 250, (name, state)
+    assert state["link"] is not None and 0 <= state["link"] < FIRST_SCREEN[1], state

@@ -76,10 +76,13 @@ def run(
     as_json: bool = typer.Option(False, "--json", help="one JSON object on stdout"),
     out: Path = typer.Option(None, "--out", help="write the full report (report.html, figures, results.nc, "
                                                  "summary.json) into this folder"),
-    force: bool = typer.Option(False, "--force", help="replace an existing --out folder"),
+    force: bool = typer.Option(False, "--force", help="replace an existing --out folder (and the picture files of "
+                                                     "--plot)"),
     quiet: bool = typer.Option(False, "--quiet", "-q", help="no progress bar, and no summary with --out (for scripts)"),
     csv: Path = typer.Option(None, "--csv", help="also write the steady responses as CSV (a row per time sample and "
                                                  "model, units in the column names)"),
+    plot: Path = typer.Option(None, "--plot", help="write the drivetrain's pictures (layout, mode shapes, Campbell "
+                                                   "diagram, bearing-force spectra; PNG) into this folder"),
 ) -> None:
     """Run the dynamics of a case and report Kv, loads, transmission error per region, frequencies and stability.
     Contact loss and instability are said in words (when, how long, how deep)."""
@@ -104,6 +107,10 @@ def run(
 
         check_csv_target(csv, force, "--csv")
     case = load_case(case_name)
+    if plot is not None:
+        from thermogear.cli.run_drivetrain import check_picture_folder
+
+        plot = check_picture_folder(plot, case, force)  # before any work
     method = method or case.dynamics.method
     models = _MODELS[model]
     preflight(case, models, quiet=False, method=method)  # the checks `check` makes, before any output is written
@@ -143,6 +150,13 @@ def run(
     with step_progress(steps, quiet or as_json or not steps, error_console) as advance:
         drivetrain = drivetrain_outputs(build, models, outcome if out is not None else None, responses,
                                         transient=method == "transient", progress=advance)
+    if plot is not None:
+        from thermogear.cli.run_drivetrain import write_pictures
+
+        pictures = write_pictures(plot, build, drivetrain,
+                                  getattr(outcome.evaluation, "drivetrain_built", None) if out is not None else None)
+        if not as_json:
+            console.print(f"drivetrain pictures written to {plot}: {', '.join(pictures)}", highlight=False)
     if csv is not None:
         from thermogear.cli.export import responses_csv
 
@@ -167,6 +181,8 @@ def run(
             payload["temperatures"] = predicted
         if out is not None:
             payload["report"] = str(outcome.report)
+        if plot is not None:
+            payload["plots"] = [str(plot / name) for name in pictures]
         print_messages(messages, error_console)
         print_json(payload)
         return

@@ -3,9 +3,10 @@ what heat moved), its Kv and DTE, and the dynamic force of each bearing on the h
 
 from __future__ import annotations
 
+from pathlib import Path
 from typing import Any
 
-__all__ = ["drivetrain_outputs", "print_drivetrain"]
+__all__ = ["check_picture_folder", "drivetrain_outputs", "print_drivetrain", "write_pictures"]
 
 
 def drivetrain_outputs(build, models: tuple[str, ...], outcome=None, responses=None, transient: bool = False,
@@ -115,3 +116,50 @@ def _found(model: dict[str, Any]) -> str:
     if not model.get("converged"):
         return "NO"
     return "yes" if model.get("stable") else "yes (unstable)"
+
+
+def check_picture_folder(folder: Path, case, force: bool) -> Path:
+    """``run --plot FOLDER``, checked before any work: the case has a [drivetrain] (the pictures are of it), the
+    folder can be written, and no picture file of the same name is there unless ``force`` (thermogear replaces only
+    what it wrote: the files it would replace are its own names, and --force says to replace them)."""
+    from thermogear.drivetrain.pictures import PICTURES
+    from thermogear.errors import CaseError
+    from thermogear.ownership import check_output_folder
+
+    if case.drivetrain is None:
+        raise CaseError("--plot", str(folder), "a case with a [drivetrain] section",
+                        "the pictures are of the drivetrain (layout, modes, Campbell, bearing forces); the pair's "
+                        "own figures are in the report: run --out FOLDER")
+    target = check_output_folder(folder, "--plot")
+    existing = [f"{name}.png" for name in PICTURES if (target / f"{name}.png").exists()]
+    if existing and not force:
+        raise CaseError("--plot", str(folder), "a folder without thermogear's picture files, or --force",
+                        f"{', '.join(existing)} would be replaced")
+    return target
+
+
+def write_pictures(folder: Path, build, data: dict[str, Any] | None, built=None) -> list[str]:
+    """Draw the drivetrain's pictures (:mod:`thermogear.drivetrain.pictures`) of the results ``data`` that ``run``
+    reports, from ``built`` (the report's CaseDrivetrain) or ``build()``; write each as ``<name>.png`` into
+    ``folder`` (each file written beside and renamed, so none is left half-written). Returns the file names."""
+    import os
+
+    import matplotlib.pyplot as plt
+
+    from thermogear.drivetrain.pictures import drivetrain_pictures
+    from thermogear.errors import CaseError
+
+    if data is not None and "not_computed" in data:
+        raise CaseError("--plot", str(folder), "a drivetrain whose results were computed",
+                        f"no pictures: {data['not_computed']}")
+    figures = drivetrain_pictures(built if built is not None else build(), data)
+    folder.mkdir(parents=True, exist_ok=True)
+    written = []
+    for name, figure in figures.items():
+        target = folder / f"{name}.png"
+        partial = folder / f".{name}.partial.png"
+        figure.savefig(partial, dpi=150)
+        plt.close(figure)
+        os.replace(partial, target)
+        written.append(target.name)
+    return written

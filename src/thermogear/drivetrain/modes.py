@@ -13,7 +13,7 @@ from thermogear.dynamics.modal import (damped_modes, kinetic_energy_fractions, s
                                        undamped_modes)
 from thermogear.dynamics.rigid_body import rigid_body_reduction
 
-__all__ = ["DrivetrainModes", "drivetrain_modes"]
+__all__ = ["DrivetrainModes", "drivetrain_modes", "mode_labels"]
 
 _MOTIONS = {"torsional": ("theta",), "lateral": ("x", "y", "alpha", "beta"), "axial": ("z",)}
 
@@ -75,16 +75,31 @@ def drivetrain_modes(assembled: AssembledDrivetrain, speed: float = 0.0, mesh_st
     if count is not None:
         frequencies, ratios, shapes = frequencies[:count], ratios[:count], shapes[:, :count]
     full = reduction.expand(shapes)
-    masks = {kind: assembled.dof_mask(names) for kind, names in _MOTIONS.items()}
-    kinetic = kinetic_energy_fractions(full, assembled.mass, masks)
-    by_shaft = kinetic_energy_fractions(full, assembled.mass, {
-        (kind, name): assembled.dof_mask(names, name) for kind, names in _MOTIONS.items()
-        for name in assembled.node_offsets})
+    kinetic, by_shaft = _kinetic_fractions(assembled, full)
     per_shaft = {name: sum(by_shaft[(kind, name)] for kind in _MOTIONS) for name in assembled.node_offsets}
     groups = dict(assembled.stiffness_groups)
     groups.update(assembled.mesh_stiffness_groups(mesh_stiffness))
     shares = strain_energy_shares(full, groups)
-    labels = tuple(_label({kind: kinetic[kind][i] for kind in kinetic},
-                          {key: value[i] for key, value in by_shaft.items()}) for i in range(frequencies.size))
-    return DrivetrainModes(frequencies, ratios, full, labels, kinetic, per_shaft, shares,
-                           reduction.rigid_modes.shape[1])
+    return DrivetrainModes(frequencies, ratios, full, _labels(kinetic, by_shaft, frequencies.size), kinetic,
+                           per_shaft, shares, reduction.rigid_modes.shape[1])
+
+
+def _kinetic_fractions(assembled: AssembledDrivetrain, shapes: np.ndarray) -> tuple[dict, dict]:
+    """Kinetic-energy fractions of each motion, and of each motion per shaft, of the shapes (DOFs, modes)."""
+    masks = {kind: assembled.dof_mask(names) for kind, names in _MOTIONS.items()}
+    kinetic = kinetic_energy_fractions(shapes, assembled.mass, masks)
+    by_shaft = kinetic_energy_fractions(shapes, assembled.mass, {
+        (kind, name): assembled.dof_mask(names, name) for kind, names in _MOTIONS.items()
+        for name in assembled.node_offsets})
+    return kinetic, by_shaft
+
+
+def _labels(kinetic: dict, by_shaft: dict, count: int) -> tuple[str, ...]:
+    return tuple(_label({kind: kinetic[kind][i] for kind in kinetic},
+                        {key: value[i] for key, value in by_shaft.items()}) for i in range(count))
+
+
+def mode_labels(assembled: AssembledDrivetrain, shapes: np.ndarray) -> tuple[str, ...]:
+    """The label of each shape (DOFs, modes), real or complex, as :func:`drivetrain_modes` gives it."""
+    kinetic, by_shaft = _kinetic_fractions(assembled, shapes)
+    return _labels(kinetic, by_shaft, shapes.shape[1])

@@ -80,7 +80,8 @@ def build_report(case, out: Path | str, *, force: bool = False, method: str = "p
     from thermogear.report.drivetrain_section import drivetrain_report_data  # [drivetrain] cases (issue 27)
 
     drivetrain_models = tuple(evaluation.responses) or ("elastic",)
-    evaluation.drivetrain = drivetrain_report_data(drivetrain_builder(case, drivetrain_models), drivetrain_models,
+    evaluation.drivetrain = drivetrain_report_data(_kept(drivetrain_builder(case, drivetrain_models), evaluation),
+                                                   drivetrain_models,
                                                    transient=method == "transient",
                                                    series=evaluation.drivetrain_series)
     with folder:
@@ -108,7 +109,8 @@ def build_report(case, out: Path | str, *, force: bool = False, method: str = "p
         step("files")
         write_start = time.perf_counter()
         missing = {name: missing[name] for name in FIGURES if name in missing}
-        figures = [name for name in FIGURES if name not in missing]
+        figures = [name for name in FIGURES  # a picture with nothing to draw (no [drivetrain]) is neither
+                   if name not in missing and (figure_folder / f"{name}.png").is_file()]
         pngs = {name: (figure_folder / f"{name}.png").read_bytes() for name in figures}
         verdicts = paper_verdicts(evaluation) + rig_verdicts(rig) if paper else []
         results = key_results(evaluation)
@@ -130,6 +132,19 @@ def build_report(case, out: Path | str, *, force: bool = False, method: str = "p
     return ReportOutcome(folder=folder.target, evaluation=evaluation, verdicts=verdicts, results=results,
                          messages=messages, figures=sorted(figures), missing_figures=missing,
                          seconds=time.perf_counter() - start + sum(before.values()), timings=dict(evaluation.timings))
+
+
+def _kept(build, evaluation):
+    """``build`` (None, or the function that builds a case's CaseDrivetrain) that also keeps what it built on
+    ``evaluation``, before the figures' processes start: the drivetrain pictures draw from it."""
+    if build is None:
+        return None
+
+    def built():
+        evaluation.drivetrain_built = build()
+        return evaluation.drivetrain_built
+
+    return built
 
 
 def _draw_shared_figures(evaluation, folder: Path, counter) -> dict[str, str]:

@@ -7,9 +7,12 @@ function (thermal curves, dynamic response) it is used; this module only lays th
 
 from __future__ import annotations
 
+from functools import partial
 from typing import Any, Callable
 
 import numpy as np
+
+from thermogear.drivetrain.pictures import PICTURES as DRIVETRAIN_PICTURES
 
 __all__ = ["FE_FIGURES", "FIG6_SPAN_MS", "FIGURES", "SHARED_FIGURES", "report_figures", "save_figure",
            "write_figures"]
@@ -34,6 +37,7 @@ FIGURES: dict[str, str] = {
              "and thermal.",
     "fig12": "Fig. 12 — dynamic pair and system loads per unit face width in the steady state (three periods).",
     "fig15": "Fig. 15 — FE verification of the elastic and thermal stiffness along Γ.",
+    **DRIVETRAIN_PICTURES,
 }
 
 _COLORS = {"elastic": "tab:blue", "thermal": "tab:red"}
@@ -279,6 +283,14 @@ def fig15(evaluation):
     return figure
 
 
+def _drivetrain_picture(name: str, evaluation):
+    """One of the drivetrain's pictures (:mod:`thermogear.drivetrain.pictures`), from the drivetrain the report's
+    results came from."""
+    from thermogear.drivetrain.pictures import drivetrain_pictures
+
+    return drivetrain_pictures(evaluation.drivetrain_built, evaluation.drivetrain, (name,))[name]
+
+
 _DRAW: dict[str, tuple[Callable[[Any], Any], tuple[str, ...]]] = {
     "fig3c": (fig3c, ("thermal stiffness",)),
     "fig4": (fig4, ("thermal stiffness",)),
@@ -290,6 +302,7 @@ _DRAW: dict[str, tuple[Callable[[Any], Any], tuple[str, ...]]] = {
     "fig11": (fig11, ("start-up transients", "elastic model", "thermal model")),
     "fig12": (fig12, ("elastic model", "thermal model")),
     "fig15": (fig15, ("FE verification",)),
+    **{name: (partial(_drivetrain_picture, name), ()) for name in DRIVETRAIN_PICTURES},
 }
 
 
@@ -299,6 +312,12 @@ def report_figures(evaluation, names=None) -> tuple[dict[str, Any], dict[str, st
     for name, (draw, stages) in _DRAW.items():
         if names is not None and name not in names:
             continue
+        if name in DRIVETRAIN_PICTURES:
+            if evaluation.drivetrain is None:  # a case without [drivetrain]: nothing to draw, nothing missing
+                continue
+            if evaluation.drivetrain_built is None or "not_computed" in evaluation.drivetrain:
+                missing[name] = evaluation.drivetrain.get("not_computed", "the drivetrain was not built")
+                continue
         if name == "fig15" and evaluation.fem is None:
             missing[name] = evaluation.problem("FE verification") or "the FE verification was not run"
             continue
@@ -357,7 +376,8 @@ def save_figure(figure, folder, name: str) -> list[str]:
 #: :func:`thermogear.report.build.build_report`), slowest first: Fig. 4's four panels (~0.6 s CPU), the two-panel
 #: figures (~0.3 s), the single panels last (~0.2 s). Whichever process is free takes the next, so the last ones
 #: taken are short and both processes end close together, however busy each was before (longest job first).
-SHARED_FIGURES = ("fig4", "fig7", "fig8", "fig11", "fig6", "fig9", "fig10", "fig3c", "fig12")
+SHARED_FIGURES = ("drivetrain_campbell", "drivetrain_modes", "fig4", "fig7", "fig8", "fig11", "fig6", "fig9", "fig10",
+                  "drivetrain_layout", "drivetrain_bearing_spectra", "fig3c", "fig12")
 #: The figures that need the FE verification: drawn last, once its child process has answered.
 FE_FIGURES = ("fig15",)
 

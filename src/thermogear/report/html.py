@@ -228,6 +228,8 @@ def render_report(evaluation, *, version: str, toml_text: str, pngs: dict[str, b
     nav = ["<a href='#case'>case</a>", "<a href='#figures'>figures</a>", "<a href='#results'>results</a>"]
     if verdicts:
         nav += ["<a href='#paper'>paper vs thermogear</a>"]
+    if "drivetrain_layout" in pngs:  # a [drivetrain] case: its pictures among the figures
+        nav.insert(2, "<a href='#drivetrain_layout'>drivetrain pictures</a>")
     nav.append("<a href='#references'>references</a>")
     parts.insert(2, _headline_section(evaluation, verdicts, pngs))
     if verdicts:
