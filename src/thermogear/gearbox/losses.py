@@ -20,6 +20,7 @@ import numpy as np
 
 from thermogear.errors import ExtrapolationWarning
 from thermogear.friction import friction_validity_warnings, mean_friction_coefficient
+from thermogear.gearbox.bearing_entries import mounted_bearing_power
 from thermogear.gearbox.bearing_loss import seal_power_loss
 from thermogear.gearbox.churning import DippedGear, churning_power_loss, churning_validity
 from thermogear.gearbox.description import GearboxDescription, GearboxOperatingPoint
@@ -139,8 +140,7 @@ class LossModel:
         pinion_rpm = operating.speed_rpm
         wheel_rpm = pinion_rpm / description.gear_pair.gear_ratio
         bearing_viscosity = float(description.lubricant.kinematic_viscosity(shaft_c, warn=False)) * 1e6
-        bearings = sum(mounted.bearing.moments(wheel_rpm if mounted.on_wheel_shaft else pinion_rpm,
-                                               bearing_viscosity, mounted.load_fraction * self.normal_force).power
+        bearings = sum(mounted_bearing_power(mounted, pinion_rpm, wheel_rpm, bearing_viscosity, self.normal_force)
                        for mounted in description.bearings)
         seals = sum(seal_power_loss(seal.shaft_diameter_mm, wheel_rpm if seal.on_wheel_shaft else pinion_rpm)
                     for seal in description.seals)
