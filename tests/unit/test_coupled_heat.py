@@ -195,3 +195,17 @@ def test_the_backlash_drivetrain_takes_the_hot_clearance():
     assert difference > 5.0 and math.isclose(built.drivetrains[ELASTIC].bearings[0].radial_clearance, 20e-6)
     for bearing in built.drivetrains[THERMAL].bearings:
         assert bearing.radial_clearance == pytest.approx(expected, rel=1e-12)
+
+
+def test_a_changed_operating_point_predicts_its_own_drivetrain_temperatures(coupled):
+    from thermogear.gearbox.drivetrain_coupling import (coupled_parts_from_case, network_drivetrain_heat,
+                                                        operating_point_temperatures)
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        faster = coupled.with_changes(**{"operating.speed_rpm": 2100.0})
+        heat = network_drivetrain_heat(faster)
+    expected = operating_point_temperatures(coupled_parts_from_case(coupled), 2100.0, 138.0).heat
+    assert heat.shaft_temperature_c == pytest.approx(expected.shaft_temperature_c, rel=1e-9)
+    assert heat.shaft_temperature_c["wheel shaft"] > network_drivetrain_heat(coupled).shaft_temperature_c[
+        "wheel shaft"] + 1.0

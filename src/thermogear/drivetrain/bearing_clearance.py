@@ -9,9 +9,8 @@ with the clearance small against the diameters (d_o ≈ d_i + 2·D_w) the change
 with the rolling elements at the inner ring's temperature (inner ring and rolling elements "considered as one unit")
 and E = d_o the outer-ring raceway (bore) diameter: the relation Δδ = α·Δt·E of IKO's needle roller bearing
 catalogue (IKO Nippon Thompson, "Needle Roller Bearings", p. A39, Eq. (29); α ≈ 12.5e-6 /K for bearing steel,
-Δt = 5–10 K in normal operation, 15–20 K at high speeds), the same as the reduction of the radial internal clearance
-by a temperature difference between the rings that bearing makers tabulate (e.g. JTEKT/Koyo, NSK). Equal ring
-temperatures leave the clearance unchanged, whatever they are; a hotter inner ring reduces it.
+Δt = 5–10 K in normal operation, 15–20 K at high speeds). Equal ring temperatures leave the clearance unchanged,
+whatever they are; a hotter inner ring reduces it.
 
 The inner ring sits on the shaft (interference fit) and takes the shaft's temperature, the outer ring the housing
 seat's. Not included (stated): the change of the fits themselves with the shaft's and the housing's own expansion

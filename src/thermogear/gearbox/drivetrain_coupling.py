@@ -27,7 +27,8 @@ from typing import TYPE_CHECKING
 from thermogear.case import cached_per_case
 from thermogear.drivetrain.bearing_clearance import estimated_outer_raceway_diameter
 from thermogear.drivetrain.heat_source import BearingRings, DrivetrainHeat
-from thermogear.gearbox.bearing_entries import mounted_bearing_power
+from thermogear.errors import CaseError
+from thermogear.gearbox.bearing_entries import mounted_bearing_power, rolling_bearing
 from thermogear.gearbox.case_model import (gearbox_model_from_case, gearbox_operating_point, gearbox_section,
                                            predicted_steady_state)
 from thermogear.gearbox.description import GearboxOperatingPoint
@@ -74,8 +75,6 @@ def _raceway(section) -> float | None:
         return None
     if loss.outer_raceway_diameter_mm is not None:
         return loss.outer_raceway_diameter_mm * _MM
-    from thermogear.gearbox.bearing_entries import rolling_bearing  # noqa: PLC0415
-
     bearing = rolling_bearing(loss)
     return estimated_outer_raceway_diameter(bearing.bore_mm, bearing.outside_mm) * _MM
 
@@ -85,8 +84,6 @@ def coupled_parts_from_case(case: "Case") -> CoupledThermalParts:
     """The :class:`CoupledThermalParts` of a case with ``[gearbox]`` and ``[drivetrain]`` (memoised per case).
 
     Keeps the Case: a resolver (the gearbox model and the drivetrain's names, built once)."""
-    from thermogear.errors import CaseError  # noqa: PLC0415
-
     section = case.drivetrain
     if section is None:
         raise CaseError("drivetrain", None, "a [drivetrain] section", "the network's temperatures set a drivetrain")
