@@ -114,11 +114,31 @@ def test_gearbox_bearings_beside_a_drivetrain_are_refused_with_the_drivetrain_be
     assert "described once" in message
 
 
-def test_a_designation_with_constants_is_refused():
+_CONSTANTS = {"type": "cylindrical_roller", "bore_mm": 30.0, "outside_mm": 90.0, "width_mm": 23.0,
+              "rolling_constant": 1e-6, "sliding_constants": [0.16, 0.0015], "geometry_constant": 5.1}
+
+
+@pytest.mark.parametrize("loss, key, words", [
+    ({"designation": "NJ406", "bore_mm": 30.0}, "loss.bore_mm", "absent with a designation"),
+    ({key: value for key, value in _CONSTANTS.items() if key != "width_mm"}, "loss.width_mm", "a value"),
+    ({**_CONSTANTS, "outer_raceway_diameter_mm": 95.0}, "loss.outer_raceway_diameter_mm", "between bore_mm"),
+])
+def test_bad_loss_data_is_refused_naming_the_bearing(loss, key, words):
     document = _document()
-    document["drivetrain"]["bearings"][0]["loss"] = {"designation": "NJ406", "bore_mm": 30.0}
-    with pytest.raises(CaseError, match="drivetrain.bearings.loss.bore_mm"):
+    document["drivetrain"]["bearings"][1]["loss"] = loss
+    with pytest.raises(CaseError) as raised:
         _load(document)
+    assert f"drivetrain.bearings 'pinion bearing B'.{key}" in str(raised.value) and words in str(raised.value)
+
+
+def test_the_skf_constants_give_the_designations_loss(coupled):
+    from thermogear.gearbox.bearing_entries import drivetrain_mounted_bearings
+
+    document = _document()
+    document["drivetrain"]["bearings"][1]["loss"] = {**_CONSTANTS, "drag_variable": 1.49e-4}
+    by_constants = {item.name: item.bearing for item in drivetrain_mounted_bearings(_load(document))}
+    by_designation = {item.name: item.bearing for item in drivetrain_mounted_bearings(coupled)}
+    assert by_constants["pinion bearing B"] == by_designation["pinion bearing B"]
 
 
 def test_the_old_gearbox_bearings_stay_for_a_gearbox_without_drivetrain():

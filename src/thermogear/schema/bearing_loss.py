@@ -21,7 +21,7 @@ from __future__ import annotations
 
 from typing import Annotated, Literal
 
-from pydantic import Field, model_validator
+from pydantic import Field
 
 from thermogear.errors import CaseError
 from thermogear.schema.base import Section
@@ -58,28 +58,28 @@ class BearingLossSection(Section):
         None, description="outer-ring raceway diameter E [mm] for the thermal change of the clearance; default "
                           "(d + 3D)/4 (rolling elements filling half the radial section)")
 
-    @model_validator(mode="after")
-    def _designation_or_constants(self):
-        key = "drivetrain.bearings.loss"
-        if self.designation is not None:
-            given = [name for name in (*CONSTANT_KEYS, "drag_variable") if getattr(self, name) is not None]
-            if given:
-                raise CaseError(f"{key}.{given[0]}", getattr(self, given[0]), "absent with a designation",
-                                "the designation sets the bearing's size and constants")
-            return self
-        for name in CONSTANT_KEYS:
-            if getattr(self, name) is None:
-                raise CaseError(f"{key}.{name}", None, "a value (or designation = 'NJ406')",
-                                "the SKF model of the bearing's frictional moment needs it")
-        if self.outside_mm <= self.bore_mm:
-            raise CaseError(f"{key}.outside_mm", self.outside_mm, f"> bore_mm = {self.bore_mm}",
-                            "the outside diameter is larger than the bore")
-        if self.outer_raceway_diameter_mm is not None and not (
-                self.bore_mm < self.outer_raceway_diameter_mm < self.outside_mm):
-            raise CaseError(f"{key}.outer_raceway_diameter_mm", self.outer_raceway_diameter_mm,
-                            f"between bore_mm {self.bore_mm} and outside_mm {self.outside_mm}",
-                            "the outer raceway lies inside the outer ring")
-        return self
+
+
+def check_loss_data(loss: BearingLossSection, key: str) -> None:
+    """A designation alone, or the type, size and every SKF constant, with the outer raceway inside the ring;
+    errors name ``key`` (the bearing's ``loss`` table)."""
+    if loss.designation is not None:
+        given = [name for name in (*CONSTANT_KEYS, "drag_variable") if getattr(loss, name) is not None]
+        if given:
+            raise CaseError(f"{key}.{given[0]}", getattr(loss, given[0]), "absent with a designation",
+                            "the designation sets the bearing's size and constants")
+        return
+    for name in CONSTANT_KEYS:
+        if getattr(loss, name) is None:
+            raise CaseError(f"{key}.{name}", None, "a value (or designation = 'NJ406')",
+                            "the SKF model of the bearing's frictional moment needs it")
+    if loss.outside_mm <= loss.bore_mm:
+        raise CaseError(f"{key}.outside_mm", loss.outside_mm, f"> bore_mm = {loss.bore_mm}",
+                        "the outside diameter is larger than the bore")
+    if loss.outer_raceway_diameter_mm is not None and not loss.bore_mm < loss.outer_raceway_diameter_mm < loss.outside_mm:
+        raise CaseError(f"{key}.outer_raceway_diameter_mm", loss.outer_raceway_diameter_mm,
+                        f"between bore_mm {loss.bore_mm} and outside_mm {loss.outside_mm}",
+                        "the outer raceway lies inside the outer ring")
 
 
 def check_bearings_described_once(gearbox, drivetrain) -> None:
@@ -102,4 +102,4 @@ def check_bearings_described_once(gearbox, drivetrain) -> None:
                         "absent in a case with a [drivetrain]", reason)
 
 
-__all__ = ["BearingLossSection", "CONSTANT_KEYS", "check_bearings_described_once"]
+__all__ = ["BearingLossSection", "CONSTANT_KEYS", "check_bearings_described_once", "check_loss_data"]

@@ -33,7 +33,7 @@ from pydantic import Field, model_validator
 
 from thermogear.errors import CaseError
 from thermogear.schema.base import Section
-from thermogear.schema.bearing_loss import BearingLossSection
+from thermogear.schema.bearing_loss import BearingLossSection, check_loss_data
 
 #: Lengths and positions [mm]: from a 0.1 mm shim to a 20 m line shaft.
 _LENGTH_MM = (0.1, 20_000.0)
@@ -137,6 +137,12 @@ class BearingSection(Section):
         "the bearing's loss-model data for the gearbox thermal model: { designation = 'NJ406' } or type, bore_mm, "
         "outside_mm, width_mm, rolling_constant, sliding_constants, geometry_constant, drag_variable; optional "
         "outer_raceway_diameter_mm. Its radial load is the drivetrain's static bearing force"))
+
+    @model_validator(mode="after")
+    def _loss_data(self):
+        if self.loss is not None:
+            check_loss_data(self.loss, f"drivetrain.bearings '{self.name}'.loss")
+        return self
 
 
 class DiskSection(Section):
