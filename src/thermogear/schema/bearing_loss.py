@@ -31,9 +31,9 @@ CONSTANT_KEYS = ("type", "bore_mm", "outside_mm", "width_mm", "rolling_constant"
                  "geometry_constant")
 
 
-class BearingLossSection(Section):
+class SkfBearingData(Section):
     """The SKF frictional-moment data of one rolling bearing: a built-in designation or the type, the size and the
-    constants in catalogue units; optionally the outer raceway diameter for the thermal change of its clearance."""
+    constants in catalogue units (shared by ``[[gearbox.bearings]]`` and a drivetrain bearing's ``loss``)."""
 
     designation: Literal["NJ406"] | None = Field(None, description="built-in bearing constants (size and SKF "
                                                                    "constants)")
@@ -54,10 +54,15 @@ class BearingLossSection(Section):
         None, description="K_Z of the SKF model")
     drag_variable: Annotated[float, Field(ge=0.0, le=1e-2, allow_inf_nan=False)] | None = Field(
         None, description="V_M of the SKF drag loss (default 0: above the oil); set by a designation")
+
+
+class BearingLossSection(SkfBearingData):
+    """A drivetrain bearing's loss data: the SKF data and, optionally, the outer raceway diameter for the thermal
+    change of its clearance."""
+
     outer_raceway_diameter_mm: Annotated[float, Field(gt=0.0, le=3000.0, allow_inf_nan=False)] | None = Field(
         None, description="outer-ring raceway diameter E [mm] for the thermal change of the clearance; default "
                           "(d + 3D)/4 (rolling elements filling half the radial section)")
-
 
 
 def check_loss_data(loss: BearingLossSection, key: str) -> None:
@@ -102,4 +107,4 @@ def check_bearings_described_once(gearbox, drivetrain) -> None:
                         "absent in a case with a [drivetrain]", reason)
 
 
-__all__ = ["BearingLossSection", "CONSTANT_KEYS", "check_bearings_described_once", "check_loss_data"]
+__all__ = ["BearingLossSection", "SkfBearingData", "CONSTANT_KEYS", "check_bearings_described_once", "check_loss_data"]
