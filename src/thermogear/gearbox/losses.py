@@ -3,7 +3,8 @@
 Tooth friction P_VZP = P_in·μ_m·H_V (Niemann & Winter §21.6) with the project's DIN 3990-4 mean friction
 coefficient (thermogear.friction) at the oil temperature, evaluated at the pitch point (sum of rolling speeds
 2·v_t·sin α_w, relative radius of curvature at C, unit load F_bt/b); bearings by the SKF model at the viscosity
-of the oil at the shaft node's temperature, radial load a fraction of the tooth normal force; lip seals; churning
+of the oil at the shaft node's temperature, radial load a fraction of the tooth normal force (for a drivetrain
+bearing its static force per newton of tooth load, :mod:`~thermogear.gearbox.bearing_entries`); lip seals; churning
 of the dipped gears at the oil temperature (:mod:`~thermogear.gearbox.churning`); the impulse loss of an
 into-mesh oil jet where the description has one (injection lubrication, :mod:`~thermogear.gearbox.injection`).
 Heat goes to the nodes as: tooth friction to pinion and wheel by the description's share, bearings and seals to
