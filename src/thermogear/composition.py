@@ -37,6 +37,12 @@ TEMPERATURE_MODELS: dict[str, str] = {
     "gearbox": "thermogear.gearbox.case_model:with_predicted_temperatures",
 }
 
+#: ``[temperature] model`` name → the provider of the drivetrain's shaft and bearing-ring temperatures,
+#: ``provider(case) -> thermogear.drivetrain.heat_source.DrivetrainHeat`` (none: the drivetrain's own default).
+DRIVETRAIN_HEAT: dict[str, str] = {
+    "gearbox": "thermogear.gearbox.drivetrain_coupling:network_drivetrain_heat",
+}
+
 #: Load-time checks every case passes (after the built-in ones), ``check(case) -> None``.
 CASE_CHECKS: tuple[str, ...] = (
     "thermogear.gearbox.case_model:check_gearbox_section",
@@ -65,4 +71,4 @@ def builtin(table: dict[str, str], name: str) -> Callable | None:
     return None if target is None else resolve(target)
 
 
-__all__ = ["CASE_CHECKS", "TEMPERATURE_MODELS", "TEMPERATURE_PROVIDERS", "X_TE_PROVIDERS", "builtin", "resolve"]
+__all__ = ["CASE_CHECKS", "DRIVETRAIN_HEAT", "TEMPERATURE_MODELS", "TEMPERATURE_PROVIDERS", "X_TE_PROVIDERS", "builtin", "resolve"]

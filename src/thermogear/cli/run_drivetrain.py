@@ -96,11 +96,40 @@ def print_drivetrain(data: dict[str, Any] | None, console) -> None:
             response.add_row(f"{bearing}: {j + 1}× mesh ({frequency:.0f} Hz)",
                              *(_number(f["harmonic_amplitude_n"][j], "{:.2f}") for f in forces.values()), "N")
     console.print(response)
+    _print_warm_state(data.get("warm_state"), console)
     for name, model in models.items():
         if model.get("failure"):
             console.print(f"drivetrain, {name} model: no periodic orbit — {model['failure']}", highlight=False)
     for note in data.get("notes", []):
         console.print(f"note: {note}", highlight=False)
+
+
+def _print_warm_state(warm: dict[str, Any] | None, console) -> None:
+    """The hot drivetrain's shaft temperatures with where they came from and, where a temperature model gives its
+    bearings' rings, their temperatures, operating clearance, static load and loss."""
+    if not warm or not warm.get("shafts"):
+        return
+    from rich.table import Table
+
+    shafts = Table(title="drivetrain warm state: shaft temperatures (E(T) and thermal growth)", header_style="bold")
+    for column in ("shaft", "temperature [°C]", "from"):
+        shafts.add_column(column, justify="right" if column.startswith("temperature") else "left")
+    for name, shaft in warm["shafts"].items():
+        shafts.add_row(name, f"{shaft['temperature_c']:.1f}", shaft["source"])
+    console.print(shafts)
+    if not warm.get("bearings"):
+        return
+    bearings = Table(title="drivetrain warm state: bearings (inner ring at the shaft, outer ring at the housing)",
+                     header_style="bold")
+    for column in ("bearing", "inner ring [°C]", "outer ring [°C]", "clearance mounted → hot [μm]",
+                   "static radial load [N]", "loss [W]"):
+        bearings.add_column(column, justify="left" if column == "bearing" else "right")
+    for name, bearing in warm["bearings"].items():
+        bearings.add_row(name, _number(bearing["inner_ring_c"]), _number(bearing["outer_ring_c"]),
+                         f"{bearing['mounted_clearance_um']:.2f} → {bearing['operating_clearance_um']:.2f}",
+                         "–" if bearing["static_radial_load_n"] is None else f"{bearing['static_radial_load_n']:.1f}",
+                         "–" if bearing["loss_w"] is None else f"{bearing['loss_w']:.2f}")
+    console.print(bearings)
 
 
 def _percent(value):

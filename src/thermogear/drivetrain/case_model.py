@@ -2,10 +2,12 @@
 
 The cold drivetrain carries the elastic mesh model (E at 20 °C, the pair as built, shafts at 20 °C); the hot one
 the case's thermal mesh model, put in its warm state as :mod:`thermogear.drivetrain.heat` does: the shafts' E(T)
-at their temperature (each shaft's ``temperature_c``, default the gears' mean tooth temperature) with the gears'
-β_E, the hot mean mesh stiffness, and the hot pair's base radii and operating pressure angle at the centre distance
+at their temperature (each shaft's ``temperature_c``; else the temperature model's prediction where it makes one —
+the gearbox network's shafts node, :mod:`thermogear.drivetrain.heat_source` —; else the gears' mean tooth
+temperature) with the gears' β_E, the hot mean mesh stiffness, and the hot pair's base radii and operating pressure angle at the centre distance
 the housing moved (thermo-elastic model; under the paper's ``luo2020`` model only the mesh stiffness changes).
-Masses, inertias and bearings are held (stated in :mod:`thermogear.drivetrain.heat`).
+Masses, inertias and bearing stiffnesses are held (stated in :mod:`thermogear.drivetrain.heat`); a bearing's play
+follows its ring temperatures where the temperature model gives them (:mod:`thermogear.drivetrain.warm_state`).
 
 For each model: the lowest modes (undamped, mean mesh stiffness) with a label, the strain-energy shares of the
 mesh, each bearing, shaft, coupling and support; the exact periodic response to one mesh period of the model's mesh
@@ -27,6 +29,8 @@ import numpy as np
 from thermogear.drivetrain.assembly import Drivetrain
 from thermogear.drivetrain.case_layout import MESH_NAME, drivetrain_from_section
 from thermogear.drivetrain.heat import ModeShifts, WarmState, thermal_mode_shifts, warm_drivetrain
+from thermogear.drivetrain.heat_source import drivetrain_heat_of
+from thermogear.drivetrain.warm_state import operating_clearances, shaft_temperatures, with_clearances
 from thermogear.drivetrain.modes import DrivetrainModes, drivetrain_modes
 from thermogear.drivetrain.response import DrivetrainResponse, drivetrain_periodic_response, drivetrain_speed_sweep
 from thermogear.mesh.model_names import ELASTIC, THERMAL
@@ -131,7 +135,8 @@ class CaseDrivetrain:
     ``dynamics`` its [dynamics] section (mesh, method, points per period, transient periods), ``teeth`` the
     pinion's, ``drivetrains`` model → Drivetrain, ``models`` model → MeshModel, ``notes`` what was assumed (shaft
     temperatures); ``warm_moduli`` the hot drivetrain before its thermal expansion (None where it did not expand),
-    for the attribution of the expansion."""
+    for the attribution of the expansion; ``warm_state`` the shafts' temperatures and where they came from, and the
+    bearings' ring temperatures and play (:mod:`~thermogear.drivetrain.warm_state`)."""
 
     section: Any
     dynamics: Any
@@ -141,6 +146,7 @@ class CaseDrivetrain:
     notes: tuple[str, ...] = ()
     warm_moduli: Drivetrain | None = None
     _assembled: dict = field(default_factory=dict, repr=False)
+    warm_state: dict = field(default_factory=dict)
 
     @property
     def backlash_mesh(self) -> bool:
@@ -240,7 +246,7 @@ def case_drivetrain(case, models: tuple[str, ...] = (ELASTIC, THERMAL)) -> CaseD
     cold = drivetrain_from_section(section, case.gear_pair, case.material, stiffness, damping, case.inertias)
     drivetrains = {ELASTIC: cold}
     notes: list[str] = []
-    warm_moduli = None
+    warm_moduli, warm_state = None, {}
     if THERMAL in models:
         hot_model = mesh_models[THERMAL]
         hot_stiffness, _ = _mean_state(hot_model, points)
@@ -257,23 +263,18 @@ def case_drivetrain(case, models: tuple[str, ...] = (ELASTIC, THERMAL)) -> CaseD
             tooth_c = MODULUS_REFERENCE_C if bulk is None else float(bulk)
             beta, geometry = MODULUS_TEMPERATURE_COEFFICIENTS_PER_K["carbon_steel"], {}
             expansion = 0.0  # the paper's model keeps the cold geometry
-        temperatures = {shaft.name: shaft.temperature_c if shaft.temperature_c is not None else tooth_c
-                        for shaft in section.shafts}
-        defaulted = [shaft.name for shaft in section.shafts if shaft.temperature_c is None]
-        if defaulted and thermoelastic is not None:
-            notes.append(f"drivetrain: {', '.join(defaulted)} taken at the gears' mean tooth temperature "
-                         f"{tooth_c:.1f} °C in the warm state (give drivetrain.shafts.temperature_c to change it)")
-        elif defaulted:
-            notes.append(f"drivetrain: {', '.join(defaulted)} taken at {tooth_c:g} °C in the warm state (the case's "
-                         "bulk temperature, else 20 °C) with carbon steel's β_E; under the paper's thermal model "
-                         "the mesh keeps its cold geometry, only its stiffness changes")
+        heat = drivetrain_heat_of(case)
+        temperatures, warm_state, note = shaft_temperatures(section, tooth_c, heat, thermoelastic is not None)
+        notes += [note] if note else []
         warm = WarmState(temperatures, beta, mesh_stiffness=hot_stiffness, expansion_coefficient_per_k=expansion,
                          **geometry)
-        drivetrains[THERMAL] = warm_drivetrain(cold, warm)
+        clearances = operating_clearances(section, heat, warm_state, notes)
+        drivetrains[THERMAL] = with_clearances(warm_drivetrain(cold, warm), clearances)
         if expansion:
-            warm_moduli = warm_drivetrain(cold, replace(warm, expansion_coefficient_per_k=0.0))
+            warm_moduli = with_clearances(warm_drivetrain(cold, replace(warm, expansion_coefficient_per_k=0.0)),
+                                          clearances)
     return CaseDrivetrain(section, case.dynamics, case.gear_pair.pinion.teeth, drivetrains, mesh_models, tuple(notes),
-                          warm_moduli)
+                          warm_moduli, warm_state=warm_state)
 
 
 def drivetrain_builder(case, models: tuple[str, ...] = (ELASTIC, THERMAL)):
@@ -369,7 +370,7 @@ def drivetrain_results(built: CaseDrivetrain, models: tuple[str, ...] = (ELASTIC
         "mesh": mesh, "backlash_mesh": built.backlash_mesh, "transient": bool(transient),
         "solved_on": ("every DOF" if transient
                       else f"modes up to {section.response_cutoff_hz:.0f} Hz"),
-        "notes": list(built.notes), "models": {}}
+        "notes": list(built.notes), "warm_state": built.warm_state, "models": {}}
     for model in models:
         if progress is not None:
             progress(f"drivetrain, {model} model")

@@ -24,7 +24,7 @@ from typing import TYPE_CHECKING
 from thermogear import warning_scope
 from thermogear.case import cached_per_case
 from thermogear.errors import CaseError
-from thermogear.gearbox.bearing_loss import NJ406_CONSTANTS, RollingBearing
+from thermogear.gearbox.bearing_entries import drivetrain_mounted_bearings, rolling_bearing
 from thermogear.gearbox.injection import OilJet
 from thermogear.gearbox.description import (GearboxDescription, GearboxOperatingPoint, Housing, LipSeal,
                                             MountedBearing)
@@ -39,10 +39,6 @@ if TYPE_CHECKING:
 
 #: Specific heats of the housing materials [J/(kg·K)] (module docstring).
 HOUSING_SPECIFIC_HEAT = {"cast_iron": 500.0, "steel": 434.0, "aluminium": 903.0}
-#: Built-in bearing constants by designation (SKF model, catalogue units).
-BEARING_CONSTANTS = {"NJ406": (RollingBearing.cylindrical_roller, NJ406_CONSTANTS)}
-BEARING_TYPES = {"cylindrical_roller": RollingBearing.cylindrical_roller,
-                 "deep_groove_ball": RollingBearing.deep_groove_ball}
 
 
 def gearbox_section(section: "GearboxSection | None") -> "GearboxSection":
@@ -96,18 +92,7 @@ def _housing(section: "GearboxSection", expansion: float) -> Housing:
 def _bearings(section) -> tuple[MountedBearing, ...]:
     mounted = []
     for entry in section.bearings:
-        if entry.designation is not None:
-            factory, constants = BEARING_CONSTANTS[entry.designation]
-            bearing = factory(**constants)
-        else:
-            factory = BEARING_TYPES[entry.type]
-            constants = dict(bore_mm=entry.bore_mm, outside_mm=entry.outside_mm, width_mm=entry.width_mm,
-                             rolling_constant=entry.rolling_constant, geometry_constant=entry.geometry_constant,
-                             drag_variable=entry.drag_variable)
-            if entry.type == "deep_groove_ball":
-                bearing = factory(sliding_constant=entry.sliding_constants[0], **constants)
-            else:
-                bearing = factory(sliding_constants=tuple(entry.sliding_constants), **constants)
+        bearing = rolling_bearing(entry)
         fraction = 1.0 / entry.count if entry.load_fraction is None else entry.load_fraction
         mounted.extend(MountedBearing(bearing, entry.shaft == "wheel", fraction) for _ in range(entry.count))
     return tuple(mounted)
@@ -143,7 +128,7 @@ def gearbox_description_from_case(case: "Case") -> GearboxDescription:
         oil_volume=section.oil.volume_l * 1e-3,
         pinion_mass=disc_mass(pair.pinion), wheel_mass=disc_mass(pair.wheel), shaft_mass=section.shaft_mass_kg,
         wheel_immersion=wheel_immersion, pinion_immersion=section.oil.pinion_immersion_mm * 1e-3,
-        bearings=_bearings(section),
+        bearings=_bearings(section) + drivetrain_mounted_bearings(case),
         seals=tuple(LipSeal(seal.diameter_mm, seal.shaft == "wheel") for seal in section.seals),
         roughness=case.roughness_ra, lubricant_factor=oil.lubricant_factor,
         pinion_heat_share=section.pinion_heat_share, steel_specific_heat=material.specific_heat,

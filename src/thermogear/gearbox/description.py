@@ -29,11 +29,14 @@ def _check_positive(key: str, value: float, allow_zero: bool = False) -> None:
 @dataclass(frozen=True)
 class MountedBearing:
     """A rolling bearing on the pinion shaft (``on_wheel_shaft`` False) or the wheel shaft, carrying
-    ``load_fraction`` of the tooth normal force as radial load (0.5 for a gear centred between two bearings)."""
+    ``load_fraction`` of the tooth normal force as radial load (0.5 for a gear centred between two bearings; for a
+    drivetrain bearing its static force per newton of tooth load); ``name`` the drivetrain bearing it is (None: a
+    ``[[gearbox.bearings]]`` entry)."""
 
     bearing: RollingBearing
     on_wheel_shaft: bool
     load_fraction: float = 0.5
+    name: str | None = None
 
 
 @dataclass(frozen=True)

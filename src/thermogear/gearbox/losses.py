@@ -3,7 +3,8 @@
 Tooth friction P_VZP = P_in·μ_m·H_V (Niemann & Winter §21.6) with the project's DIN 3990-4 mean friction
 coefficient (thermogear.friction) at the oil temperature, evaluated at the pitch point (sum of rolling speeds
 2·v_t·sin α_w, relative radius of curvature at C, unit load F_bt/b); bearings by the SKF model at the viscosity
-of the oil at the shaft node's temperature, radial load a fraction of the tooth normal force; lip seals; churning
+of the oil at the shaft node's temperature, radial load a fraction of the tooth normal force (for a drivetrain
+bearing its static force per newton of tooth load, :mod:`~thermogear.gearbox.bearing_entries`); lip seals; churning
 of the dipped gears at the oil temperature (:mod:`~thermogear.gearbox.churning`); the impulse loss of an
 into-mesh oil jet where the description has one (injection lubrication, :mod:`~thermogear.gearbox.injection`).
 Heat goes to the nodes as: tooth friction to pinion and wheel by the description's share, bearings and seals to
@@ -20,6 +21,7 @@ import numpy as np
 
 from thermogear.errors import ExtrapolationWarning
 from thermogear.friction import friction_validity_warnings, mean_friction_coefficient
+from thermogear.gearbox.bearing_entries import mounted_bearing_power
 from thermogear.gearbox.bearing_loss import seal_power_loss
 from thermogear.gearbox.churning import DippedGear, churning_power_loss, churning_validity
 from thermogear.gearbox.description import GearboxDescription, GearboxOperatingPoint
@@ -139,8 +141,7 @@ class LossModel:
         pinion_rpm = operating.speed_rpm
         wheel_rpm = pinion_rpm / description.gear_pair.gear_ratio
         bearing_viscosity = float(description.lubricant.kinematic_viscosity(shaft_c, warn=False)) * 1e6
-        bearings = sum(mounted.bearing.moments(wheel_rpm if mounted.on_wheel_shaft else pinion_rpm,
-                                               bearing_viscosity, mounted.load_fraction * self.normal_force).power
+        bearings = sum(mounted_bearing_power(mounted, pinion_rpm, wheel_rpm, bearing_viscosity, self.normal_force)
                        for mounted in description.bearings)
         seals = sum(seal_power_loss(seal.shaft_diameter_mm, wheel_rpm if seal.on_wheel_shaft else pinion_rpm)
                     for seal in description.seals)

@@ -4,10 +4,11 @@ from __future__ import annotations
 
 import re
 
-from pydantic import Field, field_validator
+from pydantic import Field, field_validator, model_validator
 
 from thermogear.errors import CaseError
 from thermogear.schema.base import Section
+from thermogear.schema.bearing_loss import check_bearings_described_once
 from thermogear.schema.drivetrain import DrivetrainSection
 from thermogear.schema.dynamics import DampingSection, DynamicsSection
 from thermogear.schema.fem import FemSection
@@ -65,6 +66,12 @@ class CaseFile(Section):
     sweep: SweepSection | None = None
     gearbox: GearboxSection | None = None
     drivetrain: DrivetrainSection | None = None
+
+    @model_validator(mode="after")
+    def _bearings_once(self):
+        """Each bearing described once: with a [drivetrain], in [[drivetrain.bearings]] only."""
+        check_bearings_described_once(self.gearbox, self.drivetrain)
+        return self
 
 
 __all__ = ["CaseFile", "CaseInfo", "DampingSection", "DrivetrainSection", "DynamicsSection", "FemSection", "GearboxSection", "GearSection", "GearsSection", "HousingSection",

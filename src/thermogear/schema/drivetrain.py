@@ -33,6 +33,7 @@ from pydantic import Field, model_validator
 
 from thermogear.errors import CaseError
 from thermogear.schema.base import Section
+from thermogear.schema.bearing_loss import BearingLossSection, check_loss_data
 
 #: Lengths and positions [mm]: from a 0.1 mm shim to a 20 m line shaft.
 _LENGTH_MM = (0.1, 20_000.0)
@@ -130,7 +131,18 @@ class BearingSection(Section):
     radial_clearance_um: Annotated[float, Field(ge=0.0, le=1000.0, description=(
         "radial clearance [μm]: the shaft moves freely within ± this of the bearing centre in x and in y (a "
         "square dead zone); 0 (the default) is the bearing in permanent contact; above 0 only with the nonlinear "
-        "mesh (dynamics.mesh), whose backlash solver takes the clearance"))] = 0.0
+        "mesh (dynamics.mesh), whose backlash solver takes the clearance; with the gearbox thermal model it "
+        "changes with the ring temperatures (docs/gearbox-temperature.md)"))] = 0.0
+    loss: BearingLossSection | None = Field(None, description=(
+        "the bearing's loss-model data for the gearbox thermal model: { designation = 'NJ406' } or type, bore_mm, "
+        "outside_mm, width_mm, rolling_constant, sliding_constants, geometry_constant, drag_variable; optional "
+        "outer_raceway_diameter_mm. Its radial load is the drivetrain's static bearing force"))
+
+    @model_validator(mode="after")
+    def _loss_data(self):
+        if self.loss is not None:
+            check_loss_data(self.loss, f"drivetrain.bearings '{self.name}'.loss")
+        return self
 
 
 class DiskSection(Section):
@@ -206,7 +218,11 @@ class DrivetrainSection(Section):
         "[[drivetrain.bearings]] tables: name, shaft, position_mm, stiffness_x_n_per_m, stiffness_y_n_per_m, "
         "optional stiffness_z_n_per_m (locates the shaft axially), damping_x_n_s_per_m, damping_y_n_s_per_m, "
         "damping_z_n_s_per_m, radial_clearance_um (≥ 0 μm, default 0; above 0 only with dynamics.mesh = "
-        "'nonlinear'); at least two bearing positions per shaft"))]
+        "'nonlinear'; with the gearbox thermal model it follows the ring temperatures), loss (the bearing's SKF "
+        "loss data for the gearbox thermal model: { designation = 'NJ406' } or type, bore_mm, outside_mm, "
+        "width_mm, rolling_constant, sliding_constants, geometry_constant, drag_variable, and optionally "
+        "outer_raceway_diameter_mm; its radial load is the static bearing force); at least two bearing positions "
+        "per shaft"))]
     disks: Annotated[list[DiskSection], Field(max_length=200, description=(
         "one table per rigid disk: name, shaft, position_mm, mass_kg, polar_inertia_kg_m2, optional "
         "diametral_inertia_kg_m2 (default half the polar one); motor rotors, loads, hubs"))] = []

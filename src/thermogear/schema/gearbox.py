@@ -41,6 +41,7 @@ from pydantic import Field, model_validator
 
 from thermogear.errors import CaseError
 from thermogear.schema.base import Section
+from thermogear.schema.bearing_loss import SkfBearingData
 
 #: Ambient air temperatures the correlations (air properties, radiation) are used for [°C].
 AMBIENT_RANGE_C = (-60.0, 80.0)
@@ -128,25 +129,11 @@ class GearboxOilSection(Section):
         return self
 
 
-class GearboxBearingSection(Section):
+class GearboxBearingSection(SkfBearingData):
     """Rolling bearings of one shaft: a built-in designation or the SKF model's constants (catalogue units)."""
 
     shaft: Literal["pinion", "wheel"]
     count: Annotated[int, Field(ge=1, le=8)] = Field(2, description="bearings of this kind on the shaft")
-    designation: Literal["NJ406"] | None = Field(None, description="built-in bearing constants")
-    type: Literal["cylindrical_roller", "deep_groove_ball"] | None = None
-    bore_mm: Annotated[float, Field(gt=0.0, le=2000.0, allow_inf_nan=False)] | None = None
-    outside_mm: Annotated[float, Field(gt=0.0, le=3000.0, allow_inf_nan=False)] | None = None
-    width_mm: Annotated[float, Field(gt=0.0, le=1000.0, allow_inf_nan=False)] | None = None
-    rolling_constant: Annotated[float, Field(gt=0.0, le=1e-3, allow_inf_nan=False)] | None = Field(
-        None, description="R1 of the SKF model [catalogue units]")
-    sliding_constants: tuple[Annotated[float, Field(ge=0.0, allow_inf_nan=False)],
-                             Annotated[float, Field(ge=0.0, allow_inf_nan=False)]] | None = Field(
-        None, description="(S1, S2) of the SKF model (ball bearings: S2 = 0)")
-    geometry_constant: Annotated[float, Field(gt=0.0, le=20.0, allow_inf_nan=False)] | None = Field(
-        None, description="K_Z of the SKF model")
-    drag_variable: Annotated[float, Field(ge=0.0, le=1e-2, allow_inf_nan=False)] = Field(
-        0.0, description="V_M of the SKF drag loss (0 above the oil); ignored with a designation")
     load_fraction: Annotated[float, Field(ge=0.0, le=1.0, allow_inf_nan=False)] | None = Field(
         None, description="share of the tooth normal force each bearing carries; default 1/count")
 

@@ -1,0 +1,115 @@
+"""The gearbox's rolling bearings from a case: one SKF loss model per bearing entry, and, in a case with a
+``[drivetrain]``, each drivetrain bearing with its loss data carrying the drivetrain's static bearing force.
+
+Two ways, one per situation: without a drivetrain, ``[[gearbox.bearings]]`` (per shaft, ``count`` bearings each
+carrying ``load_fraction`` of the tooth normal force); with one, each ``[[drivetrain.bearings]]`` table with a
+``loss`` entry is one bearing of the loss model, on the shaft it sits on, and its radial load is the magnitude of
+the radial force it carries in the drivetrain's static state (:func:`thermogear.drivetrain.static_state.
+static_state`: K̄ q̄ = f̄ with the torque pair of the tooth normal load). The static state is linear in the load and
+the mean deviation does not move the bearing forces of a single mesh (the mesh force is W whatever the deviation),
+so each bearing's force per newton of tooth normal load is solved once per case and scales with the torque. The
+mean mesh stiffness of that static state is ISO 6336-1's c_γα·b (the mesh stiffness does not enter the bearing
+forces of shafts on two bearings, which are statically determinate: the lever rule).
+"""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from thermogear.errors import CaseError
+from thermogear.gearbox.bearing_loss import NJ406_CONSTANTS, RollingBearing
+from thermogear.gearbox.description import MountedBearing
+
+if TYPE_CHECKING:
+    from thermogear.case import Case
+
+__all__ = ["BEARING_CONSTANTS", "BEARING_TYPES", "drivetrain_bearing_loads", "drivetrain_mounted_bearings",
+           "mounted_bearing_power", "rolling_bearing"]
+
+#: Built-in bearing constants by designation (SKF model, catalogue units).
+BEARING_CONSTANTS = {"NJ406": (RollingBearing.cylindrical_roller, NJ406_CONSTANTS)}
+BEARING_TYPES = {"cylindrical_roller": RollingBearing.cylindrical_roller,
+                 "deep_groove_ball": RollingBearing.deep_groove_ball}
+
+
+def rolling_bearing(entry) -> RollingBearing:
+    """The SKF loss model of a bearing entry (a ``[[gearbox.bearings]]`` table or a drivetrain bearing's ``loss``):
+    a built-in designation or the type with its size and constants."""
+    if entry.designation is not None:
+        factory, constants = BEARING_CONSTANTS[entry.designation]
+        return factory(**constants)
+    factory = BEARING_TYPES[entry.type]
+    constants = dict(bore_mm=entry.bore_mm, outside_mm=entry.outside_mm, width_mm=entry.width_mm,
+                     rolling_constant=entry.rolling_constant, geometry_constant=entry.geometry_constant,
+                     drag_variable=entry.drag_variable or 0.0)
+    if entry.type == "deep_groove_ball":
+        return factory(sliding_constant=entry.sliding_constants[0], **constants)
+    return factory(sliding_constants=tuple(entry.sliding_constants), **constants)
+
+
+def mounted_bearing_power(mounted: MountedBearing, pinion_rpm: float, wheel_rpm: float, viscosity_mm2_s: float,
+                          normal_force: float) -> float:
+    """Power loss [W] of one mounted bearing at its shaft's speed, the oil's kinematic viscosity [mm²/s] at the
+    bearing and the radial load ``load_fraction``·F_bn [N] (SKF model, :mod:`~thermogear.gearbox.bearing_loss`)."""
+    speed = wheel_rpm if mounted.on_wheel_shaft else pinion_rpm
+    return mounted.bearing.moments(speed, viscosity_mm2_s, mounted.load_fraction * normal_force).power
+
+
+def _shaft_sides(section) -> dict[str, bool]:
+    """Drivetrain shaft name → True where it turns with the wheel, False with the pinion (joined by couplings);
+    shafts joined to neither are left out."""
+    sides = {section.pinion.shaft: False, section.wheel.shaft: True}
+    changed = True
+    while changed:
+        changed = False
+        for coupling in section.couplings:
+            for first, second in ((coupling.shaft_1, coupling.shaft_2), (coupling.shaft_2, coupling.shaft_1)):
+                if first in sides and second not in sides:
+                    sides[second] = sides[first]
+                    changed = True
+    return sides
+
+
+def drivetrain_bearing_loads(case: "Case") -> dict[str, float]:
+    """Radial force of each drivetrain bearing per newton of tooth normal load [N/N] in the static state (module
+    docstring): |(F_x, F_y)| of the bearing's force on the housing at W = 1 N."""
+    from thermogear.drivetrain.case_layout import drivetrain_from_section  # noqa: PLC0415
+    from thermogear.drivetrain.static_state import static_state  # noqa: PLC0415
+    from thermogear.stiffness.iso6336 import iso6336_mesh_stiffness, iso6336_single_stiffness  # noqa: PLC0415
+
+    pair, material = case.gear_pair, case.material
+    pinion, wheel = pair.pinion, pair.wheel
+    single = iso6336_single_stiffness(pinion.teeth, wheel.teeth, pinion.profile_shift, wheel.profile_shift,
+                                      material.youngs_modulus, material.youngs_modulus, pinion.dedendum_coefficient,
+                                      pinion.pressure_angle, warn=False)
+    stiffness = iso6336_mesh_stiffness(single, pair.contact_ratio) * pair.face_width
+    drivetrain = drivetrain_from_section(case.drivetrain, pair, material, stiffness)
+    forces = static_state(drivetrain.assemble(), 1.0).bearing_forces
+    return {name: float(np.hypot(force[0], force[1])) for name, force in forces.items()}
+
+
+def drivetrain_mounted_bearings(case: "Case") -> tuple[MountedBearing, ...]:
+    """The drivetrain bearings with loss data as bearings of the loss model (module docstring), by name; () for a
+    case without a ``[drivetrain]`` or without loss data on its bearings."""
+    section = case.drivetrain
+    if section is None or not any(bearing.loss is not None for bearing in section.bearings):
+        return ()
+    sides = _shaft_sides(section)
+    loads = drivetrain_bearing_loads(case)
+    mounted = []
+    for bearing in section.bearings:
+        if bearing.loss is None:
+            continue
+        if bearing.shaft not in sides:
+            raise CaseError(f"drivetrain.bearings '{bearing.name}'.loss", bearing.shaft,
+                            "a bearing on a shaft joined to the pinion's or the wheel's (by couplings)",
+                            "its loss needs its shaft's speed, which only the gears and couplings give")
+        load = loads[bearing.name]
+        if not math.isfinite(load):
+            raise CaseError(f"drivetrain.bearings '{bearing.name}'", load, "a finite static force",
+                            "the static state of the drivetrain gives the bearing's radial load")
+        mounted.append(MountedBearing(rolling_bearing(bearing.loss), sides[bearing.shaft], load, bearing.name))
+    return tuple(mounted)

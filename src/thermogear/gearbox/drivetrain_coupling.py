@@ -1,0 +1,128 @@
+"""One heated system: the gearbox thermal network sets the temperatures of the drivetrain it holds.
+
+With ``[gearbox]``, ``[drivetrain]`` and ``[temperature].model = "gearbox"``, the network's steady state at an
+operating point gives
+
+* each drivetrain shaft its temperature: the network's shafts-and-bearings node (one node for both shafts and their
+  bearings: the network does not tell the two shafts apart), which sets the shaft's E(T) and its free thermal growth
+  in the hot drivetrain (:mod:`thermogear.drivetrain.heat`) instead of the gears' mean tooth temperature, an upper
+  bound; a shaft with its own ``temperature_c`` keeps it (a shaft outside the housing);
+* each bearing its ring temperatures: the inner ring at the shaft's (the shafts node), the outer ring at the housing
+  seat's (the housing node), from which its operating clearance follows
+  (:mod:`thermogear.drivetrain.bearing_clearance`).
+
+The bearings' losses in that network come from the same bearings (:mod:`thermogear.gearbox.bearing_entries`: the
+drivetrain bearing's loss data, loaded by its static force), so the two halves describe one gearbox.
+
+:func:`operating_point_temperatures` is the per-operating-point function: the resolved parts of a case
+(:func:`coupled_parts_from_case`, built once) and a pinion speed [rpm] and torque [N·m] give that point's own steady
+temperatures (every command and every study point computes its own, never the case's point reused).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+from thermogear.case import cached_per_case
+from thermogear.drivetrain.bearing_clearance import estimated_outer_raceway_diameter
+from thermogear.drivetrain.heat_source import BearingRings, DrivetrainHeat
+from thermogear.errors import CaseError
+from thermogear.gearbox.bearing_entries import mounted_bearing_power, rolling_bearing
+from thermogear.gearbox.case_model import (gearbox_model_from_case, gearbox_operating_point, gearbox_section,
+                                           predicted_steady_state)
+from thermogear.gearbox.description import GearboxOperatingPoint
+from thermogear.gearbox.losses import NODES
+
+if TYPE_CHECKING:
+    from thermogear.case import Case
+    from thermogear.gearbox.model import GearboxSteadyState, GearboxThermalModel
+
+__all__ = ["CoupledThermalParts", "OperatingTemperatures", "coupled_parts_from_case", "network_drivetrain_heat",
+           "operating_point_temperatures"]
+
+_MM = 1e-3
+
+
+@dataclass(frozen=True, eq=False)
+class CoupledThermalParts:
+    """What a case resolves once for its coupled temperatures: the gearbox ``model`` (whose bearings are the
+    drivetrain's), the ``ambient_c`` [°C], the drivetrain's ``shafts`` (names) and ``raceways`` bearing name →
+    outer raceway diameter [m] (None: size unknown, clearance held)."""
+
+    model: "GearboxThermalModel"
+    ambient_c: float
+    shafts: tuple[str, ...]
+    raceways: dict[str, float | None]
+
+
+@dataclass(frozen=True, eq=False)
+class OperatingTemperatures:
+    """The steady temperatures of one operating point: the network's ``state`` (nodes, losses, energy balance), the
+    drivetrain's ``heat`` (shafts and bearing rings) and each drivetrain bearing's loss [W] by name."""
+
+    speed_rpm: float
+    torque: float
+    state: "GearboxSteadyState"
+    heat: DrivetrainHeat
+    bearing_losses: dict[str, float]
+
+
+def _raceway(section) -> float | None:
+    """Outer raceway diameter [m] of a drivetrain bearing from its loss data (given, else estimated from d, D)."""
+    loss = section.loss
+    if loss is None:
+        return None
+    if loss.outer_raceway_diameter_mm is not None:
+        return loss.outer_raceway_diameter_mm * _MM
+    bearing = rolling_bearing(loss)
+    return estimated_outer_raceway_diameter(bearing.bore_mm, bearing.outside_mm) * _MM
+
+
+@cached_per_case
+def coupled_parts_from_case(case: "Case") -> CoupledThermalParts:
+    """The :class:`CoupledThermalParts` of a case with ``[gearbox]`` and ``[drivetrain]`` (memoised per case).
+
+    Keeps the Case: a resolver (the gearbox model and the drivetrain's names, built once)."""
+    section = case.drivetrain
+    if section is None:
+        raise CaseError("drivetrain", None, "a [drivetrain] section", "the network's temperatures set a drivetrain")
+    return CoupledThermalParts(gearbox_model_from_case(case), gearbox_section(case.gearbox).ambient_c,
+                               tuple(shaft.name for shaft in section.shafts),
+                               {bearing.name: _raceway(bearing) for bearing in section.bearings})
+
+
+def operating_point_temperatures(parts: CoupledThermalParts, speed_rpm: float,
+                                 torque: float) -> OperatingTemperatures:
+    """The steady temperatures of the coupled system at a pinion speed [rpm] and torque [N·m] (module docstring):
+    the network solved at that point (once per model and point, :func:`~thermogear.gearbox.case_model.
+    predicted_steady_state`; raises NoSteadyStateError where it has none), the shafts at its shafts node, each
+    bearing's inner ring at the shafts node and outer ring at the housing node, and each drivetrain bearing's
+    loss."""
+    operating = GearboxOperatingPoint(float(speed_rpm), float(torque), parts.ambient_c)
+    state = predicted_steady_state(parts.model, operating)
+    shafts_c, housing_c = state.shafts_c, state.housing_c
+    description = parts.model.description
+    normal_force = parts.model.losses(operating).normal_force
+    viscosity = float(description.lubricant.kinematic_viscosity(shafts_c, warn=False)) * 1e6
+    wheel_rpm = operating.speed_rpm / description.gear_pair.gear_ratio
+    mounted = {item.name: item for item in description.bearings if item.name is not None}
+    bearing_losses = {name: mounted_bearing_power(item, operating.speed_rpm, wheel_rpm, viscosity, normal_force)
+                      for name, item in mounted.items()}
+    rings = {name: BearingRings(shafts_c, housing_c, raceway,
+                                None if name not in mounted else mounted[name].load_fraction * normal_force,
+                                bearing_losses.get(name)) for name, raceway in parts.raceways.items()}
+    source = (f"gearbox thermal network, shafts-and-bearings node (steady state at {operating.speed_rpm:g} rpm, "
+              f"{operating.torque:g} N·m)")
+    heat = DrivetrainHeat({name: shafts_c for name in parts.shafts}, rings, source,
+                          dict(zip(NODES, (float(value) for value in state.temperatures_c))))
+    return OperatingTemperatures(operating.speed_rpm, operating.torque, state, heat, bearing_losses)
+
+
+def network_drivetrain_heat(case: "Case") -> DrivetrainHeat:
+    """The drivetrain's temperatures at the case's own operating point (the ``"gearbox"`` provider of
+    :data:`thermogear.composition.DRIVETRAIN_HEAT`).
+
+    Keeps the Case: it is a drivetrain temperature provider (``provider(case) -> DrivetrainHeat``)."""
+    operating = gearbox_operating_point(case.operating_point, case.gearbox)
+    return operating_point_temperatures(coupled_parts_from_case(case), operating.speed_rpm, operating.torque).heat
