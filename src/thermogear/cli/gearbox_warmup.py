@@ -11,12 +11,15 @@ from thermogear.cli.app import console, print_json
 
 
 def run_gearbox_warmup(base, duration_s: float, start_c: float | None, interval_s: float, gear_model: str,
-                       speed_rpm: float | None, dynamics: bool, as_json: bool, plot: Path | None, save) -> None:
-    """Predict the warm-up and print it (``save(figure, path)`` writes the figure)."""
+                       speed_rpm: float | None, dynamics: bool, as_json: bool, plot: Path | None, save,
+                       torque: float | None = None, conditioning=None) -> None:
+    """Predict the warm-up and print it (``save(figure, path)`` writes the figure); ``conditioning``: an
+    :class:`~thermogear.gearbox.description.OilConditioning` of the rig (None: the case's)."""
     from thermogear.experiment.gearbox_warmup import gearbox_warmup  # noqa: PLC0415
 
     result = gearbox_warmup(base, duration_s=duration_s, start_c=start_c, interval_s=interval_s,
-                            gear_model=gear_model, dynamics=dynamics, speed_rpm=speed_rpm)
+                            gear_model=gear_model, dynamics=dynamics, speed_rpm=speed_rpm, torque=torque,
+                            conditioning=conditioning)
     payload = result.as_dict()
     if plot is not None:
         save(result.plot(), plot)
@@ -53,6 +56,11 @@ def run_gearbox_warmup(base, duration_s: float, start_c: float | None, interval_
                   f"(nominal {cold.nominal * 1e6:.1f} μm at assembly), margin to jamming "
                   f"{cold.margin_to_jamming * 1e6:.1f} μm{' — JAMMED' if cold.jammed else ''}")
     console.print(f"energy balance of the integration: {history.energy_residual:.1e} (relative)")
+    if history.conditioning_power is not None:
+        console.print(f"oil conditioning: {history.conditioning[0]:.1f} W at the start, {history.conditioning[-1]:.1f} W "
+                      "at the end (into the oil; negative: cooling)")
+    for flag, first in payload["flags_raised"].items():
+        console.print(f"flag {flag}: {first['meaning']}, from {first['first_time_s']:.0f} s", highlight=False)
     console.print(payload["assumption"])
     if plot is not None:
         console.print(f"figure written to {plot}")
