@@ -64,3 +64,44 @@ def run_gearbox_warmup(base, duration_s: float, start_c: float | None, interval_
     console.print(payload["assumption"])
     if plot is not None:
         console.print(f"figure written to {plot}")
+
+
+def run_gearbox_stages(base, stages: str, duration_s: float, start_c: float | None, speed_rpm: float | None,
+                       conditioning, as_json: bool) -> None:
+    """Run FZG load stages ``FIRST:LAST`` one after another on the case's gearbox network
+    (:func:`thermogear.gearbox.procedure.run_load_stages`) and print the end of each stage."""
+    from thermogear.errors import CaseError  # noqa: PLC0415
+    from thermogear.gearbox.case_model import gearbox_model_from_case, gearbox_operating_point  # noqa: PLC0415
+    from thermogear.gearbox.procedure import FZG_START_C, fzg_load_stages, run_load_stages  # noqa: PLC0415
+    from thermogear.temperature_limits import FLAG_MEANINGS  # noqa: PLC0415
+
+    first, _, last = stages.partition(":")
+    try:
+        chosen = fzg_load_stages(int(first), int(last or first))
+    except ValueError as error:
+        raise CaseError("--stages", stages, "FIRST:LAST load stage numbers, e.g. 5:12", "the FZG load stages") from error
+    operating = gearbox_operating_point(base.operating_point, base.gearbox, speed_rpm)
+    start = FZG_START_C if start_c is None else float(start_c)
+    results = run_load_stages(gearbox_model_from_case(base), operating.speed_rpm, chosen, operating.ambient_c,
+                              duration_s, start, conditioning)
+    if as_json:
+        print_json({"case": base.name, "speed_rpm": operating.speed_rpm, "duration_s": duration_s, "start_c": start,
+                    "ambient_c": operating.ambient_c,
+                    "stages": [{"stage": r.name, "torque_nm": r.torque, "pinion_c": r.pinion_c,
+                                "wheel_c": float(r.end_c[1]), "shafts_c": float(r.end_c[2]), "oil_c": r.oil_c,
+                                "housing_c": float(r.end_c[4]), "total_loss_w": r.total_loss,
+                                "conditioning_w": r.conditioning, "flags": list(r.flags),
+                                "energy_residual": r.energy_residual} for r in results]})
+        return
+    table = Table(title=f"load stages of {base.name} at {operating.speed_rpm:g} rpm: each {duration_s:g} s from "
+                        f"{start:g} °C (every node), ambient {operating.ambient_c:g} °C — temperatures at the end")
+    for name in ("stage", "T [N·m]", "pinion [°C]", "wheel [°C]", "oil [°C]", "housing [°C]", "losses [W]",
+                 "conditioning [W]", "flags"):
+        table.add_column(name, justify="right")
+    for r in results:
+        table.add_row(r.name, f"{r.torque:g}", f"{r.pinion_c:.1f}", f"{r.end_c[1]:.1f}", f"{r.oil_c:.1f}",
+                      f"{r.end_c[4]:.1f}", f"{r.total_loss:.1f}", f"{r.conditioning:.1f}", ", ".join(r.flags))
+    console.print(table)
+    for flag, meaning in FLAG_MEANINGS.items():
+        if any(flag in r.flags for r in results):
+            console.print(f"{flag}: {meaning}", highlight=False)

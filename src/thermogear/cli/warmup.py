@@ -43,6 +43,9 @@ def warmup(
                                                 "conditioning holds the sump at this temperature [°C] (with "
                                                 "--heater-w and/or --cooling-w)"),
     heater_w: float = typer.Option(0.0, "--heater-w", help="gearbox model: oil heater power [W]"),
+    stages: str | None = typer.Option(None, "--stages", help="gearbox model: FZG load stages FIRST:LAST (e.g. 5:12) "
+                                      "run one after another, each for --duration-s from every node at --start-c "
+                                      "(the FZG procedure: 900 s from 90 °C)"),
     cooling_w: float = typer.Option(0.0, "--cooling-w", help="gearbox model: oil cooler power [W]"),
     rig_comparison: bool = typer.Option(False, "--rig-comparison",
                                         help="instead: CASE beside the paper's Table 3 / Fig. 18 (relative shifts)"),
@@ -81,6 +84,11 @@ def warmup(
             elif heater_w or cooling_w:
                 raise CaseError("--oil-setpoint-c", None, "a temperature [°C] with --heater-w/--cooling-w",
                                 "the thermostat needs its set point")
+            if stages is not None:
+                from thermogear.cli.gearbox_warmup import run_gearbox_stages  # noqa: PLC0415
+
+                run_gearbox_stages(base, stages, duration_s, start_c, speed_rpm, conditioning, as_json)
+                return
             run_gearbox_warmup(base, duration_s, start_c, interval_s, gear_model, speed_rpm, dynamics, as_json,
                                plot, _save, torque_nm, conditioning)
             return

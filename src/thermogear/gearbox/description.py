@@ -65,7 +65,7 @@ class OilConditioning:
 
     def power(self, oil_c: float) -> float:
         """Heat into the oil [W] at the sump temperature ``oil_c`` [°C] (negative: cooling)."""
-        return float(min(max(self.gain * (self.setpoint_c - oil_c), -self.cooling), self.heater))
+        return float(min(max(self.gain * (self.setpoint_c - oil_c), -self.cooling), self.heater)) + 0.0  # no -0.0
 
 
 @dataclass(frozen=True)
