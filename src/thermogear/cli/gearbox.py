@@ -8,7 +8,6 @@ from pathlib import Path
 import typer
 from rich.table import Table
 
-from thermogear.case import load_case
 from thermogear.cli.app import app, console, error_console, print_json
 from thermogear.errors import CaseError
 
@@ -52,7 +51,9 @@ def _steady_table(case_name: str, speeds: str | None, torques: str | None, as_js
     from thermogear.schema.values import parse_values  # noqa: PLC0415
     import numpy as np  # noqa: PLC0415
 
-    loaded = load_case(case_name)
+    from thermogear.gearbox.case_model import load_gearbox_case  # noqa: PLC0415
+
+    loaded = load_gearbox_case(case_name)
     operating = gearbox_operating_point(loaded.operating_point, loaded.gearbox)
     speed_values = [operating.speed_rpm] if speeds is None else parse_values(speeds, "--speeds")
     torque_values = [operating.torque] if torques is None else parse_values(torques, "--torques")

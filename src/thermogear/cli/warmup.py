@@ -60,7 +60,12 @@ def warmup(
     if rig_comparison:  # the comparison loads the case itself, one case per Table 3 state
         _rig_comparison(case, gear_model, as_json, plot)
         return
-    base = load_case(case)
+    if model == "gearbox":  # the network is reported at any temperature it reaches (flags, not a refusal)
+        from thermogear.gearbox.case_model import load_gearbox_case  # noqa: PLC0415
+
+        base = load_gearbox_case(case)
+    else:
+        base = load_case(case)
     from thermogear.experiment.warmup import first_order_history, read_temperature_history, warmup as run_warmup
 
     if (temperature_history is None) == (model is None):

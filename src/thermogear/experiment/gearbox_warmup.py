@@ -25,7 +25,8 @@ from typing import Any, Callable
 
 from thermogear.errors import CaseError
 from thermogear.gearbox.backlash import ColdStart, cold_start_backlash
-from thermogear.gearbox.case_model import gearbox_model_from_case, gearbox_operating_point, gearbox_section
+from thermogear.gearbox.case_model import (PredictedTemperatureError, gearbox_model_from_case,
+                                          gearbox_operating_point, gearbox_section)
 from thermogear.gearbox.description import OilConditioning
 from thermogear.gearbox.model import COLDEST_START_C, GearboxThermalModel, WarmUpHistory
 from thermogear.schema.temperature import TemperatureSection
@@ -214,7 +215,10 @@ def gearbox_warmup(case, duration_s: float = 1200.0, start_c: float | None = Non
     if torque is not None:
         changes.update({"operating.torque_nm": operating.torque, "operating.fzg_load_stage": None,
                         "operating.power_kw": None})
-    base = case.with_changes(**changes) if changes else case
+    try:
+        base = case.with_changes(**changes) if changes else case
+    except PredictedTemperatureError as error:  # its own steady state is above the material data: the warm-up
+        base = error.unresolved_case            # sets every state's temperatures itself (state_case)
     orbit_start = None  # the previous state's orbit: where the next state's periodic solve starts
     for index in range(0, history.times.size, int(points_per_interval)):
         time, temperatures = float(history.times[index]), history.temperatures_c[:, index]

@@ -212,6 +212,32 @@ def describe_prediction(state: "GearboxSteadyState") -> str:
             + (f", oil jet {losses.injection:.1f}" if losses.injection else "") + " W)")
 
 
+class PredictedTemperatureError(CaseError):
+    """The gearbox network's stable steady state at the case's operating point lies above the material data: the
+    mesh cannot be evaluated there, so commands that evaluate it (``check``, ``run``, ``sweep``) refuse the case.
+    ``unresolved_case`` is the case before its temperatures were predicted (its gearbox network complete), which the
+    commands that report the network itself (``gearbox``, ``warmup --model gearbox``) go on with; ``state`` the
+    steady state, flags included."""
+
+    def __init__(self, unresolved_case: "Case", state: "GearboxSteadyState", *arguments) -> None:
+        super().__init__(*arguments)
+        self.unresolved_case = unresolved_case
+        self.state = state
+
+
+def load_gearbox_case(name_or_path) -> "Case":
+    """A case loaded for the commands that report the gearbox network itself (``gearbox``, ``warmup --model
+    gearbox``): as :func:`thermogear.case.load_case`, except that a ``temperature.model = "gearbox"`` case whose
+    predicted steady state lies above the material data is returned before that prediction (the network's result
+    is reported with its flags there, not refused)."""
+    from thermogear.case import load_case  # noqa: PLC0415
+
+    try:
+        return load_case(name_or_path)
+    except PredictedTemperatureError as error:
+        return error.unresolved_case
+
+
 def with_predicted_temperatures(case: "Case") -> "Case":
     """The case as every command sees it under ``temperature.model = "gearbox"``: the predicted oil temperature
     as ``lubricant.operating_temperature_c`` (viscosity, damping), the housing node's as ``housing.temperature_c``
@@ -231,7 +257,8 @@ def with_predicted_temperatures(case: "Case") -> "Case":
     state = predicted_steady_state(gearbox_model_from_case(case), operating)
     hottest = max(state.pinion_c, state.wheel_c, state.oil_c, state.housing_c)
     if hottest > MATERIAL_MAXIMUM_C:
-        raise CaseError("temperature.model", "gearbox", f"predicted temperatures <= {MATERIAL_MAXIMUM_C:g} °C",
+        raise PredictedTemperatureError(case, state, "temperature.model", "gearbox",
+                        f"predicted temperatures <= {MATERIAL_MAXIMUM_C:g} °C",
                         f"the gearbox network's stable steady state at {operating.speed_rpm:g} rpm, "
                         f"{operating.torque:g} N·m has pinion {state.pinion_c:.1f} °C, wheel {state.wheel_c:.1f} °C, "
                         f"oil {state.oil_c:.1f} °C, housing {state.housing_c:.1f} °C ({state.flag_text}): above the "

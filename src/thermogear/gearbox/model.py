@@ -4,8 +4,10 @@ Nodes: pinion, wheel, shafts with bearings, oil, housing; the ambient air is the
 (:mod:`~thermogear.gearbox.network`). Losses (:mod:`~thermogear.gearbox.losses`) follow the oil and shaft
 temperatures through the viscosity (tooth friction, bearings, churning); the housing's outer conductance follows
 the housing and air temperatures (natural convection, radiation). :meth:`GearboxThermalModel.steady_state` gives
-the predicted gear and oil temperatures of an operating point; :meth:`GearboxThermalModel.warm_up` the history of
-temperatures, losses and backlash from a cold start.
+the predicted gear and oil temperatures of an operating point — the stable steady state, with its plausibility
+flags (:mod:`thermogear.temperature_limits`), or :class:`ThermalRunawayError` where the stable branch followed in
+torque ends below the torque asked for; :meth:`GearboxThermalModel.warm_up` the history of temperatures, losses
+and backlash from a cold start (with a rig's oil conditioning where the description has one).
 """
 
 from __future__ import annotations

@@ -14,9 +14,10 @@ Summing (1) over the nodes, the internal exchanges cancel because G is symmetric
 which gives the checks: at steady state Σ P = Q_out, and over a transient ∫ΣP dt = Δ(Σ C T) + ∫Q_out dt.
 
 The steady state solves (1) with dT/dt = 0 by :func:`scipy.optimize.root` (Powell hybrid, finite-difference
-Jacobian, from the linear solution with G, g, P frozen at the initial temperatures). Where the sources grow with
-temperature faster than the cooling there is no steady state (thermal runaway): the solve then fails or ends
-above ``temperature_limit`` and :class:`NoSteadyStateError` says so. Transients integrate (1) with
+Jacobian, from the linear solution with G, g, P frozen at the initial temperatures); where it fails or ends above
+``temperature_limit`` :class:`NoSteadyStateError` says so. Whether a steady state is stable is decided by the
+eigenvalues of C⁻¹J (:func:`stability_eigenvalues`), and :func:`continue_steady_states` follows the stable branch
+in a parameter to where it ends (a fold: thermal runaway beyond it). Transients integrate (1) with
 :func:`scipy.optimize.solve_ivp` (Radau or BDF: the node time constants span decades) with two extra states, the
 integrals of ΣP and Q_out, for identity (2). Temperatures are in the caller's unit (the gearbox uses °C).
 """
