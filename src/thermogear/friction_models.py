@@ -5,7 +5,8 @@ Every law is a power law in the contact's state at the pitch point C, evaluated 
 **inside** the law only (w [N/mm], R_a [μm], η [mPa·s], v_Σ [m/s], ρ [mm]); arguments and results are SI:
 
 * ``"paper"`` — the law Luo & Li (2020) use for their friction damping (Eq. 27), the mean friction coefficient
-  of DIN 3990-4's integral-temperature method:
+  they attribute to DIN 3990-4 (the project's :mod:`thermogear.friction`; which of the standard's methods it
+  belongs to was not checked in the standard):
   μ = 0.12·(w_Bt·R_a/(η·v_ΣC·ρ_redC))^0.25·X_L (:mod:`thermogear.friction`; X_L of
   :data:`thermogear.lubricant.LUBRICANT_FACTORS`). Kept for the paper's damping and its reproduction.
 * ``"iso_tr_13989_1"`` — the mean coefficient of ISO/TR 13989-1:2000 (flash-temperature method for scuffing):
@@ -160,7 +161,7 @@ def validity_warnings(name: str, unit_load: float, sum_velocity: float, stacklev
 #: The friction laws by name (module docstring); the loss model's default is ``"schlenk"``
 #: (docs/gearbox-temperature.md, "Which friction law").
 FRICTION_MODELS: dict[str, FrictionLaw] = {
-    "paper": FrictionLaw("paper", "DIN 3990-4 integral-temperature mean coefficient as Luo & Li (2020) Eq. 27",
+    "paper": FrictionLaw("paper", "DIN 3990-4 mean coefficient as Luo & Li (2020) Eq. 27",
                          -0.25, True, _paper, _standard_factor),
     "iso_tr_13989_1": FrictionLaw("iso_tr_13989_1", "ISO/TR 13989-1:2000 mean coefficient (flash-temperature "
                                   "method), recalled", -0.05, True, _iso_tr_13989_1, _standard_factor),
