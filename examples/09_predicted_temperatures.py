@@ -27,16 +27,9 @@ from thermogear.gearbox.case_model import (gearbox_model_from_case, gearbox_oper
                                            predicted_steady_state)
 from thermogear.simulation import Simulation  # noqa: E402  (also registers the "gearbox" temperature model)
 
-# the [gearbox] section as it would stand in a TOML case file (every value an assumption: docs/gearbox-temperature.md)
-GEARBOX = {
-    "ambient_c": 20.0, "shaft_mass_kg": 4.0,
-    "housing": {"material": "cast_iron", "length_mm": 450.0, "width_mm": 300.0, "height_mm": 400.0,
-                "mass_kg": 40.0, "emissivity": 0.9, "air_speed_m_s": 1.0, "oil_wetted_area_m2": 0.10},
-    "oil": {"lubrication": "dip", "volume_l": 1.25},
-    "bearings": [{"shaft": "pinion", "designation": "NJ406", "count": 2},
-                 {"shaft": "wheel", "designation": "NJ406", "count": 2}],
-    "seals": [{"shaft": "pinion", "diameter_mm": 30.0}, {"shaft": "wheel", "diameter_mm": 30.0}],
-}
+# the [gearbox] section of the built-in FZG test gearbox (every housing value an assumption there:
+# src/thermogear/parameter_sets/fzg_test_gearbox.toml, docs/gearbox-temperature.md)
+GEARBOX = tomllib.loads(parameter_set_path("fzg_test_gearbox").read_text(encoding="utf-8"))["gearbox"]
 
 
 def gearbox_case():

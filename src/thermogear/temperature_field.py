@@ -27,8 +27,9 @@ from thermogear.text_files import is_existing_file, read_user_text
 
 #: Highest tooth temperature the material data cover [°C]. The case holds room-temperature E, ν and a constant
 #: expansion coefficient; case-carburised and through-hardened gear steels are tempered at about 150–200 °C, above
-#: which they soften and those constants no longer describe the gear.
-MATERIAL_MAXIMUM_C = 200.0
+#: which they soften and those constants no longer describe the gear. The one definition is
+#: :data:`thermogear.temperature_limits.MATERIAL_MAXIMUM_C`.
+from thermogear.temperature_limits import MATERIAL_MAXIMUM_C  # noqa: E402
 
 #: Lowest tooth temperature the thermo-elastic model evaluates [°C]: the coldest start the housing range allows
 #: (schema.housing.HOUSING_TEMPERATURE_RANGE_C). Below the assembly temperature the gears contract uniformly by

@@ -21,9 +21,11 @@ from thermogear.gearbox.sweep import steady_sweep
 from thermogear.ownership import MARKER
 
 CASE = Path(__file__).parents[1] / "data" / "gearbox" / "fzg_gearbox.toml"
-SPEEDS, TORQUES = (400.0, 1400.0, 4000.0), (50.0, 300.0)
-# 4000 rpm, 300 N·m (126 kW through a 1.25 L gearbox cooled by natural convection) has no steady state
+SPEEDS, TORQUES = (400.0, 1400.0, 4000.0), (50.0, 1000.0)
+# 4000 rpm, 1000 N·m (419 kW through a 1.25 L gearbox) has no stable steady state (its stable branch ends near
+# 600 N·m); 1400 rpm, 1000 N·m has one, far above the material data: a result, flagged, not valid
 RUNAWAY = (2, 1)
+HOT = (1, 1)
 pytestmark = pytest.mark.filterwarnings("ignore::UserWarning")
 
 
@@ -80,9 +82,11 @@ def test_a_runaway_point_is_flagged_and_never_a_number(store, serial):
     assert serial.runaway[RUNAWAY] and serial.runaway.sum() == 1
     with xr.open_zarr(store) as data:
         np.testing.assert_array_equal(data["runaway"].values, serial.runaway.astype(np.int8))
-        np.testing.assert_array_equal(data["valid"].values, 1 - serial.runaway.astype(np.int8))
+        np.testing.assert_array_equal(data["valid"].values, serial.valid.astype(np.int8))
+        assert data["valid"].values[HOT] == 0 and data["flag_above_material_data"].values[HOT] == 1
+        assert np.isfinite(data["temperature_pinion"].values[HOT]) and data["runaway"].values[HOT] == 0
         assert np.isnan(data["temperature_pinion"].values[RUNAWAY]) and np.isnan(data["efficiency"].values[RUNAWAY])
-        valid = data["valid"].values == 1
+        valid = data["runaway"].values == 0
         for name in ("temperature_oil", "mesh_loss", "efficiency", "backlash"):
             assert np.all(np.isfinite(data[name].values[valid])), name
 

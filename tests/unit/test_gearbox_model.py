@@ -54,14 +54,17 @@ def test_losses_reported_per_source_and_efficiency(model):
 
 
 def test_losses_follow_the_oil_temperature(model):
-    # thinner oil: less churning and bearing drag, more tooth friction (DIN 3990-4 μ ∝ η^-0.25)
+    # thinner oil: less churning and bearing drag, more tooth friction (the friction law's μ ∝ η^e, e < 0)
     losses = model.losses(LOAD_STAGE_6)
     cold, warm = losses.at(np.full(5, 40.0)), losses.at(np.full(5, 90.0))
     assert warm.churning < cold.churning
     assert warm.friction_coefficient > cold.friction_coefficient
     viscosity_ratio = (model.description.lubricant.dynamic_viscosity(90.0, warn=False)
                        / model.description.lubricant.dynamic_viscosity(40.0, warn=False))
-    assert warm.friction_coefficient / cold.friction_coefficient == pytest.approx(viscosity_ratio**-0.25, rel=1e-12)
+    exponent = model.description.friction.viscosity_exponent
+    assert exponent == -0.05  # Schlenk's law, the loss model's default
+    assert warm.friction_coefficient / cold.friction_coefficient == pytest.approx(viscosity_ratio**exponent,
+                                                                                  rel=1e-12)
 
 
 def test_warm_up_ends_at_the_steady_state(model):

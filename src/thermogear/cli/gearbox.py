@@ -8,7 +8,6 @@ from pathlib import Path
 import typer
 from rich.table import Table
 
-from thermogear.case import load_case
 from thermogear.cli.app import app, console, error_console, print_json
 from thermogear.errors import CaseError
 
@@ -50,8 +49,11 @@ def _steady_table(case_name: str, speeds: str | None, torques: str | None, as_js
     from thermogear.gearbox.case_model import gearbox_model_from_case, gearbox_operating_point  # noqa: PLC0415
     from thermogear.gearbox.sweep import steady_sweep  # noqa: PLC0415
     from thermogear.schema.values import parse_values  # noqa: PLC0415
+    import numpy as np  # noqa: PLC0415
 
-    loaded = load_case(case_name)
+    from thermogear.gearbox.case_model import load_gearbox_case  # noqa: PLC0415
+
+    loaded = load_gearbox_case(case_name)
     operating = gearbox_operating_point(loaded.operating_point, loaded.gearbox)
     speed_values = [operating.speed_rpm] if speeds is None else parse_values(speeds, "--speeds")
     torque_values = [operating.torque] if torques is None else parse_values(torques, "--torques")
@@ -69,7 +71,9 @@ def _steady_table(case_name: str, speeds: str | None, torques: str | None, as_js
     for i, speed in enumerate(result.speeds_rpm):
         for j, torque in enumerate(result.torques):
             if result.runaway[i, j]:
-                table.add_row(f"{speed:g}", f"{torque:g}", *(["—"] * 9), "no steady state (runaway)")
+                fold = None if result.fold_torque is None else result.fold_torque[i, j]
+                where = "" if fold is None or fold is np.ma.masked else f" above {float(fold):.4g} N·m"
+                table.add_row(f"{speed:g}", f"{torque:g}", *(["—"] * 9), f"no stable steady state{where} (runaway)")
                 continue
             table.add_row(f"{speed:g}", f"{torque:g}",
                           *(f"{result.node(name)[i, j]:.1f}" for name in ("pinion", "wheel", "oil", "housing")),
@@ -77,4 +81,12 @@ def _steady_table(case_name: str, speeds: str | None, torques: str | None, as_js
                           f"{result.seal_loss[i, j]:.1f}", f"{no_load[i, j]:.1f}",
                           f"{result.efficiency[i, j] * 100:.2f}", f"{result.backlash[i, j] * 1e6:.1f}")
     console.print(table)
+    from thermogear.temperature_limits import FLAG_MEANINGS  # noqa: PLC0415
+
+    for flag, meaning in FLAG_MEANINGS.items():
+        marked = result.flagged(flag)
+        if marked.any():
+            points = ", ".join(f"{result.speeds_rpm[i]:g} rpm/{result.torques[j]:g} N·m"
+                               for i, j in zip(*np.nonzero(marked)))
+            console.print(f"flag {flag}: {meaning} at {points}", highlight=False)
     return loaded, result

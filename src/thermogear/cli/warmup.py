@@ -37,6 +37,16 @@ def warmup(
     speed_rpm: float | None = typer.Option(None, "--speed-rpm", help="pinion speed [rpm] (default: the case's, "
                                            "or RPM of luo2019:RPM)"),
     dynamics: bool = typer.Option(True, "--dynamics/--no-dynamics", help="solve the steady response per state"),
+    torque_nm: float | None = typer.Option(None, "--torque-nm", help="gearbox model: pinion torque [N·m] "
+                                           "(default: the case's)"),
+    oil_setpoint_c: float | None = typer.Option(None, "--oil-setpoint-c", help="gearbox model: the rig's oil "
+                                                "conditioning holds the sump at this temperature [°C] (with "
+                                                "--heater-w and/or --cooling-w)"),
+    heater_w: float = typer.Option(0.0, "--heater-w", help="gearbox model: oil heater power [W]"),
+    stages: str | None = typer.Option(None, "--stages", help="gearbox model: FZG load stages FIRST:LAST (e.g. 5:12) "
+                                      "run one after another, each for --duration-s from every node at --start-c "
+                                      "(the FZG procedure: 900 s from 90 °C)"),
+    cooling_w: float = typer.Option(0.0, "--cooling-w", help="gearbox model: oil cooler power [W]"),
     rig_comparison: bool = typer.Option(False, "--rig-comparison",
                                         help="instead: CASE beside the paper's Table 3 / Fig. 18 (relative shifts)"),
     as_json: bool = typer.Option(False, "--json", help="one JSON object on stdout"),
@@ -50,7 +60,12 @@ def warmup(
     if rig_comparison:  # the comparison loads the case itself, one case per Table 3 state
         _rig_comparison(case, gear_model, as_json, plot)
         return
-    base = load_case(case)
+    if model == "gearbox":  # the network is reported at any temperature it reaches (flags, not a refusal)
+        from thermogear.gearbox.case_model import load_gearbox_case  # noqa: PLC0415
+
+        base = load_gearbox_case(case)
+    else:
+        base = load_case(case)
     from thermogear.experiment.warmup import first_order_history, read_temperature_history, warmup as run_warmup
 
     if (temperature_history is None) == (model is None):
@@ -63,8 +78,24 @@ def warmup(
         if model == "gearbox":
             from thermogear.cli.gearbox_warmup import run_gearbox_warmup  # noqa: PLC0415
 
+            conditioning = None
+            if oil_setpoint_c is not None:
+                from thermogear.gearbox.description import OilConditioning  # noqa: PLC0415
+
+                if heater_w == 0.0 and cooling_w == 0.0:
+                    raise CaseError("--heater-w/--cooling-w", 0.0, "> 0 with --oil-setpoint-c",
+                                    "a conditioning without heater or cooler has no effect")
+                conditioning = OilConditioning(oil_setpoint_c, heater_w, cooling_w)
+            elif heater_w or cooling_w:
+                raise CaseError("--oil-setpoint-c", None, "a temperature [°C] with --heater-w/--cooling-w",
+                                "the thermostat needs its set point")
+            if stages is not None:
+                from thermogear.cli.gearbox_warmup import run_gearbox_stages  # noqa: PLC0415
+
+                run_gearbox_stages(base, stages, duration_s, start_c, speed_rpm, conditioning, as_json)
+                return
             run_gearbox_warmup(base, duration_s, start_c, interval_s, gear_model, speed_rpm, dynamics, as_json,
-                               plot, _save)
+                               plot, _save, torque_nm, conditioning)
             return
         history = first_order_history(20.0 if start_c is None else start_c, final_c, time_constant_s, duration_s,
                                       states)

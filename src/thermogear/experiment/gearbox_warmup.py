@@ -25,9 +25,12 @@ from typing import Any, Callable
 
 from thermogear.errors import CaseError
 from thermogear.gearbox.backlash import ColdStart, cold_start_backlash
-from thermogear.gearbox.case_model import gearbox_model_from_case, gearbox_operating_point, gearbox_section
-from thermogear.gearbox.model import COLDEST_START_C, WarmUpHistory
+from thermogear.gearbox.case_model import (PredictedTemperatureError, gearbox_model_from_case,
+                                          gearbox_operating_point, gearbox_section)
+from thermogear.gearbox.description import OilConditioning
+from thermogear.gearbox.model import COLDEST_START_C, GearboxThermalModel, WarmUpHistory
 from thermogear.schema.temperature import TemperatureSection
+from thermogear.temperature_limits import FLAG_MEANINGS, MATERIAL_MAXIMUM_C
 from thermogear.thermal_model_rules import thermal_model_rules
 
 #: Longest warm-up accepted [s] (a day: the network's slowest time constants are hours at most).
@@ -64,6 +67,16 @@ class GearboxWarmupResult:
     history: WarmUpHistory
     states: tuple[MeshState, ...]
     cold_start: ColdStart
+    flags: tuple[tuple[str, ...], ...] = ()  # plausibility flags at every output time (temperature_limits)
+
+    @property
+    def flags_raised(self) -> dict[str, float]:
+        """Each flag raised during the warm-up and the first time it was [s]."""
+        first: dict[str, float] = {}
+        for time, flags in zip(self.history.times, self.flags):
+            for flag in flags:
+                first.setdefault(flag, float(time))
+        return first
 
     @property
     def smallest_backlash(self) -> tuple[float, float]:
@@ -83,6 +96,8 @@ class GearboxWarmupResult:
                           "temperatures, oil and housing at theirs)",
             "energy_residual": history.energy_residual,
             "smallest_backlash_um": smallest * 1e6, "smallest_backlash_time_s": at,
+            "flags_raised": {flag: {"first_time_s": time, "meaning": FLAG_MEANINGS[flag]}
+                             for flag, time in self.flags_raised.items()},
             "cold_start": {"soak_c": self.cold_start.soak_c, "backlash_um": self.cold_start.backlash * 1e6,
                            "nominal_um": self.cold_start.nominal * 1e6,
                            "margin_to_jamming_um": self.cold_start.margin_to_jamming * 1e6,
@@ -93,6 +108,8 @@ class GearboxWarmupResult:
                         "mesh_loss_w": history.mesh_loss.tolist(), "bearing_loss_w": history.bearing_loss.tolist(),
                         "seal_loss_w": history.seal_loss.tolist(), "churning_loss_w": history.churning_loss.tolist(),
                         "injection_loss_w": history.jet_loss.tolist(),
+                        "conditioning_w": history.conditioning.tolist(),
+                        "flags": [list(flags) for flags in self.flags],
                         "backlash_um": (history.backlash * 1e6).tolist()},
             "states": [{"time_s": state.time_s, "mesh_stiffness_mean_n_per_m": state.mesh_stiffness_mean,
                         "natural_frequency_hz": state.natural_frequency_hz,
@@ -159,12 +176,15 @@ def _periodic_kv(sim, previous: tuple[float, float] | None) -> tuple[float, tupl
 def gearbox_warmup(case, duration_s: float = 1200.0, start_c: float | None = None, interval_s: float = 10.0,
                    gear_model: str = "thermal", dynamics: bool = True, speed_rpm: float | None = None,
                    points_per_interval: int = 1, simulation: Callable | None = None,
-                   warm_start: bool = True) -> GearboxWarmupResult:
+                   warm_start: bool = True, torque: float | None = None,
+                   conditioning: OilConditioning | None = None) -> GearboxWarmupResult:
     """Predict a warm-up (module docstring). ``start_c``: every node's start temperature [°C] (default the
     ambient, down to −40 °C); ``interval_s``: time between mesh re-evaluations [s]; ``points_per_interval``:
     network output times per interval (losses and backlash are reported at each); ``warm_start``: each state's
     periodic solve starts from the previous state's orbit (:func:`_periodic_kv`), else every state is solved
-    afresh with ``Simulation.run`` (its checks and the coexistence search included: the reference)."""
+    afresh with ``Simulation.run`` (its checks and the coexistence search included: the reference); ``torque``:
+    the pinion torque [N·m] (default the case's); ``conditioning``: a rig's oil conditioning (heater, cooler,
+    thermostat) instead of the case's ``[gearbox.conditioning]``."""
     if simulation is None:
         from thermogear.simulation import Simulation as simulation  # noqa: PLC0415
     if not (math.isfinite(duration_s) and 0.0 < duration_s <= LONGEST_WARM_UP_S):
@@ -176,7 +196,7 @@ def gearbox_warmup(case, duration_s: float = 1200.0, start_c: float | None = Non
     if count + 1 > MOST_STATES or abs(count * interval_s - duration_s) > 1e-9 * duration_s:
         raise CaseError("--interval-s", interval_s, f"a divisor of the duration giving at most {MOST_STATES} states",
                         "the mesh is re-evaluated at evenly spaced times that end at the duration")
-    operating = gearbox_operating_point(case.operating_point, case.gearbox, speed_rpm)
+    operating = gearbox_operating_point(case.operating_point, case.gearbox, speed_rpm, torque)
     start = operating.ambient_c if start_c is None else float(start_c)
     if not (math.isfinite(start) and COLDEST_START_C <= start <= 150.0):
         # the start is the ambient unless --start-c gives it: name the input the user actually set (issue 36)
@@ -184,6 +204,8 @@ def gearbox_warmup(case, duration_s: float = 1200.0, start_c: float | None = Non
                      ("gearbox.ambient_c", "the ambient is every node's start temperature unless --start-c gives one"))
         raise CaseError(key, start, f"[{COLDEST_START_C:g}, 150] °C", what)
     model = gearbox_model_from_case(case)
+    if conditioning is not None:
+        model = GearboxThermalModel(replace(model.description, conditioning=conditioning))
     history = model.warm_up(operating, duration_s, points=count * int(points_per_interval) + 1, initial_c=start)
     description = model.description
     cold = cold_start_backlash(description.gear_pair, model.allowance, description.gear_expansion,
@@ -192,10 +214,21 @@ def gearbox_warmup(case, duration_s: float = 1200.0, start_c: float | None = Non
     limits = thermal_model_rules(case.thermal.model).temperature_limits
     reference = case.temperature.reference_c
     floor = reference if limits.lowest_c is None else limits.lowest_c
-    base = case.with_changes(**{"operating.speed_rpm": operating.speed_rpm}) if speed_rpm is not None else case
+    changes = {} if speed_rpm is None else {"operating.speed_rpm": operating.speed_rpm}
+    if torque is not None:
+        changes.update({"operating.torque_nm": operating.torque, "operating.fzg_load_stage": None,
+                        "operating.power_kw": None})
+    try:
+        base = case.with_changes(**changes) if changes else case
+    except PredictedTemperatureError as error:  # its own steady state is above the material data: the warm-up
+        base = error.unresolved_case            # sets every state's temperatures itself (state_case)
     orbit_start = None  # the previous state's orbit: where the next state's periodic solve starts
     for index in range(0, history.times.size, int(points_per_interval)):
         time, temperatures = float(history.times[index]), history.temperatures_c[:, index]
+        if max(temperatures[0], temperatures[1], temperatures[3], temperatures[4]) > MATERIAL_MAXIMUM_C:
+            states.append(MeshState(time, None, None, None, None, f"above the {MATERIAL_MAXIMUM_C:g} °C the material "
+                                                                 "data cover: mesh not evaluated"))
+            continue
         if min(temperatures[0], temperatures[1]) < floor:
             below = (f"the stress-free reference {reference:g} °C" if limits.lowest_c is None else f"{floor:g} °C")
             states.append(MeshState(time, None, None, None, None, f"gears below {below}, the coldest "
@@ -209,6 +242,7 @@ def gearbox_warmup(case, duration_s: float = 1200.0, start_c: float | None = Non
             kv = float(sim.run(method="periodic").metrics["kv"])
         states.append(MeshState(time, float(sim.mesh_stiffness_mean), float(sim.natural_frequency_hz),
                                 float(sim.mesh_frequency_hz), kv))
+    flags = tuple(model.flags(history.temperatures_c[:, index]) for index in range(history.times.size))
     return GearboxWarmupResult(case.name, gear_model, operating.speed_rpm, operating.torque, operating.ambient_c,
-                               start, float(interval_s), history, tuple(states), cold)
+                               start, float(interval_s), history, tuple(states), cold, flags)
 

@@ -64,9 +64,12 @@ class RigPrediction:
 
 def rig_gearbox_description():
     """The gearbox description of the assumptions (module docstring)."""
+    from thermogear.friction_models import FRICTION_MODELS  # noqa: PLC0415
     from thermogear.gearbox.fzg_example import illustrative_fzg_gearbox  # noqa: PLC0415
 
-    return illustrative_fzg_gearbox()
+    # the paper's friction law (Luo & Li Eq. 27) for its tooth loss too: the reproduction of the paper keeps one
+    # friction law throughout and its numbers unchanged (the loss model's default is Schlenk's)
+    return illustrative_fzg_gearbox(friction=FRICTION_MODELS["paper"])
 
 
 def predict_table3(chained: bool = False) -> list[RigPrediction]:

@@ -26,8 +26,11 @@ from thermogear.case import cached_per_case
 from thermogear.errors import CaseError
 from thermogear.gearbox.bearing_entries import drivetrain_mounted_bearings, rolling_bearing
 from thermogear.gearbox.injection import OilJet
+from thermogear.friction_models import friction_law
 from thermogear.gearbox.description import (GearboxDescription, GearboxOperatingPoint, Housing, LipSeal,
-                                            MountedBearing)
+                                            MountedBearing, OilConditioning)
+from thermogear.gearbox.input_checks import check_gearbox_inputs, housing_box, oil_floor_and_level
+from thermogear.temperature_limits import MATERIAL_MAXIMUM_C
 from thermogear.thermoelastic.materials import HOUSING_EXPANSION_PER_K
 
 if TYPE_CHECKING:
@@ -69,20 +72,16 @@ def housing_expansion(housing: "HousingSection", gearbox: "GearboxSection | None
 
 
 def _housing(section: "GearboxSection", expansion: float) -> Housing:
-    """The housing of a ``[gearbox]`` section (module docstring) with its linear expansion ``expansion`` [1/K]."""
+    """The housing of a ``[gearbox]`` section (module docstring) with its linear expansion ``expansion`` [1/K]; the
+    default wetted area is the inner floor plus the walls up to the oil level
+    (:func:`~thermogear.gearbox.input_checks.oil_floor_and_level`; the floor of the footprint's proportions)."""
     housing = section.housing
-    if housing.outer_area_m2 is not None:
-        side = math.sqrt(housing.outer_area_m2 / (6.0 if housing.bottom_cooled else 5.0))
-        length = width = height = side
-    else:
-        length, width, height = housing.length_mm * 1e-3, housing.width_mm * 1e-3, housing.height_mm * 1e-3
+    length, width, height = housing_box(section)
     wetted = housing.oil_wetted_area_m2
     if wetted is None:
-        level = section.oil.volume_l * 1e-3 / (length * width)
-        if level >= height:
-            raise CaseError("gearbox.oil.volume_l", section.oil.volume_l,
-                            f"< {length * width * height * 1e3:.4g} L", "the oil would fill the housing")
-        wetted = length * width + 2.0 * (length + width) * level
+        floor, level = oil_floor_and_level(section)
+        scale = math.sqrt(floor / (length * width))
+        wetted = floor + 2.0 * (length + width) * scale * level
     specific_heat = housing.specific_heat_j_per_kg_k or HOUSING_SPECIFIC_HEAT[housing.material]
     return Housing(length=length, width=width, height=height, mass=housing.mass_kg, specific_heat=specific_heat,
                    emissivity=housing.emissivity, expansion=expansion, air_speed=housing.air_speed_m_s,
@@ -106,6 +105,7 @@ def gearbox_description_from_case(case: "Case") -> GearboxDescription:
 
     section = gearbox_section(case.gearbox)
     pair, material = case.gear_pair, case.material
+    check_gearbox_inputs(section, pair, case.temperature)
 
     def disc_mass(gear) -> float:
         return material.density * math.pi * (gear.tip_radius**2 - gear.bore_radius**2) * gear.face_width
@@ -123,6 +123,11 @@ def gearbox_description_from_case(case: "Case") -> GearboxDescription:
             raise CaseError(f"gearbox.oil.{key}", round(depth * 1e3, 6), f"<= the tip diameter "
                             f"{2e3 * gear.tip_radius:.4g} mm", "a gear cannot dip deeper than it is tall")
     backlash_um = None if case.gears_input is None else case.gears_input.backlash_normal_um
+    law = friction_law(section.friction_model)
+    law.lubricant_factor(oil.base_oil, section.lubricant_factor)  # refuses a base oil the law has no X_L for
+    conditioning = None if section.conditioning is None else OilConditioning(
+        section.conditioning.setpoint_c, section.conditioning.heater_w, section.conditioning.cooling_w,
+        section.conditioning.gain_w_per_k)
     return GearboxDescription(
         gear_pair=pair, lubricant=oil, housing=_housing(section, housing_expansion(case.housing, section)),
         oil_volume=section.oil.volume_l * 1e-3,
@@ -130,7 +135,8 @@ def gearbox_description_from_case(case: "Case") -> GearboxDescription:
         wheel_immersion=wheel_immersion, pinion_immersion=section.oil.pinion_immersion_mm * 1e-3,
         bearings=_bearings(section) + drivetrain_mounted_bearings(case),
         seals=tuple(LipSeal(seal.diameter_mm, seal.shaft == "wheel") for seal in section.seals),
-        roughness=case.roughness_ra, lubricant_factor=oil.lubricant_factor,
+        roughness=case.roughness_ra, lubricant_factor=section.lubricant_factor, friction=law,
+        friction_constant=section.friction_coefficient, conditioning=conditioning,
         pinion_heat_share=section.pinion_heat_share, steel_specific_heat=material.specific_heat,
         oil_specific_heat=section.oil.specific_heat_j_per_kg_k, gear_expansion=material.thermal_expansion,
         gear_oil_coefficient=section.internal.gear_oil_w_per_m2_k,
@@ -191,6 +197,32 @@ def describe_prediction(state: "GearboxSteadyState") -> str:
             + (f", oil jet {losses.injection:.1f}" if losses.injection else "") + " W)")
 
 
+class PredictedTemperatureError(CaseError):
+    """The gearbox network's stable steady state at the case's operating point lies above the material data: the
+    mesh cannot be evaluated there, so commands that evaluate it (``check``, ``run``, ``sweep``) refuse the case.
+    ``unresolved_case`` is the case before its temperatures were predicted (its gearbox network complete), which the
+    commands that report the network itself (``gearbox``, ``warmup --model gearbox``) go on with; ``state`` the
+    steady state, flags included."""
+
+    def __init__(self, unresolved_case: "Case", state: "GearboxSteadyState", *arguments) -> None:
+        super().__init__(*arguments)
+        self.unresolved_case = unresolved_case
+        self.state = state
+
+
+def load_gearbox_case(name_or_path) -> "Case":
+    """A case loaded for the commands that report the gearbox network itself (``gearbox``, ``warmup --model
+    gearbox``): as :func:`thermogear.case.load_case`, except that a ``temperature.model = "gearbox"`` case whose
+    predicted steady state lies above the material data is returned before that prediction (the network's result
+    is reported with its flags there, not refused)."""
+    from thermogear.case import load_case  # noqa: PLC0415
+
+    try:
+        return load_case(name_or_path)
+    except PredictedTemperatureError as error:
+        return error.unresolved_case
+
+
 def with_predicted_temperatures(case: "Case") -> "Case":
     """The case as every command sees it under ``temperature.model = "gearbox"``: the predicted oil temperature
     as ``lubricant.operating_temperature_c`` (viscosity, damping), the housing node's as ``housing.temperature_c``
@@ -206,8 +238,17 @@ def with_predicted_temperatures(case: "Case") -> "Case":
     if "operating_temperature_c" in case.lubricant.model_fields_set:
         raise CaseError("lubricant.operating_temperature_c", case.lubricant.operating_temperature_c,
                         "absent with temperature.model = 'gearbox'", "the gearbox model predicts the oil temperature")
-    state = predicted_steady_state(gearbox_model_from_case(case),
-                                   gearbox_operating_point(case.operating_point, case.gearbox))
+    operating = gearbox_operating_point(case.operating_point, case.gearbox)
+    state = predicted_steady_state(gearbox_model_from_case(case), operating)
+    hottest = max(state.pinion_c, state.wheel_c, state.oil_c, state.housing_c)
+    if hottest > MATERIAL_MAXIMUM_C:
+        raise PredictedTemperatureError(case, state, "temperature.model", "gearbox",
+                        f"predicted temperatures <= {MATERIAL_MAXIMUM_C:g} °C",
+                        f"the gearbox network's stable steady state at {operating.speed_rpm:g} rpm, "
+                        f"{operating.torque:g} N·m has pinion {state.pinion_c:.1f} °C, wheel {state.wheel_c:.1f} °C, "
+                        f"oil {state.oil_c:.1f} °C, housing {state.housing_c:.1f} °C ({state.flag_text}): above the "
+                        f"{MATERIAL_MAXIMUM_C:g} °C the material data cover, so the mesh cannot be evaluated there "
+                        "(`thermogear gearbox CASE` reports the steady state itself)")
     housing_update = {"temperature_c": round(state.housing_c, 6)}
     if "material" not in case.housing.model_fields_set:
         housing_update["material"] = gearbox_section(case.gearbox).housing.material

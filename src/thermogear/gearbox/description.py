@@ -14,6 +14,7 @@ import math
 from dataclasses import dataclass, field
 
 from thermogear.errors import CaseError
+from thermogear.friction_models import DEFAULT_LOSS_FRICTION_MODEL, FRICTION_MODELS, FrictionLaw
 from thermogear.gearbox.bearing_loss import RollingBearing
 from thermogear.gearbox.injection import OilJet
 from thermogear.geometry import GearPair
@@ -45,6 +46,29 @@ class LipSeal:
 
     shaft_diameter_mm: float
     on_wheel_shaft: bool
+
+
+@dataclass(frozen=True)
+class OilConditioning:
+    """A test rig's oil conditioning: a heater of up to ``heater`` [W] and a cooler of up to ``cooling`` [W] driven
+    by a proportional thermostat of ``gain`` [W/K] on the sump temperature, holding it near ``setpoint_c`` [°C]:
+    P = clip(gain·(set − T_oil), −cooling, heater) into the oil node [W]."""
+
+    setpoint_c: float
+    heater: float = 0.0
+    cooling: float = 0.0
+    gain: float = 200.0
+
+    def __post_init__(self) -> None:
+        _check_positive("conditioning.heater_w", self.heater, allow_zero=True)
+        _check_positive("conditioning.cooling_w", self.cooling, allow_zero=True)
+        _check_positive("conditioning.gain_w_per_k", self.gain)
+        if not (math.isfinite(self.setpoint_c) and -40.0 <= self.setpoint_c <= 200.0):
+            raise CaseError("conditioning.setpoint_c", self.setpoint_c, "[-40, 200] °C", "an oil temperature")
+
+    def power(self, oil_c: float) -> float:
+        """Heat into the oil [W] at the sump temperature ``oil_c`` [°C] (negative: cooling)."""
+        return float(min(max(self.gain * (self.setpoint_c - oil_c), -self.cooling), self.heater)) + 0.0  # no -0.0
 
 
 @dataclass(frozen=True)
@@ -82,6 +106,10 @@ class GearboxDescription:
     Ohlendorf's H_V of the pair; give the mesh model's H_VL to use its load sharing), the cold normal backlash
     [m] (None: the AGMA 2002 minimum) and the assembly temperature [°C] at which it holds; ``oil_jet``: the
     into-mesh jet of injection lubrication (its impulse loss; the gears then usually dip nowhere: immersions 0).
+    ``friction``: the mean friction law of the tooth loss (:data:`thermogear.friction_models.FRICTION_MODELS`,
+    default Schlenk's), ``friction_constant`` its value for the ``"constant"`` law; ``lubricant_factor`` X_L of
+    that law (None: the law's value for the oil's base oil). ``conditioning``: a test rig's thermostat-driven
+    heater and cooler on the oil (:class:`OilConditioning`).
     """
 
     gear_pair: GearPair
@@ -96,7 +124,7 @@ class GearboxDescription:
     bearings: tuple[MountedBearing, ...] = ()
     seals: tuple[LipSeal, ...] = ()
     roughness: float = 0.5e-6
-    lubricant_factor: float = 1.0
+    lubricant_factor: float | None = None
     pinion_heat_share: float = 0.5
     loss_factor: float | None = None
     steel_specific_heat: float = 465.0  # [J/(kg·K)]
@@ -110,12 +138,19 @@ class GearboxDescription:
     backlash: float | None = None
     assembly_c: float = 20.0
     oil_jet: OilJet | None = None  # injection lubrication: an into-mesh jet (None: dip lubrication only)
+    friction: FrictionLaw = FRICTION_MODELS[DEFAULT_LOSS_FRICTION_MODEL]
+    friction_constant: float | None = None
+    conditioning: OilConditioning | None = None  # a rig's heater/cooler on the oil (None: none)
     notes: tuple[str, ...] = field(default=(), compare=False)
 
     def __post_init__(self) -> None:
         for key in ("oil_volume", "pinion_mass", "wheel_mass", "shaft_mass", "steel_specific_heat",
-                    "oil_specific_heat", "lubricant_factor"):
+                    "oil_specific_heat"):
             _check_positive(key, getattr(self, key))
+        if self.lubricant_factor is not None:
+            _check_positive("lubricant_factor", self.lubricant_factor)
+        if self.friction_constant is not None:
+            _check_positive("friction_constant", self.friction_constant)
         for key in ("wheel_immersion", "pinion_immersion", "roughness", "gear_expansion", "gear_oil_coefficient",
                     "oil_housing_coefficient", "gear_shaft_conductance", "shaft_oil_conductance",
                     "shaft_housing_conductance"):
@@ -132,6 +167,11 @@ class GearboxDescription:
         gear = self.gear_pair.wheel if wheel else self.gear_pair.pinion
         return (2.0 * math.pi * (gear.tip_radius**2 - gear.bore_radius**2)
                 + 2.0 * math.pi * gear.tip_radius * gear.face_width)
+
+    @property
+    def friction_lubricant_factor(self) -> float:
+        """X_L of the friction law [–]: the one given, else the law's for the oil's base oil."""
+        return self.friction.lubricant_factor(self.lubricant.base_oil, self.lubricant_factor)
 
     @property
     def capacities(self) -> tuple[float, float, float, float, float]:

@@ -1,10 +1,11 @@
 """Power losses of the gearbox at node temperatures, each source on its own, and the efficiency.
 
-Tooth friction P_VZP = P_in·μ_m·H_V (Niemann & Winter §21.6) with the project's DIN 3990-4 mean friction
-coefficient (thermogear.friction) at the oil temperature, evaluated at the pitch point (sum of rolling speeds
-2·v_t·sin α_w, relative radius of curvature at C, unit load F_bt/b); bearings by the SKF model at the viscosity
-of the oil at the shaft node's temperature, radial load a fraction of the tooth normal force (for a drivetrain
-bearing its static force per newton of tooth load, :mod:`~thermogear.gearbox.bearing_entries`); lip seals; churning
+Tooth friction P_VZP = P_in·μ_m·H_V (Niemann & Winter §21.6) with the description's mean friction law
+(:mod:`thermogear.friction_models`: Schlenk's by default, the paper's DIN 3990-4 law, ISO/TR 13989-1 or a
+constant) at the oil temperature, evaluated at the pitch point (sum of rolling speeds 2·v_t·sin α_w, relative
+radius of curvature at C, unit load F_bt/b); bearings by the SKF model at the viscosity of the oil at the shaft
+node's temperature, radial load a fraction of the tooth normal force (for a drivetrain bearing its static force per
+newton of tooth load, :mod:`~thermogear.gearbox.bearing_entries`); lip seals; churning
 of the dipped gears at the oil temperature (:mod:`~thermogear.gearbox.churning`); the impulse loss of an
 into-mesh oil jet where the description has one (injection lubrication, :mod:`~thermogear.gearbox.injection`).
 Heat goes to the nodes as: tooth friction to pinion and wheel by the description's share, bearings and seals to
@@ -20,7 +21,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from thermogear.errors import ExtrapolationWarning
-from thermogear.friction import friction_validity_warnings, mean_friction_coefficient
+from thermogear.friction_models import PitchContact
 from thermogear.gearbox.bearing_entries import mounted_bearing_power
 from thermogear.gearbox.bearing_loss import seal_power_loss
 from thermogear.gearbox.churning import DippedGear, churning_power_loss, churning_validity
@@ -109,11 +110,10 @@ class LossModel:
             return 0.0
         pitch = pair.path_points["C"]
         rolling_1, rolling_2 = pair.rolling_speeds(pitch, self.operating.speed_rpm)
-        friction_validity_warnings(self.normal_force / pair.face_width, float(rolling_1 + rolling_2), stacklevel=4)
-        return float(mean_friction_coefficient(self.normal_force / pair.face_width, description.roughness,
-                                               viscosity, float(rolling_1 + rolling_2),
-                                               float(pair.relative_radius_of_curvature(pitch)),
-                                               description.lubricant_factor, check_limits=False))
+        contact = PitchContact(self.normal_force / pair.face_width, description.roughness, viscosity,
+                               float(rolling_1 + rolling_2), float(pair.relative_radius_of_curvature(pitch)),
+                               description.friction_lubricant_factor)
+        return description.friction.coefficient(contact, description.friction_constant)
 
     @property
     def loss_factor(self) -> float:
@@ -126,10 +126,14 @@ class LossModel:
         return self.operating.torque / self.description.gear_pair.pinion.base_radius
 
     def friction_coefficient(self, oil_c: float) -> float:
-        """DIN 3990-4 μ_m at the pitch point with the oil's viscosity at ``oil_c`` [–]: the formula is the power
-        law μ ∝ η^−0.25 at a given load and speed, so it is evaluated once at a reference viscosity and scaled."""
+        """μ_m of the description's friction law at the pitch point with the oil's viscosity at ``oil_c`` [–]:
+        every law is a power law μ ∝ η^e at a given load and speed (:attr:`FrictionLaw.viscosity_exponent`), so it
+        is evaluated once at a reference viscosity (with its validity warnings) and scaled."""
+        exponent = self.description.friction.viscosity_exponent
+        if exponent == 0.0:
+            return self._reference_friction
         viscosity = float(self.description.lubricant.dynamic_viscosity(oil_c, warn=False))
-        return self._reference_friction * (viscosity / REFERENCE_VISCOSITY)**-0.25
+        return self._reference_friction * (viscosity / REFERENCE_VISCOSITY)**exponent
 
     def at(self, temperatures_c) -> PowerLosses:
         """Losses with the pinion, wheel, shafts, oil, housing at ``temperatures_c`` [°C]."""

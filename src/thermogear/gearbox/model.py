@@ -4,14 +4,16 @@ Nodes: pinion, wheel, shafts with bearings, oil, housing; the ambient air is the
 (:mod:`~thermogear.gearbox.network`). Losses (:mod:`~thermogear.gearbox.losses`) follow the oil and shaft
 temperatures through the viscosity (tooth friction, bearings, churning); the housing's outer conductance follows
 the housing and air temperatures (natural convection, radiation). :meth:`GearboxThermalModel.steady_state` gives
-the predicted gear and oil temperatures of an operating point; :meth:`GearboxThermalModel.warm_up` the history of
-temperatures, losses and backlash from a cold start.
+the predicted gear and oil temperatures of an operating point — the stable steady state, with its plausibility
+flags (:mod:`thermogear.temperature_limits`), or :class:`ThermalRunawayError` where the stable branch followed in
+torque ends below the torque asked for; :meth:`GearboxThermalModel.warm_up` the history of temperatures, losses
+and backlash from a cold start (with a rig's oil conditioning where the description has one).
 """
 
 from __future__ import annotations
 
 import warnings
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import cached_property
 
 import numpy as np
@@ -21,15 +23,28 @@ from thermogear.gearbox.backlash import backlash_allowance, backlash_at_temperat
 from thermogear.gearbox.description import GearboxDescription, GearboxOperatingPoint
 from thermogear.gearbox.heat_paths import housing_outer_conductance, internal_conductances
 from thermogear.gearbox.losses import NODES, LossModel, PowerLosses
-from thermogear.gearbox.network import ThermalNetwork, integrate_transient, solve_steady_state
+from thermogear.gearbox.network import (NoSteadyStateError, ThermalNetwork, continue_steady_states,
+                                        integrate_transient, solve_steady_state, stability_eigenvalues,
+                                        steady_state_at)
+from thermogear.temperature_limits import FLAG_MEANINGS, NETWORK_EVALUATION_RANGE_C, state_flags
 
 #: Coldest start the model accepts [°C] (the brief's −40 °C; the oil's fit is extrapolated there, with a warning).
 COLDEST_START_C = -40.0
-#: A steady state above this [°C] is reported as none (runaway): no gear oil survives it. The property laws are
-#: evaluated with temperatures clipped to EVALUATION_RANGE_C, wider than any accepted result, so that the
-#: solver's trial points outside the physical range do not stop it.
-HOTTEST_STEADY_C = 400.0
-EVALUATION_RANGE_C = (-100.0, 600.0)
+#: The property laws are evaluated with temperatures clipped to this range [°C]; a steady state is a result only
+#: inside it, HOTTEST_STEADY_C being its upper end less a margin (thermogear.temperature_limits).
+EVALUATION_RANGE_C = NETWORK_EVALUATION_RANGE_C
+HOTTEST_STEADY_C = NETWORK_EVALUATION_RANGE_C[1] - 10.0
+
+
+class ThermalRunawayError(NoSteadyStateError):
+    """No stable steady state at the operating point: the stable branch of steady states, followed in torque from
+    zero, ends at a fold below the torque asked for (``fold_torque`` [N·m], ``fold_temperatures_c`` there)."""
+
+    def __init__(self, message: str, fold_torque: float, fold_temperatures_c: np.ndarray, speed_rpm: float):
+        super().__init__(message)
+        self.fold_torque = fold_torque
+        self.fold_temperatures_c = fold_temperatures_c
+        self.speed_rpm = speed_rpm
 
 
 @dataclass(frozen=True)
@@ -68,6 +83,18 @@ class GearboxSteadyState(GearboxState):
     heat_out: float
     energy_residual: float
     time_constants: np.ndarray
+    largest_eigenvalue: float = float("nan")  # largest real part of the stability eigenvalues [1/s] (< 0: stable)
+    flags: tuple[str, ...] = ()  # plausibility flags (thermogear.temperature_limits.FLAG_MEANINGS)
+
+    @property
+    def energy_balance_w(self) -> float:
+        """|ΣP − Q_out| [W]: the steady state's heat balance (the relative residual times the heat shed)."""
+        return self.energy_residual * abs(self.heat_out)
+
+    @property
+    def flag_text(self) -> str:
+        """The flags in words ('' when none)."""
+        return "; ".join(FLAG_MEANINGS[flag] for flag in self.flags)
 
 
 @dataclass(frozen=True)
@@ -83,6 +110,12 @@ class WarmUpHistory:
     backlash: np.ndarray
     energy_residual: float  # identity ∫ΣP dt = ΔΣCT + ∫Q_out dt, relative
     injection_loss: np.ndarray | None = None  # impulse loss of the oil jet [W] (None: no jet)
+    conditioning_power: np.ndarray | None = None  # heat of the oil conditioning into the oil [W] (None: none)
+
+    @property
+    def conditioning(self) -> np.ndarray:
+        """Heat of the rig's oil conditioning into the oil (m,) [W] (negative: cooling); zeros without one."""
+        return np.zeros_like(self.mesh_loss) if self.conditioning_power is None else self.conditioning_power
 
     @property
     def jet_loss(self) -> np.ndarray:
@@ -134,8 +167,15 @@ class GearboxThermalModel:
                                                     ambient)
             return internal, boundary
 
-        def sources(temperatures, time):
-            return loss_model.at(np.clip(temperatures, *EVALUATION_RANGE_C)).node_sources
+        conditioning = self.description.conditioning
+        if conditioning is None:
+            def sources(temperatures, time):
+                return loss_model.at(np.clip(temperatures, *EVALUATION_RANGE_C)).node_sources
+        else:
+            def sources(temperatures, time):
+                heat = loss_model.at(np.clip(temperatures, *EVALUATION_RANGE_C)).node_sources
+                heat[3] += conditioning.power(float(temperatures[3]))
+                return heat
 
         return ThermalNetwork(np.array(self.description.capacities), conductances, sources, lambda time: ambient)
 
@@ -153,15 +193,60 @@ class GearboxThermalModel:
                           f"{fitted[0]:g}…{fitted[1]:g} °C (ASTM D341 extrapolated)", ExtrapolationWarning,
                           stacklevel=3)
 
+    def flags(self, temperatures_c) -> tuple[str, ...]:
+        """Plausibility flags of a state (:func:`thermogear.temperature_limits.state_flags`)."""
+        values = np.asarray(temperatures_c, dtype=float)
+        oil = self.description.lubricant
+        return state_flags(float(max(values[0], values[1])), float(values[3]), oil.base_oil, oil.fitted_range_c,
+                           (float(np.min(values[2:4])), float(np.max(values[2:4]))))
+
     def steady_state(self, operating: GearboxOperatingPoint) -> GearboxSteadyState:
-        """Steady temperatures of an operating point (raises NoSteadyStateError on thermal runaway)."""
+        """The stable steady state of an operating point, with its plausibility flags (a hot stable state is a
+        result, flagged). Raises :class:`ThermalRunawayError` only where no stable steady state exists: the direct
+        solve is checked for stability (every eigenvalue of C⁻¹J negative); where it fails or is unstable the stable
+        branch is followed in torque from zero (:func:`~thermogear.gearbox.network.continue_steady_states`), and
+        either reaches the torque asked for or ends at a fold, which the error names."""
         network = self.network(operating)
-        steady = solve_steady_state(network, np.full(5, float(operating.ambient_c)),
-                                    temperature_limit=HOTTEST_STEADY_C)
+        ambient = np.full(5, float(operating.ambient_c))
+        steady, eigenvalue = None, float("nan")
+        try:
+            steady = solve_steady_state(network, ambient, temperature_limit=HOTTEST_STEADY_C)
+            eigenvalue = float(np.max(np.real(stability_eigenvalues(network, steady.temperatures))))
+            if not eigenvalue < 0.0:
+                steady = None
+        except NoSteadyStateError:
+            steady = None
+        if steady is None:
+            steady, eigenvalue = self._continued_steady_state(operating, network)
         temperatures = steady.temperatures
         self._warn_viscosity_range(float(np.min(temperatures[2:4])), float(np.max(temperatures[2:4])))
         return GearboxSteadyState(temperatures, self.losses(operating).at(temperatures), self.backlash(temperatures),
-                                  steady.heat_out, steady.energy_residual, steady.time_constants)
+                                  steady.heat_out, steady.energy_residual, steady.time_constants, eigenvalue,
+                                  self.flags(temperatures))
+
+    def _continued_steady_state(self, operating: GearboxOperatingPoint, network: ThermalNetwork):
+        """The stable steady state at ``operating`` reached by continuation in torque from zero, or
+        ThermalRunawayError at the fold where the stable branch ends (:meth:`steady_state`)."""
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", ExtrapolationWarning)  # raised again for the result itself
+            fold = continue_steady_states(lambda torque: self.network(replace(operating, torque=torque)), 0.0,
+                                          operating.torque, np.full(5, float(operating.ambient_c)),
+                                          bounds=(EVALUATION_RANGE_C[0], HOTTEST_STEADY_C))
+        if fold.reached:
+            return steady_state_at(network, fold.temperatures), fold.largest_eigenvalue
+        hottest = float(np.max(fold.temperatures))
+        where = (f"leaves the {HOTTEST_STEADY_C:g} °C up to which the network's property laws are evaluated"
+                 if hottest > HOTTEST_STEADY_C - 60.0 else
+                 f"ends at a fold (largest stability eigenvalue {fold.largest_eigenvalue:.3g} 1/s there)")
+        if fold.parameter == 0.0:
+            message = (f"no stable steady state at {operating.speed_rpm:g} rpm even without load: the speed-dependent "
+                       "losses grow with temperature faster than the cooling (thermal runaway)")
+        else:
+            message = (f"no stable steady state at {operating.speed_rpm:g} rpm, {operating.torque:g} N·m: the stable "
+                       f"branch of steady states, followed in torque from 0, {where} near {fold.parameter:.4g} N·m "
+                       f"(pinion {fold.temperatures[0]:.1f} °C, oil {fold.temperatures[3]:.1f} °C there); above it "
+                       "the losses grow with temperature faster than the cooling: thermal runaway")
+        raise ThermalRunawayError(message, float(fold.parameter), fold.temperatures, float(operating.speed_rpm))
 
     def warm_up(self, operating: GearboxOperatingPoint, duration: float, points: int = 121,
                 initial_c=None, method: str = "Radau") -> WarmUpHistory:
@@ -179,10 +264,13 @@ class GearboxThermalModel:
         temperatures = transient.temperatures
         self._warn_viscosity_range(float(np.min(temperatures[2:4])), float(np.max(temperatures[2:4])))
         loss_model = self.losses(operating)
+        conditioning = self.description.conditioning
         states = [loss_model.at(temperatures[:, index]) for index in range(times.size)]
         return WarmUpHistory(times, temperatures, np.array([s.mesh for s in states]),
                              np.array([s.bearings for s in states]), np.array([s.seals for s in states]),
                              np.array([s.churning for s in states]),
                              np.array([self.backlash(temperatures[:, index]) for index in range(times.size)]),
                              transient.energy_residual,
-                             None if self.description.oil_jet is None else np.array([s.injection for s in states]))
+                             None if self.description.oil_jet is None else np.array([s.injection for s in states]),
+                             None if conditioning is None else np.array([conditioning.power(float(value))
+                                                                         for value in temperatures[3]]))

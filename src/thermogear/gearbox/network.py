@@ -14,9 +14,10 @@ Summing (1) over the nodes, the internal exchanges cancel because G is symmetric
 which gives the checks: at steady state Σ P = Q_out, and over a transient ∫ΣP dt = Δ(Σ C T) + ∫Q_out dt.
 
 The steady state solves (1) with dT/dt = 0 by :func:`scipy.optimize.root` (Powell hybrid, finite-difference
-Jacobian, from the linear solution with G, g, P frozen at the initial temperatures). Where the sources grow with
-temperature faster than the cooling there is no steady state (thermal runaway): the solve then fails or ends
-above ``temperature_limit`` and :class:`NoSteadyStateError` says so. Transients integrate (1) with
+Jacobian, from the linear solution with G, g, P frozen at the initial temperatures); where it fails or ends above
+``temperature_limit`` :class:`NoSteadyStateError` says so. Whether a steady state is stable is decided by the
+eigenvalues of C⁻¹J (:func:`stability_eigenvalues`), and :func:`continue_steady_states` follows the stable branch
+in a parameter to where it ends (a fold: thermal runaway beyond it). Transients integrate (1) with
 :func:`scipy.optimize.solve_ivp` (Radau or BDF: the node time constants span decades) with two extra states, the
 integrals of ΣP and Q_out, for identity (2). Temperatures are in the caller's unit (the gearbox uses °C).
 """
@@ -144,6 +145,10 @@ def solve_steady_state(network: ThermalNetwork, initial, time: float = 0.0, temp
     if not np.all(np.isfinite(guess)) or np.max(guess) > temperature_limit:
         guess = np.minimum(np.where(np.isfinite(guess), guess, start), temperature_limit)
     scale = max(float(np.sum(np.abs(network.sources(guess, time)))), 1e-300)
+    if scale < 1e-6 * float(np.sum(internal) + np.sum(boundary)):
+        # vanishing losses (a crawl speed): the balance is measured against 1 K across every conductance, else
+        # rounding in G·T would read as an enormous relative residual and the ambient as "no steady state"
+        scale = float(np.sum(internal) + np.sum(boundary))
     solution = root(lambda temperatures: network.heat_balance(temperatures, time) / scale, guess, method="hybr",
                     options={"xtol": tolerance})
     temperatures = np.asarray(solution.x, dtype=float)
@@ -157,13 +162,19 @@ def solve_steady_state(network: ThermalNetwork, initial, time: float = 0.0, temp
         raise NoSteadyStateError(
             "thermal network: no steady state below " f"{temperature_limit:g} (the losses grow with temperature faster "
             "than the cooling: thermal runaway; the solver says: " f"{solution.message.strip()})")
+    return steady_state_at(network, temperatures, time, int(solution.nfev))
+
+
+def steady_state_at(network: ThermalNetwork, temperatures, time: float = 0.0, iterations: int = 0) -> SteadyState:
+    """The :class:`SteadyState` record of solved steady ``temperatures``: sources, heat out, relative energy
+    residual, time constants (conductances checked there)."""
+    temperatures = np.asarray(temperatures, dtype=float)
     network.exchange(temperatures)  # and at the solution
     sources = np.asarray(network.sources(temperatures, time), dtype=float)
     out = network.heat_out(temperatures, time)
     total = float(np.sum(sources))
     residual = abs(total - out) / abs(total) if total != 0.0 else abs(out)
-    return SteadyState(temperatures, sources, out, residual, network.time_constants(temperatures),
-                       int(solution.nfev))
+    return SteadyState(temperatures, sources, out, residual, network.time_constants(temperatures), iterations)
 
 
 def _polish(residual, values: np.ndarray, iterations: int = 6) -> tuple[np.ndarray, np.ndarray]:
@@ -184,6 +195,109 @@ def _polish(residual, values: np.ndarray, iterations: int = 6) -> tuple[np.ndarr
             break
         values, current = trial, trial_residual
     return values, current
+
+
+def heat_balance_jacobian(network: ThermalNetwork, temperatures, time: float = 0.0) -> np.ndarray:
+    """∂(right side of (1))/∂T [W/K] (n, n) by central differences (steps 1e-4·max(|T|, 1)): the linearisation
+    that decides whether a steady state is stable."""
+    values = np.asarray(temperatures, dtype=float)
+    columns = []
+    for index in range(values.size):
+        step = 1e-4 * max(abs(values[index]), 1.0)
+        shift = np.zeros_like(values)
+        shift[index] = step
+        columns.append((network.heat_balance(values + shift, time) - network.heat_balance(values - shift, time))
+                       / (2.0 * step))
+    return np.column_stack(columns)
+
+
+def stability_eigenvalues(network: ThermalNetwork, temperatures, time: float = 0.0) -> np.ndarray:
+    """Eigenvalues [1/s] of C⁻¹·J, J the Jacobian of the heat balance at ``temperatures`` (sources and
+    conductances following the temperatures), sorted by real part, largest last. A steady state is (linearly)
+    stable when every real part is negative: a small disturbance then decays; one eigenvalue crossing zero along
+    a branch marks a fold, where the stable branch ends (thermal runaway beyond it)."""
+    matrix = heat_balance_jacobian(network, temperatures, time) / network.capacities[:, None]
+    eigenvalues = np.linalg.eigvals(matrix)
+    return eigenvalues[np.argsort(np.real(eigenvalues))]
+
+
+def corrected_steady_state(network: ThermalNetwork, guess, time: float = 0.0,
+                           bounds: tuple[float, float] = (-np.inf, np.inf)) -> np.ndarray | None:
+    """A steady state of (1) by Newton-type iteration (Powell hybrid, then polished) from ``guess``, or None where
+    it does not converge to 1e-10 of the scale ΣG·1 K + Σ|P| per node or leaves ``bounds``: the corrector of a
+    continuation (:func:`continue_steady_states`)."""
+    from scipy.optimize import root
+
+    start = np.asarray(guess, dtype=float)
+    internal, boundary = network.raw_exchange(start)
+    scale = max(float(np.sum(np.abs(network.sources(start, time)))) + float(np.sum(internal) + np.sum(boundary)),
+                1e-300)
+
+    def residual(values):
+        return network.heat_balance(values, time) / scale
+
+    solution = root(residual, start, method="hybr", options={"xtol": 1e-12})
+    values = np.asarray(solution.x, dtype=float)
+    if not (np.all(np.isfinite(values)) and bounds[0] <= np.min(values) and np.max(values) <= bounds[1]):
+        return None
+    values, balance = _polish(residual, values)
+    if not (np.all(np.isfinite(balance)) and np.max(np.abs(balance)) <= 1e-10):
+        return None
+    return values
+
+
+@dataclass(frozen=True)
+class Fold:
+    """Where a branch of stable steady states ends in a continuation: the last stable parameter reached and its
+    temperatures (n,), the largest real part of the stability eigenvalues there [1/s] (near 0 at a fold) and
+    whether the branch reached the target parameter (then no fold lies before it)."""
+
+    parameter: float
+    temperatures: np.ndarray
+    largest_eigenvalue: float
+    reached: bool
+
+
+def continue_steady_states(network_at: Callable[[float], ThermalNetwork], start: float, target: float,
+                           initial, bounds: tuple[float, float] = (-np.inf, np.inf), first_step: float = 0.1,
+                           smallest_step: float = 1e-4) -> Fold:
+    """Follow the stable steady states of ``network_at(p)`` from ``p = start`` (its state found from ``initial``)
+    towards ``target`` (natural-parameter continuation: a secant predictor, :func:`corrected_steady_state` as
+    corrector, a step accepted only where the corrected state is stable and near the prediction, halved otherwise).
+    Where the step falls below ``smallest_step``·|target − start| the stable branch has ended: a fold (saddle-node),
+    beyond which no nearby steady state exists, lies within that step. Returns the :class:`Fold` (``reached``
+    True where the target was reached on the stable branch)."""
+    span = float(target) - float(start)
+    parameter = float(start)
+    current = corrected_steady_state(network_at(parameter), initial, bounds=bounds)
+    if current is None or np.max(np.real(stability_eigenvalues(network_at(parameter), current))) >= 0.0:
+        values = np.asarray(initial, dtype=float) if current is None else current
+        return Fold(parameter, values, float("nan") if current is None else float(
+            np.max(np.real(stability_eigenvalues(network_at(parameter), current)))), False)
+    previous: tuple[float, np.ndarray] | None = None
+    step = first_step
+    while True:
+        if abs(parameter - start - span) <= 1e-15 * max(abs(span), 1.0):
+            eigenvalue = float(np.max(np.real(stability_eigenvalues(network_at(parameter), current))))
+            return Fold(parameter, current, eigenvalue, True)
+        fraction = (parameter - start) / span if span else 1.0
+        trial = start + span * min(1.0, fraction + step)
+        predictor = current if previous is None else current + (current - previous[1]) * (
+            (trial - parameter) / (parameter - previous[0]))
+        network = network_at(trial)
+        corrected = corrected_steady_state(network, predictor, bounds=bounds)
+        accepted = False
+        if corrected is not None and np.max(np.abs(corrected - predictor)) <= 25.0 + 0.5 * np.max(
+                np.abs(predictor - current)):
+            accepted = float(np.max(np.real(stability_eigenvalues(network, corrected)))) < 0.0
+        if accepted:
+            previous, parameter, current = (parameter, current), trial, corrected
+            step = min(2.0 * step, first_step)
+            continue
+        step *= 0.5
+        if step < smallest_step:
+            eigenvalue = float(np.max(np.real(stability_eigenvalues(network_at(parameter), current))))
+            return Fold(parameter, current, eigenvalue, False)
 
 
 @dataclass(frozen=True)

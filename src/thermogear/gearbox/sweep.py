@@ -5,7 +5,9 @@ loop or on a pool of threads (``workers``). The study machinery (:mod:`thermogea
 dynamics and would need new variables and a new kernel for these, so this sweep is a function of its own; its grid
 is written to a zarr store like a study's by :mod:`thermogear.sweep.steady_store` (the dynamics of a case with
 ``temperature.model = "gearbox"`` does run on the study machinery: every point's case predicts its own
-temperatures). A point without a steady state (thermal runaway) is masked, never a number.
+temperatures). A point without a stable steady state (thermal runaway) is masked, never a number, and carries the
+torque of the fold where the stable branch ended; a stable point carries its plausibility flags
+(:mod:`thermogear.temperature_limits`): a hot stable state is a result, flagged.
 """
 
 from __future__ import annotations
@@ -41,11 +43,26 @@ class SteadySweep:
     efficiency: np.ma.MaskedArray
     backlash: np.ma.MaskedArray
     injection_loss: np.ma.MaskedArray | None = None  # the oil jet's impulse loss [W] (None: no jet)
+    flags: np.ndarray | None = None  # (m, k) tuples of plausibility flags (empty where none or runaway)
+    fold_torque: np.ma.MaskedArray | None = None  # (m, k) [N·m] where the stable branch ended (runaway points)
 
     @property
     def runaway(self) -> np.ndarray:
-        """True where no steady state exists (m, k)."""
+        """True where no stable steady state exists (m, k)."""
         return np.ma.getmaskarray(self.mesh_loss)
+
+    def flagged(self, flag: str) -> np.ndarray:
+        """True where a steady state carries ``flag`` (m, k) (thermogear.temperature_limits.FLAG_MEANINGS)."""
+        shape = self.runaway.shape
+        if self.flags is None:
+            return np.zeros(shape, dtype=bool)
+        return np.array([[flag in self.flags[i, j] for j in range(shape[1])] for i in range(shape[0])], dtype=bool)
+
+    @property
+    def valid(self) -> np.ndarray:
+        """True where a stable steady state exists with every gear within the material data (m, k): the one
+        limit that ``check``/``run``/``sweep`` apply (thermogear.temperature_limits)."""
+        return ~self.runaway & ~self.flagged("above_material_data")
 
     @property
     def total_loss(self) -> np.ma.MaskedArray:
@@ -70,15 +87,19 @@ class SteadySweep:
                 "seal_loss_w": listed(self.seal_loss), "churning_loss_w": listed(self.churning_loss),
                 **({} if self.injection_loss is None else {"injection_loss_w": listed(self.injection_loss)}),
                 "efficiency": listed(self.efficiency), "backlash_um": listed(self.backlash * 1e6),
-                "runaway": self.runaway.tolist()}
+                "runaway": self.runaway.tolist(), "valid": self.valid.tolist(),
+                "flags": [[[] if self.flags is None else list(self.flags[i, j]) for j in range(self.torques.size)]
+                          for i in range(self.speeds_rpm.size)],
+                **({} if self.fold_torque is None else {"fold_torque_nm": listed(self.fold_torque)})}
 
 
 def steady_point(model, speed_rpm: float, torque: float, ambient_c: float):
-    """The steady state of ``model`` at one point, or None where the network has none (thermal runaway)."""
+    """The steady state of ``model`` at one point, or the NoSteadyStateError that says why there is none (thermal
+    runaway: its fold)."""
     try:
         return model.steady_state(GearboxOperatingPoint(float(speed_rpm), float(torque), float(ambient_c)))
-    except NoSteadyStateError:
-        return None
+    except NoSteadyStateError as error:
+        return error
 
 
 def _solve_points(model, points, ambient_c: float, workers: int | None) -> list:
@@ -107,15 +128,21 @@ def steady_sweep(model, speeds_rpm, torques, ambient_c: float = 20.0, workers: i
     temperatures = np.ma.masked_all((5,) + shape)
     outputs = {name: np.ma.masked_all(shape) for name in ("mesh", "bearings", "seals", "churning", "efficiency",
                                                           "backlash", "injection")}
+    flags = np.empty(shape, dtype=object)
+    flags.fill(())
+    fold = np.ma.masked_all(shape)
     points = [(i, j) for i in range(speeds.size) for j in range(loads.size)]
     with warnings.catch_warnings():
         # the viscosity-range warning of each point is raised once below for the whole grid
         warnings.simplefilter("ignore", ExtrapolationWarning)
         for (i, j), state in zip(points, _solve_points(model, [(speeds[i], loads[j]) for i, j in points],
                                                       ambient_c, workers)):
-            if state is None:  # no steady state: the point stays masked
+            if isinstance(state, NoSteadyStateError):  # no steady state: the point stays masked
+                if getattr(state, "fold_torque", None) is not None:
+                    fold[i, j] = state.fold_torque
                 continue
             temperatures[:, i, j] = state.temperatures_c
+            flags[i, j] = state.flags
             losses = state.losses
             for name, value in (("mesh", losses.mesh), ("bearings", losses.bearings), ("seals", losses.seals),
                                 ("churning", losses.churning), ("efficiency", losses.efficiency),
@@ -129,4 +156,4 @@ def steady_sweep(model, speeds_rpm, torques, ambient_c: float = 20.0, workers: i
                       f"{fitted[0]:g}…{fitted[1]:g} °C (ASTM D341 extrapolated)", ExtrapolationWarning, stacklevel=2)
     return SteadySweep(speeds, loads, float(ambient_c), temperatures, outputs["mesh"], outputs["bearings"],
                        outputs["seals"], outputs["churning"], outputs["efficiency"], outputs["backlash"],
-                       None if model.description.oil_jet is None else outputs["injection"])
+                       None if model.description.oil_jet is None else outputs["injection"], flags, fold)

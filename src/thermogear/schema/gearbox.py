@@ -108,6 +108,9 @@ class GearboxOilSection(Section):
                              "mesh outlet, against them (outlet)")
     pinion_immersion_mm: Annotated[float, Field(ge=0.0, le=5000.0, allow_inf_nan=False)] = Field(
         0.0, description="depth the pinion dips into the oil [mm] (0: above the oil)")
+    level_mm: Annotated[float, Field(gt=0.0, le=10000.0, allow_inf_nan=False)] | None = Field(
+        None, description="oil level above the housing floor [mm]; default the volume over the outer footprint "
+                          "(length × width). Given, it sets the inner floor area volume/level")
     specific_heat_j_per_kg_k: Annotated[float, Field(ge=1000.0, le=4000.0, allow_inf_nan=False)] = Field(
         2000.0, description="oil specific heat [J/(kg K)]")
 
@@ -181,6 +184,31 @@ class GearboxInternalSection(Section):
         8.0, description="shafts to the housing through the bearing seats [W/K]")
 
 
+class GearboxConditioningSection(Section):
+    """Oil conditioning of a test rig: a heater and a cooler driven by a thermostat on the sump temperature.
+
+    The conditioning power into the oil is P = clip(gain·(set − T_oil), −cooling_w, heater_w) [W]: full heating
+    below the set point by more than heater_w/gain, full cooling above it by more than cooling_w/gain, in
+    proportion between (a proportional thermostat; the band keeps the network's equations smooth)."""
+
+    setpoint_c: Annotated[float, Field(ge=-40.0, le=200.0, allow_inf_nan=False)] = Field(
+        description="oil temperature the thermostat holds [°C]")
+    heater_w: Annotated[float, Field(ge=0.0, le=1e6, allow_inf_nan=False)] = Field(
+        0.0, description="largest heating power into the oil [W]")
+    cooling_w: Annotated[float, Field(ge=0.0, le=1e6, allow_inf_nan=False)] = Field(
+        0.0, description="largest cooling power taken from the oil [W]")
+    gain_w_per_k: Annotated[float, Field(gt=0.0, le=1e6, allow_inf_nan=False)] = Field(
+        200.0, description="thermostat gain [W/K]: the power per kelvin off the set point (proportional band "
+                           "= power/gain)")
+
+    @model_validator(mode="after")
+    def _some_power(self):
+        if self.heater_w == 0.0 and self.cooling_w == 0.0:
+            raise CaseError("gearbox.conditioning.heater_w", 0.0, "> 0 (or cooling_w > 0)",
+                            "a conditioning without heater or cooler has no effect")
+        return self
+
+
 class GearboxSection(Section):
     """The gearbox around the gear pair, for the gearbox thermal model (``[temperature].model = "gearbox"``,
     ``thermogear warmup --model gearbox``, ``thermogear gearbox``): optional."""
@@ -202,3 +230,29 @@ class GearboxSection(Section):
         4.0, description="mass of the shafts with their bearings [kg]")
     pinion_heat_share: Annotated[float, Field(ge=0.0, le=1.0, allow_inf_nan=False)] = Field(
         0.5, description="pinion's share of the tooth friction heat [–]")
+    friction_model: Literal["schlenk", "paper", "iso_tr_13989_1", "constant"] = Field(
+        "schlenk", description="mean friction law of the tooth loss: schlenk (Schlenk 1994 with the X_L of "
+                               "Fernandes et al. 2015: FZG power-loss work, the default), paper (DIN 3990-4 as "
+                               "Luo & Li Eq. 27, the paper's damping law), iso_tr_13989_1, constant")
+    friction_coefficient: Annotated[float, Field(gt=0.0, le=0.3, allow_inf_nan=False)] | None = Field(
+        None, description="the mean friction coefficient [–] of friction_model = 'constant' (only there)")
+    lubricant_factor: Annotated[float, Field(gt=0.0, le=3.0, allow_inf_nan=False)] | None = Field(
+        None, description="X_L of the friction law [–]; default the law's value for the oil's base oil")
+    conditioning: GearboxConditioningSection | None = Field(
+        None, description="oil conditioning of a test rig (heater, cooler, thermostat set point) for warm-ups")
+
+    @model_validator(mode="after")
+    def _friction_inputs(self):
+        if self.friction_model == "constant" and self.friction_coefficient is None:
+            raise CaseError("gearbox.friction_coefficient", None, "a value in (0, 0.3]",
+                            "friction_model = 'constant' needs the coefficient")
+        if self.friction_model != "constant" and self.friction_coefficient is not None:
+            raise CaseError("gearbox.friction_coefficient", self.friction_coefficient,
+                            "only with friction_model = 'constant'",
+                            f"friction_model = {self.friction_model!r} computes the coefficient: the key would "
+                            "have no effect")
+        if self.friction_model == "constant" and self.lubricant_factor is not None:
+            raise CaseError("gearbox.lubricant_factor", self.lubricant_factor, "absent with friction_model = "
+                            "'constant'", "a constant coefficient has no lubricant factor: the key would have no "
+                            "effect")
+        return self

@@ -7,6 +7,7 @@ from typing import Annotated, Literal
 from pydantic import Field
 
 from thermogear.schema.base import Section
+from thermogear.temperature_limits import MATERIAL_MAXIMUM_C
 
 #: Absolute zero [°C]: no temperature of a case may reach it.
 ABSOLUTE_ZERO_C = -273.15
@@ -15,10 +16,10 @@ ABSOLUTE_ZERO_C = -273.15
 #: point (an ASTM D341 line fitted at 40 and 100 °C says nothing there) and the room-temperature material data no
 #: longer hold; −273 °C passed as an assembly temperature before (issue 25). An assumption of this project.
 CASE_MINIMUM_C = -60.0
-#: Highest temperature any case temperature may have [°C] (= thermogear.temperature_field.MATERIAL_MAXIMUM_C: the
-#: material data are room-temperature constants; gear steels temper at 150–200 °C). Repeated here because the
-#: schema imports nothing of the model; a test checks the two agree.
-CASE_MAXIMUM_C = 200.0
+#: Highest temperature any case temperature may have [°C]: the one limit of the material data
+#: (:data:`thermogear.temperature_limits.MATERIAL_MAXIMUM_C`; room-temperature constants, gear steels temper at
+#: 150–200 °C).
+CASE_MAXIMUM_C = MATERIAL_MAXIMUM_C
 
 #: A temperature of a case [°C]: a finite number from CASE_MINIMUM_C to CASE_MAXIMUM_C.
 Celsius = Annotated[float, Field(ge=CASE_MINIMUM_C, le=CASE_MAXIMUM_C, allow_inf_nan=False)]

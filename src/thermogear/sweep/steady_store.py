@@ -77,8 +77,14 @@ def steady_dataset(result, case_name: str, case_source: str, case_document: dict
                  for name, (values, units, text) in variables.items()}
     data_vars["runaway"] = (dims, runaway, {"units": "1", "long_name": "1 where the network has no steady state "
                                                                         "(thermal runaway); the values there are NaN"})
-    data_vars["valid"] = (dims, (1 - runaway).astype(np.int8),
-                          {"units": "1", "long_name": "1 where the point has a steady state"})
+    data_vars["valid"] = (dims, np.asarray(result.valid, dtype=np.int8),
+                          {"units": "1", "long_name": "1 where the point has a stable steady state with every gear "
+                                                      "within the material data (thermogear.temperature_limits)"})
+    from thermogear.temperature_limits import FLAG_MEANINGS  # noqa: PLC0415
+
+    for flag, meaning in FLAG_MEANINGS.items():
+        data_vars[f"flag_{flag}"] = (dims, np.asarray(result.flagged(flag), dtype=np.int8),
+                                     {"units": "1", "long_name": f"1 where the steady state has {meaning}"})
     coords = {"speed_rpm": ("speed_rpm", np.asarray(result.speeds_rpm, dtype=float),
                             {"units": "rpm", "long_name": "pinion speed"}),
               "torque_nm": ("torque_nm", np.asarray(result.torques, dtype=float),
