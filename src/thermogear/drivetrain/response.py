@@ -18,14 +18,14 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
 
 from thermogear.drivetrain.assembly import AssembledDrivetrain
 from thermogear.drivetrain.static_state import mesh_torque_forces
-from thermogear.dynamics.backlash_ndof import BacklashSystem, DeadZone
+from thermogear.dynamics.backlash_ndof import BacklashSystem
 from thermogear.dynamics.metrics import compute_metrics
 from thermogear.dynamics.periodic_ndof import PiecewiseLinearSystem, periodic_response
 from thermogear.dynamics.rigid_body import RigidBodyReduction, rigid_body_reduction
@@ -94,14 +94,7 @@ def drivetrain_backlash_system(assembled: AssembledDrivetrain,
     linear, reduction = drivetrain_periodic_system(assembled, state)
     excitation = linear.force_factor
     deviation = excitation / linear.stiffness_factor
-    zones = []
-    for bearing in assembled.drivetrain.bearings:
-        if bearing.radial_clearance > 0.0:
-            for axis, stiffness, damping in (("x", bearing.stiffness_x, bearing.damping_x),
-                                             ("y", bearing.stiffness_y, bearing.damping_y)):
-                unit = np.zeros(assembled.size)
-                unit[assembled.dof(bearing.location, axis)] = 1.0
-                zones.append(DeadZone(reduction.project_vector(unit), stiffness, damping, bearing.radial_clearance))
+    zones = [replace(zone, vector=reduction.project_vector(zone.vector)) for _, zone in assembled.dead_zones]
     return BacklashSystem(linear, linear.force_pattern, deviation, state.backlash, tuple(zones)), reduction
 
 
@@ -215,13 +208,5 @@ def bearing_forces(assembled: AssembledDrivetrain, displacement: np.ndarray, vel
     forces = {}
     for bearing in assembled.drivetrain.bearings:
         dofs = [assembled.dof(bearing.location, name) for name in ("x", "y", "z")]
-        stiffness, damping = bearing.stiffness_matrix()[:3, :3], bearing.damping_matrix()[:3, :3]
-        u, rate = displacement[:, dofs], velocity[:, dofs]
-        if clearance and bearing.radial_clearance > 0.0:  # no x–y coupling with a clearance (refused at construction)
-            gap = bearing.radial_clearance
-            beyond = np.abs(u) > gap
-            u = np.where(beyond, u - np.sign(u) * gap, 0.0)
-            rate = np.where(beyond, rate, 0.0)
-            u[:, 2], rate[:, 2] = displacement[:, dofs[2]], velocity[:, dofs[2]]
-        forces[bearing.name] = u @ stiffness.T + rate @ damping.T
+        forces[bearing.name] = bearing.housing_force(displacement[:, dofs], velocity[:, dofs], clearance)
     return forces

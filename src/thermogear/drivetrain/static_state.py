@@ -51,7 +51,8 @@ def bearing_reactions(assembled: AssembledDrivetrain, displacement: np.ndarray) 
     forces = {}
     for bearing in assembled.drivetrain.bearings:
         dofs = [assembled.dof(bearing.location, name) for name in ("x", "y", "z")]
-        forces[bearing.name] = bearing.stiffness_matrix()[:3, :3] @ displacement[dofs]
+        u = displacement[dofs][None]
+        forces[bearing.name] = bearing.housing_force(u, np.zeros_like(u), clearance=False)[0]
     return forces
 
 

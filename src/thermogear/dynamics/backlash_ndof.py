@@ -57,6 +57,15 @@ class DeadZone:
             if not isinstance(value, (int, float)) or not np.isfinite(value) or value < 0.0:
                 raise ProblemError(f"dead_zone.{key}", value, ">= 0, finite", "a spring, dashpot and gap of a contact")
 
+    def engaged(self, value: np.ndarray, rate: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """The dead-zone law on samples of u = vᵀq [m] and u̇ [m/s]: the spring's stretch u ∓ δ beyond ±δ (0
+        inside) and the rate where in contact (0 inside); the element's force along v is −(k·stretch + c·rate).
+        The one place the clearance law is written for outputs (the solver's regions follow :meth:`side`)."""
+        value, rate = np.asarray(value, dtype=float), np.asarray(rate, dtype=float)
+        beyond = np.abs(value) > self.clearance
+        return (np.where(beyond, value - np.sign(value) * self.clearance, 0.0),
+                np.where(beyond, rate, 0.0))
+
     def side(self, state: np.ndarray, size: int) -> int:
         """+1 or −1 in contact beyond +δ or −δ, 0 inside the clearance (on a boundary, by the rate)."""
         value, rate = self.vector @ state[:size], self.vector @ state[size:2 * size]
