@@ -27,6 +27,7 @@ import numpy as np
 from thermogear.drivetrain.assembly import Drivetrain
 from thermogear.drivetrain.case_layout import MESH_NAME, drivetrain_from_section
 from thermogear.drivetrain.heat import ModeShifts, WarmState, thermal_mode_shifts, warm_drivetrain
+from thermogear.drivetrain.stages import stage_train
 from thermogear.drivetrain.modes import DrivetrainModes, drivetrain_modes
 from thermogear.drivetrain.response import DrivetrainResponse, drivetrain_periodic_response, drivetrain_speed_sweep
 from thermogear.mesh.model_names import ELASTIC, THERMAL
@@ -72,7 +73,7 @@ SPECTRUM_POINTS = 256
 
 
 def _group(name: str, drivetrain: Drivetrain) -> str:
-    if name == MESH_NAME:
+    if any(mesh.name == name for mesh in drivetrain.meshes):
         return "mesh"
     for kind, items in (("bearings", drivetrain.bearings), ("couplings", drivetrain.couplings),
                         ("supports", drivetrain.torsional_supports), ("shafts", drivetrain.shafts)):
@@ -85,15 +86,20 @@ def mode_table(modes: DrivetrainModes, drivetrain: Drivetrain) -> list[dict[str,
     """One dict per mode: frequency [Hz], label, mesh share, the shares grouped (mesh, bearings, shafts, couplings,
     supports) and per element, and whether the mesh dominates it (share > :data:`MESH_DOMINATED_SHARE`)."""
     rows = []
+    meshes = [mesh.name for mesh in drivetrain.meshes]
     for index, frequency in enumerate(modes.frequencies_hz):
         shares = {name: float(values[index]) for name, values in modes.strain_energy_shares.items()}
         grouped: dict[str, float] = {}
         for name, value in shares.items():
             kind = _group(name, drivetrain)
             grouped[kind] = grouped.get(kind, 0.0) + value
-        rows.append({"frequency_hz": float(frequency), "label": modes.labels[index],
-                     "mesh_share": shares.get(MESH_NAME, 0.0), "energy_shares": grouped,
-                     "element_shares": shares, "mesh_dominated": shares.get(MESH_NAME, 0.0) > MESH_DOMINATED_SHARE})
+        mesh_share = shares.get(MESH_NAME, 0.0) if len(meshes) == 1 else grouped.get("mesh", 0.0)
+        row = {"frequency_hz": float(frequency), "label": modes.labels[index], "mesh_share": mesh_share,
+               "energy_shares": grouped, "element_shares": shares, "mesh_dominated": mesh_share > MESH_DOMINATED_SHARE}
+        if len(meshes) > 1:  # a train: the share of each mesh, and the one that holds most
+            row["mesh_shares"] = {name: shares.get(name, 0.0) for name in meshes}
+            row["dominant_mesh"] = max(meshes, key=lambda name: shares.get(name, 0.0))
+        rows.append(row)
     return rows
 
 
@@ -103,26 +109,48 @@ def bearing_force_summary(response: DrivetrainResponse, harmonics: int) -> dict[
     √(X_j² + Y_j²) of mesh harmonics j = 1…``harmonics`` [N] with their frequencies [Hz]."""
     summary = {}
     time = response.time
+    orders = _harmonic_orders(response, harmonics)
+    points = max(SPECTRUM_POINTS, 4 * orders[-1])
     for name, force in response.bearing_forces.items():
         radial = force[:, :2]
         mean = np.trapezoid(radial, time, axis=0) / (time[-1] - time[0])
         dynamic = np.sum((radial - mean) ** 2, axis=1)
         rms = math.sqrt(float(np.trapezoid(dynamic, time)) / (time[-1] - time[0]))
-        frequencies, amplitudes = response.bearing_spectrum(name, points=SPECTRUM_POINTS)
+        frequencies, amplitudes = response.bearing_spectrum(name, points=points)
         radial_amplitudes = np.hypot(amplitudes[0], amplitudes[1])
         summary[name] = {"mean_radial_n": float(np.hypot(*mean)), "dynamic_rms_n": rms,
-                         "harmonic_hz": [float(f) for f in frequencies[1:harmonics + 1]],
-                         "harmonic_amplitude_n": [float(a) for a in radial_amplitudes[1:harmonics + 1]]}
+                         "harmonic_hz": [float(frequencies[order]) for order in orders],
+                         "harmonic_amplitude_n": [float(radial_amplitudes[order]) for order in orders]}
     return summary
 
 
-def resonance_speeds(rows: list[dict[str, Any]], teeth: int, harmonics: int) -> list[dict[str, Any]]:
+def _harmonic_orders(response, harmonics: int) -> list[int]:
+    """The spectrum lines (multiples of 1/T) of the mesh harmonics 1…``harmonics`` of every mesh: 1…harmonics for
+    one mesh; for a train, j·L_m of each mesh m (L_m its periods in the common period T), in ascending order."""
+    meshes = getattr(response, "meshes", None) or {}
+    repeats = {max(1, round(response.period / item.mesh_period)) for item in meshes.values()} or {1}
+    return sorted({j * repeat for repeat in repeats for j in range(1, harmonics + 1)})
+
+
+def resonance_speeds(rows: list[dict[str, Any]], teeth: int, harmonics: int,
+                     stages: tuple[tuple[str, float], ...] = ()) -> list[dict[str, Any]]:
     """Pinion speeds [rpm] at which mesh harmonic j meets a mode with a mesh share above
     :data:`MESH_COUPLED_SHARE`: n = 60·f/(j·z1), each marked ``mesh_dominated`` or not (the modes at standstill;
-    the Campbell diagram, :mod:`thermogear.drivetrain.campbell`, follows their gyroscopic shift)."""
-    return [{"speed_rpm": 60.0 * row["frequency_hz"] / (j * teeth), "harmonic": j, "mode_hz": row["frequency_hz"],
-             "label": row["label"], "mesh_share": row["mesh_share"], "mesh_dominated": row["mesh_dominated"]}
-            for row in rows if row["mesh_share"] > MESH_COUPLED_SHARE for j in range(1, harmonics + 1)]
+    the Campbell diagram, :mod:`thermogear.drivetrain.campbell`, follows their gyroscopic shift). A train's further
+    ``stages`` (mesh name, teeth per input revolution z_p·n_p/n_1): the first pinion's speeds where their mesh
+    harmonics meet such a mode, each row naming its ``mesh``."""
+    found = [{"speed_rpm": 60.0 * row["frequency_hz"] / (j * teeth), "harmonic": j, "mode_hz": row["frequency_hz"],
+              "label": row["label"], "mesh_share": row["mesh_share"], "mesh_dominated": row["mesh_dominated"]}
+             for row in rows if row["mesh_share"] > MESH_COUPLED_SHARE for j in range(1, harmonics + 1)]
+    if stages:
+        for item in found:
+            item["mesh"] = MESH_NAME
+        found += [{"speed_rpm": 60.0 * row["frequency_hz"] / (j * per_turn), "harmonic": j,
+                   "mode_hz": row["frequency_hz"], "label": row["label"], "mesh_share": row["mesh_share"],
+                   "mesh_dominated": row["mesh_dominated"], "mesh": name}
+                  for name, per_turn in stages for row in rows if row["mesh_share"] > MESH_COUPLED_SHARE
+                  for j in range(1, harmonics + 1)]
+    return found
 
 
 @dataclass(frozen=True, eq=False)
@@ -140,7 +168,36 @@ class CaseDrivetrain:
     models: dict[str, MeshModel]
     notes: tuple[str, ...] = ()
     warm_moduli: Drivetrain | None = None
+    stage_models: dict[str, tuple[MeshModel, ...]] = field(default_factory=dict)
+    stage_speeds: tuple[float, ...] = ()
+    train_repeats: tuple[int, ...] = (1,)
+    train_phases: tuple[float, ...] = (0.0,)
     _assembled: dict = field(default_factory=dict, repr=False)
+
+    @property
+    def stages(self) -> tuple[tuple[str, float], ...]:
+        """The further stages of a train: (mesh name, its pinion's teeth × its speed per unit input speed)."""
+        return tuple((stage.name, model.gear_pair.pinion.teeth * factor) for stage, model, factor in zip(
+            self.section.stages, self.stage_models.get(ELASTIC, ()), self.stage_speeds))
+
+    def mesh_states(self, model: str, speed_rpm: float | None = None, points_per_period: int | None = None):
+        """The first mesh's state at a pinion speed [rpm] (default the case's), or for a train the
+        :class:`~thermogear.drivetrain.train.MeshTrain` of every stage's state at its own pinion speed."""
+        points = points_per_period or self.dynamics.points_per_period
+        first = self.models[model].state(speed_rpm=speed_rpm, points_per_period=points)
+        if not self.stage_speeds:
+            return first
+        from thermogear.drivetrain.train import MeshTrain
+
+        states = [first] + [stage.state(speed_rpm=first.speed_rpm * factor, points_per_period=points)
+                            for stage, factor in zip(self.stage_models[model], self.stage_speeds)]
+        return MeshTrain(tuple(states), self.train_repeats, self.train_phases)
+
+    def _single_mesh(self, what: str) -> None:
+        if self.stage_speeds:
+            raise CaseError("drivetrain.stages", [stage.name for stage in self.section.stages],
+                            f"none for the {what}", f"the {what} is solved for a single mesh; run the train with the "
+                            "linear mesh and the periodic method")
 
     @property
     def backlash_mesh(self) -> bool:
@@ -160,8 +217,7 @@ class CaseDrivetrain:
     def response(self, model: str, speed_rpm: float | None = None,
                  points_per_period: int | None = None) -> DrivetrainResponse:
         """Exact periodic response to one mesh period of ``model`` at a pinion speed [rpm] (default the case's)."""
-        state = self.models[model].state(speed_rpm=speed_rpm,
-                                         points_per_period=points_per_period or self.dynamics.points_per_period)
+        state = self.mesh_states(model, speed_rpm, points_per_period)
         return drivetrain_periodic_response(self.assembled(model), state, samples_per_piece=SAMPLES_PER_PIECE,
                                             cutoff_hz=self.section.response_cutoff_hz)
 
@@ -173,6 +229,7 @@ class CaseDrivetrain:
         linear cut-off's: 2.5e-4 on fzg_rig_type_c at 30 kHz; set the cut-off higher to approach every DOF)."""
         from thermogear.drivetrain.backlash_response import drivetrain_backlash_response
 
+        self._single_mesh("backlash orbit")
         state = self.models[model].state(speed_rpm=speed_rpm, points_per_period=self.dynamics.points_per_period)
         return drivetrain_backlash_response(self.assembled(model), state, initial_state,
                                             substeps=backlash_substeps(state.grid.nodes.size - 1),
@@ -184,6 +241,7 @@ class CaseDrivetrain:
         where the case's mesh is nonlinear, else in permanent contact."""
         from thermogear.drivetrain.transient_response import drivetrain_transient
 
+        self._single_mesh("motion from rest")
         state = self.models[model].state(points_per_period=self.dynamics.points_per_period)
         return drivetrain_transient(self.assembled(model), state, self.dynamics.transient_periods,
                                     backlash=self.backlash_mesh, samples_per_piece=SAMPLES_PER_PIECE)
@@ -198,7 +256,7 @@ class CaseDrivetrain:
         states = {}
         for index, speed in enumerate(speeds_rpm):
             try:
-                states[index] = self.models[model].state(speed_rpm=speed, points_per_period=points_per_period)
+                states[index] = self.mesh_states(model, speed, points_per_period)
             except failures as error:
                 results[index] = error
         assembled = self.assembled(model)
@@ -237,7 +295,12 @@ def case_drivetrain(case, models: tuple[str, ...] = (ELASTIC, THERMAL)) -> CaseD
     points = case.dynamics.points_per_period
     mesh_models = {name: MeshModel(case, name) for name in (ELASTIC, THERMAL)}  # the simulation models
     stiffness, damping = _mean_state(mesh_models[ELASTIC], points)
-    cold = drivetrain_from_section(section, case.gear_pair, case.material, stiffness, damping, case.inertias)
+    train = stage_train(case)
+    stage_models = {name: tuple(MeshModel(stage_case, name) for stage_case in train.cases) for name in (ELASTIC, THERMAL)}
+    cold_stages = tuple((stage.gear_pair, *_mean_state(model, points))
+                        for stage, model in zip(case.stages, stage_models[ELASTIC]))
+    cold = drivetrain_from_section(section, case.gear_pair, case.material, stiffness, damping, case.inertias,
+                                   cold_stages)
     drivetrains = {ELASTIC: cold}
     notes: list[str] = []
     warm_moduli = None
@@ -267,13 +330,17 @@ def case_drivetrain(case, models: tuple[str, ...] = (ELASTIC, THERMAL)) -> CaseD
             notes.append(f"drivetrain: {', '.join(defaulted)} taken at {tooth_c:g} °C in the warm state (the case's "
                          "bulk temperature, else 20 °C) with carbon steel's β_E; under the paper's thermal model "
                          "the mesh keeps its cold geometry, only its stiffness changes")
+        stage_stiffness = tuple(_mean_state(model, points)[0] for model in stage_models[THERMAL])
         warm = WarmState(temperatures, beta, mesh_stiffness=hot_stiffness, expansion_coefficient_per_k=expansion,
-                         **geometry)
+                         stage_mesh_stiffness=stage_stiffness, **geometry)
+        if stage_stiffness:
+            notes.append("drivetrain: the further stages' meshes take their hot mean stiffness in the warm state; "
+                         "their base radii and pressure angles stay cold in the mesh vectors")
         drivetrains[THERMAL] = warm_drivetrain(cold, warm)
         if expansion:
             warm_moduli = warm_drivetrain(cold, replace(warm, expansion_coefficient_per_k=0.0))
     return CaseDrivetrain(section, case.dynamics, case.gear_pair.pinion.teeth, drivetrains, mesh_models, tuple(notes),
-                          warm_moduli)
+                          warm_moduli, stage_models if case.stages else {}, train.speeds, train.repeats, train.phases)
 
 
 def drivetrain_builder(case, models: tuple[str, ...] = (ELASTIC, THERMAL)):

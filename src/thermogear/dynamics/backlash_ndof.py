@@ -91,6 +91,9 @@ class BacklashSystem:
 
     def __post_init__(self) -> None:
         n, pieces = self.linear.size, self.linear.nodes.size - 1
+        if self.linear.pattern_count != 1:
+            raise ProblemError("linear", f"{self.linear.pattern_count} meshes", "one mesh (one stiffness pattern)",
+                               "the backlash shooting follows the dead zone of a single mesh coordinate")
         object.__setattr__(self, "dead_zones", tuple(self.dead_zones))
         for zone in self.dead_zones:
             if not isinstance(zone, DeadZone) or zone.vector.shape != (n,):
