@@ -285,6 +285,11 @@ def _stage(section, model: CaseFile) -> GearStage:
     backlash, no jamming hot), under the case's material, temperatures and thermal model. A stage's own
     temperatures along its path are not given: the case's temperature must be uniform."""
     key = f"drivetrain.stages '{section.name}'.gears"
+    if model.dynamics.mesh != "linear" or model.dynamics.method == "transient":
+        raise CaseError("dynamics.mesh" if model.dynamics.mesh != "linear" else "dynamics.method",
+                        model.dynamics.mesh if model.dynamics.mesh != "linear" else model.dynamics.method,
+                        "'linear' mesh and a periodic method with [[drivetrain.stages]]",
+                        "the backlash orbit and the motion from rest of a drivetrain are solved for a single mesh")
     if model.temperature.model != "uniform":
         raise CaseError("temperature.model", model.temperature.model, "'uniform' with [[drivetrain.stages]]",
                         "a tabulated or computed flank temperature is given along the first stage's path of contact "

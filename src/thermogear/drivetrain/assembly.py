@@ -39,15 +39,20 @@ class Drivetrain:
     couplings: tuple[Coupling, ...] = ()
     meshes: tuple[GearMesh, ...] = ()
     torsional_supports: tuple[TorsionalSupport, ...] = ()
+    further_elements: tuple[StructureElement, ...] = ()  # elements of any other class with the element interface
 
     def __post_init__(self) -> None:
-        for key in ("shafts", "disks", "bearings", "couplings", "meshes", "torsional_supports"):
+        for key in ("shafts", "disks", "bearings", "couplings", "meshes", "torsional_supports", "further_elements"):
             object.__setattr__(self, key, tuple(getattr(self, key)))
         names = [shaft.name for shaft in self.shafts]
         if not names or len(set(names)) != len(names):
             raise CaseError("shafts", names, "at least one shaft, unique names", "shafts are found by name")
+        for item in self.further_elements:
+            if not isinstance(item, StructureElement):
+                raise CaseError("further_elements", type(item).__name__, "objects with the element interface",
+                                "thermogear.drivetrain.elements.StructureElement: locations, matrices, dead zones")
         element_names = [item.name for group in (self.disks, self.bearings, self.couplings, self.meshes,
-                                                 self.torsional_supports) for item in group]
+                                                 self.torsional_supports, self.further_elements) for item in group]
         duplicated = sorted({name for name in element_names if element_names.count(name) > 1} | (set(element_names) & set(names)))
         if duplicated:
             raise CaseError("element names", duplicated, "unique names (and not a shaft's name)",
@@ -60,6 +65,7 @@ class Drivetrain:
         points = [item.location for group in (self.disks, self.bearings, self.torsional_supports) for item in group]
         points += [point for coupling in self.couplings for point in (coupling.first, coupling.second)]
         points += [point for mesh in self.meshes for point in (mesh.gear_1, mesh.gear_2)]
+        points += [point for item in self.further_elements for point in item.locations]
         return points
 
     def speed_ratios(self) -> dict[str, float]:
@@ -95,7 +101,8 @@ class Drivetrain:
 
     def elements(self, meshed: dict[str, tuple[np.ndarray, list]] | None = None) -> tuple[StructureElement, ...]:
         """Every element behind the one interface (:mod:`thermogear.drivetrain.elements`), in assembly order: the
-        shafts' elements shaft by shaft, the disks, bearings, torsional supports, couplings and meshes."""
+        shafts' elements shaft by shaft, the disks, bearings, torsional supports, couplings, meshes and the
+        ``further_elements``."""
         meshed = self.nodes() if meshed is None else meshed
         placed = []
         for shaft in self.shafts:
@@ -104,7 +111,8 @@ class Drivetrain:
                                           NodeLocation(shaft.name, float(positions[number + 1])), element,
                                           shaft.material_damping)
                        for number, element in enumerate(elements)]
-        return (*placed, *self.disks, *self.bearings, *self.torsional_supports, *self.couplings, *self.meshes)
+        return (*placed, *self.disks, *self.bearings, *self.torsional_supports, *self.couplings, *self.meshes,
+                *self.further_elements)
 
     def assemble(self) -> AssembledDrivetrain:
         """Global matrices of the drivetrain (see :class:`AssembledDrivetrain`): one loop over :meth:`elements`,

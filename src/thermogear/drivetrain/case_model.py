@@ -41,7 +41,7 @@ if TYPE_CHECKING:
 
 __all__ = ["BACKLASH_SUBSTEPS_PER_PERIOD", "MESH_COUPLED_SHARE", "MESH_DOMINATED_SHARE",
            "CaseDrivetrain", "backlash_substeps", "bearing_force_summary", "case_drivetrain", "drivetrain_builder",
-           "drivetrain_results", "heat_table", "mode_table", "resonance_speeds"]
+           "drivetrain_results", "heat_table", "mode_table", "resonance_speeds", "stage_summary"]
 
 #: A mode is "mesh-dominated" when the mesh holds more than this share of its strain energy: a threshold chosen
 #: here (Velex & Berthe 1989 rank modes by this share; no source fixes a value). Kept low so that no mode the mesh
@@ -355,11 +355,24 @@ def drivetrain_builder(case, models: tuple[str, ...] = (ELASTIC, THERMAL)):
 def _response_summary(response: DrivetrainResponse, harmonics: int) -> dict[str, Any]:
     metrics = response.metrics
     multipliers = np.abs(response.multipliers)
-    return {"kv": metrics["kv"], "dte_rms_um": metrics["dte_rms"] * 1e6,
-            "dte_peak_to_peak_um": metrics["dte_peak_to_peak"] * 1e6,
-            "largest_floquet_multiplier_abs": float(multipliers.max()) if multipliers.size else None,
-            "stable": bool(multipliers.size == 0 or multipliers.max() < 1.0),
-            "bearing_forces": bearing_force_summary(response, harmonics)}
+    summary = {"kv": metrics["kv"], "dte_rms_um": metrics["dte_rms"] * 1e6,
+               "dte_peak_to_peak_um": metrics["dte_peak_to_peak"] * 1e6,
+               "largest_floquet_multiplier_abs": float(multipliers.max()) if multipliers.size else None,
+               "stable": bool(multipliers.size == 0 or multipliers.max() < 1.0),
+               "bearing_forces": bearing_force_summary(response, harmonics)}
+    if len(response.meshes) > 1:
+        summary["common_period_s"] = response.period
+        summary["stages"] = stage_summary(response)
+    return summary
+
+
+def stage_summary(response: DrivetrainResponse) -> dict[str, dict[str, Any]]:
+    """Per mesh of a train: Kv, DTE RMS and peak-to-peak [μm], the largest mesh force [N] and the mesh frequency
+    [Hz] over the common period."""
+    return {name: {"kv": item.metrics["kv"], "dte_rms_um": item.metrics["dte_rms"] * 1e6,
+                   "dte_peak_to_peak_um": item.metrics["dte_peak_to_peak"] * 1e6,
+                   "max_mesh_force_n": float(np.max(item.mesh_force)), "mesh_frequency_hz": 1.0 / item.mesh_period}
+            for name, item in response.meshes.items()}
 
 
 def heat_table(shifts: ModeShifts, drivetrain: Drivetrain) -> list[dict[str, Any]]:
@@ -456,7 +469,8 @@ def drivetrain_results(built: CaseDrivetrain, models: tuple[str, ...] = (ELASTIC
                 if parts is not None:
                     series[model] = parts
         result["models"][model] = {**summary, "modes": rows,
-                                   "resonances": resonance_speeds(rows, built.teeth, section.bearing_harmonics)}
+                                   "resonances": resonance_speeds(rows, built.teeth, section.bearing_harmonics,
+                                                                  built.stages)}
     if ELASTIC in models and THERMAL in models:
         result["heat"] = heat_table(built.heat_shifts(), built.drivetrains[ELASTIC])
     return result

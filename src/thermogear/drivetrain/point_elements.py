@@ -23,10 +23,10 @@ from thermogear.errors import CaseError
 if TYPE_CHECKING:
     from thermogear.dynamics.backlash_ndof import DeadZone
 
-__all__ = ["NodeLocation", "RigidDisk", "Bearing", "Coupling", "TorsionalSupport"]
+__all__ = ["NodeLocation", "OneNodeElement", "RigidDisk", "Bearing", "Coupling", "TorsionalSupport"]
 
 
-class _OneNode:
+class OneNodeElement:
     """The members of the element interface (:mod:`thermogear.drivetrain.elements`) shared by the elements that
     sit on one node (``location``): no mass, stiffness, damping, gyroscopic matrix, dead zone or mesh vector unless
     the element gives its own."""
@@ -93,7 +93,7 @@ class NodeLocation:
 
 
 @dataclass(frozen=True)
-class RigidDisk(_OneNode):
+class RigidDisk(OneNodeElement):
     """A rigid body on a shaft node: mass [kg], polar and diametral moments of inertia [kg·m²]."""
 
     name: str
@@ -140,7 +140,7 @@ class RigidDisk(_OneNode):
 
 
 @dataclass(frozen=True)
-class Bearing(_OneNode):
+class Bearing(OneNodeElement):
     """A linear bearing from a shaft node to rigid ground: stiffness [N/m] and damping [N·s/m] in x, y and z.
 
     ``stiffness_xy``/``damping_xy`` are cross-coupling terms (k_xy = k_yx; non-symmetric bearings are out of scope).
@@ -209,7 +209,7 @@ class Bearing(_OneNode):
 
 
 @dataclass(frozen=True)
-class Coupling(_OneNode):
+class Coupling(OneNodeElement):
     """Springs and dashpots between two nodes (on different shafts, or a node and another on the same line).
 
     ``torsional_stiffness`` [N·m/rad] and ``torsional_damping`` [N·m·s/rad] act on θ; the optional
@@ -264,7 +264,7 @@ class Coupling(_OneNode):
 
 
 @dataclass(frozen=True)
-class TorsionalSupport(_OneNode):
+class TorsionalSupport(OneNodeElement):
     """A torsional spring and dashpot from a node to ground: a motor held at speed by its speed controller
     (stiffness [N·m/rad] and damping [N·m·s/rad] from the drive's speed-loop gains). It removes the torsional
     rigid-body mode of the train physically, instead of reducing the equations on its complement."""
