@@ -182,6 +182,7 @@ def _integrated_to_steady_state(system: PiecewiseLinearSystem, periods: int, sam
     return np.vstack(recorded)
 
 
+@pytest.mark.slow
 def test_the_reducer_periodic_response_equals_solve_ivp_integrated_to_steady_state():
     built = _reducer()
     assembled = built.assembled("elastic")
@@ -205,6 +206,7 @@ def test_the_reducer_periodic_response_equals_solve_ivp_integrated_to_steady_sta
         assert np.ptp(expected) > 1e-3 * np.abs(expected).max()  # a real dynamic part, not only the static one
 
 
+@pytest.mark.slow
 def test_a_rigid_second_mesh_leaves_the_first_stage_alone_on_a_structure_where_the_second_is_locked():
     """The limit of one stage made rigid: with the second mesh's k(τ) scaled up, the first stage's response tends to
     that of the first mesh alone (the single-mesh solver) on the same structure with the second mesh as a constant
@@ -263,6 +265,15 @@ def test_a_rigid_second_mesh_leaves_the_first_stage_alone_on_a_structure_where_t
         errors.append(np.abs(delta - reference.transmission_error).max() / np.ptp(reference.transmission_error))
     # the second mesh's variation acts through its tiny deflection: the difference falls as the mesh stiffens
     assert errors[1] < 1e-3 and errors[1] < 0.1 * errors[0], errors
+
+
+def test_a_coupling_that_contradicts_the_meshes_is_refused_by_the_drivetrain_too():
+    from thermogear.drivetrain import Coupling
+
+    drivetrain = _reducer().drivetrains["elastic"]
+    jam = Coupling("jam", NodeLocation("input shaft", 0.0), NodeLocation("output shaft", 0.0), 1e4)
+    with pytest.raises(CaseError, match="conflicting speed ratios"):
+        replace(drivetrain, couplings=(jam,)).speed_ratios()
 
 
 # ------------------------------------------------------------------------------------- topology refused at load
@@ -340,3 +351,34 @@ def test_a_wrong_stage_is_refused_at_load(change, key, words):
         _load(_reducer_with(change))
     text = str(caught.value)
     assert key in text and words in text, text
+
+
+# ------------------------------------------------------------------- the 1-DOF pair: the degenerate drivetrain
+@pytest.mark.parametrize("name", ["luo2019", "fzg_type_c"])
+def test_the_rigid_pair_as_a_drivetrain_equals_the_compiled_one_degree_of_freedom_solver(name):
+    """Two rigid gears on rigid supports through the drivetrain's route (M, w, torque pair, rigid rotation removed,
+    the n-DOF exact periodic solver) give the 1-DOF pair's orbit from its compiled closed-form kernels."""
+    from thermogear.drivetrain.rigid_pair import RigidPair
+    from thermogear.dynamics.periodic import periodic_steady_state
+    from thermogear.mesh.model import MeshModel
+    from thermogear.involute import disc_polar_inertia
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        case = load_case(name)
+        state = MeshModel(case, "elastic").state(points_per_period=64)
+    pair = case.gear_pair
+    inertias = case.inertias or tuple(
+        disc_polar_inertia(case.material.density, radius, gear.bore_radius, gear.face_width)
+        for gear, radius in zip((pair.pinion, pair.wheel), pair.operating_pitch_radii))
+    rigid = RigidPair(*inertias, pair.pinion.base_radius, pair.wheel.base_radius)
+    assert rigid.mesh_mass == pytest.approx(state.mass, rel=1e-12)  # m_e of Eq. 5 from the matrices
+    assert rigid.mesh_structure().is_scalar_mesh  # the compiled route
+    problem = state.problem()
+    system, reduction = rigid.periodic_system(problem, state.normal_load)
+    general = periodic_response(system, 4)
+    delta = reduction.expand(general.displacement.T).T @ rigid.mesh_vector()
+    compiled = periodic_steady_state(problem, samples_per_interval=4)
+    np.testing.assert_allclose(delta, compiled.displacement, rtol=0.0, atol=1e-9 * np.abs(compiled.displacement).max())
+    np.testing.assert_allclose(np.sort(np.abs(general.multipliers)), np.sort(np.abs(compiled.multipliers)),
+                               rtol=1e-8)

@@ -89,6 +89,10 @@ class Drivetrain:
                     ratios[two], changed = ratios[one] * ratio, True
                 elif two in ratios and one not in ratios:
                     ratios[one], changed = ratios[two] / ratio, True
+                elif one in ratios and abs(ratios[two] - ratios[one] * ratio) > 1e-9 * abs(ratios[two]):
+                    raise CaseError(f"link {one} → {two}", ratio, f"{ratios[two] / ratios[one]:.6g} (the speed ratio "
+                                    "the other links give)", "a link between shafts whose speeds the gears already "
+                                    "fix to differ would jam the train (conflicting speed ratios)")
         return {name: ratios.get(name, 1.0) for name in names}
 
     def nodes(self) -> dict[str, tuple[np.ndarray, list]]:
