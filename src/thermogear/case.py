@@ -32,7 +32,8 @@ from thermogear.schema.base import StrictTypeError
 from thermogear.schema import (CaseFile, DampingSection, DrivetrainSection, DynamicsSection, FemSection, GearboxSection,
                                GearsSection, HousingSection, LubricantSection, MaterialSection, TemperatureSection,
                                ThermalSection)
-from thermogear.schema.drivetrain import check_drivetrain_fits_gears, check_drivetrain_train
+from thermogear.schema.drivetrain import check_drivetrain_fits_gears
+from thermogear.schema.drivetrain_topology import check_drivetrain_train
 from thermogear.temperature_field import (check_temperatures, default_bulk_temperature,
                                          temperature_field_from_section)
 from thermogear.thermal_model_rules import thermal_model_rules

@@ -19,7 +19,7 @@ from thermogear.drivetrain.layout import Shaft, ShaftSegment
 from thermogear.drivetrain.mesh_element import GearMesh
 from thermogear.drivetrain.point_elements import Bearing, Coupling, NodeLocation, RigidDisk, TorsionalSupport
 from thermogear.drivetrain.section import CrossSection, Material
-from thermogear.schema.drivetrain import shaft_speed_ratios
+from thermogear.schema.drivetrain_topology import shaft_speed_ratios
 
 __all__ = ["drivetrain_from_section", "MESH_NAME"]
 

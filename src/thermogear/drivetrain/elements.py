@@ -28,7 +28,6 @@ import numpy as np
 from thermogear.drivetrain.shaft_element import ShaftElement
 
 if TYPE_CHECKING:
-    from thermogear.drivetrain.point_elements import NodeLocation
     from thermogear.dynamics.backlash_ndof import DeadZone
 
 __all__ = ["PlacedShaftElement", "StructureElement", "zero_matrix"]
@@ -39,7 +38,7 @@ class StructureElement(Protocol):
     """What the assembly asks of an element (module docstring)."""
 
     @property
-    def locations(self) -> tuple[NodeLocation, ...]:
+    def locations(self) -> tuple:
         """The nodes it sits on, in the order of its matrices' DOF blocks."""
 
     @property
@@ -80,13 +79,13 @@ class PlacedShaftElement:
     shaft, with the shaft's stiffness-proportional material damping β [s] (C = β·K)."""
 
     shaft: str
-    first: NodeLocation
-    second: NodeLocation
+    first: object  # NodeLocation (point_elements), not imported: point_elements imports this module
+    second: object
     element: ShaftElement
     material_damping: float = 0.0
 
     @property
-    def locations(self) -> tuple[NodeLocation, ...]:
+    def locations(self) -> tuple:
         """Its two nodes."""
         return (self.first, self.second)
 

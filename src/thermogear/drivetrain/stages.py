@@ -14,7 +14,7 @@ from dataclasses import dataclass, replace
 from fractions import Fraction
 
 from thermogear.drivetrain.train import common_period_repeats
-from thermogear.schema.drivetrain import shaft_speed_ratios
+from thermogear.schema.drivetrain_topology import shaft_speed_ratios
 
 __all__ = ["StageTrain", "stage_train"]
 

@@ -58,9 +58,8 @@ class DeadZone:
                 raise ProblemError(f"dead_zone.{key}", value, ">= 0, finite", "a spring, dashpot and gap of a contact")
 
     def engaged(self, value: np.ndarray, rate: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """The dead-zone law on samples of u = vᵀq [m] and u̇ [m/s]: the spring's stretch u ∓ δ beyond ±δ (0
-        inside) and the rate where in contact (0 inside); the element's force along v is −(k·stretch + c·rate).
-        The one place the clearance law is written for outputs (the solver's regions follow :meth:`side`)."""
+        """The dead-zone law on samples of u = vᵀq [m], u̇ [m/s]: the stretch u ∓ δ beyond ±δ and the rate in contact
+        (0 inside); the force along v is −(k·stretch + c·rate) (written once; the solver's regions: :meth:`side`)."""
         value, rate = np.asarray(value, dtype=float), np.asarray(rate, dtype=float)
         beyond = np.abs(value) > self.clearance
         return (np.where(beyond, value - np.sign(value) * self.clearance, 0.0),
@@ -91,9 +90,8 @@ class BacklashSystem:
 
     def __post_init__(self) -> None:
         n, pieces = self.linear.size, self.linear.nodes.size - 1
-        if self.linear.pattern_count != 1:
-            raise ProblemError("linear", f"{self.linear.pattern_count} meshes", "one mesh (one stiffness pattern)",
-                               "the backlash shooting follows the dead zone of a single mesh coordinate")
+        if self.linear.pattern_count != 1:  # the shooting follows one mesh coordinate's dead zone
+            raise ProblemError("linear", f"{self.linear.pattern_count} meshes", "one mesh", "one backlash coordinate")
         object.__setattr__(self, "dead_zones", tuple(self.dead_zones))
         for zone in self.dead_zones:
             if not isinstance(zone, DeadZone) or zone.vector.shape != (n,):

@@ -57,7 +57,7 @@ _FAILURES = (ModelLimitError, CaseError, np.linalg.LinAlgError)
 
 
 def _point(response, harmonics: int) -> dict[str, Any]:
-    from thermogear.drivetrain.case_model import bearing_force_summary
+    from thermogear.drivetrain.result_tables import bearing_force_summary
 
     if isinstance(response, np.linalg.LinAlgError):  # e.g. a transition matrix that overflowed at a tiny speed
         return {"status": f"not computed: the periodic solve failed ({response})"}
@@ -72,7 +72,7 @@ def _point(response, harmonics: int) -> dict[str, Any]:
              "bearing_rms": [forces[name]["dynamic_rms_n"] for name in forces],
              "bearing_harmonics": [forces[name]["harmonic_amplitude_n"] for name in forces]}
     if len(response.meshes) > 1:  # a train: each mesh's Kv, DTE RMS and largest force (stage order)
-        from thermogear.drivetrain.case_model import stage_summary
+        from thermogear.drivetrain.result_tables import stage_summary
 
         stages = stage_summary(response).values()
         point.update({f"stage_{key}": [item[key] for item in stages]
@@ -145,7 +145,7 @@ def drivetrain_speed_sweep(built, origin: SweepOrigin, speeds: np.ndarray, model
 
     import xarray as xr
 
-    from thermogear.drivetrain.case_model import mode_table, resonance_speeds
+    from thermogear.drivetrain.result_tables import mode_table, resonance_speeds
 
     speeds = np.asarray(speeds, dtype=float)
     if speeds.ndim != 1 or speeds.size == 0 or np.any(speeds <= 0.0) or not np.all(np.isfinite(speeds)):
