@@ -159,7 +159,7 @@ def drivetrain_speed_sweep(built, origin: SweepOrigin, speeds: np.ndarray, model
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         resonances = {model: [r for r in resonance_speeds(mode_table(built.modes(model), built.drivetrains[model]),
-                                                          built.teeth, section.bearing_harmonics)
+                                                          built.teeth, section.bearing_harmonics, built.stages)
                               if speeds.min() <= r["speed_rpm"] <= speeds.max()] for model in models}
     bearings = [bearing.name for bearing in built.drivetrains["elastic"].bearings]
     chunks = [speeds[i:i + _SPEEDS_PER_TASK].tolist() for i in range(0, speeds.size, _SPEEDS_PER_TASK)]
