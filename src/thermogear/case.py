@@ -34,11 +34,24 @@ from thermogear.schema import (CaseFile, DampingSection, DrivetrainSection, Dyna
                                TemperatureSection,
                                ThermalSection)
 from thermogear.schema.drivetrain import check_drivetrain_fits_gears
+from thermogear.schema.drivetrain_topology import check_drivetrain_train
 from thermogear.temperature_field import (check_temperatures, default_bulk_temperature,
                                          temperature_field_from_section)
 from thermogear.thermal_model_rules import thermal_model_rules
 from thermogear.text_files import is_existing_file, path_exists, read_user_text
 from thermogear.thermoelastic.inputs import check_thermoelastic_inputs
+from thermogear.involute import disc_polar_inertia
+
+
+@dataclass(frozen=True)
+class GearStage:
+    """A further gear pair of a drivetrain ([[drivetrain.stages]]): its name, cold pair, [gears]-like input and
+    composite roughness Ra [m]."""
+
+    name: str
+    gear_pair: GearPair
+    gears_input: GearsSection
+    roughness_ra: float
 
 
 @dataclass(frozen=True)
@@ -74,6 +87,7 @@ class Case:
     notes: tuple[str, ...] = ()
     gearbox: GearboxSection | None = None  # the gearbox around the pair (thermogear.gearbox), optional
     drivetrain: DrivetrainSection | None = None  # shafts, bearings, couplings (thermogear.drivetrain), optional
+    stages: tuple[GearStage, ...] = ()  # the drivetrain's further gear pairs ([[drivetrain.stages]]), in order
 
     @property
     def directory(self) -> Path | None:
@@ -271,13 +285,8 @@ def _check_thermal_inputs(case: "Case") -> None:
                         "x_te_source = 'calibrated' needs the target stiffness drop")
 
 
-def case_from_document(document: dict[str, Any], source: str = "<memory>") -> Case:
-    """Validate a case document (the parsed TOML) and build the components."""
-    try:
-        model = CaseFile.model_validate(document)
-    except pydantic.ValidationError as error:
-        raise case_error_from_validation(error) from None
-    gears = model.gears
+def _gear_pair(gears: GearsSection) -> GearPair:
+    """The cold gear pair of a [gears] section (or a stage's gears)."""
     angle = math.radians(gears.pressure_angle_deg)
 
     def gear(section) -> Gear:
@@ -293,13 +302,58 @@ def case_from_document(document: dict[str, Any], source: str = "<memory>") -> Ca
     centre = None if gears.centre_distance_mm is None else gears.centre_distance_mm * 1e-3
     check_profile_shift_sum(gears)
     try:
-        pair = GearPair.create(gear(gears.pinion), gear(gears.wheel), centre, tip_shortening=gears.tip_shortening)
+        return GearPair.create(gear(gears.pinion), gear(gears.wheel), centre, tip_shortening=gears.tip_shortening)
     except CaseError as error:  # the geometry names its keys within [gears]: the case file's key is gears.<key>
         raise type(error)(_gears_key(error.key), error.value, error.allowed, error.reason) from None
+
+
+def _stage(section, model: CaseFile) -> GearStage:
+    """A further stage of a drivetrain: its pair, checked as the first stage's is (profile shifts, tip reliefs,
+    backlash, no jamming hot), under the case's material, temperatures and thermal model. A stage's own
+    temperatures along its path are not given: the case's temperature must be uniform."""
+    key = f"drivetrain.stages '{section.name}'.gears"
+    if model.dynamics.mesh != "linear" or model.dynamics.method == "transient":
+        raise CaseError("dynamics.mesh" if model.dynamics.mesh != "linear" else "dynamics.method",
+                        model.dynamics.mesh if model.dynamics.mesh != "linear" else model.dynamics.method,
+                        "'linear' mesh and a periodic method with [[drivetrain.stages]]",
+                        "the backlash orbit and the motion from rest of a drivetrain are solved for a single mesh")
+    if model.temperature.model != "uniform":
+        raise CaseError("temperature.model", model.temperature.model, "'uniform' with [[drivetrain.stages]]",
+                        "a tabulated or computed flank temperature is given along the first stage's path of contact "
+                        "only; the further stages take the uniform bulk temperature")
+    if any(getattr(section.gears, name).inertia_kg_m2 is not None for name in ("pinion", "wheel")):
+        raise CaseError(f"{key}.pinion.inertia_kg_m2", "given", "absent (the gear bodies are annuli)",
+                        "a stage's gear bodies are the annuli of their pitch circles on the shafts")
+    pair = _gear_pair(section.gears)
+    check_thermoelastic_inputs(pair, model.model_copy(update={"gears": section.gears}))
+    return GearStage(name=section.name, gear_pair=pair, gears_input=section.gears,
+                     roughness_ra=section.gears.roughness_ra_um * 1e-6)
+
+
+def case_from_document(document: dict[str, Any], source: str = "<memory>") -> Case:
+    """Validate a case document (the parsed TOML) and build the components."""
+    try:
+        model = CaseFile.model_validate(document)
+    except pydantic.ValidationError as error:
+        raise case_error_from_validation(error) from None
+    gears = model.gears
+    pair = _gear_pair(gears)
     check_thermoelastic_inputs(pair, model)
+    stages = ()
     if model.drivetrain is not None:  # the gears' seats on their shafts (the drivetrain is built by its resolver)
+        stages = tuple(_stage(stage, model) for stage in model.drivetrain.stages)
+        seats = tuple((f"stages '{stage.name}' {name}", point, gear.bore_radius * 1e3, gear.root_radius * 1e3)
+                      for stage, section in zip(stages, model.drivetrain.stages)
+                      for name, point, gear in (("pinion", section.pinion, stage.gear_pair.pinion),
+                                                ("wheel", section.wheel, stage.gear_pair.wheel)))
         check_drivetrain_fits_gears(model.drivetrain, (pair.pinion.bore_radius * 1e3, pair.wheel.bore_radius * 1e3),
-                                    (pair.pinion.root_radius * 1e3, pair.wheel.root_radius * 1e3))
+                                    (pair.pinion.root_radius * 1e3, pair.wheel.root_radius * 1e3), seats)
+        density = model.material.density_kg_m3
+        inertias = [(f"{stage} {name}", disc_polar_inertia(density, radius, item.bore_radius, item.face_width))
+                    for stage, stage_pair in (("first stage", pair), *((stage.name, stage.gear_pair) for stage in stages))
+                    for name, item, radius in zip(("pinion", "wheel"), (stage_pair.pinion, stage_pair.wheel),
+                                                  stage_pair.operating_pitch_radii)]
+        check_drivetrain_train(model.drivetrain, (gears.pinion.teeth, gears.wheel.teeth), inertias)
     material = model.material
     op = model.operating
     if op.power_kw is not None:
@@ -324,7 +378,8 @@ def case_from_document(document: dict[str, Any], source: str = "<memory>") -> Ca
         operating_point=operating, roughness_ra=gears.roughness_ra_um * 1e-6, inertias=inertias,
         lubricant=model.lubricant, temperature=temperature, thermal=model.thermal, damping=model.damping,
         dynamics=model.dynamics, fem=model.fem, source=source, document=document, housing=model.housing,
-        gears_input=gears, material_input=material, notes=notes, gearbox=model.gearbox, drivetrain=model.drivetrain)
+        gears_input=gears, material_input=material, notes=notes, gearbox=model.gearbox, drivetrain=model.drivetrain,
+        stages=stages)
     if case.temperature.model not in ("uniform", "tabulated", "fem"):  # predicted at load time (see below)
         case = _resolve_temperature_model(case)
     check_case(case)

@@ -78,3 +78,17 @@ def test_the_example_of_adding_a_model_runs(capsys, monkeypatch):
 def test_the_page_cites_no_internal_file():
     text = PAGE.read_text(encoding="utf-8")
     assert "/work/" not in text and "design.md" not in text
+
+
+def test_the_example_of_adding_a_structure_element_runs(capsys, monkeypatch):
+    text = PAGE.read_text(encoding="utf-8").split("## Adding a structure element", 1)[1].split("\n## ", 1)[0]
+    blocks = re.findall(r"```python\n(.*?)```", text, flags=re.DOTALL)
+    assert len(blocks) == 1
+    module = types.ModuleType("architecture_element_example")  # dataclasses need their module in sys.modules
+    monkeypatch.setitem(sys.modules, module.__name__, module)
+    exec(compile(blocks[0], "architecture.md", "exec"), module.__dict__)
+    printed = capsys.readouterr().out
+    # four modes in Hz and the spring's largest strain-energy share: the new element is in the assembled stiffness
+    assert printed.count(" Hz") == 4
+    share = float(printed.split()[-1])
+    assert 0.0 < share <= 1.0

@@ -80,6 +80,13 @@ def print_drivetrain(data: dict[str, Any] | None, console) -> None:
         rows.append(("largest |Floquet multiplier|", "largest_floquet_multiplier_abs", "{:.4f}", "–"))
     for label, key, pattern, unit in rows:
         response.add_row(label, *(_number(model[key], pattern) for model in models.values()), unit)
+    for stage in first.get("stages", {}):  # a train: each mesh over the common period
+        response.add_section()
+        for label, key, pattern, unit in (("Kv", "kv", "{:.4f}", "–"), ("DTE RMS", "dte_rms_um", "{:.3f}", "μm"),
+                                          ("DTE peak-to-peak", "dte_peak_to_peak_um", "{:.3f}", "μm"),
+                                          ("largest mesh force", "max_mesh_force_n", "{:.1f}", "N")):
+            response.add_row(f"{stage}: {label}", *(_number(model["stages"][stage][key], pattern)
+                                                    for model in models.values()), unit)
     if data.get("backlash_mesh"):
         response.add_row("time without contact", *(_number(_percent(model["contact_loss_fraction"]), "{:.2f}")
                                                    for model in models.values()), "%")
@@ -93,7 +100,8 @@ def print_drivetrain(data: dict[str, Any] | None, console) -> None:
         response.add_row(f"{bearing}: mean radial", *(_number(f["mean_radial_n"]) for f in forces.values()), "N")
         response.add_row(f"{bearing}: dynamic RMS", *(_number(f["dynamic_rms_n"]) for f in forces.values()), "N")
         for j, frequency in enumerate(next(iter(forces.values()))["harmonic_hz"]):
-            response.add_row(f"{bearing}: {j + 1}× mesh ({frequency:.0f} Hz)",
+            line = f"mesh harmonic {frequency:.0f} Hz" if "stages" in first else f"{j + 1}× mesh ({frequency:.0f} Hz)"
+            response.add_row(f"{bearing}: {line}",
                              *(_number(f["harmonic_amplitude_n"][j], "{:.2f}") for f in forces.values()), "N")
     console.print(response)
     _print_warm_state(data.get("warm_state"), console)

@@ -10,14 +10,19 @@ multiplied by Ω [rad/s] (Friswell et al. 2010, Eq. 5.88: M q̈ + (C + ΩG) q̇ 
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
+from typing import TYPE_CHECKING
 
 import numpy as np
 
+from thermogear.drivetrain.elements import PlacedShaftElement, StructureElement
 from thermogear.drivetrain.layout import Shaft, node_index, shaft_mesh
 from thermogear.drivetrain.mesh_element import GearMesh
 from thermogear.drivetrain.point_elements import Bearing, Coupling, NodeLocation, RigidDisk, TorsionalSupport
 from thermogear.errors import CaseError
+
+if TYPE_CHECKING:
+    from thermogear.dynamics.backlash_ndof import DeadZone
 
 __all__ = ["Drivetrain", "AssembledDrivetrain", "DOF_NAMES"]
 
@@ -34,15 +39,20 @@ class Drivetrain:
     couplings: tuple[Coupling, ...] = ()
     meshes: tuple[GearMesh, ...] = ()
     torsional_supports: tuple[TorsionalSupport, ...] = ()
+    further_elements: tuple[StructureElement, ...] = ()  # elements of any other class with the element interface
 
     def __post_init__(self) -> None:
-        for key in ("shafts", "disks", "bearings", "couplings", "meshes", "torsional_supports"):
+        for key in ("shafts", "disks", "bearings", "couplings", "meshes", "torsional_supports", "further_elements"):
             object.__setattr__(self, key, tuple(getattr(self, key)))
         names = [shaft.name for shaft in self.shafts]
         if not names or len(set(names)) != len(names):
             raise CaseError("shafts", names, "at least one shaft, unique names", "shafts are found by name")
+        for item in self.further_elements:
+            if not isinstance(item, StructureElement):
+                raise CaseError("further_elements", type(item).__name__, "objects with the element interface",
+                                "thermogear.drivetrain.elements.StructureElement: locations, matrices, dead zones")
         element_names = [item.name for group in (self.disks, self.bearings, self.couplings, self.meshes,
-                                                 self.torsional_supports) for item in group]
+                                                 self.torsional_supports, self.further_elements) for item in group]
         duplicated = sorted({name for name in element_names if element_names.count(name) > 1} | (set(element_names) & set(names)))
         if duplicated:
             raise CaseError("element names", duplicated, "unique names (and not a shaft's name)",
@@ -55,6 +65,7 @@ class Drivetrain:
         points = [item.location for group in (self.disks, self.bearings, self.torsional_supports) for item in group]
         points += [point for coupling in self.couplings for point in (coupling.first, coupling.second)]
         points += [point for mesh in self.meshes for point in (mesh.gear_1, mesh.gear_2)]
+        points += [point for item in self.further_elements for point in item.locations]
         return points
 
     def speed_ratios(self) -> dict[str, float]:
@@ -78,17 +89,43 @@ class Drivetrain:
                     ratios[two], changed = ratios[one] * ratio, True
                 elif two in ratios and one not in ratios:
                     ratios[one], changed = ratios[two] / ratio, True
+                elif one in ratios and abs(ratios[two] - ratios[one] * ratio) > 1e-9 * abs(ratios[two]):
+                    raise CaseError(f"link {one} → {two}", ratio, f"{ratios[two] / ratios[one]:.6g} (the speed ratio "
+                                    "the other links give)", "a link between shafts whose speeds the gears already "
+                                    "fix to differ would jam the train (conflicting speed ratios)")
         return {name: ratios.get(name, 1.0) for name in names}
 
-    def assemble(self) -> AssembledDrivetrain:
-        """Global matrices of the drivetrain (see :class:`AssembledDrivetrain`)."""
+    def nodes(self) -> dict[str, tuple[np.ndarray, list]]:
+        """Per shaft: its node positions [m] and its Timoshenko elements between consecutive nodes (nodes at the
+        segment ends and every attachment, :func:`~thermogear.drivetrain.layout.shaft_mesh`)."""
         attachments: dict[str, list[float]] = {shaft.name: [] for shaft in self.shafts}
         for location in self._locations():
             attachments[location.shaft].append(float(location.position))
-        nodes, offsets, elements = {}, {}, {}
-        count = 0
+        return {shaft.name: shaft_mesh(shaft, attachments[shaft.name]) for shaft in self.shafts}
+
+    def elements(self, meshed: dict[str, tuple[np.ndarray, list]] | None = None) -> tuple[StructureElement, ...]:
+        """Every element behind the one interface (:mod:`thermogear.drivetrain.elements`), in assembly order: the
+        shafts' elements shaft by shaft, the disks, bearings, torsional supports, couplings, meshes and the
+        ``further_elements``."""
+        meshed = self.nodes() if meshed is None else meshed
+        placed = []
         for shaft in self.shafts:
-            nodes[shaft.name], elements[shaft.name] = shaft_mesh(shaft, attachments[shaft.name])
+            positions, elements = meshed[shaft.name]
+            placed += [PlacedShaftElement(shaft.name, NodeLocation(shaft.name, float(positions[number])),
+                                          NodeLocation(shaft.name, float(positions[number + 1])), element,
+                                          shaft.material_damping)
+                       for number, element in enumerate(elements)]
+        return (*placed, *self.disks, *self.bearings, *self.torsional_supports, *self.couplings, *self.meshes,
+                *self.further_elements)
+
+    def assemble(self) -> AssembledDrivetrain:
+        """Global matrices of the drivetrain (see :class:`AssembledDrivetrain`): one loop over :meth:`elements`,
+        each element's blocks added on its nodes' DOFs, its stiffness to its energy group, its dead zones and mesh
+        vector placed in the global DOFs."""
+        meshed = self.nodes()
+        nodes, offsets, count = {}, {}, 0
+        for shaft in self.shafts:
+            nodes[shaft.name] = meshed[shaft.name][0]
             offsets[shaft.name] = count
             count += nodes[shaft.name].size
         size = 6 * count
@@ -99,49 +136,33 @@ class Drivetrain:
 
         mass, damping, gyroscopic = np.zeros((size, size)), np.zeros((size, size)), np.zeros((size, size))
         groups: dict[str, np.ndarray] = {}
+        vectors, zones, mesh_names = [], [], []
         ratios = self.speed_ratios()
-        for shaft in self.shafts:
-            stiffness = np.zeros((size, size))
-            for number, element in enumerate(elements[shaft.name]):
-                first = 6 * (offsets[shaft.name] + number)
-                block = np.ix_(np.arange(first, first + 12), np.arange(first, first + 12))
-                stiffness[block] += element.stiffness()
-                mass[block] += element.mass()
-                gyroscopic[block] += ratios[shaft.name] * element.gyroscopic()
-            groups[shaft.name] = stiffness
-            if shaft.material_damping:
-                damping += shaft.material_damping * stiffness
-        for disk in self.disks:
-            block = np.ix_(dofs(disk.location), dofs(disk.location))
-            mass[block] += disk.mass_matrix()
-            gyroscopic[block] += ratios[disk.location.shaft] * disk.gyroscopic()
-        for bearing in self.bearings:
-            stiffness = np.zeros((size, size))
-            block = np.ix_(dofs(bearing.location), dofs(bearing.location))
-            stiffness[block] = bearing.stiffness_matrix()
-            damping[block] += bearing.damping_matrix()
-            groups[bearing.name] = stiffness
-        for support in self.torsional_supports:
-            stiffness = np.zeros((size, size))
-            theta = dofs(support.location)[5]
-            stiffness[theta, theta] = support.stiffness
-            damping[theta, theta] += support.damping
-            groups[support.name] = stiffness
-        for coupling in self.couplings:
-            stiffness = np.zeros((size, size))
-            both = np.concatenate([dofs(coupling.first), dofs(coupling.second)])
-            stiffness[np.ix_(both, both)] += coupling.stiffness_matrix()
-            damping[np.ix_(both, both)] += coupling.damping_matrix()
-            groups[coupling.name] = stiffness
-        mesh_vectors = np.zeros((len(self.meshes), size))
-        for number, mesh in enumerate(self.meshes):
-            both = np.concatenate([dofs(mesh.gear_1), dofs(mesh.gear_2)])
-            mesh_vectors[number, both] += mesh.vector()
+        for element in self.elements(meshed):
+            where = np.concatenate([dofs(location) for location in element.locations])
+            block = np.ix_(where, where)
+            vector = element.mesh_vector()
+            if vector is not None:  # a mesh: its stiffness is its state's, k(τ)·w wᵀ
+                full = np.zeros(size)
+                full[where] += vector
+                vectors.append(full)
+                mesh_names.append(element.name)
+                continue
+            mass[block] += element.mass_matrix()
+            damping[block] += element.damping_matrix()
+            gyroscopic[block] += ratios[element.spin_shaft] * element.gyroscopic_matrix()
+            if element.energy_group is not None:
+                groups.setdefault(element.energy_group, np.zeros((size, size)))[block] += element.stiffness_matrix()
+            for zone in element.dead_zones():
+                full = np.zeros(size)
+                full[where] = zone.vector
+                zones.append((element.name, replace(zone, vector=full)))
         structure = sum(groups.values(), np.zeros((size, size)))
         return AssembledDrivetrain(
             drivetrain=self, node_positions=nodes, node_offsets=offsets, mass=mass, structure_stiffness=structure,
-            structure_damping=damping, gyroscopic=gyroscopic, mesh_vectors=mesh_vectors, stiffness_groups=groups,
-            speed_ratios=ratios)
+            structure_damping=damping, gyroscopic=gyroscopic,
+            mesh_vectors=np.array(vectors) if vectors else np.zeros((0, size)), stiffness_groups=groups,
+            speed_ratios=ratios, dead_zones=tuple(zones))
 
 
 @dataclass(frozen=True, eq=False)
@@ -151,7 +172,8 @@ class AssembledDrivetrain:
     ``structure_stiffness`` and ``structure_damping`` hold shafts, bearings, couplings and torsional supports (no
     mesh); ``mesh_vectors`` (meshes, DOFs) the w of each mesh; ``stiffness_groups`` one matrix per shaft, bearing,
     coupling and support by name (they add up to ``structure_stiffness``); ``gyroscopic`` is per unit reference
-    speed [rad/s].
+    speed [rad/s]; ``dead_zones`` (element name, dead zone on the global DOFs) of every element with one, in
+    element order (a bearing's clearance: x, then y).
     """
 
     drivetrain: Drivetrain
@@ -164,6 +186,7 @@ class AssembledDrivetrain:
     mesh_vectors: np.ndarray
     stiffness_groups: dict[str, np.ndarray]
     speed_ratios: dict[str, float]
+    dead_zones: tuple[tuple[str, DeadZone], ...] = ()
     _cache: dict = field(default_factory=dict, repr=False, compare=False)
 
     @property

@@ -19,6 +19,7 @@ from thermogear.drivetrain.layout import Shaft, ShaftSegment
 from thermogear.drivetrain.mesh_element import GearMesh
 from thermogear.drivetrain.point_elements import Bearing, Coupling, NodeLocation, RigidDisk, TorsionalSupport
 from thermogear.drivetrain.section import CrossSection, Material
+from thermogear.schema.drivetrain_topology import shaft_speed_ratios
 
 __all__ = ["drivetrain_from_section", "MESH_NAME"]
 
@@ -55,12 +56,14 @@ def _gear_body(name: str, point, gear, pitch_radius: float, seat_diameter: float
 
 
 def drivetrain_from_section(section, pair, material, mesh_stiffness: float, mesh_damping: float = 0.0,
-                            inertias: tuple[float, float] | None = None) -> Drivetrain:
+                            inertias: tuple[float, float] | None = None, stages: tuple = ()) -> Drivetrain:
     """The drivetrain of a ``[drivetrain]`` section (:class:`~thermogear.schema.drivetrain.DrivetrainSection`)
     around ``pair`` (a :class:`~thermogear.geometry.GearPair`: base radii, operating pressure angle and pitch radii,
     bores, face widths) with the case's ``material`` (E [Pa], ν, ρ [kg/m³]; the gear bodies' density and the
     shafts' default), the mean mesh stiffness [N/m] and damping [N·s/m], and the gears' polar ``inertias``
-    [kg·m²] where the case gives them."""
+    [kg·m²] where the case gives them. ``stages``: per further stage of ``section.stages``, (its pair, mean mesh
+    stiffness [N/m], mean damping [N·s/m]); its mesh is named after the stage, its gear bodies "<stage> pinion" and
+    "<stage> wheel", and its turning sense follows from the shaft its pinion sits on."""
     ordered = sorted(section.shafts, key=lambda shaft: shaft.name != section.pinion.shaft)  # pinion shaft first
     shafts = []
     for shaft_section in ordered:
@@ -75,6 +78,22 @@ def drivetrain_from_section(section, pair, material, mesh_stiffness: float, mesh
         seat = by_name[point.shaft].outer_diameter_at(point.position_mm) * _MM
         bodies.append(_gear_body(name, point, gear, pitch, seat, material.density,
                                  None if inertias is None else inertias[index]))
+    speeds = shaft_speed_ratios(section, (pair.pinion.teeth, pair.wheel.teeth)) if stages else {}
+    sense = 1 if section.pinion_rotation == "counter-clockwise" else -1
+    stage_meshes = []
+    for stage_section, (stage_pair, stiffness, damping) in zip(section.stages, stages):
+        pitch_1, pitch_2 = stage_pair.operating_pitch_radii
+        for gear_name, point, gear, pitch in (("pinion", stage_section.pinion, stage_pair.pinion, pitch_1),
+                                              ("wheel", stage_section.wheel, stage_pair.wheel, pitch_2)):
+            seat = by_name[point.shaft].outer_diameter_at(point.position_mm) * _MM
+            bodies.append(_gear_body(f"{stage_section.name} {gear_name}", point, gear, pitch, seat, material.density,
+                                     None))
+        stage_meshes.append(GearMesh(
+            stage_section.name, NodeLocation(stage_section.pinion.shaft, stage_section.pinion.position_mm * _MM),
+            NodeLocation(stage_section.wheel.shaft, stage_section.wheel.position_mm * _MM),
+            stage_pair.pinion.base_radius, stage_pair.wheel.base_radius, stage_pair.operating_pressure_angle,
+            stiffness, damping, math.radians(stage_section.centre_line_angle_deg),
+            sense if speeds[stage_section.pinion.shaft] > 0 else -sense))
     disks = [RigidDisk(disk.name, NodeLocation(disk.shaft, disk.position_mm * _MM), disk.mass_kg,
                        disk.polar_inertia_kg_m2, disk.diametral_inertia_kg_m2
                        if disk.diametral_inertia_kg_m2 is not None else disk.polar_inertia_kg_m2 / 2.0)
@@ -96,5 +115,5 @@ def drivetrain_from_section(section, pair, material, mesh_stiffness: float, mesh
                     pair.wheel.base_radius, pair.operating_pressure_angle, mesh_stiffness, mesh_damping,
                     math.radians(section.centre_line_angle_deg),
                     1 if section.pinion_rotation == "counter-clockwise" else -1)
-    return Drivetrain(tuple(shafts), (*bodies, *disks), tuple(bearings), tuple(couplings), (mesh,),
+    return Drivetrain(tuple(shafts), (*bodies, *disks), tuple(bearings), tuple(couplings), (mesh, *stage_meshes),
                       tuple(supports))

@@ -27,12 +27,16 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from thermogear.drivetrain.assembly import Drivetrain
-from thermogear.drivetrain.case_layout import MESH_NAME, drivetrain_from_section
+from thermogear.drivetrain.case_layout import drivetrain_from_section
 from thermogear.drivetrain.heat import ModeShifts, WarmState, thermal_mode_shifts, warm_drivetrain
 from thermogear.drivetrain.heat_source import drivetrain_heat_of
+from thermogear.drivetrain.stages import stage_train
 from thermogear.drivetrain.warm_state import operating_clearances, shaft_temperatures, with_clearances
 from thermogear.drivetrain.modes import DrivetrainModes, drivetrain_modes
 from thermogear.drivetrain.response import DrivetrainResponse, drivetrain_periodic_response, drivetrain_speed_sweep
+from thermogear.drivetrain.result_tables import (MESH_COUPLED_SHARE, MESH_DOMINATED_SHARE, SPECTRUM_POINTS,  # noqa: F401
+                                                 bearing_force_summary, heat_table, mode_table, resonance_speeds,
+                                                 stage_summary)
 from thermogear.mesh.model_names import ELASTIC, THERMAL
 from thermogear.errors import CaseError
 from thermogear.mesh.model import MeshModel
@@ -44,16 +48,7 @@ if TYPE_CHECKING:
 
 __all__ = ["BACKLASH_SUBSTEPS_PER_PERIOD", "MESH_COUPLED_SHARE", "MESH_DOMINATED_SHARE",
            "CaseDrivetrain", "backlash_substeps", "bearing_force_summary", "case_drivetrain", "drivetrain_builder",
-           "drivetrain_results", "heat_table", "mode_table", "resonance_speeds"]
-
-#: A mode is "mesh-dominated" when the mesh holds more than this share of its strain energy: a threshold chosen
-#: here (Velex & Berthe 1989 rank modes by this share; no source fixes a value). Kept low so that no mode the mesh
-#: excites noticeably is left unmarked.
-MESH_DOMINATED_SHARE = 0.1
-#: Modes with a smaller mesh share still respond to the mesh where a harmonic meets them: lateral modes of a few
-#: per cent mesh share carry the largest bearing forces (the FZG rig set: 3–4 % share, bearing-force peaks 4×
-#: the torsional mode's). Their crossings are listed too, marked not mesh-dominated. A threshold chosen here.
-MESH_COUPLED_SHARE = 0.01
+           "drivetrain_results", "heat_table", "mode_table", "resonance_speeds", "stage_summary"]
 
 #: Samples per mesh-grid interval of the periodic response (the bearing-force RMS is a trapezoidal integral over
 #: them; the harmonics come from the exact orbit resampled uniformly).
@@ -69,64 +64,6 @@ def backlash_substeps(pieces: int) -> int:
     :data:`SAMPLES_PER_PIECE` (the samples then fall on the flow's own sub-step ends, at no cost)."""
     wanted = math.ceil(BACKLASH_SUBSTEPS_PER_PERIOD / max(pieces, 1))
     return SAMPLES_PER_PIECE * max(1, math.ceil(wanted / SAMPLES_PER_PIECE))
-
-
-#: Uniform samples per period for the bearing-force harmonics (the first mesh harmonics need far fewer).
-SPECTRUM_POINTS = 256
-
-
-def _group(name: str, drivetrain: Drivetrain) -> str:
-    if name == MESH_NAME:
-        return "mesh"
-    for kind, items in (("bearings", drivetrain.bearings), ("couplings", drivetrain.couplings),
-                        ("supports", drivetrain.torsional_supports), ("shafts", drivetrain.shafts)):
-        if any(item.name == name for item in items):
-            return kind
-    return "other"
-
-
-def mode_table(modes: DrivetrainModes, drivetrain: Drivetrain) -> list[dict[str, Any]]:
-    """One dict per mode: frequency [Hz], label, mesh share, the shares grouped (mesh, bearings, shafts, couplings,
-    supports) and per element, and whether the mesh dominates it (share > :data:`MESH_DOMINATED_SHARE`)."""
-    rows = []
-    for index, frequency in enumerate(modes.frequencies_hz):
-        shares = {name: float(values[index]) for name, values in modes.strain_energy_shares.items()}
-        grouped: dict[str, float] = {}
-        for name, value in shares.items():
-            kind = _group(name, drivetrain)
-            grouped[kind] = grouped.get(kind, 0.0) + value
-        rows.append({"frequency_hz": float(frequency), "label": modes.labels[index],
-                     "mesh_share": shares.get(MESH_NAME, 0.0), "energy_shares": grouped,
-                     "element_shares": shares, "mesh_dominated": shares.get(MESH_NAME, 0.0) > MESH_DOMINATED_SHARE})
-    return rows
-
-
-def bearing_force_summary(response: DrivetrainResponse, harmonics: int) -> dict[str, dict[str, Any]]:
-    """Per bearing: the mean radial force [N], the RMS of the dynamic radial force |F − F̄| over the period [N]
-    (trapezoidal rule on the solver's samples, a jump being a segment of zero width) and the radial amplitude
-    √(X_j² + Y_j²) of mesh harmonics j = 1…``harmonics`` [N] with their frequencies [Hz]."""
-    summary = {}
-    time = response.time
-    for name, force in response.bearing_forces.items():
-        radial = force[:, :2]
-        mean = np.trapezoid(radial, time, axis=0) / (time[-1] - time[0])
-        dynamic = np.sum((radial - mean) ** 2, axis=1)
-        rms = math.sqrt(float(np.trapezoid(dynamic, time)) / (time[-1] - time[0]))
-        frequencies, amplitudes = response.bearing_spectrum(name, points=SPECTRUM_POINTS)
-        radial_amplitudes = np.hypot(amplitudes[0], amplitudes[1])
-        summary[name] = {"mean_radial_n": float(np.hypot(*mean)), "dynamic_rms_n": rms,
-                         "harmonic_hz": [float(f) for f in frequencies[1:harmonics + 1]],
-                         "harmonic_amplitude_n": [float(a) for a in radial_amplitudes[1:harmonics + 1]]}
-    return summary
-
-
-def resonance_speeds(rows: list[dict[str, Any]], teeth: int, harmonics: int) -> list[dict[str, Any]]:
-    """Pinion speeds [rpm] at which mesh harmonic j meets a mode with a mesh share above
-    :data:`MESH_COUPLED_SHARE`: n = 60·f/(j·z1), each marked ``mesh_dominated`` or not (the modes at standstill;
-    the Campbell diagram, :mod:`thermogear.drivetrain.campbell`, follows their gyroscopic shift)."""
-    return [{"speed_rpm": 60.0 * row["frequency_hz"] / (j * teeth), "harmonic": j, "mode_hz": row["frequency_hz"],
-             "label": row["label"], "mesh_share": row["mesh_share"], "mesh_dominated": row["mesh_dominated"]}
-            for row in rows if row["mesh_share"] > MESH_COUPLED_SHARE for j in range(1, harmonics + 1)]
 
 
 @dataclass(frozen=True, eq=False)
@@ -145,8 +82,37 @@ class CaseDrivetrain:
     models: dict[str, MeshModel]
     notes: tuple[str, ...] = ()
     warm_moduli: Drivetrain | None = None
+    stage_models: dict[str, tuple[MeshModel, ...]] = field(default_factory=dict)
+    stage_speeds: tuple[float, ...] = ()
+    train_repeats: tuple[int, ...] = (1,)
+    train_phases: tuple[float, ...] = (0.0,)
     _assembled: dict = field(default_factory=dict, repr=False)
     warm_state: dict = field(default_factory=dict)
+
+    @property
+    def stages(self) -> tuple[tuple[str, float], ...]:
+        """The further stages of a train: (mesh name, its pinion's teeth × its speed per unit input speed)."""
+        return tuple((stage.name, model.gear_pair.pinion.teeth * factor) for stage, model, factor in zip(
+            self.section.stages, self.stage_models.get(ELASTIC, ()), self.stage_speeds))
+
+    def mesh_states(self, model: str, speed_rpm: float | None = None, points_per_period: int | None = None):
+        """The first mesh's state at a pinion speed [rpm] (default the case's), or for a train the
+        :class:`~thermogear.drivetrain.train.MeshTrain` of every stage's state at its own pinion speed."""
+        points = points_per_period or self.dynamics.points_per_period
+        first = self.models[model].state(speed_rpm=speed_rpm, points_per_period=points)
+        if not self.stage_speeds:
+            return first
+        from thermogear.drivetrain.train import MeshTrain
+
+        states = [first] + [stage.state(speed_rpm=first.speed_rpm * factor, points_per_period=points)
+                            for stage, factor in zip(self.stage_models[model], self.stage_speeds)]
+        return MeshTrain(tuple(states), self.train_repeats, self.train_phases)
+
+    def _single_mesh(self, what: str) -> None:
+        if self.stage_speeds:
+            raise CaseError("drivetrain.stages", [stage.name for stage in self.section.stages],
+                            f"none for the {what}", f"the {what} is solved for a single mesh; run the train with the "
+                            "linear mesh and the periodic method")
 
     @property
     def backlash_mesh(self) -> bool:
@@ -166,8 +132,7 @@ class CaseDrivetrain:
     def response(self, model: str, speed_rpm: float | None = None,
                  points_per_period: int | None = None) -> DrivetrainResponse:
         """Exact periodic response to one mesh period of ``model`` at a pinion speed [rpm] (default the case's)."""
-        state = self.models[model].state(speed_rpm=speed_rpm,
-                                         points_per_period=points_per_period or self.dynamics.points_per_period)
+        state = self.mesh_states(model, speed_rpm, points_per_period)
         return drivetrain_periodic_response(self.assembled(model), state, samples_per_piece=SAMPLES_PER_PIECE,
                                             cutoff_hz=self.section.response_cutoff_hz)
 
@@ -179,6 +144,7 @@ class CaseDrivetrain:
         linear cut-off's: 2.5e-4 on fzg_rig_type_c at 30 kHz; set the cut-off higher to approach every DOF)."""
         from thermogear.drivetrain.backlash_response import drivetrain_backlash_response
 
+        self._single_mesh("backlash orbit")
         state = self.models[model].state(speed_rpm=speed_rpm, points_per_period=self.dynamics.points_per_period)
         return drivetrain_backlash_response(self.assembled(model), state, initial_state,
                                             substeps=backlash_substeps(state.grid.nodes.size - 1),
@@ -190,6 +156,7 @@ class CaseDrivetrain:
         where the case's mesh is nonlinear, else in permanent contact."""
         from thermogear.drivetrain.transient_response import drivetrain_transient
 
+        self._single_mesh("motion from rest")
         state = self.models[model].state(points_per_period=self.dynamics.points_per_period)
         return drivetrain_transient(self.assembled(model), state, self.dynamics.transient_periods,
                                     backlash=self.backlash_mesh, samples_per_piece=SAMPLES_PER_PIECE)
@@ -204,7 +171,7 @@ class CaseDrivetrain:
         states = {}
         for index, speed in enumerate(speeds_rpm):
             try:
-                states[index] = self.models[model].state(speed_rpm=speed, points_per_period=points_per_period)
+                states[index] = self.mesh_states(model, speed, points_per_period)
             except failures as error:
                 results[index] = error
         assembled = self.assembled(model)
@@ -243,7 +210,12 @@ def case_drivetrain(case, models: tuple[str, ...] = (ELASTIC, THERMAL)) -> CaseD
     points = case.dynamics.points_per_period
     mesh_models = {name: MeshModel(case, name) for name in (ELASTIC, THERMAL)}  # the simulation models
     stiffness, damping = _mean_state(mesh_models[ELASTIC], points)
-    cold = drivetrain_from_section(section, case.gear_pair, case.material, stiffness, damping, case.inertias)
+    train = stage_train(case)
+    stage_models = {name: tuple(MeshModel(stage_case, name) for stage_case in train.cases) for name in (ELASTIC, THERMAL)}
+    cold_stages = tuple((stage.gear_pair, *_mean_state(model, points))
+                        for stage, model in zip(case.stages, stage_models[ELASTIC]))
+    cold = drivetrain_from_section(section, case.gear_pair, case.material, stiffness, damping, case.inertias,
+                                   cold_stages)
     drivetrains = {ELASTIC: cold}
     notes: list[str] = []
     warm_moduli, warm_state = None, {}
@@ -266,15 +238,20 @@ def case_drivetrain(case, models: tuple[str, ...] = (ELASTIC, THERMAL)) -> CaseD
         heat = drivetrain_heat_of(case)
         temperatures, warm_state, note = shaft_temperatures(section, tooth_c, heat, thermoelastic is not None)
         notes += [note] if note else []
+        stage_stiffness = tuple(_mean_state(model, points)[0] for model in stage_models[THERMAL])
         warm = WarmState(temperatures, beta, mesh_stiffness=hot_stiffness, expansion_coefficient_per_k=expansion,
-                         **geometry)
+                         stage_mesh_stiffness=stage_stiffness, **geometry)
+        if stage_stiffness:
+            notes.append("drivetrain: the further stages' meshes take their hot mean stiffness in the warm state; "
+                         "their base radii and pressure angles stay cold in the mesh vectors")
         clearances = operating_clearances(section, heat, warm_state, notes)
         drivetrains[THERMAL] = with_clearances(warm_drivetrain(cold, warm), clearances)
         if expansion:
             warm_moduli = with_clearances(warm_drivetrain(cold, replace(warm, expansion_coefficient_per_k=0.0)),
                                           clearances)
     return CaseDrivetrain(section, case.dynamics, case.gear_pair.pinion.teeth, drivetrains, mesh_models, tuple(notes),
-                          warm_moduli, warm_state=warm_state)
+                          warm_moduli, stage_models if case.stages else {}, train.speeds, train.repeats, train.phases,
+                          warm_state=warm_state)
 
 
 def drivetrain_builder(case, models: tuple[str, ...] = (ELASTIC, THERMAL)):
@@ -289,24 +266,15 @@ def drivetrain_builder(case, models: tuple[str, ...] = (ELASTIC, THERMAL)):
 def _response_summary(response: DrivetrainResponse, harmonics: int) -> dict[str, Any]:
     metrics = response.metrics
     multipliers = np.abs(response.multipliers)
-    return {"kv": metrics["kv"], "dte_rms_um": metrics["dte_rms"] * 1e6,
-            "dte_peak_to_peak_um": metrics["dte_peak_to_peak"] * 1e6,
-            "largest_floquet_multiplier_abs": float(multipliers.max()) if multipliers.size else None,
-            "stable": bool(multipliers.size == 0 or multipliers.max() < 1.0),
-            "bearing_forces": bearing_force_summary(response, harmonics)}
-
-
-def heat_table(shifts: ModeShifts, drivetrain: Drivetrain) -> list[dict[str, Any]]:
-    """Per mode: cold and hot frequency [Hz], the exact shift and its first-order sum [%], and the causes [%]
-    (each shaft's E(T), the mesh stiffness, the mesh geometry; causes that moved nothing are left out)."""
-    shafts = {shaft.name for shaft in drivetrain.shafts}
-    names = {name: (f"{name} E(T)" if name in shafts else name) for name in shifts.contributions}
-    moving = [name for name, values in shifts.contributions.items() if np.any(values != 0.0)]
-    return [{"cold_hz": float(shifts.cold_hz[i]), "hot_hz": float(shifts.hot_hz[i]), "label": shifts.labels[i],
-             "shift_percent": 100.0 * float(shifts.exact[i]), "first_order_percent": 100.0 * float(
-                 shifts.first_order[i]),
-             "causes_percent": {names[name]: 100.0 * float(shifts.contributions[name][i]) for name in moving},
-             "dominant_cause": names[shifts.dominant_cause(i)]} for i in range(shifts.exact.size)]
+    summary = {"kv": metrics["kv"], "dte_rms_um": metrics["dte_rms"] * 1e6,
+               "dte_peak_to_peak_um": metrics["dte_peak_to_peak"] * 1e6,
+               "largest_floquet_multiplier_abs": float(multipliers.max()) if multipliers.size else None,
+               "stable": bool(multipliers.size == 0 or multipliers.max() < 1.0),
+               "bearing_forces": bearing_force_summary(response, harmonics)}
+    if len(response.meshes) > 1:
+        summary["common_period_s"] = response.period
+        summary["stages"] = stage_summary(response)
+    return summary
 
 
 def _backlash_summary(response: DrivetrainBacklashResponse, harmonics: int) -> dict[str, Any]:
@@ -390,7 +358,8 @@ def drivetrain_results(built: CaseDrivetrain, models: tuple[str, ...] = (ELASTIC
                 if parts is not None:
                     series[model] = parts
         result["models"][model] = {**summary, "modes": rows,
-                                   "resonances": resonance_speeds(rows, built.teeth, section.bearing_harmonics)}
+                                   "resonances": resonance_speeds(rows, built.teeth, section.bearing_harmonics,
+                                                                  built.stages)}
     if ELASTIC in models and THERMAL in models:
         result["heat"] = heat_table(built.heat_shifts(), built.drivetrains[ELASTIC])
     return result

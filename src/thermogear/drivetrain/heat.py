@@ -50,7 +50,8 @@ class WarmState:
     """What heat changes: ``shaft_temperature_c`` shaft name → uniform temperature [°C] (others stay at 20 °C);
     ``modulus_coefficient_per_k`` β_E [1/K]; the hot mesh's ``mesh_stiffness`` [N/m], ``base_radius_1``,
     ``base_radius_2`` [m] and ``operating_pressure_angle`` [rad] (None keeps the cold value);
-    ``expansion_coefficient_per_k`` λ [1/K] of the shafts and the disks on them (0: no expansion)."""
+    ``expansion_coefficient_per_k`` λ [1/K] of the shafts and the disks on them (0: no expansion);
+    ``stage_mesh_stiffness`` the hot mean stiffness [N/m] of a train's further meshes, in order."""
 
     shaft_temperature_c: Mapping[str, float]
     modulus_coefficient_per_k: float
@@ -59,6 +60,7 @@ class WarmState:
     base_radius_2: float | None = None
     operating_pressure_angle: float | None = None
     expansion_coefficient_per_k: float = 0.0
+    stage_mesh_stiffness: tuple[float, ...] = ()
 
     def __post_init__(self) -> None:
         if not 0.0 <= float(self.expansion_coefficient_per_k) <= 5e-5:
@@ -98,6 +100,8 @@ def warm_drivetrain(drivetrain: Drivetrain, warm: WarmState) -> Drivetrain:
         if warm.mesh_stiffness is not None:
             changes["stiffness"] = warm.mesh_stiffness
         meshes[0] = replace(meshes[0], **changes)
+        for index, stiffness in enumerate(warm.stage_mesh_stiffness, start=1):
+            meshes[index] = replace(meshes[index], stiffness=stiffness)
     warm_moduli = replace(drivetrain, shafts=tuple(shafts), meshes=tuple(meshes))
     strains = {shaft.name: warm.expansion_coefficient_per_k
                * (warm.shaft_temperature_c.get(shaft.name, MODULUS_REFERENCE_C) - MODULUS_REFERENCE_C)

@@ -22,6 +22,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from thermogear.drivetrain.elements import zero_matrix
 from thermogear.drivetrain.point_elements import NodeLocation
 from thermogear.errors import CaseError
 
@@ -85,6 +86,37 @@ class GearMesh:
         """Driving torque on gear 1 and load torque on gear 2 [N·m], global sense, in equilibrium with W [N]."""
         s = self.rotation_sense
         return s * self.base_radius_1 * normal_load, s * self.base_radius_2 * normal_load
+
+    # the element interface (thermogear.drivetrain.elements): the mesh's stiffness, damping, excitation and backlash
+    # are its mesh state's, acting through w; its constant matrices are zero
+    @property
+    def locations(self) -> tuple[NodeLocation, ...]:
+        """Gear 1's node, gear 2's node."""
+        return (self.gear_1, self.gear_2)
+
+    @property
+    def spin_shaft(self) -> str:
+        """Gear 1's shaft (the mesh has no gyroscopic matrix)."""
+        return self.gear_1.shaft
+
+    @property
+    def energy_group(self) -> str:
+        """Its name (its strain energy k̄(wᵀφ)² is reported from its mean stiffness)."""
+        return self.name
+
+    def mass_matrix(self) -> np.ndarray:
+        """12×12 zero (the gear bodies are disks)."""
+        return zero_matrix(2)
+
+    stiffness_matrix = damping_matrix = gyroscopic_matrix = mass_matrix
+
+    def dead_zones(self) -> tuple:
+        """None here: the backlash is a dead zone of width given by the mesh state, built with it."""
+        return ()
+
+    def mesh_vector(self) -> np.ndarray:
+        """w (12,), :meth:`vector`."""
+        return self.vector()
 
     @property
     def speed_ratio(self) -> float:

@@ -13,11 +13,62 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from typing import TYPE_CHECKING
+
 import numpy as np
 
+from thermogear.drivetrain.elements import zero_matrix
 from thermogear.errors import CaseError
 
-__all__ = ["NodeLocation", "RigidDisk", "Bearing", "Coupling", "TorsionalSupport"]
+if TYPE_CHECKING:
+    from thermogear.dynamics.backlash_ndof import DeadZone
+
+__all__ = ["NodeLocation", "OneNodeElement", "RigidDisk", "Bearing", "Coupling", "TorsionalSupport"]
+
+
+class OneNodeElement:
+    """The members of the element interface (:mod:`thermogear.drivetrain.elements`) shared by the elements that
+    sit on one node (``location``): no mass, stiffness, damping, gyroscopic matrix, dead zone or mesh vector unless
+    the element gives its own."""
+
+    @property
+    def locations(self) -> tuple[NodeLocation, ...]:
+        """Its node."""
+        return (self.location,)
+
+    @property
+    def spin_shaft(self) -> str:
+        """The shaft it sits on."""
+        return self.location.shaft
+
+    @property
+    def energy_group(self) -> str | None:
+        """Its own name."""
+        return self.name
+
+    def mass_matrix(self) -> np.ndarray:
+        """6×6 zero mass."""
+        return zero_matrix()
+
+    def stiffness_matrix(self) -> np.ndarray:
+        """6×6 zero stiffness."""
+        return zero_matrix()
+
+    def damping_matrix(self) -> np.ndarray:
+        """6×6 zero damping."""
+        return zero_matrix()
+
+    def gyroscopic_matrix(self) -> np.ndarray:
+        """6×6 zero gyroscopic matrix."""
+        return zero_matrix()
+
+    def dead_zones(self) -> tuple:
+        """None: linear."""
+        return ()
+
+    def mesh_vector(self) -> None:
+        """None: constant stiffness."""
+        return None
 
 
 def _non_negative(key: str, value: float) -> float:
@@ -42,7 +93,7 @@ class NodeLocation:
 
 
 @dataclass(frozen=True)
-class RigidDisk:
+class RigidDisk(OneNodeElement):
     """A rigid body on a shaft node: mass [kg], polar and diametral moments of inertia [kg·m²]."""
 
     name: str
@@ -80,9 +131,16 @@ class RigidDisk:
         matrix[4, 3] = -self.polar_inertia
         return matrix
 
+    gyroscopic_matrix = gyroscopic
+
+    @property
+    def energy_group(self) -> None:
+        """None: a rigid body stores no strain energy."""
+        return None
+
 
 @dataclass(frozen=True)
-class Bearing:
+class Bearing(OneNodeElement):
     """A linear bearing from a shaft node to rigid ground: stiffness [N/m] and damping [N·s/m] in x, y and z.
 
     ``stiffness_xy``/``damping_xy`` are cross-coupling terms (k_xy = k_yx; non-symmetric bearings are out of scope).
@@ -127,9 +185,31 @@ class Bearing:
                           [0.0, 0.0, self.damping_z]]
         return matrix
 
+    def dead_zones(self) -> tuple[DeadZone, ...]:
+        """The radial clearance δ as one dead zone in x and one in y on the node's DOFs (none without a
+        clearance): the bearing's spring and dashpot of that direction act beyond ±δ."""
+        from thermogear.dynamics.backlash_ndof import DeadZone
+
+        if self.radial_clearance <= 0.0:
+            return ()
+        return tuple(DeadZone(np.eye(6)[axis], stiffness, damping, self.radial_clearance)
+                     for axis, stiffness, damping in ((0, self.stiffness_x, self.damping_x),
+                                                      (1, self.stiffness_y, self.damping_y)))
+
+    def housing_force(self, displacement: np.ndarray, velocity: np.ndarray, clearance: bool = True) -> np.ndarray:
+        """Force on the housing (S, 3) [N] in x, y, z from the node's translations and their rates (S, 3) [m, m/s]:
+        K·u + C·u̇, each direction x, y of a clearance taken by its dead zone's law (zero for |u| <= δ, k(u ∓ δ) +
+        c·u̇ beyond; ``clearance`` False: in contact throughout, as the linear system solves it). The one place
+        the bearing's law is read."""
+        u, rate = np.array(displacement, dtype=float), np.array(velocity, dtype=float)
+        if clearance:  # no x–y coupling with a clearance (refused at construction)
+            for axis, zone in enumerate(self.dead_zones()):
+                u[:, axis], rate[:, axis] = zone.engaged(u[:, axis], rate[:, axis])
+        return u @ self.stiffness_matrix()[:3, :3].T + rate @ self.damping_matrix()[:3, :3].T
+
 
 @dataclass(frozen=True)
-class Coupling:
+class Coupling(OneNodeElement):
     """Springs and dashpots between two nodes (on different shafts, or a node and another on the same line).
 
     ``torsional_stiffness`` [N·m/rad] and ``torsional_damping`` [N·m·s/rad] act on θ; the optional
@@ -164,9 +244,27 @@ class Coupling:
         """12×12 damping on (first node DOFs, second node DOFs)."""
         return self._two_node(np.array([0.0, 0.0, 0.0, 0.0, 0.0, self.torsional_damping]))
 
+    @property
+    def locations(self) -> tuple[NodeLocation, ...]:
+        """Its two nodes."""
+        return (self.first, self.second)
+
+    @property
+    def spin_shaft(self) -> str:
+        """The first node's shaft (a coupling has no gyroscopic matrix)."""
+        return self.first.shaft
+
+    def mass_matrix(self) -> np.ndarray:
+        """12×12 zero (its hubs are disks)."""
+        return zero_matrix(2)
+
+    def gyroscopic_matrix(self) -> np.ndarray:
+        """12×12 zero."""
+        return zero_matrix(2)
+
 
 @dataclass(frozen=True)
-class TorsionalSupport:
+class TorsionalSupport(OneNodeElement):
     """A torsional spring and dashpot from a node to ground: a motor held at speed by its speed controller
     (stiffness [N·m/rad] and damping [N·m·s/rad] from the drive's speed-loop gains). It removes the torsional
     rigid-body mode of the train physically, instead of reducing the equations on its complement."""
@@ -179,3 +277,15 @@ class TorsionalSupport:
     def __post_init__(self) -> None:
         _non_negative(f"{self.name}.stiffness", self.stiffness)
         _non_negative(f"{self.name}.damping", self.damping)
+
+    def stiffness_matrix(self) -> np.ndarray:
+        """6×6: the torsional spring to ground on θ."""
+        matrix = zero_matrix()
+        matrix[5, 5] = self.stiffness
+        return matrix
+
+    def damping_matrix(self) -> np.ndarray:
+        """6×6: the dashpot to ground on θ."""
+        matrix = zero_matrix()
+        matrix[5, 5] = self.damping
+        return matrix

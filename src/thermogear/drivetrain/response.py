@@ -18,14 +18,15 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
 
 from thermogear.drivetrain.assembly import AssembledDrivetrain
 from thermogear.drivetrain.static_state import mesh_torque_forces
-from thermogear.dynamics.backlash_ndof import BacklashSystem, DeadZone
+from thermogear.drivetrain.train import MeshTrain, TrainGrid, train_grid
+from thermogear.dynamics.backlash_ndof import BacklashSystem
 from thermogear.dynamics.metrics import compute_metrics
 from thermogear.dynamics.periodic_ndof import PiecewiseLinearSystem, periodic_response
 from thermogear.dynamics.rigid_body import RigidBodyReduction, rigid_body_reduction
@@ -33,49 +34,73 @@ from thermogear.dynamics.spectra import harmonic_spectrum
 from thermogear.errors import CaseError
 from thermogear.mesh.state import MeshState
 
-__all__ = ["DrivetrainResponse", "bearing_force_spectrum", "bearing_forces", "drivetrain_backlash_system", "drivetrain_periodic_system",
+__all__ = ["DrivetrainResponse", "MeshResponse", "bearing_force_spectrum", "bearing_forces", "drivetrain_backlash_system", "drivetrain_periodic_system",
            "drivetrain_periodic_response", "drivetrain_speed_sweep"]
 
 
 def drivetrain_periodic_system(assembled: AssembledDrivetrain,
-                               state: MeshState) -> tuple[PiecewiseLinearSystem, RigidBodyReduction]:
-    """The reduced piecewise-constant system of one mesh period and the reduction q = Q p.
+                               state: MeshState | MeshTrain) -> tuple[PiecewiseLinearSystem, RigidBodyReduction]:
+    """The reduced piecewise-constant system of one period and the reduction q = Q p.
 
-    The drivetrain's single mesh takes the state's k(τ), c(τ), deviations and load; its gear 1 (the pinion) must
-    sit on the first shaft, whose speed is the state's pinion speed (for the gyroscopic terms).
+    One mesh takes the state's k(τ), c(τ), deviations and load over one mesh period; several take a
+    :class:`~thermogear.drivetrain.train.MeshTrain` (one state per mesh) over the train's common period, the mesh
+    terms summed (:mod:`thermogear.drivetrain.train`). The first mesh's gear 1 must sit on the first shaft, whose
+    speed is the first state's pinion speed (for the gyroscopic terms).
     """
-    return _periodic_system(assembled, state, state.problem(), None)
+    train = _as_train(assembled, state)
+    problems = tuple(item.problem() for item in train.states)
+    return _periodic_system(assembled, train, problems, _grid(train, problems), None)
 
 
-def _periodic_system(assembled: AssembledDrivetrain, state: MeshState, problem,
-                     reduction: RigidBodyReduction | None) -> tuple[PiecewiseLinearSystem, RigidBodyReduction]:
-    """:func:`drivetrain_periodic_system` with the state's problem given and, optionally, a rigid-body reduction
-    from another state of the same drivetrain: Q depends only on M and the rigid modes, which no mesh state
-    changes (the mesh stiffness joins the shafts whatever its value), so sharing it across speeds is exact."""
+def _as_train(assembled: AssembledDrivetrain, state: MeshState | MeshTrain) -> MeshTrain:
+    """The states as a train, checked against the drivetrain's meshes."""
+    train = state if isinstance(state, MeshTrain) else MeshTrain((state,))
     drivetrain = assembled.drivetrain
-    if len(drivetrain.meshes) != 1:
-        raise CaseError("meshes", len(drivetrain.meshes), "exactly one mesh",
-                        "one mesh state feeds one mesh (a second mesh has another period)")
+    if len(drivetrain.meshes) != len(train.states):
+        raise CaseError("meshes", len(drivetrain.meshes), f"{len(train.states)} (one mesh state per mesh)",
+                        "each mesh of the drivetrain takes the mesh state of its gear pair")
     mesh = drivetrain.meshes[0]
     if mesh.gear_1.shaft != drivetrain.shafts[0].name:
         raise CaseError(f"{mesh.name}.gear_1", mesh.gear_1.shaft, f"the first shaft, {drivetrain.shafts[0].name!r}",
                         "the reference speed is the pinion's, on the first shaft")
-    w = assembled.mesh_vectors[0]
-    speed = state.speed_rpm * math.pi / 30.0
+    return train
+
+
+def _grid(train: MeshTrain, problems) -> TrainGrid:
+    """The pieces of the period: one mesh's own grid, or the union over the common period."""
+    if len(problems) == 1 and train.phases[0] == 0.0 and train.repeats[0] == 1:
+        return TrainGrid(problems[0].nodes, np.arange(problems[0].nodes.size - 1)[:, None], (1,), (0.0,))
+    return train_grid([problem.nodes for problem in problems], train.repeats, train.phases)
+
+
+def _periodic_system(assembled: AssembledDrivetrain, train: MeshTrain, problems, grid: TrainGrid,
+                     reduction: RigidBodyReduction | None) -> tuple[PiecewiseLinearSystem, RigidBodyReduction]:
+    """:func:`drivetrain_periodic_system` with the states' problems and grid given and, optionally, a rigid-body
+    reduction from another state of the same drivetrain: Q depends only on M and the rigid modes, which no mesh state
+    changes (the mesh stiffness joins the shafts whatever its value), so sharing it across speeds is exact."""
+    speed = train.states[0].speed_rpm * math.pi / 30.0
     damping = assembled.structure_damping + speed * assembled.gyroscopic
     if reduction is None:
-        mean_stiffness = float(np.dot(problem.stiffness, np.diff(problem.nodes)) / problem.period)
-        reduction = rigid_body_reduction(assembled.mass, assembled.connection_stiffness(mean_stiffness),
-                                         assembled.rigid_candidates(), damping)
-    reduced_w = reduction.project_vector(w)
-    pattern = np.outer(reduced_w, reduced_w)
-    load = state.normal_load
+        means = np.array([float(np.dot(problem.stiffness, np.diff(problem.nodes)) / problem.period)
+                          for problem in problems])
+        reduction = rigid_body_reduction(assembled.mass, assembled.connection_stiffness(
+            means[0] if means.size == 1 else means), assembled.rigid_candidates(), damping)
+    loads = np.array([item.normal_load for item in train.states])
+    vectors = np.array([reduction.project_vector(w) for w in assembled.mesh_vectors])
+    patterns = np.einsum("mi,mj->mij", vectors, vectors)
+    columns = [(problem.stiffness[grid.pieces[:, m]], problem.damping[grid.pieces[:, m]],
+                (problem.force_per_interval - load)[grid.pieces[:, m]])
+               for m, (problem, load) in enumerate(zip(problems, loads))]
+    stiffness, damping_factor, force = (np.column_stack([column[kind] for column in columns]) for kind in range(3))
+    if len(problems) == 1:  # one mesh: its own pattern and factors (the single-pattern form)
+        patterns, vectors = patterns[0], vectors[0]
+        stiffness, damping_factor, force = stiffness[:, 0], damping_factor[:, 0], force[:, 0]
     system = PiecewiseLinearSystem(
         mass=reduction.project(assembled.mass), stiffness=reduction.project(assembled.structure_stiffness),
-        damping=reduction.project(damping), force=reduction.project_vector(mesh_torque_forces(assembled, load)),
-        nodes=problem.nodes, stiffness_pattern=pattern, stiffness_factor=problem.stiffness,
-        damping_pattern=pattern, damping_factor=problem.damping, force_pattern=reduced_w,
-        force_factor=problem.force_per_interval - load)
+        damping=reduction.project(damping),
+        force=reduction.project_vector(mesh_torque_forces(assembled, loads[0] if loads.size == 1 else loads)),
+        nodes=grid.nodes, stiffness_pattern=patterns, stiffness_factor=stiffness,
+        damping_pattern=patterns, damping_factor=damping_factor, force_pattern=vectors, force_factor=force)
     return system, reduction
 
 
@@ -89,20 +114,29 @@ def drivetrain_backlash_system(assembled: AssembledDrivetrain,
     flanks take the driving flanks' stiffness. Without deviations the two descriptions coincide. A bearing with a
     ``radial_clearance`` adds a dead zone in x and one in y (:class:`~thermogear.dynamics.backlash_ndof.DeadZone`).
     """
+    if isinstance(state, MeshTrain) or len(assembled.drivetrain.meshes) != 1:
+        raise CaseError("dynamics.mesh", "nonlinear", "'linear' for a train of several meshes",
+                        "the backlash orbit is solved for one mesh's dead zone (and the bearings' clearances)")
     if state.backlash is None:
         raise CaseError("backlash", None, "a mesh state whose backlash is known", "the dead zone needs its width")
     linear, reduction = drivetrain_periodic_system(assembled, state)
     excitation = linear.force_factor
     deviation = excitation / linear.stiffness_factor
-    zones = []
-    for bearing in assembled.drivetrain.bearings:
-        if bearing.radial_clearance > 0.0:
-            for axis, stiffness, damping in (("x", bearing.stiffness_x, bearing.damping_x),
-                                             ("y", bearing.stiffness_y, bearing.damping_y)):
-                unit = np.zeros(assembled.size)
-                unit[assembled.dof(bearing.location, axis)] = 1.0
-                zones.append(DeadZone(reduction.project_vector(unit), stiffness, damping, bearing.radial_clearance))
+    zones = [replace(zone, vector=reduction.project_vector(zone.vector)) for _, zone in assembled.dead_zones]
     return BacklashSystem(linear, linear.force_pattern, deviation, state.backlash, tuple(zones)), reduction
+
+
+@dataclass(frozen=True, eq=False)
+class MeshResponse:
+    """One mesh's part of a periodic response: ``transmission_error`` δ = wᵀq [m] and its rate [m/s], the
+    ``mesh_force`` [N] at the response's samples, its ``metrics`` (Kv, DTE, …, over the response's period) and its
+    own ``mesh_period`` [s]."""
+
+    transmission_error: np.ndarray
+    transmission_error_rate: np.ndarray
+    mesh_force: np.ndarray
+    metrics: dict[str, Any]
+    mesh_period: float
 
 
 @dataclass(frozen=True, eq=False)
@@ -110,7 +144,9 @@ class DrivetrainResponse:
     """Periodic response over one mesh period: ``time`` (S,) [s]; ``transmission_error`` δ = wᵀq [m] and its rate
     [m/s]; ``mesh_force`` k(δ) − Σk_ie_i + c·δ̇ [N]; ``bearing_forces`` name → (S, 3) force on the housing in
     x, y, z [N]; ``displacement`` (S, DOFs) [SI]; Floquet ``multipliers``; ``metrics`` of the 1-DOF chain computed
-    from δ (kv, dte_rms, …; see :func:`thermogear.dynamics.metrics.compute_metrics`)."""
+    from δ (kv, dte_rms, …; see :func:`thermogear.dynamics.metrics.compute_metrics`). ``period`` is the mesh period,
+    or a train's common period; ``meshes`` holds each mesh's δ, force and metrics by name (the fields above are the
+    first mesh's)."""
 
     time: np.ndarray
     transmission_error: np.ndarray
@@ -121,6 +157,7 @@ class DrivetrainResponse:
     multipliers: np.ndarray
     metrics: dict[str, Any]
     period: float
+    meshes: dict[str, MeshResponse] = field(default_factory=dict)
 
     @property
     def kv(self) -> float | None:
@@ -158,9 +195,10 @@ def drivetrain_periodic_response(assembled: AssembledDrivetrain, state: MeshStat
     return drivetrain_speed_sweep(assembled, (state,), samples_per_piece, cutoff_hz)[0]
 
 
-def drivetrain_speed_sweep(assembled: AssembledDrivetrain, states: Sequence[MeshState], samples_per_piece: int = 8,
-                           cutoff_hz: float | None = None) -> list[DrivetrainResponse]:
-    """:func:`drivetrain_periodic_response` at each mesh state (one per speed), sharing what no speed changes.
+def drivetrain_speed_sweep(assembled: AssembledDrivetrain, states: Sequence[MeshState | MeshTrain],
+                           samples_per_piece: int = 8, cutoff_hz: float | None = None) -> list[DrivetrainResponse]:
+    """:func:`drivetrain_periodic_response` at each mesh state (one per speed; a train of states per speed where
+    the drivetrain has several meshes), sharing what no speed changes.
 
     The rigid-body reduction is shared exactly (see :func:`_periodic_system`). With ``cutoff_hz`` the modal basis
     of the first state's mean system serves every state: each state's pieces are K̄ + (k_j − k̄)·w wᵀ for any
@@ -168,43 +206,73 @@ def drivetrain_speed_sweep(assembled: AssembledDrivetrain, states: Sequence[Mesh
     whose direction no load changes), so the static corrections keep every piece's quasi-static response exact at
     every speed; what changes is only which undamped modes of a slightly different mean stiffness k̄ carry the
     dynamics below the cut-off (the speed enters the damping, Ω·G, which the basis never uses). The difference
-    from a basis per speed is measured in the tests.
+    from a basis per speed is measured in the tests. With several meshes the same holds mesh by mesh (the static
+    corrections of every mesh vector are in the basis).
     """
     if cutoff_hz is not None and (not math.isfinite(cutoff_hz) or cutoff_hz <= 0.0):
         raise CaseError("cutoff_hz", cutoff_hz, "> 0 Hz, finite", "the highest mode frequency kept")
     reduction, basis, responses = None, None, []
     for state in states:
-        problem = state.problem()
-        system, reduction = _periodic_system(assembled, state, problem, reduction)
+        train = _as_train(assembled, state)
+        problems = tuple(item.problem() for item in train.states)
+        grid = _grid(train, problems)
+        system, reduction = _periodic_system(assembled, train, problems, grid, reduction)
         if cutoff_hz is not None:
             from thermogear.dynamics.modal_reduction import modal_basis
 
             if basis is None:
                 basis = modal_basis(system, 2.0 * math.pi * cutoff_hz)
             system = basis.reduce(system)
-        responses.append(_response(assembled, state, problem, system, reduction, basis, samples_per_piece))
+        responses.append(_response(assembled, train, problems, grid, system, reduction, basis, samples_per_piece))
     return responses
 
 
-def _response(assembled: AssembledDrivetrain, state: MeshState, problem, system: PiecewiseLinearSystem,
-              reduction: RigidBodyReduction, basis, samples_per_piece: int) -> DrivetrainResponse:
+def _on_grid(problem, grid: TrainGrid, column: int):
+    """A mesh's problem with its per-interval arrays taken on the train's pieces (the same mesh over the common
+    period), for its metrics."""
+    from thermogear.dynamics.problem import MeshDynamicsProblem
+
+    index = grid.pieces[:, column]
+    force = problem.force_per_interval[index]
+    return MeshDynamicsProblem(mass=problem.mass, nodes=grid.nodes, stiffness=problem.stiffness[index],
+                               damping=problem.damping[index], force=force, contact_count=problem.contact_count[index],
+                               pair_stiffness=None if problem.pair_stiffness is None else problem.pair_stiffness[:, index],
+                               face_width=problem.face_width,
+                               pair_deviation=None if problem.pair_deviation is None else problem.pair_deviation[:, index])
+
+
+def _response(assembled: AssembledDrivetrain, train: MeshTrain, problems, grid: TrainGrid,
+              system: PiecewiseLinearSystem, reduction: RigidBodyReduction, basis,
+              samples_per_piece: int) -> DrivetrainResponse:
     """The periodic orbit of the (reduced) system expanded to every DOF, with δ, the mesh and bearing forces and the
-    metrics."""
+    metrics of each mesh."""
     response = periodic_response(system, samples_per_piece)
     displacement, velocity = response.displacement.T, response.velocity.T
     if basis is not None:
         displacement, velocity = basis.expand(displacement), basis.expand(velocity)
     displacement, velocity = reduction.expand(displacement).T, reduction.expand(velocity).T
-    w = assembled.mesh_vectors[0]
-    delta, rate = displacement @ w, velocity @ w
-    pieces = problem.stiffness.size
-    interval = np.minimum(np.arange(delta.size) // samples_per_piece, pieces - 1)
-    excitation = problem.force_per_interval - state.normal_load
-    force = problem.stiffness[interval] * delta - excitation[interval] + problem.damping[interval] * rate
+    pieces = grid.nodes.size - 1
+    interval = np.minimum(np.arange(displacement.shape[0]) // samples_per_piece, pieces - 1)
+    meshes = {}
+    for column, (mesh, w, state, problem) in enumerate(zip(assembled.drivetrain.meshes, assembled.mesh_vectors,
+                                                           train.states, problems)):
+        delta, rate = displacement @ w, velocity @ w
+        own = grid.pieces[interval, column]
+        excitation = problem.force_per_interval - state.normal_load
+        force = problem.stiffness[own] * delta - excitation[own] + problem.damping[own] * rate
+        if len(problems) == 1:
+            metrics = compute_metrics(problem, response.time, delta, rate, interval, response.multipliers)
+        else:
+            metrics = compute_metrics(_on_grid(problem, grid, column), response.time, delta, rate, interval,
+                                      response.multipliers)
+            metrics["mesh_frequency_hz"] = problem.mesh_frequency
+            metrics["frequency_ratio"] = problem.mesh_frequency / metrics["natural_frequency_hz"]
+        meshes[mesh.name] = MeshResponse(delta, rate, force, metrics, problem.period)
     forces = bearing_forces(assembled, displacement, velocity, clearance=False)  # the linear system: in contact
-    metrics = compute_metrics(problem, response.time, delta, rate, interval, response.multipliers)
-    return DrivetrainResponse(response.time, delta, rate, force, forces, displacement, response.multipliers,
-                              metrics, problem.period)
+    first = next(iter(meshes.values()))
+    return DrivetrainResponse(response.time, first.transmission_error, first.transmission_error_rate,
+                              first.mesh_force, forces, displacement, response.multipliers, first.metrics,
+                              grid.period, meshes)
 
 
 def bearing_forces(assembled: AssembledDrivetrain, displacement: np.ndarray, velocity: np.ndarray,
@@ -215,13 +283,5 @@ def bearing_forces(assembled: AssembledDrivetrain, displacement: np.ndarray, vel
     forces = {}
     for bearing in assembled.drivetrain.bearings:
         dofs = [assembled.dof(bearing.location, name) for name in ("x", "y", "z")]
-        stiffness, damping = bearing.stiffness_matrix()[:3, :3], bearing.damping_matrix()[:3, :3]
-        u, rate = displacement[:, dofs], velocity[:, dofs]
-        if clearance and bearing.radial_clearance > 0.0:  # no x–y coupling with a clearance (refused at construction)
-            gap = bearing.radial_clearance
-            beyond = np.abs(u) > gap
-            u = np.where(beyond, u - np.sign(u) * gap, 0.0)
-            rate = np.where(beyond, rate, 0.0)
-            u[:, 2], rate[:, 2] = displacement[:, dofs[2]], velocity[:, dofs[2]]
-        forces[bearing.name] = u @ stiffness.T + rate @ damping.T
+        forces[bearing.name] = bearing.housing_force(displacement[:, dofs], velocity[:, dofs], clearance)
     return forces

@@ -28,6 +28,10 @@ def response_dataset_parts(response, harmonics: int, attributes: dict[str, Any] 
         return None
     names = list(response.bearing_forces)
     forces = np.stack([response.bearing_forces[name] for name in names])  # (bearing, sample, axis)
+    meshes = getattr(response, "meshes", None) or {}
+    if len(meshes) > 1:  # a train: lines of its common period up to every mesh's last harmonic asked for
+        harmonics *= max(round(response.period / item.mesh_period) for item in meshes.values())
+        points = max(points, 4 * harmonics)
     spectra, frequencies = [], None
     for name in names:
         frequencies, amplitudes = response.bearing_spectrum(name, points)
@@ -47,4 +51,13 @@ def response_dataset_parts(response, harmonics: int, attributes: dict[str, Any] 
               "harmonic": ("harmonic", np.arange(harmonics + 1)),
               "harmonic_frequency": ("harmonic", np.asarray(frequencies[:harmonics + 1]), {"units": "Hz"})}
     attrs = {"mesh_period_s": float(response.period), **(attributes or {})}
+    if len(meshes) > 1:  # each mesh's DTE and force over the common period; the lines are multiples of 1/T
+        coords["mesh"] = ("mesh", np.array(list(meshes), dtype=object))
+        data_vars["stage_transmission_error"] = (("mesh", "sample"), np.array([item.transmission_error for item in
+                                                                               meshes.values()]),
+                                                 {"units": "m", "long_name": "each mesh's dynamic transmission error"})
+        data_vars["stage_mesh_force"] = (("mesh", "sample"), np.array([item.mesh_force for item in meshes.values()]),
+                                         {"units": "N", "long_name": "each mesh's dynamic mesh force"})
+        attrs.update({"common_period_s": float(response.period), "harmonic": "multiples of 1/common period; mesh m's "
+                      "j-th harmonic is line j·L_m, L_m its periods in the common period"})
     return data_vars, coords, attrs

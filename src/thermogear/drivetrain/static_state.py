@@ -34,15 +34,25 @@ class StaticState:
 def mesh_torque_forces(assembled: AssembledDrivetrain, normal_loads: np.ndarray) -> np.ndarray:
     """Force vector (DOFs,) of the driving and load torques of each mesh for normal tooth loads W [N] (one per mesh).
 
-    One torque pair per mesh is right for a single stage; in a multi-stage train the torques on an intermediate
-    shaft are internal, so give the train's external torques yourself instead.
+    A single stage: the driving torque on gear 1 and the load torque on gear 2. A train: the torques at its ends
+    only, on the gears whose shaft carries no other mesh's gear; on an intermediate shaft the torque passes from one
+    mesh to the next through the shaft (the torques of the two meshes there would cancel, but applied at the gears
+    they would take the twist off the shaft between them). The loads must then balance the train, W_m·r_b of the
+    wheel = W_m+1·r_b of the next pinion, or the train accelerates (static_state checks it).
     """
-    loads = np.broadcast_to(np.asarray(normal_loads, dtype=float), (len(assembled.drivetrain.meshes),))
+    meshes = assembled.drivetrain.meshes
+    loads = np.broadcast_to(np.asarray(normal_loads, dtype=float), (len(meshes),))
+    carried: dict[str, int] = {}
+    for mesh in meshes:
+        for shaft in {mesh.gear_1.shaft, mesh.gear_2.shaft}:
+            carried[shaft] = carried.get(shaft, 0) + 1
     forces = np.zeros(assembled.size)
-    for mesh, load in zip(assembled.drivetrain.meshes, loads):
+    for mesh, load in zip(meshes, loads):
         first, second = mesh.torques(load)
-        forces[assembled.dof(mesh.gear_1, "theta")] += first
-        forces[assembled.dof(mesh.gear_2, "theta")] += second
+        if carried[mesh.gear_1.shaft] == 1:
+            forces[assembled.dof(mesh.gear_1, "theta")] += first
+        if carried[mesh.gear_2.shaft] == 1:
+            forces[assembled.dof(mesh.gear_2, "theta")] += second
     return forces
 
 
@@ -51,7 +61,8 @@ def bearing_reactions(assembled: AssembledDrivetrain, displacement: np.ndarray) 
     forces = {}
     for bearing in assembled.drivetrain.bearings:
         dofs = [assembled.dof(bearing.location, name) for name in ("x", "y", "z")]
-        forces[bearing.name] = bearing.stiffness_matrix()[:3, :3] @ displacement[dofs]
+        u = displacement[dofs][None]
+        forces[bearing.name] = bearing.housing_force(u, np.zeros_like(u), clearance=False)[0]
     return forces
 
 

@@ -57,6 +57,14 @@ class DeadZone:
             if not isinstance(value, (int, float)) or not np.isfinite(value) or value < 0.0:
                 raise ProblemError(f"dead_zone.{key}", value, ">= 0, finite", "a spring, dashpot and gap of a contact")
 
+    def engaged(self, value: np.ndarray, rate: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """The dead-zone law on samples of u = vᵀq [m], u̇ [m/s]: the stretch u ∓ δ beyond ±δ and the rate in contact
+        (0 inside); the force along v is −(k·stretch + c·rate) (written once; the solver's regions: :meth:`side`)."""
+        value, rate = np.asarray(value, dtype=float), np.asarray(rate, dtype=float)
+        beyond = np.abs(value) > self.clearance
+        return (np.where(beyond, value - np.sign(value) * self.clearance, 0.0),
+                np.where(beyond, rate, 0.0))
+
     def side(self, state: np.ndarray, size: int) -> int:
         """+1 or −1 in contact beyond +δ or −δ, 0 inside the clearance (on a boundary, by the rate)."""
         value, rate = self.vector @ state[:size], self.vector @ state[size:2 * size]
@@ -82,6 +90,8 @@ class BacklashSystem:
 
     def __post_init__(self) -> None:
         n, pieces = self.linear.size, self.linear.nodes.size - 1
+        if self.linear.pattern_count != 1:  # the shooting follows one mesh coordinate's dead zone
+            raise ProblemError("linear", f"{self.linear.pattern_count} meshes", "one mesh", "one backlash coordinate")
         object.__setattr__(self, "dead_zones", tuple(self.dead_zones))
         for zone in self.dead_zones:
             if not isinstance(zone, DeadZone) or zone.vector.shape != (n,):

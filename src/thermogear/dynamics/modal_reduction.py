@@ -45,8 +45,10 @@ class ModalBasis:
         b = self.basis
         matrices = {name: b.T @ getattr(system, name) @ b for name in (
             "mass", "stiffness", "damping", "stiffness_pattern", "damping_pattern")}
+        pattern = system.force_pattern
         return PiecewiseLinearSystem(
-            force=b.T @ system.force, force_pattern=b.T @ system.force_pattern, nodes=system.nodes,
+            force=b.T @ system.force, force_pattern=b.T @ pattern if pattern.ndim == 1 else pattern @ b,
+            nodes=system.nodes,
             stiffness_factor=system.stiffness_factor, damping_factor=system.damping_factor,
             force_factor=system.force_factor, **matrices)
 
@@ -66,16 +68,21 @@ def modal_basis(system: PiecewiseLinearSystem, cutoff: float, loads: Sequence[np
     if not np.isfinite(cutoff) or cutoff <= 0.0:
         raise ProblemError("cutoff", cutoff, "> 0 rad/s, finite", "the highest mode frequency kept")
     widths = np.diff(system.nodes)
-    mean = system.stiffness + float(np.dot(system.stiffness_factor, widths) / system.period) * system.stiffness_pattern
+    pattern_k, _, pattern_f, factor_k = system.stacked()[:4]
+    mean = system.stiffness
+    for mesh in range(pattern_k.shape[0]):  # K̄ = K₀ + Σ_m k̄_m P_K,m
+        mean = mean + float(np.dot(factor_k[:, mesh], widths) / system.period) * pattern_k[mesh]
     mass = system.mass
     values, modes = eigh(mean, mass)
     keep = values <= cutoff**2
     modes, frequencies = modes[:, keep], np.sqrt(np.clip(values[keep], 0.0, None))
-    pattern_values, pattern_vectors = np.linalg.eigh(system.stiffness_pattern)
     extra = tuple(loads)
-    loads = [pattern_vectors[:, index] for index in np.flatnonzero(
-        np.abs(pattern_values) > 1e-12 * max(np.abs(pattern_values).max(), 1e-300))]
-    loads += [system.force_pattern, system.force, *(np.asarray(load, dtype=float) for load in extra)]
+    loads = []
+    for pattern in pattern_k:
+        pattern_values, pattern_vectors = np.linalg.eigh(pattern)
+        loads += [pattern_vectors[:, index] for index in np.flatnonzero(
+            np.abs(pattern_values) > 1e-12 * max(np.abs(pattern_values).max(), 1e-300))]
+    loads += [*pattern_f, system.force, *(np.asarray(load, dtype=float) for load in extra)]
     columns = [modes]
     for load in loads:
         if not np.any(load):
@@ -101,9 +108,11 @@ def _excited_columns(basis: np.ndarray, system: PiecewiseLinearSystem, extra: Se
     span an invariant subspace that starts at rest and is never forced, so their motion is identically zero and
     dropping them is exact (for a spur mesh: the axial modes and the bending out of the line of action's plane
     when no damping or gyroscopic term couples them)."""
-    forces = [basis.T @ system.force, basis.T @ system.force_pattern, *(basis.T @ load for load in extra)]
-    couplings = [basis.T @ getattr(system, name) @ basis for name in (
-        "mass", "stiffness", "damping", "stiffness_pattern", "damping_pattern")]
+    pattern_k, pattern_c, pattern_f = system.stacked()[:3]
+    forces = [basis.T @ system.force, *(basis.T @ pattern for pattern in pattern_f),
+              *(basis.T @ load for load in extra)]
+    couplings = [basis.T @ matrix @ basis for matrix in (system.mass, system.stiffness, system.damping, *pattern_k,
+                                                           *pattern_c)]
     excited = np.zeros(basis.shape[1], dtype=bool)
     for force in forces:
         excited |= np.abs(force) > 1e-12 * max(np.abs(force).max(), 1e-300)

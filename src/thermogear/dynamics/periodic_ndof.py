@@ -17,7 +17,9 @@ nothing of gears: matrices only. With a rigid-body mode (K r = 0) a multiplier i
 remove such modes first (``rigid_body.rigid_body_reduction``).
 
 ``K_j = K₀ + k_j·P_K``, ``C_j = C₀ + c_j·P_C`` and ``f_j = f₀ + g_j·P_f``: a constant part plus a pattern scaled per piece
-(a gear mesh: P_K = P_C = w wᵀ, P_f = w), which is how the pieces are stored.
+(a gear mesh: P_K = P_C = w wᵀ, P_f = w), which is how the pieces are stored. Several meshes (a gear train) give a
+sum over patterns, ``K_j = K₀ + Σ_m k_jm·P_K,m`` and likewise for C and f: the patterns are then stacked (P, n, n),
+(P, n) and the factors (N, P), one column per mesh, over the train's common period.
 """
 
 from __future__ import annotations
@@ -39,7 +41,8 @@ class PiecewiseLinearSystem:
 
     ``mass``, ``stiffness``, ``damping``, ``stiffness_pattern``, ``damping_pattern``: (n, n) [SI];
     ``force``, ``force_pattern``: (n,); ``stiffness_factor``, ``damping_factor``, ``force_factor``: (N,) one per
-    piece; ``nodes`` (N+1,) from 0 to the period.
+    piece; ``nodes`` (N+1,) from 0 to the period. Several patterns (one per mesh, summed): the patterns (P, n, n)
+    and (P, n), the factors (N, P); :meth:`stacked` gives either form stacked.
     """
 
     mass: np.ndarray
@@ -63,12 +66,32 @@ class PiecewiseLinearSystem:
         object.__setattr__(self, "nodes", nodes)
         pieces = nodes.size - 1
         square = (size, size)
-        for name in ("mass", "stiffness", "damping", "stiffness_pattern", "damping_pattern"):
+        for name in ("mass", "stiffness", "damping"):
             object.__setattr__(self, name, checked_array(name, getattr(self, name), square, "one row/column per DOF"))
-        for name in ("force", "force_pattern"):
-            object.__setattr__(self, name, checked_array(name, getattr(self, name), (size,), "one value per DOF"))
+        object.__setattr__(self, "force", checked_array("force", self.force, (size,), "one value per DOF"))
+        many = np.ndim(self.stiffness_pattern) == 3
+        count = (int(np.shape(self.stiffness_pattern)[0]),) if many else ()
+        for name in ("stiffness_pattern", "damping_pattern"):
+            object.__setattr__(self, name, checked_array(name, getattr(self, name), count + square,
+                                                         "one row/column per DOF (and one matrix per mesh)"))
+        object.__setattr__(self, "force_pattern", checked_array("force_pattern", self.force_pattern, count + (size,),
+                                                                "one value per DOF (and one row per mesh)"))
         for name in ("stiffness_factor", "damping_factor", "force_factor"):
-            object.__setattr__(self, name, checked_array(name, getattr(self, name), (pieces,)))
+            object.__setattr__(self, name, checked_array(name, getattr(self, name), (pieces, *count)))
+
+    @property
+    def pattern_count(self) -> int:
+        """P, the number of patterns (meshes) whose factors vary per piece."""
+        return 1 if self.stiffness_pattern.ndim == 2 else self.stiffness_pattern.shape[0]
+
+    def stacked(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """(P_K (P, n, n), P_C (P, n, n), P_f (P, n), k (N, P), c (N, P), g (N, P)): the patterns and factors
+        with one entry per pattern, whichever form the system holds."""
+        if self.stiffness_pattern.ndim == 3:
+            return (self.stiffness_pattern, self.damping_pattern, self.force_pattern, self.stiffness_factor,
+                    self.damping_factor, self.force_factor)
+        return (self.stiffness_pattern[None], self.damping_pattern[None], self.force_pattern[None],
+                self.stiffness_factor[:, None], self.damping_factor[:, None], self.force_factor[:, None])
 
     @property
     def size(self) -> int:
@@ -82,21 +105,30 @@ class PiecewiseLinearSystem:
 
     def piece(self, index: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """(K_j, C_j, f_j) of one piece."""
-        return (self.stiffness + self.stiffness_factor[index] * self.stiffness_pattern,
-                self.damping + self.damping_factor[index] * self.damping_pattern,
-                self.force + self.force_factor[index] * self.force_pattern)
+        pattern_k, pattern_c, pattern_f, factor_k, factor_c, factor_f = self.stacked()
+        stiffness, damping, force = self.stiffness, self.damping, self.force
+        for mesh in range(pattern_k.shape[0]):
+            stiffness = stiffness + factor_k[index, mesh] * pattern_k[mesh]
+            damping = damping + factor_c[index, mesh] * pattern_c[mesh]
+            force = force + factor_f[index, mesh] * pattern_f[mesh]
+        return stiffness, damping, force
 
     def augmented_stack(self, mass_inverse: np.ndarray) -> np.ndarray:
         """The (N, 2n+1, 2n+1) stack of [[A_j, b_j], [0, 0]], one per piece, built in one vectorised pass."""
         n = self.size
-        stiffness, damping, pattern_k, pattern_c = (mass_inverse @ matrix for matrix in (
-            self.stiffness, self.damping, self.stiffness_pattern, self.damping_pattern))
-        force, pattern_f = mass_inverse @ self.force, mass_inverse @ self.force_pattern
+        pattern_k, pattern_c, pattern_f, factor_k, factor_c, factor_f = self.stacked()
+        stiffness, damping = mass_inverse @ self.stiffness, mass_inverse @ self.damping
+        force = mass_inverse @ self.force
+        stiffness_block, damping_block, force_block = -stiffness, -damping, force
+        for mesh in range(pattern_k.shape[0]):  # the sum over meshes (one term for a single mesh)
+            stiffness_block = stiffness_block - factor_k[:, mesh, None, None] * (mass_inverse @ pattern_k[mesh])
+            damping_block = damping_block - factor_c[:, mesh, None, None] * (mass_inverse @ pattern_c[mesh])
+            force_block = force_block + factor_f[:, mesh, None] * (mass_inverse @ pattern_f[mesh])
         stack = np.zeros((self.nodes.size - 1, 2 * n + 1, 2 * n + 1))
         stack[:, :n, n:2 * n] = np.eye(n)
-        stack[:, n:2 * n, :n] = -stiffness - self.stiffness_factor[:, None, None] * pattern_k
-        stack[:, n:2 * n, n:2 * n] = -damping - self.damping_factor[:, None, None] * pattern_c
-        stack[:, n:2 * n, 2 * n] = force + self.force_factor[:, None] * pattern_f
+        stack[:, n:2 * n, :n] = stiffness_block
+        stack[:, n:2 * n, n:2 * n] = damping_block
+        stack[:, n:2 * n, 2 * n] = force_block
         return stack
 
     def augmented(self, index: int, mass_inverse: np.ndarray) -> np.ndarray:
@@ -156,7 +188,8 @@ def _piece_steps(system: PiecewiseLinearSystem, samples: int) -> tuple[np.ndarra
 
     inverse = _mass_inverse(system)
     widths = np.diff(system.nodes) / samples
-    factors = np.column_stack([widths, system.stiffness_factor, system.damping_factor, system.force_factor])
+    pattern_k, pattern_c, pattern_f, factor_k, factor_c, factor_f = system.stacked()
+    factors = np.column_stack([widths, factor_k, factor_c, factor_f])
     distinct, where = np.unique(factors, axis=0, return_inverse=True)
     where = where.ravel()
     range_basis = _pattern_range(system)
@@ -170,12 +203,15 @@ def _piece_steps(system: PiecewiseLinearSystem, samples: int) -> tuple[np.ndarra
         left = np.zeros((2 * n + 1, range_basis.shape[1]))
         left[n:2 * n] = inverse @ range_basis
         shift = distinct[:, 1:] - mean_factors
-        rows = np.zeros((3 * rank, 2 * n + 1))  # the stiffness, damping and excitation rows, r each
-        rows[:rank, :n] = range_basis.T @ system.stiffness_pattern
-        rows[rank:2 * rank, n:2 * n] = range_basis.T @ system.damping_pattern
-        rows[2 * rank:, 2 * n] = range_basis.T @ system.force_pattern
+        meshes = pattern_k.shape[0]
+        rows = np.zeros((3 * meshes * rank, 2 * n + 1))  # the stiffness, damping and excitation rows, r per mesh
+        for mesh in range(meshes):
+            rows[mesh * rank:(mesh + 1) * rank, :n] = range_basis.T @ pattern_k[mesh]
+            rows[(meshes + mesh) * rank:(meshes + mesh + 1) * rank, n:2 * n] = range_basis.T @ pattern_c[mesh]
+            rows[(2 * meshes + mesh) * rank:(2 * meshes + mesh + 1) * rank, 2 * n] = range_basis.T @ pattern_f[mesh]
+        signs = (-1.0,) * (2 * meshes) + (1.0,) * meshes  # columns of shift: k per mesh, c per mesh, g per mesh
         right = np.concatenate([np.eye(rank) * sign * shift[:, column, None, None]
-                                for column, sign in enumerate((-1.0, -1.0, 1.0))], axis=2)  # (D, r, 3r)
+                                for column, sign in enumerate(signs)], axis=2)  # (D, r, 3Pr)
         steps = expm_of_rank_updates(mean, left, right, distinct[:, 0], rows)
     return steps, where
 
@@ -188,16 +224,22 @@ _RANK_ROUTE_RATIO = 8
 
 
 def _with_factors(system: PiecewiseLinearSystem, rows: np.ndarray) -> PiecewiseLinearSystem:
-    """The system's matrices with the factors of ``rows`` (width, k, c, g) as its pieces (unit widths)."""
+    """The system's matrices with the factors of ``rows`` (width, k, c, g; per mesh where several) as its pieces
+    (unit widths)."""
     from dataclasses import replace
 
-    return replace(system, nodes=np.arange(rows.shape[0] + 1, dtype=float), stiffness_factor=rows[:, 1],
-                   damping_factor=rows[:, 2], force_factor=rows[:, 3])
+    if system.stiffness_pattern.ndim == 2:
+        return replace(system, nodes=np.arange(rows.shape[0] + 1, dtype=float), stiffness_factor=rows[:, 1],
+                       damping_factor=rows[:, 2], force_factor=rows[:, 3])
+    meshes = system.pattern_count
+    return replace(system, nodes=np.arange(rows.shape[0] + 1, dtype=float), stiffness_factor=rows[:, 1:1 + meshes],
+                   damping_factor=rows[:, 1 + meshes:1 + 2 * meshes], force_factor=rows[:, 1 + 2 * meshes:])
 
 
 def _pattern_range(system: PiecewiseLinearSystem) -> np.ndarray:
     """Orthonormal basis Q (n, r) of the column space of [P_K, P_C, P_f]: every piece's variation acts through it."""
-    stacked = np.hstack([system.stiffness_pattern, system.damping_pattern, system.force_pattern[:, None]])
+    pattern_k, pattern_c, pattern_f = system.stacked()[:3]
+    stacked = np.hstack([*pattern_k, *pattern_c, pattern_f.T])
     vectors, values, _ = np.linalg.svd(stacked, full_matrices=False)
     if values.size == 0 or values[0] == 0.0:
         return np.zeros((system.size, 0))

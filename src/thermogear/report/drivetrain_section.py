@@ -115,6 +115,11 @@ def drivetrain_section(data: dict[str, Any] | None) -> str:
                       "not found" if struck is None else "yes" if struck else "no",
                       "—" if data.get("transient") else _orbit_found(m)]
         rows.append(_cells(cells))
+    for name, m in models.items():  # a train: each mesh over the common period
+        for stage, values in m.get("stages", {}).items():
+            rows.append(_cells([f"{name}, {stage}", _number(values["kv"], "{:.4f}"),
+                                _number(values["dte_rms_um"], "{:.3f}"), _number(values["dte_peak_to_peak_um"], "{:.3f}"),
+                                "—"] + ["—"] * (3 if backlash else 0)))
     response = "".join(rows)
     failures = "".join(f"<p class='small'>{html.escape(name)} model: no periodic orbit — "
                        f"{html.escape(m['failure'])}</p>" for name, m in models.items() if m.get("failure"))

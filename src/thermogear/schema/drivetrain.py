@@ -34,6 +34,7 @@ from pydantic import Field, model_validator
 from thermogear.errors import CaseError
 from thermogear.schema.base import Section
 from thermogear.schema.bearing_loss import BearingLossSection, check_loss_data
+from thermogear.schema.gears import GearsSection
 
 #: Lengths and positions [mm]: from a 0.1 mm shim to a 20 m line shaft.
 _LENGTH_MM = (0.1, 20_000.0)
@@ -190,6 +191,22 @@ class EndSection(Section):
         "'speed': the speed loop's damping [N·m·s/rad]"))] = 0.0
 
 
+class StageSection(Section):
+    """A further gear pair (stage) of the train: its gears (the keys of [gears]), where its pinion (the driving
+    gear) and wheel sit, its centre line and its mesh phase. Its pinion sits on a shaft the train already drives;
+    its turning sense follows from that shaft's. Lubricant, temperatures, thermal and damping models are the case's."""
+
+    name: _NAME
+    gears: GearsSection = Field(description="the stage's gear pair: the keys of [gears] (module_mm, teeth, …)")
+    pinion: PointSection = Field(description="where the stage's pinion (driving gear) sits (shaft and position [mm])")
+    wheel: PointSection = Field(description="where the stage's wheel sits (shaft and position [mm])")
+    centre_line_angle_deg: Annotated[float, Field(ge=-360.0, le=360.0, description=(
+        "direction from the stage's pinion centre to its wheel's [°], from +x towards +y"))] = 0.0
+    mesh_phase: Annotated[float, Field(ge=0.0, lt=1.0, description=(
+        "fraction of its mesh cycle this stage has passed when the first stage's starts [-] (set by how the gears "
+        "were clocked at assembly; 0 unless known)"))] = 0.0
+
+
 class DrivetrainSection(Section):
     """The pair on its shafts, bearings, couplings and inertias; ends driven by torque or held at speed."""
 
@@ -230,6 +247,10 @@ class DrivetrainSection(Section):
         "[[drivetrain.couplings]] tables: name, shaft_1, position_1_mm, shaft_2, position_2_mm, "
         "torsional_stiffness_n_m_per_rad, optional torsional_damping_n_m_s_per_rad, lateral_stiffness_n_per_m, "
         "angular_stiffness_n_m_per_rad"))] = []
+    stages: Annotated[list[StageSection], Field(max_length=10, description=(
+        "[[drivetrain.stages]] tables, further gear pairs after the case's [gears] (the first stage): name, gears "
+        "(the keys of [gears]), pinion and wheel {shaft, position_mm}, optional centre_line_angle_deg, mesh_phase"
+    ))] = []
     driving: EndSection = Field(EndSection(), description="the driving end (the pinion's side)")
     driven: EndSection = Field(EndSection(), description="the driven end (the wheel's side)")
 
@@ -256,19 +277,33 @@ def check_drivetrain_section(section: DrivetrainSection) -> None:
     if len(shafts) != len(section.shafts):
         raise CaseError("drivetrain.shafts.name", [s.name for s in section.shafts], "unique names",
                         "elements find their shaft by name")
-    names = [item.name for group in (section.bearings, section.disks, section.couplings) for item in group]
+    names = [item.name for group in (section.bearings, section.disks, section.couplings, section.stages)
+             for item in group]
+    names += [f"{stage.name} {gear}" for stage in section.stages for gear in ("pinion", "wheel")]
     repeated = sorted({name for name in names if names.count(name) > 1} | (set(names) & set(shafts))
                       | (set(names) & {"pinion", "wheel", "mesh", "driving motor", "driven motor"}))
     if repeated:
         raise CaseError("drivetrain names", repeated,
-                        "unique names, not a shaft's, and none of pinion, wheel, mesh, driving motor, driven motor",
+                        "unique names, not a shaft's, and none of pinion, wheel, mesh, driving motor, driven motor "
+                        "(nor a stage's name followed by pinion or wheel)",
                         "bearing forces and energy shares are reported by name")
     _point_on_shaft("drivetrain.pinion", section.pinion.shaft, section.pinion.position_mm, shafts)
     _point_on_shaft("drivetrain.wheel", section.wheel.shaft, section.wheel.position_mm, shafts)
     if section.pinion.shaft == section.wheel.shaft:
         raise CaseError("drivetrain.wheel.shaft", section.wheel.shaft, f"a shaft other than the pinion's",
                         "the mesh joins two shafts (parallel axes a centre distance apart)")
+    for stage in section.stages:
+        key = f"drivetrain.stages '{stage.name}'"
+        _point_on_shaft(f"{key}.pinion", stage.pinion.shaft, stage.pinion.position_mm, shafts)
+        _point_on_shaft(f"{key}.wheel", stage.wheel.shaft, stage.wheel.position_mm, shafts)
+        if stage.pinion.shaft == stage.wheel.shaft:
+            raise CaseError(f"{key}.wheel.shaft", stage.wheel.shaft, "a shaft other than the stage's pinion's",
+                            "a mesh joins two shafts (parallel axes a centre distance apart)")
     for bearing in section.bearings:
+        if bearing.stiffness_x_n_per_m == 0.0 and bearing.stiffness_y_n_per_m == 0.0:
+            raise CaseError(f"drivetrain.bearings '{bearing.name}'.stiffness_x_n_per_m", 0.0,
+                            "> 0 in x or in y (a rolling bearing: 1e7–1e9 N/m)",
+                            "a bearing without radial stiffness holds nothing: remove it or give its stiffness")
         _point_on_shaft(f"drivetrain.bearings '{bearing.name}'", bearing.shaft, bearing.position_mm, shafts)
     for disk in section.disks:
         _point_on_shaft(f"drivetrain.disks '{disk.name}'", disk.shaft, disk.position_mm, shafts)
@@ -280,13 +315,16 @@ def check_drivetrain_section(section: DrivetrainSection) -> None:
             raise CaseError(f"{key}.shaft_2", coupling.shaft_2, "a shaft other than shaft_1",
                             "a coupling joins two shafts")
     for shaft in section.shafts:
-        held = {round(b.position_mm, 6) for b in section.bearings if b.shaft == shaft.name}
         coupled = any(c.lateral_stiffness_n_per_m > 0.0 and c.angular_stiffness_n_m_per_rad > 0.0
                       for c in section.couplings if shaft.name in (c.shaft_1, c.shaft_2))
-        if len(held) < 2 and not coupled:
-            raise CaseError(f"drivetrain.bearings (shaft '{shaft.name}')", len(held),
-                            ">= 2 bearings at different positions (or a coupling with lateral and angular "
-                            "stiffness)", "with fewer the shaft could tilt or move sideways freely: no static state")
+        for direction in ("x", "y"):  # a bearing counts in a direction where it is stiff
+            held = {round(b.position_mm, 6) for b in section.bearings
+                    if b.shaft == shaft.name and getattr(b, f"stiffness_{direction}_n_per_m") > 0.0}
+            if len(held) < 2 and not coupled:
+                raise CaseError(f"drivetrain.bearings (shaft '{shaft.name}') stiffness_{direction}_n_per_m",
+                                len(held), f">= 2 bearings stiff in {direction} at different positions (or a coupling "
+                                "with lateral and angular stiffness)",
+                                "with fewer the shaft could tilt or move sideways freely: no static state")
     for end_key, end in (("driving", section.driving), ("driven", section.driven)):
         key = f"drivetrain.{end_key}"
         if end.kind == "speed":
@@ -303,11 +341,13 @@ def check_drivetrain_section(section: DrivetrainSection) -> None:
 
 
 def check_drivetrain_fits_gears(section: DrivetrainSection, bore_radii_mm: tuple[float, float],
-                                root_radii_mm: tuple[float, float]) -> None:
-    """Each gear's shaft seat fits its bore (when the case gives a bore) and stays inside its root circle."""
+                                root_radii_mm: tuple[float, float], extra: tuple = ()) -> None:
+    """Each gear's shaft seat fits its bore (when the case gives a bore) and stays inside its root circle;
+    ``extra``: (key, point, bore, root radius [mm]) of the further stages' gears."""
     shafts = {shaft.name: shaft for shaft in section.shafts}
     for key, point, bore, root in (("pinion", section.pinion, bore_radii_mm[0], root_radii_mm[0]),
-                                   ("wheel", section.wheel, bore_radii_mm[1], root_radii_mm[1])):
+                                   ("wheel", section.wheel, bore_radii_mm[1], root_radii_mm[1]),
+                                   *extra):
         seat = shafts[point.shaft].outer_diameter_at(point.position_mm)
         limit = 2.0 * bore if bore > 0.0 else 2.0 * root
         if seat > limit * (1.0 + 1e-9):
@@ -318,4 +358,5 @@ def check_drivetrain_fits_gears(section: DrivetrainSection, bore_radii_mm: tuple
 
 
 __all__ = ["BearingSection", "CouplingSection", "DiskSection", "DrivetrainSection", "EndSection", "PointSection",
-           "ShaftSection", "ShaftSegmentSection", "check_drivetrain_fits_gears", "check_drivetrain_section"]
+           "ShaftSection", "ShaftSegmentSection", "StageSection", "check_drivetrain_fits_gears",
+           "check_drivetrain_section"]

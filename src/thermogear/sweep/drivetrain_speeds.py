@@ -57,7 +57,7 @@ _FAILURES = (ModelLimitError, CaseError, np.linalg.LinAlgError)
 
 
 def _point(response, harmonics: int) -> dict[str, Any]:
-    from thermogear.drivetrain.case_model import bearing_force_summary
+    from thermogear.drivetrain.result_tables import bearing_force_summary
 
     if isinstance(response, np.linalg.LinAlgError):  # e.g. a transition matrix that overflowed at a tiny speed
         return {"status": f"not computed: the periodic solve failed ({response})"}
@@ -66,11 +66,18 @@ def _point(response, harmonics: int) -> dict[str, Any]:
     multipliers = np.abs(response.multipliers)
     largest = float(multipliers.max()) if multipliers.size else 0.0
     forces = bearing_force_summary(response, harmonics)
-    return {"status": "valid" if largest < 1.0 else "unstable", "kv": response.kv,
-            "dte_rms_um": response.metrics["dte_rms"] * 1e6,
-            "dte_peak_to_peak_um": response.metrics["dte_peak_to_peak"] * 1e6, "multiplier": largest,
-            "bearing_rms": [forces[name]["dynamic_rms_n"] for name in forces],
-            "bearing_harmonics": [forces[name]["harmonic_amplitude_n"] for name in forces]}
+    point = {"status": "valid" if largest < 1.0 else "unstable", "kv": response.kv,
+             "dte_rms_um": response.metrics["dte_rms"] * 1e6,
+             "dte_peak_to_peak_um": response.metrics["dte_peak_to_peak"] * 1e6, "multiplier": largest,
+             "bearing_rms": [forces[name]["dynamic_rms_n"] for name in forces],
+             "bearing_harmonics": [forces[name]["harmonic_amplitude_n"] for name in forces]}
+    if len(response.meshes) > 1:  # a train: each mesh's Kv, DTE RMS and largest force (stage order)
+        from thermogear.drivetrain.result_tables import stage_summary
+
+        stages = stage_summary(response).values()
+        point.update({f"stage_{key}": [item[key] for item in stages]
+                      for key in ("kv", "dte_rms_um", "max_mesh_force_n")})
+    return point
 
 
 def _compute_with(built, models: tuple[str, ...], speeds: list[float]) -> list[dict[str, dict[str, Any]]]:
@@ -138,7 +145,7 @@ def drivetrain_speed_sweep(built, origin: SweepOrigin, speeds: np.ndarray, model
 
     import xarray as xr
 
-    from thermogear.drivetrain.case_model import mode_table, resonance_speeds
+    from thermogear.drivetrain.result_tables import mode_table, resonance_speeds
 
     speeds = np.asarray(speeds, dtype=float)
     if speeds.ndim != 1 or speeds.size == 0 or np.any(speeds <= 0.0) or not np.all(np.isfinite(speeds)):
@@ -152,7 +159,7 @@ def drivetrain_speed_sweep(built, origin: SweepOrigin, speeds: np.ndarray, model
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         resonances = {model: [r for r in resonance_speeds(mode_table(built.modes(model), built.drivetrains[model]),
-                                                          built.teeth, section.bearing_harmonics)
+                                                          built.teeth, section.bearing_harmonics, built.stages)
                               if speeds.min() <= r["speed_rpm"] <= speeds.max()] for model in models}
     bearings = [bearing.name for bearing in built.drivetrains["elastic"].bearings]
     chunks = [speeds[i:i + _SPEEDS_PER_TASK].tolist() for i in range(0, speeds.size, _SPEEDS_PER_TASK)]
@@ -173,7 +180,10 @@ def drivetrain_speed_sweep(built, origin: SweepOrigin, speeds: np.ndarray, model
 
         worker_map(origin, models, _compute_chunk, [(models, chunk) for chunk in chunks], workers, done)
     points = [point for index in range(len(chunks)) for point in results[index]]
-    harmonics = section.bearing_harmonics
+    repeats = built.train_repeats  # a train's bearing lines: the mesh harmonics j·L_m of every stage
+    lines = sorted({j * repeat for repeat in repeats for j in range(1, section.bearing_harmonics + 1)})
+    harmonics = len(lines)
+    meshes = [mesh.name for mesh in built.drivetrains[models[0]].meshes]
     shape = (len(models), speeds.size)
 
     def field(key: str, extra: tuple[int, ...] = ()) -> np.ndarray:
@@ -196,10 +206,16 @@ def drivetrain_speed_sweep(built, origin: SweepOrigin, speeds: np.ndarray, model
          "bearing_harmonic_amplitude_n": (dims + ("bearing", "harmonic"),
                                           field("bearing_harmonics", (len(bearings), harmonics)))},
         coords={"model": list(models), "speed_rpm": speeds, "bearing": bearings,
-                "harmonic": np.arange(1, harmonics + 1)},
+                "harmonic": np.array(lines)},
         attrs={"case": origin.name, "kind": "drivetrain speed sweep", "mesh": "linear (permanent contact)",
                "points_per_period": section.sweep_points_per_period, "response_cutoff_hz": section.response_cutoff_hz,
                "resonances": json.dumps(resonances), "load_held": origin.load_held})
+    if len(meshes) > 1:
+        dataset = dataset.assign_coords(mesh=meshes)
+        for key, unit in (("kv", "-"), ("dte_rms_um", "um"), ("max_mesh_force_n", "N")):
+            dataset[f"stage_{key}"] = (dims + ("mesh",), field(f"stage_{key}", (len(meshes),)))
+            dataset[f"stage_{key}"].attrs["units"] = unit
+        dataset["harmonic"].attrs["description"] = "spectrum line over the common period (j·L_m of each mesh)"
     for name, unit in (("kv", "-"), ("dte_rms_um", "um"), ("dte_peak_to_peak_um", "um"),
                        ("bearing_dynamic_rms_n", "N"), ("bearing_harmonic_amplitude_n", "N")):
         dataset[name].attrs["units"] = unit
