@@ -8,7 +8,6 @@ the reason.
 from __future__ import annotations
 
 import functools
-import math
 import tomllib
 import weakref
 from dataclasses import dataclass, field
@@ -20,17 +19,18 @@ import pydantic
 
 from thermogear import warning_scope
 from thermogear.case_errors import case_error_from_validation
+from thermogear.case_geometry import gear_pair_of
 from thermogear.case_keys import warn_keys_without_effect
 from thermogear.case_limits import check_model_limits
 from thermogear.composition import CASE_CHECKS, TEMPERATURE_MODELS, builtin, resolve
 from thermogear.errors import CaseError, closest_key
 from thermogear.fzg import fzg_load_stage_torque
-from thermogear.geometry import Gear, GearPair, involute
+from thermogear.geometry import GearPair
 from thermogear.materials import Material
 from thermogear.operating import OperatingPoint
 from thermogear.schema.base import StrictTypeError
 from thermogear.schema import (CaseFile, DampingSection, DrivetrainSection, DynamicsSection, FemSection, GearboxSection,
-                               GearSection, GearsSection, HousingSection, LubricantSection, MaterialSection,
+                               GearsSection, HousingSection, LubricantSection, MaterialSection,
                                TemperatureSection,
                                ThermalSection)
 from thermogear.schema.drivetrain import check_drivetrain_fits_gears
@@ -117,15 +117,6 @@ class Case:
                 node = node.setdefault(part, {})
             node[last] = value
         return case_from_document(document, source=self.source)
-
-
-def _gears_key(key: str) -> str:
-    """The case-file key of a key the geometry names within ``[gears]`` (``pinion.profile_shift`` →
-    ``gears.pinion.profile_shift``); a derived quantity (``contact_ratio``) is named as such, within [gears]."""
-    section, _, rest = key.partition(".")
-    if section in GearsSection.model_fields or (section in ("pinion", "wheel") and rest in GearSection.model_fields):
-        return f"gears.{key}"
-    return f"gears ({key}, derived)"
 
 
 def _section_default(name: str) -> dict[str, Any]:
@@ -239,25 +230,6 @@ def check_case(case: "Case") -> None:
         check(case)
 
 
-def check_profile_shift_sum(gears) -> None:
-    """Refuse profile shifts whose sum leaves no zero-backlash operating pressure angle.
-
-    ISO 21771: inv α_w = inv α + 2 tan α (x1 + x2)/(z1 + z2). The involute inv α = tan α − α is never negative,
-    so x1 + x2 must exceed −inv α (z1 + z2)/(2 tan α); below that (e.g. z 12/27, α 15.9°, x −0.46/−0.11) the
-    geometry has no solution (this used to surface as a ValueError of the inverse involute)."""
-    angle = math.radians(gears.pressure_angle_deg)
-    teeth = gears.pinion.teeth + gears.wheel.teeth
-    shift_sum = gears.pinion.profile_shift + gears.wheel.profile_shift
-    if float(involute(angle)) + 2.0 * math.tan(angle) * shift_sum / teeth > 0.0:
-        return
-    minimum = -float(involute(angle)) * teeth / (2.0 * math.tan(angle))
-    raise CaseError("gears.pinion.profile_shift + gears.wheel.profile_shift", round(shift_sum, 6),
-                    f"> {minimum:.4f} for z {gears.pinion.teeth}/{gears.wheel.teeth} at α = "
-                    f"{gears.pressure_angle_deg:g}°",
-                    "no operating pressure angle exists: inv α_w = inv α + 2 tan α (x1 + x2)/(z1 + z2) (ISO 21771) "
-                    "would be negative; raise the profile shifts")
-
-
 def _check_temperature_field(case: "Case") -> None:
     section = case.temperature
     if section.model not in ("uniform", "tabulated"):  # "fem": computed by its provider, checked there
@@ -285,28 +257,6 @@ def _check_thermal_inputs(case: "Case") -> None:
                         "x_te_source = 'calibrated' needs the target stiffness drop")
 
 
-def _gear_pair(gears: GearsSection) -> GearPair:
-    """The cold gear pair of a [gears] section (or a stage's gears)."""
-    angle = math.radians(gears.pressure_angle_deg)
-
-    def gear(section) -> Gear:
-        width = section.face_width_mm if section.face_width_mm is not None else gears.face_width_mm
-        return Gear(teeth=section.teeth, module=gears.module_mm * 1e-3, pressure_angle=angle,
-                    face_width=width * 1e-3, profile_shift=section.profile_shift,
-                    addendum_coefficient=gears.addendum_coefficient,
-                    dedendum_coefficient=gears.dedendum_coefficient,
-                    tool_tip_radius_coefficient=gears.tool_tip_radius_coefficient,
-                    bore_radius=0.0 if section.bore_radius_mm is None else section.bore_radius_mm * 1e-3,
-                    tip_radius=None if section.tip_diameter_mm is None else section.tip_diameter_mm * 0.5e-3)
-
-    centre = None if gears.centre_distance_mm is None else gears.centre_distance_mm * 1e-3
-    check_profile_shift_sum(gears)
-    try:
-        return GearPair.create(gear(gears.pinion), gear(gears.wheel), centre, tip_shortening=gears.tip_shortening)
-    except CaseError as error:  # the geometry names its keys within [gears]: the case file's key is gears.<key>
-        raise type(error)(_gears_key(error.key), error.value, error.allowed, error.reason) from None
-
-
 def _stage(section, model: CaseFile) -> GearStage:
     """A further stage of a drivetrain: its pair, checked as the first stage's is (profile shifts, tip reliefs,
     backlash, no jamming hot), under the case's material, temperatures and thermal model. A stage's own
@@ -324,7 +274,7 @@ def _stage(section, model: CaseFile) -> GearStage:
     if any(getattr(section.gears, name).inertia_kg_m2 is not None for name in ("pinion", "wheel")):
         raise CaseError(f"{key}.pinion.inertia_kg_m2", "given", "absent (the gear bodies are annuli)",
                         "a stage's gear bodies are the annuli of their pitch circles on the shafts")
-    pair = _gear_pair(section.gears)
+    pair = gear_pair_of(section.gears)
     check_thermoelastic_inputs(pair, model.model_copy(update={"gears": section.gears}))
     return GearStage(name=section.name, gear_pair=pair, gears_input=section.gears,
                      roughness_ra=section.gears.roughness_ra_um * 1e-6)
@@ -337,7 +287,7 @@ def case_from_document(document: dict[str, Any], source: str = "<memory>") -> Ca
     except pydantic.ValidationError as error:
         raise case_error_from_validation(error) from None
     gears = model.gears
-    pair = _gear_pair(gears)
+    pair = gear_pair_of(gears)
     check_thermoelastic_inputs(pair, model)
     stages = ()
     if model.drivetrain is not None:  # the gears' seats on their shafts (the drivetrain is built by its resolver)
