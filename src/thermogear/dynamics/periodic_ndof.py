@@ -27,7 +27,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from thermogear.dynamics.periodic_runs import by_runs, on_reached, reached_coordinates
+from thermogear.dynamics.periodic_runs import by_runs, floquet, on_reached, reached_coordinates
 from thermogear.dynamics.piece_groups import PIECE_TOLERANCE, group_rows
 from thermogear.dynamics.problem import checked_array, checked_nodes
 from thermogear.errors import ModelLimitError, ProblemError
@@ -305,16 +305,16 @@ def periodic_response(system: PiecewiseLinearSystem, samples_per_piece: int = 16
     starts = np.flatnonzero(np.diff(where, prepend=-1))  # runs of equal pieces
     if 4 * starts.size <= where.size or distinct.shape[1] > RUN_ROUTE_SIZE:
         return PeriodicResponse(*by_runs(system, distinct, where, starts, samples))
+    return _by_blocks(system, distinct, where, samples)
+
+
+def _by_blocks(system: PiecewiseLinearSystem, distinct: np.ndarray, where: np.ndarray,
+               samples: int) -> PeriodicResponse:
+    """:func:`periodic_response` by √N blocks of pieces (:func:`_blocks`), vectorised over the pieces: the route
+    for small systems whose pieces change often."""
     padded, products = _blocks(_power(distinct, samples), where)
     total = ordered_product(products)
-    transition, image = total[:-1, :-1], total[:-1, -1]
-    multipliers = np.linalg.eigvals(transition)
-    multipliers = multipliers[np.argsort(-np.abs(multipliers))]
-    radius = float(np.abs(multipliers).max())
-    if not np.isfinite(radius) or radius >= 1.0:
-        raise ModelLimitError(f"a Floquet multiplier has modulus {radius:.6g} >= 1: parametric instability, an "
-                              "undamped or a rigid-body mode; there is no attracting periodic orbit")
-    initial = np.linalg.solve(np.eye(transition.shape[0]) - transition, image)
+    multipliers, initial = floquet(total)
     n, pieces = system.size, where.size
     nodes = _orbit_nodes(padded, products, np.append(initial, 1.0), pieces)
     within = np.empty((pieces, samples, 2 * n + 1))
