@@ -9,10 +9,12 @@ augmented matrix (Van Loan, "Computing integrals involving the matrix exponentia
 The monodromy Φ_T = Φ_{N−1}···Φ_0 and the image p of z = 0 after one period give the periodic state
 z₀ = (I − Φ_T)⁻¹ p, unique and attracting iff every Floquet multiplier (eigenvalue of Φ_T) lies inside the unit
 circle (Floquet 1883; Nayfeh & Mook, Nonlinear Oscillations, 1979, §5.2). The exponentials of all pieces are
-taken in one vectorised pass (:mod:`thermogear.dynamics.batched_exponential`): equal pieces once, and pieces that
-differ only through low-rank patterns as rank updates of the mean one (``_piece_steps``). The monodromy is the
-product of √N blocks, blocks of the same pieces multiplied once, and the states at the nodes follow from the block
-products (``_blocks``); z₀ is one linear solve. Knows
+taken in one vectorised pass (:mod:`thermogear.dynamics.batched_exponential`): pieces equal within a relative
+1e-9 once (:mod:`thermogear.dynamics.piece_groups`, which bounds the effect), and pieces that differ only through
+low-rank patterns as rank updates of the mean one (``_piece_steps``). The monodromy is the product of √N blocks,
+blocks of the same pieces multiplied once, and the states at the nodes follow from the block products
+(``_blocks``); long runs of equal pieces and large systems take the run route instead, on the coordinates the
+forces reach (:mod:`thermogear.dynamics.periodic_runs`); z₀ is one linear solve. Knows
 nothing of gears: matrices only. With a rigid-body mode (K r = 0) a multiplier is 1 and I − Φ_T is singular:
 remove such modes first (``rigid_body.rigid_body_reduction``).
 
@@ -30,7 +32,7 @@ import numpy as np
 from thermogear.dynamics.periodic_runs import by_runs, floquet, on_reached, reached_coordinates
 from thermogear.dynamics.piece_groups import PIECE_TOLERANCE, group_rows
 from thermogear.dynamics.problem import checked_array, checked_nodes
-from thermogear.errors import ModelLimitError, ProblemError
+from thermogear.errors import ProblemError
 
 __all__ = ["RUN_ROUTE_SIZE", "PiecewiseLinearSystem", "PeriodicResponse", "monodromy", "ordered_product",
            "periodic_response"]
