@@ -46,6 +46,7 @@ DRIVETRAIN_HEAT: dict[str, str] = {
 #: Load-time checks every case passes (after the built-in ones), ``check(case) -> None``.
 CASE_CHECKS: tuple[str, ...] = (
     "thermogear.gearbox.case_model:check_gearbox_section",
+    "thermogear.mesh.table_file:check_mesh_table",
 )
 
 

@@ -28,6 +28,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from thermogear.dynamics.periodic_ndof import PiecewiseLinearSystem, periodic_response
+from thermogear.dynamics.piece_groups import representative_rows
 from thermogear.dynamics.problem import checked_array
 from thermogear.errors import ProblemError
 
@@ -162,8 +163,15 @@ def backlash_flow_ndof(system: BacklashSystem, state: np.ndarray, substeps: int 
     info = {"switches": 0, "free_flight_time": 0.0, "back_contact_time": 0.0, "zone_switches": 0, "time": [0.0],
             "states": [z[:-1]], "segments": [], "crossings": {}}
 
+    if "representative" not in cache:  # pieces equal within PIECE_TOLERANCE share their exponentials
+        cache["representative"] = representative_rows(np.column_stack([
+            np.diff(linear.nodes), linear.stiffness_factor, linear.damping_factor, system.deviation]))
+    representative = cache["representative"]
+
     def exponentials(piece: int, key: tuple) -> tuple[np.ndarray, np.ndarray]:
-        """(augmented matrix, its exponential over one sub-step) of a piece in one contact state, cached."""
+        """(augmented matrix, its exponential over one sub-step) of a piece in one contact state, cached (on the
+        first piece of its group: :func:`~thermogear.dynamics.piece_groups.representative_rows`)."""
+        piece = int(representative[piece])
         if (piece, key, substeps) not in cache:
             matrix = system.region_matrix(piece, key[0], inverse, key[1])
             width = linear.nodes[piece + 1] - linear.nodes[piece]
@@ -215,7 +223,8 @@ def backlash_flow_ndof(system: BacklashSystem, state: np.ndarray, substeps: int 
             if not np.all(np.isfinite(z)):
                 raise ProblemError("state", "not finite", "a bounded motion", "the coefficients are out of range")
         if monodromy:
-            total = _piece_product(cache, (piece, first_key, substeps), product, uniform) @ total
+            total = _piece_product(cache, (int(representative[piece]), first_key, substeps), product,
+                                   uniform) @ total
     _count_crossings(info["crossings"], key, (system.region(z, 0), system.sides(z)))  # the period's end node
     return z[:-1], None if total is None else total[:-1, :-1], info
 

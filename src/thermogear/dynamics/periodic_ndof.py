@@ -9,10 +9,12 @@ augmented matrix (Van Loan, "Computing integrals involving the matrix exponentia
 The monodromy Φ_T = Φ_{N−1}···Φ_0 and the image p of z = 0 after one period give the periodic state
 z₀ = (I − Φ_T)⁻¹ p, unique and attracting iff every Floquet multiplier (eigenvalue of Φ_T) lies inside the unit
 circle (Floquet 1883; Nayfeh & Mook, Nonlinear Oscillations, 1979, §5.2). The exponentials of all pieces are
-taken in one vectorised pass (:mod:`thermogear.dynamics.batched_exponential`): equal pieces once, and pieces that
-differ only through low-rank patterns as rank updates of the mean one (``_piece_steps``). The monodromy is the
-product of √N blocks, blocks of the same pieces multiplied once, and the states at the nodes follow from the block
-products (``_blocks``); z₀ is one linear solve. Knows
+taken in one vectorised pass (:mod:`thermogear.dynamics.batched_exponential`): pieces equal within a relative
+1e-9 once (:mod:`thermogear.dynamics.piece_groups`, which bounds the effect), and pieces that differ only through
+low-rank patterns as rank updates of the mean one (``_piece_steps``). The monodromy is the product of √N blocks,
+blocks of the same pieces multiplied once, and the states at the nodes follow from the block products
+(``_blocks``); long runs of equal pieces and large systems take the run route instead, on the coordinates the
+forces reach (:mod:`thermogear.dynamics.periodic_runs`); z₀ is one linear solve. Knows
 nothing of gears: matrices only. With a rigid-body mode (K r = 0) a multiplier is 1 and I − Φ_T is singular:
 remove such modes first (``rigid_body.rigid_body_reduction``).
 
@@ -29,10 +31,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from thermogear.dynamics.periodic_runs import by_runs, floquet, on_reached, reached_coordinates
+from thermogear.dynamics.piece_groups import PIECE_TOLERANCE, group_rows
 from thermogear.dynamics.problem import checked_array, checked_nodes
-from thermogear.errors import ModelLimitError, ProblemError
+from thermogear.errors import ProblemError
 
-__all__ = ["PiecewiseLinearSystem", "PeriodicResponse", "monodromy", "ordered_product", "periodic_response"]
+__all__ = ["RUN_ROUTE_SIZE", "PiecewiseLinearSystem", "PeriodicResponse", "monodromy", "ordered_product",
+           "periodic_response"]
 
 
 @dataclass(frozen=True, eq=False)
@@ -172,12 +177,15 @@ def _mass_inverse(system: PiecewiseLinearSystem) -> np.ndarray:
     return cho_solve(factor, np.eye(system.size))
 
 
-def _piece_steps(system: PiecewiseLinearSystem, samples: int) -> tuple[np.ndarray, np.ndarray]:
+def _piece_steps(system: PiecewiseLinearSystem, samples: int,
+                 tolerance: float = PIECE_TOLERANCE) -> tuple[np.ndarray, np.ndarray]:
     """(D, 2n+1, 2n+1) exponentials of the D distinct augmented pieces over one sub-step h_j/samples each, and the
     index (N,) of each piece's among them.
 
-    Two exact economies. Pieces with the same (h_j, k_j, c_j, g_j) have the same exponential: it is taken once
-    (a square-wave or piecewise-constant k(τ) of a few levels needs a few exponentials for any number of pieces).
+    Two economies. Pieces with the same (h_j, k_j, c_j, g_j) within ``tolerance`` (relative to each column's
+    largest magnitude: :func:`~thermogear.dynamics.piece_groups.group_rows`, whose docstring bounds the effect)
+    share one exponential, taken once (a square-wave or piecewise-constant k(τ) of a few levels needs a few
+    exponentials for any number of pieces, also where a table repeats its levels only to the last bits).
     When the patterns have low rank r (a gear mesh: r = 1, everything acts through w), every piece is the
     mean matrix plus a rank-r term, and :func:`~thermogear.dynamics.batched_exponential.expm_of_rank_updates`
     forms all of them at O(r·n²) each instead of the O(n³) of a full Taylor polynomial
@@ -190,13 +198,18 @@ def _piece_steps(system: PiecewiseLinearSystem, samples: int) -> tuple[np.ndarra
     widths = np.diff(system.nodes) / samples
     pattern_k, pattern_c, pattern_f, factor_k, factor_c, factor_f = system.stacked()
     factors = np.column_stack([widths, factor_k, factor_c, factor_f])
-    distinct, where = np.unique(factors, axis=0, return_inverse=True)
-    where = where.ravel()
-    range_basis = _pattern_range(system)
+    distinct, where = group_rows(factors, tolerance)
     n = system.size
+    range_basis = _pattern_range(system) if distinct.shape[0] >= _RANK_ROUTE_PIECES else np.zeros((n, 0))
     rank = range_basis.shape[1]
     if distinct.shape[0] < _RANK_ROUTE_PIECES or rank == 0 or rank * _RANK_ROUTE_RATIO > 2 * n + 1:
-        steps = batched_expm(_with_factors(system, distinct).augmented_stack(inverse) * distinct[:, :1, None])
+        stack = _with_factors(system, distinct).augmented_stack(inverse) * distinct[:, :1, None]
+        if 2 * n + 1 >= _SINGLE_ROUTE_SIZE:  # a few large pieces: each by itself (Al-Mohy & Higham 2009, Padé 13)
+            from scipy.linalg import expm
+
+            steps = np.stack([expm(matrix) for matrix in stack])
+        else:
+            steps = batched_expm(stack)
     else:
         mean_factors = distinct[:, 1:].mean(axis=0)
         mean = _with_factors(system, np.append(1.0, mean_factors)[None]).augmented_stack(inverse)[0]
@@ -221,6 +234,16 @@ def _piece_steps(system: PiecewiseLinearSystem, samples: int) -> tuple[np.ndarra
 # Below 16 distinct pieces the full exponentials take well under a millisecond and keep the tighter scaling.
 _RANK_ROUTE_PIECES = 16
 _RANK_ROUTE_RATIO = 8
+# From this state size on (about 200 DOF) a few distinct pieces are exponentiated one by one with scipy's Padé-13
+# scaling and squaring (Al-Mohy & Higham, SIAM J. Matrix Anal. Appl. 31 (2009) 970–989): its wider scaling
+# threshold (θ₁₃ = 5.37 against the Taylor stack's 0.5) saves about three squarings of a large matrix, measured
+# 1.0 s against 1.35 s on a 985-square piece (one BLAS thread).
+_SINGLE_ROUTE_SIZE = 401
+# Above this augmented size (about 100 DOF) the orbit is always built run by run: the stacks of the block route hold
+# a matrix per piece (N·m² numbers: 5 GB for 1000 pieces of 800 coordinates).
+RUN_ROUTE_SIZE = 201
+
+
 
 
 def _with_factors(system: PiecewiseLinearSystem, rows: np.ndarray) -> PiecewiseLinearSystem:
@@ -296,15 +319,21 @@ def _orbit_nodes(padded: np.ndarray, products: np.ndarray, start: np.ndarray, co
     return np.vstack([inside.reshape(-1, start.size)[:count], state[None]])
 
 
-def monodromy(system: PiecewiseLinearSystem) -> tuple[np.ndarray, np.ndarray]:
-    """Monodromy Φ_T (2n, 2n) and the image p (2n,) of z = 0 after one period."""
-    distinct, where = _piece_steps(system, 1)
+def monodromy(system: PiecewiseLinearSystem,
+              piece_tolerance: float = PIECE_TOLERANCE) -> tuple[np.ndarray, np.ndarray]:
+    """Monodromy Φ_T (2n, 2n) and the image p (2n,) of z = 0 after one period (``piece_tolerance``: see
+    :func:`periodic_response`)."""
+    distinct, where = _piece_steps(system, 1, piece_tolerance)
     total = ordered_product(distinct[where])
     return total[:-1, :-1], total[:-1, -1]
 
 
-def periodic_response(system: PiecewiseLinearSystem, samples_per_piece: int = 16) -> PeriodicResponse:
+def periodic_response(system: PiecewiseLinearSystem, samples_per_piece: int = 16,
+                      piece_tolerance: float = PIECE_TOLERANCE) -> PeriodicResponse:
     """The exact periodic steady state, sampled at ``samples_per_piece`` equal steps per piece.
+
+    ``piece_tolerance`` ε: pieces whose (h_j, k_j, c_j, g_j) agree within ε of each column's largest magnitude share
+    one exponential (:mod:`~thermogear.dynamics.piece_groups` bounds the effect; 0: bit-identical pieces only).
 
     Raises ModelLimitError when a Floquet multiplier has modulus >= 1 (parametric instability, an undamped mode or
     a rigid-body mode left in the system): there is then no attracting periodic orbit.
@@ -312,17 +341,25 @@ def periodic_response(system: PiecewiseLinearSystem, samples_per_piece: int = 16
     if int(samples_per_piece) != samples_per_piece or samples_per_piece < 1:
         raise ProblemError("samples_per_piece", samples_per_piece, "integer >= 1", "sub-steps per piece")
     samples = int(samples_per_piece)
-    distinct, where = _piece_steps(system, samples)
+    # one mesh pattern: solve on the coordinates the forces reach (a train's stacked patterns take every DOF)
+    reached = reached_coordinates(system) if system.stiffness_pattern.ndim == 2 else None
+    if reached is not None and not reached.all():
+        return PeriodicResponse(*on_reached(system, reached, lambda reduced: periodic_response(
+            reduced, samples, piece_tolerance)))
+    distinct, where = _piece_steps(system, samples, piece_tolerance)
+    starts = np.flatnonzero(np.diff(where, prepend=-1))  # runs of equal pieces
+    if 4 * starts.size <= where.size or distinct.shape[1] > RUN_ROUTE_SIZE:
+        return PeriodicResponse(*by_runs(system, distinct, where, starts, samples))
+    return _by_blocks(system, distinct, where, samples)
+
+
+def _by_blocks(system: PiecewiseLinearSystem, distinct: np.ndarray, where: np.ndarray,
+               samples: int) -> PeriodicResponse:
+    """:func:`periodic_response` by √N blocks of pieces (:func:`_blocks`), vectorised over the pieces: the route
+    for small systems whose pieces change often."""
     padded, products = _blocks(_power(distinct, samples), where)
     total = ordered_product(products)
-    transition, image = total[:-1, :-1], total[:-1, -1]
-    multipliers = np.linalg.eigvals(transition)
-    multipliers = multipliers[np.argsort(-np.abs(multipliers))]
-    radius = float(np.abs(multipliers).max())
-    if not np.isfinite(radius) or radius >= 1.0:
-        raise ModelLimitError(f"a Floquet multiplier has modulus {radius:.6g} >= 1: parametric instability, an "
-                              "undamped or a rigid-body mode; there is no attracting periodic orbit")
-    initial = np.linalg.solve(np.eye(transition.shape[0]) - transition, image)
+    multipliers, initial = floquet(total)
     n, pieces = system.size, where.size
     nodes = _orbit_nodes(padded, products, np.append(initial, 1.0), pieces)
     within = np.empty((pieces, samples, 2 * n + 1))

@@ -26,6 +26,7 @@ from thermogear.lubricant import Lubricant, lubricant_from_case
 from thermogear.mesh.model_names import MODELS, Model
 from thermogear.mesh.pair_models import PairModelBase, check_model, pair_model_for
 from thermogear.mesh.state import MeshState
+from thermogear.mesh.table_file import mesh_table_of
 from thermogear.mesh_cycle import MeshCycle, MeshGrid, load_share_at, load_shares
 from thermogear.temperature_source import TemperatureField
 from thermogear.thermoelastic.load_sharing import loaded_transmission_error
@@ -133,6 +134,9 @@ class MeshModel:
         if (self.case.temperature.model in OPERATING_POINT_TEMPERATURE_MODELS
                 or getattr(self.case.thermal, "x_te_source", "") == "fem"):
             return None
+        table = mesh_table_of(self.case)
+        if table is not None and table.damping is not None:  # the table's c(τ) holds at every speed and load
+            return 0.0, 0.0
         load_exponent = None if self.load_shares_depend_on_load else FRICTION_DAMPING_LOAD_EXPONENT
         return FRICTION_DAMPING_SPEED_EXPONENT, load_exponent
 
@@ -283,12 +287,15 @@ class MeshModel:
             friction = self._friction(np.clip(grid.roll[contact], points["A"], points["E"]), share[contact],
                                       damping_stiffness[contact], speed, load)
             pair_damping[contact] = np.where(share[contact] > 0.0, friction.damping, 0.0)
-        return MeshState(model=self.model, speed_rpm=speed, normal_load=load, mass=self.equivalent_mass, grid=grid,
-                         pair_stiffness=stiffness, pair_damping=pair_damping,
-                         mesh_damping=np.asarray(mesh_damping(pair_damping, grid.in_contact, self.damping_rule), float),
-                         pair_deviation=deviation, pair_engaged=engaged, static_transmission_error=static,
-                         backlash=self.backlash, face_width=self.face_width,
-                         mesh_frequency_hz=self.gear_pair.mesh_frequency(speed))
+        state = MeshState(model=self.model, speed_rpm=speed, normal_load=load, mass=self.equivalent_mass, grid=grid,
+                          pair_stiffness=stiffness, pair_damping=pair_damping,
+                          mesh_damping=np.asarray(mesh_damping(pair_damping, grid.in_contact, self.damping_rule),
+                                                  float),
+                          pair_deviation=deviation, pair_engaged=engaged, static_transmission_error=static,
+                          backlash=self.backlash, face_width=self.face_width,
+                          mesh_frequency_hz=self.gear_pair.mesh_frequency(speed))
+        table = mesh_table_of(self.case)  # a user's k(τ) (dynamics.mesh_table) replaces the model's
+        return state if table is None else table.state_like(state)
 
     def natural_frequency_hz(self, state: MeshState) -> float:
         """f_n = sqrt(mean k / me)/2π [Hz] of a state."""

@@ -64,6 +64,9 @@ class DynamicsSection(Section):
     transient_periods: Annotated[int, Field(ge=1, le=MAX_TRANSIENT_PERIODS, description=(
         "mesh periods integrated from rest (the history is kept: about 1 kB per sample)"))] = 60
     include_damping_force: bool = Field(False, description="dynamic load k·x + c·ẋ instead of the paper's k·x")
+    mesh_table: str | None = Field(None, description=(
+        "CSV table of one mesh period (columns 'phase [-]', 'stiffness [N/m]', optional 'damping [N*s/m]', "
+        "'deviation [um]'; relative to the case file) that replaces the models' k(τ) in the dynamics"))
 
     @model_validator(mode="after")
     def _orbit_memory(self):

@@ -1,0 +1,143 @@
+"""Two exact routes of :func:`~thermogear.dynamics.periodic_ndof.periodic_response` for large systems and long
+runs of equal pieces: the periodic orbit solved on the coordinates the forces reach (:func:`reached_coordinates`,
+:func:`on_reached`) and built run by run from powers of the pieces' exponentials (:func:`by_runs`). Knows nothing
+of gears: matrices only.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from thermogear.errors import ModelLimitError
+
+__all__ = ["by_runs", "floquet", "on_reached", "reached_coordinates"]
+
+
+def floquet(total: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(multipliers largest first, z₀) of the augmented one-period map; ModelLimitError where |μ| >= 1."""
+    transition, image = total[:-1, :-1], total[:-1, -1]
+    multipliers = np.linalg.eigvals(transition)
+    multipliers = multipliers[np.argsort(-np.abs(multipliers))]
+    radius = float(np.abs(multipliers).max())
+    if not np.isfinite(radius) or radius >= 1.0:
+        raise ModelLimitError(f"a Floquet multiplier has modulus {radius:.6g} >= 1: parametric instability, an "
+                              "undamped or a rigid-body mode; there is no attracting periodic orbit")
+    return multipliers, np.linalg.solve(np.eye(transition.shape[0]) - transition, image)
+
+
+def by_runs(system, steps: np.ndarray, where: np.ndarray, starts: np.ndarray,
+            samples: int) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """:func:`periodic_response` on runs of equal pieces (a k(τ) of a few levels on many intervals; every large
+    system). A run of L equal pieces of sub-step exponential S is S^(L·s) over its s·L sub-steps: its powers
+    S, S², S⁴, … are formed once per distinct piece by squaring (log₂(L·s) products instead of L·s − 1), the
+    monodromy is the product of one such power per run, and the sampled states of a run follow by doubling,
+    [z, Sz] → [z, Sz, S²z, S³z] → …, each step one matrix product with all states found so far (Moler & Van Loan,
+    SIAM Review 45 (2003) 3–49, §3, for the powers). Exact: only the order of the floating-point products differs
+    from the block route."""
+    lengths = np.diff(np.append(starts, where.size)) * samples
+    pieces = where[starts]
+    powers: dict[int, list[np.ndarray]] = {}
+    for piece in np.unique(pieces):
+        longest, chain = int(lengths[pieces == piece].max()), [steps[piece]]
+        while 2 ** len(chain) <= longest:
+            chain.append(chain[-1] @ chain[-1])
+        powers[int(piece)] = chain
+
+    def run_power(piece: int, count: int) -> np.ndarray:
+        result = None
+        for bit, power in enumerate(powers[piece]):
+            if count >> bit & 1:
+                result = power if result is None else power @ result
+        return result
+
+    run_maps, cache = [], {}
+    for piece, count in zip(pieces.tolist(), lengths.tolist()):
+        if (piece, count) not in cache:
+            cache[(piece, count)] = run_power(piece, count)
+        run_maps.append(cache[(piece, count)])
+    total = run_maps[0]
+    for matrix in run_maps[1:]:
+        total = matrix @ total
+    multipliers, initial = floquet(total)
+    n, size = system.size, steps.shape[1]
+    states = np.empty((where.size * samples + 1, size))
+    state, row = np.append(initial, 1.0), 0
+    for piece, count, matrix in zip(pieces.tolist(), lengths.tolist(), run_maps):
+        found = state[None]
+        for power in powers[piece]:
+            if found.shape[0] >= count:
+                break
+            found = np.vstack([found, found[:count - found.shape[0]] @ power.T])
+        states[row:row + count] = found[:count]
+        row += count
+        state = matrix @ state
+    states[-1] = state
+    offsets = np.arange(samples) / samples
+    time = np.concatenate([(system.nodes[:-1, None] + np.diff(system.nodes)[:, None] * offsets).ravel(),
+                           [system.period]])
+    return time, states[:, :n], states[:, n:2 * n], multipliers, initial
+
+
+def _linked(matrix: np.ndarray, by_rows: bool = True) -> np.ndarray:
+    """Entries of a matrix above rounding: |X_ij| > 1e-13·sqrt(r_i·r_j), r the largest magnitude of each row and
+    column (a coupling left by the rounding of a projection is ~1e-16 of them); ``by_rows`` False: above 1e-13 of
+    the largest entry (a pattern w wᵀ, whose rows may be rounding noise of a projection as a whole)."""
+    magnitude = np.abs(matrix)
+    if not by_rows:
+        return magnitude > 1e-13 * max(float(magnitude.max()), 1e-300)
+    scale = np.maximum(magnitude.max(axis=1), magnitude.max(axis=0))
+    return magnitude > 1e-13 * np.sqrt(np.outer(scale, scale))
+
+
+def reached_coordinates(system) -> np.ndarray:
+    """Mask (n,) of the coordinates that the forces reach: those loaded by f₀ or the force pattern, closed under
+    every coupling of M, K, C and the patterns. The others form a constant-coefficient block that starts nowhere
+    and is never forced, so its periodic motion is zero (for a spur drivetrain: the axial DOFs). Solving on the
+    reached coordinates only is exact and saves (m_reached/m)³ of the exponentials."""
+    forces = np.abs(system.force) + np.abs(system.force_pattern)
+    reached = forces > 1e-13 * max(forces.max(), 1e-300)
+    links = np.zeros((system.size, system.size), dtype=bool)
+    for name in ("mass", "stiffness", "damping"):
+        links |= _linked(getattr(system, name))
+    for name in ("stiffness_pattern", "damping_pattern"):
+        links |= _linked(getattr(system, name), by_rows=False)
+    while True:
+        grown = reached | links[:, reached].any(axis=1)
+        if grown.sum() == reached.sum():
+            return grown
+        reached = grown
+
+
+def on_reached(system, reached: np.ndarray, solve) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray,
+                                                              np.ndarray]:
+    """``solve`` (the periodic response of a system) on the reached coordinates, the others at rest: (time,
+    displacement, velocity, multipliers, initial state). The Floquet multipliers of the block left out, e^{λT} of
+    its constant state matrix, join the reached block's."""
+    from dataclasses import replace
+
+    inside = np.ix_(reached, reached)
+    reduced = replace(system, **{name: getattr(system, name)[inside] for name in (
+        "mass", "stiffness", "damping", "stiffness_pattern", "damping_pattern")},
+        force=system.force[reached], force_pattern=system.force_pattern[reached])
+    others = ~reached
+    outside = np.ix_(others, others)
+    multipliers = np.zeros(0, dtype=complex)
+    if others.any():
+        count = int(others.sum())
+        inverse = np.linalg.inv(system.mass[outside])
+        state = np.block([[np.zeros((count, count)), np.eye(count)],
+                          [-inverse @ system.stiffness[outside], -inverse @ system.damping[outside]]])
+        multipliers = np.exp(np.linalg.eigvals(state) * system.period)
+    radius = float(np.abs(multipliers).max()) if multipliers.size else 0.0
+    if not np.isfinite(radius) or radius >= 1.0:
+        raise ModelLimitError(f"a Floquet multiplier has modulus {radius:.6g} >= 1: parametric instability, an "
+                              "undamped or a rigid-body mode; there is no attracting periodic orbit")
+    response = solve(reduced)
+    displacement = np.zeros((response.time.size, system.size))
+    velocity = np.zeros_like(displacement)
+    displacement[:, reached], velocity[:, reached] = response.displacement, response.velocity
+    initial = np.zeros(2 * system.size)
+    initial[np.concatenate([reached, reached])] = response.initial_state
+    multipliers = np.concatenate([response.multipliers, multipliers])
+    multipliers = multipliers[np.argsort(-np.abs(multipliers), kind="stable")]
+    return response.time, displacement, velocity, multipliers, initial
