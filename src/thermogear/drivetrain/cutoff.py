@@ -34,7 +34,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from thermogear.drivetrain.assembly import AssembledDrivetrain
-from thermogear.drivetrain.response import DrivetrainResponse, _periodic_system, _response
+from thermogear.drivetrain.response import DrivetrainResponse, _as_train, _grid, _periodic_system, _response
 from thermogear.drivetrain.static_state import mesh_torque_forces
 from thermogear.dynamics.periodic_ndof import PiecewiseLinearSystem
 from thermogear.errors import CaseError
@@ -152,15 +152,19 @@ def drivetrain_cutoff_sweep(assembled: AssembledDrivetrain, states: Sequence[Mes
         raise CaseError("cutoff_hz", cutoff_hz, "> 0 Hz, finite", "the highest mode frequency kept")
     first = states[0]
     first_problem = first.problem()
-    system, reduction = _periodic_system(assembled, first, first_problem, None)
+    first_train = _as_train(assembled, first)  # one mesh: the cut-off's shared projection holds one mesh vector
+    system, reduction = _periodic_system(assembled, first_train, (first_problem,),
+                                         _grid(first_train, (first_problem,)), None)
     shared = [_SharedReduction.build(assembled, system, reduction, cutoff_hz)]
     if estimate:
         shared.append(_SharedReduction.build(assembled, system, reduction, 2.0 * cutoff_hz))
     results = []
     for state in states:
         problem = first_problem if state is first else state.problem()
-        responses = [_response(assembled, state, problem, model.system(assembled, state, problem), reduction,
-                               model.basis, samples_per_piece) for model in shared]
+        train = _as_train(assembled, state)
+        grid = _grid(train, (problem,))
+        responses = [_response(assembled, train, (problem,), grid, model.system(assembled, state, problem),
+                               reduction, model.basis, samples_per_piece) for model in shared]
         error = None
         if estimate:
             dte, force = _difference(responses[0], responses[1])
