@@ -11,6 +11,7 @@ from thermogear.cli.app import app, console, error_console, print_json
 from thermogear.cli.console import print_warning
 from thermogear.cli.sweep_summary import load_held_summary, print_sweep_summary, response_summary
 from thermogear.errors import CaseError
+from thermogear.sweep.executor import check_scheduler_address
 
 
 @app.command()
@@ -59,7 +60,7 @@ def sweep(
     with exclusive_writer(out):  # one writer per store: a second sweep into it is refused at once
         _refuse_foreign_entries(out, overwrite)
         loaded, section = load_study_case(case)
-        check_scheduler(scheduler)
+        check_scheduler_address(scheduler)
         stored = study_description(out) if resume else None
         if vary:
             definition: dict | list = list(vary)
@@ -193,35 +194,6 @@ def _progress_bar(total: int, completed: int):
     from thermogear.cli.console import point_progress
 
     return point_progress("sweep", total=total, completed=completed, unit="points")
-
-
-def check_scheduler(address: str | None, timeout: float = 5.0) -> None:
-    """Refuse a ``tcp://host:port`` scheduler that does not accept connections, before anything is written.
-
-    A ``dask.distributed`` client retries an unreachable address for its whole timeout and then raises from deep
-    inside the driver; this one connection attempt names the address instead (``serial``, ``local`` and no
-    address need no check, nor do the local schedulers; other protocols are left to the client)."""
-    if address in (None, "", "serial", "local", "threads", "processes"):
-        return
-    import socket
-    from urllib.parse import urlsplit
-
-    parts = urlsplit(address if "://" in address else f"tcp://{address}")
-    if parts.scheme not in ("tcp", "tls"):
-        return
-    allowed = "a dask.distributed scheduler address tcp://host:port, 'threads', 'processes' or 'serial'"
-    try:
-        host, port = parts.hostname, parts.port
-    except ValueError:
-        host, port = None, None
-    if not host or port is None:
-        raise CaseError("--scheduler", address, allowed, "the address needs a host and a port")
-    try:
-        with socket.create_connection((host, port), timeout=timeout):
-            pass
-    except OSError as error:
-        raise CaseError("--scheduler", address, allowed,
-                        f"no scheduler answers there ({error.strerror or error}); nothing was written") from None
 
 
 def _remove_empty_store(out: Path, existed: bool) -> None:
