@@ -42,6 +42,8 @@ def sweep(
     multistart: int = typer.Option(0, "--multistart", min=0, help="nonlinear mesh: at every point also search "
                                    "the state plane from N starts and list every stable orbit found with its basin "
                                    "share (about 0.1 s per start, point and model; default 0: branches only)"),
+    hold: str = typer.Option(None, "--hold", help="the load a speed sweep keeps from speed to speed: torque "
+                             "(default) | power; stated in the store, the summary, the JSON and the plot"),
 ) -> None:
     """Run a parameter study of a case (grid over speed, load, temperatures, geometry) into a zarr store.
 
@@ -72,30 +74,16 @@ def sweep(
             raise CaseError("vary", None, "--vary NAME=VALUES (repeatable) or a [sweep] table in the case file",
                             "a sweep needs something to vary")
         chosen_model = model or (section.model if section is not None else None)
-        if loaded.drivetrain is not None:  # the drivetrain's speed sweep (issue 27): linear or backlash mesh
-            import warnings
-
-            from thermogear.cli.sweep_drivetrain import drivetrain_models, run_drivetrain_sweep
-            from thermogear.drivetrain.case_model import case_drivetrain
-            from thermogear.sweep.drivetrain_speeds import SweepOrigin
-
-            if multistart:
-                raise CaseError("--multistart", multistart, "0 for a case with a [drivetrain]",
-                                "the drivetrain sweep follows the orbit in speed; the state search is the pair's")
-            models = drivetrain_models(chosen_model or "both")
-            with warnings.catch_warnings():
-                warnings.simplefilter("ignore")  # the case's warnings are its checks'; the sweep states its own
-                built = case_drivetrain(loaded, models)
-            origin = SweepOrigin(loaded.name, str(loaded.source), loaded.document,
-                                 loaded.operating_point.load_held)
-            run_drivetrain_sweep(built, origin, models, definition, out, overwrite, resume, plot, progress, as_json,
-                                 workers, console, error_console, direction)
-            return
         chunks = chunk_points or (section.chunk_points if section is not None else None)
         if stored is not None:
             chosen_model = chosen_model or ("both" if len(stored["models"]) == 2 else stored["models"][0])
             chunks = chunks or stored["chunk_points"]
-        study = Study.define(loaded, definition, model=chosen_model or "both", chunk_points=chunks)
+        study = Study.define(loaded, definition, model=chosen_model or "both", chunk_points=chunks,
+                             hold=hold or (stored or {}).get("hold", "torque"))
+        if loaded.drivetrain is not None:  # the drivetrain's studies: linear or backlash mesh, any grid
+            _run_drivetrain(study, out, direction, multistart, method, scheduler, workers, dashboard, resume,
+                            overwrite, chunk_points, plot, progress and not as_json, as_json)
+            return
         # the case itself passes what check and run check; a study solves periodic steady states only
         preflight(loaded, tuple(study.models), method="periodic")
         if direction is not None and direction not in ("up", "down", "both"):
@@ -162,6 +150,33 @@ def sweep(
             print_json(summary)
             return
         print_sweep_summary(summary, console, error_console)
+
+
+def _run_drivetrain(study, out: Path, direction, multistart: int, method: str, scheduler, workers, dashboard,
+                    resume: bool, overwrite: bool, chunk_points, plot, progress: bool, as_json: bool) -> None:
+    """The study of a case with a [drivetrain] (every option acts, or is refused with the reason)."""
+    from thermogear.cli.sweep_drivetrain import run_drivetrain_sweep
+
+    if multistart:
+        raise CaseError("--multistart", multistart, "0 for a case with a [drivetrain]",
+                        "the drivetrain study follows the orbit in speed; the state-plane search is the pair's")
+    if method != "batch":
+        raise CaseError("--method", method, "batch (the default) for a case with a [drivetrain]",
+                        "the drivetrain study solves each speed's periodic orbit on its modal reduction; there is "
+                        "no one-Simulation-per-point reference for a drivetrain")
+    backlash = study.case.dynamics.mesh == "nonlinear"
+    if chunk_points is not None and backlash:
+        raise CaseError("--chunk-points", chunk_points, "absent with the backlash mesh",
+                        "each point of a branch is its own task (it starts from its neighbour's orbit), so a "
+                        "branch is written and resumed point by point")
+    kind = "processes" if scheduler in (None, "", "local") else scheduler
+    if dashboard is not None and kind != "processes":
+        raise CaseError("--dashboard", dashboard, "only with the local Dask cluster (--scheduler processes)",
+                        f"the {kind} scheduler serves no dashboard of its own")
+    options = {"scheduler": kind, "workers": workers, "resume": resume, "overwrite": overwrite,
+               "chunk_points": chunk_points, "dashboard": dashboard}
+    run_drivetrain_sweep(study, out, direction, options, plot, as_json, console,
+                         _progress_bar if progress else None)
 
 
 def _refuse_foreign_entries(out: Path, overwrite: bool) -> None:

@@ -43,45 +43,55 @@ def worker_count(workers: int | None) -> int:
     return int(workers or os.cpu_count() or 1)
 
 
-def run_task(function: Callable[[Any, Any], Any], shared: Any, task: Any) -> Any:
+def run_task(function: Callable[..., Any], shared: Any, task: Any, *previous: Any) -> Any:
     """One task on one BLAS thread: a task's numbers do not depend on the thread count of the linear algebra it
-    calls, so a task gives the same bits in the driver, on a thread, in a worker process or on a remote worker."""
+    calls, so a task gives the same bits in the driver, on a thread, in a worker process or on a remote worker.
+    ``previous``: the result of the task it follows (a chain), if any."""
     from threadpoolctl import threadpool_limits
 
     with threadpool_limits(limits=1, user_api="blas"):
-        return function(shared, task)
+        return function(shared, task, *previous)
 
 
-def execute(function: Callable[[Any, Any], Any], shared: Any, tasks: Sequence[Any],
+def execute(function: Callable[..., Any], shared: Any, tasks: Sequence[Any],
             on_result: Callable[[int, Any], None], scheduler: str = "serial", workers: int | None = None,
-            dashboard: str | None = None) -> None:
+            dashboard: str | None = None, follows: Sequence[int | None] | None = None) -> None:
     """Run ``function(shared, task)`` for every task on ``scheduler`` (module docstring) and call
-    ``on_result(index, result)`` in the calling thread as each finishes. A task's error is raised here; the tasks
-    not yet started are cancelled when one fails or the run is interrupted."""
+    ``on_result(index, result)`` in the calling thread as each finishes. ``follows[i]``: the index (< i) of the
+    task whose result task i continues from, called ``function(shared, task, previous_result)`` once that one is
+    done (a branch followed point by point); None: independent. A task's error is raised here; the tasks not yet
+    started are cancelled when one fails or the run is interrupted."""
     if not tasks:
         return
+    follows = list(follows) if follows is not None else [None] * len(tasks)
+    if any(f is not None and not 0 <= f < i for i, f in enumerate(follows)):
+        raise ValueError("a task follows an earlier task only")
     if scheduler == "serial":
         if workers not in (None, 1):
             raise CaseError("--workers", workers, "absent (or 1) with --scheduler serial",
                             "the serial scheduler computes in the calling thread")
+        results: dict[int, Any] = {}
         for index, task in enumerate(tasks):
-            on_result(index, run_task(function, shared, task))
+            previous = () if follows[index] is None else (results[follows[index]],)
+            results[index] = run_task(function, shared, task, *previous)
+            on_result(index, results[index])
         return
     if scheduler == "threads":
-        _threads(function, shared, tasks, on_result, worker_count(workers))
+        _threads(function, shared, tasks, follows, on_result, worker_count(workers))
         return
     with _client(scheduler, workers, dashboard) as client:
-        _distributed(client, function, shared, tasks, on_result)
+        _distributed(client, function, shared, tasks, follows, on_result)
 
 
-def _threads(function, shared, tasks, on_result, count: int) -> None:
+def _threads(function, shared, tasks, follows, on_result, count: int) -> None:
     """Dask's threaded scheduler; each result reaches ``on_result`` from Dask's post-task callback, which runs in
     the calling thread."""
     import dask
     from dask.callbacks import Callback
 
     keys = [f"thermogear-task-{index}" for index in range(len(tasks))]
-    graph = {key: (partial(run_task, function, shared, task),) for key, task in zip(keys, tasks)}
+    graph = {key: (partial(run_task, function, shared, task),) + (() if follow is None else (keys[follow],))
+             for key, task, follow in zip(keys, tasks, follows)}
     numbers = {key: index for index, key in enumerate(keys)}
 
     class _Handed(Callback):
@@ -94,12 +104,19 @@ def _threads(function, shared, tasks, on_result, count: int) -> None:
         get(graph, keys, num_workers=min(count, len(tasks)))
 
 
-def _distributed(client, function, shared, tasks, on_result) -> None:
+def _distributed(client, function, shared, tasks, follows, on_result) -> None:
+    import uuid
+
     from distributed import as_completed
 
     remote = client.scatter(shared, broadcast=True, hash=False)
-    futures = {client.submit(run_task, function, remote, task, pure=False, key=f"thermogear-task-{index}-"
-                             f"{os.getpid()}-{id(tasks)}"): index for index, task in enumerate(tasks)}
+    run = uuid.uuid4().hex
+    submitted: list = []
+    for index, task in enumerate(tasks):
+        previous = () if follows[index] is None else (submitted[follows[index]],)
+        submitted.append(client.submit(run_task, function, remote, task, *previous, pure=False,
+                                       key=f"thermogear-task-{run}-{index}"))
+    futures = {future: index for index, future in enumerate(submitted)}
     try:
         for future in as_completed(futures):
             on_result(futures.pop(future), future.result())
@@ -129,6 +146,10 @@ def _client(scheduler: str, workers: int | None, dashboard: str | None):
 
     with ExitStack() as stack:
         if scheduler == "processes":
+            import logging
+
+            # a worker that takes a moment to stop when the study closes the cluster is no news to the user
+            logging.getLogger("distributed.nanny").setLevel(logging.ERROR)
             with warnings.catch_warnings(), _one_blas_thread_environment():
                 warnings.simplefilter("ignore")
                 cluster = stack.enter_context(LocalCluster(

@@ -29,12 +29,16 @@ def study_load_held(study) -> tuple[str, str]:
         return "constant torque", "fzg_load_stage is varied: each point holds the torque of its load stage"
     operating = study.case.operating_point
     torque = float(operating.torque_at(operating.speed_rpm))
+    power_kw = torque * operating.speed_rpm * 3.141592653589793 / 30.0 / 1000.0
     if _SPEED in keys:
+        if getattr(study, "hold", "torque") == "power":
+            return "constant power", (f"--hold power: every speed runs at the case's power at {operating.speed_rpm:g} "
+                                      f"rpm, {power_kw:.4g} kW (the torque P/ω1 falls with speed)")
         if operating.constant_power:
             return "constant torque", (f"the case gives a power; the speed sweep holds its torque at "
-                                       f"{operating.speed_rpm:g} rpm, {torque:.4g} N·m; vary power_kw with the speed "
-                                       "for constant power")
-        return "constant torque", f"the case's torque, {torque:.4g} N·m, at every speed"
+                                       f"{operating.speed_rpm:g} rpm, {torque:.4g} N·m (--hold power keeps the "
+                                       "power instead)")
+        return "constant torque", f"the case's torque, {torque:.4g} N·m, at every speed (--hold power keeps the power)"
     if operating.constant_power:
         return "constant power", f"the case's power at its one speed {operating.speed_rpm:g} rpm ({torque:.4g} N·m)"
     return "constant torque", f"the case's torque, {torque:.4g} N·m"

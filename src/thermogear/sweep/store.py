@@ -299,6 +299,11 @@ def study_description(path: str | Path) -> dict[str, Any] | None:
             attrs = dict(zarr.open_group(str(target), mode="r").attrs)
     except (FileNotFoundError, ValueError, KeyError, OSError, TypeError):
         return None
-    if not attrs.get(_INITIALIZED) or "study_json" not in attrs:
+    if not attrs.get(_INITIALIZED):
         return None
-    return json.loads(attrs["study_json"])
+    if "study_json" in attrs:
+        return json.loads(attrs["study_json"])
+    if "study_definition" in attrs:  # a task store (drivetrain, branches): the study's own definition in it
+        stored = json.loads(attrs["study_definition"])
+        return stored if "parameters" in stored else None
+    return None

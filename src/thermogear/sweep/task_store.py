@@ -132,6 +132,13 @@ class TaskStore:
                 array[selection] = values
             self._done[number] = 1
 
+    def read_variable(self, name: str) -> np.ndarray:
+        """One stored variable as a NumPy array (zarr only)."""
+        from thermogear.sweep.store import _quiet_zarr
+
+        with _quiet_zarr():
+            return np.asarray(self._arrays[name][...])
+
     def dataset(self):
         """The store as a loaded xarray Dataset, without its completion record."""
         return open_task_store(self.path)
