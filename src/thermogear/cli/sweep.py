@@ -94,7 +94,8 @@ def sweep(
             from thermogear.cli.sweep_branches import run_branch_sweep
 
             run_branch_sweep(study, out, direction or "both", overwrite, resume, plot, progress, as_json,
-                             scheduler=scheduler, workers=workers, multistart=multistart)
+                             scheduler=scheduler, workers=workers, multistart=multistart,
+                             chunk_points=chunk_points, dashboard=dashboard)
             return
         if multistart:
             raise CaseError("--multistart", multistart, "only with [dynamics] mesh = \"nonlinear\"",

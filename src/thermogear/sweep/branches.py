@@ -199,14 +199,17 @@ def _execute(study, task: tuple, speed_axis, directions, starts: int):
     return _search_point(study, task[1], speed_axis, task[2], task[3], starts)
 
 
-def _execute_recorded(study, task, speed_axis, directions, starts) -> tuple[Any, list]:
-    """:func:`_execute` on a worker thread, its warnings recorded in the thread's own scope."""
+def execute_recorded(shared: tuple, task) -> tuple[Any, list]:
+    """One task of the executor (``shared``: the study, the speed axis, the directions, the starts): :func:`_execute`
+    with its warnings recorded (in the thread's own scope on a thread) as ``(text, category, file, line)``."""
+    study, speed_axis, directions, starts = shared
     with warning_scope.recorded() as caught:
         result = _execute(study, task, speed_axis, directions, starts)
-    return result, list(caught)
+    return result, [(str(item.message), item.category, item.filename, item.lineno) for item in caught]
 
 
-def branch_study(study, direction: str = "both", progress=None, workers: int | None = None, multistart: int = 0):
+def branch_study(study, direction: str = "both", progress=None, workers: int | None = None, multistart: int = 0,
+                 scheduler: str | None = None, out=None, resume: bool = False, overwrite: bool = False):
     """The xarray Dataset of a nonlinear-mesh study: dims ``(direction, model, *parameters)`` for the variables of
     :data:`BRANCH_VARIABLES` and ``response`` ("periodic" | "subharmonic" | "non-periodic" | "failed" | "jammed"),
     ``jammed`` with dims ``(model, *parameters)`` (1 where the thermal expansion closes the backlash: no result,
@@ -217,6 +220,10 @@ def branch_study(study, direction: str = "both", progress=None, workers: int | N
     one per core; 1: in the calling thread): the backlash integrator releases Python's global interpreter lock.
     The numbers do not depend on the thread count. Warnings raised by the tasks are raised again in the calling
     thread, once each. ``progress(points)`` is called as each group finishes (``points``: its speeds).
+    ``scheduler``: any of :func:`thermogear.sweep.executor.execute` (default: threads; serial where ``workers`` is
+    1). ``out``: the zarr store the groups are written to as they finish (:mod:`thermogear.sweep.task_store`;
+    ``resume`` continues it, the finished groups kept; ``overwrite`` replaces thermogear's own store); the dataset
+    returned is then the store's (its ``orbit`` dimension as long as the starts).
 
     ``multistart`` N > 0: at every point and model also the multi-start search of
     :func:`~thermogear.dynamics.backlash_orbits.stable_orbits` from N starts (about 0.1 s per start and point):
@@ -262,11 +269,33 @@ def branch_study(study, direction: str = "both", progress=None, workers: int | N
             progress(int(group.static_load.size))
 
     tasks = [("group", rest) for rest in groups]
-    if multistart:  # one task per point and model: a few speeds searched on every thread
+    if multistart:  # one task per point and model: a few speeds searched on every worker
         speed_count = study.parameters[speed_axis].size if speed_axis is not None else 1
         tasks += [("orbits", rest, model, speed) for rest in groups for model in range(len(study.models))
                   for speed in range(speed_count)]
-    _run_tasks(study, tasks, speed_axis, directions, place, workers, int(multistart))
+    store = None
+    if out is not None:
+        from thermogear.sweep.task_store import TaskStore  # noqa: PLC0415
+
+        store = TaskStore.open(out, _branch_layout(study, directions, int(multistart), len(tasks)), resume=resume,
+                               overwrite=overwrite)
+    done = store.done_tasks() if store is not None else set()
+    pending = [(number, task) for number, task in enumerate(tasks) if number not in done]
+    caught: list = []
+
+    def finished(index: int, outcome) -> None:
+        number, task = pending[index]
+        result, messages = outcome
+        caught.extend(messages)
+        place(task, result)
+        if store is not None:
+            store.write(number, *_branch_region(study, task, speed_axis, result, int(multistart)))
+
+    kind = scheduler if scheduler not in (None, "", "local") else ("serial" if workers == 1 else "threads")
+    _run_tasks((study, speed_axis, directions, int(multistart)), [task for _, task in pending], finished, kind,
+               None if kind == "serial" else workers, caught)
+    if store is not None:
+        return store.dataset()
     coords: dict[str, Any] = {"direction": ("direction", np.array(directions, dtype=str)),
                               "model": ("model", np.array(study.models, dtype=str))}
     for parameter in study.parameters:
@@ -293,38 +322,95 @@ def branch_study(study, direction: str = "both", progress=None, workers: int | N
                                                    "case": study.case.name, "load": load, "load_note": load_note})
 
 
-def _run_tasks(study, tasks, speed_axis, directions, place, workers: int | None, starts: int) -> None:
-    """Run every task, serially (``workers`` = 1) or on a pool of threads; ``place(task, result)`` is called in
-    the calling thread as each finishes."""
-    import os  # noqa: PLC0415
+def _run_tasks(shared, tasks, finished, scheduler: str, workers: int | None, caught: list) -> None:
+    """Every task on the one executor (:mod:`thermogear.sweep.executor`); ``finished(index, (result, warnings))``
+    in the calling thread as each finishes; the warnings raised again in the calling thread, once per text."""
+    from contextlib import ExitStack  # noqa: PLC0415
 
-    count = min(workers or os.cpu_count() or 1, len(tasks))
-    if count <= 1:
-        for task in tasks:
-            place(task, _execute(study, task, speed_axis, directions, starts))
-        return
-    from concurrent.futures import ThreadPoolExecutor, as_completed  # noqa: PLC0415
+    from thermogear.sweep.executor import execute  # noqa: PLC0415
 
-    caught: list = []
-    with warning_scope.routed() as unscoped:
-        with ThreadPoolExecutor(count, "thermogear-branches") as pool:
-            futures = {pool.submit(_execute_recorded, study, task, speed_axis, directions, starts): task
-                       for task in tasks}
-            try:
-                for future in as_completed(futures):
-                    result, messages = future.result()
-                    caught.extend(messages)
-                    place(futures[future], result)
-            finally:
-                for future in futures:
-                    future.cancel()
-        caught.extend(unscoped)
+    with ExitStack() as stack:
+        unscoped = stack.enter_context(warning_scope.routed()) if scheduler == "threads" else []
+        execute(execute_recorded, shared, tasks, finished, scheduler, workers)
+        stack.close()
+        caught.extend((str(item.message), item.category, item.filename, item.lineno) for item in unscoped)
     seen = set()
-    for item in caught:  # raised again in the calling thread, once per text
-        key = (item.category, str(item.message))
-        if key not in seen:
-            seen.add(key)
-            warnings.warn_explicit(str(item.message), item.category, item.filename, item.lineno)
+    for text, category, filename, lineno in caught:
+        if (category, text) not in seen:
+            seen.add((category, text))
+            warnings.warn_explicit(text, category, filename, lineno)
+
+
+def _branch_layout(study, directions: tuple[str, ...], starts: int, tasks: int):
+    """The store of a branch study (:class:`~thermogear.sweep.task_store.StoreLayout`)."""
+    import json  # noqa: PLC0415
+
+    from thermogear.sweep.task_store import StoreLayout, StoreVariable  # noqa: PLC0415
+
+    dims = ("direction", "model", *study.dims)
+    point = ("model", *study.dims)
+    variables = [StoreVariable(name, dims, "float", units, text) for name, (units, text) in BRANCH_VARIABLES.items()]
+    variables += [StoreVariable("response", dims, "str", "", "periodic | subharmonic | non-periodic | failed | "
+                                "jammed"),
+                  StoreVariable("jammed", point, "int8", "1", "1 where the gears jam (the thermal expansion closes "
+                                "the backlash): no result, NaN"),
+                  StoreVariable("natural_frequency_hz", point, "float", "Hz", "natural frequency of the linear mesh "
+                                "with every pair in contact, sqrt(mean k / me) / 2 pi"),
+                  StoreVariable("static_load", study.dims, "float", "N", "static normal load w"),
+                  StoreVariable("mesh_frequency_hz", study.dims, "float", "Hz", "mesh frequency z1 n1 / 60")]
+    coords: dict[str, Any] = {"direction": list(directions), "model": list(study.models)}
+    coords.update({p.name: np.asarray(p.values) for p in study.parameters})
+    if starts:
+        from thermogear.sweep.multistart import ORBIT_VARIABLES  # noqa: PLC0415
+
+        variables += [StoreVariable(name, (*point, "orbit"), "float", units, text)
+                      for name, (units, text, _) in ORBIT_VARIABLES.items()]
+        variables += [StoreVariable("stable_orbit_count", point, "float", "1", f"distinct stable orbits found from "
+                                    f"{starts} starts (more may exist)"),
+                      StoreVariable("unsettled_start_share", point, "float", "1", "fraction of the starts that "
+                                    "settled on no stable orbit of at most 3 periods")]
+        coords["orbit"] = np.arange(starts)
+    load, load_note = study_load_held(study)
+    speed = next((p.name for p in study.parameters if p.key == "operating.speed_rpm"), None)
+    chunks = {"model": 1, **{p.name: 1 for p in study.parameters if p.name != speed}}
+    definition = {**study.describe(), "kind": "nonlinear branches", "directions": list(directions),
+                  "multistart": starts}
+    attrs = {"mesh": "nonlinear", "directions": ",".join(directions), "case": study.case.name,
+             "case_name": study.case.name, "case_source": str(study.case.source), "load": load,
+             "load_note": load_note, "case_json": json.dumps(study.case.document, sort_keys=True, default=str)}
+    return StoreLayout(coords=coords, variables=tuple(variables), tasks=tasks, definition=definition, attrs=attrs,
+                       chunks=chunks)
+
+
+def _branch_region(study, task, speed_axis, result, starts: int) -> tuple[dict, dict]:
+    """The region of the store a task writes and its arrays."""
+    names = [p.name for a, p in enumerate(study.parameters) if a != speed_axis]
+    region: dict[str, Any] = dict(zip(names, task[1]))
+    if task[0] == "orbits":
+        from thermogear.sweep.multistart import ORBIT_VARIABLES  # noqa: PLC0415
+
+        region["model"] = task[2]
+        if speed_axis is not None:
+            region[study.parameters[speed_axis].name] = task[3]
+        arrays = {name: np.full(starts, np.nan) for name in ORBIT_VARIABLES}
+        arrays["stable_orbit_count"] = np.nan
+        arrays["unsettled_start_share"] = np.nan
+        if result is not None:
+            arrays["stable_orbit_count"] = float(len(result["orbits"]))
+            arrays["unsettled_start_share"] = result["unresolved"] + result["unbounded"]
+            for number, values in enumerate(result["orbits"]):
+                for name, (_, _, source) in ORBIT_VARIABLES.items():
+                    arrays[name][number] = float(values[source])
+        return region, arrays
+    group = result
+    pick = (lambda a: a) if speed_axis is not None else (lambda a: a[..., 0])
+    arrays = {name: pick(group.arrays[name]) for name in BRANCH_VARIABLES}
+    arrays["response"] = pick(group.response)
+    arrays["jammed"] = pick(group.jammed).astype(np.int8)
+    arrays["natural_frequency_hz"] = pick(group.natural_frequency_hz)
+    arrays["static_load"] = pick(group.static_load)
+    arrays["mesh_frequency_hz"] = pick(group.mesh_frequency_hz)
+    return region, arrays
 
 
 def write_branch_store(dataset, path, overwrite: bool = False):

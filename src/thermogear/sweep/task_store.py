@@ -152,6 +152,9 @@ def open_task_store(path: str | Path, keep_record: bool = False):
 
     with _quiet_zarr():
         dataset = xr.open_zarr(str(path), consolidated=None, chunks=None).load()
+    for name, values in list(dataset.variables.items()):  # zarr's variable-length strings as NumPy's fixed ones
+        if values.dtype.kind == "T":
+            dataset[name] = values.copy(data=np.array(values.values.tolist(), dtype=str))
     return dataset if keep_record else dataset.drop_vars(DONE, errors="ignore")
 
 
