@@ -351,7 +351,7 @@ def _branch_layout(study, directions: tuple[str, ...], starts: int, tasks: int):
     point = ("model", *study.dims)
     variables = [StoreVariable(name, dims, "float", units, text) for name, (units, text) in BRANCH_VARIABLES.items()]
     variables += [StoreVariable("response", dims, "str", "", "periodic | subharmonic | non-periodic | failed | "
-                                "jammed"),
+                                "jammed", width=12),
                   StoreVariable("jammed", point, "int8", "1", "1 where the gears jam (the thermal expansion closes "
                                 "the backlash): no result, NaN"),
                   StoreVariable("natural_frequency_hz", point, "float", "Hz", "natural frequency of the linear mesh "

@@ -44,6 +44,7 @@ class StoreVariable:
     kind: str = "float"
     units: str = ""
     long_name: str = ""
+    width: int = 400  # characters of a str variable (fixed-length UTF-32, as xarray writes text: read back as str)
 
 
 @dataclass(frozen=True)
@@ -128,7 +129,7 @@ class TaskStore:
                 variable = next(v for v in self.layout.variables if v.name == name)
                 selection = tuple(region.get(dim, slice(None)) for dim in variable.dims)
                 if variable.kind == "str":
-                    values = np.asarray(values, dtype=object).astype(str)
+                    values = np.asarray(values, dtype=object).astype(str).astype(f"<U{variable.width}")
                 array[selection] = values
             self._done[number] = 1
 
@@ -152,24 +153,23 @@ def open_task_store(path: str | Path, keep_record: bool = False):
 
     with _quiet_zarr():
         dataset = xr.open_zarr(str(path), consolidated=None, chunks=None).load()
-    for name, values in list(dataset.variables.items()):  # zarr's variable-length strings as NumPy's fixed ones
-        if values.dtype.kind == "T":
-            dataset[name] = values.copy(data=np.array(values.values.tolist(), dtype=str))
     return dataset if keep_record else dataset.drop_vars(DONE, errors="ignore")
 
 
 def store_is_complete(dataset) -> tuple[bool, str]:
     """Whether an opened store (any of thermogear's) holds every point, and if not, what is missing: the tasks or
-    chunks not marked done, or no finite number in it at all."""
+    chunks its completion record does not mark done; a store without a record (written whole) whose every number
+    is NaN holds no result at all."""
     for record in (DONE, "chunk_done"):
         if record in dataset.variables:
             marks = np.asarray(dataset[record].values)
             if marks.size and not np.all(marks == 1):
                 return False, (f"{int(np.sum(marks != 1))} of {marks.size} tasks unfinished (an interrupted study: "
-                               "continue it with `thermogear sweep ... --resume`); their points read NaN")
+                               "continue it with --resume); their points read NaN")
+            return True, ""
     numbers = [name for name, values in dataset.data_vars.items() if values.dtype.kind == "f"]
     if numbers and not any(np.isfinite(np.asarray(dataset[name].values)).any() for name in numbers):
-        return False, "no finite number in it (every point NaN: nothing was computed)"
+        return False, "every value is NaN (no point holds a result)"
     return True, ""
 
 
@@ -217,7 +217,7 @@ def _write_layout(target: Path, layout: StoreLayout) -> None:
                                attributes={**layout.coord_attrs.get(name, {}), **_fill_attribute(data.dtype)})
         for variable in layout.variables:
             dtype = {"float": np.dtype(np.float64), "int8": np.dtype(np.int8), "bool": np.dtype(bool),
-                     "str": str}[variable.kind]
+                     "str": np.dtype(f"<U{variable.width}")}[variable.kind]
             attributes = {"units": variable.units, "long_name": variable.long_name}
             if variable.kind == "float":
                 attributes.update(_fill_attribute(np.dtype(np.float64)))
