@@ -154,7 +154,7 @@ def _client(scheduler: str, workers: int | None, dashboard: str | None):
                 warnings.simplefilter("ignore")
                 cluster = stack.enter_context(LocalCluster(
                     n_workers=worker_count(workers), threads_per_worker=1, processes=True,
-                    dashboard_address=dashboard, death_timeout="10s"))
+                    dashboard_address=dashboard))
                 client = stack.enter_context(Client(cluster))
             from thermogear.sweep.driver_watch import DriverWatch
 
