@@ -82,7 +82,8 @@ def sweep(
                              hold=hold or (stored or {}).get("hold", "torque"))
         if loaded.drivetrain is not None:  # the drivetrain's studies: linear or backlash mesh, any grid
             _run_drivetrain(study, out, direction, multistart, method, scheduler, workers, dashboard, resume,
-                            overwrite, chunk_points, plot, progress and not as_json, as_json)
+                            overwrite, chunk_points or (stored or {}).get("speeds_per_task"), plot,
+                            progress and not as_json, as_json)
             return
         # the case itself passes what check and run check; a study solves periodic steady states only
         preflight(loaded, tuple(study.models), method="periodic")

@@ -186,6 +186,8 @@ def drivetrain_layout(plan: DrivetrainPlan, extra_attrs: dict):
     chunks = {"model": 1, "direction": 1, **{p.name: 1 for p in study.parameters if p.key != "operating.speed_rpm"}}
     definition = {**study.describe(), "kind": "drivetrain backlash branches" if plan.backlash else
                   "drivetrain speeds", "directions": list(plan.directions)}
+    if not plan.backlash:  # the slices of speeds the tasks share a modal basis over: part of the study's identity
+        definition["speeds_per_task"] = max((task[1].stop - task[1].start for task in plan.tasks), default=1)
     attrs = {"case_json": json.dumps(study.case.document, sort_keys=True, default=str),
              "case_document_sha256": case_fingerprint(study.case.document), **extra_attrs}
     return StoreLayout(coords=coords, variables=tuple(variables), tasks=len(plan.tasks), definition=definition,

@@ -30,6 +30,7 @@ import pydantic
 
 from thermogear.errors import CaseError, JammingError, closest_key
 from thermogear.schema.values import MAX_POINTS, parse_values
+from thermogear.sweep.load_held import HOLDS, fixed_load_changes
 
 __all__ = ["ALIASES", "HOLDS", "Block", "Parameter", "Study", "load_study_case", "parse_values", "resolve_key"]
 
@@ -235,7 +236,7 @@ class Study:
         if any(p.key == FLANK_OFFSET_KEY for p in parameters):
             flank = _flank_table_of(case.temperature)
         study = cls(case=case, parameters=tuple(parameters), models=models, chunk_points=chunk,
-                    fixed_changes=_fixed_changes(case, parameters, hold), hold=hold, _flank_table=flank)
+                    fixed_changes=fixed_load_changes(case, parameters, hold), hold=hold, _flank_table=flank)
         study.check_values()
         return study
 
@@ -337,29 +338,6 @@ class Study:
             **({"hold": self.hold} if self.hold != "torque" else {}),
             "case_document_sha256": case_fingerprint(self.case.document),
         }
-
-
-#: The loads a speed sweep can keep from speed to speed: the pinion torque (default) or the power.
-HOLDS = ("torque", "power")
-
-
-def _fixed_changes(case, parameters, hold: str = "torque") -> tuple[tuple[str, Any], ...]:
-    """Changes applied to every point: the load a speed sweep keeps. ``hold = "torque"`` (default): a case whose
-    load is a power is turned into the torque of that power at the case's speed; ``"power"``: a case whose load is
-    a torque (or an FZG load stage) is turned into the power of that torque at the case's speed. Nothing changes
-    where the study varies a load itself, or not the speed."""
-    keys = {p.key for p in parameters}
-    load_keys = {"operating.torque_nm", "operating.power_kw", "operating.fzg_load_stage"}
-    if "operating.speed_rpm" not in keys or keys & load_keys:
-        return ()
-    operating = case.document.get("operating", {})
-    point = case.operating_point
-    if hold == "torque" and operating.get("power_kw") is not None:
-        return (("operating.power_kw", None), ("operating.torque_nm", float(point.torque)))
-    if hold == "power" and operating.get("power_kw") is None:
-        power_kw = float(point.torque) * 2.0 * math.pi * float(point.speed_rpm) / 60.0 / 1000.0
-        return (("operating.fzg_load_stage", None), ("operating.torque_nm", None), ("operating.power_kw", power_kw))
-    return ()
 
 
 def case_fingerprint(document: dict) -> str:
