@@ -110,6 +110,9 @@ class TaskStore:
                 raise CaseError("--out", str(target), "a completely created store",
                                 "the store holds finished tasks but no creation record; nothing was changed")
             overwrite = True
+        if target.exists() and not overwrite:
+            raise CaseError("--out", str(target), "a path that does not exist yet (or --resume / --overwrite)",
+                            "the result store exists; resume it or overwrite it explicitly")
         create_owned_folder(target, overwrite and target.exists(), _KIND)
         _write_layout(target, layout)
         return cls(target, layout)
