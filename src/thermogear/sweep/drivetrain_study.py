@@ -56,6 +56,7 @@ class DrivetrainPlan:
     speed_axis: int | None
     tasks: tuple
     follows: tuple
+    identity: str = ""  # the study's definition (JSON): the key of the drivetrains built for it in a worker
 
     @property
     def backlash(self) -> bool:
@@ -84,11 +85,13 @@ def point_case(study, group: tuple[int, ...], speed_axis: int | None, speed: flo
     return study.case.with_changes(**study._changes_for(pairs))
 
 
-def _built(study, group, speed_axis, speed, per_point, models):
-    """The case's drivetrain of a group (or point), built once per process (a few kept)."""
+def _built(plan: "DrivetrainPlan", group, speed):
+    """The case's drivetrain of a group (or point), built once per process (a few kept), keyed by the study's
+    definition (never by an object's identity, which a later study may reuse)."""
     from thermogear.drivetrain.case_model import case_drivetrain
 
-    key = (id(study), group, speed if per_point else None, models)
+    study, speed_axis, per_point, models = plan.study, plan.speed_axis, plan.per_point_case, plan.models
+    key = (plan.identity, group, speed if per_point else None, models)
     with _LOCK:
         if key in _BUILT:
             _BUILT.move_to_end(key)
@@ -141,7 +144,8 @@ def plan_drivetrain_study(study, built, chunk_points: int, directions: tuple[str
                 follows.append(None)
         directions = ()
     return DrivetrainPlan(study, models, tuple(directions), bearings, int(built.section.bearing_harmonics),
-                          int(state_size), per_point, speed_axis, tuple(tasks), tuple(follows))
+                          int(state_size), per_point, speed_axis, tuple(tasks), tuple(follows),
+                          json.dumps(study.describe(), sort_keys=True, default=str))
 
 
 # ------------------------------------------------------------------------------------------------ the store
@@ -249,7 +253,7 @@ def linear_task(plan: DrivetrainPlan, task) -> dict[str, np.ndarray]:
     offset = 0
     for chunk in slices:
         try:
-            built = _built(plan.study, group, plan.speed_axis, chunk[0], plan.per_point_case, plan.models)
+            built = _built(plan, group, chunk[0])
             section = built.section
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore")
@@ -300,7 +304,7 @@ def backlash_task(plan: DrivetrainPlan, task, previous: dict | None = None) -> d
     bearings, harmonics = len(plan.bearings), plan.harmonics
     point = _missing("", bearings, harmonics)
     try:
-        built = _built(plan.study, group, plan.speed_axis, speed, plan.per_point_case, plan.models)
+        built = _built(plan, group, speed)
         section = built.section
         assembled = built.assembled(model)
         with warnings.catch_warnings():
