@@ -31,7 +31,7 @@ from typing import Any
 
 from thermogear.errors import CaseError
 
-__all__ = ["LOCAL_SCHEDULERS", "check_scheduler_address", "execute", "run_task", "worker_count"]
+__all__ = ["LOCAL_SCHEDULERS", "check_scheduler_address", "execute", "run_task", "run_task_on_worker", "worker_count"]
 
 #: The schedulers of this machine; any other value is the address of a ``dask.distributed`` scheduler.
 LOCAL_SCHEDULERS = ("serial", "threads", "processes")
@@ -44,13 +44,23 @@ def worker_count(workers: int | None) -> int:
 
 
 def run_task(function: Callable[..., Any], shared: Any, task: Any, *previous: Any) -> Any:
-    """One task on one BLAS thread: a task's numbers do not depend on the thread count of the linear algebra it
-    calls, so a task gives the same bits in the driver, on a thread, in a worker process or on a remote worker.
-    ``previous``: the result of the task it follows (a chain), if any."""
-    from threadpoolctl import threadpool_limits
+    """One task (``previous``: the result of the task it follows, in a chain). In this process it runs inside the
+    one-BLAS-thread limit :func:`execute` holds; a task's numbers do not depend on the thread count of the linear
+    algebra it calls, so a task gives the same bits in the driver, on a thread or in a worker process."""
+    return function(shared, task, *previous)
 
-    with threadpool_limits(limits=1, user_api="blas"):
-        return function(shared, task, *previous)
+
+_WORKER_LIMITED: list = []
+
+
+def run_task_on_worker(function: Callable[..., Any], shared: Any, task: Any, *previous: Any) -> Any:
+    """:func:`run_task` in a worker process: its BLAS is set to one thread the first time (a worker process runs
+    only tasks, so the limit stays)."""
+    if not _WORKER_LIMITED:
+        from threadpoolctl import threadpool_limits
+
+        _WORKER_LIMITED.append(threadpool_limits(limits=1, user_api="blas"))
+    return function(shared, task, *previous)
 
 
 def execute(function: Callable[..., Any], shared: Any, tasks: Sequence[Any],
@@ -66,18 +76,24 @@ def execute(function: Callable[..., Any], shared: Any, tasks: Sequence[Any],
     follows = list(follows) if follows is not None else [None] * len(tasks)
     if any(f is not None and not 0 <= f < i for i, f in enumerate(follows)):
         raise ValueError("a task follows an earlier task only")
-    if scheduler == "serial":
-        if workers not in (None, 1):
-            raise CaseError("--workers", workers, "absent (or 1) with --scheduler serial",
-                            "the serial scheduler computes in the calling thread")
-        results: dict[int, Any] = {}
-        for index, task in enumerate(tasks):
-            previous = () if follows[index] is None else (results[follows[index]],)
-            results[index] = run_task(function, shared, task, *previous)
-            on_result(index, results[index])
-        return
-    if scheduler == "threads":
-        _threads(function, shared, tasks, follows, on_result, worker_count(workers))
+    if scheduler in ("serial", "threads"):
+        from threadpoolctl import threadpool_limits
+
+        with threadpool_limits(limits=1, user_api="blas"):  # for the study only: restored after it
+            if scheduler == "threads":
+                _threads(function, shared, tasks, follows, on_result, worker_count(workers))
+                return
+            if workers not in (None, 1):
+                raise CaseError("--workers", workers, "absent (or 1) with --scheduler serial",
+                                "the serial scheduler computes in the calling thread")
+            results: dict[int, Any] = {}
+            followed = {follow for follow in follows if follow is not None}
+            for index, task in enumerate(tasks):
+                previous = () if follows[index] is None else (results[follows[index]],)
+                results[index] = run_task(function, shared, task, *previous)
+                on_result(index, results[index])
+                if index not in followed:  # no task continues from it: let it go
+                    results.pop(index)
         return
     with _client(scheduler, workers, dashboard) as client:
         _distributed(client, function, shared, tasks, follows, on_result)
@@ -114,7 +130,7 @@ def _distributed(client, function, shared, tasks, follows, on_result) -> None:
     submitted: list = []
     for index, task in enumerate(tasks):
         previous = () if follows[index] is None else (submitted[follows[index]],)
-        submitted.append(client.submit(run_task, function, remote, task, *previous, pure=False,
+        submitted.append(client.submit(run_task_on_worker, function, remote, task, *previous, pure=False,
                                        key=f"thermogear-task-{run}-{index}"))
     futures = {future: index for index, future in enumerate(submitted)}
     try:
