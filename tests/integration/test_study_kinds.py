@@ -174,3 +174,37 @@ def test_killed_part_way_and_resumed_gives_the_uninterrupted_store(kind, tmp_pat
                              env=environment, timeout=600)
     assert resumed.returncode == 0, resumed.stderr[-2000:]
     assert _files(out) == _files(reference)
+
+
+def test_every_drivetrain_point_gets_its_own_steady_temperatures(tmp_path):
+    # the FZG gearbox case (temperature.model = "gearbox") on the two-shaft drivetrain (shaft seats fitted to its
+    # 30 mm bores): each speed's case predicts its own steady state; none carries over from the neighbour
+    import thermogear
+    from thermogear.case import load_case
+    from thermogear.gearbox.case_model import (gearbox_model_from_case, gearbox_operating_point,
+                                               predicted_steady_state)
+
+    drivetrain = (DATA / "two_shaft_drivetrain.toml").read_text(encoding="utf-8")
+    section = drivetrain[drivetrain.index("[drivetrain]"):].replace(
+        "[drivetrain]\n", "[drivetrain]\nsweep_points_per_period = 32\nresponse_cutoff_hz = 10000.0\n", 1)
+    section = section.replace("outer_diameter_mm = 36.0 }", "outer_diameter_mm = 30.0 }").replace(
+        "outer_diameter_mm = 50.0 }", "outer_diameter_mm = 30.0 }")
+    path = tmp_path / "gearbox_drivetrain.toml"
+    path.write_text((DATA / "gearbox" / "fzg_gearbox.toml").read_text(encoding="utf-8") + "\n" + section,
+                    encoding="utf-8")
+    speeds = (500.0, 1500.0)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        data = thermogear.sweep(path, vary={"speed_rpm": list(speeds)}, out=tmp_path / "s.zarr", model="thermal",
+                                scheduler="serial")
+        case = load_case(str(path))
+        for index, speed in enumerate(speeds):
+            at = case.with_changes(**{"operating.speed_rpm": speed})
+            state = predicted_steady_state(gearbox_model_from_case(at),
+                                           gearbox_operating_point(at.operating_point, at.gearbox))
+            # the case's resolver writes the prediction rounded to 1e-6 K
+            assert float(data["oil_temperature_c"].values[index]) == pytest.approx(state.oil_c, abs=1e-6)
+            assert float(data["housing_temperature_c"].values[index]) == pytest.approx(state.housing_c, abs=1e-6)
+    oil = data["oil_temperature_c"].values
+    assert oil[1] > oil[0] + 10.0  # the faster point runs hotter: its own temperatures
+    assert bool(data["valid"].values.all()) and "per point" in data.attrs["temperatures"]

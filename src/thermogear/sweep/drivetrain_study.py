@@ -36,6 +36,8 @@ __all__ = ["DrivetrainPlan", "plan_drivetrain_study", "point_case"]
 FAILURES = (ModelLimitError, CaseError, ProblemError, JammingError, np.linalg.LinAlgError, ValueError)
 DIRECTIONS = ("up", "down")
 _CACHE_SIZE = 4
+#: Per point: the temperatures its case was built with [°C].
+TEMPERATURES = ("oil_temperature_c", "housing_temperature_c")
 _BUILT: OrderedDict = OrderedDict()
 _LOCK = threading.Lock()
 
@@ -86,8 +88,9 @@ def point_case(study, group: tuple[int, ...], speed_axis: int | None, speed: flo
 
 
 def _built(plan: "DrivetrainPlan", group, speed):
-    """The case's drivetrain of a group (or point), built once per process (a few kept), keyed by the study's
-    definition (never by an object's identity, which a later study may reuse)."""
+    """The case's drivetrain of a group (or point) and the oil and housing temperatures [°C] of its case, built once
+    per process (a few kept), keyed by the study's definition (never by an object's identity, which a later study
+    may reuse)."""
     from thermogear.drivetrain.case_model import case_drivetrain
 
     study, speed_axis, per_point, models = plan.study, plan.speed_axis, plan.per_point_case, plan.models
@@ -98,7 +101,11 @@ def _built(plan: "DrivetrainPlan", group, speed):
             return _BUILT[key]
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # the case's warnings were printed by its checks
-        built = case_drivetrain(point_case(study, group, speed_axis, speed, per_point), models)
+        case = point_case(study, group, speed_axis, speed, per_point)
+        built = case_drivetrain(case, models)
+        built = (built, {"oil_temperature_c": float(case.lubricant.operating_temperature_c),
+                         "housing_temperature_c": np.nan if case.housing.temperature_c is None
+                         else float(case.housing.temperature_c)})
     with _LOCK:
         _BUILT[key] = built
         while len(_BUILT) > _CACHE_SIZE:
@@ -175,6 +182,10 @@ def drivetrain_layout(plan: DrivetrainPlan, extra_attrs: dict):
                                 "RMS of each bearing's dynamic force"),
                   StoreVariable("bearing_harmonic_amplitude_n", (*dims, "bearing", "harmonic"), "float", "N",
                                 "radial amplitude of each bearing's force at the mesh harmonics")]
+    variables += [StoreVariable("oil_temperature_c", study.dims, "float", "degC", "oil temperature of the point's "
+                                "case (the gearbox model's steady state with temperature.model = 'gearbox')"),
+                  StoreVariable("housing_temperature_c", study.dims, "float", "degC", "housing temperature of the "
+                                "point's case (NaN where the case gives none)")]
     if plan.backlash:
         variables.append(StoreVariable("branch_state", (*dims, "state"), "float", "",
                                        "full state (q, dq/dt) the branch carries on from this point (resume)"))
@@ -253,7 +264,7 @@ def linear_task(plan: DrivetrainPlan, task) -> dict[str, np.ndarray]:
     offset = 0
     for chunk in slices:
         try:
-            built = _built(plan, group, chunk[0])
+            built, temperatures = _built(plan, group, chunk[0])
             section = built.section
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore")
@@ -262,7 +273,7 @@ def linear_task(plan: DrivetrainPlan, task) -> dict[str, np.ndarray]:
                              for model in plan.models}
             for m, model in enumerate(plan.models):
                 for k, response in enumerate(responses[model]):
-                    points[m][offset + k] = _linear_point(response, bearings, harmonics)
+                    points[m][offset + k] = {**_linear_point(response, bearings, harmonics), **temperatures}
         except FAILURES as error:  # the group's (or point's) case or drivetrain cannot be built
             for m in range(len(plan.models)):
                 for k in range(len(chunk)):
@@ -283,8 +294,12 @@ def _arrays(points: list[list[dict]], plan: DrivetrainPlan, squeeze: bool) -> di
         result[name] = values
     for name in ("bearing_dynamic_rms_n", "bearing_harmonic_amplitude_n"):
         result[name] = np.array([[point[name] for point in row] for row in points], dtype=float)
+    for name in TEMPERATURES:  # the point's, whichever model: (speeds,)
+        result[name] = np.array([[point.get(name, np.nan) for point in row] for row in points], dtype=float)
     if squeeze:
         result = {name: values[:, 0] for name, values in result.items()}
+    for name in TEMPERATURES:
+        result[name] = result[name][0]
     return result
 
 
@@ -304,7 +319,8 @@ def backlash_task(plan: DrivetrainPlan, task, previous: dict | None = None) -> d
     bearings, harmonics = len(plan.bearings), plan.harmonics
     point = _missing("", bearings, harmonics)
     try:
-        built = _built(plan, group, speed)
+        built, temperatures = _built(plan, group, speed)
+        point.update(temperatures)
         section = built.section
         assembled = built.assembled(model)
         with warnings.catch_warnings():
@@ -317,13 +333,13 @@ def backlash_task(plan: DrivetrainPlan, task, previous: dict | None = None) -> d
             carried = step.carried
             orbit = step.orbit
             if orbit is None or not orbit.converged:
-                point = _missing("not computed: no periodic orbit found (the shooting did not converge from the "
-                                 "neighbour's orbit nor after running in)", bearings, harmonics)
+                point = {**_missing("not computed: no periodic orbit found (the shooting did not converge from the "
+                                    "neighbour's orbit nor after running in)", bearings, harmonics), **temperatures}
                 point["run_in"] = step.run_in
             else:
                 response = drivetrain_backlash_response(assembled, state, orbit.initial_state, SUBSTEPS,
                                                         SAMPLES_PER_PIECE, section.response_cutoff_hz)
-                point = _backlash_point(response, step.run_in, bearings, harmonics)
+                point = {**_backlash_point(response, step.run_in, bearings, harmonics), **temperatures}
     except FAILURES as error:
         point = _missing(f"not computed: {error}", bearings, harmonics)
     point["carried"] = carried
@@ -353,6 +369,7 @@ def backlash_arrays(point: dict[str, Any], state_size: int) -> dict[str, Any]:
                                                           "largest_floquet_multiplier_abs", "contact_loss_fraction",
                                                           "back_contact_fraction", "back_side_contact")}
     values.update({name: bool(point.get(name, False)) for name in ("valid", "converged", "stable", "run_in")})
+    values.update({name: point.get(name, np.nan) for name in TEMPERATURES})
     values["status"] = point["status"]
     values["bearing_dynamic_rms_n"] = point["bearing_dynamic_rms_n"]
     values["bearing_harmonic_amplitude_n"] = point["bearing_harmonic_amplitude_n"]
