@@ -23,8 +23,8 @@ def sweep(
     out: Path = typer.Option(..., "--out", help="zarr store of the results (a directory, e.g. study.zarr)"),
     model: str = typer.Option(None, "--model", help="elastic | thermal | both (default: both, or [sweep].model)"),
     scheduler: str = typer.Option(None, "--scheduler", help="threads | processes | serial, or a dask.distributed "
-                                  "scheduler address (tcp://host:port); default: threads on the fast path, a local "
-                                  "Dask cluster of processes otherwise"),
+                                  "scheduler address (tcp://host:port); default: threads on the fast path and for "
+                                  "branches, a local Dask cluster of processes otherwise (drivetrain studies)"),
     workers: int = typer.Option(None, "--workers", min=1, help="threads or processes of the local scheduler "
                                 "(default: cores)"),
     dashboard: str = typer.Option(None, "--dashboard", help="serve the local cluster's Dask dashboard at this "
@@ -47,9 +47,10 @@ def sweep(
 ) -> None:
     """Run a parameter study of a case (grid over speed, load, temperatures, geometry) into a zarr store.
 
-    A case with the nonlinear mesh ([dynamics] mesh = "nonlinear", the default) follows the solution branch from
-    speed to speed (each orbit starts from its neighbour's), up and down, in this process; a linear-mesh case runs
-    the points as independent tasks on Dask."""
+    Every kind of study runs on one Dask executor into one resumable store: a linear-mesh pair's independent points,
+    a nonlinear-mesh pair's branches up and down in speed (each orbit from its neighbour's), a drivetrain case's
+    speeds (linear or backlash mesh) over any other keys; a speed sweep holds the torque (--hold power: the
+    power)."""
     from thermogear.sweep import Study, load_study_case, run_study
     from thermogear.sweep.store import study_description
 
