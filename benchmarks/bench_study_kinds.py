@@ -1,6 +1,6 @@
 """Benchmark: the study kinds of issue 34 on two local worker processes against serial, ratios in one run.
 
-Run: python benchmarks/bench_study_kinds.py [--quick]
+Run: python benchmarks/bench_study_kinds.py [--quick] [--repeats=N]
 Prints a table and writes benchmarks/results/bench_study_kinds.json.
 
 1. the drivetrain study over speed × one other key (the two-shaft rotor of tests/data, linear mesh, 32 mesh-grid
@@ -57,7 +57,7 @@ def main() -> None:
     from thermogear.sweep.gearbox_grid import run_gearbox_grid
 
     quick = "--quick" in sys.argv
-    repeats = 1 if quick else REPEATS
+    repeats = 1 if quick else next((int(a.split("=")[1]) for a in sys.argv if a.startswith("--repeats=")), REPEATS)
     folder = Path(tempfile.mkdtemp(prefix="bench-study-kinds-"))
     rows: list[dict] = []
     try:
@@ -93,12 +93,14 @@ def main() -> None:
                 serial, local = _timed(lambda: drivetrain("serial", None)), _timed(lambda: drivetrain("processes", 2))
                 rows.append({"study": "drivetrain speed x torque", "points": points, "repeat": repeat,
                              "serial_s": serial, "two_workers_s": local, "ratio": serial / local, "load": load})
+                print(json.dumps(rows[-1]), flush=True)
                 load = os.getloadavg()[0]
                 loop = _timed(plain_loop)
                 serial, local = _timed(lambda: grid("serial", None)), _timed(lambda: grid("processes", 2))
                 rows.append({"study": "gearbox steady grid", "points": count * count, "repeat": repeat,
                              "serial_s": serial, "two_workers_s": local, "ratio": serial / local,
                              "plain_loop_s": loop, "serial_vs_plain_loop": loop / serial, "load": load})
+                print(json.dumps(rows[-1]), flush=True)
     finally:
         shutil.rmtree(folder, ignore_errors=True)
     summary = {}
