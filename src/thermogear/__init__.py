@@ -27,6 +27,10 @@ _LAZY = {"Case": "thermogear.case", "load_case": "thermogear.case", "parameter_s
 
 
 def __getattr__(name: str):
+    if name == "sweep":  # the studies' package, callable: thermogear.sweep(case, vary={...}, out=...)
+        import importlib  # noqa: PLC0415
+
+        return importlib.import_module("thermogear.sweep")
     if name not in _LAZY:
         raise AttributeError(f"module 'thermogear' has no attribute {name!r}")
     import importlib  # noqa: PLC0415

@@ -73,16 +73,66 @@ def written_files(folder: Path | str) -> list[str]:
 ZARR_METADATA = (".zgroup", ".zattrs", ".zmetadata", "zarr.json")
 
 
+_ZARR_NODE_METADATA = (".zarray", ".zgroup", ".zattrs", "zarr.json")
+
+
+def _is_zarr_node(entry: Path) -> bool:
+    return entry.is_dir() and not entry.is_symlink() and any((entry / name).is_file() and not
+                                                             (entry / name).is_symlink()
+                                                             for name in _ZARR_NODE_METADATA)
+
+
+def _is_chunk_name(name: str) -> bool:
+    """A zarr chunk key part: ``0``, ``12`` (v3 ``c/0/12``) or ``0.12`` (v2)."""
+    return all(part.isdigit() for part in name.split("."))
+
+
+def _foreign_in_chunks(folder: Path, prefix: str) -> list[str]:
+    """Entries under a v3 chunk folder (``c/``) whose names are not chunk keys, links, or neither file nor folder."""
+    foreign = []
+    for entry in sorted(folder.iterdir()):
+        name = f"{prefix}/{entry.name}"
+        if entry.is_symlink() or not _is_chunk_name(entry.name):
+            foreign.append(name)
+        elif entry.is_dir():
+            foreign.extend(_foreign_in_chunks(entry, name))
+        elif not entry.is_file():
+            foreign.append(name)
+    return foreign
+
+
+def _foreign_in_node(folder: Path, prefix: str) -> list[str]:
+    """Entries of a zarr array or group folder that zarr did not write: anything but its metadata, its chunks
+    (v3 under ``c/``, v2 named ``0.1``) and nested arrays or groups (checked the same way)."""
+    foreign = []
+    for entry in sorted(folder.iterdir()):
+        name = f"{prefix}{entry.name}"
+        if entry.is_symlink():
+            foreign.append(name)
+        elif entry.name in _ZARR_NODE_METADATA and entry.is_file():
+            continue
+        elif entry.is_dir() and entry.name == "c":
+            foreign.extend(_foreign_in_chunks(entry, name))
+        elif _is_zarr_node(entry):
+            foreign.extend(_foreign_in_node(entry, f"{name}/"))
+        elif entry.is_file() and _is_chunk_name(entry.name):
+            continue
+        else:
+            foreign.append(name)
+    return foreign
+
+
 def foreign_store_entries(folder: Path | str) -> list[str]:
-    """Top-level entries of an owned store that neither zarr nor thermogear wrote (a user's ``notes.txt``): the
-    marker, zarr's metadata files and the folders of arrays and groups (holding zarr metadata) are its own."""
+    """Entries of an owned store, at any depth, that neither zarr nor thermogear wrote (a user's ``notes.txt`` at
+    the top or inside an array's folder), as paths relative to the store: the marker, zarr's metadata files, the
+    arrays' and groups' folders with their metadata and chunk files are its own."""
     root = Path(folder)
     foreign = []
     for entry in sorted(root.iterdir()):
-        if entry.name in (MARKER, *ZARR_METADATA):
+        if entry.name in (MARKER, *ZARR_METADATA) and entry.is_file() and not entry.is_symlink():
             continue
-        if entry.is_dir() and not entry.is_symlink() and any((entry / name).exists()
-                                                             for name in (".zarray", ".zgroup", "zarr.json")):
+        if _is_zarr_node(entry):
+            foreign.extend(_foreign_in_node(entry, f"{entry.name}/"))
             continue
         foreign.append(entry.name)
     return foreign

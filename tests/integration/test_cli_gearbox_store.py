@@ -1,6 +1,6 @@
 """`thermogear gearbox CASE --speeds … --torques … --out X.zarr` (issue 28): the steady grid of a gearbox in a zarr
 store written like a study's (owner marker, --overwrite of thermogear's own store only), its points solved on
-threads (--workers), and `thermogear export` of it."""
+worker processes (--workers), and `thermogear export` of it."""
 
 from __future__ import annotations
 
@@ -45,15 +45,18 @@ def serial():
 @pytest.fixture(scope="module")
 def store(tmp_path_factory):
     path = tmp_path_factory.mktemp("gearbox") / "steady.zarr"
-    code, _, stderr = gearbox_command("--out", str(path), "--workers", "3")
+    code, _, stderr = gearbox_command("--out", str(path), "--scheduler", "threads", "--workers", "3", "--chunk-points", "2")
     assert code == 0, stderr
     return path
 
 
 def test_threads_give_the_serial_loop_bit_for_bit(serial):
     # each point is the same deterministic computation whichever thread runs it: equality, not a tolerance
+    from thermogear.sweep.gearbox_grid import run_gearbox_grid
+
     case = load_case(str(CASE))
-    threaded = steady_sweep(gearbox_model_from_case(case), SPEEDS, TORQUES, serial.ambient_c, workers=3)
+    threaded = run_gearbox_grid(gearbox_model_from_case(case), SPEEDS, TORQUES, serial.ambient_c, "threads",
+                                workers=3, chunk_points=2).result
     np.testing.assert_array_equal(threaded.runaway, serial.runaway)
     for name in ("temperatures_c", "mesh_loss", "bearing_loss", "seal_loss", "churning_loss", "efficiency",
                  "backlash"):
@@ -127,6 +130,12 @@ def test_overwrite_replaces_only_thermogears_own_store(tmp_path):
     code, _, stderr = gearbox_command("--out", str(path), "--overwrite")
     assert code != 0 and "notes.txt" in stderr
     assert (path / "notes.txt").is_file() and (path / MARKER).is_file()
+    (path / "notes.txt").unlink()
+    (path / "mesh_loss" / "notes.txt").write_text("keep", encoding="utf-8")  # nor one inside an array's folder
+    (path / "runaway" / "c" / "mine.csv").write_text("keep", encoding="utf-8")  # nor among its chunks
+    code, _, stderr = gearbox_command("--out", str(path), "--overwrite")
+    assert code != 0 and "mesh_loss/notes.txt" in stderr and "runaway/c/mine.csv" in stderr, stderr
+    assert (path / "mesh_loss" / "notes.txt").is_file() and (path / "runaway" / "c" / "mine.csv").is_file()
 
 
 def test_without_out_the_command_writes_nothing_and_prints_as_before(tmp_path, monkeypatch):

@@ -36,7 +36,7 @@ def _built():
 def test_each_point_is_the_backlash_response_at_its_speed():
     built = _built()
     speeds = np.array([3000.0, 5000.0])  # well below the mesh-coupled modes: one orbit, in permanent contact
-    data = drivetrain_branch_sweep(built, ORIGIN, speeds, ("elastic",), processes=False).dataset
+    data = drivetrain_branch_sweep(built, ORIGIN, speeds, ("elastic",)).dataset
     assert bool(data["valid"].all())
     section = built.section
     for index, speed in enumerate(speeds):
@@ -62,7 +62,7 @@ def test_a_point_without_an_orbit_is_missing_with_its_reason():
     # at 1e-12 rpm the mesh period is ~1e11 s: the flow overflows and the shooting fails; the other speed is
     # computed, its branch starting afresh
     built = _built()
-    data = drivetrain_branch_sweep(built, ORIGIN, np.array([1e-12, 3000.0]), ("elastic",), processes=False).dataset
+    data = drivetrain_branch_sweep(built, ORIGIN, np.array([1e-12, 3000.0]), ("elastic",)).dataset
     for direction in ("up", "down"):
         point = data.sel(direction=direction, model="elastic")
         status = [str(value) for value in point["status"].values]

@@ -234,15 +234,17 @@ def test_the_results_hold_modes_bearing_forces_and_what_heat_moved():
 
 
 @pytest.mark.slow
-def test_the_speed_sweep_in_worker_processes_equals_the_one_in_this_process():
+def test_the_study_in_worker_processes_equals_the_speed_sweep_in_this_process(tmp_path):
+    import thermogear
     from thermogear.sweep.drivetrain_speeds import SweepOrigin, drivetrain_speed_sweep
 
     case = _load(_document())
     speeds = np.array([1500.0, 4000.0, 9300.0])
     built = case_drivetrain(case, ("elastic",))
     origin = SweepOrigin(case.name, str(case.source), case.document, case.operating_point.load_held)
-    here = drivetrain_speed_sweep(built, origin, speeds, ("elastic",), processes=False).dataset
-    there = drivetrain_speed_sweep(built, origin, speeds, ("elastic",), workers=2).dataset
+    here = drivetrain_speed_sweep(built, origin, speeds, ("elastic",)).dataset
+    there = thermogear.sweep(case, vary={"speed_rpm": speeds.tolist()}, out=tmp_path / "study.zarr", model="elastic",
+                             scheduler="processes", workers=2)
     for name in ("kv", "dte_rms_um", "bearing_harmonic_amplitude_n"):
         # the same arithmetic; only the BLAS thread count differs (summation order: ~1e-15 per operation)
         np.testing.assert_allclose(there[name].values, here[name].values, rtol=1e-9, err_msg=name)

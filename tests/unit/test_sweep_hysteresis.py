@@ -38,7 +38,19 @@ def test_coinciding_branches_have_no_band():
     speeds = np.linspace(1000.0, 2000.0, 11)
     values = np.linspace(1e-6, 2e-6, 11)
     entry = hysteresis_bands(_branches(speeds, values, values * (1 + 0.019)))["elastic"]  # within the 2 % tolerance
-    assert entry == {"differ": False, "bands_rpm": [], "up_sweep_jumps": [], "down_sweep_jumps": []}
+    assert entry == {"differ": False, "bands_rpm": [], "up_sweep_jumps": [], "down_sweep_jumps": [],
+                     "up_sweep_steep_changes": [], "down_sweep_steep_changes": []}
+
+
+def test_a_steep_slope_where_the_branches_coincide_is_no_jump():
+    # issue 36: a coarse grid over a steep flank (both branches alike) was listed as jumps at 750 and 1250 rpm
+    # while the branches coincide; a jump is where the two branches differ, the rest is a steep change
+    speeds = np.array([500.0, 1000.0, 1500.0, 2000.0])
+    values = np.array([1e-6, 5e-6, 1e-6, 1e-6])
+    entry = hysteresis_bands(_branches(speeds, values, values.copy()))["elastic"]
+    assert not entry["differ"] and entry["up_sweep_jumps"] == [] and entry["down_sweep_jumps"] == []
+    assert [item["speed_rpm"] for item in entry["up_sweep_steep_changes"]] == [750.0, 1250.0]
+    assert [item["speed_rpm"] for item in entry["down_sweep_steep_changes"]] == [1250.0, 750.0]
 
 
 @pytest.mark.parametrize("up, down, bands", [

@@ -11,8 +11,10 @@ import typer
 from thermogear.cli.app import app, error_console
 from thermogear.errors import CaseError
 
-#: Groups of a report's results.nc (the steady responses are the default: one row per time sample and model).
-RESPONSE_GROUPS = ("elastic_steady", "thermal_steady", "elastic_transient", "thermal_transient")
+#: Groups of a report's results.nc (the steady responses are the default: one row per time sample and model); a
+#: drivetrain case adds ``drivetrain_elastic`` and ``drivetrain_thermal`` (its responses over one mesh period).
+RESPONSE_GROUPS = ("elastic_steady", "thermal_steady", "elastic_transient", "thermal_transient",
+                   "drivetrain_elastic", "drivetrain_thermal")
 _FIRST_LINE = "# thermogear "
 
 
@@ -37,6 +39,17 @@ def check_csv_target(path: Path, force: bool, option: str = "--out") -> None:
         raise CaseError(option, str(path), "a CSV file thermogear wrote", "thermogear replaces only its own files")
 
 
+def _groups_in(path: Path) -> list[str]:
+    """The groups a results.nc holds (empty where it cannot be read)."""
+    try:
+        import h5netcdf  # noqa: PLC0415
+
+        with h5netcdf.File(str(path), "r") as handle:
+            return sorted(handle.groups)
+    except (OSError, ImportError, ValueError):
+        return []
+
+
 def _header(source: str, attrs: dict, what: str, left_out: list[str]) -> list[str]:
     from thermogear import __version__  # noqa: PLC0415
 
@@ -55,6 +68,8 @@ def _header(source: str, attrs: dict, what: str, left_out: list[str]) -> list[st
         lines.append(f"load held: {attrs['load']}" + (f" ({note})" if note else ""))
     if attrs.get("thermogear_version"):
         lines.append(f"computed by thermogear {attrs['thermogear_version']}")
+    if attrs.get("incomplete"):
+        lines.append(f"INCOMPLETE: {attrs['incomplete']}")
     lines.append("units in brackets after each column name; nan: no value at that point (see the stable/valid "
                  "columns)")
     if left_out:
@@ -86,7 +101,7 @@ def export(
                                                               "run/reproduce --out) or its results.nc"),
     out: Path = typer.Option(None, "--out", help="the CSV file to write (default: standard output)"),
     group: str = typer.Option(None, "--group", help="results.nc: root (curves along the path and the mesh "
-                                                    "cycle) or one response: " + " | ".join(RESPONSE_GROUPS)
+                                                    "cycle) or one response group: " + " | ".join(RESPONSE_GROUPS)
                                                     + " (default: both steady responses)"),
     dimension: str = typer.Option(None, "--dimension", help="the dimension the rows run along (default: every "
                                                             "swept parameter of a store, time of a response)"),
@@ -106,17 +121,30 @@ def export(
     if _is_zarr_store(source):
         if group is not None:
             raise CaseError("--group", group, "no --group for a sweep store", "a store has one table")
+        from thermogear.sweep.task_store import store_is_complete  # noqa: PLC0415
+
         dataset = xr.open_dataset(source, engine="zarr")
+        complete, missing = store_is_complete(dataset)
+        dataset = dataset.drop_vars(["chunk_done", "task_done", "branch_state"], errors="ignore")
         if dimensions is None and dataset.attrs.get("row_dimensions"):  # a store that names its grid
             dimensions = tuple(str(dataset.attrs["row_dimensions"]).split(","))
-        datasets = [({}, dataset, dataset.attrs)]
+        datasets = [({}, dataset, {**dataset.attrs, **({} if complete else {"incomplete": missing})})]
         what = "sweep store, one row per point"
+        if not complete:
+            from thermogear.cli.console import print_warning  # noqa: PLC0415
+
+            print_warning(f"{source} is incomplete: {missing}", error_console)
     elif source.is_file() and source.suffix == ".nc":
         groups = [group] if group is not None else ["elastic_steady", "thermal_steady"]
         allowed = ("root", *RESPONSE_GROUPS)
+        present = _groups_in(source)
         for name in groups:
             if name not in allowed:
                 raise CaseError("--group", name, " | ".join(allowed), "no such group in a report's results.nc")
+            if present and name != "root" and name not in present:
+                raise CaseError("--group", name, " | ".join(["root", *present]),
+                                "this results.nc does not hold that group (a drivetrain group comes with a case that "
+                                "has a [drivetrain] section)")
         root = xr.open_dataset(source, engine="h5netcdf")
         datasets = []
         for name in groups:
@@ -125,6 +153,8 @@ def export(
             except OSError as error:
                 raise CaseError("--group", name, " | ".join(allowed), f"not in this file ({error})") from None
             datasets.append(({} if group is not None else {"model": name.split("_")[0]}, data, root.attrs))
+            if dimensions is None and name.startswith("drivetrain_") and "time" in data.dims:
+                dimensions = ("time",)  # one row per time sample; the per-bearing arrays are named as left out
         what = f"group {group}" if group is not None else "steady responses, one row per time sample and model"
     else:
         raise CaseError("SOURCE", str(source), "a sweep store (.zarr folder), a report folder or a results.nc file",

@@ -24,32 +24,62 @@ def gearbox(case: str = typer.Argument(..., metavar="CASE", help="built-in param
                                                                 "`thermogear sweep`; `thermogear export` reads it)"),
             overwrite: bool = typer.Option(False, "--overwrite", help="replace an existing store at --out that "
                                                                       "thermogear wrote"),
-            workers: int | None = typer.Option(None, "--workers", min=1, help="threads that solve the points "
-                                                                              "(default 1)")) -> None:
+            workers: int | None = typer.Option(None, "--workers", min=1, help="local worker processes that solve "
+                                                                              "the points (default: serial)"),
+            scheduler: str | None = typer.Option(None, "--scheduler", help="serial | threads | processes, or a "
+                                                 "dask.distributed scheduler address (default: serial, processes "
+                                                 "with --workers)"),
+            resume: bool = typer.Option(False, "--resume", help="continue an interrupted grid stored at --out"),
+            chunk_points: int | None = typer.Option(None, "--chunk-points", min=1, help="points per task and stored "
+                                                    "chunk (default 50)"),
+            progress: bool = typer.Option(True, "--progress/--no-progress", help="progress bar on stderr")) -> None:
     """Steady temperatures, power losses by source, efficiency and backlash of the case's gearbox, at its
-    operating point or over speeds × torques. With --out, the grid is also written as a zarr store."""
+    operating point or over speeds × torques, on the study executor (serial, worker processes or a Dask
+    scheduler). With --out, the grid is also written as a zarr store, block by block (--resume continues it)."""
+    from thermogear.sweep.executor import check_scheduler_address  # noqa: PLC0415
+
     if out is None:
-        if overwrite:
-            raise CaseError("--overwrite", True, "only with --out", "there is no store to replace")
-        _steady_table(case, speeds, torques, as_json, workers)
+        for name, given in (("--overwrite", overwrite), ("--resume", resume)):
+            if given:
+                raise CaseError(name, True, "only with --out", "there is no store to replace or continue")
+    if resume and overwrite:
+        raise CaseError("--resume", True, "either --resume or --overwrite", "--resume keeps the finished blocks, "
+                        "--overwrite replaces them")
+    check_scheduler_address(scheduler)
+    options = {"scheduler": _scheduler(scheduler, workers), "workers": workers, "chunk_points": chunk_points,
+               "progress": progress and not as_json}
+    if out is None:
+        _steady_table(case, speeds, torques, as_json, options)
         return
     from thermogear.ownership import check_output_folder, exclusive_writer  # noqa: PLC0415
-    from thermogear.sweep.steady_store import check_steady_store_target, write_steady_store  # noqa: PLC0415
+    from thermogear.sweep.steady_store import check_steady_store_target  # noqa: PLC0415
 
     check_output_folder(out, "--out")  # the output path before any work
     with exclusive_writer(out):  # one writer per store: a second command writing it is refused at once
-        check_steady_store_target(out, overwrite)
-        loaded, result = _steady_table(case, speeds, torques, as_json, workers)
-        target = write_steady_store(result, loaded.name, loaded.source, loaded.document, out, overwrite=overwrite)
-    error_console.print(f"wrote {result.runaway.size} points to {target}", highlight=False)
+        if not resume:
+            check_steady_store_target(out, overwrite)
+        _, run = _steady_table(case, speeds, torques, as_json, {**options, "out": out, "resume": resume,
+                                                               "overwrite": overwrite})
+    error_console.print(f"wrote {run.result.runaway.size} points to {run.path} ({run.computed} blocks computed, "
+                        f"{run.kept} kept)", highlight=False)
 
 
-def _steady_table(case_name: str, speeds: str | None, torques: str | None, as_json: bool, workers: int | None):
-    """Solve the grid and print it (a table, or JSON); returns the loaded case and the SteadySweep."""
+def _scheduler(scheduler: str | None, workers: int | None) -> str:
+    """The grid's scheduler: the one named, else local worker processes where --workers is given, else serial."""
+    if scheduler not in (None, "", "local"):
+        return scheduler
+    return "processes" if workers is not None else "serial"
+
+
+def _steady_table(case_name: str, speeds: str | None, torques: str | None, as_json: bool, options: dict):
+    """Solve the grid and print it (a table, or JSON); returns the loaded case and the finished
+    :class:`~thermogear.sweep.gearbox_grid.GridRun`."""
+    from thermogear.cli.console import point_progress, print_warning  # noqa: PLC0415
     from thermogear.gearbox.case_model import gearbox_model_from_case, gearbox_operating_point  # noqa: PLC0415
-    from thermogear.gearbox.sweep import steady_sweep  # noqa: PLC0415
     from thermogear.schema.values import parse_values  # noqa: PLC0415
     import numpy as np  # noqa: PLC0415
+
+    from thermogear.sweep.gearbox_grid import run_gearbox_grid  # noqa: PLC0415
 
     from thermogear.gearbox.case_model import load_gearbox_case  # noqa: PLC0415
 
@@ -57,11 +87,17 @@ def _steady_table(case_name: str, speeds: str | None, torques: str | None, as_js
     operating = gearbox_operating_point(loaded.operating_point, loaded.gearbox)
     speed_values = [operating.speed_rpm] if speeds is None else parse_values(speeds, "--speeds")
     torque_values = [operating.torque] if torques is None else parse_values(torques, "--torques")
-    result = steady_sweep(gearbox_model_from_case(loaded), speed_values, torque_values, operating.ambient_c,
-                          workers=workers)
+    shown = options.pop("progress")
+    with point_progress("gearbox grid", total=len(speed_values) * len(torque_values), unit="points",
+                        enabled=shown) as advance:
+        run = run_gearbox_grid(gearbox_model_from_case(loaded), speed_values, torque_values, operating.ambient_c,
+                               progress=advance, case=loaded, **options)
+    for message in run.messages:
+        print_warning(message, error_console)
+    result = run.result
     if as_json:
         print_json({"case": loaded.name, **result.as_dict()})
-        return loaded, result
+        return loaded, run
     table = Table(title=f"steady state of the gearbox of {loaded.name} (ambient {operating.ambient_c:g} °C)")
     for name in ("n [rpm]", "T [N·m]", "pinion [°C]", "wheel [°C]", "oil [°C]", "housing [°C]", "mesh [W]",
                  "bearings [W]", "seals [W]", "churning/jet [W]", "η [%]", "j_bn [μm]"):
@@ -89,4 +125,4 @@ def _steady_table(case_name: str, speeds: str | None, torques: str | None, as_js
             points = ", ".join(f"{result.speeds_rpm[i]:g} rpm/{result.torques[j]:g} N·m"
                                for i, j in zip(*np.nonzero(marked)))
             console.print(f"flag {flag}: {meaning} at {points}", highlight=False)
-    return loaded, result
+    return loaded, run

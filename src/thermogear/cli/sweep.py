@@ -11,6 +11,7 @@ from thermogear.cli.app import app, console, error_console, print_json
 from thermogear.cli.console import print_warning
 from thermogear.cli.sweep_summary import load_held_summary, print_sweep_summary, response_summary
 from thermogear.errors import CaseError
+from thermogear.sweep.executor import check_scheduler_address
 
 
 @app.command()
@@ -22,8 +23,8 @@ def sweep(
     out: Path = typer.Option(..., "--out", help="zarr store of the results (a directory, e.g. study.zarr)"),
     model: str = typer.Option(None, "--model", help="elastic | thermal | both (default: both, or [sweep].model)"),
     scheduler: str = typer.Option(None, "--scheduler", help="threads | processes | serial, or a dask.distributed "
-                                  "scheduler address (tcp://host:port); default: threads on the fast path, a local "
-                                  "Dask cluster of processes otherwise"),
+                                  "scheduler address (tcp://host:port); default: threads on the fast path and for "
+                                  "branches, a local Dask cluster of processes otherwise (drivetrain studies)"),
     workers: int = typer.Option(None, "--workers", min=1, help="threads or processes of the local scheduler "
                                 "(default: cores)"),
     dashboard: str = typer.Option(None, "--dashboard", help="serve the local cluster's Dask dashboard at this "
@@ -41,12 +42,15 @@ def sweep(
     multistart: int = typer.Option(0, "--multistart", min=0, help="nonlinear mesh: at every point also search "
                                    "the state plane from N starts and list every stable orbit found with its basin "
                                    "share (about 0.1 s per start, point and model; default 0: branches only)"),
+    hold: str = typer.Option(None, "--hold", help="the load a speed sweep keeps from speed to speed: torque "
+                             "(default) | power; stated in the store, the summary, the JSON and the plot"),
 ) -> None:
     """Run a parameter study of a case (grid over speed, load, temperatures, geometry) into a zarr store.
 
-    A case with the nonlinear mesh ([dynamics] mesh = "nonlinear", the default) follows the solution branch from
-    speed to speed (each orbit starts from its neighbour's), up and down, in this process; a linear-mesh case runs
-    the points as independent tasks on Dask."""
+    Every kind of study runs on one Dask executor into one resumable store: a linear-mesh pair's independent points,
+    a nonlinear-mesh pair's branches up and down in speed (each orbit from its neighbour's), a drivetrain case's
+    speeds (linear or backlash mesh) over any other keys; a speed sweep holds the torque (--hold power: the
+    power)."""
     from thermogear.sweep import Study, load_study_case, run_study
     from thermogear.sweep.store import study_description
 
@@ -59,7 +63,7 @@ def sweep(
     with exclusive_writer(out):  # one writer per store: a second sweep into it is refused at once
         _refuse_foreign_entries(out, overwrite)
         loaded, section = load_study_case(case)
-        check_scheduler(scheduler)
+        check_scheduler_address(scheduler)
         stored = study_description(out) if resume else None
         if vary:
             definition: dict | list = list(vary)
@@ -71,30 +75,17 @@ def sweep(
             raise CaseError("vary", None, "--vary NAME=VALUES (repeatable) or a [sweep] table in the case file",
                             "a sweep needs something to vary")
         chosen_model = model or (section.model if section is not None else None)
-        if loaded.drivetrain is not None:  # the drivetrain's speed sweep (issue 27): linear or backlash mesh
-            import warnings
-
-            from thermogear.cli.sweep_drivetrain import drivetrain_models, run_drivetrain_sweep
-            from thermogear.drivetrain.case_model import case_drivetrain
-            from thermogear.sweep.drivetrain_speeds import SweepOrigin
-
-            if multistart:
-                raise CaseError("--multistart", multistart, "0 for a case with a [drivetrain]",
-                                "the drivetrain sweep follows the orbit in speed; the state search is the pair's")
-            models = drivetrain_models(chosen_model or "both")
-            with warnings.catch_warnings():
-                warnings.simplefilter("ignore")  # the case's warnings are its checks'; the sweep states its own
-                built = case_drivetrain(loaded, models)
-            origin = SweepOrigin(loaded.name, str(loaded.source), loaded.document,
-                                 loaded.operating_point.load_held)
-            run_drivetrain_sweep(built, origin, models, definition, out, overwrite, resume, plot, progress, as_json,
-                                 workers, console, error_console, direction)
-            return
         chunks = chunk_points or (section.chunk_points if section is not None else None)
         if stored is not None:
             chosen_model = chosen_model or ("both" if len(stored["models"]) == 2 else stored["models"][0])
             chunks = chunks or stored["chunk_points"]
-        study = Study.define(loaded, definition, model=chosen_model or "both", chunk_points=chunks)
+        study = Study.define(loaded, definition, model=chosen_model or "both", chunk_points=chunks,
+                             hold=hold or (stored or {}).get("hold", "torque"))
+        if loaded.drivetrain is not None:  # the drivetrain's studies: linear or backlash mesh, any grid
+            _run_drivetrain(study, out, direction, multistart, method, scheduler, workers, dashboard, resume,
+                            overwrite, chunk_points or (stored or {}).get("speeds_per_task"), plot,
+                            progress and not as_json, as_json)
+            return
         # the case itself passes what check and run check; a study solves periodic steady states only
         preflight(loaded, tuple(study.models), method="periodic")
         if direction is not None and direction not in ("up", "down", "both"):
@@ -105,7 +96,8 @@ def sweep(
             from thermogear.cli.sweep_branches import run_branch_sweep
 
             run_branch_sweep(study, out, direction or "both", overwrite, resume, plot, progress, as_json,
-                             scheduler=scheduler, workers=workers, multistart=multistart)
+                             scheduler=scheduler, workers=workers, multistart=multistart,
+                             chunk_points=chunk_points, dashboard=dashboard)
             return
         if multistart:
             raise CaseError("--multistart", multistart, "only with [dynamics] mesh = \"nonlinear\"",
@@ -163,6 +155,33 @@ def sweep(
         print_sweep_summary(summary, console, error_console)
 
 
+def _run_drivetrain(study, out: Path, direction, multistart: int, method: str, scheduler, workers, dashboard,
+                    resume: bool, overwrite: bool, chunk_points, plot, progress: bool, as_json: bool) -> None:
+    """The study of a case with a [drivetrain] (every option acts, or is refused with the reason)."""
+    from thermogear.cli.sweep_drivetrain import run_drivetrain_sweep
+
+    if multistart:
+        raise CaseError("--multistart", multistart, "0 for a case with a [drivetrain]",
+                        "the drivetrain study follows the orbit in speed; the state-plane search is the pair's")
+    if method != "batch":
+        raise CaseError("--method", method, "batch (the default) for a case with a [drivetrain]",
+                        "the drivetrain study solves each speed's periodic orbit on its modal reduction; there is "
+                        "no one-Simulation-per-point reference for a drivetrain")
+    backlash = study.case.dynamics.mesh == "nonlinear"
+    if chunk_points is not None and backlash:
+        raise CaseError("--chunk-points", chunk_points, "absent with the backlash mesh",
+                        "each point of a branch is its own task (it starts from its neighbour's orbit), so a "
+                        "branch is written and resumed point by point")
+    kind = "processes" if scheduler in (None, "", "local") else scheduler
+    if dashboard is not None and kind != "processes":
+        raise CaseError("--dashboard", dashboard, "only with the local Dask cluster (--scheduler processes)",
+                        f"the {kind} scheduler serves no dashboard of its own")
+    options = {"scheduler": kind, "workers": workers, "resume": resume, "overwrite": overwrite,
+               "chunk_points": chunk_points, "dashboard": dashboard}
+    run_drivetrain_sweep(study, out, direction, options, plot, as_json, console,
+                         _progress_bar if progress else None)
+
+
 def _refuse_foreign_entries(out: Path, overwrite: bool) -> None:
     """Before any work: an owned store that --overwrite would replace must hold nothing thermogear did not write
     (a user's notes.txt is never deleted; --resume keeps what is there, and refuses the same way in the rare case
@@ -193,35 +212,6 @@ def _progress_bar(total: int, completed: int):
     from thermogear.cli.console import point_progress
 
     return point_progress("sweep", total=total, completed=completed, unit="points")
-
-
-def check_scheduler(address: str | None, timeout: float = 5.0) -> None:
-    """Refuse a ``tcp://host:port`` scheduler that does not accept connections, before anything is written.
-
-    A ``dask.distributed`` client retries an unreachable address for its whole timeout and then raises from deep
-    inside the driver; this one connection attempt names the address instead (``serial``, ``local`` and no
-    address need no check, nor do the local schedulers; other protocols are left to the client)."""
-    if address in (None, "", "serial", "local", "threads", "processes"):
-        return
-    import socket
-    from urllib.parse import urlsplit
-
-    parts = urlsplit(address if "://" in address else f"tcp://{address}")
-    if parts.scheme not in ("tcp", "tls"):
-        return
-    allowed = "a dask.distributed scheduler address tcp://host:port, 'threads', 'processes' or 'serial'"
-    try:
-        host, port = parts.hostname, parts.port
-    except ValueError:
-        host, port = None, None
-    if not host or port is None:
-        raise CaseError("--scheduler", address, allowed, "the address needs a host and a port")
-    try:
-        with socket.create_connection((host, port), timeout=timeout):
-            pass
-    except OSError as error:
-        raise CaseError("--scheduler", address, allowed,
-                        f"no scheduler answers there ({error.strerror or error}); nothing was written") from None
 
 
 def _remove_empty_store(out: Path, existed: bool) -> None:

@@ -40,32 +40,36 @@ def branch_summary(dataset, models) -> dict:
 
 def run_branch_sweep(study, out: Path, direction: str, overwrite: bool, resume: bool, plot: Path | None,
                      progress: bool, as_json: bool, scheduler: str | None = None, workers: int | None = None,
-                     multistart: int = 0) -> None:
+                     multistart: int = 0, chunk_points: int | None = None, dashboard: str | None = None) -> None:
     """Compute, store, plot and summarise a nonlinear-mesh study (``thermogear sweep`` of such a case)."""
     import warnings  # noqa: PLC0415
 
     from thermogear.cli.console import point_progress  # noqa: PLC0415
-    from thermogear.sweep.branches import branch_study, write_branch_store  # noqa: PLC0415
+    from thermogear.sweep.branches import branch_study  # noqa: PLC0415
 
-    if resume:
-        raise CaseError("--resume", True, "not with the nonlinear mesh", "a branch study follows each branch "
-                        "from its start in one run and is written whole at the end; run it again")
-    if scheduler not in (None, "", "local", "threads", "serial"):
-        raise CaseError("--scheduler", scheduler, "threads | serial (or none: threads)",
-                        "a nonlinear-mesh study runs its groups (one per combination of the parameters other than "
-                        "speed) on threads in this process; Dask schedulers take the linear mesh's independent points")
     if plot is not None:
         from thermogear.ownership import check_figure_file  # noqa: PLC0415
 
         check_figure_file(plot)
+    if chunk_points is not None:
+        raise CaseError("--chunk-points", chunk_points, "absent with the nonlinear mesh",
+                        "a branch study's task is one combination of the parameters other than the speed (its branches "
+                        "follow each speed from its neighbour), written and resumed as one")
+    kind = scheduler if scheduler not in (None, "", "local") else ("processes" if dashboard else None)
+    if dashboard is not None and kind != "processes":
+        raise CaseError("--dashboard", dashboard, "only with the local Dask cluster (--scheduler processes)",
+                        f"the {kind} scheduler serves no dashboard of its own")
     start = time.perf_counter()
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         with point_progress("branches", total=study.size * len(study.models), completed=0, unit="points",
                             enabled=progress and not as_json) as advance:
             dataset = branch_study(study, direction, progress=lambda points: advance(points * len(study.models)),
-                                   workers=1 if scheduler == "serial" else workers, multistart=multistart)
-    target = write_branch_store(dataset, out, overwrite=overwrite)
+                                   workers=workers, multistart=multistart, scheduler=kind, out=out, resume=resume,
+                                   overwrite=overwrite)
+    from thermogear.ownership import resolve_output  # noqa: PLC0415
+
+    target = resolve_output(out)
     elapsed = time.perf_counter() - start
     figure_path = None
     if plot is not None and "speed_rpm" not in study.dims:

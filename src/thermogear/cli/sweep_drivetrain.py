@@ -1,12 +1,14 @@
-"""`thermogear sweep CASE --vary speed_rpm=a:b:n` on a case with a ``[drivetrain]``, into a zarr store: with the
-linear mesh the per-speed path of :mod:`thermogear.sweep.drivetrain_speeds` (the study's fast path batches the 1-DOF
-pair only); with the backlash mesh the orbit followed up and down in speed (:mod:`thermogear.sweep.
-drivetrain_branches`, summary and figure in :mod:`thermogear.cli.sweep_drivetrain_branches`)."""
+"""`thermogear sweep CASE --vary speed_rpm=a:b:n [--vary KEY=...]` on a case with a ``[drivetrain]``: the study of
+:mod:`thermogear.sweep.drivetrain_run` (linear mesh: each speed's periodic response; backlash mesh: the orbit
+followed up and down in speed) into a zarr store, its summary (table or JSON) and its figure."""
 
 from __future__ import annotations
 
 import time
 from pathlib import Path
+from types import SimpleNamespace
+
+import numpy as np
 
 from thermogear.errors import CaseError
 
@@ -22,87 +24,85 @@ def drivetrain_models(model: str) -> tuple[str, ...]:
     return _MODELS[model]
 
 
-def _speeds(definition) -> "object":
-    """The speeds of a sweep definition (``["speed_rpm=a:b:n"]`` or ``{"speed_rpm": ...}``); anything else is
-    refused: the drivetrain sweep varies the pinion speed only."""
-    from thermogear.schema.values import parse_values
-
-    items = dict(definition) if isinstance(definition, dict) else dict(
-        item.split("=", 1) if "=" in item else (item, None) for item in definition)
-    names = sorted(items)
-    if names != ["speed_rpm"] or items["speed_rpm"] is None:
-        raise CaseError("--vary", ", ".join(names), "speed_rpm=VALUES only, for a case with a [drivetrain]",
-                        "the drivetrain sweep varies the pinion speed (Kv, DTE and bearing forces per speed); sweep "
-                        "other keys on the pair by removing the [drivetrain] section")
-    return parse_values(items["speed_rpm"], "speed_rpm")
+def _first_group(run) -> SimpleNamespace:
+    """What the figures draw: the first combination of the parameters other than the speed."""
+    data = run.dataset
+    extra = [name for name in data.dims if name not in ("model", "direction", "speed_rpm", "bearing", "harmonic",
+                                                        "state")]
+    shown = data.isel({name: 0 for name in extra}) if extra else data
+    hysteresis = next(iter(run.hysteresis.values()), {}) if run.hysteresis else {}
+    return SimpleNamespace(dataset=shown, resonances=run.resonances, hysteresis=hysteresis)
 
 
-def run_drivetrain_sweep(built, origin, models: tuple[str, ...], definition, out: Path, overwrite: bool,
-                         resume: bool, plot: Path | None, progress: bool, as_json: bool, workers: int | None, console,
-                         error_console, direction: str | None = None) -> dict:
-    """Run the speed sweep of ``built`` (a :class:`~thermogear.drivetrain.case_model.CaseDrivetrain` holding
-    ``models``; ``origin`` its case's :class:`~thermogear.sweep.drivetrain_speeds.SweepOrigin`) into ``out`` and
-    print its summary (table or JSON): the backlash orbit up and down in speed where the case's mesh is nonlinear,
-    the linear per-speed path otherwise."""
+def run_drivetrain_sweep(study, out: Path, direction: str | None, options: dict, plot: Path | None,
+                         as_json: bool, console, progress_bar) -> dict:
+    """Run the drivetrain study ``study`` into ``out`` (``options``: scheduler, workers, resume, overwrite,
+    chunk_points) and print its summary; returns it."""
     from thermogear.cli.app import print_json
-    from thermogear.cli.console import point_progress
-    from thermogear.sweep.branches import write_branch_store
-    from thermogear.sweep.drivetrain_speeds import drivetrain_speed_sweep, plot_drivetrain_sweep
+    from thermogear.cli.sweep_drivetrain_branches import drivetrain_branch_summary, print_branch_summary, save_figure
+    from thermogear.sweep.drivetrain_run import run_drivetrain_study
 
-    nonlinear = built.backlash_mesh
-    if resume:
-        raise CaseError("--resume", True, "absent for a drivetrain case", "the drivetrain sweep is written whole "
-                        "at its end (a backlash branch also needs every speed before it in its direction); run it "
-                        "again")
-    if direction is not None and not nonlinear:
+    backlash = study.case.dynamics.mesh == "nonlinear"
+    if direction is not None and not backlash:
         raise CaseError("--direction", direction, "only with [dynamics] mesh = \"nonlinear\"",
                         "the linear mesh has one steady solution per speed: there is no branch to follow")
-    speeds = _speeds(definition)
-    if (out.exists() or out.is_symlink()) and not overwrite:
-        raise CaseError("out", str(out), "a path that does not exist yet (or --overwrite)",
-                        "the result store exists; overwrite it explicitly")
-    if nonlinear:
-        from thermogear.cli.sweep_drivetrain_branches import run_drivetrain_branches
-
-        return run_drivetrain_branches(built, origin, models, speeds, out, overwrite, plot, progress, as_json, console,
-                                       direction or "both", workers)
+    if direction not in (None, "up", "down", "both"):
+        raise CaseError("--direction", direction, "up | down | both",
+                        "the orbit is followed from the lowest speed up, from the highest down, or both")
+    directions = ("up", "down") if direction in (None, "both") else (direction,)
     start = time.perf_counter()
-    with point_progress("drivetrain sweep", total=int(speeds.size), unit="speeds",
-                        enabled=progress and not as_json) as advance:
-        sweep = drivetrain_speed_sweep(built, origin, speeds, models, workers=workers, progress=advance)
-    write_branch_store(sweep.dataset, out, overwrite=overwrite)
+    run = run_drivetrain_study(study, out, directions, progress=progress_bar, **options)
+    data = run.dataset
+    shown = _first_group(run)
     figure_path = None
     if plot is not None:
-        from thermogear.cli.sweep_drivetrain_branches import save_figure
-
-        figure_path = save_figure(plot_drivetrain_sweep(sweep), plot, out)
-    data = sweep.dataset
-    summary = {"out": str(out), "path": "drivetrain per-speed path (modal reduction shared per task; linear mesh)",
-               "models": list(models), "points": int(speeds.size), "seconds": time.perf_counter() - start,
-               "valid_points": {m: int(data["valid"].sel(model=m).sum()) for m in models},
-               "kv_max": {m: _finite_max(data["kv"].sel(model=m).where(data["valid"].sel(model=m)).values)
-                          for m in models},
-               "resonances": sweep.resonances, "plot": figure_path}
+        if backlash:
+            from thermogear.sweep.drivetrain_branch_plots import plot_drivetrain_branches as draw
+        else:
+            from thermogear.sweep.drivetrain_speeds import plot_drivetrain_sweep as draw
+        figure_path = save_figure(draw(shown), plot, run.path)
+    summary = {"out": str(run.path), "path": ("drivetrain backlash branches (orbit followed in speed, modal "
+                                              f"reduction up to {data.attrs['response_cutoff_hz']:g} Hz)" if backlash
+                                              else "drivetrain per-speed path (modal reduction shared per task; "
+                                              "linear mesh)"),
+               "mesh": "nonlinear" if backlash else "linear", "models": list(study.models),
+               "dims": {name: int(size) for name, size in zip(study.dims, study.shape)}, "points": study.size,
+               "load_held": data.attrs["load"], "load_held_note": data.attrs["load_note"],
+               "temperatures": data.attrs["temperatures"], "tasks_computed": run.computed, "tasks_kept": run.kept,
+               "seconds": time.perf_counter() - start, "resonances": run.resonances, "plot": figure_path}
+    if backlash:
+        summary.update({"directions": list(directions), **drivetrain_branch_summary(data),
+                        "hysteresis": (run.hysteresis["all"] if list(run.hysteresis) == ["all"]
+                                       else run.hysteresis)})
+    else:
+        summary["valid_points"] = {m: int(data["valid"].sel(model=m).sum()) for m in study.models}
+        summary["kv_max"] = {m: _finite_max(data["kv"].sel(model=m).where(data["valid"].sel(model=m)).values)
+                             for m in study.models}
     if as_json:
         print_json(summary)
+        return summary
+    console.print(f"drivetrain {'backlash ' if backlash else ''}sweep of {study.case.name}: "
+                  f"{' × '.join(f'{n} {k}' for k, n in summary['dims'].items())} × {len(study.models)} model(s) in "
+                  f"{summary['seconds']:.1f} s → {run.path} ({run.computed} tasks computed, {run.kept} kept)",
+                  highlight=False)
+    console.print(f"  load held: {summary['load_held']} ({summary['load_held_note']}); temperatures: "
+                  f"{summary['temperatures']}", highlight=False)
+    if backlash:
+        print_branch_summary(summary, run.hysteresis, console)
     else:
-        console.print(f"drivetrain sweep of {origin.name}: {speeds.size} speeds × {len(models)} model(s) in "
-                      f"{summary['seconds']:.1f} s on the per-speed path (modal reduction, linear mesh) → {out}",
-                      highlight=False)
-        for m in models:
+        for m in study.models:
             console.print(f"  {m}: {summary['valid_points'][m]} valid points, Kv max {summary['kv_max'][m]}; "
                           "mesh harmonics meet modes in range (* mesh-dominated): " + ("; ".join(
                               f"{r['harmonic']}× mesh meets {r['mode_hz']:.0f} Hz {r['label']}"
                               f"{' *' if r['mesh_dominated'] else ''} at {r['speed_rpm']:.0f} rpm"
-                              for r in sweep.resonances[m]) or "none"), highlight=False)
-        if figure_path:
-            console.print(f"  plot: {figure_path}", highlight=False)
+                              for r in run.resonances[m]) or "none"), highlight=False)
+    if figure_path:
+        console.print(f"  plot: {figure_path}" + (" (the first combination of the other parameters)"
+                                                 if len(study.parameters) > 1 else ""), highlight=False)
     return summary
 
 
 def _finite_max(values) -> float | None:
-    import numpy as np
-
     finite = np.asarray(values, dtype=float)
     finite = finite[np.isfinite(finite)]
     return round(float(finite.max()), 6) if finite.size else None

@@ -24,7 +24,7 @@ import numpy as np
 from thermogear.dynamics.backlash_ndof import BacklashSystem, backlash_flow_ndof, backlash_periodic_orbit
 from thermogear.errors import ModelLimitError, ProblemError
 
-__all__ = ["BacklashBranchNDOF", "follow_backlash_branch"]
+__all__ = ["BacklashBranchNDOF", "BranchStep", "branch_step", "follow_backlash_branch", "from_full", "to_full"]
 
 
 @dataclass(frozen=True, eq=False)
@@ -61,14 +61,59 @@ def _peak_to_peak(system: BacklashSystem, state: np.ndarray, substeps: int) -> f
     return float(np.ptp(mesh))
 
 
-def _carry(state: np.ndarray, source: int, target: int, coordinates, metric) -> np.ndarray:
-    """The state (η, η̇) of system ``source`` in the coordinates of system ``target`` (module docstring)."""
-    if coordinates is None:
-        return state
-    weighted = coordinates[target].T @ metric
-    transfer = np.linalg.solve(weighted @ coordinates[target], weighted @ coordinates[source])
-    half = coordinates[source].shape[1]
-    return np.concatenate((transfer @ state[:half], transfer @ state[half:]))
+def to_full(state: np.ndarray, basis: np.ndarray | None) -> np.ndarray:
+    """A state (η, η̇) on ``basis`` C (q = C η) in the full coordinates (q, q̇); itself without a basis."""
+    if basis is None:
+        return np.asarray(state, dtype=float)
+    half = basis.shape[1]
+    return np.concatenate((basis @ state[:half], basis @ state[half:]))
+
+
+def from_full(state: np.ndarray, basis: np.ndarray | None, metric: np.ndarray | None) -> np.ndarray:
+    """A full state (q, q̇) on ``basis`` C by the ``metric``-orthogonal projection (module docstring)."""
+    if basis is None:
+        return np.asarray(state, dtype=float)
+    weighted = basis.T @ metric
+    full = basis.shape[0]
+    solved = np.linalg.solve(weighted @ basis, weighted @ np.stack((state[:full], state[full:]), axis=1))
+    return np.concatenate((solved[:, 0], solved[:, 1]))
+
+
+@dataclass(frozen=True, eq=False)
+class BranchStep:
+    """One point of a branch: ``orbit`` (None where none was found), ``run_in`` (the neighbour's orbit was lost
+    and the point run in), and ``carried`` the full state the next point starts from (this orbit's where it
+    converged, else the one this point was given; None before the first orbit)."""
+
+    orbit: object | None
+    run_in: bool
+    carried: np.ndarray | None
+
+
+def branch_step(system: BacklashSystem, carried: np.ndarray | None, basis: np.ndarray | None = None,
+                metric: np.ndarray | None = None, substeps: int = 8, run_in_periods: int = 200,
+                tolerance: float = 1e-10, max_iterations: int = 30) -> BranchStep:
+    """One point of :func:`follow_backlash_branch`: the orbit of ``system`` shot from ``carried`` (the neighbour's
+    full state, None: from rest), run in from there where that fails or is unstable (module docstring). A point
+    depends only on its system and the state it is given, so a branch stopped after any point continues exactly
+    from the ``carried`` state stored there."""
+    state = None if carried is None else from_full(carried, basis, metric)
+    run_in = False
+    try:
+        orbit = backlash_periodic_orbit(system, state, substeps, tolerance, max_iterations)
+        if not orbit.stable and state is not None:
+            start = state
+            for _ in range(run_in_periods):
+                start, _, _ = backlash_flow_ndof(system, start, substeps)
+            orbit = backlash_periodic_orbit(system, start, substeps, tolerance, max_iterations)
+            run_in = True
+    except (ModelLimitError, ProblemError, np.linalg.LinAlgError, ValueError):
+        # no orbit at this point (ValueError: SciPy's "Array must not contain infs or NaNs" of a flow that
+        # overflowed); the branch goes on from the last orbit found
+        return BranchStep(None, False, carried)
+    if orbit.converged:
+        return BranchStep(orbit, run_in, to_full(orbit.initial_state, basis))
+    return BranchStep(orbit, run_in, carried)
 
 
 def follow_backlash_branch(systems: Sequence[BacklashSystem], direction: str = "up",
@@ -99,32 +144,20 @@ def follow_backlash_branch(systems: Sequence[BacklashSystem], direction: str = "
                            "the state carries over through the full system")
     converged, stable, run_in = (np.zeros(count, dtype=bool) for _ in range(3))
     fraction, peak, states = np.full(count, np.nan), np.full(count, np.nan), np.full((count, size), np.nan)
-    state, source = None, None
+    carried = None
     for index in (range(count) if direction == "up" else range(count - 1, -1, -1)):
         system = systems[index]
-        if state is not None:  # the neighbour's state, in this system's coordinates
-            state, source = _carry(state, source, index, coordinates, metric), index
-        try:
-            orbit = backlash_periodic_orbit(system, state, substeps, tolerance, max_iterations)
-            if not orbit.stable and state is not None:
-                start = state
-                for _ in range(run_in_periods):
-                    start, _, _ = backlash_flow_ndof(system, start, substeps)
-                orbit = backlash_periodic_orbit(system, start, substeps, tolerance, max_iterations)
-                run_in[index] = True
-        except (ModelLimitError, ProblemError, np.linalg.LinAlgError, ValueError):
-            # no orbit at this point (ValueError: SciPy's "Array must not contain infs or NaNs" of a flow that
-            # overflowed); the branch goes on from the last orbit found
-            if progress is not None:
-                progress(1)
-            continue
-        converged[index], stable[index] = orbit.converged, orbit.stable
-        if orbit.converged:
-            state, source = orbit.initial_state, index
-            states[index, :state.size] = state
-            fraction[index] = orbit.free_flight_time / system.linear.period
-            if measure_swing:
-                peak[index] = _peak_to_peak(system, state, substeps)
+        step = branch_step(system, carried, None if coordinates is None else coordinates[index], metric, substeps,
+                           run_in_periods, tolerance, max_iterations)
+        carried, orbit = step.carried, step.orbit
+        if orbit is not None:
+            converged[index], stable[index], run_in[index] = orbit.converged, orbit.stable, step.run_in
+            if orbit.converged:
+                state = orbit.initial_state
+                states[index, :state.size] = state
+                fraction[index] = orbit.free_flight_time / system.linear.period
+                if measure_swing:
+                    peak[index] = _peak_to_peak(system, state, substeps)
         if progress is not None:
             progress(1)
     return BacklashBranchNDOF(labels, direction, converged, stable, run_in, fraction, peak, states)

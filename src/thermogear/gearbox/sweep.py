@@ -1,13 +1,11 @@
 """Steady temperatures, losses and backlash of a gearbox over a grid of pinion speeds × torques.
 
-Each grid point is one steady solve of the network (:meth:`GearboxThermalModel.steady_state`, about 2 ms), in a
-loop or on a pool of threads (``workers``). The study machinery (:mod:`thermogear.sweep`) stores the outputs of the
-dynamics and would need new variables and a new kernel for these, so this sweep is a function of its own; its grid
-is written to a zarr store like a study's by :mod:`thermogear.sweep.steady_store` (the dynamics of a case with
-``temperature.model = "gearbox"`` does run on the study machinery: every point's case predicts its own
-temperatures). A point without a stable steady state (thermal runaway) is masked, never a number, and carries the
-torque of the fold where the stable branch ended; a stable point carries its plausibility flags
-(:mod:`thermogear.temperature_limits`): a hot stable state is a result, flagged.
+Each grid point is one steady solve of the network (:meth:`GearboxThermalModel.steady_state`, about 2 ms). This
+module solves a block of points in a loop (:func:`solve_grid`); :func:`steady_sweep` a whole grid in this thread,
+and :mod:`thermogear.sweep.gearbox_grid` a grid cut into blocks on the study executor (worker processes, a
+scheduler), written to a zarr store as the blocks finish. A point without a stable steady state (thermal runaway)
+is masked, never a number, and carries the torque of the fold where the stable branch ended; a stable point carries
+its plausibility flags (:mod:`thermogear.temperature_limits`): a hot stable state is a result, flagged.
 """
 
 from __future__ import annotations
@@ -21,6 +19,7 @@ from thermogear.errors import CaseError, ExtrapolationWarning
 from thermogear.gearbox.description import GearboxOperatingPoint
 from thermogear.gearbox.losses import NODES
 from thermogear.gearbox.network import NoSteadyStateError
+from thermogear.temperature_limits import FLAG_MEANINGS
 
 #: Largest grid accepted (each point is one nonlinear solve).
 MOST_POINTS = 10_000
@@ -102,58 +101,96 @@ def steady_point(model, speed_rpm: float, torque: float, ambient_c: float):
         return error
 
 
-def _solve_points(model, points, ambient_c: float, workers: int | None) -> list:
-    """Steady states (or None) of ``points`` [(speed, torque)], in their order: in this thread when ``workers``
-    is None or 1, else on a pool of that many threads (each point is a pure function of the model and the point,
-    so the results do not depend on where or in which order they are computed; the solve holds the GIL, so
-    threads do not make it faster today)."""
-    count = min(workers or 1, len(points))
-    if count <= 1:
-        return [steady_point(model, speed, torque, ambient_c) for speed, torque in points]
-    from concurrent.futures import ThreadPoolExecutor  # noqa: PLC0415
-
-    with ThreadPoolExecutor(count, "thermogear-gearbox") as pool:
-        return list(pool.map(lambda point: steady_point(model, point[0], point[1], ambient_c), points))
+#: The steady outputs of a grid point besides the five node temperatures, in :func:`solve_grid` order.
+OUTPUTS = ("mesh", "bearings", "seals", "churning", "efficiency", "backlash", "injection")
 
 
-def steady_sweep(model, speeds_rpm, torques, ambient_c: float = 20.0, workers: int | None = None) -> SteadySweep:
-    """Steady states of ``model`` (a :class:`~thermogear.gearbox.model.GearboxThermalModel`) on the grid;
-    ``workers``: threads that solve the points (default 1: this thread)."""
+def solve_grid(model, speeds_rpm, torques, ambient_c: float) -> dict[str, np.ndarray]:
+    """The steady states of ``model`` at every speed [rpm] × torque [N·m] (a block of a grid), in a loop: arrays
+    ``temperatures`` (5, m, k) [°C] and one (m, k) per name of :data:`OUTPUTS`, NaN where the network has no stable
+    steady state, ``runaway`` (m, k) bool, ``fold`` (m, k) the torque [N·m] where the stable branch ended (NaN
+    elsewhere) and ``flag_<name>`` (m, k) bool per plausibility flag (:data:`~thermogear.temperature_limits.
+    FLAG_MEANINGS`). Each point is a pure function of the model and the point, so a block gives
+    the same bits wherever and in whatever order it is solved. The viscosity-range warning of each point is not
+    raised here (:func:`warn_oil_range` says it once for a whole grid)."""
+    speeds = np.atleast_1d(np.asarray(speeds_rpm, dtype=float))
+    loads = np.atleast_1d(np.asarray(torques, dtype=float))
+    shape = (speeds.size, loads.size)
+    arrays = {"temperatures": np.full((5,) + shape, np.nan), **{name: np.full(shape, np.nan) for name in OUTPUTS},
+              "runaway": np.zeros(shape, dtype=bool), "fold": np.full(shape, np.nan),
+              **{f"flag_{flag}": np.zeros(shape, dtype=bool) for flag in FLAG_MEANINGS}}
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", ExtrapolationWarning)
+        for i, speed in enumerate(speeds):
+            for j, torque in enumerate(loads):
+                state = steady_point(model, speed, torque, ambient_c)
+                if isinstance(state, NoSteadyStateError):  # no stable steady state: NaN, with its fold
+                    arrays["runaway"][i, j] = True
+                    if getattr(state, "fold_torque", None) is not None:
+                        arrays["fold"][i, j] = state.fold_torque
+                    continue
+                for flag in state.flags:
+                    arrays[f"flag_{flag}"][i, j] = True
+                arrays["temperatures"][:, i, j] = state.temperatures_c
+                losses = state.losses
+                for name, value in (("mesh", losses.mesh), ("bearings", losses.bearings), ("seals", losses.seals),
+                                    ("churning", losses.churning), ("efficiency", losses.efficiency),
+                                    ("injection", losses.injection), ("backlash", state.backlash)):
+                    arrays[name][i, j] = value
+    return arrays
+
+
+def warn_oil_range(model, temperatures: np.ndarray) -> None:
+    """Once for a whole grid: the oil and housing temperatures [°C] (``temperatures`` (5, …), NaN where none) that
+    leave the range the viscosity fit was made over."""
+    fitted = model.description.lubricant.fitted_range_c
+    oil = np.asarray(temperatures)[2:4]
+    if not np.isfinite(oil).any():
+        return
+    low, high = float(np.nanmin(oil)), float(np.nanmax(oil))
+    if low < fitted[0] or high > fitted[1]:
+        warnings.warn(f"gearbox: oil temperatures {low:.1f}…{high:.1f} °C over the grid leave the viscosity fit's "
+                      f"range {fitted[0]:g}…{fitted[1]:g} °C (ASTM D341 extrapolated)", ExtrapolationWarning,
+                      stacklevel=3)
+
+
+def grid_result(model, speeds_rpm, torques, ambient_c: float, arrays: dict[str, np.ndarray]) -> SteadySweep:
+    """The :class:`SteadySweep` of a grid's arrays (:func:`solve_grid`'s names), masked where ``runaway``."""
+    runaway = np.asarray(arrays["runaway"], dtype=bool)
+
+    def masked(values) -> np.ma.MaskedArray:
+        values = np.asarray(values, dtype=float)
+        return np.ma.masked_array(values, mask=np.broadcast_to(runaway, values.shape))
+
+    shape = runaway.shape
+    flags = np.empty(shape, dtype=object)
+    for i in range(shape[0]):
+        for j in range(shape[1]):
+            flags[i, j] = tuple(flag for flag in FLAG_MEANINGS if np.asarray(arrays[f"flag_{flag}"])[i, j])
+    fold = np.asarray(arrays["fold"], dtype=float)
+    return SteadySweep(np.atleast_1d(np.asarray(speeds_rpm, dtype=float)),
+                       np.atleast_1d(np.asarray(torques, dtype=float)), float(ambient_c),
+                       masked(arrays["temperatures"]), masked(arrays["mesh"]), masked(arrays["bearings"]),
+                       masked(arrays["seals"]), masked(arrays["churning"]), masked(arrays["efficiency"]),
+                       masked(arrays["backlash"]),
+                       None if model.description.oil_jet is None else masked(arrays["injection"]),
+                       flags, np.ma.masked_invalid(fold))
+
+
+def check_grid(speeds_rpm, torques) -> tuple[np.ndarray, np.ndarray]:
+    """The grid's speeds and torques as 1-D arrays; a grid beyond :data:`MOST_POINTS` is refused."""
     speeds = np.atleast_1d(np.asarray(speeds_rpm, dtype=float))
     loads = np.atleast_1d(np.asarray(torques, dtype=float))
     if speeds.ndim != 1 or loads.ndim != 1 or speeds.size * loads.size > MOST_POINTS:
         raise CaseError("speeds/torques", (speeds.size, loads.size), f"1-D, at most {MOST_POINTS} points in all",
                         "each point is one nonlinear steady solve")
-    shape = (speeds.size, loads.size)
-    temperatures = np.ma.masked_all((5,) + shape)
-    outputs = {name: np.ma.masked_all(shape) for name in ("mesh", "bearings", "seals", "churning", "efficiency",
-                                                          "backlash", "injection")}
-    flags = np.empty(shape, dtype=object)
-    flags.fill(())
-    fold = np.ma.masked_all(shape)
-    points = [(i, j) for i in range(speeds.size) for j in range(loads.size)]
-    with warnings.catch_warnings():
-        # the viscosity-range warning of each point is raised once below for the whole grid
-        warnings.simplefilter("ignore", ExtrapolationWarning)
-        for (i, j), state in zip(points, _solve_points(model, [(speeds[i], loads[j]) for i, j in points],
-                                                      ambient_c, workers)):
-            if isinstance(state, NoSteadyStateError):  # no steady state: the point stays masked
-                if getattr(state, "fold_torque", None) is not None:
-                    fold[i, j] = state.fold_torque
-                continue
-            temperatures[:, i, j] = state.temperatures_c
-            flags[i, j] = state.flags
-            losses = state.losses
-            for name, value in (("mesh", losses.mesh), ("bearings", losses.bearings), ("seals", losses.seals),
-                                ("churning", losses.churning), ("efficiency", losses.efficiency),
-                                ("injection", losses.injection),
-                                ("backlash", state.backlash)):
-                outputs[name][i, j] = value
-    fitted = model.description.lubricant.fitted_range_c
-    if temperatures.count() and (temperatures[2:4].min() < fitted[0] or temperatures[2:4].max() > fitted[1]):
-        warnings.warn(f"gearbox: oil temperatures {float(temperatures[2:4].min()):.1f}…"
-                      f"{float(temperatures[2:4].max()):.1f} °C over the grid leave the viscosity fit's range "
-                      f"{fitted[0]:g}…{fitted[1]:g} °C (ASTM D341 extrapolated)", ExtrapolationWarning, stacklevel=2)
-    return SteadySweep(speeds, loads, float(ambient_c), temperatures, outputs["mesh"], outputs["bearings"],
-                       outputs["seals"], outputs["churning"], outputs["efficiency"], outputs["backlash"],
-                       None if model.description.oil_jet is None else outputs["injection"], flags, fold)
+    return speeds, loads
+
+
+def steady_sweep(model, speeds_rpm, torques, ambient_c: float = 20.0) -> SteadySweep:
+    """Steady states of ``model`` (a :class:`~thermogear.gearbox.model.GearboxThermalModel`) on the grid, in this
+    thread (:mod:`thermogear.sweep.gearbox_grid` runs a grid on the study executor, into a store)."""
+    speeds, loads = check_grid(speeds_rpm, torques)
+    arrays = solve_grid(model, speeds, loads, ambient_c)
+    warn_oil_range(model, arrays["temperatures"])
+    return grid_result(model, speeds, loads, ambient_c, arrays)

@@ -26,6 +26,7 @@ from thermogear import warning_scope
 from thermogear.dynamics.backlash_continuation import follow_branch
 from thermogear.errors import CaseError, JammingError
 from thermogear.mesh.model import PREDICTED_AT_LOAD_TEMPERATURE_MODELS, MeshModel
+from thermogear.sweep.branch_store import BRANCH_VARIABLES, branch_layout, branch_region
 from thermogear.sweep.hysteresis import hysteresis_bands
 from thermogear.sweep.load_held import study_load_held
 
@@ -33,22 +34,6 @@ __all__ = ["DIRECTIONS", "BRANCH_VARIABLES", "branch_study", "hysteresis_bands",
 
 DIRECTIONS = ("up", "down", "both")
 
-#: Per-direction, per-model result variables: name → (units, long name).
-BRANCH_VARIABLES: dict[str, tuple[str, str]] = {
-    "kv": ("1", "dynamic load factor Kv = max pair force / static load (Luo & Li Eq. 29)"),
-    "max_pair_load": ("N", "largest single-pair force over the orbit"),
-    "max_system_load_ratio": ("1", "largest mesh force / static load"),
-    "dte_mean": ("m", "mean dynamic transmission error"),
-    "dte_rms": ("m", "RMS of the dynamic transmission error about its mean"),
-    "dte_peak_to_peak": ("m", "peak-to-peak dynamic transmission error"),
-    "contact_loss_fraction": ("1", "fraction of the period without driving-flank contact"),
-    "back_side_contact": ("1", "1 where a back flank is struck"),
-    "back_contact_fraction": ("1", "fraction of the period with a back flank in contact"),
-    "period_count": ("1", "mesh periods after which the response repeats (1 periodic, >1 subharmonic)"),
-    "converged": ("1", "1 where a stable periodic or subharmonic orbit was found"),
-    "floquet_multiplier_max": ("1", "largest Floquet multiplier modulus of the orbit"),
-    "residual": ("1", "scaled residual |phi_NT(y0) - y0| of the orbit's Newton iteration (large: not converged)"),
-}
 _FROM_BRANCH = {"kv": "kv", "max_pair_load": "max_pair_force", "max_system_load_ratio": "max_mesh_force",
                 "dte_mean": "dte_mean", "dte_rms": "dte_rms", "dte_peak_to_peak": "dte_peak_to_peak",
                 "contact_loss_fraction": "contact_loss_fraction", "back_contact_fraction": "back_contact_fraction",
@@ -199,14 +184,17 @@ def _execute(study, task: tuple, speed_axis, directions, starts: int):
     return _search_point(study, task[1], speed_axis, task[2], task[3], starts)
 
 
-def _execute_recorded(study, task, speed_axis, directions, starts) -> tuple[Any, list]:
-    """:func:`_execute` on a worker thread, its warnings recorded in the thread's own scope."""
+def execute_recorded(shared: tuple, task) -> tuple[Any, list]:
+    """One task of the executor (``shared``: the study, the speed axis, the directions, the starts): :func:`_execute`
+    with its warnings recorded (in the thread's own scope on a thread) as ``(text, category, file, line)``."""
+    study, speed_axis, directions, starts = shared
     with warning_scope.recorded() as caught:
         result = _execute(study, task, speed_axis, directions, starts)
-    return result, list(caught)
+    return result, [(str(item.message), item.category, item.filename, item.lineno) for item in caught]
 
 
-def branch_study(study, direction: str = "both", progress=None, workers: int | None = None, multistart: int = 0):
+def branch_study(study, direction: str = "both", progress=None, workers: int | None = None, multistart: int = 0,
+                 scheduler: str | None = None, out=None, resume: bool = False, overwrite: bool = False):
     """The xarray Dataset of a nonlinear-mesh study: dims ``(direction, model, *parameters)`` for the variables of
     :data:`BRANCH_VARIABLES` and ``response`` ("periodic" | "subharmonic" | "non-periodic" | "failed" | "jammed"),
     ``jammed`` with dims ``(model, *parameters)`` (1 where the thermal expansion closes the backlash: no result,
@@ -217,6 +205,10 @@ def branch_study(study, direction: str = "both", progress=None, workers: int | N
     one per core; 1: in the calling thread): the backlash integrator releases Python's global interpreter lock.
     The numbers do not depend on the thread count. Warnings raised by the tasks are raised again in the calling
     thread, once each. ``progress(points)`` is called as each group finishes (``points``: its speeds).
+    ``scheduler``: any of :func:`thermogear.sweep.executor.execute` (default: threads; serial where ``workers`` is
+    1). ``out``: the zarr store the groups are written to as they finish (:mod:`thermogear.sweep.task_store`;
+    ``resume`` continues it, the finished groups kept; ``overwrite`` replaces thermogear's own store); the dataset
+    returned is then the store's (its ``orbit`` dimension as long as the starts).
 
     ``multistart`` N > 0: at every point and model also the multi-start search of
     :func:`~thermogear.dynamics.backlash_orbits.stable_orbits` from N starts (about 0.1 s per start and point):
@@ -262,11 +254,33 @@ def branch_study(study, direction: str = "both", progress=None, workers: int | N
             progress(int(group.static_load.size))
 
     tasks = [("group", rest) for rest in groups]
-    if multistart:  # one task per point and model: a few speeds searched on every thread
+    if multistart:  # one task per point and model: a few speeds searched on every worker
         speed_count = study.parameters[speed_axis].size if speed_axis is not None else 1
         tasks += [("orbits", rest, model, speed) for rest in groups for model in range(len(study.models))
                   for speed in range(speed_count)]
-    _run_tasks(study, tasks, speed_axis, directions, place, workers, int(multistart))
+    store = None
+    if out is not None:
+        from thermogear.sweep.task_store import TaskStore  # noqa: PLC0415
+
+        store = TaskStore.open(out, branch_layout(study, directions, int(multistart), len(tasks)), resume=resume,
+                               overwrite=overwrite)
+    done = store.done_tasks() if store is not None else set()
+    pending = [(number, task) for number, task in enumerate(tasks) if number not in done]
+    caught: list = []
+
+    def finished(index: int, outcome) -> None:
+        number, task = pending[index]
+        result, messages = outcome
+        caught.extend(messages)
+        place(task, result)
+        if store is not None:
+            store.write(number, *branch_region(study, task, speed_axis, result, int(multistart)))
+
+    kind = scheduler if scheduler not in (None, "", "local") else ("serial" if workers == 1 else "threads")
+    _run_tasks((study, speed_axis, directions, int(multistart)), [task for _, task in pending], finished, kind,
+               None if kind == "serial" else workers, caught)
+    if store is not None:
+        return store.dataset()
     coords: dict[str, Any] = {"direction": ("direction", np.array(directions, dtype=str)),
                               "model": ("model", np.array(study.models, dtype=str))}
     for parameter in study.parameters:
@@ -293,38 +307,23 @@ def branch_study(study, direction: str = "both", progress=None, workers: int | N
                                                    "case": study.case.name, "load": load, "load_note": load_note})
 
 
-def _run_tasks(study, tasks, speed_axis, directions, place, workers: int | None, starts: int) -> None:
-    """Run every task, serially (``workers`` = 1) or on a pool of threads; ``place(task, result)`` is called in
-    the calling thread as each finishes."""
-    import os  # noqa: PLC0415
+def _run_tasks(shared, tasks, finished, scheduler: str, workers: int | None, caught: list) -> None:
+    """Every task on the one executor (:mod:`thermogear.sweep.executor`); ``finished(index, (result, warnings))``
+    in the calling thread as each finishes; the warnings raised again in the calling thread, once per text."""
+    from contextlib import ExitStack  # noqa: PLC0415
 
-    count = min(workers or os.cpu_count() or 1, len(tasks))
-    if count <= 1:
-        for task in tasks:
-            place(task, _execute(study, task, speed_axis, directions, starts))
-        return
-    from concurrent.futures import ThreadPoolExecutor, as_completed  # noqa: PLC0415
+    from thermogear.sweep.executor import execute  # noqa: PLC0415
 
-    caught: list = []
-    with warning_scope.routed() as unscoped:
-        with ThreadPoolExecutor(count, "thermogear-branches") as pool:
-            futures = {pool.submit(_execute_recorded, study, task, speed_axis, directions, starts): task
-                       for task in tasks}
-            try:
-                for future in as_completed(futures):
-                    result, messages = future.result()
-                    caught.extend(messages)
-                    place(futures[future], result)
-            finally:
-                for future in futures:
-                    future.cancel()
-        caught.extend(unscoped)
+    with ExitStack() as stack:
+        unscoped = stack.enter_context(warning_scope.routed()) if scheduler == "threads" else []
+        execute(execute_recorded, shared, tasks, finished, scheduler, workers)
+        stack.close()
+        caught.extend((str(item.message), item.category, item.filename, item.lineno) for item in unscoped)
     seen = set()
-    for item in caught:  # raised again in the calling thread, once per text
-        key = (item.category, str(item.message))
-        if key not in seen:
-            seen.add(key)
-            warnings.warn_explicit(str(item.message), item.category, item.filename, item.lineno)
+    for text, category, filename, lineno in caught:
+        if (category, text) not in seen:
+            seen.add((category, text))
+            warnings.warn_explicit(text, category, filename, lineno)
 
 
 def write_branch_store(dataset, path, overwrite: bool = False):

@@ -16,7 +16,6 @@ as valid; an orbit found but unstable keeps its numbers, marked "unstable".
 from __future__ import annotations
 
 import json
-import os
 import warnings
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
@@ -156,17 +155,14 @@ def _task(built, task: tuple[str, str, list[float]],
 
 
 def drivetrain_branch_sweep(built, origin, speeds: np.ndarray, models: tuple[str, ...],
-                            directions: Sequence[str] = DIRECTIONS, progress: Callable[[int], None] | None = None,
-                            workers: int | None = None, processes: bool = True) -> DrivetrainBranchSweep:
+                            directions: Sequence[str] = DIRECTIONS, progress: Callable[[int], None] | None = None
+                            ) -> DrivetrainBranchSweep:
     """Follow the backlash orbit of ``built`` (a :class:`~thermogear.drivetrain.case_model.CaseDrivetrain` holding
     ``models``; ``origin`` its case's :class:`~thermogear.sweep.drivetrain_speeds.SweepOrigin`) over the pinion
-    ``speeds`` [rpm] in each direction for each model (module docstring). Each model
-    and direction is one task: ``workers`` (default: the cores) processes take them as the linear drivetrain sweep
-    does (:func:`~thermogear.sweep.drivetrain_speeds.worker_map`: "spawn", one BLAS thread each) and
-    ``progress(count)`` is called as tasks finish; ``processes=False`` (or one task) computes in this process with
-    its BLAS threads as they are, ``progress`` then called per point."""
+    ``speeds`` [rpm] in each direction for each model (module docstring), in this process, ``progress(1)`` per
+    point. A study of a case (any grid, any scheduler, into a resumable store) is :mod:`thermogear.sweep.
+    drivetrain_study` (``thermogear.sweep(case, ...)``)."""
     from thermogear.drivetrain.case_model import mode_table, resonance_speeds
-    from thermogear.sweep.drivetrain_speeds import worker_map
     from thermogear.sweep.hysteresis import hysteresis_bands
 
     speeds = np.asarray(speeds, dtype=float)
@@ -181,18 +177,9 @@ def drivetrain_branch_sweep(built, origin, speeds: np.ndarray, models: tuple[str
     section, teeth = built.section, built.teeth
     keys = [(model, direction) for model in models for direction in directions]
     tasks = [(model, direction, speeds.tolist()) for model, direction in keys]
-    workers = max(1, min(workers or os.cpu_count() or 1, len(tasks)))
     points: dict[tuple[str, str], dict[int, dict[str, Any]]] = {}
-    if processes and workers > 1:
-        def done(index: int, result: dict[int, dict[str, Any]]) -> None:
-            points[keys[index]] = result
-            if progress is not None:
-                progress(speeds.size)
-
-        worker_map(origin, models, _task, tasks, workers, done)
-    else:
-        for key, task in zip(keys, tasks):
-            points[key] = _task(built, task, progress)
+    for key, task in zip(keys, tasks):
+        points[key] = _task(built, task, progress)
     resonances = {}
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")

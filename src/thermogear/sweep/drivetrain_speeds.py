@@ -7,16 +7,13 @@ The speeds of one worker task share the rigid-body reduction and the modal basis
 (:func:`~thermogear.drivetrain.response.drivetrain_speed_sweep`): the reduction is exact, and the basis of the
 task's first speed equals each speed's own wherever the mean mesh stiffness does not change with speed (measured
 to rounding, 1e-11, on the built-in sets; the tests). A speed that fails is marked "not computed" with its reason,
-the others are computed. The speeds are shared among worker processes
-started with one BLAS thread each: the reduced problems are small matrices, for which multi-threaded BLAS on a busy
-machine can be many times slower than one thread (the FZG rig set on the shared 2-core machine: from 0.03 to 0.6 s
-per speed in one process as the load varied, against 0.015–0.03 s with one thread), and NumPy cannot change its
-thread count once loaded. The mesh is linear (permanent contact) here.
+the others are computed. This function runs in the calling process; the study of a case on the executor (worker
+processes with one BLAS thread each, a scheduler, a store) is :mod:`thermogear.sweep.drivetrain_study`. The mesh is linear (permanent
+contact) here.
 """
 
 from __future__ import annotations
 
-import os
 import warnings
 from dataclasses import dataclass
 from typing import Any, Callable
@@ -25,7 +22,7 @@ import numpy as np
 
 from thermogear.errors import CaseError, ModelLimitError
 
-__all__ = ["DrivetrainSweep", "SweepOrigin", "drivetrain_speed_sweep", "plot_drivetrain_sweep", "worker_map"]
+__all__ = ["DrivetrainSweep", "SweepOrigin", "drivetrain_speed_sweep", "plot_drivetrain_sweep"]
 
 @dataclass(frozen=True)
 class SweepOrigin:
@@ -39,18 +36,8 @@ class SweepOrigin:
     load_held: str
 
 
-_THREAD_VARIABLES = ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS")
-_WORKER: dict[str, Any] = {}
 #: Speeds per task: small enough for a live progress bar, large enough that a task outweighs its dispatch.
 _SPEEDS_PER_TASK = 8
-
-
-def _initialise(document: dict, source: str, models: tuple[str, ...]) -> None:
-    """Worker start: the case and its drivetrain, once per process."""
-    warnings.simplefilter("ignore")  # the case's own warnings were printed by the parent's checks
-    from thermogear.case import case_from_document
-    from thermogear.drivetrain.case_model import case_drivetrain
-    _WORKER["built"] = case_drivetrain(case_from_document(document, source), models)
 
 
 _FAILURES = (ModelLimitError, CaseError, np.linalg.LinAlgError)
@@ -89,38 +76,6 @@ def _compute_with(built, models: tuple[str, ...], speeds: list[float]) -> list[d
             for index in range(len(speeds))]
 
 
-def _compute_chunk(built, task: tuple[tuple[str, ...], list[float]]) -> list[dict[str, dict[str, Any]]]:
-    return _compute_with(built, *task)
-
-
-def _call(compute: Callable[[Any, Any], Any], task: Any) -> Any:
-    return compute(_WORKER["built"], task)
-
-
-def worker_map(origin: SweepOrigin, models: tuple[str, ...], compute: Callable[[Any, Any], Any], tasks: list,
-               workers: int, done: Callable[[int, Any], None]) -> None:
-    """``compute(drivetrain, task)`` for each task in ``workers`` processes started by "spawn" with one BLAS thread
-    each (module docstring), each process building the drivetrain of ``origin``'s case for ``models`` once;
-    ``done(index, result)`` as the tasks finish. ``compute`` must be a module-level function (it is pickled)."""
-    import multiprocessing
-    from concurrent.futures import ProcessPoolExecutor, as_completed
-
-    saved = {name: os.environ.get(name) for name in _THREAD_VARIABLES}
-    os.environ.update({name: "1" for name in _THREAD_VARIABLES})  # inherited by the spawned workers only
-    try:
-        with ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context("spawn"), initializer=_initialise,
-                                 initargs=(origin.document, origin.source, models)) as pool:
-            futures = {pool.submit(_call, compute, task): index for index, task in enumerate(tasks)}
-            for future in as_completed(futures):
-                done(futures[future], future.result())
-    finally:
-        for name, value in saved.items():
-            if value is None:
-                os.environ.pop(name, None)
-            else:
-                os.environ[name] = value
-
-
 class DrivetrainSweep:
     """Results of :func:`drivetrain_speed_sweep`: ``dataset`` (xarray, dims model × speed_rpm [× bearing ×
     harmonic]) and ``resonances`` model → list of (speed [rpm], harmonic, mode [Hz], label, mesh share)."""
@@ -131,16 +86,11 @@ class DrivetrainSweep:
 
 
 def drivetrain_speed_sweep(built, origin: SweepOrigin, speeds: np.ndarray, models: tuple[str, ...],
-                           workers: int | None = None,
-                           progress: Callable[[int], None] | None = None,
-                           processes: bool = True) -> DrivetrainSweep:
+                           progress: Callable[[int], None] | None = None) -> DrivetrainSweep:
     """Sweep the pinion speed [rpm] of a built drivetrain case (a :class:`~thermogear.drivetrain.case_model.
-    CaseDrivetrain` holding ``models``; ``origin`` its case's name, source and document). ``progress(count)`` is
-    called as
-    speeds finish. ``workers`` (default: the cores) processes are started by the "spawn" method, so a script that
-    calls this at its top level needs Python's ``if __name__ == "__main__":`` guard; ``processes=False``
-    computes in this process instead, with its BLAS threads as they are (measured 7× the CPU time on a busy
-    2-core machine)."""
+    CaseDrivetrain` holding ``models``; ``origin`` its case's name, source and document) in this process, in slices
+    of speeds that share a modal basis; ``progress(count)`` as speeds finish. A study of a case (any grid, any
+    scheduler, into a store) is :func:`thermogear.sweep.api.study` (``thermogear.sweep(case, ...)``)."""
     import json
 
     import xarray as xr
@@ -163,22 +113,13 @@ def drivetrain_speed_sweep(built, origin: SweepOrigin, speeds: np.ndarray, model
                               if speeds.min() <= r["speed_rpm"] <= speeds.max()] for model in models}
     bearings = [bearing.name for bearing in built.drivetrains["elastic"].bearings]
     chunks = [speeds[i:i + _SPEEDS_PER_TASK].tolist() for i in range(0, speeds.size, _SPEEDS_PER_TASK)]
-    workers = max(1, min(workers or os.cpu_count() or 1, len(chunks)))
     results: dict[int, list] = {}
-    if not processes:
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")
-            for index, chunk in enumerate(chunks):
-                results[index] = _compute_with(built, models, chunk)
-                if progress is not None:
-                    progress(len(chunk))
-    else:
-        def done(index: int, result: list) -> None:
-            results[index] = result
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        for index, chunk in enumerate(chunks):
+            results[index] = _compute_with(built, models, chunk)
             if progress is not None:
-                progress(len(chunks[index]))
-
-        worker_map(origin, models, _compute_chunk, [(models, chunk) for chunk in chunks], workers, done)
+                progress(len(chunk))
     points = [point for index in range(len(chunks)) for point in results[index]]
     repeats = built.train_repeats  # a train's bearing lines: the mesh harmonics j·L_m of every stage
     lines = sorted({j * repeat for repeat in repeats for j in range(1, section.bearing_harmonics + 1)})

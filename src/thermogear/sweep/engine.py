@@ -1,18 +1,19 @@
 """Running a study on Dask: a local cluster by default, a ``dask.distributed`` scheduler by address, one path.
 
-Every block (chunk) of the study is one task. The driver submits the blocks that the store has not marked done;
-each task computes its block and writes the block's data into the store itself (blocks are whole zarr chunks, so
-workers never write the same file), and the driver writes the block's marker when the task has returned (data
-first, then the marker) and shows a progress bar. Nothing but the warnings travels back, so the driver stays
-idle and the workers have the cores. The tasks are pure functions of (study, block), so where they run does not
-change a bit of the result: threads, a local cluster, a remote scheduler and a plain loop give the same dataset.
+Every block (chunk) of the study is one task of the one executor (:mod:`thermogear.sweep.executor`). The driver
+submits the blocks that the store has not marked done; each task computes its block and returns its arrays, and
+the driver, the store's only writer process, writes them and then the block's marker as each task finishes (data
+first, then the marker) and advances the progress bar; on threads of this process each thread writes the data of
+its own block (whole zarr chunks) and the driver the marker. The tasks are pure functions of (study, block), so where they run
+does not change a bit of the result: threads, a local cluster, a remote scheduler and a plain loop give the same
+dataset.
 
 Schedulers (``scheduler`` argument, ``--scheduler`` on the command line):
 
 * ``None`` / ``"local"``: the local choice: ``"threads"`` where the study runs on the fast path (its kernel
   releases the GIL, and threads start at once and share the per-case tables), ``"processes"`` for one Simulation
   per point (``method="simulation"``, the points the fast path cannot take) or with a ``dashboard``;
-* ``"threads"``: a pool of worker threads in this process (all cores by default). Warnings raised in the workers
+* ``"threads"``: Dask's threaded scheduler in this process (all cores by default). Warnings raised in the workers
   are kept apart per thread (:mod:`thermogear.warning_scope`);
 * ``"processes"``: a ``distributed.LocalCluster`` of worker processes (one thread each, all cores by default),
   started and closed by :func:`run_study` (a few seconds of start-up: worth it for long studies);
@@ -22,8 +23,6 @@ Schedulers (``scheduler`` argument, ``--scheduler`` on the command line):
 
 from __future__ import annotations
 
-import os
-import warnings
 from contextlib import ExitStack, contextmanager
 from functools import cached_property
 from pathlib import Path
@@ -38,20 +37,27 @@ from thermogear.sweep.batch import evaluate_block, fast_path_applies
 from thermogear.sweep.store import ResultStore
 from thermogear.warning_causes import WarningTally, warning_text
 
-__all__ = ["StudyRun", "compute_block", "compute_and_write_block", "local_scheduler", "run_study"]
+__all__ = ["StudyRun", "compute_block", "local_scheduler", "run_study"]
 
 METHODS = ("batch", "simulation")
 
 
-def compute_block(study, block, method: str = "batch"):
-    """One task: the arrays of a block and the warnings raised computing it (run on a worker)."""
+def compute_block(shared: tuple, block):
+    """One task: the arrays of a block and the warnings raised computing it (``shared``: the study and the method;
+    run on a worker, the arrays written by the driver)."""
+    study, method = shared
     return evaluate_block(study, block, method)
 
 
-def compute_and_write_block(study, block, method: str, path: str) -> list[str]:
-    """One task of a Dask run: compute a block, write its data into the store at ``path`` (not its marker: the
-    driver writes it once this returns) and return the warnings raised computing it (run on a worker)."""
-    return _compute_and_store(study, block, method, ResultStore(path, study))
+def compute_and_store_block(shared: tuple, block):
+    """One task on a thread of this process: compute a block and write its data through the driver's store (blocks
+    are whole zarr chunks, so threads never write the same file; the driver marks the block once this returns).
+    The thread that computed a block writes it, so Dask's scheduler thread never holds up the next task while it
+    writes (a driver writing every block cost the two threads a third of their gain)."""
+    study, method, store = shared
+    arrays, messages = evaluate_block(study, block, method)
+    store.write_data(block, arrays)
+    return None, messages
 
 
 class StudyRun:
@@ -94,6 +100,8 @@ def run_study(study, out: str | Path, scheduler: str | None = None, resume: bool
     started, so a study opens no port unless asked. ``progress(total, completed)``: a context manager that yields
     ``advance(points)`` (the command line passes its progress bar; None: no progress shown).
     """
+    from thermogear.sweep.executor import execute
+
     if method not in METHODS:
         raise CaseError("method", method, " | ".join(METHODS), "unknown evaluation method")
     kind = local_scheduler(study, method, dashboard) if scheduler in (None, "", "local") else scheduler
@@ -106,42 +114,29 @@ def run_study(study, out: str | Path, scheduler: str | None = None, resume: bool
     pending = [block for block in blocks if block.number not in done]
     tally = WarningTally()  # once per cause: a friction warning at 10⁵ unit loads is one message
 
-    def marked(block, messages) -> None:  # the block's data are stored: mark it, count its warnings
-        store.mark_done(block)
-        tally.update(messages)
-        if on_block is not None:
-            on_block(block.number)
-
     with ExitStack() as stack:
         advance = stack.enter_context((progress or _no_progress)(
             study.size, sum(block.size for block in blocks if block.number in done)))
-        if pending and kind == "serial":
-            for block in pending:
-                arrays, messages = compute_block(study, block, method)
+        store.open_arrays()
+
+        def stored(index: int, result) -> None:  # data first (here, or by the thread), then the block's marker
+            arrays, messages = result
+            block = pending[index]
+            if arrays is not None:
                 store.write_data(block, arrays)
-                marked(block, messages)
-                advance(block.size)
-        elif pending and kind == "threads":
-            from concurrent.futures import ThreadPoolExecutor, as_completed
+            store.mark_done(block)
+            tally.update(messages)
+            if on_block is not None:
+                on_block(block.number)
+            advance(block.size)
 
-            store.open_arrays()  # opened here, so the workers never touch zarr's warning filters
+        if kind == "threads":  # the workers' warnings are kept apart per thread
             unscoped = stack.enter_context(warning_scope.routed())
-            pool = stack.enter_context(ThreadPoolExecutor(_worker_count(workers), "thermogear-study"))
-            futures = {pool.submit(_compute_and_store, study, block, method, store): block for block in pending}
-            _collect(futures, as_completed, marked, advance)
-            stack.close()  # the pool has finished and the router is gone: its unscoped warnings are final
+            execute(compute_and_store_block, (study, method, store), pending, stored, "threads", workers)
+            stack.close()  # the router is gone: its unscoped warnings are final
             tally.update(warning_text(item) for item in unscoped)
-        elif pending:
-            client = stack.enter_context(_client(kind, workers, dashboard))
-            from distributed import as_completed
-
-            shared = client.scatter(study, broadcast=True, hash=False)
-            futures = {client.submit(compute_and_write_block, shared, block, method, str(store.path), pure=False):
-                       block for block in pending}
-            try:
-                _collect(futures, as_completed, marked, advance)
-            finally:
-                client.cancel(list(futures))
+        else:
+            execute(compute_block, (study, method), pending, stored, kind, workers, dashboard)
     return StudyRun(store, tally.messages(), computed=len(pending), skipped=len(done), path=Path(out))
 
 
@@ -155,57 +150,3 @@ def local_scheduler(study, method: str, dashboard: str | None = None) -> str:
     return "processes"
 
 
-def _worker_count(workers: int | None) -> int:
-    return workers or os.cpu_count() or 1
-
-
-def _compute_and_store(study, block, method: str, store) -> list[str]:
-    """Compute a block and write its data (not its marker) through ``store``; returns its warnings."""
-    arrays, messages = evaluate_block(study, block, method)
-    store.write_data(block, arrays)
-    return messages
-
-
-def _collect(futures: dict, as_completed: Callable, marked: Callable, advance: Callable) -> None:
-    """Mark each block as its task returns (a task's error is raised here: its block stays unmarked); the tasks
-    not yet started are cancelled when one fails or the run is interrupted."""
-    try:
-        for future in as_completed(futures):
-            block = futures.pop(future)
-            marked(block, future.result())
-            advance(block.size)
-    finally:
-        for future in futures:
-            future.cancel()
-
-
-def _client(scheduler: str | None, workers: int | None, dashboard: str | None = None):
-    """A distributed Client: on a new LocalCluster (closed with the client; a dashboard only at ``dashboard``)
-    or on a scheduler address."""
-    from distributed import Client, LocalCluster
-
-    if scheduler == "processes":
-        count = _worker_count(workers)
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")
-            cluster = LocalCluster(n_workers=count, threads_per_worker=1, processes=True, dashboard_address=dashboard)
-        return _OwnedClient(Client(cluster), cluster)
-    if workers is not None:
-        raise CaseError("workers", workers, "only with a local scheduler (threads or processes)",
-                        "a remote scheduler has its own workers")
-    return Client(scheduler, timeout="30s")
-
-
-class _OwnedClient:
-    """Context manager closing a client and the local cluster it was started on."""
-
-    def __init__(self, client, cluster) -> None:
-        self.client = client
-        self.cluster = cluster
-
-    def __enter__(self):
-        return self.client
-
-    def __exit__(self, *exc) -> None:
-        self.client.close()
-        self.cluster.close()

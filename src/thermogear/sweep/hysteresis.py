@@ -39,7 +39,9 @@ def hysteresis_bands(dataset, variable: str = "dte_peak_to_peak", tolerance: flo
     the larger), in ascending order (:func:`difference_bands`); ``band_rpm``: the widest of them; ``differ``:
     whether there is any. Per sweep direction its jumps: the changes of ``variable`` between neighbouring speeds
     larger than ``jump`` (relative to the smaller), each with the speed midway between them, in the order the
-    sweep meets them, and whether the amplitude rises or falls there (a smooth branch has none). ``select``:
+    sweep meets them, and whether the amplitude rises or falls there (a smooth branch has none); a jump lies beside
+    a speed where the branches differ, and a change as large where they coincide (both branches as steep between
+    two grid speeds) is listed apart as ``{direction}_sweep_steep_changes``, never as a jump. ``select``:
     values of the other parameters of a grid (their first values by default). Empty without a speed axis or
     without both directions."""
     if "speed_rpm" not in dataset.dims or list(dataset["direction"].values) != ["up", "down"]:
@@ -56,20 +58,27 @@ def hysteresis_bands(dataset, variable: str = "dte_peak_to_peak", tolerance: flo
         branches = {d: np.asarray(selected.sel(direction=d).transpose("speed_rpm").values, dtype=float)
                     for d in ("up", "down")}
         bands = difference_bands(speeds, branches["up"], branches["down"], tolerance)
+        with np.errstate(invalid="ignore"):
+            differ = np.abs(branches["up"] - branches["down"]) > tolerance * np.maximum(np.abs(branches["up"]),
+                                                                                         np.abs(branches["down"]))
         entry: dict[str, Any] = {"differ": bool(bands), "bands_rpm": bands}
         if bands:
             entry["band_rpm"] = max(bands, key=lambda band: band[1] - band[0])
         for way, values in branches.items():
             if way == "down":  # the down sweep visits the speeds from the highest
-                values, order = values[::-1], speeds[::-1]
+                values, order, apart = values[::-1], speeds[::-1], differ[::-1]
             else:
-                order = speeds
+                order, apart = speeds, differ
             smaller = np.maximum(np.minimum(np.abs(values[:-1]), np.abs(values[1:])), 1e-300)
             change = np.abs(np.diff(values)) / smaller
-            jumps = np.flatnonzero(np.nan_to_num(change) > jump)
-            entry[f"{way}_sweep_jumps"] = [
-                {"speed_rpm": float(0.5 * (order[i] + order[i + 1])),
-                 "amplitude": "rises" if values[i + 1] > values[i] else "falls", "ratio": float(change[i] + 1.0)}
-                for i in jumps]
+            steps = np.flatnonzero(np.nan_to_num(change) > jump)
+            listed = [{"speed_rpm": float(0.5 * (order[i] + order[i + 1])),
+                       "amplitude": "rises" if values[i + 1] > values[i] else "falls", "ratio": float(change[i] + 1.0)}
+                      for i in steps]
+            # a jump is where this branch leaves the other's: beside a speed where the two differ. Where both
+            # change as steeply at the same speeds, the branches coincide: a steep slope between grid speeds
+            jumping = [bool(apart[i] or apart[i + 1]) for i in steps]
+            entry[f"{way}_sweep_jumps"] = [item for item, kept in zip(listed, jumping) if kept]
+            entry[f"{way}_sweep_steep_changes"] = [item for item, kept in zip(listed, jumping) if not kept]
         result[str(model)] = entry
     return result

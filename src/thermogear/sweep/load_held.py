@@ -9,10 +9,36 @@ attributes, the command's summary and JSON, the plot and the CSV export all name
 
 from __future__ import annotations
 
-__all__ = ["study_load_held"]
+import math
+from typing import Any
+
+__all__ = ["HOLDS", "fixed_load_changes", "study_load_held"]
 
 _POWER, _TORQUE, _STAGE, _SPEED = ("operating.power_kw", "operating.torque_nm", "operating.fzg_load_stage",
                                    "operating.speed_rpm")
+
+
+#: The loads a speed sweep can keep from speed to speed: the pinion torque (default) or the power.
+HOLDS = ("torque", "power")
+
+
+def fixed_load_changes(case, parameters, hold: str = "torque") -> tuple[tuple[str, Any], ...]:
+    """Changes applied to every point: the load a speed sweep keeps. ``hold = "torque"`` (default): a case whose
+    load is a power is turned into the torque of that power at the case's speed; ``"power"``: a case whose load is
+    a torque (or an FZG load stage) is turned into the power of that torque at the case's speed. Nothing changes
+    where the study varies a load itself, or not the speed."""
+    keys = {p.key for p in parameters}
+    load_keys = {"operating.torque_nm", "operating.power_kw", "operating.fzg_load_stage"}
+    if "operating.speed_rpm" not in keys or keys & load_keys:
+        return ()
+    operating = case.document.get("operating", {})
+    point = case.operating_point
+    if hold == "torque" and operating.get("power_kw") is not None:
+        return (("operating.power_kw", None), ("operating.torque_nm", float(point.torque)))
+    if hold == "power" and operating.get("power_kw") is None:
+        power_kw = float(point.torque) * 2.0 * math.pi * float(point.speed_rpm) / 60.0 / 1000.0
+        return (("operating.fzg_load_stage", None), ("operating.torque_nm", None), ("operating.power_kw", power_kw))
+    return ()
 
 
 def study_load_held(study) -> tuple[str, str]:
@@ -29,12 +55,16 @@ def study_load_held(study) -> tuple[str, str]:
         return "constant torque", "fzg_load_stage is varied: each point holds the torque of its load stage"
     operating = study.case.operating_point
     torque = float(operating.torque_at(operating.speed_rpm))
+    power_kw = torque * operating.speed_rpm * 3.141592653589793 / 30.0 / 1000.0
     if _SPEED in keys:
+        if getattr(study, "hold", "torque") == "power":
+            return "constant power", (f"--hold power: every speed runs at the case's power at {operating.speed_rpm:g} "
+                                      f"rpm, {power_kw:.4g} kW (the torque P/ω1 falls with speed)")
         if operating.constant_power:
             return "constant torque", (f"the case gives a power; the speed sweep holds its torque at "
-                                       f"{operating.speed_rpm:g} rpm, {torque:.4g} N·m; vary power_kw with the speed "
-                                       "for constant power")
-        return "constant torque", f"the case's torque, {torque:.4g} N·m, at every speed"
+                                       f"{operating.speed_rpm:g} rpm, {torque:.4g} N·m (--hold power keeps the "
+                                       "power instead)")
+        return "constant torque", f"the case's torque, {torque:.4g} N·m, at every speed (--hold power keeps the power)"
     if operating.constant_power:
         return "constant power", f"the case's power at its one speed {operating.speed_rpm:g} rpm ({torque:.4g} N·m)"
     return "constant torque", f"the case's torque, {torque:.4g} N·m"

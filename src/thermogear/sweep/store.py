@@ -109,26 +109,10 @@ class ResultStore:
     def create(cls, path: str | Path, study, overwrite: bool = False) -> "ResultStore":
         """A new store for ``study``; an existing path is refused unless ``overwrite``."""
         target = resolve_output(path)
-        if target.exists():
-            if not overwrite:
-                raise CaseError("out", str(target), "a path that does not exist yet (or --resume / --overwrite)",
-                                "the result store exists; resume it or overwrite it explicitly")
-            require_owned(target, _KIND, "--out", "overwritten")
-            require_no_foreign_entries(target)  # a user's notes.txt in the store is never deleted
-            shutil.rmtree(target)
-        try:  # the folder appears with its marker in it (renamed into place): a kill never leaves it unmarked
-            target.parent.mkdir(parents=True, exist_ok=True)
-            staging = Path(tempfile.mkdtemp(prefix=f".{target.name}.creating-", dir=target.parent))
-            try:
-                write_marker(staging, _KIND)
-                os.chmod(staging, 0o777 & ~_umask())
-                os.rename(staging, target)
-            finally:
-                if staging.exists():
-                    shutil.rmtree(staging, ignore_errors=True)
-        except OSError as error:
-            raise CaseError("--out", str(target), "a folder thermogear can create and write",
-                            f"cannot write there: {error.strerror or error}") from None
+        if target.exists() and not overwrite:
+            raise CaseError("out", str(target), "a path that does not exist yet (or --resume / --overwrite)",
+                            "the result store exists; resume it or overwrite it explicitly")
+        create_owned_folder(target, target.exists(), _KIND)
         with _quiet_zarr():
             _write_layout(target, study)
         return cls(target, study)
@@ -223,6 +207,29 @@ class ResultStore:
         return open_result(self.path, keep_record=keep_record, lazy=lazy)
 
 
+def create_owned_folder(target: Path, replace: bool, kind: str = _KIND) -> None:
+    """Create the folder of a store with its ownership marker already in it (a hidden sibling renamed into place:
+    a kill never leaves it unmarked); ``replace``: the existing folder is deleted first, only when thermogear wrote
+    it as ``kind`` and it holds nothing else at any depth (a user's notes.txt is never deleted)."""
+    if replace:
+        require_owned(target, kind, "--out", "overwritten")
+        require_no_foreign_entries(target)
+        shutil.rmtree(target)
+    try:
+        target.parent.mkdir(parents=True, exist_ok=True)
+        staging = Path(tempfile.mkdtemp(prefix=f".{target.name}.creating-", dir=target.parent))
+        try:
+            write_marker(staging, kind)
+            os.chmod(staging, 0o777 & ~_umask())
+            os.rename(staging, target)
+        finally:
+            if staging.exists():
+                shutil.rmtree(staging, ignore_errors=True)
+    except OSError as error:
+        raise CaseError("--out", str(target), "a folder thermogear can create and write",
+                        f"cannot write there: {error.strerror or error}") from None
+
+
 def _write_layout(target: Path, study) -> None:
     """The arrays (data unwritten: chunks read as the fill value until a block writes them), the coordinates and
     the attributes of a new store, in xarray's zarr v3 conventions (``dimension_names``; a float array's fill value
@@ -292,6 +299,11 @@ def study_description(path: str | Path) -> dict[str, Any] | None:
             attrs = dict(zarr.open_group(str(target), mode="r").attrs)
     except (FileNotFoundError, ValueError, KeyError, OSError, TypeError):
         return None
-    if not attrs.get(_INITIALIZED) or "study_json" not in attrs:
+    if not attrs.get(_INITIALIZED):
         return None
-    return json.loads(attrs["study_json"])
+    if "study_json" in attrs:
+        return json.loads(attrs["study_json"])
+    if "study_definition" in attrs:  # a task store (drivetrain, branches): the study's own definition in it
+        stored = json.loads(attrs["study_definition"])
+        return stored if "parameters" in stored else None
+    return None

@@ -30,8 +30,9 @@ import pydantic
 
 from thermogear.errors import CaseError, JammingError, closest_key
 from thermogear.schema.values import MAX_POINTS, parse_values
+from thermogear.sweep.load_held import HOLDS, fixed_load_changes
 
-__all__ = ["ALIASES", "Block", "Parameter", "Study", "load_study_case", "parse_values", "resolve_key"]
+__all__ = ["ALIASES", "HOLDS", "Block", "Parameter", "Study", "load_study_case", "parse_values", "resolve_key"]
 
 #: Short names of the parameters engineers sweep most, and the case-file keys they set.
 ALIASES: dict[str, str] = {
@@ -182,14 +183,18 @@ class Study:
     models: tuple[str, ...] = ("elastic", "thermal")
     chunk_points: int = DEFAULT_CHUNK_POINTS
     fixed_changes: tuple[tuple[str, Any], ...] = ()
+    hold: str = "torque"
     _flank_table: tuple[float, ...] | None = field(default=None, repr=False, compare=False)
 
     # ------------------------------------------------------------------------------ construction
     @classmethod
     def define(cls, case, vary: dict[str, Any] | list[str], model: str = "both",
-               chunk_points: int | None = None) -> "Study":
+               chunk_points: int | None = None, hold: str = "torque") -> "Study":
         """A checked study. ``vary``: ``{"speed_rpm": "500:12000:240", ...}`` or ``["speed_rpm=500:12000:240"]``
-        (the command-line form). ``model``: ``"elastic"``, ``"thermal"`` or ``"both"``."""
+        (the command-line form). ``model``: ``"elastic"``, ``"thermal"`` or ``"both"``. ``hold``: the load a speed
+        sweep keeps, ``"torque"`` (default) or ``"power"`` (:data:`HOLDS`)."""
+        if hold not in HOLDS:
+            raise CaseError("--hold", hold, " | ".join(HOLDS), "the load a speed sweep keeps from speed to speed")
         if model not in MODEL_CHOICES:
             raise CaseError("model", model, " | ".join(MODEL_CHOICES), "unknown model choice")
         models = ("elastic", "thermal") if model == "both" else (model,)
@@ -231,8 +236,7 @@ class Study:
         if any(p.key == FLANK_OFFSET_KEY for p in parameters):
             flank = _flank_table_of(case.temperature)
         study = cls(case=case, parameters=tuple(parameters), models=models, chunk_points=chunk,
-                    fixed_changes=_fixed_changes(case.document.get("operating", {}),
-                                                  case.operating_point.torque, parameters), _flank_table=flank)
+                    fixed_changes=fixed_load_changes(case, parameters, hold), hold=hold, _flank_table=flank)
         study.check_values()
         return study
 
@@ -242,7 +246,8 @@ class Study:
         vary = {p["name"]: list(p["values"]) for p in description["parameters"]}
         models = tuple(description["models"])
         model = "both" if len(models) == 2 else models[0]
-        study = cls.define(case, vary, model=model, chunk_points=description["chunk_points"])
+        study = cls.define(case, vary, model=model, chunk_points=description["chunk_points"],
+                           hold=description.get("hold", "torque"))
         return study
 
     def check_values(self) -> None:
@@ -330,19 +335,9 @@ class Study:
             "models": list(self.models),
             "chunk_points": self.chunk_points,
             "fixed_changes": {key: value for key, value in self.fixed_changes},
+            **({"hold": self.hold} if self.hold != "torque" else {}),
             "case_document_sha256": case_fingerprint(self.case.document),
         }
-
-
-def _fixed_changes(operating: dict, torque: float, parameters) -> tuple[tuple[str, Any], ...]:
-    """Changes applied to every point. A speed sweep runs at constant torque: a case whose load is a power is
-    turned into the torque of that power at the case's speed (sweeping speed at constant power would change the
-    load with speed; vary ``power_kw`` together with the speed to study that)."""
-    keys = {p.key for p in parameters}
-    load_keys = {"operating.torque_nm", "operating.power_kw", "operating.fzg_load_stage"}
-    if "operating.speed_rpm" in keys and not keys & load_keys and operating.get("power_kw") is not None:
-        return (("operating.power_kw", None), ("operating.torque_nm", float(torque)))
-    return ()
 
 
 def case_fingerprint(document: dict) -> str:
