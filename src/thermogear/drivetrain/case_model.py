@@ -177,7 +177,19 @@ class CaseDrivetrain:
         return drivetrain_backlash_response(self.assembled(model), state, initial_state,
                                             substeps=backlash_substeps(state.grid.nodes.size - 1),
                                             samples_per_piece=SAMPLES_PER_PIECE,
-                                            cutoff_hz=self.section.response_cutoff_hz)
+                                            cutoff_hz=self.section.response_cutoff_hz,
+                                            startup_periods=self.dynamics.transient_periods)
+
+    def stable_orbits(self, model: str, starts: int = 16, speed_rpm: float | None = None, progress=None):
+        """Every stable orbit of the backlash drivetrain that ``starts`` starts find at a pinion speed [rpm]
+        (default the case's), each run in over the case's ``dynamics.transient_periods`` (a
+        :class:`~thermogear.drivetrain.backlash_orbits.DrivetrainOrbitCensus`), solved as :meth:`backlash_response`."""
+        from thermogear.drivetrain.backlash_orbits import drivetrain_stable_orbits
+
+        state = self.models[model].state(speed_rpm=speed_rpm, points_per_period=self.dynamics.points_per_period)
+        return drivetrain_stable_orbits(self.assembled(model), state, starts, self.dynamics.transient_periods,
+                                        backlash_substeps(state.grid.nodes.size - 1), SAMPLES_PER_PIECE,
+                                        self.section.response_cutoff_hz, progress=progress)
 
     def transient(self, model: str) -> DrivetrainTransient:
         """The motion from rest over the case's ``dynamics.transient_periods`` mesh periods, with the backlash mesh
@@ -325,8 +337,11 @@ def _backlash_summary(response: DrivetrainBacklashResponse, harmonics: int) -> d
         forces = {name: {"mean_radial_n": None, "dynamic_rms_n": None,
                          "harmonic_hz": [j * frequency for j in range(1, harmonics + 1)],
                          "harmonic_amplitude_n": [None] * harmonics} for name in response.bearing_names}
+    startup = metrics.get("startup") or {}
     return {"kv": shown("kv"), "dte_rms_um": shown("dte_rms", 1e6), "dte_peak_to_peak_um": shown("dte_peak_to_peak",
                                                                                                 1e6),
+            "reached_from": startup.get("reached_from"), "branch": startup.get("branch"),
+            "coexisting_orbits": startup.get("coexisting", []), "notes": list(response.notes),
             "largest_floquet_multiplier_abs": float(multipliers.max()) if found and multipliers.size else None,
             "stable": response.stable, "converged": bool(found), "failure": response.failure,
             "contact_loss_fraction": shown("contact_loss_fraction"), "back_side_contact":
@@ -380,6 +395,7 @@ def drivetrain_results(built: CaseDrivetrain, models: tuple[str, ...] = (ELASTIC
             response = built.backlash_response(model) if built.backlash_mesh else built.response(model)
             summary = (_backlash_summary if built.backlash_mesh else _response_summary)(response,
                                                                                       section.bearing_harmonics)
+            result["notes"].extend(f"drivetrain, {model} model: {note}" for note in summary.get("notes", ()))
             if series is not None:
                 from thermogear.drivetrain.response_dataset import response_dataset_parts
 

@@ -27,12 +27,14 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from thermogear.dynamics.backlash_pieces import PieceExponentials, contact_state_system, exponential_action
 from thermogear.dynamics.periodic_ndof import PiecewiseLinearSystem, periodic_response
 from thermogear.dynamics.problem import checked_array
-from thermogear.errors import ProblemError
+from thermogear.errors import ModelLimitError, ProblemError
 
 __all__ = ["BACK_CONTACT", "DRIVING_CONTACT", "FREE_FLIGHT", "BacklashSystem", "BacklashOrbitNDOF", "DeadZone",
-           "backlash_flow_ndof", "backlash_periodic_orbit", "odd_crossings"]
+           "backlash_flow_ndof", "backlash_periodic_orbit", "odd_crossings", "piece_exponentials",
+           "switch_free_record"]
 
 DRIVING_CONTACT, FREE_FLIGHT, BACK_CONTACT = 0, 1, 2  # the mesh's contact regions (driving flanks, none, back flanks)
 _DRIVE, _FREE, _BACK = DRIVING_CONTACT, FREE_FLIGHT, BACK_CONTACT
@@ -116,6 +118,39 @@ class BacklashSystem:
         matrix[n:2 * n, 2 * n] = mass_inverse @ force
         return matrix
 
+    def keeps_state(self, states: np.ndarray, piece, key: tuple) -> bool:
+        """Whether every state of ``states`` (k, ≥ 2n) on a piece (or, an array of k, each on its own) is in the
+        contact state ``key`` (mesh region, dead zone sides), by the rules of :meth:`region` and
+        :meth:`DeadZone.side`, for all rows at once."""
+        return self.keeps_projected_state(states[:, :2 * self.linear.size] @ self.state_functionals().T, piece, key)
+
+    def state_functionals(self) -> np.ndarray:
+        """(2 + 2·zones, 2n): the rows that give g + e_j = wᵀq, ġ = wᵀq̇ and each dead zone's u = vᵀq and u̇ of a
+        state (for :meth:`keeps_projected_state`)."""
+        n = self.linear.size
+        rows = np.zeros((2 + 2 * len(self.dead_zones), 2 * n))
+        rows[0, :n], rows[1, n:] = self.mesh_vector, self.mesh_vector
+        for index, zone in enumerate(self.dead_zones):
+            rows[2 + 2 * index, :n], rows[3 + 2 * index, n:] = zone.vector, zone.vector
+        return rows
+
+    def keeps_projected_state(self, values: np.ndarray, piece, key: tuple) -> bool:
+        """:meth:`keeps_state` from the states' :meth:`state_functionals` ``values`` (k, 2 + 2·zones)."""
+        gap, rate = values[:, 0] - self.deviation[piece], values[:, 1]
+        region, sides = key
+        driving = (gap > 0.0) | ((gap == 0.0) & (rate > 0.0))
+        back = (gap < -self.backlash) | ((gap == -self.backlash) & (rate < 0.0))
+        inside = driving if region == _DRIVE else back if region == _BACK else ~(driving | back)
+        if not np.all(inside):
+            return False
+        for index, (zone, side) in enumerate(zip(self.dead_zones, sides)):
+            value, speed = values[:, 2 + 2 * index], values[:, 3 + 2 * index]
+            above = (value > zone.clearance) | ((value == zone.clearance) & (speed > 0.0))
+            below = (value < -zone.clearance) | ((value == -zone.clearance) & (speed < 0.0))
+            if not np.all(above if side > 0 else below if side < 0 else ~(above | below)):
+                return False
+        return True
+
     def sides(self, state: np.ndarray) -> tuple[int, ...]:
         """The side of every dead zone (:meth:`DeadZone.side`)."""
         return tuple(zone.side(state, self.linear.size) for zone in self.dead_zones)
@@ -139,27 +174,23 @@ def backlash_flow_ndof(system: BacklashSystem, state: np.ndarray, substeps: int 
     "free_flight_time", "back_contact_time", "zone_switches", "crossings", "time", "states", "segments"} (the last
     three filled when ``record``: the state after every segment and the (piece, region, dead-zone sides) that held on
     it; a segment may be empty, h = 0, where a switch was found at its start). ``cache``: a dict kept between calls
-    on the same system (the exponentials of each piece's contact states are computed once per ``substeps``). A piece
-    crossed without a switch enters the monodromy as one cached power of its sub-step exponential."""
+    on the same system (the pieces' exponentials of each contact state, :class:`~thermogear.dynamics.backlash_pieces.
+    PieceExponentials`, are formed once per ``substeps``, in batches).
+
+    Each piece is first stepped through its ``substeps`` sub-steps in the contact state it starts in and the states
+    checked at once; where none changed state, that is the piece's motion (the same sub-step ends the switch search
+    looks at) and it enters the monodromy as the whole piece's transition. Otherwise the sub-steps are taken one by
+    one from the piece's start and every switch is located (module docstring)."""
     from scipy.linalg import expm
 
     linear = system.linear
     n = linear.size
-    inverse = np.linalg.inv(linear.mass)
+    cache = {} if cache is None else cache
+    pieces = piece_exponentials(system, substeps, cache)
     z = np.append(np.asarray(state, dtype=float), 1.0)
     total = np.eye(2 * n + 1) if monodromy else None
-    cache = {} if cache is None else cache
     info = {"switches": 0, "free_flight_time": 0.0, "back_contact_time": 0.0, "zone_switches": 0, "time": [0.0],
             "states": [z[:-1]], "segments": [], "crossings": {}}
-
-    def exponentials(piece: int, key: tuple) -> tuple[np.ndarray, np.ndarray]:
-        """(augmented matrix, its exponential over one sub-step) of a piece in one contact state, cached."""
-        if (piece, key, substeps) not in cache:
-            matrix = system.region_matrix(piece, key[0], inverse, key[1])
-            width = linear.nodes[piece + 1] - linear.nodes[piece]
-            cache[(piece, key, substeps)] = (matrix, expm(matrix * (width / substeps)))
-        return cache[(piece, key, substeps)]
-
     key = None
     for piece in range(linear.nodes.size - 1):
         start, stop = linear.nodes[piece], linear.nodes[piece + 1]
@@ -167,10 +198,32 @@ def backlash_flow_ndof(system: BacklashSystem, state: np.ndarray, substeps: int 
         previous, key = key, (system.region(z, piece), system.sides(z))  # at a node the deviation steps: afresh
         if previous is not None:
             _count_crossings(info["crossings"], previous, key)
-        first_key, uniform, product = key, True, []
+        full_step = pieces.step(piece, key)
+        states = np.empty((substeps, 2 * n + 1))
+        trial = z
+        for index in range(substeps):
+            trial = full_step @ trial
+            states[index] = trial
+        if system.keeps_state(states, piece, key):  # the whole piece in one contact state
+            if key[0] == _FREE:
+                info["free_flight_time"] += stop - start
+            elif key[0] == _BACK:
+                info["back_contact_time"] += stop - start
+            if record:
+                for index in range(substeps):
+                    info["time"].append(start + (index + 1) * step if index + 1 < substeps else stop)
+                    info["states"].append(states[index, :-1])
+                    info["segments"].append((piece, key[0], key[1]))
+            z = states[-1]
+            if monodromy:
+                total = pieces.whole(piece, key) @ total
+            if not np.all(np.isfinite(z)):
+                raise ProblemError("state", "not finite", "a bounded motion", "the coefficients are out of range")
+            continue
+        product = []
         t = start
         while t < stop - 1e-12 * (stop - start):
-            matrix, full_step = exponentials(piece, key)
+            matrix, full_step = pieces.matrix(piece, key), pieces.step(piece, key)
             h = min(step, stop - t)
             trial = (full_step if h == step else expm(matrix * h)) @ z
             after = (system.region(trial, piece), system.sides(trial))
@@ -183,7 +236,6 @@ def backlash_flow_ndof(system: BacklashSystem, state: np.ndarray, substeps: int 
                     _count_crossings(info["crossings"], key, following)
             if h > 0.0:
                 segment = full_step if h == step else expm(matrix * h)
-                uniform = uniform and h == step and key == first_key
                 if monodromy:
                     product.append(segment)
                 z = segment @ z
@@ -192,11 +244,8 @@ def backlash_flow_ndof(system: BacklashSystem, state: np.ndarray, substeps: int 
                 elif key[0] == _BACK:
                     info["back_contact_time"] += h
                 t += h
-            if zone is not None:  # the dead zone's dashpot starts or stops: the vector field jumps
-                uniform = False
-                if monodromy:
-                    product.append(_saltation(matrix, exponentials(piece, following)[0],
-                                              system.dead_zones[zone].vector, z))
+            if zone is not None and monodromy:  # the dead zone's dashpot starts or stops: the vector field jumps
+                product.append(_saltation(matrix, pieces.matrix(piece, following), system.dead_zones[zone].vector, z))
             if record:
                 info["time"].append(t)
                 info["states"].append(z[:-1])
@@ -205,22 +254,19 @@ def backlash_flow_ndof(system: BacklashSystem, state: np.ndarray, substeps: int 
             if not np.all(np.isfinite(z)):
                 raise ProblemError("state", "not finite", "a bounded motion", "the coefficients are out of range")
         if monodromy:
-            total = _piece_product(cache, (piece, first_key, substeps), product, uniform) @ total
+            for matrix in product:
+                total = matrix @ total
     _count_crossings(info["crossings"], key, (system.region(z, 0), system.sides(z)))  # the period's end node
     return z[:-1], None if total is None else total[:-1, :-1], info
 
 
-def _piece_product(cache: dict, entry: tuple, product: list, uniform: bool) -> np.ndarray:
-    """The transition over one piece: where one contact state held throughout in full sub-steps, the cached power
-    of its sub-step exponential (exact: the same linear flow), else the product of its segments and saltations."""
-    if uniform and product:
-        if ("piece", *entry) not in cache:
-            cache[("piece", *entry)] = np.linalg.matrix_power(cache[entry][1], len(product))
-        return cache[("piece", *entry)]
-    result = np.eye(cache[entry][0].shape[0])
-    for matrix in product:
-        result = matrix @ result
-    return result
+def piece_exponentials(system: BacklashSystem, substeps: int, cache: dict) -> PieceExponentials:
+    """The :class:`~thermogear.dynamics.backlash_pieces.PieceExponentials` of ``system`` with ``substeps``
+    sub-steps per piece, kept in ``cache`` (a dict kept between calls on the same system)."""
+    entry = ("pieces", int(substeps))
+    if entry not in cache:
+        cache[entry] = PieceExponentials(system, int(substeps), np.linalg.inv(system.linear.mass))
+    return cache[entry]
 
 
 def _count_crossings(counts: dict, before: tuple, after: tuple) -> None:
@@ -251,7 +297,6 @@ def _first_switch(system: BacklashSystem, piece: int, key: tuple, after: tuple, 
     mesh, 1 when a crossing was located by a sign change, whether its instant is known at all — on the boundary
     already counts). Without a crossing found (a double crossing or a boundary state) the step is taken whole and
     the region of the first changed element moves on, as for one element."""
-    from scipy.linalg import expm
     from scipy.optimize import brentq
 
     n = system.linear.size
@@ -271,7 +316,7 @@ def _first_switch(system: BacklashSystem, piece: int, key: tuple, after: tuple, 
     best = None
     for vector, boundary, following, index in candidates:
         def distance(s, m=matrix, v=vector, b=boundary):
-            return v @ (expm(m * s) @ z)[:n] - b
+            return v @ exponential_action(m, z, s)[:n] - b
 
         low, high = distance(0.0), distance(h)
         if low * high < 0.0:
@@ -341,8 +386,12 @@ def backlash_periodic_orbit(system: BacklashSystem, initial_state: np.ndarray | 
     same system (e.g. its sampling).
     """
     cache = {} if cache is None else cache
-    state = (periodic_response(system.linear, 1).initial_state if initial_state is None
-             else np.asarray(initial_state, dtype=float))
+    if initial_state is None:
+        state, orbit = _switch_free_orbit(system, int(substeps), tolerance, cache)
+        if orbit is not None:
+            return orbit
+    else:
+        state = np.asarray(initial_state, dtype=float)
     steps = int(substeps)
     while True:
         orbit, crossings = _shoot(system, state, steps, tolerance, max_iterations, cache)
@@ -355,6 +404,61 @@ def backlash_periodic_orbit(system: BacklashSystem, initial_state: np.ndarray | 
                 f"boundaries crossed an odd number of times per period ({', '.join(map(str, odd))}) with "
                 f"{steps} sub-steps per piece: a switch is missed, the point is no closed orbit"))
         state, steps = orbit.initial_state, 2 * steps
+
+
+def _switch_free_orbit(system: BacklashSystem, substeps: int, tolerance: float, cache: dict
+                       ) -> tuple[np.ndarray, BacklashOrbitNDOF | None]:
+    """(the linear periodic state, the orbit where it needs no shooting, else None).
+
+    The linear periodic state (every element in contact, no clearance) starts the shooting. Where its contact state
+    (driving flanks, each dead zone's side) gives a periodic orbit of that state's own linear system (with the
+    clearances' constant forces) that keeps the state at every sub-step end — the instants at which the flow looks
+    for switches — the flow from it never switches: it is a closed orbit of the backlash system, and its monodromy is
+    that system's. So it is returned without a flow: one periodic solution of the contact state's system
+    (:func:`~thermogear.dynamics.periodic_ndof.periodic_response`, all pieces batched) instead of Newton's flows of
+    the whole period with their monodromy products. Its sub-step states are kept in ``cache`` for the sampling
+    (:func:`switch_free_record`)."""
+    response = periodic_response(system.linear, substeps)
+    start = response.initial_state
+    key = (system.region(start, 0), system.sides(start))
+    if key[0] != _DRIVE:
+        return start, None
+    if any(zone.clearance > 0.0 for zone in system.dead_zones):  # the clearances' forces: another system
+        try:
+            response = periodic_response(contact_state_system(system, key), substeps)
+        except ModelLimitError:
+            return start, None
+    states = np.hstack([response.displacement, response.velocity])
+    pieces = system.linear.nodes.size - 1
+    rows = np.arange(states.shape[0])
+    # each sub-step end on its own piece (as the flow checks it) and each piece's start on the new piece
+    if not (system.keeps_state(states[1:], (rows[1:] - 1) // substeps, key)
+            and system.keeps_state(states[:-1], rows[:-1] // substeps, key)):
+        return start, None
+    n = system.linear.size
+    initial = response.initial_state
+    scale = np.concatenate([np.full(n, max(np.abs(initial[:n]).max(), 1e-300)),
+                            np.full(n, max(np.abs(initial[n:]).max(), 1e-300))])
+    residual = float(np.abs((states[-1] - states[0]) / scale).max())
+    if residual > tolerance:
+        return start, None
+    cache[("switch-free orbit", substeps)] = (initial, states, response.time, key, pieces)
+    orbit = BacklashOrbitNDOF(initial, response.multipliers, True, residual, 0, 0, 0.0, 0.0, substeps=substeps)
+    return initial, orbit
+
+
+def switch_free_record(cache: dict, state: np.ndarray, substeps: int) -> tuple[np.ndarray, dict] | None:
+    """(end state, the record of :func:`backlash_flow_ndof`) of one period from ``state`` where it is the orbit
+    :func:`backlash_periodic_orbit` found without switches (its sub-step states, kept in ``cache``), else None."""
+    entry = cache.get(("switch-free orbit", int(substeps)))
+    if entry is None or not np.array_equal(entry[0], state):
+        return None
+    initial, states, time, key, pieces = entry
+    rows = np.arange(1, states.shape[0])
+    info = {"switches": 0, "free_flight_time": 0.0, "back_contact_time": 0.0, "zone_switches": 0,
+            "time": list(time), "states": list(states), "crossings": {},
+            "segments": [(int(piece), key[0], key[1]) for piece in (rows - 1) // int(substeps)]}
+    return states[-1], info
 
 
 def _shoot(system: BacklashSystem, state: np.ndarray, substeps: int, tolerance: float, max_iterations: int,
