@@ -83,3 +83,28 @@ def test_multi_start_search_lists_both_orbits_with_their_basin_shares(coexisting
     low = min(census.orbits, key=lambda item: item.orbit.free_flight_time)
     assert np.abs(low.orbit.initial_state - reference.initial_state).max() < 1e-6 * np.abs(
         reference.initial_state).max()
+
+
+@pytest.mark.parametrize("backlash", [True, False])
+def test_motion_from_rest_on_the_modal_cut_off(backlash):
+    # `run --method transient` solves on the section's cut-off, as the periodic orbit: with a cut-off above every
+    # mode the basis spans every DOF and the motion from rest equals the one on every DOF to rounding (1e-9 of the
+    # DTE's scale); with a low cut-off (2 kHz: the low modes and the static corrections) it stays within the
+    # reduction's error, 1e-2 of the DTE's scale
+    from thermogear.drivetrain.transient_response import drivetrain_transient
+
+    assembled = _rotor()
+    state = _state(1000.0)  # far below the band of contact loss
+    full = drivetrain_transient(assembled, state, 6, backlash=backlash, samples_per_piece=4, substeps=8)
+    scale = np.abs(full.transmission_error).max()
+    nodes = state.grid.nodes  # the 4 samples of each of the 3 pieces of 6 periods
+    grid = ((nodes[:-1, None] + np.diff(nodes)[:, None] * np.arange(4) / 4).ravel()[None, :]
+            + state.period * np.arange(6)[:, None]).ravel()
+    for cutoff, tolerance in ((1e7, 1e-9), (2e3, 1e-2)):
+        cut = drivetrain_transient(assembled, state, 6, backlash=backlash, samples_per_piece=4, substeps=8,
+                                   cutoff_hz=cutoff)
+        for time in grid:  # the grid's samples (extrema and switch instants may move by rounding)
+            mine = np.flatnonzero(np.abs(cut.time - time) <= 1e-12 * state.period)
+            theirs = np.flatnonzero(np.abs(full.time - time) <= 1e-12 * state.period)
+            assert mine.size and theirs.size
+            assert abs(cut.transmission_error[mine[-1]] - full.transmission_error[theirs[-1]]) < tolerance * scale

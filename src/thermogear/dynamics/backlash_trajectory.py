@@ -20,7 +20,7 @@ import numpy as np
 from thermogear.dynamics.backlash_ndof import (BACK_CONTACT, DRIVING_CONTACT, FREE_FLIGHT, BacklashSystem,
                                                backlash_flow_ndof, piece_exponentials, switch_free_record)
 from thermogear.dynamics.backlash_pieces import exponential_action
-from thermogear.dynamics.periodic_ndof import PiecewiseLinearSystem
+from thermogear.dynamics.periodic_ndof import PiecewiseLinearSystem, piece_steps
 from thermogear.errors import ProblemError
 
 __all__ = ["BacklashTrajectory", "backlash_trajectory", "linear_trajectory"]
@@ -195,15 +195,12 @@ def linear_trajectory(system: PiecewiseLinearSystem, state: np.ndarray, periods:
     ``periods`` periods, exact at ``samples_per_piece`` equal steps per piece and the end (each step the exponential
     of the piece's augmented matrix); in the form of :func:`backlash_trajectory`, region driving contact throughout
     and no dead zone."""
-    from scipy.linalg import expm
-
     for key, value in (("periods", periods), ("samples_per_piece", samples_per_piece)):
         if isinstance(value, bool) or int(value) != value or value < 1:
             raise ProblemError(key, value, "integer >= 1", "whole periods and samples per piece")
     n, pieces, samples = system.size, system.nodes.size - 1, int(samples_per_piece)
-    inverse = np.linalg.inv(system.mass)
-    steps = [expm(system.augmented(piece, inverse) * (system.nodes[piece + 1] - system.nodes[piece]) / samples)
-             for piece in range(pieces)]
+    distinct, where = piece_steps(system, samples)  # every piece's sub-step exponential, batched
+    steps = distinct[where]
     z = np.append(np.asarray(state, dtype=float), 1.0)
     values, times, piece_of = [], [], []
     offsets = np.arange(samples) / samples
