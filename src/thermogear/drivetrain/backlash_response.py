@@ -35,7 +35,7 @@ from thermogear.drivetrain.assembly import AssembledDrivetrain
 from thermogear.drivetrain.response import bearing_force_spectrum, bearing_forces, drivetrain_backlash_system
 from thermogear.dynamics.backlash_ndof import (BACK_CONTACT, DRIVING_CONTACT, FREE_FLIGHT, BacklashSystem, DeadZone,
                                                backlash_periodic_orbit)
-from thermogear.dynamics.backlash_orbits_ndof import startup_orbit
+from thermogear.dynamics.backlash_orbits_ndof import StartupOrbit, startup_orbit
 from thermogear.dynamics.backlash_trajectory import BacklashTrajectory, backlash_trajectory
 from thermogear.dynamics.metrics import sampled_load
 from thermogear.dynamics.spectra import time_mean_and_rms
@@ -164,14 +164,25 @@ def drivetrain_backlash_response(assembled: AssembledDrivetrain, state: MeshStat
     if cutoff_hz is not None:
         system, basis = reduced_backlash_system(system, cutoff_hz)
     bearings = [bearing.name for bearing in assembled.drivetrain.bearings]
+    recovered: tuple[str, ...] = ()
     try:
         cache: dict = {}  # the pieces' exponentials, computed by the shooting and reused by the sampling
         with one_blas_thread():
             orbit = backlash_periodic_orbit(system, initial_state, substeps, tolerance, cache=cache)
             startup = None
-            if startup_periods is not None and orbit.converged:
-                startup = startup_orbit(system, orbit, int(startup_periods), orbit.substeps, tolerance,
-                                        cache=cache)
+            if startup_periods is not None:
+                try:  # a start from rest (where Newton failed from the linear state, it may settle there)
+                    startup = startup_orbit(system, orbit if orbit.converged else None, int(startup_periods),
+                                            orbit.substeps, tolerance, cache=cache)
+                except (ProblemError, ModelLimitError, np.linalg.LinAlgError) as error:
+                    startup = StartupOrbit(None, False, True, int(startup_periods), f"{error}")
+            if startup is not None and not orbit.converged:
+                if startup.orbit is not None:
+                    reason = orbit.failure
+                    orbit, startup = startup.orbit, None
+                    recovered = (f"shot from the linear solution the orbit was not found ({reason}); the motion from "
+                                 f"rest, run in over {int(startup_periods)} mesh periods and shot, settled on the "
+                                 "orbit reported",)
             trajectory = backlash_trajectory(system, orbit.initial_state, 1, samples_per_piece, orbit.substeps,
                                              system.mesh_vector, cache)
             other = None
@@ -184,13 +195,23 @@ def drivetrain_backlash_response(assembled: AssembledDrivetrain, state: MeshStat
     shot = _response(assembled, state, system, reduction, basis, trajectory, orbit.initial_state, orbit.multipliers,
                      orbit.converged, failure, orbit.switches)
     if startup is None:
-        return shot
+        if recovered:
+            shot.metrics["startup"] = {"reached_from": "rest", "branch": "unique", "startup_settled": True,
+                                       "left_contact_from_rest": True, "run_in_periods": int(startup_periods),
+                                       "coexisting": []}
+        return replace(shot, notes=recovered)
     if other is None:
         settled = startup.orbit is not None
+        why = f" ({startup.failure})" if startup.failure else ""
+        if not shot.converged:
+            return replace(shot, failure=(
+                f"{shot.failure}; the motion from rest, run in over 2 × {startup.run_in_periods} mesh periods, settled "
+                f"on no stable one-period orbit either{why}: the motion may be non-periodic or repeat over several "
+                "periods (`--method transient` follows it)"))
         note = () if settled else (
             f"the motion from rest settled on no stable one-period orbit within 2 × {startup.run_in_periods} mesh "
-            "periods: the orbit shot from the linear solution is reported; a start-up may show another motion "
-            "(`--method transient` follows it)",)
+            f"periods{why}: the orbit shot from the linear solution is reported; a start-up may show another "
+            "motion (`--method transient` follows it)",)
         shot.metrics["startup"] = {"reached_from": "rest and the linear solution" if settled else "the linear solution",
                                    "branch": "unique", "startup_settled": settled,
                                    "left_contact_from_rest": startup.left_contact_state,

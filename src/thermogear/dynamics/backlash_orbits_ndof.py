@@ -87,12 +87,14 @@ class StartupOrbit:
     """What a start from rest reaches: its ``orbit`` (None where it settled on no stable one-period orbit);
     ``same`` whether it is the ``reference`` orbit it was compared with (within the match tolerance);
     ``left_contact_state`` whether the motion from rest ever left the reference's contact state (False: it was
-    followed as a linear motion, module docstring); ``run_in_periods`` per run-in."""
+    followed as a linear motion, module docstring); ``run_in_periods`` per run-in; ``failure`` why no orbit was
+    reached where the motion could not be followed ('' otherwise)."""
 
     orbit: BacklashOrbitNDOF | None
     same: bool
     left_contact_state: bool
     run_in_periods: int
+    failure: str = ""
 
 
 def _stays_in_contact(system: BacklashSystem, reference: BacklashOrbitNDOF, periods: int, substeps: int) -> bool:
