@@ -20,7 +20,8 @@ from thermogear.dynamics.backlash_orbits_ndof import stable_orbits_ndof
 from thermogear.dynamics.backlash_trajectory import backlash_trajectory
 from thermogear.mesh.state import MeshState
 
-__all__ = ["DrivetrainOrbitCensus", "DrivetrainStableOrbit", "census_summary", "drivetrain_stable_orbits"]
+__all__ = ["DrivetrainOrbitCensus", "DrivetrainStableOrbit", "case_stable_orbits", "census_summary",
+           "drivetrain_stable_orbits"]
 
 
 @dataclass(frozen=True, eq=False)
@@ -81,3 +82,17 @@ def census_summary(census: DrivetrainOrbitCensus) -> dict:
                         "start_count": item.start_count, "reached_from_rest": item.from_rest}
                        for item in census.orbits]}
 
+
+
+def case_stable_orbits(built, model: str, starts: int = 16, speed_rpm: float | None = None,
+                       progress=None) -> DrivetrainOrbitCensus:
+    """:func:`drivetrain_stable_orbits` of a case's drivetrain (``built``: a
+    :class:`~thermogear.drivetrain.case_model.CaseDrivetrain`) for one mesh ``model`` at a pinion speed [rpm]
+    (default the case's), solved as ``run`` solves its orbit (the case's points per period, sub-steps and modal
+    cut-off), each start run in over the case's ``dynamics.transient_periods``."""
+    from thermogear.drivetrain.case_model import SAMPLES_PER_PIECE, backlash_substeps
+
+    state = built.models[model].state(speed_rpm=speed_rpm, points_per_period=built.dynamics.points_per_period)
+    return drivetrain_stable_orbits(built.assembled(model), state, starts, built.dynamics.transient_periods,
+                                    backlash_substeps(state.grid.nodes.size - 1), SAMPLES_PER_PIECE,
+                                    built.section.response_cutoff_hz, progress=progress)

@@ -180,21 +180,9 @@ class CaseDrivetrain:
                                             cutoff_hz=self.section.response_cutoff_hz,
                                             startup_periods=self.dynamics.transient_periods)
 
-    def stable_orbits(self, model: str, starts: int = 16, speed_rpm: float | None = None, progress=None):
-        """Every stable orbit of the backlash drivetrain that ``starts`` starts find at a pinion speed [rpm]
-        (default the case's), each run in over the case's ``dynamics.transient_periods`` (a
-        :class:`~thermogear.drivetrain.backlash_orbits.DrivetrainOrbitCensus`), solved as :meth:`backlash_response`."""
-        from thermogear.drivetrain.backlash_orbits import drivetrain_stable_orbits
-
-        state = self.models[model].state(speed_rpm=speed_rpm, points_per_period=self.dynamics.points_per_period)
-        return drivetrain_stable_orbits(self.assembled(model), state, starts, self.dynamics.transient_periods,
-                                        backlash_substeps(state.grid.nodes.size - 1), SAMPLES_PER_PIECE,
-                                        self.section.response_cutoff_hz, progress=progress)
-
     def transient(self, model: str) -> DrivetrainTransient:
-        """The motion from rest over the case's ``dynamics.transient_periods`` mesh periods, with the backlash mesh
-        where the case's mesh is nonlinear, else in permanent contact, on the section's ``response_cutoff_hz`` (as
-        the periodic orbit) with the switches looked for on the same sub-steps."""
+        """The motion from rest over the case's ``dynamics.transient_periods`` mesh periods (backlash mesh where the
+        case's mesh is nonlinear, else permanent contact), solved as the periodic orbit (cut-off, sub-steps)."""
         from thermogear.drivetrain.transient_response import drivetrain_transient
 
         state = self.models[model].state(points_per_period=self.dynamics.points_per_period)
@@ -376,12 +364,8 @@ def drivetrain_results(built: CaseDrivetrain, models: tuple[str, ...] = (ELASTIC
     response's arrays for a results file (:func:`~thermogear.drivetrain.response_dataset.response_dataset_parts`:
     DTE, mesh force and bearing forces over one mesh period, the bearings' mesh harmonics)."""
     section = built.section
-    if transient:
-        mesh = (f"{'nonlinear (backlash)' if built.backlash_mesh else 'linear (permanent contact)'} on the "
-                f"drivetrain; last of {built.dynamics.transient_periods} periods from rest")
-    else:
-        mesh = ("nonlinear (backlash) on the drivetrain" if built.backlash_mesh
-                else "linear (permanent contact) on the drivetrain")
+    mesh = (f"{'nonlinear (backlash)' if built.backlash_mesh else 'linear (permanent contact)'} on the drivetrain"
+            + (f"; last of {built.dynamics.transient_periods} periods from rest" if transient else ""))
     result: dict[str, Any] = {
         "degrees_of_freedom": built.assembled(ELASTIC).size, "response_cutoff_hz": section.response_cutoff_hz,
         "mesh": mesh, "backlash_mesh": built.backlash_mesh, "transient": bool(transient),

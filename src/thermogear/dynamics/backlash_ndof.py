@@ -27,7 +27,8 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from thermogear.dynamics.backlash_pieces import PieceExponentials, contact_state_system, exponential_action
+from thermogear.dynamics.backlash_pieces import PieceExponentials, contact_state_system
+from thermogear.dynamics.backlash_switches import DeadZone, count_crossings, first_switch, odd_crossings, saltation
 from thermogear.dynamics.periodic_ndof import PiecewiseLinearSystem, periodic_response
 from thermogear.dynamics.problem import checked_array
 from thermogear.errors import ModelLimitError, ProblemError
@@ -38,35 +39,6 @@ __all__ = ["BACK_CONTACT", "DRIVING_CONTACT", "FREE_FLIGHT", "BacklashSystem", "
 
 DRIVING_CONTACT, FREE_FLIGHT, BACK_CONTACT = 0, 1, 2  # the mesh's contact regions (driving flanks, none, back flanks)
 _DRIVE, _FREE, _BACK = DRIVING_CONTACT, FREE_FLIGHT, BACK_CONTACT
-
-
-@dataclass(frozen=True, eq=False)
-class DeadZone:
-    """A spring ``stiffness`` k [N/m] and dashpot ``damping`` c [N·s/m] on u = vᵀq (``vector`` v) that act only
-    beyond the ``clearance`` ±δ [m] >= 0: the force along v is −k(u − δ) − c·u̇ for u > δ, −k(u + δ) − c·u̇ for
-    u < −δ and zero in between. The linear system of the :class:`BacklashSystem` includes k v vᵀ and c v vᵀ (the
-    element in contact); with δ = 0 the element is linear."""
-
-    vector: np.ndarray
-    stiffness: float
-    damping: float
-    clearance: float
-
-    def __post_init__(self) -> None:
-        object.__setattr__(self, "vector", np.asarray(self.vector, dtype=float))
-        for key in ("stiffness", "damping", "clearance"):
-            value = getattr(self, key)
-            if not isinstance(value, (int, float)) or not np.isfinite(value) or value < 0.0:
-                raise ProblemError(f"dead_zone.{key}", value, ">= 0, finite", "a spring, dashpot and gap of a contact")
-
-    def side(self, state: np.ndarray, size: int) -> int:
-        """+1 or −1 in contact beyond +δ or −δ, 0 inside the clearance (on a boundary, by the rate)."""
-        value, rate = self.vector @ state[:size], self.vector @ state[size:2 * size]
-        if value > self.clearance or (value == self.clearance and rate > 0.0):
-            return 1
-        if value < -self.clearance or (value == -self.clearance and rate < 0.0):
-            return -1
-        return 0
 
 
 @dataclass(frozen=True, eq=False)
@@ -197,7 +169,7 @@ def backlash_flow_ndof(system: BacklashSystem, state: np.ndarray, substeps: int 
         step = (stop - start) / substeps
         previous, key = key, (system.region(z, piece), system.sides(z))  # at a node the deviation steps: afresh
         if previous is not None:
-            _count_crossings(info["crossings"], previous, key)
+            count_crossings(info["crossings"], previous, key)
         full_step = pieces.step(piece, key)
         states = np.empty((substeps, 2 * n + 1))
         trial = z
@@ -229,11 +201,11 @@ def backlash_flow_ndof(system: BacklashSystem, state: np.ndarray, substeps: int 
             after = (system.region(trial, piece), system.sides(trial))
             following, zone = key, None
             if after != key:
-                h, following, zone, switched, seen = _first_switch(system, piece, key, after, matrix, z, h,
+                h, following, zone, switched, seen = first_switch(system, piece, key, after, matrix, z, h,
                                                                    stop - start)
                 info["switches" if zone is None else "zone_switches"] += switched
                 if seen:  # a crossing at a known instant (not a change taken over a whole sub-step)
-                    _count_crossings(info["crossings"], key, following)
+                    count_crossings(info["crossings"], key, following)
             if h > 0.0:
                 segment = full_step if h == step else expm(matrix * h)
                 if monodromy:
@@ -245,7 +217,7 @@ def backlash_flow_ndof(system: BacklashSystem, state: np.ndarray, substeps: int 
                     info["back_contact_time"] += h
                 t += h
             if zone is not None and monodromy:  # the dead zone's dashpot starts or stops: the vector field jumps
-                product.append(_saltation(matrix, pieces.matrix(piece, following), system.dead_zones[zone].vector, z))
+                product.append(saltation(matrix, pieces.matrix(piece, following), system.dead_zones[zone].vector, z))
             if record:
                 info["time"].append(t)
                 info["states"].append(z[:-1])
@@ -256,7 +228,7 @@ def backlash_flow_ndof(system: BacklashSystem, state: np.ndarray, substeps: int 
         if monodromy:
             for matrix in product:
                 total = matrix @ total
-    _count_crossings(info["crossings"], key, (system.region(z, 0), system.sides(z)))  # the period's end node
+    count_crossings(info["crossings"], key, (system.region(z, 0), system.sides(z)))  # the period's end node
     return z[:-1], None if total is None else total[:-1, :-1], info
 
 
@@ -267,84 +239,6 @@ def piece_exponentials(system: BacklashSystem, substeps: int, cache: dict) -> Pi
     if entry not in cache:
         cache[entry] = PieceExponentials(system, int(substeps), np.linalg.inv(system.linear.mass))
     return cache[entry]
-
-
-def _count_crossings(counts: dict, before: tuple, after: tuple) -> None:
-    """Add the boundaries crossed from contact state ``before`` to ``after`` to ``counts``: ("mesh", 0) the
-    driving-flank boundary g = 0, ("mesh", 1) the back-flank one g = −b, ("zone", i, ±1) dead zone i's u = ±δ."""
-    regions = {before[0], after[0]}
-    if regions & {_DRIVE} and regions - {_DRIVE}:
-        counts[("mesh", 0)] = counts.get(("mesh", 0), 0) + 1
-    if regions & {_BACK} and regions - {_BACK}:
-        counts[("mesh", 1)] = counts.get(("mesh", 1), 0) + 1
-    for index, (old, new) in enumerate(zip(before[1], after[1])):
-        for side in (1, -1):
-            if (old == side) != (new == side):
-                counts[("zone", index, side)] = counts.get(("zone", index, side), 0) + 1
-
-
-def odd_crossings(counts: dict) -> list:
-    """The boundaries crossed an odd number of times (``counts`` as the flow's "crossings"). A closed orbit crosses
-    each boundary an even number of times per period (it returns to the side it started on), counting the jumps of
-    the boundary at the nodes (the deviation steps); an odd count on a "periodic" point means a crossing that was
-    not located — a change of region taken over a whole sub-step — so the point is no orbit of the system."""
-    return sorted(boundary for boundary, count in counts.items() if count % 2)
-
-
-def _first_switch(system: BacklashSystem, piece: int, key: tuple, after: tuple, matrix: np.ndarray, z: np.ndarray,
-                  h: float, width: float) -> tuple[float, tuple, int | None, int, bool]:
-    """The first boundary crossed within h: (time to it, the region after it, the dead zone's index or None for the
-    mesh, 1 when a crossing was located by a sign change, whether its instant is known at all — on the boundary
-    already counts). Without a crossing found (a double crossing or a boundary state) the step is taken whole and
-    the region of the first changed element moves on, as for one element."""
-    from scipy.optimize import brentq
-
-    n = system.linear.size
-    candidates = []  # (vector, boundary, offset, region after, zone index)
-    region, sides = key
-    if after[0] != region:
-        # the boundary crossed first: from free flight the one on the side the motion ends
-        boundary = -system.backlash if (region == _BACK or (region == _FREE and after[0] == _BACK)) else 0.0
-        following = _FREE if region != _FREE else after[0]
-        candidates.append((system.mesh_vector, boundary + system.deviation[piece], (following, sides), None))
-    for index, (old, new) in enumerate(zip(sides, after[1])):
-        if old != new:
-            zone = system.dead_zones[index]
-            boundary = zone.clearance if (old > 0 or (old == 0 and new > 0)) else -zone.clearance
-            side = 0 if old != 0 else (1 if new > 0 else -1)
-            candidates.append((zone.vector, boundary, (region, sides[:index] + (side,) + sides[index + 1:]), index))
-    best = None
-    for vector, boundary, following, index in candidates:
-        def distance(s, m=matrix, v=vector, b=boundary):
-            return v @ exponential_action(m, z, s)[:n] - b
-
-        low, high = distance(0.0), distance(h)
-        if low * high < 0.0:
-            root, located = brentq(distance, 0.0, h, xtol=1e-13 * width, rtol=1e-14), 1
-        elif low == 0.0 or (index is not None and abs(low) <= 1e-8 * abs(high)):
-            # on the boundary already (a switch just located leaves |u − ±δ| ~ 1e-13 of the motion, on either
-            # side): the element passes through at once — a zero clearance has no inside to dwell in
-            root, located = 0.0, 0
-        else:
-            continue
-        if best is None or root < best[0]:
-            best = (root, following, index, located)
-    if best is None:
-        _, _, following, index = candidates[0]
-        return h, following, index, 0, False
-    return (*best, True)
-
-
-def _saltation(before: np.ndarray, after: np.ndarray, vector: np.ndarray, z: np.ndarray) -> np.ndarray:
-    """S = I + (f⁺ − f⁻) nᵀ/(nᵀ f⁻) on the augmented state at a switch of u = vᵀq (identity at a grazing one)."""
-    size = vector.size
-    normal = np.zeros(z.size)
-    normal[:size] = vector
-    field_before, field_after = before @ z, after @ z
-    rate = normal @ field_before
-    if rate == 0.0:
-        return np.eye(z.size)
-    return np.eye(z.size) + np.outer(field_after - field_before, normal) / rate
 
 
 @dataclass(frozen=True, eq=False)
