@@ -326,10 +326,13 @@ def _switch_free_orbit(system: BacklashSystem, substeps: int, tolerance: float, 
             response = periodic_response(contact_state_system(system, key), substeps)
         except ModelLimitError:
             return start, None
-        # the shooting starts from this orbit where it is no orbit of the backlash system: the shaft rests against
-        # the side of each clearance the load pushes it to, δ away from the bearing's centre, which the linear state
-        # (every clearance closed) misses by δ — tens of μm against a few μm of deflection
-        start = response.initial_state
+        # where its start rests against the sides assumed, the shooting starts from this orbit even if it is no
+        # orbit of the backlash system (a switch later in the period): the shaft rests against the side of each
+        # clearance the load pushes it to, δ from the bearing's centre, which the linear state (every clearance
+        # closed) misses by δ — tens of μm against a few μm of deflection. Otherwise (a clearance wider than the
+        # load moves the shaft) the linear state is the better start.
+        if system.sides(response.initial_state) == key[1]:
+            start = response.initial_state
     states = np.hstack([response.displacement, response.velocity])
     pieces = system.linear.nodes.size - 1
     rows = np.arange(states.shape[0])
