@@ -12,6 +12,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+import numpy as np
+
 from thermogear.drivetrain.assembly import AssembledDrivetrain
 from thermogear.drivetrain.backlash_response import (SHOOTING_TOLERANCE, DrivetrainBacklashResponse, _response,
                                                     one_blas_thread, reduced_backlash_system)
@@ -68,8 +70,9 @@ def drivetrain_stable_orbits(assembled: AssembledDrivetrain, state: MeshState, s
             response = _response(assembled, state, system, reduction, basis, trajectory, orbit.initial_state,
                                  orbit.multipliers, orbit.converged, orbit.failure, orbit.switches)
             found.append(DrivetrainStableOrbit(response, item.start_count, item.basin_share, item.from_rest))
-    count = census.starts
-    return DrivetrainOrbitCensus(tuple(found), count, census.unresolved / count, census.unbounded / count)
+    count = census.outcome.size
+    return DrivetrainOrbitCensus(tuple(found), count, float(np.mean(census.outcome == -1)),
+                                 float(np.mean(census.outcome == -2)))
 
 
 def census_summary(census: DrivetrainOrbitCensus) -> dict:

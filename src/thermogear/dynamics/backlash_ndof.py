@@ -66,30 +66,6 @@ class BacklashSystem:
         if not np.isfinite(self.backlash) or self.backlash <= 0.0:
             raise ProblemError("backlash", self.backlash, "> 0 m", "a zero or negative backlash is a jammed mesh")
 
-    def region_matrix(self, piece: int, region: int, mass_inverse: np.ndarray,
-                      sides: tuple[int, ...] = ()) -> np.ndarray:
-        """Augmented (2n+1)² matrix of one piece in one contact region of the mesh and, for each dead zone, its
-        side (+1, −1 in contact; 0 inside the clearance; all in contact when ``sides`` is empty)."""
-        system = self.linear
-        n = system.size
-        k = system.stiffness_factor[piece] if region != _FREE else 0.0
-        shift = {_DRIVE: self.deviation[piece], _FREE: 0.0, _BACK: self.deviation[piece] - self.backlash}[region]
-        stiffness = system.stiffness + k * system.stiffness_pattern
-        damping = system.damping + system.damping_factor[piece] * system.damping_pattern
-        force = system.force + k * shift * self.mesh_vector
-        for zone, side in zip(self.dead_zones, sides):
-            if side == 0:
-                pattern = np.outer(zone.vector, zone.vector)
-                stiffness, damping = stiffness - zone.stiffness * pattern, damping - zone.damping * pattern
-            else:
-                force = force + side * zone.stiffness * zone.clearance * zone.vector
-        matrix = np.zeros((2 * n + 1, 2 * n + 1))
-        matrix[:n, n:2 * n] = np.eye(n)
-        matrix[n:2 * n, :n] = -mass_inverse @ stiffness
-        matrix[n:2 * n, n:2 * n] = -mass_inverse @ damping
-        matrix[n:2 * n, 2 * n] = mass_inverse @ force
-        return matrix
-
     def keeps_state(self, states: np.ndarray, piece, key: tuple) -> bool:
         """Whether every state of ``states`` (k, ≥ 2n) on a piece (or, an array of k, each on its own) is in the
         contact state ``key`` (mesh region, dead zone sides), by the rules of :meth:`region` and

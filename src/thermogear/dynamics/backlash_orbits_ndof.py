@@ -149,23 +149,11 @@ class StableOrbitNDOF:
 class OrbitCensusNDOF:
     """What a multi-start search found: the distinct stable ``orbits`` (largest basin share first);
     ``start_states`` (starts, 2n); ``outcome`` (starts,) the index into ``orbits`` each start settled on, −1
-    unresolved, −2 unbounded."""
+    unresolved (no stable one-period orbit), −2 unbounded."""
 
     orbits: tuple[StableOrbitNDOF, ...]
     start_states: np.ndarray
     outcome: np.ndarray
-
-    @property
-    def starts(self) -> int:
-        return int(self.outcome.size)
-
-    @property
-    def unresolved(self) -> int:
-        return int(np.sum(self.outcome == -1))
-
-    @property
-    def unbounded(self) -> int:
-        return int(np.sum(self.outcome == -2))
 
 
 def start_states_ndof(system: BacklashSystem, starts: int) -> np.ndarray:
