@@ -1,7 +1,10 @@
 """Benchmark: the backlash drivetrain of ``fzg_rig_type_c`` per speed, on every DOF and on the modal cut-off, against
-the linear periodic response of the same state in the same run, on one BLAS thread.
+the linear periodic response of the same state in the same run, on one BLAS thread; the motion from rest on the
+cut-off per mesh period against the same baseline; ``thermogear run`` on the user's drivetrain
+(tests/data/user_drivetrain.toml) against ``thermogear run fzg_rig_type_c`` in the same run (wall time and peak
+memory of the process).
 
-Run: python benchmarks/bench_drivetrain_backlash.py [SPEED_RPM ...]
+Run: python benchmarks/bench_drivetrain_backlash.py [--full] [SPEED_RPM ...]   (--full: also every DOF, ~30 s+)
 Prints a table and writes benchmarks/results/bench_drivetrain_backlash.json.
 
 Per speed (the elastic mesh model's state, the case's ``points_per_period`` intervals): CPU (user + sys of this
@@ -26,6 +29,7 @@ from pathlib import Path  # noqa: E402
 
 RESULTS = Path(__file__).resolve().parent / "results"
 SPEEDS_RPM = (2175.0, 6000.0)
+FULL = "--full" in sys.argv  # every DOF too (about 30 s of CPU per speed)
 
 
 def _timed(function):
@@ -46,6 +50,7 @@ def main(speeds: tuple[float, ...]) -> list[dict]:
     from thermogear.drivetrain.backlash_response import drivetrain_backlash_response
     from thermogear.drivetrain.case_model import backlash_substeps, case_drivetrain
     from thermogear.drivetrain.response import drivetrain_periodic_response
+    from thermogear.drivetrain.transient_response import drivetrain_transient
 
     warnings.simplefilter("ignore")  # the case's extrapolation warnings are said by `check`
     case = load_case("fzg_rig_type_c")
@@ -55,31 +60,76 @@ def main(speeds: tuple[float, ...]) -> list[dict]:
     for speed in speeds:
         state = built.models["elastic"].state(speed_rpm=speed, points_per_period=case.dynamics.points_per_period)
         substeps = backlash_substeps(state.grid.nodes.size - 1)  # as run solves it
-        full, full_cpu, full_wall = _timed(lambda: drivetrain_backlash_response(assembled, state, substeps=substeps,
-                                                                                samples_per_piece=4))
+        linear, linear_cpu, linear_wall = _timed(lambda: drivetrain_periodic_response(assembled, state, 4, cutoff))
         cut, cut_cpu, cut_wall = _timed(lambda: drivetrain_backlash_response(assembled, state, substeps=substeps,
                                                                              samples_per_piece=4, cutoff_hz=cutoff))
-        linear, linear_cpu, linear_wall = _timed(lambda: drivetrain_periodic_response(assembled, state, 4, cutoff))
+        startup, startup_cpu, startup_wall = _timed(lambda: drivetrain_backlash_response(
+            assembled, state, substeps=substeps, samples_per_piece=4, cutoff_hz=cutoff,
+            startup_periods=case.dynamics.transient_periods))
+        periods = 10
+        _, transient_cpu, transient_wall = _timed(lambda: drivetrain_transient(
+            assembled, state, periods, samples_per_piece=4, substeps=substeps, cutoff_hz=cutoff))
+        if FULL:
+            full, full_cpu, full_wall = _timed(lambda: drivetrain_backlash_response(
+                assembled, state, substeps=substeps, samples_per_piece=4))
+        else:
+            full, full_cpu, full_wall = cut, None, None  # not measured (no --full)
         row = {"speed_rpm": speed, "dof": assembled.size, "intervals": int(state.grid.nodes.size - 1),
                "full": {"cpu_s": full_cpu, "wall_s": full_wall, "converged": full.converged, "kv": full.kv,
                         "contact_loss_fraction": full.contact_loss_fraction, "switches": full.switches},
                "cutoff": {"cpu_s": cut_cpu, "wall_s": cut_wall, "converged": cut.converged, "kv": cut.kv,
                           "contact_loss_fraction": cut.contact_loss_fraction, "switches": cut.switches},
                "linear_cutoff": {"cpu_s": linear_cpu, "wall_s": linear_wall, "kv": linear.kv},
-               "cutoff_error": {"kv": _relative(cut.kv, full.kv),
-                                "dte_rms": _relative(cut.metrics.get("dte_rms"), full.metrics.get("dte_rms")),
-                                "contact_loss_fraction": abs(cut.contact_loss_fraction
-                                                             - full.contact_loss_fraction)}}
+               "cutoff_over_linear_cpu": cut_cpu / linear_cpu,
+               "with_startup": {"cpu_s": startup_cpu, "wall_s": startup_wall,
+                                "over_linear_cpu": startup_cpu / linear_cpu,
+                                "reached_from": startup.metrics.get("startup", {}).get("reached_from")},
+               "transient_per_period": {"cpu_s": transient_cpu / periods, "wall_s": transient_wall / periods,
+                                        "over_linear_cpu": transient_cpu / periods / linear_cpu},
+               "cutoff_error": None if full_cpu is None else {
+                   "kv": _relative(cut.kv, full.kv),
+                   "dte_rms": _relative(cut.metrics.get("dte_rms"), full.metrics.get("dte_rms")),
+                   "contact_loss_fraction": abs(cut.contact_loss_fraction - full.contact_loss_fraction)}}
         rows.append(row)
-        print(f"{speed:7.0f} rpm  full {full_cpu:7.2f} s CPU ({full_wall:7.2f} wall)  cut-off {cut_cpu:6.2f} s CPU "
-              f"({cut_wall:6.2f} wall)  linear {linear_cpu:5.2f} s CPU  Kv {full.kv} / {cut.kv} (linear "
-              f"{linear.kv})  cut-off error in Kv {row['cutoff_error']['kv']}  contact loss "
-              f"{full.contact_loss_fraction:.4f}", flush=True)
+        measured = "not run" if full_cpu is None else f"{full_cpu:7.2f} s CPU ({full_wall:7.2f} wall)"
+        print(f"{speed:7.0f} rpm  full {measured}  cut-off {cut_cpu:6.3f} s CPU "
+              f"({cut_wall:6.3f} wall, {cut_cpu / linear_cpu:.2f}× linear)  with the start-up {startup_cpu:6.3f} s "
+              f"CPU  transient {transient_cpu / periods:6.3f} s CPU per period  linear {linear_cpu:6.3f} s CPU  "
+              f"Kv {full.kv} / {cut.kv} (linear {linear.kv})  contact loss {cut.contact_loss_fraction:.4f}",
+              flush=True)
+    return rows
+
+
+def _run_process(case: str) -> dict:
+    """Wall seconds, CPU seconds and peak resident memory [MB] of ``thermogear run CASE --json`` in a child process
+    (its own imports included), from that child's own resource usage (os.wait4)."""
+    import subprocess
+
+    wall = time.perf_counter()
+    child = subprocess.Popen([sys.executable, "-m", "thermogear", "run", case, "--json", "-q"],
+                             stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    _, status, usage = os.wait4(child.pid, 0)
+    wall = time.perf_counter() - wall
+    child.returncode = os.waitstatus_to_exitcode(status)
+    return {"case": case, "wall_s": wall, "cpu_s": usage.ru_utime + usage.ru_stime,
+            "peak_memory_mb": usage.ru_maxrss / 1024.0, "exit_code": child.returncode}
+
+
+def run_command_rows() -> list[dict]:
+    """``thermogear run`` on the user's drivetrain and on fzg_rig_type_c, interleaved twice: wall, CPU, memory."""
+    user = str(Path(__file__).resolve().parents[1] / "tests" / "data" / "user_drivetrain.toml")
+    rows = []
+    for _ in range(2):
+        for case in ("fzg_rig_type_c", user):
+            row = _run_process(case)
+            rows.append(row)
+            print(f"run {Path(case).name:24s} wall {row['wall_s']:6.2f} s  CPU {row['cpu_s']:6.2f} s  peak "
+                  f"memory {row['peak_memory_mb']:7.1f} MB  exit {row['exit_code']}", flush=True)
     return rows
 
 
 if __name__ == "__main__":
-    chosen = tuple(float(value) for value in sys.argv[1:]) or SPEEDS_RPM
-    results = main(chosen)
+    chosen = tuple(float(value) for value in sys.argv[1:] if value != "--full") or SPEEDS_RPM
+    results = {"speeds": main(chosen), "run": run_command_rows()}
     RESULTS.mkdir(exist_ok=True)
     (RESULTS / "bench_drivetrain_backlash.json").write_text(json.dumps(results, indent=2), encoding="utf-8")

@@ -26,7 +26,7 @@ exact).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
@@ -35,6 +35,7 @@ from thermogear.drivetrain.assembly import AssembledDrivetrain
 from thermogear.drivetrain.response import bearing_force_spectrum, bearing_forces, drivetrain_backlash_system
 from thermogear.dynamics.backlash_ndof import (BACK_CONTACT, DRIVING_CONTACT, FREE_FLIGHT, BacklashSystem, DeadZone,
                                                backlash_periodic_orbit)
+from thermogear.dynamics.backlash_orbits_ndof import StartupOrbit, startup_orbit
 from thermogear.dynamics.backlash_trajectory import BacklashTrajectory, backlash_trajectory
 from thermogear.dynamics.metrics import sampled_load
 from thermogear.dynamics.spectra import time_mean_and_rms
@@ -42,8 +43,8 @@ from thermogear.errors import CaseError, ModelLimitError, ProblemError
 from thermogear.mesh.state import MeshState
 
 __all__ = ["SHOOTING_TOLERANCE", "DrivetrainBacklashResponse", "PeriodForces", "SampledMotion", "bearing_forces",
-           "drivetrain_backlash_response", "one_blas_thread", "reduced_backlash_system", "sampled_metrics",
-           "sampled_motion"]
+           "drivetrain_backlash_response", "one_blas_thread", "orbit_summary", "reduced_backlash_system",
+           "sampled_metrics", "sampled_motion"]
 
 
 #: Relative residual |φ_T(z₀) − z₀| the shooting must reach. A drivetrain's stiff coordinates leave a rounding floor
@@ -60,7 +61,8 @@ class DrivetrainBacklashResponse:
     [m/s]; ``mesh_force`` [N]; ``bearing_forces`` name → (S, 3) on the housing in x, y, z [N]; ``displacement``
     (S, DOFs) [SI]; ``region`` (S,) the mesh's contact region; Floquet ``multipliers``; ``converged``; ``failure``
     why not ('' when converged); ``switches`` of the mesh per period; ``contact_loss_fraction`` and
-    ``back_contact_fraction`` [-]; ``metrics``; ``period`` [s]."""
+    ``back_contact_fraction`` [-]; ``metrics``; ``period`` [s]; ``notes`` what the reader must know (two coexisting
+    orbits, a start-up that settled on none)."""
 
     time: np.ndarray
     transmission_error: np.ndarray
@@ -77,6 +79,7 @@ class DrivetrainBacklashResponse:
     back_contact_fraction: float
     metrics: dict[str, Any]
     period: float
+    notes: tuple[str, ...] = ()
 
     @property
     def stable(self) -> bool:
@@ -142,27 +145,110 @@ def reduced_backlash_system(system: BacklashSystem, cutoff_hz: float):
 def drivetrain_backlash_response(assembled: AssembledDrivetrain, state: MeshState,
                                  initial_state: np.ndarray | None = None, substeps: int = 16,
                                  samples_per_piece: int = 8, cutoff_hz: float | None = None,
-                                 tolerance: float = SHOOTING_TOLERANCE) -> DrivetrainBacklashResponse:
+                                 tolerance: float = SHOOTING_TOLERANCE,
+                                 startup_periods: int | None = None) -> DrivetrainBacklashResponse:
     """The periodic orbit of the drivetrain with the backlash mesh (module docstring), shot from
     ``initial_state`` (in the solver's coordinates, e.g. a neighbouring speed's ``metrics["initial_state"]``) or
     from the linear periodic state; ``substeps`` per piece to find the switches; ``samples_per_piece`` samples per
     piece; ``cutoff_hz`` [Hz] solves on a modal basis (:func:`reduced_backlash_system`), None on every DOF;
-    ``tolerance`` the shooting's relative residual."""
+    ``tolerance`` the shooting's relative residual.
+
+    ``startup_periods``: also start from rest and run in over this many mesh periods before shooting
+    (:func:`~thermogear.dynamics.backlash_orbits_ndof.startup_orbit`). Where the start-up settles on another stable
+    orbit than the one shot from the linear state, both coexist: the start-up's orbit is returned (what the gearbox
+    shows after starting up) and the other is described in ``metrics["startup"]["coexisting"]``; ``metrics
+    ["startup"]`` also says which start reached the orbit returned, its ``branch`` ("low" or "high" by the DTE
+    peak-to-peak, as the 1-DOF response; "unique" where one orbit was seen) and ``notes`` say so in words."""
     system, reduction = drivetrain_backlash_system(assembled, state)
     basis = None
     if cutoff_hz is not None:
         system, basis = reduced_backlash_system(system, cutoff_hz)
+    bearings = [bearing.name for bearing in assembled.drivetrain.bearings]
+    recovered: tuple[str, ...] = ()
     try:
         cache: dict = {}  # the pieces' exponentials, computed by the shooting and reused by the sampling
         with one_blas_thread():
             orbit = backlash_periodic_orbit(system, initial_state, substeps, tolerance, cache=cache)
+            startup = None
+            if startup_periods is not None:
+                try:  # a start from rest (where Newton failed from the linear state, it may settle there)
+                    startup = startup_orbit(system, orbit if orbit.converged else None, int(startup_periods),
+                                            orbit.substeps, tolerance, cache=cache)
+                except (ProblemError, ModelLimitError, np.linalg.LinAlgError) as error:
+                    startup = StartupOrbit(None, False, True, int(startup_periods), f"{error}")
+            if startup is not None and not orbit.converged:
+                if startup.orbit is not None:
+                    reason = orbit.failure
+                    orbit, startup = startup.orbit, None
+                    recovered = (f"shot from the linear solution the orbit was not found ({reason}); the motion from "
+                                 f"rest, run in over {int(startup_periods)} mesh periods and shot, settled on the "
+                                 "orbit reported",)
             trajectory = backlash_trajectory(system, orbit.initial_state, 1, samples_per_piece, orbit.substeps,
                                              system.mesh_vector, cache)
+            other = None
+            if startup is not None and startup.orbit is not None and not startup.same:
+                other = backlash_trajectory(system, startup.orbit.initial_state, 1, samples_per_piece,
+                                            startup.orbit.substeps, system.mesh_vector, cache)
         failure = orbit.failure
     except (ProblemError, ModelLimitError, np.linalg.LinAlgError) as error:
-        return _failed(state, f"no orbit: {error}", [bearing.name for bearing in assembled.drivetrain.bearings])
-    return _response(assembled, state, system, reduction, basis, trajectory, orbit.initial_state, orbit.multipliers,
+        return _failed(state, f"no orbit: {error}", bearings)
+    shot = _response(assembled, state, system, reduction, basis, trajectory, orbit.initial_state, orbit.multipliers,
                      orbit.converged, failure, orbit.switches)
+    if startup is None:
+        if recovered:
+            shot.metrics["startup"] = {"reached_from": "rest", "branch": "unique", "startup_settled": True,
+                                       "left_contact_from_rest": True, "run_in_periods": int(startup_periods),
+                                       "coexisting": []}
+        return replace(shot, notes=recovered)
+    if other is None:
+        settled = startup.orbit is not None
+        why = f" ({startup.failure})" if startup.failure else ""
+        if not shot.converged:
+            return replace(shot, failure=(
+                f"{shot.failure}; the motion from rest, run in over 2 × {startup.run_in_periods} mesh periods, settled "
+                f"on no stable one-period orbit either{why}: the motion may be non-periodic or repeat over several "
+                "periods (`--method transient` follows it)"))
+        note = () if settled else (
+            f"the motion from rest settled on no stable one-period orbit within 2 × {startup.run_in_periods} mesh "
+            f"periods{why}: the orbit shot from the linear solution is reported; a start-up may show another "
+            "motion (`--method transient` follows it)",)
+        shot.metrics["startup"] = {"reached_from": "rest and the linear solution" if settled else "the linear solution",
+                                   "branch": "unique", "startup_settled": settled,
+                                   "left_contact_from_rest": startup.left_contact_state,
+                                   "run_in_periods": startup.run_in_periods, "coexisting": []}
+        return replace(shot, notes=note)
+    reached = _response(assembled, state, system, reduction, basis, other, startup.orbit.initial_state,
+                        startup.orbit.multipliers, startup.orbit.converged, startup.orbit.failure,
+                        startup.orbit.switches)
+    own, theirs = reached.metrics["dte_peak_to_peak"], shot.metrics["dte_peak_to_peak"]
+    branch, other_branch = ("low", "high") if own < theirs else ("high", "low")
+    reached.metrics["startup"] = {
+        "reached_from": "rest", "branch": branch, "startup_settled": True, "left_contact_from_rest": True,
+        "run_in_periods": startup.run_in_periods,
+        "coexisting": [{**orbit_summary(shot), "reached_from": "the linear solution", "branch": other_branch}]}
+    note = (f"two stable orbits coexist at this operating point: a start from rest (run in over "
+            f"{startup.run_in_periods} mesh periods, then shot) settles on the {branch} branch (Kv "
+            f"{_shown(reached.kv)}, contact loss {reached.contact_loss_fraction:.3f}), which is reported; shot from "
+            f"the linear solution the orbit is the {other_branch} branch (Kv {_shown(shot.kv)}, contact loss "
+            f"{shot.contact_loss_fraction:.3f}). The multi-start search (thermogear.drivetrain.backlash_orbits."
+            "drivetrain_stable_orbits) lists every stable orbit a grid of starts finds, with its basin share",)
+    return replace(reached, notes=note)
+
+
+def _shown(value) -> str:
+    return "not found" if value is None else f"{value:.4g}"
+
+
+def orbit_summary(response: DrivetrainBacklashResponse) -> dict[str, Any]:
+    """The numbers that tell one orbit from another: Kv, DTE RMS and peak-to-peak [μm], contact-loss and
+    back-contact fractions, the largest Floquet multiplier's modulus, stable."""
+    metrics = response.metrics
+    return {"kv": response.kv, "dte_rms_um": metrics.get("dte_rms", math.nan) * 1e6,
+            "dte_peak_to_peak_um": metrics.get("dte_peak_to_peak", math.nan) * 1e6,
+            "contact_loss_fraction": response.contact_loss_fraction,
+            "back_contact_fraction": response.back_contact_fraction,
+            "largest_floquet_multiplier_abs": float(np.abs(response.multipliers).max())
+            if response.multipliers.size else None, "stable": response.stable}
 
 
 def _expanded(reduction, basis, values: np.ndarray) -> np.ndarray:

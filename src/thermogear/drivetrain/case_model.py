@@ -149,17 +149,20 @@ class CaseDrivetrain:
         return drivetrain_backlash_response(self.assembled(model), state, initial_state,
                                             substeps=backlash_substeps(state.grid.nodes.size - 1),
                                             samples_per_piece=SAMPLES_PER_PIECE,
-                                            cutoff_hz=self.section.response_cutoff_hz)
+                                            cutoff_hz=self.section.response_cutoff_hz,
+                                            startup_periods=self.dynamics.transient_periods)
 
     def transient(self, model: str) -> DrivetrainTransient:
-        """The motion from rest over the case's ``dynamics.transient_periods`` mesh periods, with the backlash mesh
-        where the case's mesh is nonlinear, else in permanent contact."""
+        """The motion from rest over the case's ``dynamics.transient_periods`` mesh periods (backlash mesh where the
+        case's mesh is nonlinear, else permanent contact), solved as the periodic orbit (cut-off, sub-steps)."""
         from thermogear.drivetrain.transient_response import drivetrain_transient
 
         self._single_mesh("motion from rest")
         state = self.models[model].state(points_per_period=self.dynamics.points_per_period)
         return drivetrain_transient(self.assembled(model), state, self.dynamics.transient_periods,
-                                    backlash=self.backlash_mesh, samples_per_piece=SAMPLES_PER_PIECE)
+                                    backlash=self.backlash_mesh, samples_per_piece=SAMPLES_PER_PIECE,
+                                    substeps=backlash_substeps(state.grid.nodes.size - 1),
+                                    cutoff_hz=self.section.response_cutoff_hz)
 
     def speed_responses(self, model: str, speeds_rpm: list[float], points_per_period: int,
                         failures: tuple[type[Exception], ...]) -> list[DrivetrainResponse | Exception]:
@@ -294,8 +297,11 @@ def _backlash_summary(response: DrivetrainBacklashResponse, harmonics: int) -> d
         forces = {name: {"mean_radial_n": None, "dynamic_rms_n": None,
                          "harmonic_hz": [j * frequency for j in range(1, harmonics + 1)],
                          "harmonic_amplitude_n": [None] * harmonics} for name in response.bearing_names}
+    startup = metrics.get("startup") or {}
     return {"kv": shown("kv"), "dte_rms_um": shown("dte_rms", 1e6), "dte_peak_to_peak_um": shown("dte_peak_to_peak",
                                                                                                 1e6),
+            "reached_from": startup.get("reached_from"), "branch": startup.get("branch"),
+            "coexisting_orbits": startup.get("coexisting", []), "notes": list(response.notes),
             "largest_floquet_multiplier_abs": float(multipliers.max()) if found and multipliers.size else None,
             "stable": response.stable, "converged": bool(found), "failure": response.failure,
             "contact_loss_fraction": shown("contact_loss_fraction"), "back_side_contact":
@@ -327,17 +333,12 @@ def drivetrain_results(built: CaseDrivetrain, models: tuple[str, ...] = (ELASTIC
     response's arrays for a results file (:func:`~thermogear.drivetrain.response_dataset.response_dataset_parts`:
     DTE, mesh force and bearing forces over one mesh period, the bearings' mesh harmonics)."""
     section = built.section
-    if transient:
-        mesh = (f"{'nonlinear (backlash)' if built.backlash_mesh else 'linear (permanent contact)'} on the "
-                f"drivetrain; last of {built.dynamics.transient_periods} periods from rest")
-    else:
-        mesh = ("nonlinear (backlash) on the drivetrain" if built.backlash_mesh
-                else "linear (permanent contact) on the drivetrain")
+    mesh = (f"{'nonlinear (backlash)' if built.backlash_mesh else 'linear (permanent contact)'} on the drivetrain"
+            + (f"; last of {built.dynamics.transient_periods} periods from rest" if transient else ""))
     result: dict[str, Any] = {
         "degrees_of_freedom": built.assembled(ELASTIC).size, "response_cutoff_hz": section.response_cutoff_hz,
         "mesh": mesh, "backlash_mesh": built.backlash_mesh, "transient": bool(transient),
-        "solved_on": ("every DOF" if transient
-                      else f"modes up to {section.response_cutoff_hz:.0f} Hz"),
+        "solved_on": f"modes up to {section.response_cutoff_hz:.0f} Hz",
         "notes": list(built.notes), "warm_state": built.warm_state, "models": {}}
     for model in models:
         if progress is not None:
@@ -349,6 +350,7 @@ def drivetrain_results(built: CaseDrivetrain, models: tuple[str, ...] = (ELASTIC
             response = built.backlash_response(model) if built.backlash_mesh else built.response(model)
             summary = (_backlash_summary if built.backlash_mesh else _response_summary)(response,
                                                                                       section.bearing_harmonics)
+            result["notes"].extend(f"drivetrain, {model} model: {note}" for note in summary.get("notes", ()))
             if series is not None:
                 from thermogear.drivetrain.response_dataset import response_dataset_parts
 

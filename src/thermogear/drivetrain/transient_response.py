@@ -14,8 +14,8 @@ from typing import Any
 import numpy as np
 
 from thermogear.drivetrain.assembly import AssembledDrivetrain
-from thermogear.drivetrain.backlash_response import (PeriodForces, SampledMotion, one_blas_thread, sampled_metrics,
-                                                    sampled_motion)
+from thermogear.drivetrain.backlash_response import (PeriodForces, SampledMotion, one_blas_thread,
+                                                    reduced_backlash_system, sampled_metrics, sampled_motion)
 from thermogear.drivetrain.response import drivetrain_backlash_system, drivetrain_periodic_system
 from thermogear.dynamics.backlash_trajectory import backlash_trajectory, linear_trajectory
 from thermogear.errors import CaseError
@@ -52,15 +52,21 @@ class DrivetrainTransient:
 
 
 def drivetrain_transient(assembled: AssembledDrivetrain, state: MeshState, periods: int, backlash: bool = True,
-                         samples_per_piece: int = 8, substeps: int = 16) -> DrivetrainTransient:
+                         samples_per_piece: int = 8, substeps: int = 16,
+                         cutoff_hz: float | None = None) -> DrivetrainTransient:
     """The motion from rest over ``periods`` mesh periods (module docstring): with ``backlash`` the backlash mesh
     (and every bearing clearance), else the linear mesh in permanent contact; ``samples_per_piece`` per piece;
-    ``substeps`` per piece to find the switches."""
+    ``substeps`` per piece to find the switches; ``cutoff_hz`` [Hz] solves on the modes up to it plus the static
+    corrections (:func:`~thermogear.drivetrain.backlash_response.reduced_backlash_system`, as the periodic orbit),
+    None on every DOF. Rest is q = q̇ = 0 on either basis (the basis holds the rest state exactly)."""
     if isinstance(periods, bool) or int(periods) != periods or periods < 1:
         raise CaseError("periods", periods, "integer >= 1", "whole mesh periods of the motion from rest")
     problem = state.problem()
+    basis = None
     if backlash:
         system, reduction = drivetrain_backlash_system(assembled, state)
+        if cutoff_hz is not None:
+            system, basis = reduced_backlash_system(system, cutoff_hz)
         start = np.zeros(2 * system.linear.size)
         with one_blas_thread():
             trajectory = backlash_trajectory(system, start, int(periods), samples_per_piece, substeps,
@@ -68,13 +74,18 @@ def drivetrain_transient(assembled: AssembledDrivetrain, state: MeshState, perio
         deviation, gap = system.deviation, system.backlash
     else:
         linear, reduction = drivetrain_periodic_system(assembled, state)
+        if cutoff_hz is not None:
+            from thermogear.dynamics.modal_reduction import modal_basis
+
+            basis = modal_basis(linear, 2.0 * np.pi * cutoff_hz)
+            linear = basis.reduce(linear)
         trajectory = linear_trajectory(linear, np.zeros(2 * linear.size), int(periods), samples_per_piece)
         deviation = np.divide(linear.force_factor, linear.stiffness_factor,
                               out=np.zeros_like(linear.force_factor), where=linear.stiffness_factor != 0.0)
         gap = np.inf
-    motion = sampled_motion(assembled, problem, reduction, None, trajectory, deviation, gap)
+    motion = sampled_motion(assembled, problem, reduction, basis, trajectory, deviation, gap)
     last = trajectory.last_period()
-    last_motion = sampled_motion(assembled, problem, reduction, None, last, deviation, gap)
+    last_motion = sampled_motion(assembled, problem, reduction, basis, last, deviation, gap)
     metrics = sampled_metrics(problem, last, last_motion, np.zeros(0), True)
     for key in _ORBIT_KEYS:
         metrics.pop(key, None)

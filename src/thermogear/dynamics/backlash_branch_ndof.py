@@ -55,8 +55,8 @@ class BacklashBranchNDOF:
         return np.array(found, dtype=int)
 
 
-def _peak_to_peak(system: BacklashSystem, state: np.ndarray, substeps: int) -> float:
-    _, _, info = backlash_flow_ndof(system, state, substeps, record=True)
+def _peak_to_peak(system: BacklashSystem, state: np.ndarray, substeps: int, cache: dict) -> float:
+    _, _, info = backlash_flow_ndof(system, state, substeps, record=True, monodromy=False, cache=cache)
     mesh = np.array(info["states"])[:, :system.linear.size] @ system.mesh_vector
     return float(np.ptp(mesh))
 
@@ -99,13 +99,14 @@ def branch_step(system: BacklashSystem, carried: np.ndarray | None, basis: np.nd
     from the ``carried`` state stored there."""
     state = None if carried is None else from_full(carried, basis, metric)
     run_in = False
+    cache: dict = {}  # this point's exponentials, shared by its shootings and its run-in
     try:
-        orbit = backlash_periodic_orbit(system, state, substeps, tolerance, max_iterations)
+        orbit = backlash_periodic_orbit(system, state, substeps, tolerance, max_iterations, cache=cache)
         if not orbit.stable and state is not None:
             start = state
             for _ in range(run_in_periods):
-                start, _, _ = backlash_flow_ndof(system, start, substeps)
-            orbit = backlash_periodic_orbit(system, start, substeps, tolerance, max_iterations)
+                start, _, _ = backlash_flow_ndof(system, start, substeps, monodromy=False, cache=cache)
+            orbit = backlash_periodic_orbit(system, start, substeps, tolerance, max_iterations, cache=cache)
             run_in = True
     except (ModelLimitError, ProblemError, np.linalg.LinAlgError, ValueError):
         # no orbit at this point (ValueError: SciPy's "Array must not contain infs or NaNs" of a flow that
@@ -157,7 +158,7 @@ def follow_backlash_branch(systems: Sequence[BacklashSystem], direction: str = "
                 states[index, :state.size] = state
                 fraction[index] = orbit.free_flight_time / system.linear.period
                 if measure_swing:
-                    peak[index] = _peak_to_peak(system, state, substeps)
+                    peak[index] = _peak_to_peak(system, state, substeps, {})
         if progress is not None:
             progress(1)
     return BacklashBranchNDOF(labels, direction, converged, stable, run_in, fraction, peak, states)

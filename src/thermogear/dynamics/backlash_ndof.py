@@ -27,53 +27,18 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from thermogear.dynamics.backlash_pieces import PieceExponentials, contact_state_system
+from thermogear.dynamics.backlash_switches import DeadZone, count_crossings, first_switch, odd_crossings, saltation
 from thermogear.dynamics.periodic_ndof import PiecewiseLinearSystem, periodic_response
-from thermogear.dynamics.piece_groups import representative_rows
 from thermogear.dynamics.problem import checked_array
-from thermogear.errors import ProblemError
+from thermogear.errors import ModelLimitError, ProblemError
 
 __all__ = ["BACK_CONTACT", "DRIVING_CONTACT", "FREE_FLIGHT", "BacklashSystem", "BacklashOrbitNDOF", "DeadZone",
-           "backlash_flow_ndof", "backlash_periodic_orbit", "odd_crossings"]
+           "backlash_flow_ndof", "backlash_periodic_orbit", "odd_crossings", "piece_exponentials",
+           "switch_free_record"]
 
 DRIVING_CONTACT, FREE_FLIGHT, BACK_CONTACT = 0, 1, 2  # the mesh's contact regions (driving flanks, none, back flanks)
 _DRIVE, _FREE, _BACK = DRIVING_CONTACT, FREE_FLIGHT, BACK_CONTACT
-
-
-@dataclass(frozen=True, eq=False)
-class DeadZone:
-    """A spring ``stiffness`` k [N/m] and dashpot ``damping`` c [N·s/m] on u = vᵀq (``vector`` v) that act only
-    beyond the ``clearance`` ±δ [m] >= 0: the force along v is −k(u − δ) − c·u̇ for u > δ, −k(u + δ) − c·u̇ for
-    u < −δ and zero in between. The linear system of the :class:`BacklashSystem` includes k v vᵀ and c v vᵀ (the
-    element in contact); with δ = 0 the element is linear."""
-
-    vector: np.ndarray
-    stiffness: float
-    damping: float
-    clearance: float
-
-    def __post_init__(self) -> None:
-        object.__setattr__(self, "vector", np.asarray(self.vector, dtype=float))
-        for key in ("stiffness", "damping", "clearance"):
-            value = getattr(self, key)
-            if not isinstance(value, (int, float)) or not np.isfinite(value) or value < 0.0:
-                raise ProblemError(f"dead_zone.{key}", value, ">= 0, finite", "a spring, dashpot and gap of a contact")
-
-    def engaged(self, value: np.ndarray, rate: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """The dead-zone law on samples of u = vᵀq [m], u̇ [m/s]: the stretch u ∓ δ beyond ±δ and the rate in contact
-        (0 inside); the force along v is −(k·stretch + c·rate) (written once; the solver's regions: :meth:`side`)."""
-        value, rate = np.asarray(value, dtype=float), np.asarray(rate, dtype=float)
-        beyond = np.abs(value) > self.clearance
-        return (np.where(beyond, value - np.sign(value) * self.clearance, 0.0),
-                np.where(beyond, rate, 0.0))
-
-    def side(self, state: np.ndarray, size: int) -> int:
-        """+1 or −1 in contact beyond +δ or −δ, 0 inside the clearance (on a boundary, by the rate)."""
-        value, rate = self.vector @ state[:size], self.vector @ state[size:2 * size]
-        if value > self.clearance or (value == self.clearance and rate > 0.0):
-            return 1
-        if value < -self.clearance or (value == -self.clearance and rate < 0.0):
-            return -1
-        return 0
 
 
 @dataclass(frozen=True, eq=False)
@@ -103,29 +68,38 @@ class BacklashSystem:
         if not np.isfinite(self.backlash) or self.backlash <= 0.0:
             raise ProblemError("backlash", self.backlash, "> 0 m", "a zero or negative backlash is a jammed mesh")
 
-    def region_matrix(self, piece: int, region: int, mass_inverse: np.ndarray,
-                      sides: tuple[int, ...] = ()) -> np.ndarray:
-        """Augmented (2n+1)² matrix of one piece in one contact region of the mesh and, for each dead zone, its
-        side (+1, −1 in contact; 0 inside the clearance; all in contact when ``sides`` is empty)."""
-        system = self.linear
-        n = system.size
-        k = system.stiffness_factor[piece] if region != _FREE else 0.0
-        shift = {_DRIVE: self.deviation[piece], _FREE: 0.0, _BACK: self.deviation[piece] - self.backlash}[region]
-        stiffness = system.stiffness + k * system.stiffness_pattern
-        damping = system.damping + system.damping_factor[piece] * system.damping_pattern
-        force = system.force + k * shift * self.mesh_vector
-        for zone, side in zip(self.dead_zones, sides):
-            if side == 0:
-                pattern = np.outer(zone.vector, zone.vector)
-                stiffness, damping = stiffness - zone.stiffness * pattern, damping - zone.damping * pattern
-            else:
-                force = force + side * zone.stiffness * zone.clearance * zone.vector
-        matrix = np.zeros((2 * n + 1, 2 * n + 1))
-        matrix[:n, n:2 * n] = np.eye(n)
-        matrix[n:2 * n, :n] = -mass_inverse @ stiffness
-        matrix[n:2 * n, n:2 * n] = -mass_inverse @ damping
-        matrix[n:2 * n, 2 * n] = mass_inverse @ force
-        return matrix
+    def keeps_state(self, states: np.ndarray, piece, key: tuple) -> bool:
+        """Whether every state of ``states`` (k, ≥ 2n) on a piece (or, an array of k, each on its own) is in the
+        contact state ``key`` (mesh region, dead zone sides), by the rules of :meth:`region` and
+        :meth:`DeadZone.side`, for all rows at once."""
+        return self.keeps_projected_state(states[:, :2 * self.linear.size] @ self.state_functionals().T, piece, key)
+
+    def state_functionals(self) -> np.ndarray:
+        """(2 + 2·zones, 2n): the rows that give g + e_j = wᵀq, ġ = wᵀq̇ and each dead zone's u = vᵀq and u̇ of a
+        state (for :meth:`keeps_projected_state`)."""
+        n = self.linear.size
+        rows = np.zeros((2 + 2 * len(self.dead_zones), 2 * n))
+        rows[0, :n], rows[1, n:] = self.mesh_vector, self.mesh_vector
+        for index, zone in enumerate(self.dead_zones):
+            rows[2 + 2 * index, :n], rows[3 + 2 * index, n:] = zone.vector, zone.vector
+        return rows
+
+    def keeps_projected_state(self, values: np.ndarray, piece, key: tuple) -> bool:
+        """:meth:`keeps_state` from the states' :meth:`state_functionals` ``values`` (k, 2 + 2·zones)."""
+        gap, rate = values[:, 0] - self.deviation[piece], values[:, 1]
+        region, sides = key
+        driving = (gap > 0.0) | ((gap == 0.0) & (rate > 0.0))
+        back = (gap < -self.backlash) | ((gap == -self.backlash) & (rate < 0.0))
+        inside = driving if region == _DRIVE else back if region == _BACK else ~(driving | back)
+        if not np.all(inside):
+            return False
+        for index, (zone, side) in enumerate(zip(self.dead_zones, sides)):
+            value, speed = values[:, 2 + 2 * index], values[:, 3 + 2 * index]
+            above = (value > zone.clearance) | ((value == zone.clearance) & (speed > 0.0))
+            below = (value < -zone.clearance) | ((value == -zone.clearance) & (speed < 0.0))
+            if not np.all(above if side > 0 else below if side < 0 else ~(above | below)):
+                return False
+        return True
 
     def sides(self, state: np.ndarray) -> tuple[int, ...]:
         """The side of every dead zone (:meth:`DeadZone.side`)."""
@@ -150,58 +124,68 @@ def backlash_flow_ndof(system: BacklashSystem, state: np.ndarray, substeps: int 
     "free_flight_time", "back_contact_time", "zone_switches", "crossings", "time", "states", "segments"} (the last
     three filled when ``record``: the state after every segment and the (piece, region, dead-zone sides) that held on
     it; a segment may be empty, h = 0, where a switch was found at its start). ``cache``: a dict kept between calls
-    on the same system (the exponentials of each piece's contact states are computed once per ``substeps``). A piece
-    crossed without a switch enters the monodromy as one cached power of its sub-step exponential."""
+    on the same system (the pieces' exponentials of each contact state, :class:`~thermogear.dynamics.backlash_pieces.
+    PieceExponentials`, are formed once per ``substeps``, in batches).
+
+    Each piece is first stepped through its ``substeps`` sub-steps in the contact state it starts in and the states
+    checked at once; where none changed state, that is the piece's motion (the same sub-step ends the switch search
+    looks at) and it enters the monodromy as the whole piece's transition. Otherwise the sub-steps are taken one by
+    one from the piece's start and every switch is located (module docstring)."""
     from scipy.linalg import expm
 
     linear = system.linear
     n = linear.size
-    inverse = np.linalg.inv(linear.mass)
+    cache = {} if cache is None else cache
+    pieces = piece_exponentials(system, substeps, cache)
     z = np.append(np.asarray(state, dtype=float), 1.0)
     total = np.eye(2 * n + 1) if monodromy else None
-    cache = {} if cache is None else cache
     info = {"switches": 0, "free_flight_time": 0.0, "back_contact_time": 0.0, "zone_switches": 0, "time": [0.0],
             "states": [z[:-1]], "segments": [], "crossings": {}}
-
-    if "representative" not in cache:  # pieces equal within PIECE_TOLERANCE share their exponentials
-        cache["representative"] = representative_rows(np.column_stack([
-            np.diff(linear.nodes), linear.stiffness_factor, linear.damping_factor, system.deviation]))
-    representative = cache["representative"]
-
-    def exponentials(piece: int, key: tuple) -> tuple[np.ndarray, np.ndarray]:
-        """(augmented matrix, its exponential over one sub-step) of a piece in one contact state, cached (on the
-        first piece of its group: :func:`~thermogear.dynamics.piece_groups.representative_rows`)."""
-        piece = int(representative[piece])
-        if (piece, key, substeps) not in cache:
-            matrix = system.region_matrix(piece, key[0], inverse, key[1])
-            width = linear.nodes[piece + 1] - linear.nodes[piece]
-            cache[(piece, key, substeps)] = (matrix, expm(matrix * (width / substeps)))
-        return cache[(piece, key, substeps)]
-
     key = None
     for piece in range(linear.nodes.size - 1):
         start, stop = linear.nodes[piece], linear.nodes[piece + 1]
         step = (stop - start) / substeps
         previous, key = key, (system.region(z, piece), system.sides(z))  # at a node the deviation steps: afresh
         if previous is not None:
-            _count_crossings(info["crossings"], previous, key)
-        first_key, uniform, product = key, True, []
+            count_crossings(info["crossings"], previous, key)
+        full_step = pieces.step(piece, key)
+        states = np.empty((substeps, 2 * n + 1))
+        trial = z
+        for index in range(substeps):
+            trial = full_step @ trial
+            states[index] = trial
+        if system.keeps_state(states, piece, key):  # the whole piece in one contact state
+            if key[0] == _FREE:
+                info["free_flight_time"] += stop - start
+            elif key[0] == _BACK:
+                info["back_contact_time"] += stop - start
+            if record:
+                for index in range(substeps):
+                    info["time"].append(start + (index + 1) * step if index + 1 < substeps else stop)
+                    info["states"].append(states[index, :-1])
+                    info["segments"].append((piece, key[0], key[1]))
+            z = states[-1]
+            if monodromy:
+                total = pieces.whole(piece, key) @ total
+            if not np.all(np.isfinite(z)):
+                raise ProblemError("state", "not finite", "a bounded motion", "the coefficients are out of range")
+            continue
+        product = []
         t = start
         while t < stop - 1e-12 * (stop - start):
-            matrix, full_step = exponentials(piece, key)
+            matrix, full_step = pieces.matrix(piece, key), pieces.step(piece, key)
             h = min(step, stop - t)
             trial = (full_step if h == step else expm(matrix * h)) @ z
             after = (system.region(trial, piece), system.sides(trial))
             following, zone = key, None
             if after != key:
-                h, following, zone, switched, seen = _first_switch(system, piece, key, after, matrix, z, h,
+                h, following, zone, switched, seen = first_switch(system, piece, key, after, matrix, z, h,
                                                                    stop - start)
                 info["switches" if zone is None else "zone_switches"] += switched
                 if seen:  # a crossing at a known instant (not a change taken over a whole sub-step)
-                    _count_crossings(info["crossings"], key, following)
+                    count_crossings(info["crossings"], key, following)
             if h > 0.0:
                 segment = full_step if h == step else expm(matrix * h)
-                uniform = uniform and h == step and key == first_key
                 if monodromy:
                     product.append(segment)
                 z = segment @ z
@@ -210,11 +194,8 @@ def backlash_flow_ndof(system: BacklashSystem, state: np.ndarray, substeps: int 
                 elif key[0] == _BACK:
                     info["back_contact_time"] += h
                 t += h
-            if zone is not None:  # the dead zone's dashpot starts or stops: the vector field jumps
-                uniform = False
-                if monodromy:
-                    product.append(_saltation(matrix, exponentials(piece, following)[0],
-                                              system.dead_zones[zone].vector, z))
+            if zone is not None and monodromy:  # the dead zone's dashpot starts or stops: the vector field jumps
+                product.append(saltation(matrix, pieces.matrix(piece, following), system.dead_zones[zone].vector, z))
             if record:
                 info["time"].append(t)
                 info["states"].append(z[:-1])
@@ -223,102 +204,19 @@ def backlash_flow_ndof(system: BacklashSystem, state: np.ndarray, substeps: int 
             if not np.all(np.isfinite(z)):
                 raise ProblemError("state", "not finite", "a bounded motion", "the coefficients are out of range")
         if monodromy:
-            total = _piece_product(cache, (int(representative[piece]), first_key, substeps), product,
-                                   uniform) @ total
-    _count_crossings(info["crossings"], key, (system.region(z, 0), system.sides(z)))  # the period's end node
+            for matrix in product:
+                total = matrix @ total
+    count_crossings(info["crossings"], key, (system.region(z, 0), system.sides(z)))  # the period's end node
     return z[:-1], None if total is None else total[:-1, :-1], info
 
 
-def _piece_product(cache: dict, entry: tuple, product: list, uniform: bool) -> np.ndarray:
-    """The transition over one piece: where one contact state held throughout in full sub-steps, the cached power
-    of its sub-step exponential (exact: the same linear flow), else the product of its segments and saltations."""
-    if uniform and product:
-        if ("piece", *entry) not in cache:
-            cache[("piece", *entry)] = np.linalg.matrix_power(cache[entry][1], len(product))
-        return cache[("piece", *entry)]
-    result = np.eye(cache[entry][0].shape[0])
-    for matrix in product:
-        result = matrix @ result
-    return result
-
-
-def _count_crossings(counts: dict, before: tuple, after: tuple) -> None:
-    """Add the boundaries crossed from contact state ``before`` to ``after`` to ``counts``: ("mesh", 0) the
-    driving-flank boundary g = 0, ("mesh", 1) the back-flank one g = −b, ("zone", i, ±1) dead zone i's u = ±δ."""
-    regions = {before[0], after[0]}
-    if regions & {_DRIVE} and regions - {_DRIVE}:
-        counts[("mesh", 0)] = counts.get(("mesh", 0), 0) + 1
-    if regions & {_BACK} and regions - {_BACK}:
-        counts[("mesh", 1)] = counts.get(("mesh", 1), 0) + 1
-    for index, (old, new) in enumerate(zip(before[1], after[1])):
-        for side in (1, -1):
-            if (old == side) != (new == side):
-                counts[("zone", index, side)] = counts.get(("zone", index, side), 0) + 1
-
-
-def odd_crossings(counts: dict) -> list:
-    """The boundaries crossed an odd number of times (``counts`` as the flow's "crossings"). A closed orbit crosses
-    each boundary an even number of times per period (it returns to the side it started on), counting the jumps of
-    the boundary at the nodes (the deviation steps); an odd count on a "periodic" point means a crossing that was
-    not located — a change of region taken over a whole sub-step — so the point is no orbit of the system."""
-    return sorted(boundary for boundary, count in counts.items() if count % 2)
-
-
-def _first_switch(system: BacklashSystem, piece: int, key: tuple, after: tuple, matrix: np.ndarray, z: np.ndarray,
-                  h: float, width: float) -> tuple[float, tuple, int | None, int, bool]:
-    """The first boundary crossed within h: (time to it, the region after it, the dead zone's index or None for the
-    mesh, 1 when a crossing was located by a sign change, whether its instant is known at all — on the boundary
-    already counts). Without a crossing found (a double crossing or a boundary state) the step is taken whole and
-    the region of the first changed element moves on, as for one element."""
-    from scipy.linalg import expm
-    from scipy.optimize import brentq
-
-    n = system.linear.size
-    candidates = []  # (vector, boundary, offset, region after, zone index)
-    region, sides = key
-    if after[0] != region:
-        # the boundary crossed first: from free flight the one on the side the motion ends
-        boundary = -system.backlash if (region == _BACK or (region == _FREE and after[0] == _BACK)) else 0.0
-        following = _FREE if region != _FREE else after[0]
-        candidates.append((system.mesh_vector, boundary + system.deviation[piece], (following, sides), None))
-    for index, (old, new) in enumerate(zip(sides, after[1])):
-        if old != new:
-            zone = system.dead_zones[index]
-            boundary = zone.clearance if (old > 0 or (old == 0 and new > 0)) else -zone.clearance
-            side = 0 if old != 0 else (1 if new > 0 else -1)
-            candidates.append((zone.vector, boundary, (region, sides[:index] + (side,) + sides[index + 1:]), index))
-    best = None
-    for vector, boundary, following, index in candidates:
-        def distance(s, m=matrix, v=vector, b=boundary):
-            return v @ (expm(m * s) @ z)[:n] - b
-
-        low, high = distance(0.0), distance(h)
-        if low * high < 0.0:
-            root, located = brentq(distance, 0.0, h, xtol=1e-13 * width, rtol=1e-14), 1
-        elif low == 0.0 or (index is not None and abs(low) <= 1e-8 * abs(high)):
-            # on the boundary already (a switch just located leaves |u − ±δ| ~ 1e-13 of the motion, on either
-            # side): the element passes through at once — a zero clearance has no inside to dwell in
-            root, located = 0.0, 0
-        else:
-            continue
-        if best is None or root < best[0]:
-            best = (root, following, index, located)
-    if best is None:
-        _, _, following, index = candidates[0]
-        return h, following, index, 0, False
-    return (*best, True)
-
-
-def _saltation(before: np.ndarray, after: np.ndarray, vector: np.ndarray, z: np.ndarray) -> np.ndarray:
-    """S = I + (f⁺ − f⁻) nᵀ/(nᵀ f⁻) on the augmented state at a switch of u = vᵀq (identity at a grazing one)."""
-    size = vector.size
-    normal = np.zeros(z.size)
-    normal[:size] = vector
-    field_before, field_after = before @ z, after @ z
-    rate = normal @ field_before
-    if rate == 0.0:
-        return np.eye(z.size)
-    return np.eye(z.size) + np.outer(field_after - field_before, normal) / rate
+def piece_exponentials(system: BacklashSystem, substeps: int, cache: dict) -> PieceExponentials:
+    """The :class:`~thermogear.dynamics.backlash_pieces.PieceExponentials` of ``system`` with ``substeps``
+    sub-steps per piece, kept in ``cache`` (a dict kept between calls on the same system)."""
+    entry = ("pieces", int(substeps))
+    if entry not in cache:
+        cache[entry] = PieceExponentials(system, int(substeps), np.linalg.inv(system.linear.mass))
+    return cache[entry]
 
 
 @dataclass(frozen=True, eq=False)
@@ -360,8 +258,12 @@ def backlash_periodic_orbit(system: BacklashSystem, initial_state: np.ndarray | 
     same system (e.g. its sampling).
     """
     cache = {} if cache is None else cache
-    state = (periodic_response(system.linear, 1).initial_state if initial_state is None
-             else np.asarray(initial_state, dtype=float))
+    if initial_state is None:
+        state, orbit = _switch_free_orbit(system, int(substeps), tolerance, cache)
+        if orbit is not None:
+            return orbit
+    else:
+        state = np.asarray(initial_state, dtype=float)
     steps = int(substeps)
     while True:
         orbit, crossings = _shoot(system, state, steps, tolerance, max_iterations, cache)
@@ -374,6 +276,72 @@ def backlash_periodic_orbit(system: BacklashSystem, initial_state: np.ndarray | 
                 f"boundaries crossed an odd number of times per period ({', '.join(map(str, odd))}) with "
                 f"{steps} sub-steps per piece: a switch is missed, the point is no closed orbit"))
         state, steps = orbit.initial_state, 2 * steps
+
+
+def _switch_free_orbit(system: BacklashSystem, substeps: int, tolerance: float, cache: dict
+                       ) -> tuple[np.ndarray, BacklashOrbitNDOF | None]:
+    """(the linear periodic state, the orbit where it needs no shooting, else None).
+
+    The linear periodic state (every element in contact, no clearance) starts the shooting. Where its contact state
+    (driving flanks, each dead zone's side) gives a periodic orbit of that state's own linear system (with the
+    clearances' constant forces) that keeps the state at every sub-step end — the instants at which the flow looks
+    for switches — the flow from it never switches: it is a closed orbit of the backlash system, and its monodromy is
+    that system's. So it is returned without a flow: one periodic solution of the contact state's system
+    (:func:`~thermogear.dynamics.periodic_ndof.periodic_response`, all pieces batched) instead of Newton's flows of
+    the whole period with their monodromy products. Its sub-step states are kept in ``cache`` for the sampling
+    (:func:`switch_free_record`)."""
+    response = periodic_response(system.linear, substeps)
+    start = response.initial_state
+    key = (system.region(start, 0), system.sides(start))
+    if key[0] != _DRIVE:
+        return start, None
+    if any(zone.clearance > 0.0 for zone in system.dead_zones):  # the clearances' forces: another system
+        # each loaded clearance closed on the side its load pushes it to (the sign of its deflection in the linear
+        # state): the contact state of a shaft that rests in its bearings
+        n = system.linear.size
+        key = (_DRIVE, tuple(1 if zone.vector @ start[:n] >= 0.0 else -1 for zone in system.dead_zones))
+        try:
+            response = periodic_response(contact_state_system(system, key), substeps)
+        except ModelLimitError:
+            return start, None
+        # where its start rests against the sides assumed, the shooting starts from this orbit even if it is no
+        # orbit of the backlash system (a switch later in the period): the shaft rests against the side of each
+        # clearance the load pushes it to, δ from the bearing's centre, which the linear state (every clearance
+        # closed) misses by δ — tens of μm against a few μm of deflection. Otherwise (a clearance wider than the
+        # load moves the shaft) the linear state is the better start.
+        if system.sides(response.initial_state) == key[1]:
+            start = response.initial_state
+    states = np.hstack([response.displacement, response.velocity])
+    pieces = system.linear.nodes.size - 1
+    rows = np.arange(states.shape[0])
+    # each sub-step end on its own piece (as the flow checks it) and each piece's start on the new piece
+    if not (system.keeps_state(states[1:], (rows[1:] - 1) // substeps, key)
+            and system.keeps_state(states[:-1], rows[:-1] // substeps, key)):
+        return start, None
+    n = system.linear.size
+    initial = response.initial_state
+    scale = np.concatenate([np.full(n, max(np.abs(initial[:n]).max(), 1e-300)),
+                            np.full(n, max(np.abs(initial[n:]).max(), 1e-300))])
+    residual = float(np.abs((states[-1] - states[0]) / scale).max())
+    if residual > tolerance:
+        return start, None
+    cache[("switch-free orbit", substeps)] = (initial, states, response.time, key, pieces)
+    orbit = BacklashOrbitNDOF(initial, response.multipliers, True, residual, 0, 0, 0.0, 0.0, substeps=substeps)
+    return initial, orbit
+
+
+def switch_free_record(cache: dict, state: np.ndarray, substeps: int) -> tuple[np.ndarray, dict] | None:
+    """(end state, the record of :func:`backlash_flow_ndof`) of one period from ``state`` where it is the orbit
+    :func:`backlash_periodic_orbit` found without switches (its sub-step states, kept in ``cache``), else None."""
+    entry = cache.get(("switch-free orbit", int(substeps)))
+    if entry is None or not np.array_equal(entry[0], state):
+        return None
+    initial, states, time, key, pieces = entry
+    rows = np.arange(1, states.shape[0])
+    info = {"switches": 0, "free_flight_time": 0.0, "back_contact_time": 0.0, "zone_switches": 0,
+            "time": list(time), "states": list(states), "crossings": {},
+            "segments": [(int(piece), key[0], key[1]) for piece in (rows - 1) // int(substeps)]}
+    return states[-1], info
 
 
 def _shoot(system: BacklashSystem, state: np.ndarray, substeps: int, tolerance: float, max_iterations: int,

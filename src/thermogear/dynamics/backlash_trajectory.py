@@ -18,8 +18,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from thermogear.dynamics.backlash_ndof import (BACK_CONTACT, DRIVING_CONTACT, FREE_FLIGHT, BacklashSystem,
-                                               backlash_flow_ndof)
-from thermogear.dynamics.periodic_ndof import PiecewiseLinearSystem
+                                               backlash_flow_ndof, piece_exponentials, switch_free_record)
+from thermogear.dynamics.backlash_pieces import exponential_action
+from thermogear.dynamics.periodic_ndof import PiecewiseLinearSystem, piece_steps
 from thermogear.errors import ProblemError
 
 __all__ = ["BacklashTrajectory", "backlash_trajectory", "linear_trajectory"]
@@ -96,8 +97,6 @@ def backlash_trajectory(system: BacklashSystem, state: np.ndarray, periods: int 
     mesh force in one contact region) takes its exact maximum at a sample. ``cache``: the flow's exponentials,
     e.g. those of the shooting that found the orbit (:func:`~thermogear.dynamics.backlash_ndof.backlash_flow_ndof`).
     """
-    from scipy.linalg import expm
-
     for key, value in (("periods", periods), ("samples_per_piece", samples_per_piece)):
         if isinstance(value, bool) or int(value) != value or value < 1:
             raise ProblemError(key, value, "integer >= 1", "whole periods and samples per piece")
@@ -108,7 +107,11 @@ def backlash_trajectory(system: BacklashSystem, state: np.ndarray, periods: int 
     totals = {"switches": 0, "zone_switches": 0, "free_flight_time": 0.0, "back_contact_time": 0.0}
     cache = {} if cache is None else cache  # the pieces' exponentials, computed once, reused by every period
     for index in range(int(periods)):
-        z, _, info = backlash_flow_ndof(system, z, substeps, record=True, monodromy=False, cache=cache)
+        recorded = switch_free_record(cache, z, substeps) if int(periods) == 1 else None
+        if recorded is None:
+            z, _, info = backlash_flow_ndof(system, z, substeps, record=True, monodromy=False, cache=cache)
+        else:  # the orbit of one contact state the shooting found from its linear solution: its sub-step states
+            z, info = recorded
         for name in totals:
             totals[name] += info[name]
         offset = index * period
@@ -137,17 +140,15 @@ def backlash_trajectory(system: BacklashSystem, state: np.ndarray, periods: int 
         # a grid time on a recorded segment start (sub-steps a multiple of the grid) differs from it by rounding of
         # the summed times only: the recorded state stands for it (no exponential; the shift is ~1e-16 of T)
         samples.append((float(t), 1, int(k), 0.0 if into <= 1e-13 * period else into))
-    inverse = np.linalg.inv(linear.mass)
-    matrices: dict[tuple, np.ndarray] = {}
+    pieces = piece_exponentials(system, substeps, cache)
 
     def evaluate(k: int, into: float) -> np.ndarray:
-        if keys[k] not in matrices:
-            matrices[keys[k]] = system.region_matrix(keys[k][0], keys[k][1], inverse, keys[k][2])
         if into == 0.0:
             return starts[k]
         if k + 1 < len(starts) and abs(bounds[k, 1] - bounds[k, 0] - into) <= 1e-13 * period:
             return starts[k + 1]  # the segment's end: the state is continuous across every switch
-        return (expm(matrices[keys[k]] * into) @ np.append(starts[k], 1.0))[:-1]
+        matrix = pieces.matrix(keys[k][0], (keys[k][1], keys[k][2]))
+        return exponential_action(matrix, np.append(starts[k], 1.0), into)[:-1]
 
     samples.sort(key=lambda item: (item[0], item[1]))
     values = [evaluate(k, into) for _, _, k, into in samples]
@@ -194,15 +195,12 @@ def linear_trajectory(system: PiecewiseLinearSystem, state: np.ndarray, periods:
     ``periods`` periods, exact at ``samples_per_piece`` equal steps per piece and the end (each step the exponential
     of the piece's augmented matrix); in the form of :func:`backlash_trajectory`, region driving contact throughout
     and no dead zone."""
-    from scipy.linalg import expm
-
     for key, value in (("periods", periods), ("samples_per_piece", samples_per_piece)):
         if isinstance(value, bool) or int(value) != value or value < 1:
             raise ProblemError(key, value, "integer >= 1", "whole periods and samples per piece")
     n, pieces, samples = system.size, system.nodes.size - 1, int(samples_per_piece)
-    inverse = np.linalg.inv(system.mass)
-    steps = [expm(system.augmented(piece, inverse) * (system.nodes[piece + 1] - system.nodes[piece]) / samples)
-             for piece in range(pieces)]
+    distinct, where = piece_steps(system, samples)  # every piece's sub-step exponential, batched
+    steps = distinct[where]
     z = np.append(np.asarray(state, dtype=float), 1.0)
     values, times, piece_of = [], [], []
     offsets = np.arange(samples) / samples
