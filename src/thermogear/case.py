@@ -18,6 +18,7 @@ from typing import Any, Callable
 
 import pydantic
 
+from thermogear.temperature_kinds import temperature_source
 from thermogear import warning_scope
 from thermogear.case_errors import case_error_from_validation
 from thermogear.case_keys import warn_keys_without_effect
@@ -223,7 +224,7 @@ def check_profile_shift_sum(gears) -> None:
 
 def _check_temperature_field(case: "Case") -> None:
     section = case.temperature
-    if section.model not in ("uniform", "tabulated"):  # "fem": computed by its provider, checked there
+    if not temperature_source(section.model).given:  # computed by its provider, checked there
         return
     field = temperature_field_from_section(section, case.directory)
     pair = case.gear_pair
@@ -299,7 +300,7 @@ def case_from_document(document: dict[str, Any], source: str = "<memory>") -> Ca
         lubricant=model.lubricant, temperature=temperature, thermal=model.thermal, damping=model.damping,
         dynamics=model.dynamics, fem=model.fem, source=source, document=document, housing=model.housing,
         gears_input=gears, material_input=material, notes=notes, gearbox=model.gearbox, drivetrain=model.drivetrain)
-    if case.temperature.model not in ("uniform", "tabulated", "fem"):  # predicted at load time (see below)
+    if temperature_source(case.temperature.model).predicted_at_load:  # (see below)
         case = _resolve_temperature_model(case)
     check_case(case)
     warn_keys_without_effect(case.thermal, case.dynamics)

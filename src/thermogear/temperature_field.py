@@ -22,6 +22,7 @@ from pathlib import Path
 
 import numpy as np
 
+from thermogear.temperature_kinds import temperature_source
 from thermogear.errors import CaseError, ExtrapolationWarning, ModelAssumptionWarning, shown_value
 from thermogear.text_files import is_existing_file, read_user_text
 
@@ -250,7 +251,7 @@ def check_temperatures(field: TemperatureField, gamma_start: float, gamma_end: f
     floor = field.reference_c if limits.lowest_c is None else limits.lowest_c
     floor_text = (f">= reference_c = {field.reference_c:g} °C" if limits.lowest_c is None else f">= {floor:g} °C")
     for key, (name, lowest, highest) in values.items():
-        key = "temperature.bulk_c" if field.source == "uniform" else key
+        key = "temperature.bulk_c" if temperature_source(field.source).uniform else key
         if not (math.isfinite(lowest) and math.isfinite(highest)):
             raise CaseError(key, lowest, "finite", "a temperature is NaN or infinite")
         if lowest < floor:
@@ -287,7 +288,7 @@ def default_bulk_temperature(section, lubricant) -> tuple[object, tuple[str, ...
     bodies and oil in thermal equilibrium, no frictional heating of the teeth above the oil. The bulk temperature of
     a running pair lies at or above its oil temperature, so this is its lower bound. Returns ``(section, notes)``;
     the section unchanged and no note when the case gives a temperature."""
-    if section.model != "uniform" or section.bulk_c is not None:
+    if not temperature_source(section.model).uniform or section.bulk_c is not None:
         return section, ()
     oil = lubricant.operating_temperature_c
     note = (f"temperature: no bulk temperature given ([temperature] bulk_c): the gears are taken at the oil's "
@@ -300,9 +301,9 @@ def default_bulk_temperature(section, lubricant) -> tuple[object, tuple[str, ...
 def temperature_field_from_section(section, directory: Path | None = None) -> TemperatureField:
     """The TemperatureField of a ``uniform`` or ``tabulated`` ``[temperature]`` section (CSV paths relative to
     ``directory``). Raises CaseError for bad input."""
-    if section.model == "uniform":
+    if temperature_source(section.model).uniform:
         return _uniform_field(section)
-    if section.model == "tabulated":
+    if temperature_source(section.model).tabulated:
         return _tabulated_field(section, directory)
     raise CaseError("temperature.model", section.model, "uniform | tabulated here",
                     "this model's field comes from its provider (see thermogear.temperature_source)")
