@@ -58,6 +58,7 @@ class PairResult:
     response: DynamicResponse
     metrics: LinearMetrics | NonlinearMetrics
     damping_ratio: float | None
+    mesh_stiffness: Any = None  # k(τ) on the mesh-cycle intervals [N/m] (the pairs in contact in parallel)
 
     @property
     def kv(self) -> float | None:
@@ -71,7 +72,7 @@ class PairResult:
         sets the "max system load / static" ratio (issue 36)."""
         import numpy as np  # noqa: PLC0415
 
-        stiffness = self.response.problem.stiffness
+        stiffness = np.asarray(self.mesh_stiffness, dtype=float)
         return float(np.max(stiffness / np.roll(stiffness, 1)))
 
     def to_dataset(self):
@@ -194,8 +195,10 @@ class Orchestrator:
         """The 1-DOF pair under ``model``, solved (raises ModelLimitError where the model cannot give a result)."""
         from thermogear.dynamics.metric_results import typed_metrics  # noqa: PLC0415
 
-        response = self.simulation(model).run()
-        return PairResult(model, response, typed_metrics(response.metrics), response.metrics.get("damping_ratio"))
+        simulation = self.simulation(model)
+        response = simulation.run()
+        return PairResult(model, response, typed_metrics(response.metrics), response.metrics.get("damping_ratio"),
+                          simulation.mesh_stiffness)
 
     def drivetrain(self, progress: Callable[[str], None] | None = None,
                    series: dict | None = None) -> DrivetrainResults | None:

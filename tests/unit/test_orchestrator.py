@@ -6,6 +6,7 @@ from __future__ import annotations
 import math
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 import thermogear
@@ -33,6 +34,9 @@ def test_run_of_a_pair_case_equals_the_simulation_it_wires():
         assert typed.kv == direct["kv"] and typed.dte_rms == direct["dte_rms"]  # the same chain: equal, not close
         assert results.headline_kv(model) == (direct["kv"], "pair")
     assert results.drivetrain is None and results.drivetrain_not_computed is None
+    # the step of k(τ) into double contact, from the mesh period whatever the contact law solved
+    stiffness = Simulation(case, "thermal").mesh_stiffness
+    assert results.pair["thermal"].mesh_stiffness_step_ratio == max(stiffness / np.roll(stiffness, 1)) > 1.0
     frame = results.to_dataframe()
     assert list(frame.index) == [("pair", "elastic"), ("pair", "thermal")]
     assert frame.loc[("pair", "thermal"), "kv"] == results.pair["thermal"].kv
@@ -112,3 +116,14 @@ def test_each_result_has_a_table_and_a_dataset(two_shafts):
     series = model.to_dataset()
     assert series["bearing_force"].dims == ("bearing", "sample", "axis") and series.attrs["kv"] == model.kv
     assert set(two_shafts.to_dataset()["kv"].values.ravel()) >= {model.kv, two_shafts.pair["elastic"].kv}
+
+
+def test_the_backlash_pair_runs_through_the_orchestrator_as_the_simulation():
+    from thermogear.dynamics.metric_results import NonlinearMetrics
+
+    case = load_case("luo2019").with_changes(**{"dynamics.mesh": "nonlinear"})
+    results = thermogear.run(case, models=("elastic",))
+    pair = results.pair["elastic"]
+    assert isinstance(pair.metrics, NonlinearMetrics)
+    assert pair.kv == Simulation(case, "elastic").run().metrics["kv"]
+    assert pair.mesh_stiffness_step_ratio > 1.0  # the linear mesh period's k(τ), whatever problem was solved
