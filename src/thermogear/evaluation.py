@@ -170,7 +170,7 @@ def evaluate_case(case, method: str = "periodic", models: tuple[str, ...] = MODE
             evaluation.pairs[model] = orchestrator.pair(model)
             evaluation.responses[model] = evaluation.pairs[model].response
             cite("floquet1883" if method == "periodic" else "rk4", "den_hartog1931", "iso_tr13989_1", "astm_d341")
-            if simulation.mesh_model.thermal:
+            if evaluation.simulations[model].mesh_model.thermal:
                 cite("timoshenko1951")
 
         _run_stage(evaluation, f"{model} model", run_model)
