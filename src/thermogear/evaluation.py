@@ -134,12 +134,12 @@ def _run_stage(evaluation: Evaluation, name: str, function: Callable[[], None]) 
 
 def evaluate_case(case, method: str = "periodic", models: tuple[str, ...] = MODELS, transient: bool = True,
                   progress: Callable[[str], None] | None = None, wait: bool = True,
-                  rig_prediction: bool | None = None) -> Evaluation:
+                  rig_prediction: bool = False) -> Evaluation:
     """Run the chain of ``case``: per model the stiffness, damping and dynamics (``method``) of the pair and, for a
     case with a ``[drivetrain]``, of the drivetrain (both through one :class:`~thermogear.orchestrator.
     Orchestrator`), the Fig. 4 thermal-stiffness curves, the damping summary, the start-up transients (Figs. 9–11)
     and, for the paper's case, the pair load shares of Fig. 12, the rig trend of Fig. 18, the FE verification
-    (Fig. 15) and the rig's temperatures of Table 3 (``rig_prediction``, default for the paper's case), the last two
+    (Fig. 15) and, with ``rig_prediction`` (the report asks for it), the rig's temperatures of Table 3, the last two
     in child processes from the start. ``progress(step)`` is called before each step. ``wait=False``: return
     without waiting for the FE verification; :func:`finish_evaluation` collects it (the report draws its other
     figures meanwhile)."""
@@ -148,7 +148,7 @@ def evaluate_case(case, method: str = "periodic", models: tuple[str, ...] = MODE
 
     orchestrator = Orchestrator(case, tuple(models), method)
     evaluation = Evaluation(case=case, method=method, orchestrator=orchestrator)
-    if evaluation.paper if rig_prediction is None else rig_prediction:
+    if rig_prediction:
         evaluation.rig = start_rig_prediction()  # the paper's rig, predicted in a child meanwhile
     step = progress or (lambda name: None)
     # the FE verification needs nothing the other stages compute: it runs beside them on a second core, the case
