@@ -41,8 +41,8 @@ def print_drivetrain(results, console, reason: str | None = None) -> None:
     console.print(table)
     for name, model in models.items():  # issue 36: the mesh mode is listed even above the tabulated ones
         if model.mesh_modes:
-            console.print(f"{name}: none of the {len(model.modes)} modes above is mesh-dominated; mesh-dominated "
-                          "modes up to the response cut-off: " + ", ".join(
+            console.print(f"{name}: mesh-dominated modes above the {len(model.modes)} listed, up to the response "
+                          "cut-off: " + ", ".join(
                               f"{row.frequency_hz:.0f} Hz {row.label} (mesh share {row.mesh_share:.2f})"
                               for row in model.mesh_modes) + " (raise drivetrain.mode_count to tabulate them)",
                           highlight=False)

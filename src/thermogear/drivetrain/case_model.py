@@ -286,11 +286,9 @@ def _transient_result(transient: DrivetrainTransient, harmonics: int, **common) 
 
 
 def mesh_modes_above(built: CaseDrivetrain, model: str, rows: tuple[ModeRow, ...]) -> tuple[ModeRow, ...]:
-    """The mesh-dominated modes above the section's ``mode_count`` and up to its ``response_cutoff_hz``, when none
-    of the listed ``rows`` is mesh-dominated (issue 36: the mesh mode of a drivetrain with many shaft and bearing
-    modes lies above the first twelve and must not go unlisted)."""
-    if any(row.mesh_dominated for row in rows):
-        return ()
+    """The mesh-dominated modes above the listed ``rows`` (the section's ``mode_count``) and up to its
+    ``response_cutoff_hz`` (issue 36: the mesh mode of a drivetrain with many shaft and bearing modes lies above the
+    first twelve and must not go unlisted)."""
     every = drivetrain_modes(built.assembled(model))
     cutoff = built.section.response_cutoff_hz
     return tuple(row for row in mode_rows(every, built.drivetrains[model], first=len(rows))

@@ -58,7 +58,7 @@ def _modes_table(results) -> str:
 
 
 def _mesh_modes_text(results) -> str:
-    """The mesh-dominated modes above the listed ones, where none of those is (issue 36), or how to list more."""
+    """The mesh-dominated modes above the listed ones (issue 36), and how to tabulate them."""
     count = len(next(iter(results.models.values())).modes)
     above = {name: model.mesh_modes for name, model in results.models.items() if model.mesh_modes}
     if not above:
@@ -66,9 +66,8 @@ def _mesh_modes_text(results) -> str:
     listed = "; ".join(f"{name}: " + ", ".join(f"{row.frequency_hz:.0f} Hz {row.label} (mesh share "
                                                f"{row.mesh_share:.2f})" for row in rows)
                        for name, rows in above.items())
-    return (f"<p>None of the {count} lowest modes is mesh-dominated; the mesh-dominated modes up to the response "
-            f"cut-off are: {html.escape(listed)}. Raise <code>drivetrain.mode_count</code> to tabulate every mode "
-            "up to them.</p>")
+    return (f"<p>Mesh-dominated modes above the {count} listed, up to the response cut-off: "
+            f"{html.escape(listed)}. Raise <code>drivetrain.mode_count</code> to tabulate every mode up to them.</p>")
 
 
 def _bearings_table(results) -> str:
