@@ -289,10 +289,8 @@ def mesh_modes_above(built: CaseDrivetrain, model: str, rows: tuple[ModeRow, ...
     """The mesh-dominated modes above the listed ``rows`` (the section's ``mode_count``) and up to its
     ``response_cutoff_hz`` (issue 36: the mesh mode of a drivetrain with many shaft and bearing modes lies above the
     first twelve and must not go unlisted)."""
-    every = drivetrain_modes(built.assembled(model))
-    cutoff = built.section.response_cutoff_hz
-    return tuple(row for row in mode_rows(every, built.drivetrains[model], first=len(rows))
-                 if row.mesh_dominated and row.frequency_hz <= cutoff)
+    every = drivetrain_modes(built.assembled(model), max_frequency_hz=built.section.response_cutoff_hz)
+    return tuple(row for row in mode_rows(every, built.drivetrains[model], first=len(rows)) if row.mesh_dominated)
 
 
 def drivetrain_results(built: CaseDrivetrain, models: tuple[str, ...] = (ELASTIC, THERMAL),
