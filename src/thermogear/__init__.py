@@ -1,6 +1,8 @@
 """thermogear: thermo-elastic dynamics of spur gear transmissions.
 
-Start with :func:`load_case` (a built-in parameter set such as ``"luo2019"`` or a TOML case file).
+Start with :func:`load_case` (a built-in parameter set such as ``"luo2019"`` or a TOML case file), or with
+:func:`run`, which runs every system of a case (the 1-DOF pair, its drivetrain) under both models and returns their
+typed results (``thermogear.run("luo2019").to_dataframe()``).
 """
 
 from __future__ import annotations
@@ -23,7 +25,8 @@ from thermogear.errors import CaseError, ExtrapolationWarning, ThermogearError  
 # for NumPy and pydantic: name → module that defines it.
 _LAZY = {"Case": "thermogear.case", "load_case": "thermogear.case", "parameter_set_names": "thermogear.case",
          "Gear": "thermogear.geometry", "GearPair": "thermogear.geometry", "Material": "thermogear.materials",
-         "OperatingPoint": "thermogear.operating"}
+         "OperatingPoint": "thermogear.operating", "run": "thermogear.orchestrator",
+         "RunResults": "thermogear.orchestrator"}
 
 
 def __getattr__(name: str):
@@ -44,5 +47,5 @@ def __dir__() -> list[str]:
     return sorted(set(globals()) | set(_LAZY))
 
 
-__all__ = ["Case", "CaseError", "ExtrapolationWarning", "Gear", "GearPair", "Material", "OperatingPoint",
-           "ThermogearError", "__version__", "load_case", "parameter_set_names"]
+__all__ = ["Case", "CaseError", "ExtrapolationWarning", "Gear", "GearPair", "Material", "OperatingPoint", "RunResults",
+           "ThermogearError", "__version__", "load_case", "parameter_set_names", "run"]

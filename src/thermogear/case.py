@@ -17,6 +17,8 @@ from typing import Any, Callable
 
 import pydantic
 
+from thermogear.temperature_kinds import temperature_source
+from thermogear.dynamics.mesh_laws import mesh_law
 from thermogear import warning_scope
 from thermogear.case_errors import case_error_from_validation
 from thermogear.case_geometry import gear_pair_of
@@ -232,7 +234,7 @@ def check_case(case: "Case") -> None:
 
 def _check_temperature_field(case: "Case") -> None:
     section = case.temperature
-    if section.model not in ("uniform", "tabulated"):  # "fem": computed by its provider, checked there
+    if not temperature_source(section.model).given:  # computed by its provider, checked there
         return
     field = temperature_field_from_section(section, case.directory)
     pair = case.gear_pair
@@ -262,12 +264,13 @@ def _stage(section, model: CaseFile) -> GearStage:
     backlash, no jamming hot), under the case's material, temperatures and thermal model. A stage's own
     temperatures along its path are not given: the case's temperature must be uniform."""
     key = f"drivetrain.stages '{section.name}'.gears"
-    if model.dynamics.mesh != "linear" or model.dynamics.method == "transient":
-        raise CaseError("dynamics.mesh" if model.dynamics.mesh != "linear" else "dynamics.method",
-                        model.dynamics.mesh if model.dynamics.mesh != "linear" else model.dynamics.method,
+    backlash = mesh_law(model.dynamics.mesh).backlash
+    if backlash or model.dynamics.method == "transient":
+        raise CaseError("dynamics.mesh" if backlash else "dynamics.method",
+                        model.dynamics.mesh if backlash else model.dynamics.method,
                         "'linear' mesh and a periodic method with [[drivetrain.stages]]",
                         "the backlash orbit and the motion from rest of a drivetrain are solved for a single mesh")
-    if model.temperature.model != "uniform":
+    if not temperature_source(model.temperature.model).uniform:
         raise CaseError("temperature.model", model.temperature.model, "'uniform' with [[drivetrain.stages]]",
                         "a tabulated or computed flank temperature is given along the first stage's path of contact "
                         "only; the further stages take the uniform bulk temperature")
@@ -330,7 +333,7 @@ def case_from_document(document: dict[str, Any], source: str = "<memory>") -> Ca
         dynamics=model.dynamics, fem=model.fem, source=source, document=document, housing=model.housing,
         gears_input=gears, material_input=material, notes=notes, gearbox=model.gearbox, drivetrain=model.drivetrain,
         stages=stages)
-    if case.temperature.model not in ("uniform", "tabulated", "fem"):  # predicted at load time (see below)
+    if temperature_source(case.temperature.model).predicted_at_load:  # (see below)
         case = _resolve_temperature_model(case)
     check_case(case)
     warn_keys_without_effect(case.thermal, case.dynamics)

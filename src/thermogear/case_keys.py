@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import warnings
 
+from thermogear.dynamics.mesh_laws import mesh_law
 from thermogear.errors import IneffectiveKeyWarning
 from thermogear.thermal_model_rules import LUO2020_RULES, THERMAL_MODEL_RULES, thermal_model_rules
 
@@ -55,7 +56,7 @@ def keys_without_effect(thermal, dynamics) -> list[tuple[list[str], str]]:
                       if other.reads_x_te else
                       f"keys of thermal.model = '{other.name}', not of thermal.model = '{chosen.name}', so nothing "
                       f"reads them; remove them, or set thermal.model = '{other.name}'"))
-    if dynamics.mesh == "linear" and "damping_in_flight" in dynamics.model_fields_set:
+    if not mesh_law(dynamics.mesh).backlash and "damping_in_flight" in dynamics.model_fields_set:
         found.append((["dynamics.damping_in_flight"], "the linear mesh keeps every pair in contact, so the teeth "
                                                       "never fly; it acts with dynamics.mesh = 'nonlinear'"))
     return found

@@ -22,6 +22,7 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING
 
+from thermogear.dynamics.mesh_laws import mesh_law
 from thermogear.errors import CaseError
 
 if TYPE_CHECKING:
@@ -141,7 +142,7 @@ def check_bearing_clearance(drivetrain, mesh: str) -> None:
     """Refuse a bearing's radial clearance under the linear mesh: the clearance is a dead zone, which only the
     backlash solver of the nonlinear mesh takes; the linear drivetrain in permanent contact would ignore it.
     ``drivetrain`` the [drivetrain] section or None, ``mesh`` the case's ``dynamics.mesh``."""
-    if drivetrain is None or mesh == "nonlinear":
+    if drivetrain is None or mesh_law(mesh).backlash:
         return
     for bearing in drivetrain.bearings:
         if bearing.radial_clearance_um > 0.0:

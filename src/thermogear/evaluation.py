@@ -31,8 +31,8 @@ __all__ = ["Evaluation", "MODELS", "PAPER_REFERENCE", "STEPS", "evaluate_case", 
            "thermoelastic_beside_paper", "uses_paper_thermal_stiffness"]
 
 
-#: Names of the evaluation steps, in order (for progress bars).
-STEPS = ("elastic model", "thermal model", "thermal stiffness", "damping", "start-up transients",
+#: Names of the evaluation steps, in order (for progress bars); "drivetrain" only for a case with a [drivetrain].
+STEPS = ("elastic model", "thermal model", "drivetrain", "thermal stiffness", "damping", "start-up transients",
          "thermoelastic prediction", "rig trend", "FE verification")
 
 
@@ -64,6 +64,7 @@ class Evaluation:
     method: str = "periodic"
     simulations: dict = field(default_factory=dict)  # model -> Simulation
     responses: dict = field(default_factory=dict)  # model -> DynamicResponse (steady state, ``method``)
+    pairs: dict = field(default_factory=dict)  # model -> orchestrator.PairResult (the response, typed metrics)
     transients: dict = field(default_factory=dict)  # model -> DynamicResponse from rest
     thermal_curves: Any = None  # thermal.summary.ThermalCurves
     thermal_summary: dict | None = None  # the paper's k_T (thermal.model = "luo2020")
@@ -73,7 +74,7 @@ class Evaluation:
     rig_trend: dict | None = None
     fem: Any = None
     thermoelastic: dict | None = None  # the predictive model beside the paper's (paper's case only)
-    drivetrain: dict | None = None  # [drivetrain] cases: the JSON-ready results (report.drivetrain_section)
+    drivetrain: Any = None  # [drivetrain] cases: drivetrain.results.DrivetrainResults (None: none, or failed)
     drivetrain_series: dict = field(default_factory=dict)  # model -> arrays of its drivetrain response (results.nc)
     drivetrain_built: Any = None  # the CaseDrivetrain those results came from (the report's drivetrain pictures)
     problems: dict = field(default_factory=dict)  # stage -> reason it failed
@@ -81,10 +82,28 @@ class Evaluation:
     background_timings: dict = field(default_factory=dict)  # stage run beside the others -> its own seconds
     pending: dict = field(default_factory=dict)  # stage -> forked.Background still running (finish_evaluation)
     warnings: list = field(default_factory=list)  # warning texts raised during the run (deduplicated)
+    orchestrator: Any = None  # the orchestrator.Orchestrator that ran the models and the drivetrain
+    pair_load_shares: dict | None = None  # paper's case: model -> single-pair load share at A, B, D, E (Fig. 12)
+    rig: Any = None  # paper's case: forked.Background of the rig's predicted temperatures (Table 3)
 
     @property
     def paper(self) -> bool:
         return is_paper_case(self.case.citation)
+
+    def run_results(self, models: tuple[str, ...] = MODELS):
+        """The :class:`~thermogear.orchestrator.RunResults` of ``models`` as this evaluation computed them (what
+        ``thermogear run --out`` prints beside the report)."""
+        from types import MappingProxyType
+
+        from thermogear.orchestrator import RunResults
+
+        pairs = {name: self.pairs[name] for name in models if name in self.pairs}
+        failed = {name: self.problems[f"{name} model"] for name in models if f"{name} model" in self.problems}
+        return RunResults(self.case.name, self.method, self.case.operating_point.load_held,
+                          MappingProxyType(pairs), MappingProxyType(failed), self.drivetrain,
+                          self.problems.get("drivetrain"), self.thermoelastic_summary if THERMAL in models else None,
+                          None if self.orchestrator is None else self.orchestrator.temperatures(),
+                          tuple(self.case.notes), tuple(self.warnings))
 
     def problem(self, *stages: str) -> str:
         """The first recorded failure among ``stages`` ('' when none)."""
@@ -115,15 +134,23 @@ def _run_stage(evaluation: Evaluation, name: str, function: Callable[[], None]) 
 
 
 def evaluate_case(case, method: str = "periodic", models: tuple[str, ...] = MODELS, transient: bool = True,
-                  progress: Callable[[str], None] | None = None, wait: bool = True) -> Evaluation:
-    """Run the chain of ``case``: per model the stiffness, damping and dynamics (``method``), the Fig. 4
-    thermal-stiffness curves, the damping summary, the start-up transients (Figs. 9–11) and, for the paper's
-    case, the rig trend of Fig. 18 and the FE verification (Fig. 15, in a child process from the start).
-    ``progress(step)`` is called before each step. ``wait=False``: return without waiting for the FE
-    verification; :func:`finish_evaluation` collects it (the report draws its other figures meanwhile)."""
+                  progress: Callable[[str], None] | None = None, wait: bool = True,
+                  rig_prediction: bool = False) -> Evaluation:
+    """Run the chain of ``case``: per model the stiffness, damping and dynamics (``method``) of the pair and, for a
+    case with a ``[drivetrain]``, of the drivetrain (both through one :class:`~thermogear.orchestrator.
+    Orchestrator`), the Fig. 4 thermal-stiffness curves, the damping summary, the start-up transients (Figs. 9–11)
+    and, for the paper's case, the pair load shares of Fig. 12, the rig trend of Fig. 18, the FE verification
+    (Fig. 15) and, with ``rig_prediction`` (the report asks for it), the rig's temperatures of Table 3, the last two
+    in child processes from the start. ``progress(step)`` is called before each step. ``wait=False``: return
+    without waiting for the FE verification; :func:`finish_evaluation` collects it (the report draws its other
+    figures meanwhile)."""
+    from thermogear.orchestrator import Orchestrator
     from thermogear.simulation import Simulation
 
-    evaluation = Evaluation(case=case, method=method)
+    orchestrator = Orchestrator(case, tuple(models), method)
+    evaluation = Evaluation(case=case, method=method, orchestrator=orchestrator)
+    if rig_prediction:
+        evaluation.rig = start_rig_prediction()  # the paper's rig, predicted in a child meanwhile
     step = progress or (lambda name: None)
     # the FE verification needs nothing the other stages compute: it runs beside them on a second core, the case
     # resolved into its FE inputs there too (its warnings and failures stay the stage's)
@@ -140,14 +167,35 @@ def evaluate_case(case, method: str = "periodic", models: tuple[str, ...] = MODE
         step(f"{model} model")
 
         def run_model(model=model):
-            simulation = Simulation(case, model)
-            evaluation.simulations[model] = simulation
-            evaluation.responses[model] = simulation.run(method)
+            evaluation.simulations[model] = orchestrator.simulation(model)
+            evaluation.pairs[model] = orchestrator.pair(model)
+            evaluation.responses[model] = evaluation.pairs[model].response
             cite("floquet1883" if method == "periodic" else "rk4", "den_hartog1931", "iso_tr13989_1", "astm_d341")
-            if simulation.mesh_model.thermal:
+            if evaluation.simulations[model].mesh_model.thermal:
                 cite("timoshenko1951")
 
         _run_stage(evaluation, f"{model} model", run_model)
+
+    if case.drivetrain is not None:
+        step("drivetrain")
+
+        def drivetrain():
+            from thermogear.errors import CaseError, ModelLimitError
+            from thermogear.orchestrator import drivetrain_failure, with_separation_note
+
+            try:
+                built = orchestrator.drivetrain(series=evaluation.drivetrain_series)
+            except ModelLimitError as error:  # most often a mode nothing damps: say where damping comes from
+                evaluation.problems["drivetrain"] = drivetrain_failure(error)
+                return
+            except CaseError as error:
+                evaluation.problems["drivetrain"] = str(error)
+                return
+            evaluation.drivetrain = with_separation_note(built, evaluation.pairs)
+            evaluation.drivetrain_built = orchestrator.built_drivetrain  # the report's pictures draw from it
+            cite("floquet1883")
+
+        _run_stage(evaluation, "drivetrain", drivetrain)
 
     step("thermal stiffness")
 
@@ -170,6 +218,10 @@ def evaluate_case(case, method: str = "periodic", models: tuple[str, ...] = MODE
 
             evaluation.thermoelastic_summary = thermoelastic_summary(
                 thermal_mesh.thermoelastic_mesh, thermal_mesh.thermal_model, thermal_mesh.temperature)
+        if evaluation.paper:  # Fig. 12: the single pair's load share at A, B, D and E
+            from thermogear.summaries.load_share import pair_load_share_at_points
+
+            evaluation.pair_load_shares = {name: pair_load_share_at_points(MeshModel(case, name)) for name in MODELS}
 
     _run_stage(evaluation, "thermal stiffness", thermal)
 
@@ -242,6 +294,23 @@ def fem_verification(inputs):
 
     cite("scikit_fem")
     return stiffness_along_path(cached_analysis(inputs, checks=False))
+
+
+def _predicted_rig_runs() -> dict:
+    """The rig's temperatures of Table 3 predicted by the gearbox model, cold start and runs chained, with the
+    warnings of the prediction (:func:`thermogear.experiment.rig_prediction.predicted_runs`)."""
+    from thermogear import warning_scope
+    from thermogear.experiment.rig_prediction import predicted_runs
+
+    with warning_scope.recorded() as caught:  # the viscosity fit extrapolated below 40 °C: said in the section
+        cold, chained = predicted_runs()
+    messages = [str(item.message) for item in caught]
+    return {"cold": cold, "chained": chained, "messages": messages}
+
+
+def start_rig_prediction() -> forked.Background:
+    """Start the rig predictions in a forked child (or run them now where forking is not available)."""
+    return forked.start("rig prediction", _predicted_rig_runs)
 
 
 def _rig_trend() -> dict:

@@ -11,6 +11,7 @@ on to solve pays nothing twice.
 
 from __future__ import annotations
 
+from thermogear.dynamics.mesh_laws import mesh_law
 from thermogear import warning_scope
 from thermogear.errors import CaseError, ProblemError
 
@@ -43,7 +44,7 @@ def preflight(case, models: tuple[str, ...] = ("elastic", "thermal"), quiet: boo
 
 def _build(simulation, dynamics, method: str) -> None:
     """Build the problem ``simulation`` would solve under the ``[dynamics]`` section and ``method`` (the check)."""
-    if dynamics.mesh == "nonlinear":
+    if mesh_law(dynamics.mesh).backlash:
         simulation.state.backlash_problem(dynamics.damping_in_flight)
     elif method == "transient":
         check_transient_length(simulation.problem, dynamics.transient_periods, simulation.speed_rpm)

@@ -3,8 +3,8 @@
 This module holds what needs nothing but the section and the gear pair's path of contact: the
 :class:`TemperatureField` component, the flank-table checks, the polynomial fit (Luo & Li 2020 §2.1.5) and the
 range checks of :func:`check_temperatures`. It imports no case machinery, so the case loader runs these checks
-at load time (``thermogear check`` refuses what ``run`` would refuse). :mod:`thermogear.temperature_source`
-wires it to a :class:`~thermogear.case.Case` (and to the finite-element provider) and re-exports it.
+at load time (``thermogear check`` refuses what ``run`` would refuse); :mod:`thermogear.temperature_source` wires
+it to a :class:`~thermogear.case.Case` (and to the finite-element provider) and re-exports it.
 
 Temperatures are °C here; the expansion uses the rises above ``reference_c`` (Luo & Li Eq. 10 holds for rises
 above the stress-free state, which the paper does not say). How cold the gears may be depends on the thermal
@@ -22,12 +22,12 @@ from pathlib import Path
 
 import numpy as np
 
+from thermogear.temperature_kinds import temperature_source
 from thermogear.errors import CaseError, ExtrapolationWarning, ModelAssumptionWarning, shown_value
 from thermogear.text_files import is_existing_file, read_user_text
 
-#: Highest tooth temperature the material data cover [°C]. The case holds room-temperature E, ν and a constant
-#: expansion coefficient; case-carburised and through-hardened gear steels are tempered at about 150–200 °C, above
-#: which they soften and those constants no longer describe the gear. The one definition is
+#: Highest tooth temperature the material data cover [°C] (room-temperature E, ν and a constant expansion
+#: coefficient; gear steels are tempered at about 150–200 °C and soften above). The one definition is
 #: :data:`thermogear.temperature_limits.MATERIAL_MAXIMUM_C`.
 from thermogear.temperature_limits import MATERIAL_MAXIMUM_C  # noqa: E402
 
@@ -212,12 +212,12 @@ def fit_flank_polynomial(gamma, flank_c, fit_degree: int) -> np.polynomial.Polyn
 
 
 def case_key_of(source: str, key: str) -> str:
-    """The case-file key a temperature of a field from ``source`` came from: the table's own key, ``bulk_c`` of a
-    uniform field, ``csv`` for a CSV table's flanks, ``model`` for a field a model predicts (FE, gearbox network):
-    never a key the user did not write (``temperature.flank_c`` was named for a gearbox case, issue 36)."""
-    if source.startswith("tabulated"):
-        return "temperature.csv" if source == "tabulated (csv)" and key.endswith(".flank_c") else key
-    return "temperature.bulk_c" if source == "uniform" else f"temperature.model = '{source.split()[0]}'"
+    """The case-file key a temperature of a field from ``source`` (its model's name first) came from, never a key
+    the user did not write: ``temperature.flank_c`` was named for a gearbox case (issue 36)."""
+    kind = temperature_source(source.split()[0])
+    if kind.tabulated:
+        return "temperature.csv" if source.endswith("(csv)") and key.endswith(".flank_c") else key
+    return "temperature.bulk_c" if kind.uniform else f"temperature.model = '{kind.name}'"
 
 
 def check_temperatures(field: TemperatureField, gamma_start: float, gamma_end: float,
@@ -297,7 +297,7 @@ def default_bulk_temperature(section, lubricant) -> tuple[object, tuple[str, ...
     bodies and oil in thermal equilibrium, no frictional heating of the teeth above the oil. The bulk temperature of
     a running pair lies at or above its oil temperature, so this is its lower bound. Returns ``(section, notes)``;
     the section unchanged and no note when the case gives a temperature."""
-    if section.model != "uniform" or section.bulk_c is not None:
+    if not temperature_source(section.model).uniform or section.bulk_c is not None:
         return section, ()
     oil = lubricant.operating_temperature_c
     note = (f"temperature: no bulk temperature given ([temperature] bulk_c): the gears are taken at the oil's "
@@ -310,9 +310,9 @@ def default_bulk_temperature(section, lubricant) -> tuple[object, tuple[str, ...
 def temperature_field_from_section(section, directory: Path | None = None) -> TemperatureField:
     """The TemperatureField of a ``uniform`` or ``tabulated`` ``[temperature]`` section (CSV paths relative to
     ``directory``). Raises CaseError for bad input."""
-    if section.model == "uniform":
+    if temperature_source(section.model).uniform:
         return _uniform_field(section)
-    if section.model == "tabulated":
+    if temperature_source(section.model).tabulated:
         return _tabulated_field(section, directory)
     raise CaseError("temperature.model", section.model, "uniform | tabulated here",
                     "this model's field comes from its provider (see thermogear.temperature_source)")

@@ -19,6 +19,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import TYPE_CHECKING
 
+from thermogear.temperature_kinds import temperature_source
 from thermogear import warning_scope
 from thermogear.case import cached_per_case
 from thermogear.composition import TEMPERATURE_PROVIDERS, builtin
@@ -56,7 +57,7 @@ def temperature_field_from_case(case: "Case") -> TemperatureField:
     section = case.temperature
     points = case.gear_pair.path_points
     gamma_start, gamma_end = (float(case.gear_pair.gamma(points["A"])), float(case.gear_pair.gamma(points["E"])))
-    if section.model in ("uniform", "tabulated"):
+    if temperature_source(section.model).given:
         field = temperature_field_from_section(section, case.directory)
     else:
         provider = _PROVIDERS.get(section.model) or builtin(TEMPERATURE_PROVIDERS, section.model)

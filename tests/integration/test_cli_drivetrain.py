@@ -40,6 +40,21 @@ def test_run_json_holds_the_drivetrain_modes_bearing_forces_and_heat():
     assert len(drivetrain["heat"]) == 12 and "dominant_cause" in drivetrain["heat"][0]
     # the pair's own results are still there, beside the drivetrain's
     assert set(payload["models"]) == {"elastic", "thermal"}
+    # issue 36: the headline Kv is the drivetrain's, the 1-DOF pair's beside it, labelled
+    for model in ("elastic", "thermal"):
+        headline = payload["headline"][model]
+        assert headline["system"] == "drivetrain" and headline["kv"] == drivetrain["models"][model]["kv"]
+        assert headline["pair_kv"] == payload["models"][model]["kv"] != headline["kv"]
+    # issue 36: every line that went to stderr (model checks, warnings) is in "messages"
+    printed = [line for line in result.stderr.splitlines() if line.strip()]
+    assert printed and all(line in payload["messages"] for line in printed), (printed, payload["messages"])
+    # the two dynamic factors are explained, the stiffness step that sets the second one given: far below resonance
+    # (frequency ratio 0.11) the deflection at the step into double contact is nearly the single-contact static one,
+    # so the total force jumps to about the step ratio × the static load (measured 0.09 % and 0.3 % apart; 1 % is
+    # the margin for the deflection's small dynamic part at the step)
+    assert "Eq. 29" in payload["dynamic_factors"]
+    for numbers in payload["models"].values():
+        assert numbers["max_system_load_ratio"] == pytest.approx(numbers["mesh_stiffness_step_ratio"], rel=0.01)
 
 
 def test_run_table_prints_the_drivetrain_tables():
@@ -94,12 +109,6 @@ def _nonlinear_case(tmp_path, clearance_um: float = 0.0) -> Path:
 def test_run_solves_the_backlash_drivetrain_with_a_bearing_clearance(tmp_path):
     # the nonlinear mesh takes a bearing clearance (accepted at load), and run reports the backlash orbit: found,
     # its contact loss and back-flank contact, Kv from it; the linear keys keep their meaning; the table says so
-    import io
-
-    from rich.console import Console
-
-    from thermogear.cli.run_drivetrain import print_drivetrain
-
     case = _nonlinear_case(tmp_path, clearance_um=2.0)
     assert _cli("check", str(case)).returncode == 0
     result = _cli("run", str(case), "--model", "elastic", "--json")
@@ -113,9 +122,9 @@ def test_run_solves_the_backlash_drivetrain_with_a_bearing_clearance(tmp_path):
     assert not any("permanent contact" in note for note in drivetrain["notes"])
     # the clearance lets the wheel shaft move inside ±2 μm: its bearing still carries the mean load
     assert elastic["bearing_forces"]["wheel bearing B"]["mean_radial_n"] > 0.0
-    buffer = io.StringIO()
-    print_drivetrain(drivetrain, Console(file=buffer, width=200))
-    text = buffer.getvalue()
+    table = _cli("run", str(case), "--model", "elastic")  # the tables of the typed results
+    assert table.returncode == 0, table.stderr
+    text = table.stdout
     for words in ("mesh nonlinear (backlash)", "time without contact", "back flanks struck",
                   "periodic orbit found (stable)"):
         assert words in text, words
@@ -179,6 +188,11 @@ def test_the_report_has_a_drivetrain_section_and_summary_json_its_numbers(tmp_pa
     payload = json.loads(result.stdout)
     page = (out / "report.html").read_text(encoding="utf-8")
     assert "The pair in its drivetrain" in page and "Dynamic bearing forces on the housing" in page
+    # issue 36: the drivetrain in the top links, its Kv in the headline with the 1-DOF pair's labelled beside it
+    top = page.split("<h2 id='case'>", 1)[0]
+    assert "<a href='#drivetrain'>drivetrain</a>" in top
+    kv = payload["drivetrain"]["models"]["elastic"]["kv"]
+    assert f"elastic: drivetrain Kv {kv:.3f} (1-DOF pair on rigid supports" in top
     summary = json.loads((out / "summary.json").read_text(encoding="utf-8"))
     # run --json and the report's summary.json carry the same drivetrain numbers (computed once, by the report)
     assert summary["drivetrain"] == payload["drivetrain"]
@@ -212,21 +226,20 @@ def test_a_drivetrain_orbit_not_found_prints_no_number_and_says_why():
     from thermogear.cli.run_drivetrain import print_drivetrain
     from thermogear.report.drivetrain_section import drivetrain_section
 
-    unknown = {"mean_radial_n": None, "dynamic_rms_n": None, "harmonic_hz": [500.0], "harmonic_amplitude_n": [None]}
-    model = {"kv": None, "dte_rms_um": None, "dte_peak_to_peak_um": None, "largest_floquet_multiplier_abs": None,
-             "stable": False, "converged": False, "failure": "Newton stopped at residual 0.3 > 1e-08",
-             "contact_loss_fraction": None, "back_side_contact": None, "back_contact_fraction": None,
-             "switches_per_period": None, "bearing_forces": {"bearing A": unknown},
-             "modes": [{"frequency_hz": 900.0, "label": "torsional", "mesh_share": 0.9, "mesh_dominated": True,
-                        "energy_shares": {"mesh": 0.9}, "element_shares": {}}], "resonances": []}
-    data = {"degrees_of_freedom": 12, "response_cutoff_hz": 3e4, "mesh": "nonlinear (backlash) on the drivetrain",
-            "backlash_mesh": True, "transient": False, "solved_on": "every DOF", "notes": [],
-            "models": {"elastic": model}}
+    from thermogear.drivetrain.results import (BearingForces, DrivetrainBacklashResult, DrivetrainResults,
+                                               ModeRow)
+
+    unknown = BearingForces(None, None, (500.0,), (None,))
+    mode = ModeRow(900.0, "torsional", 0.9, {"mesh": 0.9}, {}, True)
+    model = DrivetrainBacklashResult(None, None, None, None, False, {"bearing A": unknown}, (mode,), (),
+                                     converged=False, failure="Newton stopped at residual 0.3 > 1e-08")
+    results = DrivetrainResults(12, 3e4, "nonlinear (backlash) on the drivetrain", True, False,
+                                "modes up to 30000 Hz", (), {"elastic": model})
     buffer = io.StringIO()
-    print_drivetrain(data, Console(file=buffer, width=200))
+    print_drivetrain(results, Console(file=buffer, width=200))
     text = buffer.getvalue()
     assert "no periodic orbit — Newton stopped" in text and "periodic orbit found (stable)" in text
     kv_row = next(line for line in text.splitlines() if "│ Kv" in line)
     assert "not found" in kv_row and not any(character.isdigit() for character in kv_row)
-    page = drivetrain_section(data)
+    page = drivetrain_section(results)
     assert "no periodic orbit — Newton stopped" in page and "<td class=num>NO</td>" in page

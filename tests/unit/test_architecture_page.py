@@ -10,6 +10,7 @@ import types
 from pathlib import Path
 
 import numpy as np
+import pytest
 
 from thermogear.mesh.pair_models import PAIR_MODELS
 
@@ -92,3 +93,35 @@ def test_the_example_of_adding_a_structure_element_runs(capsys, monkeypatch):
     assert printed.count(" Hz") == 4
     share = float(printed.split()[-1])
     assert 0.0 < share <= 1.0
+
+
+def _blocks_before_adding_a_model() -> list[str]:
+    text = PAGE.read_text(encoding="utf-8").split("**Results are typed.**", 1)[1].split("\n## Adding a", 1)[0]
+    return [textwrap_dedent(block) for block in re.findall(r"```python\n(.*?)```", text, flags=re.DOTALL)]
+
+
+def textwrap_dedent(block: str) -> str:
+    import textwrap
+
+    return textwrap.dedent(block)
+
+
+def test_the_examples_of_the_typed_results_and_of_a_solver_run(capsys, monkeypatch):
+    # issue 33: "where to add" with a short runnable example each (the pair model's is the test above)
+    blocks = _blocks_before_adding_a_model()
+    assert len(blocks) == 2
+    results_block, solver_block = blocks
+    namespace: dict = {}
+    exec(compile(results_block, str(PAGE), "exec"), namespace)  # noqa: S102 - the page's own example
+    results = namespace["results"]
+    printed = capsys.readouterr().out
+    assert "kv" in printed and "pair" in printed and "thermal" in printed
+    assert results.to_dataframe().loc[("pair", "thermal"), "kv"] == results.pair["thermal"].kv
+    module = types.ModuleType("architecture_solver_example")
+    monkeypatch.setitem(sys.modules, module.__name__, module)
+    exec(compile(solver_block, str(PAGE), "exec"), module.__dict__)  # noqa: S102
+    response = module.__dict__["response"]
+    assert re.fullmatch(r"Kv = \d+\.\d{4}\n", capsys.readouterr().out)
+    # the denser sampling of the same exact orbit: the same Kv to how finely the peak is sampled (the orbit is exact
+    # at every sample, so only the peak's position between samples differs: 1e-3 is far above that, far below Kv-1)
+    assert response.metrics["kv"] == pytest.approx(results.pair["thermal"].kv, rel=1e-3)

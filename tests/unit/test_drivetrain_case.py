@@ -16,7 +16,7 @@ import pytest
 from thermogear.case import case_from_document, load_case
 from thermogear.drivetrain import (Bearing, CrossSection, Drivetrain, GearMesh, Material, NodeLocation, RigidDisk,
                                    Shaft, ShaftSegment)
-from thermogear.drivetrain.case_model import case_drivetrain, drivetrain_builder, drivetrain_results
+from thermogear.drivetrain.case_model import case_drivetrain, drivetrain_results
 from thermogear.errors import CaseError
 
 TWO_SHAFTS = Path(__file__).resolve().parents[1] / "data" / "two_shaft_drivetrain.toml"
@@ -211,7 +211,7 @@ def test_stiff_supports_in_the_case_file_give_back_the_one_dof_pair():
 
 
 def test_the_results_hold_modes_bearing_forces_and_what_heat_moved():
-    results = drivetrain_results(case_drivetrain(_load(_document())))
+    results = drivetrain_results(case_drivetrain(_load(_document()))).as_json()  # the JSON of run --json
     for model in ("elastic", "thermal"):
         data = results["models"][model]
         assert len(data["modes"]) == 12
@@ -326,21 +326,19 @@ def test_under_the_papers_thermal_model_only_the_mesh_stiffness_and_the_shafts_c
 
 
 def test_run_says_when_the_pairs_teeth_separate_under_a_linear_drivetrain_mesh():
+    from dataclasses import replace
     from types import SimpleNamespace
 
-    from thermogear.cli.run_drivetrain import drivetrain_outputs
+    from thermogear.drivetrain.results import DrivetrainResults
+    from thermogear.orchestrator import with_separation_note
 
-    case = _load(_document())
-    computed = SimpleNamespace(evaluation=SimpleNamespace(drivetrain={"notes": [], "models": {}}))
-    separated = {"elastic": SimpleNamespace(metrics={"contact_loss": {"detected": False}}),
-                 "thermal": SimpleNamespace(metrics={"contact_loss": {"detected": True}})}
-    build = drivetrain_builder(case, ("elastic", "thermal"))
-    (note,) = drivetrain_outputs(build, ("elastic", "thermal"), computed, separated)["notes"]
+    computed = DrivetrainResults(4, 1e4, "linear (permanent contact) on the drivetrain", False, False, "every DOF",
+                                 (), {})
+    separated = {"elastic": SimpleNamespace(metrics=SimpleNamespace(contact_loss=SimpleNamespace(detected=False))),
+                 "thermal": SimpleNamespace(metrics=SimpleNamespace(contact_loss=SimpleNamespace(detected=True)))}
+    (note,) = with_separation_note(computed, separated).notes
     assert "pair's thermal model finds the teeth separating" in note and "permanent contact" in note
-    assert drivetrain_outputs(build, ("elastic",), computed, {"elastic": separated["elastic"]})["notes"] == []
-    assert drivetrain_builder(load_case("fzg_type_c")) is None
-    assert drivetrain_outputs(None, ("elastic",), computed, separated) is None
+    assert with_separation_note(computed, {"elastic": separated["elastic"]}).notes == ()
+    assert with_separation_note(None, separated) is None
     # with the backlash mesh solved on the drivetrain the note has no place
-    solved = SimpleNamespace(evaluation=SimpleNamespace(drivetrain={"notes": [], "models": {},
-                                                                    "backlash_mesh": True}))
-    assert drivetrain_outputs(build, ("elastic", "thermal"), solved, separated)["notes"] == []
+    assert with_separation_note(replace(computed, backlash_mesh=True), separated).notes == ()

@@ -197,3 +197,17 @@ def test_housing_refuses_bad_inputs_by_name(changes, key):
     fields.update(changes)
     with pytest.raises(CaseError, match=key):
         Housing(**fields)
+
+
+def test_the_steady_state_and_the_warm_up_as_tables_and_datasets(model):
+    # issue 33: every result typed with to_dataframe() and to_dataset(), holding the same numbers
+    steady = model.steady_state(LOAD_STAGE_6)
+    frame, dataset = steady.to_dataframe(), steady.to_dataset()
+    assert frame.loc["oil", "temperature_c"] == steady.oil_c and frame.attrs["heat_out_w"] == steady.heat_out
+    assert float(dataset["temperature"].sel(node="pinion")) == steady.pinion_c
+    assert float(dataset["loss"].sum()) == pytest.approx(steady.losses.total, rel=1e-14)
+    history = model.warm_up(LOAD_STAGE_6, 600.0, points=7)
+    table, series = history.to_dataframe(), history.to_dataset()
+    assert list(table.index) == list(history.times) and np.array_equal(table["oil_c"], history.node("oil"))
+    assert np.array_equal(series["backlash"].values, history.backlash)
+    assert series["temperature"].dims == ("node", "time")

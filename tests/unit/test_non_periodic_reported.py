@@ -39,8 +39,12 @@ def test_non_periodic_response_is_not_valid_and_its_json_carries_null_and_a_stat
 def test_the_table_says_not_found_for_a_non_periodic_response(response):
     from rich.console import Console
 
+    from thermogear.dynamics.metric_results import typed_metrics
+    from thermogear.orchestrator import PairResult
+
     console = Console(record=True, width=140, color_system=None)
-    _print_table("textbook", {"elastic": response}, console)
+    pair = PairResult("elastic", response, typed_metrics(response.metrics), None, np.array([1.0, 2.0]))
+    _print_table("textbook", {"elastic": pair}, console)
     text = console.export_text()
     assert "nan" not in text.lower().replace("not found", "")
     row = next(line for line in text.splitlines() if "steady orbit found" in line)

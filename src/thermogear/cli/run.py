@@ -7,16 +7,14 @@ from typing import TYPE_CHECKING
 
 import typer
 
+from thermogear.dynamics.mesh_laws import mesh_law
 from thermogear.cli.app import app, console, error_console, print_json
 from thermogear.report.terminal import interruptible
-from thermogear.errors import CaseError, ModelLimitError
-from thermogear.gearbox.case_model import (describe_prediction, gearbox_model_from_case, gearbox_operating_point,
-                                           predicted_steady_state)
-from thermogear.mesh.model_names import THERMAL
+from thermogear.errors import CaseError
+from thermogear.gearbox.case_model import describe_prediction
 
 if TYPE_CHECKING:
     from thermogear.dynamics.metric_results import LinearMetrics, NonlinearMetrics
-    from thermogear.mesh.model import MeshModel
 
 _MODELS = {"elastic": ("elastic",), "thermal": ("thermal",), "both": ("elastic", "thermal")}
 
@@ -89,7 +87,11 @@ def run(
     from thermogear.case import load_case
     from thermogear.preflight import preflight
     from thermogear.report.evaluate import model_messages
+    from thermogear.cli.check import shown_warnings
     from thermogear.cli.console import print_notes, step_progress
+    from thermogear.cli.run_drivetrain import print_drivetrain
+    from thermogear.report.drivetrain_section import drivetrain_json
+    from thermogear.report.evaluate import DYNAMIC_FACTORS_NOTE
     from thermogear.report.terminal import print_messages, print_summary
 
     if model not in _MODELS:
@@ -113,48 +115,32 @@ def run(
         plot = check_picture_folder(plot, case, force)  # before any work
     method = method or case.dynamics.method
     models = _MODELS[model]
-    preflight(case, models, quiet=False, method=method)  # the checks `check` makes, before any output is written
-    if out is not None:
-        from thermogear.report.build import build_report, report_steps
+    with shown_warnings() as shown:  # every warning printed on stderr, for --json's "messages" (issue 36)
+        preflight(case, models, quiet=False, method=method)  # the checks `check` makes, before any output is written
+        if out is not None:
+            from thermogear.report.build import build_report, report_steps
 
-        steps = report_steps(case.citation)
-        with interruptible(out), step_progress(steps, quiet or as_json, error_console) as advance:
-            outcome = build_report(case, out, force=force, method=method, paper=False, progress=advance)
-        responses = {name: outcome.evaluation.responses[name] for name in models
-                     if name in outcome.evaluation.responses}
-        failed = {name: outcome.evaluation.problems[f"{name} model"] for name in models
-                  if f"{name} model" in outcome.evaluation.problems}
-        thermoelastic = outcome.evaluation.thermoelastic_summary if THERMAL in models else None
-    else:
-        from thermogear.mesh.model import MeshModel
-        from thermogear.simulation import Simulation, solver_for
+            steps = report_steps(case.citation, drivetrain=case.drivetrain is not None)
+            with interruptible(out), step_progress(steps, quiet or as_json, error_console) as advance:
+                outcome = build_report(case, out, force=force, method=method, paper=False, progress=advance)
+            results = outcome.evaluation.run_results(models)
+        else:
+            from thermogear.orchestrator import Orchestrator
 
-        solver = solver_for(case.dynamics, method)  # the --method string, resolved once
-        responses, failed, limit = {}, {}, None
-        with step_progress([f"{name} model" for name in models], quiet or as_json, error_console) as advance:
-            for name in models:
-                advance(f"{name} model")
-                try:
-                    responses[name] = Simulation(case, name, solver=solver).run()
-                except ModelLimitError as error:  # e.g. unstable: said, and the other model still computed
-                    failed[name], limit = f"{type(error).__name__}: {error}", limit or error
-        if not responses:
-            raise limit
-        thermoelastic = _thermoelastic_summary(MeshModel(case, THERMAL)) if THERMAL in models else None
+            steps = [f"{name} model" for name in models]
+            if case.drivetrain is not None:
+                steps += [f"drivetrain, {name} model" for name in models]
+            with step_progress(steps, quiet or as_json, error_console) as advance:
+                orchestrator = Orchestrator(case, models, method)
+                results = orchestrator.run(progress=advance)
+    responses = {name: pair.response for name, pair in results.pair.items()}
     messages = [text for name, response in responses.items() for text in model_messages(response, name)]
-    from thermogear.cli.run_drivetrain import drivetrain_outputs, print_drivetrain  # [drivetrain] (issue 27)
-    from thermogear.drivetrain.case_model import drivetrain_builder
-
-    build = drivetrain_builder(case, models)
-    steps = [f"drivetrain, {name} model" for name in models] if build is not None and out is None else []
-    with step_progress(steps, quiet or as_json or not steps, error_console) as advance:
-        drivetrain = drivetrain_outputs(build, models, outcome if out is not None else None, responses,
-                                        transient=method == "transient", progress=advance)
-    if plot is not None:
+    drivetrain = drivetrain_json(results.drivetrain, results.drivetrain_not_computed)
+    if plot is not None:  # the pictures of the CaseDrivetrain the results came from
         from thermogear.cli.run_drivetrain import write_pictures
 
-        pictures = write_pictures(plot, build, drivetrain,
-                                  getattr(outcome.evaluation, "drivetrain_built", None) if out is not None else None)
+        built = outcome.evaluation.drivetrain_built if out is not None else orchestrator.built_drivetrain
+        pictures = write_pictures(plot, drivetrain, built)
         if not as_json:
             console.print(f"drivetrain pictures written to {plot}: {', '.join(pictures)}", highlight=False)
     if csv is not None:
@@ -162,19 +148,17 @@ def run(
 
         responses_csv(csv, responses, case_name=case.name, case_source=str(case.source),
                       load_held=case.operating_point.load_held)
-    predicted = None  # the gearbox model's prediction, said beside the outputs where it set the temperatures
-    if case.temperature.model == "gearbox":
-        predicted = describe_prediction(predicted_steady_state(
-            gearbox_model_from_case(case), gearbox_operating_point(case.operating_point, case.gearbox)))
+    predicted = None if results.temperatures is None else describe_prediction(results.temperatures)
     if as_json:
         payload = {"case": case.name, "method": method, "load_held": case.operating_point.load_held,
-                   "models": {name: {**model_json(response), "messages": model_messages(response, name)}
+                   "models": {name: {**model_json(response), "messages": model_messages(response, name),
+                                     "mesh_stiffness_step_ratio": results.pair[name].mesh_stiffness_step_ratio}
                               for name, response in responses.items()}}
         payload["notes"] = list(case.notes)
-        if thermoelastic is not None:
-            payload["thermoelastic"] = thermoelastic
-        if failed:
-            payload["not_computed"] = failed
+        if results.thermoelastic is not None:
+            payload["thermoelastic"] = results.thermoelastic
+        if results.not_computed:
+            payload["not_computed"] = dict(results.not_computed)
         if drivetrain is not None:
             payload["drivetrain"] = drivetrain
         if predicted:
@@ -183,7 +167,10 @@ def run(
             payload["report"] = str(outcome.report)
         if plot is not None:
             payload["plots"] = [str(plot / name) for name in pictures]
+        payload["headline"] = headline_json(results)
+        payload["dynamic_factors"] = DYNAMIC_FACTORS_NOTE
         print_messages(messages, error_console)
+        payload["messages"] = messages + [f"warning: {text}" for text in _distinct(shown, results.warnings)]
         print_json(payload)
         return
     if out is not None:
@@ -193,18 +180,59 @@ def run(
             print_summary(outcome, console)
             console.print(_load_held_line(case.operating_point))
             print_notes(case.notes, console)
-        for name, reason in failed.items():
+        for name, reason in results.not_computed.items():
             error_console.print(f"{name} model not computed: {reason}", highlight=False)
         return
-    _print_table(case.name, responses, console, thermoelastic)
-    print_drivetrain(drivetrain, console)
+    _print_table(case.name, results.pair, console, results.thermoelastic,
+                 pair_label=" (1-DOF pair)" if results.drivetrain is not None else "")
+    print_notes([DYNAMIC_FACTORS_NOTE], console)
+    print_drivetrain(results.drivetrain, console, results.drivetrain_not_computed)
+    if results.drivetrain is not None:
+        console.print(headline_line(results), highlight=False)
     console.print(_load_held_line(case.operating_point))
     print_notes(case.notes, console)
     if predicted:
         console.print(predicted, highlight=False)
     print_messages(messages, console)
-    for name, reason in failed.items():  # as the report says it (run --out)
+    for name, reason in results.not_computed.items():  # as the report says it (run --out)
         error_console.print(f"{name} model not computed: {reason}", highlight=False)
+
+
+def _distinct(*groups) -> list[str]:
+    """The warning texts of ``groups`` without their category prefix, each cause once, in order."""
+    from thermogear.cli.console import warning_text
+    from thermogear.warning_causes import warning_cause
+
+    seen, texts = set(), []
+    for group in groups:
+        for item in group:
+            text = warning_text(item)
+            if warning_cause(text) not in seen:
+                seen.add(warning_cause(text))
+                texts.append(text)
+    return texts
+
+
+def headline_json(results) -> dict:
+    """The headline dynamic factor per model: the drivetrain's where the case has one (the structure the case
+    describes), with the 1-DOF pair's beside it (issue 36)."""
+    from thermogear.serialization import json_ready
+
+    headline = {}
+    for name in results.pair:
+        kv, system = results.headline_kv(name)
+        headline[name] = {"kv": kv, "system": system, "pair_kv": results.pair[name].kv}
+    return json_ready(headline, non_finite="null")
+
+
+def headline_line(results) -> str:
+    """One line: the drivetrain's Kv per model (the headline) with the 1-DOF pair's beside it, labelled."""
+    parts = []
+    for name in results.pair:
+        kv, system = results.headline_kv(name)
+        pair = results.pair[name].kv
+        parts.append(f"{name} Kv {_shown(kv)} ({system}; 1-DOF pair on rigid supports {_shown(pair)})")
+    return "headline: " + "; ".join(parts)
 
 
 def _load_held_line(operating_point) -> str:
@@ -214,20 +242,7 @@ def _load_held_line(operating_point) -> str:
     return f"load held: {held} ({source})"
 
 
-def _thermoelastic_summary(thermal: MeshModel) -> dict | None:
-    """What the thermo-elastic model is for (operating geometry, backlash, jamming, E(T), loaded STE), where it is
-    the case's thermal model (``thermal``, its thermal MeshModel, holds the component); None under the paper's model
-    (its k_T has none of these)."""
-    from thermogear.evaluation import uses_paper_thermal_stiffness
-
-    if uses_paper_thermal_stiffness(thermal):
-        return None
-    from thermogear.summaries.thermoelastic import thermoelastic_summary
-
-    return thermoelastic_summary(thermal.thermoelastic_mesh, thermal.thermal_model, thermal.temperature)
-
-
-def _print_table(case_name: str, responses, console, thermoelastic: dict | None = None) -> None:
+def _print_table(case_name: str, responses, console, thermoelastic: dict | None = None, pair_label: str = "") -> None:
     from rich.table import Table
 
     table = Table(title=f"{case_name}: dynamics ({', '.join(responses)})", header_style="bold")
@@ -235,9 +250,11 @@ def _print_table(case_name: str, responses, console, thermoelastic: dict | None 
     for name in responses:
         table.add_column(name, justify="right")
     table.add_column("unit")
-    data = {name: model_json(response) for name, response in responses.items()}
-    rows = [("Kv (Eq. 29)", "kv", "–"), ("max pair load", "max_pair_load_n_per_mm", "N/mm"),
+    data = {name: {**model_json(pair.response), "mesh_stiffness_step_ratio": pair.mesh_stiffness_step_ratio}
+            for name, pair in responses.items()}
+    rows = [(f"Kv (Eq. 29){pair_label}", "kv", "–"), ("max pair load", "max_pair_load_n_per_mm", "N/mm"),
             ("max system load / static", "max_system_load_ratio", "–"),
+            ("mesh stiffness step (after / before)", "mesh_stiffness_step_ratio", "–"),
             ("natural frequency", "natural_frequency_hz", "Hz"), ("frequency ratio λ", "frequency_ratio", "–"),
             ("damping ratio ζ (mean)", "damping_ratio", "–")]
     for label, key, unit in rows:
@@ -252,7 +269,7 @@ def _print_table(case_name: str, responses, console, thermoelastic: dict | None 
     table.add_row("DTE peak-to-peak", *(_shown(d["dte_peak_to_peak_um"]) for d in data.values()), "μm")
     table.add_row("largest |Floquet multiplier|", *(_shown(d["floquet_multipliers_abs"][0]) for d in data.values()),
                   "–")
-    if any(d["mesh"] == "nonlinear" for d in data.values()):
+    if any(mesh_law(d["mesh"]).backlash for d in data.values()):
         table.add_row("time without contact", *(_shown(d["contact_loss_fraction"], 100.0)
                                                 for d in data.values()), "%")
         table.add_row("back flanks struck", *("yes" if d["back_side_contact"] else "no" for d in data.values()), "")

@@ -6,109 +6,92 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
-__all__ = ["check_picture_folder", "drivetrain_outputs", "print_drivetrain", "write_pictures"]
-
-
-def drivetrain_outputs(build, models: tuple[str, ...], outcome=None, responses=None, transient: bool = False,
-                       progress=None) -> dict[str, Any] | None:
-    """The drivetrain results (None without a ``[drivetrain]``: ``build`` None, else the function that builds the
-    case's CaseDrivetrain, :func:`~thermogear.drivetrain.case_model.drivetrain_builder`): those the report computed
-    when there is one (``outcome``), computed here otherwise (``transient``: the last period of the motion from
-    rest; ``progress`` called before each model). Where the drivetrain's mesh was linear and the pair's own
-    ``responses`` find the teeth separating, a note says that the drivetrain's numbers assume permanent contact."""
-    if build is None:
-        return None
-    if outcome is not None and getattr(outcome.evaluation, "drivetrain", None) is not None:
-        data = outcome.evaluation.drivetrain
-    else:
-        from thermogear.report.drivetrain_section import drivetrain_report_data
-
-        data = drivetrain_report_data(build, models, transient, progress)
-    separated = [name for name, response in (responses or {}).items()
-                 if response.metrics.get("contact_loss", {}).get("detected")]
-    if separated and "notes" in data and not data.get("backlash_mesh"):
-        data = {**data, "notes": [*data["notes"], f"drivetrain: the pair's {' and '.join(separated)} model finds "
-                                  "the teeth separating; the drivetrain's numbers assume permanent contact (linear "
-                                  "mesh) and overstate the mesh force there"]}
-    return data
+__all__ = ["check_picture_folder", "print_drivetrain", "write_pictures"]
 
 
 def _number(value, pattern: str = "{:.1f}") -> str:
     return "not found" if value is None else pattern.format(value)
 
 
-def print_drivetrain(data: dict[str, Any] | None, console) -> None:
-    """Print the drivetrain tables: modes (with the cold → hot shift and its main cause), response, bearings."""
-    if data is None:
-        return
-    if "not_computed" in data:
-        console.print(f"drivetrain not computed: {data['not_computed']}", highlight=False)
+def print_drivetrain(results, console, reason: str | None = None) -> None:
+    """Print the drivetrain tables of :class:`~thermogear.drivetrain.results.DrivetrainResults`: modes (with the
+    cold → hot shift and its main cause), response, bearings; ``reason`` where they could not be computed."""
+    if results is None:
+        if reason is not None:
+            console.print(f"drivetrain not computed: {reason}", highlight=False)
         return
     from rich.table import Table
 
-    models = data["models"]
+    models = results.models
     first = next(iter(models.values()))
-    heat = data.get("heat")
-    table = Table(title=f"drivetrain modes ({data['degrees_of_freedom']} DOF; shares of the modal strain energy; "
+    heat = results.heat
+    table = Table(title=f"drivetrain modes ({results.degrees_of_freedom} DOF; shares of the modal strain energy; "
                         "other: couplings and motor supports)", header_style="bold")
     for column in ("mode", "label", *(f"{name} [Hz]" for name in models), "mesh", "bearings", "shafts", "other"):
         table.add_column(column, justify="left" if column == "label" else "right")
     if heat:
         table.add_column("cold→hot [%]", justify="right")
         table.add_column("main cause")
-    for index, mode in enumerate(first["modes"]):
-        shares = mode["energy_shares"]
-        cells = [str(index + 1), mode["label"] + (" *" if mode["mesh_dominated"] else ""),
-                 *(_number(model["modes"][index]["frequency_hz"]) for model in models.values()),
+    for index, mode in enumerate(first.modes):
+        shares = mode.energy_shares
+        cells = [str(index + 1), mode.label + (" *" if mode.mesh_dominated else ""),
+                 *(_number(model.modes[index].frequency_hz) for model in models.values()),
                  *(f"{shares.get(key, 0.0):.3f}" for key in ("mesh", "bearings", "shafts")),
                  f"{sum(v for k, v in shares.items() if k not in ('mesh', 'bearings', 'shafts')):.3f}"]
         if heat:
-            cells += [f"{heat[index]['shift_percent']:+.3f}", heat[index]["dominant_cause"]]
+            cells += [f"{100.0 * heat[index].shift:+.3f}", heat[index].dominant_cause]
         table.add_row(*cells)
     console.print(table)
+    for name, model in models.items():  # issue 36: the mesh mode is listed even above the tabulated ones
+        if model.mesh_modes:
+            console.print(f"{name}: mesh-dominated modes above the {len(model.modes)} listed, up to the response "
+                          "cut-off: " + ", ".join(
+                              f"{row.frequency_hz:.0f} Hz {row.label} (mesh share {row.mesh_share:.2f})"
+                              for row in model.mesh_modes) + " (raise drivetrain.mode_count to tabulate them)",
+                          highlight=False)
     console.print("* mesh-dominated (mesh share > 0.1). Mesh harmonics meet modes with a mesh share above 0.01 at: "
-                  + ("; ".join(f"{r['harmonic']}× mesh at {r['speed_rpm']:.0f} rpm ({r['mode_hz']:.0f} Hz "
-                               f"{r['label']}{' *' if r['mesh_dominated'] else ''}, {name})"
-                               for name, model in models.items() for r in model["resonances"]) or "none"),
+                  + ("; ".join(f"{r.harmonic}× mesh at {r.speed_rpm:.0f} rpm ({r.mode_hz:.0f} Hz "
+                               f"{r.label}{' *' if r.mesh_dominated else ''}, {name})"
+                               for name, model in models.items() for r in model.resonances) or "none"),
                   highlight=False)
-    response = Table(title=f"drivetrain response (mesh {data['mesh']}; {data['solved_on']})", header_style="bold")
+    response = Table(title=f"drivetrain response (mesh {results.mesh}; {results.solved_on})", header_style="bold")
     for column in ("quantity", *models, "unit"):
         response.add_column(column, justify="left" if column in ("quantity", "unit") else "right")
-    rows = [("Kv", "kv", "{:.4f}", "–"), ("DTE RMS", "dte_rms_um", "{:.3f}", "μm"),
-            ("DTE peak-to-peak", "dte_peak_to_peak_um", "{:.3f}", "μm")]
-    if not data.get("transient"):
-        rows.append(("largest |Floquet multiplier|", "largest_floquet_multiplier_abs", "{:.4f}", "–"))
-    for label, key, pattern, unit in rows:
-        response.add_row(label, *(_number(model[key], pattern) for model in models.values()), unit)
-    for stage in first.get("stages", {}):  # a train: each mesh over the common period
+    rows = [("Kv", lambda m: m.kv, "{:.4f}", "–"), ("DTE RMS", lambda m: _micro(m.dte_rms), "{:.3f}", "μm"),
+            ("DTE peak-to-peak", lambda m: _micro(m.dte_peak_to_peak), "{:.3f}", "μm")]
+    if not results.transient:
+        rows.append(("largest |Floquet multiplier|", lambda m: m.largest_floquet_multiplier_abs, "{:.4f}", "–"))
+    for label, value, pattern, unit in rows:
+        response.add_row(label, *(_number(value(model), pattern) for model in models.values()), unit)
+    for stage in first.stages or {}:  # a train: each mesh over the common period
         response.add_section()
-        for label, key, pattern, unit in (("Kv", "kv", "{:.4f}", "–"), ("DTE RMS", "dte_rms_um", "{:.3f}", "μm"),
-                                          ("DTE peak-to-peak", "dte_peak_to_peak_um", "{:.3f}", "μm"),
-                                          ("largest mesh force", "max_mesh_force_n", "{:.1f}", "N")):
-            response.add_row(f"{stage}: {label}", *(_number(model["stages"][stage][key], pattern)
+        for label, value, pattern, unit in (
+                ("Kv", lambda s: s.kv, "{:.4f}", "–"), ("DTE RMS", lambda s: _micro(s.dte_rms), "{:.3f}", "μm"),
+                ("DTE peak-to-peak", lambda s: _micro(s.dte_peak_to_peak), "{:.3f}", "μm"),
+                ("largest mesh force", lambda s: s.max_mesh_force_n, "{:.1f}", "N")):
+            response.add_row(f"{stage}: {label}", *(_number(value(model.stages[stage]), pattern)
                                                     for model in models.values()), unit)
-    if data.get("backlash_mesh"):
-        response.add_row("time without contact", *(_number(_percent(model["contact_loss_fraction"]), "{:.2f}")
+    if results.backlash_mesh:
+        response.add_row("time without contact", *(_number(_percent(model.contact_loss_fraction), "{:.2f}")
                                                    for model in models.values()), "%")
-        response.add_row("back flanks struck", *(_yes_no(model["back_side_contact"]) for model in models.values()),
-                         "")
-    if data.get("backlash_mesh") and not data.get("transient"):
+        response.add_row("back flanks struck", *(_yes_no(model.back_side_contact) for model in models.values()), "")
+    if results.backlash_mesh and not results.transient:
         response.add_row("periodic orbit found (stable)", *(_found(model) for model in models.values()), "")
-    for bearing in first["bearing_forces"]:
-        forces = {name: model["bearing_forces"][bearing] for name, model in models.items()}
+    for bearing in first.bearing_forces:
+        forces = {name: model.bearing_forces[bearing] for name, model in models.items()}
         response.add_section()
-        response.add_row(f"{bearing}: mean radial", *(_number(f["mean_radial_n"]) for f in forces.values()), "N")
-        response.add_row(f"{bearing}: dynamic RMS", *(_number(f["dynamic_rms_n"]) for f in forces.values()), "N")
-        for j, frequency in enumerate(next(iter(forces.values()))["harmonic_hz"]):
-            line = f"mesh harmonic {frequency:.0f} Hz" if "stages" in first else f"{j + 1}× mesh ({frequency:.0f} Hz)"
+        response.add_row(f"{bearing}: mean radial", *(_number(f.mean_radial_n) for f in forces.values()), "N")
+        response.add_row(f"{bearing}: dynamic RMS", *(_number(f.dynamic_rms_n) for f in forces.values()), "N")
+        for j, frequency in enumerate(next(iter(forces.values())).harmonic_hz):
+            line = f"mesh harmonic {frequency:.0f} Hz" if first.stages else f"{j + 1}× mesh ({frequency:.0f} Hz)"
             response.add_row(f"{bearing}: {line}",
-                             *(_number(f["harmonic_amplitude_n"][j], "{:.2f}") for f in forces.values()), "N")
+                             *(_number(f.harmonic_amplitude_n[j], "{:.2f}") for f in forces.values()), "N")
     console.print(response)
-    _print_warm_state(data.get("warm_state"), console)
+    _print_warm_state(results.warm_state, console)
     for name, model in models.items():
-        if model.get("failure"):
-            console.print(f"drivetrain, {name} model: no periodic orbit — {model['failure']}", highlight=False)
-    for note in data.get("notes", []):
+        if getattr(model, "failure", ""):
+            console.print(f"drivetrain, {name} model: no periodic orbit — {model.failure}", highlight=False)
+    for note in results.notes:
         console.print(f"note: {note}", highlight=False)
 
 
@@ -140,6 +123,10 @@ def _print_warm_state(warm: dict[str, Any] | None, console) -> None:
     console.print(bearings)
 
 
+def _micro(value):
+    return None if value is None else value * 1e6
+
+
 def _percent(value):
     return None if value is None else 100.0 * value
 
@@ -148,11 +135,11 @@ def _yes_no(value) -> str:
     return "not found" if value is None else "yes" if value else "no"
 
 
-def _found(model: dict[str, Any]) -> str:
+def _found(model) -> str:
     """'yes' for a converged stable orbit, 'yes (unstable)', or 'NO' where none was found."""
-    if not model.get("converged"):
+    if not getattr(model, "converged", False):
         return "NO"
-    return "yes" if model.get("stable") else "yes (unstable)"
+    return "yes" if model.stable else "yes (unstable)"
 
 
 def check_picture_folder(folder: Path, case, force: bool) -> Path:
@@ -175,10 +162,11 @@ def check_picture_folder(folder: Path, case, force: bool) -> Path:
     return target
 
 
-def write_pictures(folder: Path, build, data: dict[str, Any] | None, built=None) -> list[str]:
+def write_pictures(folder: Path, data: dict[str, Any] | None, built) -> list[str]:
     """Draw the drivetrain's pictures (:mod:`thermogear.drivetrain.pictures`) of the results ``data`` that ``run``
-    reports, from ``built`` (the report's CaseDrivetrain) or ``build()``; write each as ``<name>.png`` into
-    ``folder`` (each file written beside and renamed, so none is left half-written). Returns the file names."""
+    reports (their JSON), from ``built``, the CaseDrivetrain they came from
+    (:attr:`~thermogear.orchestrator.Orchestrator.built_drivetrain`); write each as ``<name>.png`` into ``folder``
+    (each file written beside and renamed, so none is left half-written). Returns the file names."""
     import os
 
     import matplotlib.pyplot as plt
@@ -186,10 +174,10 @@ def write_pictures(folder: Path, build, data: dict[str, Any] | None, built=None)
     from thermogear.drivetrain.pictures import drivetrain_pictures
     from thermogear.errors import CaseError
 
-    if data is not None and "not_computed" in data:
-        raise CaseError("--plot", str(folder), "a drivetrain whose results were computed",
-                        f"no pictures: {data['not_computed']}")
-    figures = drivetrain_pictures(built if built is not None else build(), data)
+    if data is None or "not_computed" in data or built is None:
+        reason = (data or {}).get("not_computed", "the drivetrain was not built")
+        raise CaseError("--plot", str(folder), "a drivetrain whose results were computed", f"no pictures: {reason}")
+    figures = drivetrain_pictures(built, data)
     folder.mkdir(parents=True, exist_ok=True)
     written = []
     for name, figure in figures.items():

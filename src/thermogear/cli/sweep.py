@@ -7,6 +7,7 @@ from pathlib import Path
 
 import typer
 
+from thermogear.dynamics.mesh_laws import mesh_law
 from thermogear.cli.app import app, console, error_console, print_json
 from thermogear.cli.console import print_warning
 from thermogear.cli.sweep_summary import load_held_summary, print_sweep_summary, response_summary
@@ -92,7 +93,7 @@ def sweep(
             raise CaseError("--direction", direction, "up | down | both",
                             "a branch is followed from the lowest speed up, from the highest down, or both")
         _warn_inert_axes(study)
-        if loaded.dynamics.mesh == "nonlinear" and method == "batch":
+        if mesh_law(loaded.dynamics.mesh).backlash and method == "batch":
             from thermogear.cli.sweep_branches import run_branch_sweep
 
             run_branch_sweep(study, out, direction or "both", overwrite, resume, plot, progress, as_json,

@@ -31,6 +31,7 @@ from typing import Any
 
 import numpy as np
 
+from thermogear.dynamics.metrics import dynamic_factor
 from thermogear.drivetrain.assembly import AssembledDrivetrain
 from thermogear.drivetrain.response import bearing_force_spectrum, bearing_forces, drivetrain_backlash_system
 from thermogear.dynamics.backlash_ndof import (BACK_CONTACT, DRIVING_CONTACT, FREE_FLIGHT, BacklashSystem, DeadZone,
@@ -337,7 +338,7 @@ def sampled_metrics(problem, trajectory: BacklashTrajectory, motion: SampledMoti
     max_system = float(np.max(elastic))
     metrics: dict[str, Any] = {
         "static_load": w0, "static_load_n_per_mm": w0 / problem.face_width / 1e3,
-        "kv": None if max_pair is None else max_pair / w0, "kv_basis": basis, "max_pair_load": max_pair,
+        "kv": None if max_pair is None else dynamic_factor(max_pair, w0), "kv_basis": basis, "max_pair_load": max_pair,
         "max_pair_load_n_per_mm": None if max_pair is None else max_pair / problem.face_width / 1e3,
         "max_system_load": max_system, "max_system_load_n_per_mm": max_system / problem.face_width / 1e3,
         "max_system_load_ratio": max_system / w0,

@@ -21,11 +21,12 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field, replace
-from functools import partial
+from types import MappingProxyType
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from thermogear.dynamics.mesh_laws import mesh_law
 from thermogear.drivetrain.assembly import Drivetrain
 from thermogear.drivetrain.case_layout import drivetrain_from_section
 from thermogear.drivetrain.heat import ModeShifts, WarmState, thermal_mode_shifts, warm_drivetrain
@@ -34,9 +35,12 @@ from thermogear.drivetrain.stages import stage_train
 from thermogear.drivetrain.warm_state import operating_clearances, shaft_temperatures, with_clearances
 from thermogear.drivetrain.modes import DrivetrainModes, drivetrain_modes
 from thermogear.drivetrain.response import DrivetrainResponse, drivetrain_periodic_response, drivetrain_speed_sweep
-from thermogear.drivetrain.result_tables import (MESH_COUPLED_SHARE, MESH_DOMINATED_SHARE, SPECTRUM_POINTS,  # noqa: F401
-                                                 bearing_force_summary, heat_table, mode_table, resonance_speeds,
-                                                 stage_summary)
+from thermogear.drivetrain.result_tables import (SPECTRUM_POINTS, bearing_force_summary, heat_table,  # noqa: F401
+                                                 mode_table, resonance_speeds, stage_summary)
+from thermogear.drivetrain.results import (MESH_COUPLED_SHARE, MESH_DOMINATED_SHARE, DrivetrainBacklashResult,
+                                           DrivetrainLinearResult, DrivetrainResults, DrivetrainTransientResult,
+                                           ModeRow, bearing_forces_of, heat_rows, mode_rows, resonances_of,
+                                           stage_results, unknown_bearing_forces)
 from thermogear.mesh.model_names import ELASTIC, THERMAL
 from thermogear.errors import CaseError
 from thermogear.mesh.model import MeshModel
@@ -47,7 +51,7 @@ if TYPE_CHECKING:
     from thermogear.drivetrain.transient_response import DrivetrainTransient
 
 __all__ = ["BACKLASH_SUBSTEPS_PER_PERIOD", "MESH_COUPLED_SHARE", "MESH_DOMINATED_SHARE",
-           "CaseDrivetrain", "backlash_substeps", "bearing_force_summary", "case_drivetrain", "drivetrain_builder",
+           "CaseDrivetrain", "backlash_substeps", "bearing_force_summary", "case_drivetrain",
            "drivetrain_results", "heat_table", "mode_table", "resonance_speeds", "stage_summary"]
 
 #: Samples per mesh-grid interval of the periodic response (the bearing-force RMS is a trapezoidal integral over
@@ -117,7 +121,7 @@ class CaseDrivetrain:
     @property
     def backlash_mesh(self) -> bool:
         """Whether the drivetrain's mesh may separate (the case's ``dynamics.mesh`` is nonlinear)."""
-        return self.dynamics.mesh == "nonlinear"
+        return mesh_law(self.dynamics.mesh).backlash
 
     def assembled(self, model: str):
         """The assembled drivetrain of one model (cached)."""
@@ -257,111 +261,103 @@ def case_drivetrain(case, models: tuple[str, ...] = (ELASTIC, THERMAL)) -> CaseD
                           warm_state=warm_state)
 
 
-def drivetrain_builder(case, models: tuple[str, ...] = (ELASTIC, THERMAL)):
-    """None for a case without a [drivetrain], else a function of no argument that builds its
-    :class:`CaseDrivetrain` (:func:`case_drivetrain`) when called — so that whoever reports the results can say
-    why the build failed."""
-    if case.drivetrain is None:
-        return None
-    return partial(case_drivetrain, case, models)
-
-
-def _response_summary(response: DrivetrainResponse, harmonics: int) -> dict[str, Any]:
+def _linear_result(response: DrivetrainResponse, harmonics: int, **common) -> DrivetrainLinearResult:
     metrics = response.metrics
     multipliers = np.abs(response.multipliers)
-    summary = {"kv": metrics["kv"], "dte_rms_um": metrics["dte_rms"] * 1e6,
-               "dte_peak_to_peak_um": metrics["dte_peak_to_peak"] * 1e6,
-               "largest_floquet_multiplier_abs": float(multipliers.max()) if multipliers.size else None,
-               "stable": bool(multipliers.size == 0 or multipliers.max() < 1.0),
-               "bearing_forces": bearing_force_summary(response, harmonics)}
-    if len(response.meshes) > 1:
-        summary["common_period_s"] = response.period
-        summary["stages"] = stage_summary(response)
-    return summary
+    train = {}
+    if len(response.meshes) > 1:  # a train: each mesh over the common period
+        train = {"common_period_s": response.period, "stages": stage_results(response)}
+    return DrivetrainLinearResult(
+        metrics["kv"], metrics["dte_rms"], metrics["dte_peak_to_peak"],
+        float(multipliers.max()) if multipliers.size else None, bool(multipliers.size == 0 or multipliers.max() < 1.0),
+        bearing_forces_of(response, harmonics, SPECTRUM_POINTS), response=response, **train, **common)
 
 
-def _backlash_summary(response: DrivetrainBacklashResponse, harmonics: int) -> dict[str, Any]:
-    """The backlash orbit's numbers: those of the linear summary, None where the orbit was not found (with the
+def _backlash_result(response: DrivetrainBacklashResponse, harmonics: int, **common) -> DrivetrainBacklashResult:
+    """The backlash orbit's numbers: those of the linear result, None where the orbit was not found (with the
     reason), and the contact it makes."""
     metrics, found = response.metrics, response.converged
     multipliers = np.abs(response.multipliers)
 
-    def shown(key: str, scale: float = 1.0):
+    def shown(key: str):
         value = metrics.get(key)
-        return None if not found or value is None or not math.isfinite(value) else scale * value
+        return None if not found or value is None or not math.isfinite(value) else value
 
-    if found:
-        forces = bearing_force_summary(response, harmonics)
-    else:  # no orbit: every force is unknown
-        frequency = 1.0 / response.period
-        forces = {name: {"mean_radial_n": None, "dynamic_rms_n": None,
-                         "harmonic_hz": [j * frequency for j in range(1, harmonics + 1)],
-                         "harmonic_amplitude_n": [None] * harmonics} for name in response.bearing_names}
     startup = metrics.get("startup") or {}
-    return {"kv": shown("kv"), "dte_rms_um": shown("dte_rms", 1e6), "dte_peak_to_peak_um": shown("dte_peak_to_peak",
-                                                                                                1e6),
-            "reached_from": startup.get("reached_from"), "branch": startup.get("branch"),
-            "coexisting_orbits": startup.get("coexisting", []), "notes": list(response.notes),
-            "largest_floquet_multiplier_abs": float(multipliers.max()) if found and multipliers.size else None,
-            "stable": response.stable, "converged": bool(found), "failure": response.failure,
-            "contact_loss_fraction": shown("contact_loss_fraction"), "back_side_contact":
-                bool(metrics.get("back_side_contact")) if found else None,
-            "back_contact_fraction": shown("back_contact_fraction"),
-            "switches_per_period": shown("switches_per_period"), "bearing_forces": forces}
+    forces = (bearing_forces_of(response, harmonics, SPECTRUM_POINTS) if found
+              else unknown_bearing_forces(response.bearing_names, response.period, harmonics))
+    return DrivetrainBacklashResult(
+        shown("kv"), shown("dte_rms"), shown("dte_peak_to_peak"),
+        float(multipliers.max()) if found and multipliers.size else None, response.stable, forces,
+        response=response, converged=bool(found), failure=response.failure,
+        contact_loss_fraction=shown("contact_loss_fraction"),
+        back_side_contact=bool(metrics.get("back_side_contact")) if found else None,
+        back_contact_fraction=shown("back_contact_fraction"), switches_per_period=shown("switches_per_period"),
+        reached_from=startup.get("reached_from"), branch=startup.get("branch"),
+        coexisting_orbits=tuple(startup.get("coexisting", [])), orbit_notes=tuple(response.notes), **common)
 
 
-def _transient_summary(transient: DrivetrainTransient, harmonics: int) -> dict[str, Any]:
+def _transient_result(transient: DrivetrainTransient, harmonics: int, **common) -> DrivetrainTransientResult:
     """The last period of the motion from rest: Kv, DTE, contact and bearing forces (no orbit: no multipliers)."""
     metrics = transient.last_period
-    return {"kv": metrics["kv"], "dte_rms_um": metrics["dte_rms"] * 1e6,
-            "dte_peak_to_peak_um": metrics["dte_peak_to_peak"] * 1e6, "largest_floquet_multiplier_abs": None,
-            "stable": None, "transient_periods": transient.periods,
-            "contact_loss_fraction": metrics["contact_loss_fraction"],
-            "back_side_contact": metrics["back_side_contact"],
-            "back_contact_fraction": metrics["back_contact_fraction"],
-            "bearing_forces": bearing_force_summary(transient.last_period_forces, harmonics)}
+    return DrivetrainTransientResult(
+        metrics["kv"], metrics["dte_rms"], metrics["dte_peak_to_peak"], None, None,
+        bearing_forces_of(transient.last_period_forces, harmonics, SPECTRUM_POINTS), response=transient,
+        transient_periods=transient.periods, contact_loss_fraction=metrics["contact_loss_fraction"],
+        back_side_contact=metrics["back_side_contact"], back_contact_fraction=metrics["back_contact_fraction"],
+        **common)
+
+
+def mesh_modes_above(built: CaseDrivetrain, model: str, rows: tuple[ModeRow, ...]) -> tuple[ModeRow, ...]:
+    """The mesh-dominated modes above the listed ``rows`` (the section's ``mode_count``) and up to its
+    ``response_cutoff_hz`` (issue 36: the mesh mode of a drivetrain with many shaft and bearing modes lies above the
+    first twelve and must not go unlisted)."""
+    every = drivetrain_modes(built.assembled(model), max_frequency_hz=built.section.response_cutoff_hz)
+    return tuple(row for row in mode_rows(every, built.drivetrains[model], first=len(rows)) if row.mesh_dominated)
 
 
 def drivetrain_results(built: CaseDrivetrain, models: tuple[str, ...] = (ELASTIC, THERMAL),
-                       transient: bool = False, progress=None, series: dict | None = None) -> dict[str, Any]:
-    """Everything ``run`` reports of a case's drivetrain (``built`` by :func:`case_drivetrain`), as plain numbers
-    (JSON-ready): per model the modes (:func:`mode_table`), the response (Kv, DTE, Floquet stability, bearing
-    forces; with the case's nonlinear mesh the backlash orbit, its contact loss and whether it was found; with
-    ``transient`` the last period of the motion from rest instead) and the speeds where mesh harmonics meet
-    mesh-dominated modes; with both models, what heat moved per mode (:func:`heat_table`). ``progress`` is called
-    with a step's name before each model's response. A ``series`` dict receives, per model, the periodic
-    response's arrays for a results file (:func:`~thermogear.drivetrain.response_dataset.response_dataset_parts`:
-    DTE, mesh force and bearing forces over one mesh period, the bearings' mesh harmonics)."""
+                       transient: bool = False, progress=None, series: dict | None = None) -> DrivetrainResults:
+    """Everything ``run`` reports of a case's drivetrain (``built`` by :func:`case_drivetrain`), typed
+    (:class:`~thermogear.drivetrain.results.DrivetrainResults`): per model the modes, the response (Kv, DTE, Floquet
+    stability, bearing forces; with the case's nonlinear mesh the backlash orbit, its contact loss and whether it was
+    found; with ``transient`` the last period of the motion from rest instead) and the speeds where mesh harmonics
+    meet mesh-dominated modes; with both models, what heat moved per mode. ``progress`` is called with a step's name
+    before each model's response. A ``series`` dict receives, per model, the periodic response's arrays for a results
+    file (:func:`~thermogear.drivetrain.response_dataset.response_dataset_parts`)."""
     section = built.section
-    mesh = (f"{'nonlinear (backlash)' if built.backlash_mesh else 'linear (permanent contact)'} on the drivetrain"
-            + (f"; last of {built.dynamics.transient_periods} periods from rest" if transient else ""))
-    result: dict[str, Any] = {
-        "degrees_of_freedom": built.assembled(ELASTIC).size, "response_cutoff_hz": section.response_cutoff_hz,
-        "mesh": mesh, "backlash_mesh": built.backlash_mesh, "transient": bool(transient),
-        "solved_on": f"modes up to {section.response_cutoff_hz:.0f} Hz",
-        "notes": list(built.notes), "warm_state": built.warm_state, "models": {}}
+    mesh = f"{mesh_law(built.dynamics.mesh).description} on the drivetrain"
+    if transient:
+        mesh += f"; last of {built.dynamics.transient_periods} periods from rest"
+    results = {}
     for model in models:
         if progress is not None:
             progress(f"drivetrain, {model} model")
-        rows = mode_table(built.modes(model), built.drivetrains[model])
+        rows = mode_rows(built.modes(model), built.drivetrains[model])
+        common = {"modes": rows, "mesh_modes": mesh_modes_above(built, model, rows),
+                  "resonances": resonances_of(rows, built.teeth, section.bearing_harmonics, built.stages)}
         if transient:
-            summary = _transient_summary(built.transient(model), section.bearing_harmonics)
+            results[model] = _transient_result(built.transient(model), section.bearing_harmonics, **common)
+            continue
+        if built.backlash_mesh:
+            response = built.backlash_response(model)
+            results[model] = _backlash_result(response, section.bearing_harmonics, **common)
         else:
-            response = built.backlash_response(model) if built.backlash_mesh else built.response(model)
-            summary = (_backlash_summary if built.backlash_mesh else _response_summary)(response,
-                                                                                      section.bearing_harmonics)
-            result["notes"].extend(f"drivetrain, {model} model: {note}" for note in summary.get("notes", ()))
-            if series is not None:
-                from thermogear.drivetrain.response_dataset import response_dataset_parts
+            response = built.response(model)
+            results[model] = _linear_result(response, section.bearing_harmonics, **common)
+        if series is not None:
+            from thermogear.drivetrain.response_dataset import response_dataset_parts
 
-                parts = response_dataset_parts(response, section.bearing_harmonics,
-                                               {"model": model, "mesh": mesh, "speed_rpm": built.models[model].speed_rpm},
-                                               SPECTRUM_POINTS)
-                if parts is not None:
-                    series[model] = parts
-        result["models"][model] = {**summary, "modes": rows,
-                                   "resonances": resonance_speeds(rows, built.teeth, section.bearing_harmonics,
-                                                                  built.stages)}
-    if ELASTIC in models and THERMAL in models:
-        result["heat"] = heat_table(built.heat_shifts(), built.drivetrains[ELASTIC])
-    return result
+            parts = response_dataset_parts(response, section.bearing_harmonics,
+                                           {"model": model, "mesh": mesh, "speed_rpm": built.models[model].speed_rpm},
+                                           SPECTRUM_POINTS)
+            if parts is not None:
+                series[model] = parts
+    heat = (heat_rows(built.heat_shifts(), built.drivetrains[ELASTIC]) if ELASTIC in models and THERMAL in models
+            else None)
+    return DrivetrainResults(built.assembled(ELASTIC).size, section.response_cutoff_hz, mesh, built.backlash_mesh,
+                             bool(transient), f"modes up to {section.response_cutoff_hz:.0f} Hz",
+                             tuple(built.notes) + tuple(f"drivetrain, {name} model: {note}"
+                                                        for name, result in results.items()
+                                                        for note in getattr(result, "orbit_notes", ())),
+                             MappingProxyType(results), heat, MappingProxyType(built.warm_state))

@@ -53,7 +53,8 @@ def _label(motion: dict[str, float], by_shaft: dict[tuple[str, str], float]) -> 
 
 
 def drivetrain_modes(assembled: AssembledDrivetrain, speed: float = 0.0, mesh_stiffness: np.ndarray | None = None,
-                     damped: bool = False, count: int | None = None) -> DrivetrainModes:
+                     damped: bool = False, count: int | None = None,
+                     max_frequency_hz: float | None = None) -> DrivetrainModes:
     """Modes at reference speed Ω [rad/s] and mean (or given constant) mesh stiffness [N/m].
 
     Undamped and non-spinning by default (symmetric eigenproblem); ``damped`` or a speed > 0 takes the state-space
@@ -74,6 +75,9 @@ def drivetrain_modes(assembled: AssembledDrivetrain, speed: float = 0.0, mesh_st
         ratios = np.zeros_like(frequencies)
     if count is not None:
         frequencies, ratios, shapes = frequencies[:count], ratios[:count], shapes[:, :count]
+    if max_frequency_hz is not None:  # the modes up to a frequency [Hz] (the shares are computed for these only)
+        kept = int(np.count_nonzero(frequencies / (2.0 * np.pi) <= max_frequency_hz))
+        frequencies, ratios, shapes = frequencies[:kept], ratios[:kept], shapes[:, :kept]
     full = reduction.expand(shapes)
     kinetic, by_shaft = _kinetic_fractions(assembled, full)
     per_shaft = {name: sum(by_shaft[(kind, name)] for kind in _MOTIONS) for name in assembled.node_offsets}

@@ -22,6 +22,7 @@ from typing import Any
 
 import numpy as np
 
+from thermogear.dynamics.metrics import dynamic_factor
 from thermogear.dynamics.backlash_periodic import BacklashHistory, BacklashOrbit
 from thermogear.dynamics.backlash_problem import BacklashMeshProblem
 from thermogear.dynamics.spectra import harmonic_spectrum, time_mean_and_rms
@@ -82,7 +83,7 @@ def orbit_metrics(orbit: BacklashOrbit, include_damping_force: bool = False, har
         "max_mesh_force": float(np.max(total)),
         "min_mesh_force": float(np.min(total)),
         "max_pair_force": max_pair,
-        "kv": max_pair / w0,
+        "kv": dynamic_factor(max_pair, w0),
         "max_mesh_force_ratio": float(np.max(total)) / w0,
         "dte_mean": mean,
         "dte_rms": rms,

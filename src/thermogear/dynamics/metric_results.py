@@ -18,6 +18,7 @@ from dataclasses import dataclass
 from types import MappingProxyType
 from typing import Any
 
+from thermogear.dynamics.mesh_laws import mesh_law
 from thermogear.errors import ProblemError
 
 __all__ = ["ContactLoss", "EXTRA_KEYS", "LinearMetrics", "NonlinearContactLoss", "NonlinearMetrics", "typed_metrics"]
@@ -71,6 +72,36 @@ class _MetricRecord:
     def as_dict(self) -> dict[str, Any]:
         """The metrics dict: the keys in field order, lists for tuples, dicts for mappings and nested results."""
         return {item.name: _plain(getattr(self, item.name)) for item in dataclasses.fields(self)}
+
+    def scalars(self) -> dict[str, Any]:
+        """The single-number metrics (SI), nested results flattened as ``<field>_<name>``."""
+        values: dict[str, Any] = {}
+        for item in dataclasses.fields(self):
+            value = getattr(self, item.name)
+            if isinstance(value, _MetricRecord):
+                values.update({f"{item.name}_{key}": inner for key, inner in value.scalars().items()})
+            elif value is None or isinstance(value, bool | int | float | str):
+                values[item.name] = value
+        return values
+
+    def to_dataframe(self):
+        """The single-number metrics as one row (pandas)."""
+        import pandas as pd  # noqa: PLC0415
+
+        return pd.DataFrame([self.scalars()])
+
+    def to_dataset(self):
+        """The single-number metrics as scalar variables, the per-region ones along ``region`` (xarray)."""
+        import xarray as xr  # noqa: PLC0415
+
+        data = {name: ((), value) for name, value in self.scalars().items() if value is not None}
+        regions = getattr(self, "equilibrium_per_region", None)
+        if regions:
+            names = list(regions)
+            for field in ("equilibrium_per_region", "amplitude_per_region"):
+                data[field] = ("region", [getattr(self, field).get(name, float("nan")) for name in names])
+            return xr.Dataset(data, coords={"region": names})
+        return xr.Dataset(data)
 
 
 @dataclass(frozen=True)
@@ -214,5 +245,5 @@ class NonlinearMetrics(_MetricRecord):
 def typed_metrics(metrics: Mapping[str, Any]) -> LinearMetrics | NonlinearMetrics:
     """The typed metrics of a response's metrics dict (nonlinear where its ``mesh`` says so), the keys of
     ``EXTRA_KEYS`` left in the dict."""
-    kind = NonlinearMetrics if metrics.get("mesh") == "nonlinear" else LinearMetrics
+    kind = NonlinearMetrics if mesh_law(metrics.get("mesh")).backlash else LinearMetrics
     return kind.from_dict({key: value for key, value in metrics.items() if key not in EXTRA_KEYS})

@@ -62,6 +62,13 @@ def _contact_loss(time: np.ndarray, force: np.ndarray, minimum: float, static_lo
             "min_force_ratio": float(minimum / static_load)}
 
 
+def dynamic_factor(max_pair_load, static_load):
+    """The dynamic load factor Kv = 1 + Δw/w0 = max pair load / w0 [-] (Luo & Li 2020 Eq. 29: Δw the largest
+    single-pair dynamic load above the static load w0), of floats or arrays [N]: the one definition every response
+    (1-DOF pair linear or backlash, drivetrain, sweep fast path) uses."""
+    return max_pair_load / static_load
+
+
 def compute_metrics(problem: MeshDynamicsProblem, time: np.ndarray, displacement: np.ndarray,
                     velocity: np.ndarray, interval: np.ndarray, multipliers: np.ndarray,
                     include_damping_force: bool = False) -> dict[str, Any]:
@@ -95,7 +102,7 @@ def compute_metrics(problem: MeshDynamicsProblem, time: np.ndarray, displacement
         else:
             max_pair = None
             basis = "unavailable: no pair stiffness and no single-contact interval"
-    metrics["kv"] = None if max_pair is None else max_pair / w0
+    metrics["kv"] = None if max_pair is None else dynamic_factor(max_pair, w0)
     metrics["kv_basis"] = basis
     metrics["max_pair_load"] = max_pair
     metrics["max_pair_load_n_per_mm"] = None if max_pair is None else max_pair / problem.face_width / 1e3
@@ -153,4 +160,4 @@ def _check_finite(value: Any, key: str = "metrics") -> None:
         raise ModelLimitError(f"{key} is not finite ({value}); the model is out of its numerical range")
 
 
-__all__ = ["compute_metrics", "sampled_load"]
+__all__ = ["compute_metrics", "dynamic_factor", "sampled_load"]

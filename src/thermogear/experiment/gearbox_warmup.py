@@ -23,6 +23,7 @@ import math
 from dataclasses import dataclass, replace
 from typing import Any, Callable
 
+from thermogear.dynamics.mesh_laws import mesh_law
 from thermogear.errors import CaseError
 from thermogear.gearbox.backlash import ColdStart, cold_start_backlash
 from thermogear.gearbox.case_model import (PredictedTemperatureError, gearbox_model_from_case,
@@ -162,7 +163,7 @@ def _periodic_kv(sim, previous: tuple[float, float] | None) -> tuple[float, tupl
     search from rest) is not run: it only labels the branch, which the warm-up does not report. Linear mesh: the
     periodic solution is unique; ``solve`` as it is."""
     dynamics = sim.case.dynamics
-    if dynamics.mesh != "nonlinear":
+    if not mesh_law(dynamics.mesh).backlash:
         return float(sim.solve(method="periodic").metrics["kv"]), None
     from thermogear.dynamics.backlash_metrics import orbit_metrics  # noqa: PLC0415
     from thermogear.dynamics.backlash_periodic import periodic_response  # noqa: PLC0415

@@ -23,6 +23,7 @@ import warnings
 from typing import TYPE_CHECKING
 
 from thermogear.errors import CaseError, ModelAssumptionWarning
+from thermogear.temperature_kinds import temperature_source
 
 if TYPE_CHECKING:
     from thermogear.geometry import GearPair
@@ -102,12 +103,12 @@ def check_gearbox_inputs(section: "GearboxSection", pair: "GearPair", temperatur
             warnings.warn(f"gearbox.bearings: the {shaft} shaft's bearings carry {total:.3g} of the tooth force "
                           "(count × load_fraction); the rest is carried by nothing the model knows",
                           ModelAssumptionWarning, stacklevel=3)
-    if temperature.model == "gearbox":
+    if temperature_source(temperature.model).predicted_at_load:  # the gearbox network (or a registered model)
         for key in GIVEN_TEMPERATURE_KEYS:
             if key in temperature.model_fields_set:
                 raise CaseError(f"temperature.{key}", getattr(temperature, key), "absent with temperature.model = "
-                                "'gearbox'", "the gearbox network predicts the gear temperatures: the key would have "
-                                "no effect")
+                                f"'{temperature.model}'", "the temperature model predicts the gear temperatures: the "
+                                "key would have no effect")
 
 
 __all__ = ["GIVEN_TEMPERATURE_KEYS", "check_gearbox_inputs", "housing_box", "oil_floor_and_level"]

@@ -96,6 +96,29 @@ class GearboxSteadyState(GearboxState):
         """The flags in words ('' when none)."""
         return "; ".join(FLAG_MEANINGS[flag] for flag in self.flags)
 
+    def to_dataframe(self):
+        """One row per node: its steady temperature [°C] (pandas); the losses and the heat out in ``attrs``."""
+        import pandas as pd  # noqa: PLC0415
+
+        frame = pd.DataFrame({"temperature_c": np.asarray(self.temperatures_c, dtype=float)},
+                             index=pd.Index(NODES, name="node"))
+        frame.attrs.update(heat_out_w=self.heat_out, total_loss_w=self.losses.total,
+                           energy_residual=self.energy_residual, backlash_m=self.backlash)
+        return frame
+
+    def to_dataset(self):
+        """xarray Dataset: the node temperatures [°C], the losses by source [W], the heat out, the backlash."""
+        import xarray as xr  # noqa: PLC0415
+
+        losses = self.losses
+        return xr.Dataset(
+            {"temperature": ("node", np.asarray(self.temperatures_c, dtype=float), {"units": "degC"}),
+             "loss": ("source", [losses.mesh, losses.bearings, losses.seals, losses.churning, losses.injection],
+                      {"units": "W"}),
+             "heat_out": ((), self.heat_out, {"units": "W"}), "backlash": ((), self.backlash, {"units": "m"})},
+            coords={"node": list(NODES), "source": ["mesh", "bearings", "seals", "churning", "injection"]},
+            attrs={"energy_residual": self.energy_residual})
+
 
 @dataclass(frozen=True)
 class WarmUpHistory:
@@ -137,6 +160,29 @@ class WarmUpHistory:
         """(smallest normal backlash [m], the time it occurs [s]); a value ≤ 0 means the gears jam."""
         index = int(np.argmin(self.backlash))
         return float(self.backlash[index]), float(self.times[index])
+
+    def to_dataframe(self):
+        """One row per time [s]: each node's temperature [°C], the losses by source [W] and the backlash [m]."""
+        import pandas as pd  # noqa: PLC0415
+
+        columns = {f"{name}_c": self.temperatures_c[index] for index, name in enumerate(NODES)}
+        columns.update(mesh_loss_w=self.mesh_loss, bearing_loss_w=self.bearing_loss, seal_loss_w=self.seal_loss,
+                       churning_loss_w=self.churning_loss, jet_loss_w=self.jet_loss, backlash_m=self.backlash)
+        return pd.DataFrame(columns, index=pd.Index(self.times, name="time_s"))
+
+    def to_dataset(self):
+        """xarray Dataset over time: node temperatures [°C] (node, time), losses [W] and backlash [m]."""
+        import xarray as xr  # noqa: PLC0415
+
+        return xr.Dataset(
+            {"temperature": (("node", "time"), self.temperatures_c, {"units": "degC"}),
+             "mesh_loss": ("time", self.mesh_loss, {"units": "W"}),
+             "bearing_loss": ("time", self.bearing_loss, {"units": "W"}),
+             "seal_loss": ("time", self.seal_loss, {"units": "W"}),
+             "churning_loss": ("time", self.churning_loss, {"units": "W"}),
+             "jet_loss": ("time", self.jet_loss, {"units": "W"}), "backlash": ("time", self.backlash, {"units": "m"})},
+            coords={"node": list(NODES), "time": ("time", self.times, {"units": "s"})},
+            attrs={"energy_residual": self.energy_residual})
 
 
 @dataclass(frozen=True, eq=False)

@@ -21,6 +21,7 @@ import numpy as np
 
 from thermogear.damping import (FRICTION_DAMPING_LOAD_EXPONENT, FRICTION_DAMPING_SPEED_EXPONENT, PairDamping,
                                 friction_pair_damping, mesh_circular_frequency, mesh_damping)
+from thermogear.composition import X_TE_PROVIDERS
 from thermogear.errors import CaseError
 from thermogear.lubricant import Lubricant, lubricant_from_case
 from thermogear.mesh.model_names import MODELS, Model
@@ -132,7 +133,7 @@ class MeshModel:
         on the speed (the FE heat model; the gearbox model, whose predicted temperatures follow speed and load). Sweeps use it to reuse one mesh period (and do not where the pairs carry
         deviations: the excitation is not part of their batch kernel)."""
         if (self.case.temperature.model in OPERATING_POINT_TEMPERATURE_MODELS
-                or getattr(self.case.thermal, "x_te_source", "") == "fem"):
+                or getattr(self.case.thermal, "x_te_source", "") in X_TE_PROVIDERS):  # X_te by a model (FE)
             return None
         table = mesh_table_of(self.case)
         if table is not None and table.damping is not None:  # the table's c(τ) holds at every speed and load

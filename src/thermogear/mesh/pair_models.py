@@ -30,6 +30,7 @@ from typing import TYPE_CHECKING, Any, ClassVar, Protocol
 
 import numpy as np
 
+from thermogear.dynamics.mesh_laws import mesh_law
 from thermogear.errors import CaseError
 from thermogear.mesh.model_names import MODELS, THERMAL
 from thermogear.mesh.secant_checks import secant_stiffness_drop_flag, secant_stiffness_in_nonlinear_mesh
@@ -156,7 +157,7 @@ class PairModelBase:
         """Normal backlash [m] at the reference temperature; None where neither the model nor a nonlinear mesh
         needs it."""
         mesh = self.thermoelastic_mesh
-        if mesh is None and self.case.dynamics.mesh == "nonlinear":
+        if mesh is None and mesh_law(self.case.dynamics.mesh).backlash:
             mesh = ThermoelasticMesh.from_case(self.case)
         return None if mesh is None else mesh.backlash_normal_cold
 
@@ -207,7 +208,7 @@ class Luo2020Pair(PairModelBase):
     @classmethod
     def choice_flags(cls, mesh: str) -> list[str]:
         """The secant k_T at the static load is no contact stiffness once the teeth separate (nonlinear mesh)."""
-        return [secant_stiffness_in_nonlinear_mesh(0.0)] if mesh == "nonlinear" else []
+        return [secant_stiffness_in_nonlinear_mesh(0.0)] if mesh_law(mesh).backlash else []
 
     @property
     def stiffness_depends_on_load(self) -> bool:
@@ -245,7 +246,7 @@ class Luo2020Pair(PairModelBase):
         drop = secant_stiffness_drop_flag(self.temperature, mean_stiffness, elastic_mean_stiffness())
         if drop is not None:
             flags.append(drop)
-        if metrics.get("mesh") == "nonlinear":
+        if mesh_law(metrics.get("mesh")).backlash:
             flags.append(secant_stiffness_in_nonlinear_mesh(metrics.get("contact_loss_fraction") or 0.0))
         return flags
 

@@ -16,7 +16,7 @@ from typing import Callable
 from thermogear.citations import citations_used, clear_citations
 from thermogear.report.evaluate import (Evaluation, evaluate_case, is_paper_case, key_results, model_messages,
                                         paper_verdicts)
-from thermogear.report.rig_section import rig_section, rig_verdicts, start_rig_prediction, with_rig_section
+from thermogear.report.rig_section import rig_section, rig_verdicts, with_rig_section
 from thermogear.report.steps import steps_of_report
 from thermogear.report.writer import OutputFolder
 
@@ -42,10 +42,10 @@ class ReportOutcome:
         return self.folder / "report.html"
 
 
-def report_steps(citation: str | None, models=("elastic", "thermal")) -> list[str]:
+def report_steps(citation: str | None, models=("elastic", "thermal"), drivetrain: bool = False) -> list[str]:
     """The progress steps of :func:`build_report` for a case whose ``[case] citation`` is ``citation`` (for a
-    progress bar's total)."""
-    return steps_of_report(is_paper_case(citation), models)
+    progress bar's total); ``drivetrain``: the case has a ``[drivetrain]``."""
+    return steps_of_report(is_paper_case(citation), models, drivetrain)
 
 
 def build_report(case, out: Path | str, *, force: bool = False, method: str = "periodic", paper: bool | None = None,
@@ -62,6 +62,7 @@ def build_report(case, out: Path | str, *, force: bool = False, method: str = "p
     from thermogear import __version__, forked
     from thermogear.evaluation import finish_evaluation
     from thermogear.report.figures import FE_FIGURES, FIGURES, write_figures
+    from thermogear.report.drivetrain_section import drivetrain_json
     from thermogear.report.html import render_report
     from thermogear.report.results_file import case_toml_text, summary_document, write_summary_json
 
@@ -73,17 +74,10 @@ def build_report(case, out: Path | str, *, force: bool = False, method: str = "p
     folder.check()
     clear_citations()
     paper = is_paper_case(case.citation) if paper is None else paper
-    rig = start_rig_prediction() if paper else None  # the paper's rig, predicted in a child meanwhile
-    evaluation = evaluate_case(case, method=method, progress=step, wait=False)  # FE: still in its child
+    # FE verification and the paper's rig: still in their children
+    evaluation = evaluate_case(case, method=method, progress=step, wait=False, rig_prediction=paper)
     evaluation.timings = {**before, **evaluation.timings}
-    from thermogear.drivetrain.case_model import drivetrain_builder
-    from thermogear.report.drivetrain_section import drivetrain_report_data  # [drivetrain] cases (issue 27)
-
-    drivetrain_models = tuple(evaluation.responses) or ("elastic",)
-    evaluation.drivetrain = drivetrain_report_data(_kept(drivetrain_builder(case, drivetrain_models), evaluation),
-                                                   drivetrain_models,
-                                                   transient=method == "transient",
-                                                   series=evaluation.drivetrain_series)
+    rig = evaluation.rig
     with folder:
         step("figures")
         figure_start = time.perf_counter()
@@ -126,25 +120,13 @@ def build_report(case, out: Path | str, *, force: bool = False, method: str = "p
         (folder.path / "report.html").write_text(page, encoding="utf-8")
         evaluation.timings["files"] = time.perf_counter() - write_start  # summary.json, written last, is ~1 ms
         document = summary_document(evaluation, verdicts, results, messages, figures, missing, citations)
-        if evaluation.drivetrain is not None:
-            document["drivetrain"] = evaluation.drivetrain
+        drivetrain = drivetrain_json(evaluation.drivetrain, evaluation.problems.get("drivetrain"))
+        if drivetrain is not None:
+            document["drivetrain"] = drivetrain
         write_summary_json(document, folder.path / "summary.json")
     return ReportOutcome(folder=folder.target, evaluation=evaluation, verdicts=verdicts, results=results,
                          messages=messages, figures=sorted(figures), missing_figures=missing,
                          seconds=time.perf_counter() - start + sum(before.values()), timings=dict(evaluation.timings))
-
-
-def _kept(build, evaluation):
-    """``build`` (None, or the function that builds a case's CaseDrivetrain) that also keeps what it built on
-    ``evaluation``, before the figures' processes start: the drivetrain pictures draw from it."""
-    if build is None:
-        return None
-
-    def built():
-        evaluation.drivetrain_built = build()
-        return evaluation.drivetrain_built
-
-    return built
 
 
 def _draw_shared_figures(evaluation, folder: Path, counter) -> dict[str, str]:

@@ -5,32 +5,20 @@ from __future__ import annotations
 
 import html
 import math
-from collections.abc import Callable
 from typing import Any
 
-__all__ = ["drivetrain_report_data", "drivetrain_section"]
+__all__ = ["drivetrain_json", "drivetrain_section"]
 
 
-def drivetrain_report_data(build: Callable[[], Any] | None, models: tuple[str, ...] = ("elastic", "thermal"),
-                           transient: bool = False, progress=None, series: dict | None = None
-                           ) -> dict[str, Any] | None:
-    """The drivetrain results as JSON-ready numbers (:func:`~thermogear.drivetrain.case_model.drivetrain_results`
-    of the CaseDrivetrain that ``build()`` returns; None for a case without ``[drivetrain]``, ``build`` None);
-    where they cannot be computed, ``{"not_computed": reason}`` (the rest of the report stands). ``series``: filled
-    per model with the response's arrays for results.nc."""
-    if build is None:
-        return None
-    from thermogear.drivetrain.case_model import drivetrain_results
-    from thermogear.errors import CaseError, ModelLimitError
+def drivetrain_json(results, reason: str | None = None) -> dict[str, Any] | None:
+    """The drivetrain's results (:class:`~thermogear.drivetrain.results.DrivetrainResults`) as the JSON-ready
+    object of ``run --json`` and ``summary.json``; ``{"not_computed": reason}`` where they could not be computed
+    (``reason``); None for a case without a ``[drivetrain]``."""
+    if results is None:
+        return None if reason is None else {"not_computed": reason}
     from thermogear.serialization import json_ready
 
-    try:
-        return json_ready(drivetrain_results(build(), models, transient, progress, series), non_finite="null")
-    except ModelLimitError as error:  # most often a mode nothing damps: say where damping comes from
-        return {"not_computed": f"{error} (every mode needs damping: give the shafts material_damping_s and the "
-                                "bearings damping in x, y and, where they locate the shaft, z)"}
-    except CaseError as error:
-        return {"not_computed": str(error)}
+    return json_ready(results.as_json(), non_finite="null")
 
 
 def _number(value, pattern: str = "{:.1f}") -> str:
@@ -45,97 +33,115 @@ def _cells(values: list[str], header: bool = False) -> str:
                             for i, v in enumerate(values)) + "</tr>"
 
 
-def _modes_table(data: dict[str, Any]) -> str:
-    models = data["models"]
+def _other_share(shares) -> float:
+    return sum(value for key, value in shares.items() if key not in ("mesh", "bearings", "shafts"))
+
+
+def _modes_table(results) -> str:
+    models = results.models
     first = next(iter(models.values()))
-    heat = data.get("heat")
+    heat = results.heat
     header = ["mode", "label"] + [f"{name} [Hz]" for name in models] + ["mesh", "bearings", "shafts", "other"]
     if heat:
         header += ["shift cold→hot [%]", "main cause"]
     rows = [_cells(header, header=True)]
-    for index, mode in enumerate(first["modes"]):
-        shares = mode["energy_shares"]
-        other = sum(value for key, value in shares.items() if key not in ("mesh", "bearings", "shafts"))
-        cells = [str(index + 1), mode["label"] + (" (mesh-dominated)" if mode["mesh_dominated"] else "")]
-        cells += [_number(model["modes"][index]["frequency_hz"]) for model in models.values()]
-        cells += [f"{shares.get(key, 0.0):.3f}" for key in ("mesh", "bearings", "shafts")] + [f"{other:.3f}"]
+    for index, mode in enumerate(first.modes):
+        shares = mode.energy_shares
+        cells = [str(index + 1), mode.label + (" (mesh-dominated)" if mode.mesh_dominated else "")]
+        cells += [_number(model.modes[index].frequency_hz) for model in models.values()]
+        cells += [f"{shares.get(key, 0.0):.3f}" for key in ("mesh", "bearings", "shafts")]
+        cells += [f"{_other_share(shares):.3f}"]
         if heat:
-            cells += [f"{heat[index]['shift_percent']:+.3f}", heat[index]["dominant_cause"]]
+            cells += [f"{100.0 * heat[index].shift:+.3f}", heat[index].dominant_cause]
         rows.append(_cells(cells))
-    return "<table>" + "".join(rows) + "</table>"
+    return "<table>" + "".join(rows) + "</table>" + _mesh_modes_text(results)
 
 
-def _bearings_table(data: dict[str, Any]) -> str:
-    models = data["models"]
+def _mesh_modes_text(results) -> str:
+    """The mesh-dominated modes above the listed ones (issue 36), and how to tabulate them."""
+    count = len(next(iter(results.models.values())).modes)
+    above = {name: model.mesh_modes for name, model in results.models.items() if model.mesh_modes}
+    if not above:
+        return ""
+    listed = "; ".join(f"{name}: " + ", ".join(f"{row.frequency_hz:.0f} Hz {row.label} (mesh share "
+                                               f"{row.mesh_share:.2f})" for row in rows)
+                       for name, rows in above.items())
+    return (f"<p>Mesh-dominated modes above the {count} listed, up to the response cut-off: "
+            f"{html.escape(listed)}. Raise <code>drivetrain.mode_count</code> to tabulate every mode up to them.</p>")
+
+
+def _bearings_table(results) -> str:
+    models = results.models
     first = next(iter(models.values()))
-    harmonics = len(next(iter(first["bearing_forces"].values()))["harmonic_amplitude_n"])
+    harmonics = len(next(iter(first.bearing_forces.values())).harmonic_amplitude_n)
     header = ["bearing", "model", "mean radial [N]", "dynamic RMS [N]"] + [f"{j}× mesh [N]"
                                                                            for j in range(1, harmonics + 1)]
     rows = [_cells(header, header=True)]
-    for bearing in first["bearing_forces"]:
+    for bearing in first.bearing_forces:
         for name, model in models.items():
-            force = model["bearing_forces"][bearing]
-            rows.append(_cells([bearing, name, _number(force["mean_radial_n"]), _number(force["dynamic_rms_n"])]
-                               + [_number(a, "{:.2f}") for a in force["harmonic_amplitude_n"]]))
+            force = model.bearing_forces[bearing]
+            rows.append(_cells([bearing, name, _number(force.mean_radial_n), _number(force.dynamic_rms_n)]
+                               + [_number(a, "{:.2f}") for a in force.harmonic_amplitude_n]))
     return "<table>" + "".join(rows) + "</table>"
 
 
-def _orbit_found(model: dict[str, Any]) -> str:
-    if not model.get("converged"):
+def _orbit_found(model) -> str:
+    if not getattr(model, "converged", False):
         return "NO"
-    return "yes" if model.get("stable") else "yes (unstable)"
+    return "yes" if model.stable else "yes (unstable)"
 
 
-def _extent(data: dict[str, Any]) -> str:
+def _extent(results) -> str:
     """On what the response was solved: every DOF, or the modes up to the cut-off plus the static corrections."""
-    solved_on = data.get("solved_on", f"modes up to {data['response_cutoff_hz']:.0f} Hz")
-    return solved_on + ("" if solved_on == "every DOF" else " plus the static corrections")
+    return results.solved_on + ("" if results.transient else " plus the static corrections")
 
 
-def drivetrain_section(data: dict[str, Any] | None) -> str:
-    """HTML of the drivetrain results (empty for a case without a drivetrain)."""
-    if not data:
-        return ""
-    if "not_computed" in data:
+def drivetrain_section(results, reason: str | None = None) -> str:
+    """HTML of the drivetrain results (:class:`~thermogear.drivetrain.results.DrivetrainResults`; empty for a case
+    without a drivetrain, ``reason`` where they could not be computed)."""
+    if results is None:
+        if reason is None:
+            return ""
         return ("<h2 id='drivetrain'>The pair in its drivetrain</h2><div class='warn'>Not computed: "
-                f"{html.escape(data['not_computed'])}</div>")
-    models = data["models"]
-    backlash = bool(data.get("backlash_mesh"))
+                f"{html.escape(reason)}</div>")
+    models = results.models
+    backlash = results.backlash_mesh
     header = ["model", "Kv", "DTE RMS [μm]", "DTE peak-to-peak [μm]", "largest |Floquet multiplier|"]
     if backlash:
         header += ["time without contact [%]", "back flanks struck", "periodic orbit found"]
     rows = []
     for name, m in models.items():
-        cells = [name, _number(m["kv"], "{:.4f}"), _number(m["dte_rms_um"], "{:.3f}"),
-                 _number(m["dte_peak_to_peak_um"], "{:.3f}"), _number(m["largest_floquet_multiplier_abs"], "{:.4f}")]
+        cells = [name, _number(m.kv, "{:.4f}"), _number(_micro(m.dte_rms), "{:.3f}"),
+                 _number(_micro(m.dte_peak_to_peak), "{:.3f}"), _number(m.largest_floquet_multiplier_abs, "{:.4f}")]
         if backlash:
-            fraction = m.get("contact_loss_fraction")
-            struck = m.get("back_side_contact")
+            fraction, struck = m.contact_loss_fraction, m.back_side_contact
             cells += [_number(None if fraction is None else 100.0 * fraction, "{:.2f}"),
                       "not found" if struck is None else "yes" if struck else "no",
-                      "—" if data.get("transient") else _orbit_found(m)]
+                      "—" if results.transient else _orbit_found(m)]
         rows.append(_cells(cells))
     for name, m in models.items():  # a train: each mesh over the common period
-        for stage, values in m.get("stages", {}).items():
-            rows.append(_cells([f"{name}, {stage}", _number(values["kv"], "{:.4f}"),
-                                _number(values["dte_rms_um"], "{:.3f}"), _number(values["dte_peak_to_peak_um"], "{:.3f}"),
-                                "—"] + ["—"] * (3 if backlash else 0)))
+        for stage, values in (m.stages or {}).items():
+            rows.append(_cells([f"{name}, {stage}", _number(values.kv, "{:.4f}"),
+                                _number(_micro(values.dte_rms), "{:.3f}"),
+                                _number(_micro(values.dte_peak_to_peak), "{:.3f}"), "—"]
+                               + ["—"] * (3 if backlash else 0)))
     response = "".join(rows)
     failures = "".join(f"<p class='small'>{html.escape(name)} model: no periodic orbit — "
-                       f"{html.escape(m['failure'])}</p>" for name, m in models.items() if m.get("failure"))
-    resonances = sorted({(round(r["speed_rpm"]), r["harmonic"], round(r["mode_hz"]), r["label"],
-                          " (mesh-dominated)" if r["mesh_dominated"] else "", name)
-                         for name, m in models.items() for r in m["resonances"]})
+                       f"{html.escape(m.failure)}</p>" for name, m in models.items() if getattr(m, "failure", ""))
+    resonances = sorted({(round(r.speed_rpm), r.harmonic, round(r.mode_hz), r.label,
+                          " (mesh-dominated)" if r.mesh_dominated else "", name)
+                         for name, m in models.items() for r in m.resonances})
     resonance_text = "; ".join(f"{h}× mesh meets {f} Hz {label}{dominated} at {n} rpm ({name})"
                                for n, h, f, label, dominated, name in resonances) or "none"
-    notes = "".join(f"<p class='small'>{html.escape(note)}</p>" for note in data.get("notes", []))
+    notes = "".join(f"<p class='small'>{html.escape(note)}</p>" for note in results.notes)
     return ("<h2 id='drivetrain'>The pair in its drivetrain</h2>"
-            f"<p>{data['degrees_of_freedom']} degrees of freedom (Timoshenko shafts, gear bodies, bearings, "
+            f"<p>{results.degrees_of_freedom} degrees of freedom (Timoshenko shafts, gear bodies, bearings, "
             f"couplings, the mesh along the line of action); the response is solved exactly "
-            f"({html.escape(_extent(data))}), with the mesh {html.escape(data['mesh'])}. Cold: the elastic mesh model, shafts at 20 °C; hot: the case's thermal "
-            "model, shafts' E(T), hot mesh stiffness and geometry. Energy shares are of the modal strain energy "
-            "(mesh-dominated: mesh share above 0.1).</p>"
-            + _modes_table(data)
+            f"({html.escape(_extent(results))}), with the mesh {html.escape(results.mesh)}. Cold: the elastic mesh "
+            "model, shafts at 20 °C; hot: the case's thermal model, shafts' E(T), hot mesh stiffness and geometry. "
+            "Energy shares are of the modal strain energy (mesh-dominated: mesh share above 0.1). The headline Kv "
+            "above is the drivetrain's; the results table gives the 1-DOF pair's on rigid supports beside it.</p>"
+            + _modes_table(results)
             + "<table>" + _cells(header, header=True) + response + "</table>" + failures
             + f"<p>Mesh harmonics meet modes with a mesh share above 0.01 at: {html.escape(resonance_text)}.</p>"
             + "<h3>Dynamic bearing forces on the housing</h3>"
@@ -144,4 +150,8 @@ def drivetrain_section(data: dict[str, Any] | None) -> str:
             "sees. The forces in time (x, y, z over one mesh period, with the DTE and the mesh force) and their "
             "mesh harmonics per direction are in <code>results.nc</code>, group <code>drivetrain_&lt;model&gt;</code>"
             " (the transient's are not stored).</p>"
-            + _bearings_table(data) + notes)
+            + _bearings_table(results) + notes)
+
+
+def _micro(value: float | None) -> float | None:
+    return None if value is None else value * 1e6

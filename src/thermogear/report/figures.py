@@ -288,7 +288,7 @@ def _drivetrain_picture(name: str, evaluation):
     results came from."""
     from thermogear.drivetrain.pictures import drivetrain_pictures
 
-    return drivetrain_pictures(evaluation.drivetrain_built, evaluation.drivetrain, (name,))[name]
+    return drivetrain_pictures(evaluation.drivetrain_built, evaluation.drivetrain.as_json(), (name,))[name]
 
 
 _DRAW: dict[str, tuple[Callable[[Any], Any], tuple[str, ...]]] = {
@@ -313,10 +313,10 @@ def report_figures(evaluation, names=None) -> tuple[dict[str, Any], dict[str, st
         if names is not None and name not in names:
             continue
         if name in DRIVETRAIN_PICTURES:
-            if evaluation.drivetrain is None:  # a case without [drivetrain]: nothing to draw, nothing missing
-                continue
-            if evaluation.drivetrain_built is None or "not_computed" in evaluation.drivetrain:
-                missing[name] = evaluation.drivetrain.get("not_computed", "the drivetrain was not built")
+            if evaluation.drivetrain is None and "drivetrain" not in evaluation.problems:
+                continue  # a case without [drivetrain]: nothing to draw, nothing missing
+            if evaluation.drivetrain is None or evaluation.drivetrain_built is None:
+                missing[name] = evaluation.problems.get("drivetrain") or "the drivetrain was not built"
                 continue
         if name == "fig15" and evaluation.fem is None:
             missing[name] = evaluation.problem("FE verification") or "the FE verification was not run"

@@ -158,10 +158,7 @@ def _headline_section(evaluation, verdicts, pngs: dict[str, bytes]) -> str:
                         f"<span class='small'>{_e(cause)}</span></details></li>" for cause, keys in by_cause.items())
         parts.append(f"<p><b>Known gaps, by cause</b> (details in the table below):</p><ul class='gaps'>{items}</ul>")
     else:
-        metrics = {model: response.metrics for model, response in evaluation.responses.items()}
-        kv = " · ".join(f"{model}: Kv {m['kv']:.3f}, f_n {m['natural_frequency_hz']:.0f} Hz"
-                        for model, m in metrics.items() if "kv" in m)
-        parts.append(f"<p class='headline' id='headline-numbers'>{_e(kv) or 'no dynamic response computed'}</p>")
+        parts.append(f"<p class='headline' id='headline-numbers'>{_e(_headline_numbers(evaluation))}</p>")
     keys = [name for name in ("fig4", "fig9", "fig12") if name in pngs]
     if keys:
         thumbs = "".join(f"<a href='#{name}'><img alt='{_e(FIGURES[name])}' title='{_e(FIGURES[name])}' "
@@ -170,6 +167,25 @@ def _headline_section(evaluation, verdicts, pngs: dict[str, bytes]) -> str:
         parts.append(f"<div class='key-figures'>{thumbs}</div>")
     parts.append("</section>")
     return "".join(parts)
+
+
+def _headline_numbers(evaluation) -> str:
+    """The headline of a case without the paper table: per model the drivetrain's Kv where the case has a drivetrain
+    (the structure it describes; the 1-DOF pair's beside it, labelled), else the pair's, with f_n."""
+    metrics = {model: response.metrics for model, response in evaluation.responses.items()}
+    drivetrain = evaluation.drivetrain.models if evaluation.drivetrain is not None else {}
+    shown = []
+    for model, m in metrics.items():
+        if "kv" not in m:
+            continue
+        pair = f"Kv {m['kv']:.3f}" if m["kv"] is not None else "Kv not found"
+        if model in drivetrain:
+            kv = drivetrain[model].kv
+            shown.append(f"{model}: drivetrain Kv {'not found' if kv is None else f'{kv:.3f}'} (1-DOF pair on rigid "
+                         f"supports: {pair}, f_n {m['natural_frequency_hz']:.0f} Hz)")
+        else:
+            shown.append(f"{model}: {pair}, f_n {m['natural_frequency_hz']:.0f} Hz")
+    return " · ".join(shown) or "no dynamic response computed"
 
 
 def _paper_section(verdicts) -> str:
@@ -225,7 +241,15 @@ def render_report(evaluation, *, version: str, toml_text: str, pngs: dict[str, b
         # a model check (a result the user should weigh) is a note; contact loss or instability an alert
         kind = "warn" if ": check — " in message else "alert"
         parts.append(f"<div class='{kind}'>{_e(message)}</div>")
+    if evaluation.warnings:  # near the top as well as at the end (issue 36)
+        parts.append(f"<details class='warn'><summary>{len(evaluation.warnings)} warning(s) raised during the run "
+                     "(also listed at the end)</summary>"
+                     + "".join(f"<p class='small'>{_e(w)}</p>" for w in evaluation.warnings) + "</details>")
     nav = ["<a href='#case'>case</a>", "<a href='#figures'>figures</a>", "<a href='#results'>results</a>"]
+    if evaluation.case.drivetrain is not None:
+        nav.append("<a href='#drivetrain'>drivetrain</a>")
+    if evaluation.warnings:
+        nav.append("<a href='#warnings'>warnings</a>")
     if verdicts:
         nav += ["<a href='#paper'>paper vs thermogear</a>"]
     if "drivetrain_layout" in pngs:  # a [drivetrain] case: its pictures among the figures
@@ -244,14 +268,14 @@ def render_report(evaluation, *, version: str, toml_text: str, pngs: dict[str, b
                                   {"fig15": fe_versus_analytical_text(fe_numbers)} if fe_numbers else {}))
     parts.append(_results_section(results))
     parts.append(thermoelastic_section(evaluation.thermoelastic))
-    parts.append(drivetrain_section(getattr(evaluation, "drivetrain", None)))
+    parts.append(drivetrain_section(evaluation.drivetrain, evaluation.problems.get("drivetrain")))
     if verdicts:
         parts.append(_paper_section(verdicts))
     if evaluation.problems:
         parts.append("<h2>Stages not computed</h2><ul>" + "".join(
             f"<li><b>{_e(k)}</b>: {_e(v)}</li>" for k, v in evaluation.problems.items()) + "</ul>")
     if evaluation.warnings:
-        parts.append("<h2>Warnings raised during the run</h2>" + "".join(
+        parts.append("<h2 id='warnings'>Warnings raised during the run</h2>" + "".join(
             f"<div class='warn'>{_e(w)}</div>" for w in evaluation.warnings))
     timing = ", ".join(f"{k} {v:.2f} s" for k, v in evaluation.timings.items())
     parts.append(f"<p class='small'>Run times: {_e(timing)}.</p>")

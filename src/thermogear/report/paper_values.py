@@ -265,10 +265,9 @@ def paper_values(evaluation: Evaluation) -> dict[str, Any]:
              "fig12.peaks_at_transitions", "fig12.max_pair_load_at_B"), ("elastic model", "thermal model"), response)
 
     def shares():
-        from thermogear.mesh.model import MeshModel
-        from thermogear.summaries.load_share import pair_load_share_at_points
-
-        elastic, thermal = (pair_load_share_at_points(MeshModel(case, model)) for model in ("elastic", "thermal"))
+        if evaluation.pair_load_shares is None:
+            raise ValueUnavailable("the pair load shares are computed for the paper's case only")
+        elastic, thermal = evaluation.pair_load_shares["elastic"], evaluation.pair_load_shares["thermal"]
         return {"fig12.single_pair_rises_at_A_E": bool(thermal["A"] > elastic["A"] and thermal["E"] > elastic["E"]
                                                        and thermal["B"] < elastic["B"] and thermal["D"] < elastic["D"]),
                 "_pair_share": {"elastic": elastic, "thermal": thermal}}

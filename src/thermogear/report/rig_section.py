@@ -16,7 +16,8 @@ from __future__ import annotations
 import html
 from dataclasses import replace
 
-from thermogear import forked, warning_scope
+from thermogear import forked
+from thermogear.evaluation import start_rig_prediction  # noqa: F401  (where the report found it before)
 from thermogear.report.paper_checks import Absolute, PaperRow, Verdict, judge
 
 __all__ = ["RIG_SECTION", "rig_rows", "rig_section", "rig_verdicts", "start_rig_prediction", "with_rig_section"]
@@ -46,20 +47,6 @@ RIG_NOTE = ("Assumed rig: FZG type C gears as a stand-in, 1.25 L ISO VG 100 dip-
 
 #: Runs whose rows are known gaps (documented in docs/gearbox-temperature.md): the faster two.
 GAP_SPEEDS_RPM = (900.0, 1400.0)
-
-
-def _predicted_runs() -> dict:
-    from thermogear.experiment.rig_prediction import predicted_runs  # noqa: PLC0415
-
-    with warning_scope.recorded() as caught:  # the viscosity fit extrapolated below 40 °C: said in the section
-        cold, chained = predicted_runs()
-    messages = [str(item.message) for item in caught]
-    return {"cold": cold, "chained": chained, "messages": messages}
-
-
-def start_rig_prediction() -> forked.Background:
-    """Start the rig predictions in a forked child (or run them now where forking is not available)."""
-    return forked.start("rig prediction", _predicted_runs)
 
 
 def _result(rig: forked.Background) -> tuple[dict | None, str]:

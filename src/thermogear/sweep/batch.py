@@ -37,6 +37,8 @@ from typing import Any
 
 import numpy as np
 
+from thermogear.dynamics.metrics import dynamic_factor
+from thermogear.dynamics.mesh_laws import mesh_law
 from thermogear import warning_scope
 from thermogear.errors import JammingError, ModelLimitError, ProblemError
 from thermogear.mesh.model import MeshModel
@@ -98,7 +100,7 @@ def group_tables(mesh: MeshModel, normal_load: float | None = None, points_per_p
     """The speed-independent tables of a mesh model at its case's speed and the load ``normal_load`` [N] (default:
     the case's); None where the fast path cannot be exact for this model (see the module docstring)."""
     scaling = mesh.damping_scaling
-    if scaling is None or mesh.case.dynamics.mesh == "nonlinear":  # the nonlinear mesh: sweep.branches
+    if scaling is None or mesh_law(mesh.case.dynamics.mesh).backlash:  # the nonlinear mesh: sweep.branches
         return None
     state = mesh.state(normal_load=normal_load, points_per_period=points_per_period)
     if np.any(state.pair_deviation != 0.0):
@@ -156,7 +158,7 @@ def evaluate_loads(tables: GroupTables, speeds_rpm, loads, samples: int | None =
     with np.errstate(invalid="ignore"):
         contact_loss = np.where(stable, values[:, 2] < 0.0, False)
     return {
-        "kv": values[:, 0] / loads,
+        "kv": dynamic_factor(values[:, 0], loads),
         "max_pair_load": values[:, 0],
         "max_system_load_ratio": values[:, 1] / loads,
         "dte_mean": values[:, 3],
@@ -312,7 +314,7 @@ def evaluate_block(study, block, method: str = "batch") -> tuple[dict[str, np.nd
 def _evaluate_model(study, method, shared, group_case, model, model_index, values, axes, layout, speeds, indices,
                     result) -> None:
     """One model over one group of a block: the fast path where it is exact, else one Simulation per point."""
-    from thermogear.simulation import Simulation  # noqa: PLC0415  (the model chain only where a point runs it)
+    from thermogear.orchestrator import Orchestrator  # noqa: PLC0415  (the model chain only where a point runs it)
 
     speed_axis, load_axes, members = layout
     if method == "batch":
@@ -330,7 +332,8 @@ def _evaluate_model(study, method, shared, group_case, model, model_index, value
         if member:
             values[speed_axis] = axes[speed_axis][member]
         point_case = group_case if member == 0 else study.case_at(tuple(values))
-        one = {k: np.array([v]) for k, v in evaluate_point(Simulation(point_case, model)).items()}
+        point = Orchestrator(point_case, (model,), "periodic").simulation(model)  # the one orchestrator's wiring
+        one = {k: np.array([v]) for k, v in evaluate_point(point).items()}
         _store(result, one, model_index, tuple(np.array([index[member]]) for index in indices))
 
 

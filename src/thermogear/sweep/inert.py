@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from thermogear.temperature_kinds import temperature_source
 from thermogear.errors import JammingError
 from thermogear.mesh.model import MeshModel
 
@@ -28,7 +29,7 @@ def _signature(mesh: MeshModel) -> list[np.ndarray]:
 def inert_parameters(study) -> list[str]:
     """Names of the study's parameters whose first and last values give every model identical mesh periods.
     Cases whose temperature comes from the FE heat model are not checked (each state would run the FE model)."""
-    if study.case.temperature.model == "fem":
+    if temperature_source(study.case.temperature.model).solved_per_state:
         return []
     first = tuple(parameter.values[0] for parameter in study.parameters)
     inert = []

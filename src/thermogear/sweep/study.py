@@ -28,6 +28,7 @@ from typing import Any
 import numpy as np
 import pydantic
 
+from thermogear.temperature_kinds import temperature_source
 from thermogear.errors import CaseError, JammingError, closest_key
 from thermogear.schema.values import MAX_POINTS, parse_values
 from thermogear.sweep.load_held import HOLDS, fixed_load_changes
@@ -348,7 +349,7 @@ def case_fingerprint(document: dict) -> str:
 
 def _flank_table_of(section) -> tuple[float, ...]:
     """The inline flank temperatures [°C] of a ``[temperature]`` section (the table a flank offset shifts)."""
-    if section.model != "tabulated" or section.flank_c is None:
+    if not temperature_source(section.model).tabulated or section.flank_c is None:
         raise CaseError("vary.flank_temperature_offset_c", section.model,
                         "a case with temperature.model = 'tabulated' and flank_c given inline",
                         "the offset shifts the tabulated flank temperatures; for a uniform temperature vary "

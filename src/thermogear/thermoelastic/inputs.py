@@ -9,6 +9,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from thermogear.temperature_kinds import temperature_source
 from thermogear.errors import CaseError, JammingError
 from thermogear.geometry import GearPair
 from thermogear.temperature_field import MATERIAL_MAXIMUM_C, MATERIAL_MINIMUM_C  # the material data's range [°C]
@@ -112,9 +113,9 @@ def check_tip_relief(pair: GearPair, name: str, inputs: GearInputs) -> None:
 def bulk_temperatures_c(temperature_section) -> tuple[float, float] | None:
     """Gear body temperatures the case gives directly (uniform: the bulk; tabulated: the base circles), None when
     a model computes them (FE)."""
-    if temperature_section.model == "uniform" and temperature_section.bulk_c is not None:
+    if temperature_source(temperature_section.model).uniform and temperature_section.bulk_c is not None:
         return temperature_section.bulk_c, temperature_section.bulk_c
-    if temperature_section.model == "tabulated" and temperature_section.pinion_base_c is not None:
+    if temperature_source(temperature_section.model).tabulated and temperature_section.pinion_base_c is not None:
         wheel = temperature_section.wheel_base_c
         return temperature_section.pinion_base_c, temperature_section.pinion_base_c if wheel is None else wheel
     return None
@@ -151,7 +152,8 @@ def check_thermoelastic_inputs(pair: GearPair, document) -> None:
     bulk = bulk_temperatures_c(document.temperature)
     if bulk is None:
         return
-    key = "temperature.bulk_c" if document.temperature.model == "uniform" else "temperature.pinion_base_c"
+    key = ("temperature.bulk_c" if temperature_source(document.temperature.model).uniform
+           else "temperature.pinion_base_c")
     if max(bulk) > MATERIAL_MAXIMUM_C:
         raise CaseError(key, max(bulk), f"<= {MATERIAL_MAXIMUM_C} °C",
                         "above what the material data cover (E(T) fitted on 21–204 °C; gear steels temper at "

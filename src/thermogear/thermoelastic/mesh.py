@@ -15,6 +15,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from thermogear.temperature_kinds import temperature_source
 from thermogear.case import cached_per_case
 from thermogear.geometry import GearPair
 from thermogear.materials import Material
@@ -235,7 +236,7 @@ def thermoelastic_mesh(field: TemperatureField, pair: GearPair, gears_section, m
                housing.expansion_per_k * (housing.temperature_c - reference))
     allowance = backlash_allowance(pair, gears_section)
     hot_backlash = check_not_jammed(pair, allowance, inputs[0], inputs[1], housing, reference, bulk_c,
-                                    "temperature.bulk_c" if field.source == "uniform" else "temperature")
+                                    "temperature.bulk_c" if temperature_source(field.source).uniform else "temperature")
     rise = jamming_rise(pair, allowance, inputs[0].expansion_per_k, inputs[1].expansion_per_k, strains[2])
     tooth_c = _tooth_temperatures(field, pair)
     modulus = material.youngs_modulus
@@ -257,7 +258,7 @@ def thermoelastic_mesh(field: TemperatureField, pair: GearPair, gears_section, m
 def _tooth_temperatures(field: TemperatureField, pair: GearPair) -> tuple[float, float]:
     """Tooth temperature of each gear for E(T) [°C]: the mean of its flank temperature over the path and its
     base-circle temperature (a uniform field: the bulk temperature, exactly)."""
-    if field.source == "uniform":
+    if temperature_source(field.source).uniform:
         return field.pinion_base_c, field.wheel_base_c
     gamma = pair.gamma(pair.roll_grid(DISTORTION_POINT_COUNT))
     pinion_flank = float(np.mean(field.pinion_flank_c(gamma)))
@@ -274,7 +275,7 @@ def _distortion_table(field: TemperatureField, pair: GearPair, inputs, bulk_rise
     """
     roll = pair.roll_grid(DISTORTION_POINT_COUNT)
     gamma = np.asarray(pair.gamma(roll), dtype=float)
-    if field.source == "uniform":
+    if temperature_source(field.source).uniform:
         zero = np.zeros_like(gamma)
         gamma.setflags(write=False)
         zero.setflags(write=False)
