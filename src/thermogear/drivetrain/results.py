@@ -23,12 +23,10 @@ __all__ = ["BearingForces", "DrivetrainBacklashResult", "DrivetrainLinearResult"
            "Resonance", "StageResult", "bearing_forces_of", "heat_rows", "mode_rows", "resonances_of", "stage_results"]
 
 #: A mode is "mesh-dominated" when the mesh holds more than this share of its strain energy: a threshold chosen
-#: here (Velex & Berthe 1989 rank modes by this share; no source fixes a value). Kept low so that no mode the mesh
-#: excites noticeably is left unmarked.
+#: here (Velex & Berthe 1989 rank modes by this share; no source fixes one), low so no mode it excites goes unmarked.
 MESH_DOMINATED_SHARE = 0.1
-#: Modes with a smaller mesh share still respond to the mesh where a harmonic meets them: lateral modes of a few
-#: per cent mesh share carry the largest bearing forces (the FZG rig set: 3–4 % share, bearing-force peaks 4×
-#: the torsional mode's). Their crossings are listed too, marked not mesh-dominated. A threshold chosen here.
+#: Modes with a smaller mesh share still respond where a harmonic meets them: lateral modes of 3–4 % mesh share
+#: carry the largest bearing forces of the FZG rig set. Their crossings are listed too. A threshold chosen here.
 MESH_COUPLED_SHARE = 0.01
 
 
@@ -38,9 +36,8 @@ def _frozen_mapping(values: Mapping) -> Mapping:
 
 @dataclass(frozen=True)
 class ModeRow:
-    """One undamped mode: frequency [Hz], label, the mesh's share of its strain energy (a train's: all meshes'),
-    the shares grouped (mesh, bearings, shafts, couplings, supports) and per element, and whether the mesh dominates
-    it; for a train, ``mesh_shares`` each mesh's share and ``dominant_mesh`` the one that holds most."""
+    """One undamped mode: frequency [Hz], label, the mesh's (a train's: all meshes') share of its strain energy, the
+    shares grouped and per element, whether the mesh dominates it; a train's ``mesh_shares`` and ``dominant_mesh``."""
 
     frequency_hz: float
     label: str
