@@ -9,7 +9,7 @@ backlash_periodic_orbit`) finds one of them; which one a gearbox shows depends o
   at once, as the 1-DOF model starts) settles on: ``run_in_periods`` mesh periods of the exact flow, then shooting
   from there (a second run-in if the first did not settle). Where the reference orbit keeps one contact state
   throughout (no switch), the motion from rest is first followed under that state's linear flow
-  (:func:`~thermogear.dynamics.periodic_ndof.motion_projections`): if it never leaves the contact state, it is the
+  (:func:`~thermogear.dynamics.periodic_motion.motion_projections`): if it never leaves the contact state, it is the
   motion of the backlash system and it tends to the reference orbit (the linear system's only periodic orbit), so
   no flow with switches is needed.
 * :func:`stable_orbits_ndof`: every stable orbit of one mesh period that a set of starts settles on, with the share
@@ -37,7 +37,8 @@ import numpy as np
 from thermogear.dynamics.backlash_ndof import (DRIVING_CONTACT, BacklashOrbitNDOF, BacklashSystem,
                                                backlash_flow_ndof, backlash_periodic_orbit)
 from thermogear.dynamics.backlash_pieces import contact_state_system
-from thermogear.dynamics.periodic_ndof import motion_projections, periodic_response
+from thermogear.dynamics.periodic_motion import motion_projections
+from thermogear.dynamics.periodic_ndof import periodic_response
 from thermogear.errors import ModelLimitError, ProblemError
 
 __all__ = ["OrbitCensusNDOF", "StartupOrbit", "StableOrbitNDOF", "orbit_distance", "settle", "start_states_ndof",

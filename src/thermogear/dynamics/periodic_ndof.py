@@ -36,8 +36,8 @@ from thermogear.dynamics.piece_groups import PIECE_TOLERANCE, group_rows
 from thermogear.dynamics.problem import checked_array, checked_nodes
 from thermogear.errors import ProblemError
 
-__all__ = ["RUN_ROUTE_SIZE", "PiecewiseLinearSystem", "PeriodicResponse", "monodromy", "motion_projections",
-           "ordered_product", "periodic_response", "piece_steps"]
+__all__ = ["RUN_ROUTE_SIZE", "PiecewiseLinearSystem", "PeriodicResponse", "monodromy", "ordered_product",
+           "periodic_response", "piece_steps"]
 
 
 @dataclass(frozen=True, eq=False)
@@ -234,41 +234,6 @@ def piece_steps(system: PiecewiseLinearSystem, samples: int) -> tuple[np.ndarray
     the index (N,) of each piece's among them (equal pieces once, the others as rank updates of the mean piece:
     ``_piece_steps``). For other solvers of piecewise-linear flows (the backlash pieces of each contact state)."""
     return _piece_steps(system, samples)
-
-
-def motion_projections(system: PiecewiseLinearSystem, state: np.ndarray, periods: int, samples_per_piece: int,
-                       rows: np.ndarray) -> np.ndarray:
-    """(P·N·s + 1, r): the functionals ``rows`` (r, 2n) of the state z(t) at the s = ``samples_per_piece`` equal
-    sub-steps of every piece of P = ``periods`` periods of the motion from ``state`` (2n,) at t = 0, and at the end.
-
-    One pass over the pieces carries each sample's functionals back to the period's start, rows·e^{A_j h_j i/s}·T_j
-    with T_j the transition from the start to node j (one (2n+1)² product per piece, as the monodromy), so that each
-    period then costs one product with its start state and the period's transition: the motion from rest over
-    many periods is watched (e.g. for the mesh gap) without stepping it. Exact as :func:`periodic_response`."""
-    samples = int(samples_per_piece)
-    distinct, where = _piece_steps(system, samples)
-    rows = np.atleast_2d(np.asarray(rows, dtype=float))
-    n, count = system.size, rows.shape[0]
-    augmented = np.zeros((count, 2 * n + 1))
-    augmented[:, :2 * n] = rows
-    functionals = np.empty((distinct.shape[0], samples, count, 2 * n + 1))
-    current = np.broadcast_to(augmented, (distinct.shape[0], count, 2 * n + 1))
-    for sample in range(samples):
-        functionals[:, sample] = current
-        current = current @ distinct
-    whole = _power(distinct, samples)
-    transfer = np.empty((where.size, samples, count, 2 * n + 1))
-    transition = np.eye(2 * n + 1)
-    for piece, index in enumerate(where):
-        transfer[piece] = functionals[index] @ transition
-        transition = whole[index] @ transition
-    z = np.append(np.asarray(state, dtype=float), 1.0)
-    values = np.empty((int(periods), where.size * samples, count))
-    flat = transfer.reshape(where.size * samples, count, 2 * n + 1)
-    for period in range(int(periods)):
-        values[period] = flat @ z
-        z = transition @ z
-    return np.vstack([values.reshape(-1, count), (augmented @ z)[None]])
 
 
 # The rank-update route costs about 6·d·r·m² per piece (Krylov products and the rank-(d·r) sum, d ≈ 15 terms; m = 2n+1)
