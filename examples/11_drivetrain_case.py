@@ -41,7 +41,7 @@ def main(out: Path) -> dict:
         cold = mode_table(built.modes("elastic"), built.drivetrains["elastic"])
         heat = heat_table(built.heat_shifts(), built.drivetrains["elastic"])
         origin = SweepOrigin(case.name, str(case.source), case.document, case.operating_point.load_held)
-        sweep = drivetrain_speed_sweep(built, origin, SPEEDS, ("elastic", "thermal"), workers=2)
+        sweep = drivetrain_speed_sweep(built, origin, SPEEDS, ("elastic", "thermal"))
     data = sweep.dataset
     first = data["bearing_harmonic_amplitude_n"].sel(harmonic=1).max("bearing")  # largest bearing, 1× mesh
     teeth = case.gear_pair.pinion.teeth

@@ -164,11 +164,16 @@ def test_sweep_of_a_drivetrain_case_stores_kv_dte_and_bearing_forces_per_speed(t
     assert plot.stat().st_size > 10_000
 
 
-def test_a_drivetrain_sweep_varies_speed_only(tmp_path):
+def test_a_drivetrain_sweep_varies_other_keys_than_speed(tmp_path):
+    """Issue 34: a drivetrain study varies any key (it used to refuse all but speed_rpm): each torque is a point
+    with its own response, in the store."""
+    import xarray as xr
+
     result = _cli("sweep", str(TWO_SHAFTS), "--vary", "torque_nm=100,200", "--out", str(tmp_path / "x.zarr"))
-    assert result.returncode != 0
-    assert "--vary = 'torque_nm'" in result.stderr and "speed_rpm=VALUES only" in result.stderr
-    assert not (tmp_path / "x.zarr").exists()
+    assert result.returncode == 0, result.stderr
+    data = xr.open_zarr(tmp_path / "x.zarr")
+    assert "torque_nm" in data.dims and list(data["torque_nm"].values) == [100.0, 200.0]
+    assert "2 valid points" in result.stdout
 
 
 def test_the_docs_page_shows_the_worked_case_file_verbatim():
