@@ -114,25 +114,32 @@ def test_absurd_sizes_are_refused_with_the_size(luo2019):
 def test_local_cluster_starts_no_dashboard_unless_asked(monkeypatch):
     import distributed
 
+    from thermogear.sweep import executor
+
     started = []
 
     class FakeCluster:
         def __init__(self, **options):
             started.append(options)
 
-        def close(self):
-            pass
+        def __enter__(self):
+            return self
 
-    class FakeClient:
+        def __exit__(self, *exc):
+            return False
+
+    class FakeClient(FakeCluster):
         def __init__(self, cluster):
             self.cluster = cluster
 
-        def close(self):
+        def register_plugin(self, plugin):
             pass
 
     monkeypatch.setattr(distributed, "LocalCluster", FakeCluster)
     monkeypatch.setattr(distributed, "Client", FakeClient)
-    engine._client("processes", 1)
-    engine._client("processes", 1, dashboard=":0")
+    with executor._client("processes", 1, None):
+        pass
+    with executor._client("processes", 1, ":0"):
+        pass
     assert started[0]["dashboard_address"] is None
     assert started[1]["dashboard_address"] == ":0"

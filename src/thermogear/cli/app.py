@@ -68,7 +68,8 @@ COMMANDS: dict[str, CommandEntry] = {
                                                     "states."),
     "gearbox": CommandEntry("thermogear.cli.gearbox", "Steady temperatures, power losses by source, efficiency "
                                                       "and backlash of the case's gearbox, at its operating point "
-                                                      "or over speeds × torques."),
+                                                      "or over speeds × torques, on the study executor (serial, "
+                                                      "worker processes or a Dask scheduler)."),
     "vibration": CommandEntry("thermogear.cli.vibration", "Vibration analysis of a measured signal (Luo & Li "
                                                           "2020 Table 3 / Fig. 18 style)."),
 }
