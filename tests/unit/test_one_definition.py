@@ -20,7 +20,8 @@ def definitions(name: str, root: Path = SOURCE) -> list[str]:
 
 
 def test_material_maximum_is_defined_once():
-    assert definitions("MATERIAL_MAXIMUM_C") == ["temperature_field.py"]
+    # defined with the other temperature limits (issue 35: one set of limits for every command)
+    assert definitions("MATERIAL_MAXIMUM_C") == ["temperature_limits.py"]
     assert inputs.MATERIAL_MAXIMUM_C is temperature_field.MATERIAL_MAXIMUM_C
 
 

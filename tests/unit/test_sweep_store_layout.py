@@ -47,7 +47,7 @@ def _array_metadata(root) -> dict[str, dict]:
 
 
 @pytest.mark.parametrize("vary", [["speed_rpm=1000:9000:30", "torque_nm=200,400"],
-                                  ["gears.pinion.teeth=26,27", "speed_rpm=2000,4000,6000"]])
+                                  ["dynamics.points_per_period=512,1024", "speed_rpm=2000,4000,6000"]])
 def test_layout_equals_xarrays(luo2019, tmp_path, vary):
     study = Study.define(luo2019, vary, chunk_points=7)
     with warnings.catch_warnings():

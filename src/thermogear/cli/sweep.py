@@ -168,7 +168,7 @@ def _run_drivetrain(study, out: Path, direction, multistart: int, method: str, s
         raise CaseError("--method", method, "batch (the default) for a case with a [drivetrain]",
                         "the drivetrain study solves each speed's periodic orbit on its modal reduction; there is "
                         "no one-Simulation-per-point reference for a drivetrain")
-    backlash = study.case.dynamics.mesh == "nonlinear"
+    backlash = mesh_law(study.case.dynamics.mesh).backlash
     if chunk_points is not None and backlash:
         raise CaseError("--chunk-points", chunk_points, "absent with the backlash mesh",
                         "each point of a branch is its own task (it starts from its neighbour's orbit), so a "

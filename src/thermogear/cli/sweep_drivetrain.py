@@ -11,6 +11,7 @@ from types import SimpleNamespace
 import numpy as np
 
 from thermogear.errors import CaseError
+from thermogear.dynamics.mesh_laws import mesh_law
 
 __all__ = ["drivetrain_models", "run_drivetrain_sweep"]
 
@@ -42,7 +43,7 @@ def run_drivetrain_sweep(study, out: Path, direction: str | None, options: dict,
     from thermogear.cli.sweep_drivetrain_branches import drivetrain_branch_summary, print_branch_summary, save_figure
     from thermogear.sweep.drivetrain_run import run_drivetrain_study
 
-    backlash = study.case.dynamics.mesh == "nonlinear"
+    backlash = mesh_law(study.case.dynamics.mesh).backlash
     if direction is not None and not backlash:
         raise CaseError("--direction", direction, "only with [dynamics] mesh = \"nonlinear\"",
                         "the linear mesh has one steady solution per speed: there is no branch to follow")

@@ -16,6 +16,7 @@ from pathlib import Path
 from typing import Any
 
 from thermogear.errors import CaseError
+from thermogear.dynamics.mesh_laws import mesh_law
 
 __all__ = ["STUDY_KINDS", "StudyKind", "study"]
 
@@ -68,7 +69,7 @@ def _refuse(options: dict, kind: str, **defaults) -> None:
 #: The kinds of study, tried in order.
 STUDY_KINDS: tuple[StudyKind, ...] = (
     StudyKind("drivetrain", lambda case, method: case.drivetrain is not None, _run_drivetrain),
-    StudyKind("branches", lambda case, method: case.dynamics.mesh == "nonlinear" and method == "batch",
+    StudyKind("branches", lambda case, method: mesh_law(case.dynamics.mesh).backlash and method == "batch",
               _run_branches),
     StudyKind("grid", lambda case, method: True, _run_grid),
 )
