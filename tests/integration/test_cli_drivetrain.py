@@ -37,6 +37,10 @@ def test_run_json_holds_the_drivetrain_modes_bearing_forces_and_heat():
     force = elastic["bearing_forces"]["wheel bearing A"]
     assert force["dynamic_rms_n"] > 0.0 and len(force["harmonic_amplitude_n"]) == 3
     assert elastic["kv"] > 1.0 and elastic["stable"]
+    # issue 38: the response states its cut-off's estimated error (solved again on twice the cut-off)
+    cutoff = elastic["cutoff_error"]
+    assert cutoff["check_cutoff_hz"] == 2.0 * cutoff["cutoff_hz"] == 2.0 * drivetrain["response_cutoff_hz"]
+    assert 0.0 < cutoff["dte_relative"] < 0.01 and 0.0 < cutoff["bearing_force_relative"] < 0.1
     assert len(drivetrain["heat"]) == 12 and "dominant_cause" in drivetrain["heat"][0]
     # the pair's own results are still there, beside the drivetrain's
     assert set(payload["models"]) == {"elastic", "thermal"}
@@ -60,7 +64,8 @@ def test_run_json_holds_the_drivetrain_modes_bearing_forces_and_heat():
 def test_run_table_prints_the_drivetrain_tables():
     result = _cli("run", str(TWO_SHAFTS), "--model", "elastic")
     assert result.returncode == 0, result.stderr
-    for words in ("drivetrain modes", "lateral pinion shaft", "pinion bearing A: dynamic RMS", "1× mesh"):
+    for words in ("drivetrain modes", "lateral pinion shaft", "pinion bearing A: dynamic RMS", "1× mesh",
+                  "estimated error"):
         assert words in result.stdout, words
 
 

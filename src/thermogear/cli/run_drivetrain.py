@@ -87,6 +87,10 @@ def print_drivetrain(results, console, reason: str | None = None) -> None:
             response.add_row(f"{bearing}: {line}",
                              *(_number(f.harmonic_amplitude_n[j], "{:.2f}") for f in forces.values()), "N")
     console.print(response)
+    for name, model in models.items():  # issue 38: the cut-off's own error, stated with every response
+        if model.cutoff_error is not None:
+            console.print(f"drivetrain, {name} model, response solved on the {model.cutoff_error.describe()}",
+                          highlight=False)
     _print_warm_state(results.warm_state, console)
     for name, model in models.items():
         if getattr(model, "failure", ""):

@@ -140,6 +140,19 @@ class CaseDrivetrain:
         return drivetrain_periodic_response(self.assembled(model), state, samples_per_piece=SAMPLES_PER_PIECE,
                                             cutoff_hz=self.section.response_cutoff_hz)
 
+    def cutoff_error(self, model: str, response: DrivetrainResponse | None = None):
+        """The estimated error of the linear response of ``model`` on the section's ``response_cutoff_hz`` (default
+        computed here), from the same state solved on twice the cut-off
+        (:func:`~thermogear.drivetrain.cutoff.cutoff_error_against`). The backlash orbit and the motion from rest
+        are solved on the same modes, so this is also the estimate of the truncation their modes carry."""
+        from thermogear.drivetrain.cutoff import cutoff_error_against
+
+        cutoff = self.section.response_cutoff_hz
+        response = self.response(model) if response is None else response
+        check = drivetrain_periodic_response(self.assembled(model), self.mesh_states(model),
+                                             samples_per_piece=SAMPLES_PER_PIECE, cutoff_hz=2.0 * cutoff)
+        return cutoff_error_against(response, check, cutoff)
+
     def backlash_response(self, model: str, speed_rpm: float | None = None,
                           initial_state: np.ndarray | None = None) -> DrivetrainBacklashResponse:
         """The periodic orbit with the backlash mesh (and the bearings' clearances) of ``model`` at a pinion speed
@@ -337,14 +350,17 @@ def drivetrain_results(built: CaseDrivetrain, models: tuple[str, ...] = (ELASTIC
         common = {"modes": rows, "mesh_modes": mesh_modes_above(built, model, rows),
                   "resonances": resonances_of(rows, built.teeth, section.bearing_harmonics, built.stages)}
         if transient:
-            results[model] = _transient_result(built.transient(model), section.bearing_harmonics, **common)
+            results[model] = _transient_result(built.transient(model), section.bearing_harmonics,
+                                               cutoff_error=built.cutoff_error(model), **common)
             continue
         if built.backlash_mesh:
             response = built.backlash_response(model)
-            results[model] = _backlash_result(response, section.bearing_harmonics, **common)
+            results[model] = _backlash_result(response, section.bearing_harmonics,
+                                              cutoff_error=built.cutoff_error(model), **common)
         else:
             response = built.response(model)
-            results[model] = _linear_result(response, section.bearing_harmonics, **common)
+            results[model] = _linear_result(response, section.bearing_harmonics,
+                                            cutoff_error=built.cutoff_error(model, response), **common)
         if series is not None:
             from thermogear.drivetrain.response_dataset import response_dataset_parts
 

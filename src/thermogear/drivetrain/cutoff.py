@@ -40,8 +40,8 @@ from thermogear.dynamics.periodic_ndof import PiecewiseLinearSystem
 from thermogear.errors import CaseError
 from thermogear.mesh.state import MeshState
 
-__all__ = ["CUTOFF_FACTOR", "CUTOFF_HARMONICS", "CutoffError", "CutoffResponse", "cutoff_for_harmonics",
-           "drivetrain_cutoff_response", "drivetrain_cutoff_sweep"]
+__all__ = ["CUTOFF_FACTOR", "CUTOFF_HARMONICS", "CutoffError", "CutoffResponse", "cutoff_error_against",
+           "cutoff_for_harmonics", "drivetrain_cutoff_response", "drivetrain_cutoff_sweep"]
 
 #: Mesh harmonics of interest by default (the spectra reported, and most of a square wave's energy).
 CUTOFF_HARMONICS = 5
@@ -75,6 +75,19 @@ class CutoffError:
     bearing_force: float
     coordinates: int
     check_coordinates: int
+
+    def as_json(self) -> dict:
+        """The ``cutoff_error`` object of ``run --json`` (relative errors [-], frequencies [Hz])."""
+        return {"cutoff_hz": self.cutoff_hz, "check_cutoff_hz": self.check_cutoff_hz,
+                "dte_relative": self.transmission_error, "bearing_force_relative": self.bearing_force,
+                "coordinates": self.coordinates, "check_coordinates": self.check_coordinates}
+
+    def describe(self) -> str:
+        """One line for a reader: what was solved and how far from the exact response it is estimated to be."""
+        return (f"modes up to {self.cutoff_hz:.0f} Hz ({self.coordinates} coordinates): estimated error "
+                f"{self.transmission_error:.1e} of the DTE peak-to-peak and {self.bearing_force:.1e} of the largest "
+                f"bearing-force peak-to-peak (4/3 of the difference from the solve on {self.check_cutoff_hz:.0f} Hz, "
+                f"{self.check_coordinates} coordinates)")
 
 
 @dataclass(frozen=True, eq=False)
@@ -135,6 +148,15 @@ def _difference(response: DrivetrainResponse, check: DrivetrainResponse) -> tupl
             (max(forces) / force_scale if force_scale > 0.0 else max(forces, default=0.0)))
 
 
+def cutoff_error_against(response: DrivetrainResponse, check: DrivetrainResponse, cutoff_hz: float) -> CutoffError:
+    """The :class:`CutoffError` of ``response`` solved on ``cutoff_hz`` [Hz] from ``check``, the same state solved
+    on 2·``cutoff_hz`` (module docstring); the sizes of the two reduced systems from their Floquet multipliers (two
+    per coordinate)."""
+    dte, force = _difference(response, check)
+    return CutoffError(float(cutoff_hz), 2.0 * float(cutoff_hz), _CONVERGENCE * dte, _CONVERGENCE * force,
+                       response.multipliers.size // 2, check.multipliers.size // 2)
+
+
 def drivetrain_cutoff_sweep(assembled: AssembledDrivetrain, states: Sequence[MeshState],
                             cutoff_hz: float | None = None, harmonics: int = CUTOFF_HARMONICS,
                             factor: float = CUTOFF_FACTOR, samples_per_piece: int = 8,
@@ -165,11 +187,7 @@ def drivetrain_cutoff_sweep(assembled: AssembledDrivetrain, states: Sequence[Mes
         grid = _grid(train, (problem,))
         responses = [_response(assembled, train, (problem,), grid, model.system(assembled, state, problem),
                                reduction, model.basis, samples_per_piece) for model in shared]
-        error = None
-        if estimate:
-            dte, force = _difference(responses[0], responses[1])
-            error = CutoffError(float(cutoff_hz), 2.0 * float(cutoff_hz), _CONVERGENCE * dte, _CONVERGENCE * force,
-                                shared[0].basis.size, shared[1].basis.size)
+        error = cutoff_error_against(responses[0], responses[1], cutoff_hz) if estimate else None
         results.append(CutoffResponse(responses[0], error))
     return results
 

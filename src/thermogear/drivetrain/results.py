@@ -16,6 +16,7 @@ from typing import Any
 import numpy as np
 
 from thermogear.drivetrain.case_layout import MESH_NAME
+from thermogear.drivetrain.heat_results import HeatShift, heat_rows
 from thermogear.drivetrain.train_results import StageResult, harmonic_orders, stage_results  # noqa: F401
 
 __all__ = ["BearingForces", "DrivetrainBacklashResult", "DrivetrainLinearResult", "DrivetrainResults",
@@ -190,6 +191,7 @@ class DrivetrainLinearResult:
     response: Any = field(default=None, repr=False)
     common_period_s: float | None = None  # a train: the common period [s] and each mesh over it
     stages: Mapping[str, StageResult] | None = None
+    cutoff_error: Any = None  # the response cut-off's estimated error (drivetrain.cutoff.CutoffError)
 
     kind = "linear"
 
@@ -209,7 +211,8 @@ class DrivetrainLinearResult:
                 "bearing_forces": {name: force.as_json() for name, force in self.bearing_forces.items()}, **train,
                 "modes": [row.as_json() for row in self.modes],
                 "resonances": [row.as_json() for row in self.resonances],
-                "mesh_modes_above_count": [row.as_json() for row in self.mesh_modes]}
+                "mesh_modes_above_count": [row.as_json() for row in self.mesh_modes],
+                "cutoff_error": None if self.cutoff_error is None else self.cutoff_error.as_json()}
 
     def scalars(self) -> dict[str, Any]:
         """The scalar results (SI) of this model, one row of :meth:`DrivetrainResults.to_dataframe`."""
@@ -285,38 +288,6 @@ class DrivetrainTransientResult(DrivetrainLinearResult):
     def _middle(self) -> dict[str, Any]:
         return {"transient_periods": self.transient_periods, "contact_loss_fraction": self.contact_loss_fraction,
                 "back_side_contact": self.back_side_contact, "back_contact_fraction": self.back_contact_fraction}
-
-
-@dataclass(frozen=True)
-class HeatShift:
-    """One mode cold → hot: frequencies [Hz], the exact shift and its first-order sum [-], each cause's share [-]
-    (causes that moved nothing left out) and the largest cause."""
-
-    cold_hz: float
-    hot_hz: float
-    label: str
-    shift: float
-    first_order: float
-    causes: Mapping[str, float]
-    dominant_cause: str
-
-    def as_json(self) -> dict[str, Any]:
-        return {"cold_hz": self.cold_hz, "hot_hz": self.hot_hz, "label": self.label,
-                "shift_percent": 100.0 * self.shift, "first_order_percent": 100.0 * self.first_order,
-                "causes_percent": {name: 100.0 * value for name, value in self.causes.items()},
-                "dominant_cause": self.dominant_cause}
-
-
-def heat_rows(shifts, drivetrain) -> tuple[HeatShift, ...]:
-    """Per mode of :class:`~thermogear.drivetrain.heat.ModeShifts` (``drivetrain`` the cold one, to name each
-    shaft's E(T) cause): the shift and its causes."""
-    shafts = {shaft.name for shaft in drivetrain.shafts}
-    names = {name: (f"{name} E(T)" if name in shafts else name) for name in shifts.contributions}
-    moving = [name for name, values in shifts.contributions.items() if np.any(values != 0.0)]
-    return tuple(HeatShift(float(shifts.cold_hz[i]), float(shifts.hot_hz[i]), shifts.labels[i],
-                           float(shifts.exact[i]), float(shifts.first_order[i]),
-                           _frozen_mapping({names[name]: float(shifts.contributions[name][i]) for name in moving}),
-                           names[shifts.dominant_cause(i)]) for i in range(shifts.exact.size))
 
 
 @dataclass(frozen=True, eq=False)

@@ -134,6 +134,9 @@ def drivetrain_section(results, reason: str | None = None) -> str:
     resonance_text = "; ".join(f"{h}× mesh meets {f} Hz {label}{dominated} at {n} rpm ({name})"
                                for n, h, f, label, dominated, name in resonances) or "none"
     notes = "".join(f"<p class='small'>{html.escape(note)}</p>" for note in results.notes)
+    notes += "".join(f"<p class='small'>{html.escape(name)} model, response solved on the "
+                     f"{html.escape(m.cutoff_error.describe())}</p>"
+                     for name, m in models.items() if m.cutoff_error is not None)
     return ("<h2 id='drivetrain'>The pair in its drivetrain</h2>"
             f"<p>{results.degrees_of_freedom} degrees of freedom (Timoshenko shafts, gear bodies, bearings, "
             f"couplings, the mesh along the line of action); the response is solved exactly "
