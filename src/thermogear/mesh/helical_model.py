@@ -105,9 +105,16 @@ def _lead_gap(mesh_model: MeshModel, helical: HelicalPair, z: np.ndarray) -> np.
 
 
 def helical_mesh_period(mesh_model: MeshModel, load: float, points: int, slices: int = DEFAULT_SLICES,
-                        always_face: bool = False) -> HelicalMeshPeriod:
+                        always_face: bool = False, deviations: bool = True) -> HelicalMeshPeriod:
     """The period of ``mesh_model``'s case at F_bt = ``load`` [N] on ``points`` intervals (each at its midpoint;
-    module docstring). ``always_face`` solves the load along the face even without deviations (for the report)."""
+    module docstring). ``always_face`` solves the load along the face even without deviations (for the report);
+    ``deviations=False`` leaves the model's deviations out (the stiffness of the flanks as they are)."""
+    if not deviations:
+        helical = operating_helical_pair(mesh_model)
+        scale = _stiffness_scale(mesh_model)
+        phase = (np.arange(points) + 0.5) / points * helical.transverse.base_pitch
+        total = scale * helical_mesh_stiffness(helical, mesh_model.case.material, phase).stiffness
+        return HelicalMeshPeriod(helical, phase, load, total, load / total, None, scale)
     helical = operating_helical_pair(mesh_model)
     transverse = helical.transverse
     scale = _stiffness_scale(mesh_model)
