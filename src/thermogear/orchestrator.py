@@ -231,7 +231,13 @@ class Orchestrator:
             return None
         from thermogear.summaries.thermoelastic import thermoelastic_summary  # noqa: PLC0415
 
-        return thermoelastic_summary(thermal.thermoelastic_mesh, thermal.thermal_model, thermal.temperature)
+        summary = thermoelastic_summary(thermal.thermoelastic_mesh, thermal.thermal_model, thermal.temperature)
+        if self.case.helical_pair is None:
+            return summary
+        from thermogear.mesh.model import MeshModel  # noqa: PLC0415
+        from thermogear.summaries.helical import helical_thermoelastic_summary  # noqa: PLC0415
+
+        return helical_thermoelastic_summary(summary, MeshModel(self.case, "elastic"), thermal)
 
     def temperatures(self):
         """The gearbox's predicted steady state where a model predicted the case's temperatures at load time

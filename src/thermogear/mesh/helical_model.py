@@ -140,7 +140,7 @@ def helical_mesh_period(mesh_model: MeshModel, load: float, points: int, slices:
     width = helical.face_width / z.size
     for index in range(points):
         approach[index], carried = slice_loads(stiffness[index], gap[index], load)
-        engaged[index] = float(np.sum(np.where(carried > 0.0, stiffness[index], 0.0)))
+        engaged[index] = float(np.sum(np.where(carried > 0.0, stiffness[index].ravel(), 0.0)))
         line_load[index] = carried.reshape(stiffness.shape[1:]).sum(axis=0) / width
     face = FaceLoad(z, phase, line_load, approach)
     return HelicalMeshPeriod(helical, phase, load, engaged, approach, face, scale)

@@ -16,7 +16,8 @@ from thermogear.mesh.helical_model import face_temperature_rise, helical_mesh_pe
 from thermogear.mesh.model import MeshModel
 from thermogear.stiffness.iso6336 import N_PER_MM_UM
 
-__all__ = ["helical_stiffness_summary", "helical_face_summary", "HELICAL_CYCLE_POINTS"]
+__all__ = ["helical_stiffness_summary", "helical_face_summary", "helical_thermoelastic_summary",
+           "HELICAL_CYCLE_POINTS"]
 
 #: Mesh positions over one period for the stiffness and face-load curves the commands show [–] (the interval
 #: midpoints; K_t is continuous, so the mean converges at second order).
@@ -65,7 +66,11 @@ def helical_face_summary(mesh: MeshModel, points: int = HELICAL_CYCLE_POINTS) ->
     period = helical_mesh_period(mesh, mesh.normal_load(), points, deviations=True, always_face=True)
     face = period.face
     approach = period.approach * 1e6
+    per_width = 1.0 / (period.helical.face_width * N_PER_MM_UM)
     return {
+        "mesh_stiffness_n_per_mm_um": {"min": float(period.stiffness.min()) * per_width,
+                                       "mean": float(np.mean(period.stiffness)) * per_width,
+                                       "max": float(period.stiffness.max()) * per_width},
         "model": mesh.model,
         "z_mm": (face.z * 1e3).tolist(),
         "mean_line_load_n_per_mm": (face.mean_line_load * 1e-3).tolist(),
@@ -79,3 +84,27 @@ def helical_face_summary(mesh: MeshModel, points: int = HELICAL_CYCLE_POINTS) ->
         "static_transmission_error_peak_to_peak_um": float(np.ptp(approach)),
         "stiffness_scale": period.stiffness_scale,
     }
+
+
+def helical_thermoelastic_summary(summary: dict, elastic: MeshModel, thermal: MeshModel,
+                                  points: int = HELICAL_CYCLE_POINTS) -> dict:
+    """The thermo-elastic summary (:func:`thermogear.summaries.thermoelastic.thermoelastic_summary`, built on the
+    transverse section) of a helical pair: its mesh stiffness and loaded static transmission error are the slice
+    model's, cold (``elastic``) and hot (``thermal``, with the lead distortion of the face gradient), and
+    ``helical`` holds the geometry and the load along the face of both. The operating geometry, backlash (along
+    the transverse line of action) and jamming stay the transverse section's."""
+    cold, hot = helical_face_summary(elastic, points), helical_face_summary(thermal, points)
+    change = hot["mesh_stiffness_n_per_mm_um"]["mean"] / cold["mesh_stiffness_n_per_mm_um"]["mean"] - 1.0
+    elastic_part = {**summary["elastic"], "mesh_stiffness_n_per_mm_um": cold["mesh_stiffness_n_per_mm_um"],
+                    "loaded_transmission_error_um": _transmission_error(cold)}
+    return {**summary, "mesh_stiffness_n_per_mm_um": hot["mesh_stiffness_n_per_mm_um"],
+            "mesh_stiffness_change_percent": 100.0 * change,
+            "loaded_transmission_error_um": _transmission_error(hot), "elastic": elastic_part,
+            "helical": {"geometry": helical_geometry_summary(thermal.case.helical_pair),
+                        "face_gradient_k": float(thermal.case.temperature.face_gradient_k),
+                        "cold": cold, "hot": hot}}
+
+
+def _transmission_error(face: dict) -> dict:
+    return {"mean": face["static_transmission_error_mean_um"],
+            "peak_to_peak": face["static_transmission_error_peak_to_peak_um"]}
