@@ -295,11 +295,11 @@ def case_from_document(document: dict[str, Any], source: str = "<memory>") -> Ca
     except pydantic.ValidationError as error:
         raise case_error_from_validation(error) from None
     gears = model.gears
+    check_helical_case(model)
     helical = helical_pair_of(gears)
     pair = helical.transverse
     check_face_gradient(model, helical)
     if helical.helix_angle > 0.0:
-        check_helical_case(model, helical)
         gears = transverse_gears_section(gears, helical)
         model = model.model_copy(update={"gears": gears})
     check_thermoelastic_inputs(pair, model)

@@ -28,10 +28,12 @@ def transverse_gears_section(gears, helical: HelicalPair):
                                     / math.cos(helical.base_helix_angle)})
 
 
-def check_helical_case(model, helical: HelicalPair) -> None:
-    """Refuse, for a helical pair (β > 0), what the models do not build for one: a thermal model that is spur-only
+def check_helical_case(model) -> None:
+    """Refuse, for a helical pair (``[gears] helix_angle_deg`` > 0; before its geometry is built), what the models do not build for one: a thermal model that is spur-only
     (the paper's ``luo2020``), the temperature models whose heat input is the spur pair's, and the drivetrain (its
     helical mesh element is a separate part of issue 37)."""
+    if model.gears.helix_angle_deg == 0.0:
+        return
     rules = thermal_model_rules(model.thermal.model)
     if rules.spur_only:
         raise CaseError("thermal.model", model.thermal.model, "'thermoelastic' with gears.helix_angle_deg > 0",
@@ -43,7 +45,7 @@ def check_helical_case(model, helical: HelicalPair) -> None:
                         "the FE and gearbox temperature models compute the spur pair's heat input; a helical pair "
                         "takes given temperatures (and temperature.face_gradient_k across the face)")
     if model.drivetrain is not None:
-        raise CaseError("gears.helix_angle_deg", math.degrees(helical.helix_angle), "0 with a [drivetrain]",
+        raise CaseError("gears.helix_angle_deg", model.gears.helix_angle_deg, "0 with a [drivetrain]",
                         "the helical mesh element of the drivetrain is not built yet: the drivetrain takes spur "
                         "pairs")
 
