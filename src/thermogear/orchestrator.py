@@ -229,15 +229,9 @@ class Orchestrator:
         thermal = self.simulation(THERMAL).mesh_model
         if thermal.pair_model.uses_x_te:  # the paper's k_T has none of these
             return None
-        from thermogear.summaries.thermoelastic import thermoelastic_summary  # noqa: PLC0415
+        from thermogear.summaries.helical import pair_thermoelastic_summary  # noqa: PLC0415
 
-        summary = thermoelastic_summary(thermal.thermoelastic_mesh, thermal.thermal_model, thermal.temperature)
-        if self.case.helical_pair is None:
-            return summary
-        from thermogear.mesh.model import MeshModel  # noqa: PLC0415
-        from thermogear.summaries.helical import helical_thermoelastic_summary  # noqa: PLC0415
-
-        return helical_thermoelastic_summary(summary, MeshModel(self.case, "elastic"), thermal)
+        return pair_thermoelastic_summary(thermal)
 
     def temperatures(self):
         """The gearbox's predicted steady state where a model predicted the case's temperatures at load time

@@ -37,6 +37,9 @@ FIGURES: dict[str, str] = {
              "and thermal.",
     "fig12": "Fig. 12 — dynamic pair and system loads per unit face width in the steady state (three periods).",
     "fig15": "Fig. 15 — FE verification of the elastic and thermal stiffness along Γ.",
+    "helical": "Helical pair — contact lines on the plane of action (top left), mean line load across the face "
+               "cold and hot with the temperature across the face (top right), mesh stiffness K_t per width "
+               "(bottom left) and loaded static transmission error (bottom right) over one mesh period.",
     **DRIVETRAIN_PICTURES,
 }
 
@@ -283,6 +286,12 @@ def fig15(evaluation):
     return figure
 
 
+def helical(evaluation):
+    from thermogear.report.helical_section import helical_figure
+
+    return helical_figure(evaluation.thermoelastic_summary["helical"])
+
+
 def _drivetrain_picture(name: str, evaluation):
     """One of the drivetrain's pictures (:mod:`thermogear.drivetrain.pictures`), from the drivetrain the report's
     results came from."""
@@ -302,6 +311,7 @@ _DRAW: dict[str, tuple[Callable[[Any], Any], tuple[str, ...]]] = {
     "fig11": (fig11, ("start-up transients", "elastic model", "thermal model")),
     "fig12": (fig12, ("elastic model", "thermal model")),
     "fig15": (fig15, ("FE verification",)),
+    "helical": (helical, ("thermal stiffness", "thermal model")),
     **{name: (partial(_drivetrain_picture, name), ()) for name in DRIVETRAIN_PICTURES},
 }
 
@@ -318,6 +328,11 @@ def report_figures(evaluation, names=None) -> tuple[dict[str, Any], dict[str, st
             if evaluation.drivetrain is None or evaluation.drivetrain_built is None:
                 missing[name] = evaluation.problems.get("drivetrain") or "the drivetrain was not built"
                 continue
+        if name == "helical" and evaluation.case.helical_pair is None:
+            continue  # a spur pair: nothing to draw, nothing missing
+        if name == "helical" and not (evaluation.thermoelastic_summary or {}).get("helical"):
+            missing[name] = evaluation.problem("thermal stiffness") or "the thermo-elastic model was not run"
+            continue
         if name == "fig15" and evaluation.fem is None:
             missing[name] = evaluation.problem("FE verification") or "the FE verification was not run"
             continue
@@ -377,7 +392,7 @@ def save_figure(figure, folder, name: str) -> list[str]:
 #: figures (~0.3 s), the single panels last (~0.2 s). Whichever process is free takes the next, so the last ones
 #: taken are short and both processes end close together, however busy each was before (longest job first).
 SHARED_FIGURES = ("drivetrain_campbell", "drivetrain_modes", "fig4", "fig7", "fig8", "fig11", "fig6", "fig9", "fig10",
-                  "drivetrain_layout", "drivetrain_bearing_spectra", "fig3c", "fig12")
+                  "helical", "drivetrain_layout", "drivetrain_bearing_spectra", "fig3c", "fig12")
 #: The figures that need the FE verification: drawn last, once its child process has answered.
 FE_FIGURES = ("fig15",)
 

@@ -9,7 +9,7 @@ import math
 
 import numpy as np
 
-from thermogear.helical.contact_lines import total_contact_length
+from thermogear.helical.contact_lines import contact_line_segments, total_contact_length
 from thermogear.helical.iso_stiffness import helical_iso_stiffness
 from thermogear.helical.summary import helical_geometry_summary
 from thermogear.mesh.helical_model import face_temperature_rise, helical_mesh_period
@@ -17,7 +17,7 @@ from thermogear.mesh.model import MeshModel
 from thermogear.stiffness.iso6336 import N_PER_MM_UM
 
 __all__ = ["helical_stiffness_summary", "helical_face_summary", "helical_thermoelastic_summary",
-           "HELICAL_CYCLE_POINTS"]
+           "pair_thermoelastic_summary", "HELICAL_CYCLE_POINTS"]
 
 #: Mesh positions over one period for the stiffness and face-load curves the commands show [–] (the interval
 #: midpoints; K_t is continuous, so the mean converges at second order).
@@ -65,6 +65,7 @@ def helical_face_summary(mesh: MeshModel, points: int = HELICAL_CYCLE_POINTS) ->
     transmission error δ(φ) [μm] with its mean and peak-to-peak."""
     period = helical_mesh_period(mesh, mesh.normal_load(), points, deviations=True, always_face=True)
     face = period.face
+    helical, transverse = period.helical, period.helical.transverse
     approach = period.approach * 1e6
     per_width = 1.0 / (period.helical.face_width * N_PER_MM_UM)
     return {
@@ -82,7 +83,16 @@ def helical_face_summary(mesh: MeshModel, points: int = HELICAL_CYCLE_POINTS) ->
         "static_transmission_error_um": approach.tolist(),
         "static_transmission_error_mean_um": float(np.mean(approach)),
         "static_transmission_error_peak_to_peak_um": float(np.ptp(approach)),
+        "mesh_stiffness_curve_n_per_mm_um": (period.stiffness * per_width).tolist(),
         "stiffness_scale": period.stiffness_scale,
+        "zone_of_action_mm": {"path_length": transverse.path_length * 1e3, "face_width": helical.face_width * 1e3},
+        "contact_lines_at_phase_0_mm": [[list(map(lambda value: value * 1e3, end)) for end in segment]
+                                        for segment in contact_line_segments(
+                                            0.0, transverse.path_length, helical.face_width,
+                                            helical.base_helix_angle, transverse.base_pitch)],
+        "contact_line_length_mm": (total_contact_length(period.phase, transverse.path_length, helical.face_width,
+                                                        helical.base_helix_angle, transverse.base_pitch)
+                                   * 1e3).tolist(),
     }
 
 
@@ -108,3 +118,15 @@ def helical_thermoelastic_summary(summary: dict, elastic: MeshModel, thermal: Me
 def _transmission_error(face: dict) -> dict:
     return {"mean": face["static_transmission_error_mean_um"],
             "peak_to_peak": face["static_transmission_error_peak_to_peak_um"]}
+
+
+def pair_thermoelastic_summary(thermal: MeshModel) -> dict:
+    """The thermo-elastic summary of a case's pair under its thermal mesh model ``thermal``, spur or helical (the
+    one call ``run`` and the report make): :func:`~thermogear.summaries.thermoelastic.thermoelastic_summary`, and
+    for a helical pair :func:`helical_thermoelastic_summary` on it."""
+    from thermogear.summaries.thermoelastic import thermoelastic_summary  # noqa: PLC0415
+
+    summary = thermoelastic_summary(thermal.thermoelastic_mesh, thermal.thermal_model, thermal.temperature)
+    if thermal.case.helical_pair is None:
+        return summary
+    return helical_thermoelastic_summary(summary, MeshModel(thermal.case, "elastic"), thermal)
