@@ -13,6 +13,7 @@ from typing import Any, Callable
 import numpy as np
 
 from thermogear.drivetrain.pictures import PICTURES as DRIVETRAIN_PICTURES
+from thermogear.report.helical_section import draw_helical, helical_figure_absent
 
 __all__ = ["FE_FIGURES", "FIG6_SPAN_MS", "FIGURES", "SHARED_FIGURES", "report_figures", "save_figure",
            "write_figures"]
@@ -37,9 +38,8 @@ FIGURES: dict[str, str] = {
              "and thermal.",
     "fig12": "Fig. 12 — dynamic pair and system loads per unit face width in the steady state (three periods).",
     "fig15": "Fig. 15 — FE verification of the elastic and thermal stiffness along Γ.",
-    "helical": "Helical pair — contact lines on the plane of action (top left), mean line load across the face "
-               "cold and hot with the temperature across the face (top right), mesh stiffness K_t per width "
-               "(bottom left) and loaded static transmission error (bottom right) over one mesh period.",
+    "helical": "Helical pair — contact lines on the plane of action, mean line load across the face cold and hot "
+               "with the temperature across it, mesh stiffness K_t per width and loaded static TE over one period.",
     **DRIVETRAIN_PICTURES,
 }
 
@@ -286,12 +286,6 @@ def fig15(evaluation):
     return figure
 
 
-def helical(evaluation):
-    from thermogear.report.helical_section import helical_figure
-
-    return helical_figure(evaluation.thermoelastic_summary["helical"])
-
-
 def _drivetrain_picture(name: str, evaluation):
     """One of the drivetrain's pictures (:mod:`thermogear.drivetrain.pictures`), from the drivetrain the report's
     results came from."""
@@ -311,7 +305,7 @@ _DRAW: dict[str, tuple[Callable[[Any], Any], tuple[str, ...]]] = {
     "fig11": (fig11, ("start-up transients", "elastic model", "thermal model")),
     "fig12": (fig12, ("elastic model", "thermal model")),
     "fig15": (fig15, ("FE verification",)),
-    "helical": (helical, ("thermal stiffness", "thermal model")),
+    "helical": (draw_helical, ("thermal stiffness", "thermal model")),
     **{name: (partial(_drivetrain_picture, name), ()) for name in DRIVETRAIN_PICTURES},
 }
 
@@ -328,10 +322,8 @@ def report_figures(evaluation, names=None) -> tuple[dict[str, Any], dict[str, st
             if evaluation.drivetrain is None or evaluation.drivetrain_built is None:
                 missing[name] = evaluation.problems.get("drivetrain") or "the drivetrain was not built"
                 continue
-        if name == "helical" and evaluation.case.helical_pair is None:
-            continue  # a spur pair: nothing to draw, nothing missing
-        if name == "helical" and not (evaluation.thermoelastic_summary or {}).get("helical"):
-            missing[name] = evaluation.problem("thermal stiffness") or "the thermo-elastic model was not run"
+        if name == "helical" and (absent := helical_figure_absent(evaluation)) is not None:
+            missing.update({name: absent} if absent else {})  # "": a spur pair, nothing to draw, nothing missing
             continue
         if name == "fig15" and evaluation.fem is None:
             missing[name] = evaluation.problem("FE verification") or "the FE verification was not run"

@@ -7,10 +7,25 @@ from __future__ import annotations
 
 import html
 
-__all__ = ["helical_figure", "helical_section"]
+__all__ = ["draw_helical", "helical_figure", "helical_figure_absent", "helical_section"]
 
 _STYLE = {"cold": {"color": "tab:blue", "ls": "--", "label": "elastic (cold)"},
           "hot": {"color": "tab:red", "ls": "-", "label": "thermo-elastic (hot)"}}
+
+
+def helical_figure_absent(evaluation) -> str | None:
+    """Why the report has no helical figure: "" for a spur pair (nothing to draw, nothing missing), the reason where
+    the thermo-elastic summary has no helical part, None where it can be drawn."""
+    if evaluation.case.helical_pair is None:
+        return ""
+    if not (evaluation.thermoelastic_summary or {}).get("helical"):
+        return evaluation.problem("thermal stiffness") or "the thermo-elastic model was not run"
+    return None
+
+
+def draw_helical(evaluation):
+    """The report's helical figure of an evaluation (:func:`helical_figure` of its thermo-elastic summary)."""
+    return helical_figure(evaluation.thermoelastic_summary["helical"])
 
 
 def helical_figure(helical: dict):
