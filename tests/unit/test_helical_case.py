@@ -201,3 +201,16 @@ def test_the_report_draws_and_tables_the_helical_pair():
     assert len(figure.axes) == 5  # four panels and the temperature's twin axis
     plt.close(figure)
     assert helical_section(Orchestrator(load_case("fzg_type_c"), ("elastic", "thermal")).thermoelastic()) == ""
+
+
+def test_a_linear_sweep_of_a_helical_pair_equals_one_simulation_per_point():
+    """sweep takes a helical case: its batch path (one mesh period reused and scaled where the model allows) gives
+    what one Simulation per point gives (1e-9), and the case's own point is run's."""
+    from sweep_paths import assert_fast_path_equals_simulation
+
+    from thermogear.sweep.study import Study
+
+    case = load_case("fzg_h501").with_changes(**{"dynamics.mesh": "linear", "dynamics.points_per_period": 256})
+    study = Study.define(case, ["speed_rpm=2175,3000", "torque_nm=135.3"], model="both", chunk_points=64)
+    fast = assert_fast_path_equals_simulation(study)
+    assert np.all(np.isfinite(np.asarray(fast["kv"], float))) and np.all(np.asarray(fast["kv"], float) > 1.0)
