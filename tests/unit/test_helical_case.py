@@ -214,3 +214,16 @@ def test_a_linear_sweep_of_a_helical_pair_equals_one_simulation_per_point():
     study = Study.define(case, ["speed_rpm=2175,3000", "torque_nm=135.3"], model="both", chunk_points=64)
     fast = assert_fast_path_equals_simulation(study)
     assert np.all(np.isfinite(np.asarray(fast["kv"], float))) and np.all(np.asarray(fast["kv"], float) > 1.0)
+
+
+def test_the_commands_built_on_spur_teeth_say_so_or_use_the_transverse_section():
+    """damping: the friction damping of the helical pair's transverse section (finite in both regions); fem: the
+    plane-strain spur tooth refuses a helical pair with the key."""
+    from thermogear.fem.inputs import fem_inputs
+
+    payload = _json(["damping", "fzg_h501", "--json"])
+    means = payload["damping_n_s_per_m"]
+    assert all(math.isfinite(value) and value > 0.0 for model in means.values() for value in model.values())
+    with pytest.raises(CaseError) as error:
+        fem_inputs(load_case("fzg_h501"))
+    assert error.value.key == "gears.helix_angle_deg"
