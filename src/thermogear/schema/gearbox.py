@@ -176,12 +176,14 @@ class GearboxInternalSection(Section):
         200.0, description="gear surface to oil [W/(m² K)]")
     oil_housing_w_per_m2_k: Annotated[float, Field(ge=0.0, le=1e5, allow_inf_nan=False)] = Field(
         150.0, description="oil to the wetted inner wall [W/(m² K)]")
-    gear_shaft_w_per_k: Annotated[float, Field(ge=0.0, le=1e5, allow_inf_nan=False)] = Field(
-        3.0, description="each gear to the shafts-and-bearings node [W/K]")
+    gear_shaft_w_per_k: Annotated[float, Field(ge=0.0, le=1e5, allow_inf_nan=False)] | None = Field(
+        None, description="each gear to its own shaft's node [W/K]; default conduction through the gear body from "
+                          "its root circle to its bore, 2π k b/ln(r_f/r_bore)")
     shaft_oil_w_per_k: Annotated[float, Field(ge=0.0, le=1e5, allow_inf_nan=False)] = Field(
-        4.0, description="shafts and bearings to the oil [W/K]")
+        4.0, description="both shafts and their bearings to the oil [W/K], half each")
     shaft_housing_w_per_k: Annotated[float, Field(ge=0.0, le=1e5, allow_inf_nan=False)] = Field(
-        8.0, description="shafts to the housing through the bearing seats [W/K]")
+        8.0, description="both shafts to the housing through the bearing seats [W/K], shared in proportion to the "
+                         "bearings on each shaft")
 
 
 class GearboxConditioningSection(Section):
@@ -227,7 +229,7 @@ class GearboxSection(Section):
                                           "lip seals)")
     internal: GearboxInternalSection = GearboxInternalSection()
     shaft_mass_kg: Annotated[float, Field(gt=0.0, le=1e5, allow_inf_nan=False)] = Field(
-        4.0, description="mass of the shafts with their bearings [kg]")
+        4.0, description="mass of both shafts with their bearings [kg], half each")
     pinion_heat_share: Annotated[float, Field(ge=0.0, le=1.0, allow_inf_nan=False)] = Field(
         0.5, description="pinion's share of the tooth friction heat [–]")
     friction_model: Literal["schlenk", "paper", "iso_tr_13989_1", "constant"] = Field(
