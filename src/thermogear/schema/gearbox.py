@@ -232,10 +232,11 @@ class GearboxSection(Section):
         4.0, description="mass of both shafts with their bearings [kg], half each")
     pinion_heat_share: Annotated[float, Field(ge=0.0, le=1.0, allow_inf_nan=False)] = Field(
         0.5, description="pinion's share of the tooth friction heat [–]")
-    friction_model: Literal["schlenk", "paper", "iso_tr_13989_1", "constant"] = Field(
+    friction_model: Literal["schlenk", "paper", "iso_tr_13989_2", "constant"] = Field(
         "schlenk", description="mean friction law of the tooth loss: schlenk (Schlenk 1994 with the X_L of "
                                "Fernandes et al. 2015: FZG power-loss work, the default), paper (DIN 3990-4 as "
-                               "Luo & Li Eq. 27, the paper's damping law), iso_tr_13989_1, constant")
+                               "Luo & Li Eq. 27, the paper's damping law), iso_tr_13989_2 (the integral-temperature "
+                               "method's), constant")
     friction_coefficient: Annotated[float, Field(gt=0.0, le=0.3, allow_inf_nan=False)] | None = Field(
         None, description="the mean friction coefficient [–] of friction_model = 'constant' (only there)")
     lubricant_factor: Annotated[float, Field(gt=0.0, le=3.0, allow_inf_nan=False)] | None = Field(
