@@ -41,8 +41,9 @@ def test_the_geometry_of_the_printout():
 
 
 def test_the_roughness_factor_as_printed():
-    # X_R = 2.2·(R_a/ρ_redC)^0.25 = 0.7124; printed 0.712 (±0.0005)
-    assert 2.2 * (ROUGHNESS / RELATIVE_RADIUS)**0.25 == pytest.approx(0.712, abs=0.0005)
+    # X_R = 2.2·(R_a [μm]/ρ_redC [mm])^0.25 = 0.7124 (the ratio in the standard's units, not dimensionless);
+    # printed 0.712 (±0.0005)
+    assert 2.2 * ((ROUGHNESS * 1e6) / (RELATIVE_RADIUS * 1e3))**0.25 == pytest.approx(0.712, abs=0.0005)
 
 
 @pytest.mark.parametrize("viscosity_mpa_s", [30.09, 25.2], ids=["integral criterion", "micropitting"])
