@@ -16,6 +16,7 @@ from thermogear.gearbox.description import GearboxOperatingPoint, MountedBearing
 from thermogear.gearbox.fzg_example import illustrative_fzg_gearbox
 from thermogear.gearbox.heat_paths import internal_conductances
 from thermogear.gearbox.losses import NODES, OIL, PINION_SHAFT, WHEEL_SHAFT
+from thermogear.gearbox.mesh_loss import rigid_pinion_heat_share
 from thermogear.gearbox.model import GearboxThermalModel
 from thermogear.geometry import Gear, GearPair
 
@@ -122,3 +123,34 @@ def test_the_fzg_gearbox_shafts_differ_and_balance(torque):
     assert steady.energy_balance_w < 1e-9
     assert steady.pinion_shaft_c > steady.wheel_shaft_c + 3.0
     assert steady.pinion_c > steady.pinion_shaft_c and steady.wheel_c > steady.wheel_shaft_c
+
+
+# --- the pinion's share of the friction heat: Blok's partition over the path -------------------------------------
+
+def test_blok_share_of_a_symmetric_pair_is_one_half():
+    # equal gears without shift: the path is symmetric about C and the rolling speeds swap, so β1 = 1/2 exactly
+    gear = Gear(20, 4.5e-3, math.radians(20.0), 14e-3, 0.0, bore_radius=15e-3)
+    assert rigid_pinion_heat_share(GearPair.create(gear, gear, 90e-3)) == pytest.approx(0.5, abs=1e-12)
+
+
+def test_blok_share_of_the_fzg_pair_by_quadrature():
+    # an independent quadrature of β1 = ∫F_n v_g β ds / ∫F_n v_g ds with scipy's adaptive rule on each stretch
+    from scipy.integrate import quad  # noqa: PLC0415
+
+    pair = illustrative_fzg_gearbox().gear_pair
+    points = pair.path_points
+
+    def integrand(roll, pinion):
+        v1, v2 = (float(np.asarray(value).item()) for value in pair.rolling_speeds(np.array([roll]), 1.0))
+        load = 1.0 if points["B"] <= roll <= points["D"] else 0.5
+        weight = load * abs(v1 - v2)
+        return weight * math.sqrt(v1) / (math.sqrt(v1) + math.sqrt(v2)) if pinion else weight
+
+    stretches = (("A", "B"), ("B", "C"), ("C", "D"), ("D", "E"))
+    heat = sum(quad(integrand, points[a], points[b], args=(False,), epsabs=0, epsrel=1e-12)[0] for a, b in stretches)
+    pinion = sum(quad(integrand, points[a], points[b], args=(True,), epsabs=0, epsrel=1e-12)[0] for a, b in stretches)
+    share = rigid_pinion_heat_share(pair)
+    assert share == pytest.approx(pinion / heat, abs=1e-8)
+    assert share == pytest.approx(0.4928, abs=1e-4)  # a little below one half for FZG C (z 16/24)
+    assert illustrative_fzg_gearbox().heat_share == share
+    assert illustrative_fzg_gearbox(pinion_heat_share=0.6).heat_share == 0.6

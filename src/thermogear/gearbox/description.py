@@ -26,6 +26,7 @@ from thermogear.errors import CaseError
 from thermogear.friction_models import DEFAULT_LOSS_FRICTION_MODEL, FRICTION_MODELS, FrictionLaw
 from thermogear.gearbox.bearing_loss import RollingBearing
 from thermogear.gearbox.injection import OilJet
+from thermogear.gearbox.mesh_loss import rigid_pinion_heat_share
 from thermogear.geometry import GearPair
 from thermogear.lubricant import Lubricant
 
@@ -111,7 +112,8 @@ class GearboxDescription:
 
     Masses [kg] of the pinion, wheel and of both shafts with their bearings (half each), oil volume [m³],
     immersion depths [m] of the wheel and pinion (0: above the oil), composite roughness R_a [m], the friction
-    formula's lubricant factor X_L, the pinion's share of the tooth friction heat, the gear loss factor (None:
+    formula's lubricant factor X_L, the pinion's share of the tooth friction heat (None: Blok's partition
+    averaged over the path, :attr:`heat_share`), the gear loss factor (None:
     Ohlendorf's H_V of the pair; give the mesh model's H_VL to use its load sharing), the cold normal backlash
     [m] (None: the AGMA 2002 minimum) and the assembly temperature [°C] at which it holds; ``oil_jet``: the
     into-mesh jet of injection lubrication (its impulse loss; the gears then usually dip nowhere: immersions 0).
@@ -134,7 +136,7 @@ class GearboxDescription:
     seals: tuple[LipSeal, ...] = ()
     roughness: float = 0.5e-6
     lubricant_factor: float | None = None
-    pinion_heat_share: float = 0.5
+    pinion_heat_share: float | None = None  # None: Blok's partition over the path (mesh_loss)
     loss_factor: float | None = None
     steel_specific_heat: float = 465.0  # [J/(kg·K)]
     oil_specific_heat: float = 2000.0  # [J/(kg·K)]
@@ -166,7 +168,7 @@ class GearboxDescription:
         for key in ("wheel_immersion", "pinion_immersion", "roughness", "gear_expansion", "gear_oil_coefficient",
                     "oil_housing_coefficient", "shaft_oil_conductance", "shaft_housing_conductance"):
             _check_positive(key, getattr(self, key), allow_zero=True)
-        if not 0.0 <= self.pinion_heat_share <= 1.0:
+        if self.pinion_heat_share is not None and not 0.0 <= self.pinion_heat_share <= 1.0:
             raise CaseError("pinion_heat_share", self.pinion_heat_share, "[0, 1]", "a share of the friction heat")
         for key, depth, gear in (("wheel_immersion", self.wheel_immersion, self.gear_pair.wheel),
                                  ("pinion_immersion", self.pinion_immersion, self.gear_pair.pinion)):
@@ -183,6 +185,14 @@ class GearboxDescription:
     def friction_lubricant_factor(self) -> float:
         """X_L of the friction law [–]: the one given, else the law's for the oil's base oil."""
         return self.friction.lubricant_factor(self.lubricant.base_oil, self.lubricant_factor)
+
+    @property
+    def heat_share(self) -> float:
+        """The pinion's share of the tooth friction heat [–]: the one given, else Blok's partition averaged over
+        the path (:func:`~thermogear.gearbox.mesh_loss.rigid_pinion_heat_share`)."""
+        if self.pinion_heat_share is not None:
+            return float(self.pinion_heat_share)
+        return rigid_pinion_heat_share(self.gear_pair)
 
     def gear_body_conductance(self, wheel: bool) -> float:
         """Conductance of a gear body to its shaft [W/K]: the one given, else 2π·k·b/ln(r_f/r_bore), or 8π·k·b for

@@ -8,9 +8,9 @@ node's temperature, radial load a fraction of the tooth normal force (for a driv
 newton of tooth load, :mod:`~thermogear.gearbox.bearing_entries`); lip seals; churning
 of the dipped gears at the oil temperature (:mod:`~thermogear.gearbox.churning`); the impulse loss of an
 into-mesh oil jet where the description has one (injection lubrication, :mod:`~thermogear.gearbox.injection`).
-Heat goes to the nodes as: tooth friction to pinion and wheel by the description's share, each bearing and seal to
-the node of the shaft it sits on (each bearing at the oil viscosity of its own shaft's temperature), churning and
-the jet's impulse loss to the oil.
+Heat goes to the nodes as: tooth friction to pinion and wheel by the description's share (Blok's partition over
+the path unless given), each bearing and seal to the node of the shaft it sits on (each bearing at the oil viscosity
+of its own shaft's temperature), churning and the jet's impulse loss to the oil.
 """
 
 from __future__ import annotations
@@ -96,6 +96,7 @@ class LossModel:
                            pair_gear_loss_factor(pair) if loss_factor is None else float(loss_factor))
         object.__setattr__(self, "_dipped", (_dipped(self.description, False), _dipped(self.description, True)))
         object.__setattr__(self, "_reference_friction", self._friction_at_viscosity(REFERENCE_VISCOSITY))
+        object.__setattr__(self, "_heat_share", self.description.heat_share)
         for gear in self._dipped:
             message = None if gear is None else churning_validity(gear)
             if message:
@@ -168,4 +169,4 @@ class LossModel:
         jet = description.oil_jet
         injection = 0.0 if jet is None else jet_impulse_power(jet, density, self.pitch_line_speed)
         return PowerLosses(mesh, float(bearings), float(seals), churning, friction, operating.input_power,
-                           description.pinion_heat_share, injection, float(wheel_side))
+                           self._heat_share, injection, float(wheel_side))

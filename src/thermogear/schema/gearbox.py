@@ -230,8 +230,9 @@ class GearboxSection(Section):
     internal: GearboxInternalSection = GearboxInternalSection()
     shaft_mass_kg: Annotated[float, Field(gt=0.0, le=1e5, allow_inf_nan=False)] = Field(
         4.0, description="mass of both shafts with their bearings [kg], half each")
-    pinion_heat_share: Annotated[float, Field(ge=0.0, le=1.0, allow_inf_nan=False)] = Field(
-        0.5, description="pinion's share of the tooth friction heat [–]")
+    pinion_heat_share: Annotated[float, Field(ge=0.0, le=1.0, allow_inf_nan=False)] | None = Field(
+        None, description="pinion's share of the tooth friction heat [–]; default Blok's partition (equal flash "
+                          "temperatures) averaged over the path with the friction power")
     friction_model: Literal["schlenk", "paper", "iso_tr_13989_2", "constant"] = Field(
         "schlenk", description="mean friction law of the tooth loss: schlenk (Schlenk 1994 with the X_L of "
                                "Fernandes et al. 2015: FZG power-loss work, the default), paper (DIN 3990-4 as "
