@@ -9,6 +9,7 @@ from pydantic import Field, model_validator
 from thermogear.errors import CaseError
 
 from thermogear.schema.base import Section
+from thermogear.schema.friction_inputs import check_friction_inputs
 
 
 #: Most mesh periods a transient run integrates [–]. The history of every sample is kept (about 1.1 MB per period
@@ -52,18 +53,7 @@ class DampingSection(Section):
 
     @model_validator(mode="after")
     def _friction_inputs(self):
-        if self.friction_model == "constant" and self.friction_coefficient is None:
-            raise CaseError("damping.friction_coefficient", None, "a value in (0, 0.3]",
-                            "friction_model = 'constant' needs the coefficient")
-        if self.friction_model != "constant" and self.friction_coefficient is not None:
-            raise CaseError("damping.friction_coefficient", self.friction_coefficient,
-                            "only with friction_model = 'constant'",
-                            f"friction_model = {self.friction_model!r} computes the coefficient: the key would "
-                            "have no effect")
-        if self.friction_model == "constant" and self.lubricant_factor is not None:
-            raise CaseError("damping.lubricant_factor", self.lubricant_factor, "absent with friction_model = "
-                            "'constant'", "a constant coefficient has no lubricant factor: the key would have no "
-                            "effect")
+        check_friction_inputs("damping", self.friction_model, self.friction_coefficient, self.lubricant_factor)
         return self
 
 
