@@ -1,6 +1,7 @@
 """Equivalent viscous damping of tooth friction (Luo & Li (2020) Eqs. 26–28; docs/damping.md).
 
-Chain: Coulomb friction F = μ·w of a tooth pair (Eq. 27, :mod:`thermogear.friction`) dissipates 4·F·B per cycle of
+Chain: Coulomb friction F = μ·w of a tooth pair (Eq. 27, :mod:`thermogear.friction`; another law of
+:data:`thermogear.friction_models.FRICTION_MODELS` by ``[damping] friction_model``) dissipates 4·F·B per cycle of
 harmonic motion of amplitude B; a viscous damper c dissipates π·c·ω·B². Equal energy gives c = 4F/(πωB) (Eq. 26).
 With the quasi-static amplitude B ≈ w/k (frequency ratio ≪ 1) the load cancels: c = 4·μ·k/(π·ω) (Eq. 28), ω the
 mesh circular frequency 2π·z1·n1/60 (the paper's constant 1.459 = 0.12·4·60/(π·2π) confirms it).
@@ -59,6 +60,7 @@ def friction_damping_exponents(law: FrictionLaw) -> tuple[float, float]:
     """(speed, load) exponents of c = 4μk/(πω_m) for a friction law with μ ∝ (w/v_Σ)^p: (−1 − p, p) [–]
     (v_Σ ∝ n1, ω_m ∝ n1; the paper's law, p = 1/4, gives the constants above)."""
     return -1.0 - law.load_exponent, law.load_exponent
+
 
 Rule = Literal["paper", "parallel"]
 RULES = ("paper", "parallel")
@@ -167,7 +169,8 @@ def friction_pair_damping(pair_stiffness, load_share, total_unit_load, roughness
     friction_validity_warnings(float(total_unit_load), sum_velocity)
     law = FRICTION_MODELS[DEFAULT_DAMPING_FRICTION_MODEL] if law is None else law
     contact = PitchContact(unit_load, roughness, viscosity, sum_velocity, relative_radius, lubricant_factor)
-    shape = np.broadcast(unit_load, np.asarray(sum_velocity), np.asarray(relative_radius), np.asarray(viscosity)).shape
+    shape = np.broadcast(unit_load, *(np.asarray(value) for value in (roughness, viscosity, sum_velocity,
+                                                                      relative_radius))).shape
     friction = np.array(np.broadcast_to(np.asarray(law.law(contact, constant), dtype=float), shape))
     damping = np.asarray(friction_damping(pair_stiffness, friction, circular_frequency), dtype=float)
     return friction, damping, unit_load

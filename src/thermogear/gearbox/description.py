@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from functools import cached_property
 
 from thermogear.errors import CaseError
 from thermogear.friction_models import DEFAULT_LOSS_FRICTION_MODEL, FRICTION_MODELS, FrictionLaw
@@ -186,7 +187,7 @@ class GearboxDescription:
         """X_L of the friction law [–]: the one given, else the law's for the oil's base oil."""
         return self.friction.lubricant_factor(self.lubricant.base_oil, self.lubricant_factor)
 
-    @property
+    @cached_property
     def heat_share(self) -> float:
         """The pinion's share of the tooth friction heat [–]: the one given, else Blok's partition averaged over
         the path (:func:`~thermogear.gearbox.mesh_loss.rigid_pinion_heat_share`)."""
