@@ -5,7 +5,7 @@
 The FZG type C gears in an illustrative, dip-lubricated housing (thermogear.gearbox.fzg_example: the gears are
 the standard's, the housing, bearings and internal heat-transfer coefficients are assumptions listed in the
 description's notes) at load stage 6, 2175 rpm, air at 20 °C. The thermal network gives the losses by source,
-the steady temperatures of pinion, wheel, shafts, oil and housing, and the warm-up from the ambient temperature
+the steady temperatures of pinion, wheel, each shaft, oil and housing, and the warm-up from the ambient temperature
 with a cast-iron and with an aluminium housing: the gears heat in minutes, the housing in tens of minutes, so
 with aluminium (which grows faster than the steel gears) the backlash first closes and then reopens.
 """
@@ -61,9 +61,9 @@ def main(out: Path) -> dict:
     # --- figure
     figure, axes = plt.subplots(1, 3, figsize=(12.0, 3.8), constrained_layout=True)
     minutes = histories["cast iron"].times / 60.0
-    for node, color in zip(("pinion", "wheel", "shafts", "oil", "housing"),
-                           ("tab:red", "tab:orange", "tab:purple", "tab:blue", "tab:gray")):
-        axes[0].plot(minutes, histories["cast iron"].node(node), color=color, label=node)
+    for node, color in zip(("pinion", "wheel", "pinion_shaft", "wheel_shaft", "oil", "housing"),
+                           ("tab:red", "tab:orange", "tab:purple", "tab:pink", "tab:blue", "tab:gray")):
+        axes[0].plot(minutes, histories["cast iron"].node(node), color=color, label=node.replace("_", " "))
     axes[0].set(xlabel="time [min]", ylabel="temperature [°C]", title="warm-up, cast-iron housing")
     axes[0].legend(fontsize=8)
     history = histories["cast iron"]

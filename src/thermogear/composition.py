@@ -47,6 +47,7 @@ DRIVETRAIN_HEAT: dict[str, str] = {
 CASE_CHECKS: tuple[str, ...] = (
     "thermogear.gearbox.case_model:check_gearbox_section",
     "thermogear.mesh.table_file:check_mesh_table",
+    "thermogear.mesh.model:check_damping_friction_law",
 )
 
 

@@ -1,6 +1,7 @@
 """Equivalent viscous damping of tooth friction (Luo & Li (2020) Eqs. 26–28; docs/damping.md).
 
-Chain: Coulomb friction F = μ·w of a tooth pair (Eq. 27, :mod:`thermogear.friction`) dissipates 4·F·B per cycle of
+Chain: Coulomb friction F = μ·w of a tooth pair (Eq. 27, :mod:`thermogear.friction`; another law of
+:data:`thermogear.friction_models.FRICTION_MODELS` by ``[damping] friction_model``) dissipates 4·F·B per cycle of
 harmonic motion of amplitude B; a viscous damper c dissipates π·c·ω·B². Equal energy gives c = 4F/(πωB) (Eq. 26).
 With the quasi-static amplitude B ≈ w/k (frequency ratio ≪ 1) the load cancels: c = 4·μ·k/(π·ω) (Eq. 28), ω the
 mesh circular frequency 2π·z1·n1/60 (the paper's constant 1.459 = 0.12·4·60/(π·2π) confirms it).
@@ -42,15 +43,24 @@ from typing import Literal
 import numpy as np
 
 from thermogear.errors import CaseError
-from thermogear.friction import friction_validity_warnings, mean_friction_coefficient
+from thermogear.friction import friction_validity_warnings
+from thermogear.friction_models import DEFAULT_DAMPING_FRICTION_MODEL, FRICTION_MODELS, FrictionLaw, PitchContact
 from thermogear.mesh.model_names import MODELS
 
 #: How the friction damping c = 4·μ·k/(π·ω_m) with μ = 0.12·X_L·(w_i·R_a/(η·v_Σ·ρ_red))^(1/4) (Eqs. 27–28) scales
 #: with the pinion speed n1 and the normal load w when the geometry, the oil temperature and the load shares stay
 #: as they are: v_Σ ∝ n1 and ω_m ∝ n1 give c ∝ n1^(−5/4); the pair's load w_i ∝ w gives c ∝ w^(1/4). Exact for the
-#: formula (it is a pure power law); the mesh model says when its inputs keep those conditions.
+#: formula (it is a pure power law); the mesh model says when its inputs keep those conditions. Another friction
+#: law with μ ∝ (w/v_Σ)^p gives c ∝ n1^(−1−p)·w^p (:func:`friction_damping_exponents`).
 FRICTION_DAMPING_SPEED_EXPONENT = -1.25
 FRICTION_DAMPING_LOAD_EXPONENT = 0.25
+
+
+def friction_damping_exponents(law: FrictionLaw) -> tuple[float, float]:
+    """(speed, load) exponents of c = 4μk/(πω_m) for a friction law with μ ∝ (w/v_Σ)^p: (−1 − p, p) [–]
+    (v_Σ ∝ n1, ω_m ∝ n1; the paper's law, p = 1/4, gives the constants above)."""
+    return -1.0 - law.load_exponent, law.load_exponent
+
 
 Rule = Literal["paper", "parallel"]
 RULES = ("paper", "parallel")
@@ -142,10 +152,12 @@ def contact_region_means(mesh_values, contact_count, weights=None) -> dict[str, 
 
 
 def friction_pair_damping(pair_stiffness, load_share, total_unit_load, roughness, viscosity, sum_velocity,
-                          relative_radius, lubricant_factor, circular_frequency):
+                          relative_radius, lubricant_factor, circular_frequency, law: FrictionLaw | None = None,
+                          constant: float | None = None):
     """Friction coefficient, equivalent viscous damping and unit load of tooth pairs (Luo & Li Eqs. 27–28).
 
-    μ of DIN 3990-4 with the pair's load per unit width (its share of ``total_unit_load`` w_Bt [N/m]), the
+    μ of the friction ``law`` (default the paper's, DIN 3990-4 as Luo & Li Eq. 27; ``constant`` the value of the
+    ``"constant"`` law) with the pair's load per unit width (its share of ``total_unit_load`` w_Bt [N/m]), the
     composite ``roughness`` R_a [m], ``viscosity`` η [Pa·s] at the contact, ``sum_velocity`` v_Σ [m/s] and
     ``relative_radius`` ρ_red [m] at the contact, X_L ``lubricant_factor`` [–]; then c = 4·μ·k/(π·ω_m) with
     the pair stiffness k [N/m] (total) and the mesh circular frequency ω_m [rad/s]. Arrays broadcast.
@@ -155,8 +167,11 @@ def friction_pair_damping(pair_stiffness, load_share, total_unit_load, roughness
     share = np.asarray(load_share, dtype=float)
     unit_load = share * float(total_unit_load)
     friction_validity_warnings(float(total_unit_load), sum_velocity)
-    friction = np.asarray(mean_friction_coefficient(unit_load, roughness, viscosity, sum_velocity, relative_radius,
-                                                    lubricant_factor, check_limits=False), dtype=float)
+    law = FRICTION_MODELS[DEFAULT_DAMPING_FRICTION_MODEL] if law is None else law
+    contact = PitchContact(unit_load, roughness, viscosity, sum_velocity, relative_radius, lubricant_factor)
+    shape = np.broadcast(unit_load, *(np.asarray(value) for value in (roughness, viscosity, sum_velocity,
+                                                                      relative_radius))).shape
+    friction = np.array(np.broadcast_to(np.asarray(law.law(contact, constant), dtype=float), shape))
     damping = np.asarray(friction_damping(pair_stiffness, friction, circular_frequency), dtype=float)
     return friction, damping, unit_load
 
@@ -184,4 +199,4 @@ class PairDamping:
 
 
 __all__ = ["FRICTION_DAMPING_LOAD_EXPONENT", "FRICTION_DAMPING_SPEED_EXPONENT", "MODELS", "RULES", "PairDamping", "contact_region_means", "coulomb_equivalent_damping", "friction_damping",
-           "friction_pair_damping", "mesh_circular_frequency", "mesh_damping"]
+           "friction_damping_exponents", "friction_pair_damping", "mesh_circular_frequency", "mesh_damping"]

@@ -1,5 +1,6 @@
 """Mean tooth friction coefficients of spur gears as a choice: each law with its source, range and validity checks,
-resolved once by name from :data:`FRICTION_MODELS` (``[gearbox] friction_model``).
+resolved once by name from :data:`FRICTION_MODELS` (``[gearbox] friction_model`` for the loss model,
+``[damping] friction_model`` for the friction damping, which applies the law locally along the path of contact).
 
 Every law is a power law in the contact's state at the pitch point C, evaluated in the units of its source
 **inside** the law only (w [N/mm], R_a [μm], η [mPa·s], v_Σ [m/s], ρ [mm]); arguments and results are SI:
@@ -9,10 +10,18 @@ Every law is a power law in the contact's state at the pitch point C, evaluated 
   belongs to was not checked in the standard):
   μ = 0.12·(w_Bt·R_a/(η·v_ΣC·ρ_redC))^0.25·X_L (:mod:`thermogear.friction`; X_L of
   :data:`thermogear.lubricant.LUBRICANT_FACTORS`). Kept for the paper's damping and its reproduction.
-* ``"iso_tr_13989_1"`` — the mean coefficient of ISO/TR 13989-1:2000 (flash-temperature method for scuffing):
+* ``"iso_tr_13989_2"`` — the mean coefficient of the integral-temperature method of ISO/TR 13989:2000 (Part 2):
   μ_mC = 0.045·(w_Bt·K_Bγ/(v_ΣC·ρ_redC))^0.2·η^−0.05·X_R·X_L with X_R = 2.2·(R_a/ρ_redC)^0.25 and K_Bγ = 1 for
-  spur gears (ε_γ = ε_α ≤ 2); X_L of the same table. **Recalled [R], not read in the standard** (the search tools
-  of this project found no copy): the constants are stated as recalled in docs/gearbox-temperature.md.
+  spur gears (ε_γ = ε_α ≤ 2); X_L of the same table (mineral oil 1). The standard itself was not read (no copy
+  was found); the form, its constants and its part were checked against a commercial calculation's printout: the
+  KISSsoft report of the NREL 5 MW gearbox's third stage ("Calculation method according to ISO TR 13989:2000",
+  repository gfsReboucas/Drivetrain, ``@NREL_5MW/stage_03.rtf``) prints, under its **integral**-temperature
+  criteria, μ_m = 0.030 with X_L = 1.000, η = 30.09 mPa·s, w_Bt·K_Bγ = 1425.897 N/mm, and X_R = 0.712 for
+  R_a = 0.6 μm; its geometry (T1C 67.447 mm, T2C 266.979 mm, β_b 9.391°, v(d_w) 21.20 m/s, α_wt 22.856°) gives
+  ρ_redC = 54.57 mm and v_ΣC = 16.47 m/s, from which this form gives X_R = 0.7124 and μ_mC = 0.0297 (0.0283
+  without K_Bγ): both printed values reproduced (tests/validation/test_iso_tr_13989_friction.py). The same
+  report's **flash**-temperature criteria print another μ (0.041 with X_L = 0.843): the 0.045 form is the
+  integral method's, not Part 1's, whence the name (it was filed as ``"iso_tr_13989_1"`` before).
 * ``"schlenk"`` — Schlenk's mean coefficient from FZG power-loss measurements (L. Schlenk, Untersuchungen zur
   Fresstragfähigkeit von Großzahnrädern, Dissertation TU München, 1994), in the form that FZG power-loss work
   uses it (Fernandes, Marques, Martins & Seabra (2015), Gearbox power loss. Part II: Friction losses in gears,
@@ -25,7 +34,11 @@ Every law is a power law in the contact's state at the pitch point C, evaluated 
 
 Temperature dependence: all three laws depend on temperature only through η (μ ∝ η^e with e = −0.25 for the
 paper's law and −0.05 for the others), which :attr:`FrictionLaw.viscosity_exponent` exposes: from 40 to 90 °C a
-VG 100 mineral oil thins about 8-fold, raising the paper's μ by 64 % and Schlenk's by 10 %.
+VG 100 mineral oil thins about 8-fold, raising the paper's μ by 64 % and Schlenk's by 10 %. Load and speed enter
+all three as μ ∝ (w/v_Σ)^p (:attr:`FrictionLaw.load_exponent`: p = 0.25 for the paper's law, 0.2 for the others,
+0 for a constant), which makes the friction damping c = 4μk/(πω) a power law in speed and load.
+
+The laws take arrays as well as numbers (the damping evaluates them along the path of contact).
 
 Validity (all three laws): the usual limits of the DIN 3990-4 / ISO/TR 13989 formulas, sum of rolling speeds
 v_ΣC ≤ 50 m/s and unit load w_Bt ≥ 150 N/mm (recalled [R]; Schlenk's own measurement range, FZG gears at
@@ -39,6 +52,8 @@ import math
 import warnings
 from dataclasses import dataclass
 from typing import Callable
+
+import numpy as np
 
 from thermogear.errors import CaseError, ExtrapolationWarning
 from thermogear.friction import MAXIMUM_SUM_VELOCITY, MINIMUM_UNIT_LOAD, mean_friction_coefficient
@@ -68,26 +83,35 @@ class PitchContact:
     lubricant_factor: float
 
 
+def _smallest(value) -> float:
+    """The smallest of a number or an array (NaN where any value is not finite)."""
+    values = np.asarray(value, dtype=float)
+    return float(np.min(values)) if np.all(np.isfinite(values)) else float("nan")
+
+
 def _check(contact: PitchContact) -> None:
     for key, value in (("operating.speed_rpm (sum of rolling speeds)", contact.sum_velocity),
                        ("lubricant (dynamic viscosity)", contact.viscosity),
                        ("relative_radius", contact.relative_radius),
                        ("lubricant_factor", contact.lubricant_factor)):
-        if not (math.isfinite(value) and value > 0.0):
-            raise CaseError(key, value, "> 0", "the friction law is a power law in it")
-    if not (math.isfinite(contact.unit_load) and contact.unit_load >= 0.0):
-        raise CaseError("unit_load", contact.unit_load, ">= 0 N/m", "the teeth are pressed together")
-    if not (math.isfinite(contact.roughness) and contact.roughness >= 0.0):
-        raise CaseError("gears.roughness_ra_um", contact.roughness * 1e6, ">= 0", "a roughness")
+        smallest = _smallest(value)
+        if not smallest > 0.0:
+            raise CaseError(key, smallest, "> 0", "the friction law is a power law in it")
+    smallest = _smallest(contact.unit_load)
+    if not smallest >= 0.0:
+        raise CaseError("unit_load", smallest, ">= 0 N/m", "the teeth are pressed together")
+    smallest = _smallest(contact.roughness)
+    if not smallest >= 0.0:
+        raise CaseError("gears.roughness_ra_um", smallest * 1e6, ">= 0", "a roughness")
 
 
 def _paper(contact: PitchContact, constant: float | None) -> float:
-    return float(mean_friction_coefficient(contact.unit_load, contact.roughness, contact.viscosity,
-                                           contact.sum_velocity, contact.relative_radius, contact.lubricant_factor,
-                                           check_limits=False))
+    value = mean_friction_coefficient(contact.unit_load, contact.roughness, contact.viscosity, contact.sum_velocity,
+                                      contact.relative_radius, contact.lubricant_factor, check_limits=False)
+    return float(value) if np.ndim(value) == 0 else np.asarray(value, dtype=float)
 
 
-def _iso_tr_13989_1(contact: PitchContact, constant: float | None) -> float:
+def _iso_tr_13989_2(contact: PitchContact, constant: float | None) -> float:
     _check(contact)
     load, speed = contact.unit_load * 1e-3, contact.sum_velocity  # N/mm, m/s
     radius, roughness, viscosity = contact.relative_radius * 1e3, contact.roughness * 1e6, contact.viscosity * 1e3
@@ -118,7 +142,8 @@ def _standard_factor(base_oil: str) -> float | None:
 @dataclass(frozen=True)
 class FrictionLaw:
     """One mean friction law: its name, source, the exponent of η in it, its X_L per base oil (None: the law has no
-    published value for that base oil) and the law itself, ``law(contact, constant) -> μ [–]``."""
+    published value for that base oil), the law itself, ``law(contact, constant) -> μ [–]``, and the exponent p of
+    μ ∝ (w/v_Σ)^p (module docstring)."""
 
     name: str
     source: str
@@ -126,14 +151,17 @@ class FrictionLaw:
     checks_limits: bool
     law: Callable[[PitchContact, float | None], float]
     factor_of: Callable[[str], float | None]
+    load_exponent: float
 
-    def lubricant_factor(self, base_oil: str, given: float | None = None) -> float:
-        """X_L of this law for a base oil, or ``given`` where the case gives one; CaseError where neither exists."""
+    def lubricant_factor(self, base_oil: str, given: float | None = None,
+                         key: str = "gearbox.lubricant_factor") -> float:
+        """X_L of this law for a base oil, or ``given`` where the case gives one; CaseError naming ``key`` where
+        neither exists."""
         if given is not None:
             return float(given)
         factor = self.factor_of(base_oil)
         if factor is None:
-            raise CaseError("gearbox.lubricant_factor", None, "a value > 0",
+            raise CaseError(key, None, "a value > 0",
                             f"the friction law {self.name!r} has no published lubricant factor for base oil "
                             f"{base_oil!r}")
         return factor
@@ -162,15 +190,20 @@ def validity_warnings(name: str, unit_load: float, sum_velocity: float, stacklev
 #: (docs/gearbox-temperature.md, "Which friction law").
 FRICTION_MODELS: dict[str, FrictionLaw] = {
     "paper": FrictionLaw("paper", "DIN 3990-4 mean coefficient as Luo & Li (2020) Eq. 27",
-                         -0.25, True, _paper, _standard_factor),
-    "iso_tr_13989_1": FrictionLaw("iso_tr_13989_1", "ISO/TR 13989-1:2000 mean coefficient (flash-temperature "
-                                  "method), recalled", -0.05, True, _iso_tr_13989_1, _standard_factor),
+                         -0.25, True, _paper, _standard_factor, 0.25),
+    "iso_tr_13989_2": FrictionLaw("iso_tr_13989_2", "ISO/TR 13989-2:2000 mean coefficient (integral-temperature "
+                                  "method), checked against a KISSsoft printout", -0.05, True, _iso_tr_13989_2,
+                                  _standard_factor, 0.2),
     "schlenk": FrictionLaw("schlenk", "Schlenk (1994) with X_L of Fernandes et al. (2015)", -0.05, True, _schlenk,
-                           SCHLENK_LUBRICANT_FACTORS.get),
-    "constant": FrictionLaw("constant", "a given constant coefficient", 0.0, False, _constant, lambda base: 1.0),
+                           SCHLENK_LUBRICANT_FACTORS.get, 0.2),
+    "constant": FrictionLaw("constant", "a given constant coefficient", 0.0, False, _constant, lambda base: 1.0,
+                            0.0),
 }
 #: The gearbox loss model's default friction law (docs/gearbox-temperature.md, "Which friction law").
 DEFAULT_LOSS_FRICTION_MODEL = "schlenk"
+#: The friction damping's default friction law: the paper's, so the reproduction of Luo & Li keeps every number
+#: (docs/damping.md, "Which friction law").
+DEFAULT_DAMPING_FRICTION_MODEL = "paper"
 
 
 def friction_law(name: str, key: str = "gearbox.friction_model") -> FrictionLaw:
@@ -181,5 +214,5 @@ def friction_law(name: str, key: str = "gearbox.friction_model") -> FrictionLaw:
     return law
 
 
-__all__ = ["DEFAULT_LOSS_FRICTION_MODEL", "FRICTION_MODELS", "FrictionLaw", "LARGEST_CONSTANT_FRICTION",
+__all__ = ["DEFAULT_DAMPING_FRICTION_MODEL", "DEFAULT_LOSS_FRICTION_MODEL", "FRICTION_MODELS", "FrictionLaw", "LARGEST_CONSTANT_FRICTION",
            "PitchContact", "SCHLENK_LUBRICANT_FACTORS", "friction_law", "validity_warnings"]

@@ -19,12 +19,15 @@ def test_run_json_shows_the_networks_shaft_temperatures_and_the_table_prints_the
     assert result.returncode == 0, result.stderr
     warm = json.loads(result.stdout)["drivetrain"]["warm_state"]
     network = warm["network_c"]
-    assert network["pinion"] > network["shafts"] + 5.0 > network["housing"] + 5.0
-    for shaft in warm["shafts"].values():
-        assert shaft["temperature_c"] == network["shafts"]
-        assert shaft["source"].startswith("gearbox thermal network, shafts-and-bearings node")
-    for bearing in warm["bearings"].values():
-        assert (bearing["inner_ring_c"], bearing["outer_ring_c"]) == (network["shafts"], network["housing"])
+    assert network["pinion"] > network["pinion_shaft"] + 5.0 > network["housing"] + 5.0
+    assert network["pinion_shaft"] > network["wheel_shaft"] > network["housing"]  # each shaft its own node
+    nodes = {"pinion shaft": "pinion_shaft", "wheel shaft": "wheel_shaft"}
+    for name, shaft in warm["shafts"].items():
+        assert shaft["temperature_c"] == network[nodes[name]]
+        assert shaft["source"].startswith("gearbox thermal network, each shaft at its shaft node")
+    for name, bearing in warm["bearings"].items():
+        node = "pinion_shaft" if name.startswith("pinion") else "wheel_shaft"
+        assert (bearing["inner_ring_c"], bearing["outer_ring_c"]) == (network[node], network["housing"])
         assert bearing["loss_w"] > 0.0 and bearing["static_radial_load_n"] > 0.0
 
     from rich.console import Console
@@ -34,6 +37,6 @@ def test_run_json_shows_the_networks_shaft_temperatures_and_the_table_prints_the
     console = Console(record=True, width=200)
     _print_warm_state(warm, console)
     text = console.export_text()
-    for words in ("drivetrain warm state", "pinion shaft", f"{network['shafts']:.1f}", "gearbox thermal network",
+    for words in ("drivetrain warm state", "pinion shaft", f"{network['pinion_shaft']:.1f}", f"{network['wheel_shaft']:.1f}", "gearbox thermal network",
                   "wheel bearing B", "clearance mounted → hot"):
         assert words in text, words

@@ -80,12 +80,16 @@ def test_a_bearing_described_once_gives_its_stiffness_and_its_loss_at_the_static
     # the drivetrain's own static state at this load (another mesh stiffness: the bearings' forces do not need it)
     drivetrain = drivetrain_from_section(coupled.drivetrain, pair, coupled.material, 3.1e8)
     forces = static_state(drivetrain.assemble(), normal_force).bearing_forces
-    viscosity = float(parts.model.description.lubricant.kinematic_viscosity(point.state.shafts_c, warn=False)) * 1e6
+    oil = parts.model.description.lubricant
     total = 0.0
     for bearing in coupled.drivetrain.bearings:
         assert bearing.stiffness_x_n_per_m == 5.4e8  # the same table gives the stiffness
         radial = float(np.hypot(*forces[bearing.name][:2]))
-        speed = 1400.0 if bearing.shaft == "pinion shaft" else 1400.0 / pair.gear_ratio
+        on_pinion = bearing.shaft == "pinion shaft"
+        speed = 1400.0 if on_pinion else 1400.0 / pair.gear_ratio
+        # each bearing at the oil's viscosity at its own shaft's node
+        shaft_c = point.state.pinion_shaft_c if on_pinion else point.state.wheel_shaft_c
+        viscosity = float(oil.kinematic_viscosity(shaft_c, warn=False)) * 1e6
         expected = rolling_bearing(bearing.loss).moments(speed, viscosity, radial).power
         assert point.bearing_losses[bearing.name] == pytest.approx(expected, rel=1e-9)
         assert point.heat.bearings[bearing.name].radial_load == pytest.approx(radial, rel=1e-9)
@@ -169,8 +173,10 @@ def test_each_operating_point_has_its_own_temperatures(coupled):
     parts = coupled_parts_from_case(coupled)
     slow = operating_point_temperatures(parts, 700.0, 138.0)
     fast = operating_point_temperatures(parts, 2100.0, 138.0)
-    assert fast.state.shafts_c > slow.state.shafts_c + 1.0
-    assert fast.heat.shaft_temperature_c["pinion shaft"] == fast.state.shafts_c
+    assert fast.state.pinion_shaft_c > slow.state.pinion_shaft_c + 1.0
+    assert fast.state.wheel_shaft_c > slow.state.wheel_shaft_c + 1.0
+    assert fast.heat.shaft_temperature_c["pinion shaft"] == fast.state.pinion_shaft_c
+    assert fast.heat.shaft_temperature_c["wheel shaft"] == fast.state.wheel_shaft_c
     assert "2100 rpm" in fast.heat.source
 
 
@@ -182,20 +188,23 @@ def test_the_network_sets_the_drivetrain_shafts_and_the_run_output_says_so(coupl
 
     heat = network_drivetrain_heat(coupled)
     built = case_drivetrain(coupled)
-    shafts_c = heat.nodes_c["shafts"]
+    shafts_c = heat.nodes_c["pinion_shaft"]
     assert heat.nodes_c["pinion"] > shafts_c + 5.0  # the gears' mean tooth temperature would overstate it
+    assert shafts_c > heat.nodes_c["wheel_shaft"] + 1.0  # each shaft its own node: the faster pinion's is hotter
     warm = built.warm_state
-    for name in ("pinion shaft", "wheel shaft"):
-        assert warm["shafts"][name]["temperature_c"] == shafts_c
+    for name, node in (("pinion shaft", "pinion_shaft"), ("wheel shaft", "wheel_shaft")):
+        assert warm["shafts"][name]["temperature_c"] == heat.nodes_c[node]
         assert "gearbox thermal network" in warm["shafts"][name]["source"]
     beta = built.models[THERMAL].thermoelastic_mesh.gears[0].modulus_coefficient_per_k
-    cold = built.drivetrains[ELASTIC].shafts[0].segments[0].material.youngs_modulus
-    hot = built.drivetrains[THERMAL].shafts[0].segments[0].material.youngs_modulus
-    assert hot == pytest.approx(youngs_modulus_at(cold, beta, shafts_c), rel=1e-12)
+    for index, node in enumerate(("pinion_shaft", "wheel_shaft")):
+        cold = built.drivetrains[ELASTIC].shafts[index].segments[0].material.youngs_modulus
+        hot = built.drivetrains[THERMAL].shafts[index].segments[0].material.youngs_modulus
+        assert hot == pytest.approx(youngs_modulus_at(cold, beta, heat.nodes_c[node]), rel=1e-12)
     bearing = warm["bearings"]["pinion bearing A"]
     assert bearing["inner_ring_c"] == shafts_c and bearing["outer_ring_c"] == heat.nodes_c["housing"]
     assert bearing["loss_w"] > 0.0 and bearing["static_radial_load_n"] == pytest.approx(
         0.5 * 138.0 / coupled.gear_pair.pinion.base_radius, rel=1e-9)
+    assert warm["bearings"]["wheel bearing A"]["inner_ring_c"] == heat.nodes_c["wheel_shaft"]
 
 
 def test_the_backlash_drivetrain_takes_the_hot_clearance():
@@ -210,11 +219,14 @@ def test_the_backlash_drivetrain_takes_the_hot_clearance():
     case = _load(document)
     heat = network_drivetrain_heat(case)
     built = case_drivetrain(case)
-    difference = heat.nodes_c["shafts"] - heat.nodes_c["housing"]
-    expected = 20e-6 - 0.5 * BEARING_STEEL_EXPANSION_PER_K * 75e-3 * difference
-    assert difference > 5.0 and math.isclose(built.drivetrains[ELASTIC].bearings[0].radial_clearance, 20e-6)
+    assert math.isclose(built.drivetrains[ELASTIC].bearings[0].radial_clearance, 20e-6)
+    shafts = {bearing["name"]: bearing["shaft"] for bearing in document["drivetrain"]["bearings"]}
     for bearing in built.drivetrains[THERMAL].bearings:
-        assert bearing.radial_clearance == pytest.approx(expected, rel=1e-12)
+        # each bearing's inner ring at its own shaft's node
+        node = "pinion_shaft" if shafts[bearing.name] == "pinion shaft" else "wheel_shaft"
+        difference = heat.nodes_c[node] - heat.nodes_c["housing"]
+        expected = 20e-6 - 0.5 * BEARING_STEEL_EXPANSION_PER_K * 75e-3 * difference
+        assert difference > 5.0 and bearing.radial_clearance == pytest.approx(expected, rel=1e-12)
 
 
 def test_a_changed_operating_point_predicts_its_own_drivetrain_temperatures(coupled):

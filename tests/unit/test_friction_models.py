@@ -25,11 +25,11 @@ def test_schlenk_hand_calculation():
     assert expected == pytest.approx(0.0578, abs=5e-5)  # the value derived for this point by hand, 3 digits
 
 
-def test_iso_tr_13989_1_hand_calculation():
+def test_iso_tr_13989_2_hand_calculation():
     # 0.045·(w_Bt/(v_Σ ρ))^0.2 · η^−0.05 · X_R · X_L with X_R = 2.2·(R_a/ρ)^0.25, K_Bγ = 1 (spur)
     group = (7834.0 / 14.0) / (6.58 * 8.38)
     expected = 0.045 * group**0.2 * 20.0**-0.05 * 2.2 * (0.6 / 8.38)**0.25
-    assert friction_law("iso_tr_13989_1").coefficient(POINT) == pytest.approx(expected, rel=1e-12)
+    assert friction_law("iso_tr_13989_2").coefficient(POINT) == pytest.approx(expected, rel=1e-12)
 
 
 def test_paper_law_hand_calculation():
@@ -39,7 +39,7 @@ def test_paper_law_hand_calculation():
 
 
 @pytest.mark.parametrize("name, load, viscosity, roughness", [("schlenk", 0.2, -0.05, 0.25),
-                                                              ("iso_tr_13989_1", 0.2, -0.05, 0.25),
+                                                              ("iso_tr_13989_2", 0.2, -0.05, 0.25),
                                                               ("paper", 0.25, -0.25, 0.25)])
 def test_power_law_exponents(name, load, viscosity, roughness):
     law = friction_law(name)
@@ -50,6 +50,37 @@ def test_power_law_exponents(name, load, viscosity, roughness):
         changed = PitchContact(**{**POINT.__dict__, field: doubled[field]})
         assert law.coefficient(changed) / base == pytest.approx(2.0**exponent, rel=1e-12), field
     assert law.viscosity_exponent == viscosity
+    # μ ∝ (w/v_Σ)^p: the exponent the friction damping's speed and load scaling is built on
+    assert law.load_exponent == load
+    faster = PitchContact(**{**POINT.__dict__, "sum_velocity": 2.0 * POINT.sum_velocity})
+    assert law.coefficient(faster) / base == pytest.approx(2.0**-load, rel=1e-12)
+
+
+@pytest.mark.parametrize("name", ["schlenk", "iso_tr_13989_2", "paper", "constant"])
+def test_every_law_takes_arrays_as_the_damping_does(name):
+    # the damping evaluates a law along the path of contact: arrays give, point by point, the scalar values
+    import numpy as np
+
+    law = friction_law(name)
+    loads = np.array([0.3, 1.0, 1.7]) * POINT.unit_load
+    speeds = np.array([5.0, 6.58, 8.0])
+    contact = PitchContact(loads, POINT.roughness, POINT.viscosity, speeds, POINT.relative_radius, 1.0)
+    values = np.broadcast_to(law.law(contact, 0.05), loads.shape)
+    for index in range(3):
+        single = PitchContact(float(loads[index]), POINT.roughness, POINT.viscosity, float(speeds[index]),
+                              POINT.relative_radius, 1.0)
+        assert values[index] == pytest.approx(law.law(single, 0.05), rel=1e-14)
+
+
+
+@pytest.mark.parametrize("name", ["schlenk", "iso_tr_13989_2", "paper"])
+def test_an_array_with_a_standstill_point_is_refused(name):
+    import numpy as np
+
+    speeds = np.array([5.0, 0.0, 8.0])
+    with pytest.raises(CaseError, match="operating.speed_rpm"):
+        friction_law(name).law(PitchContact(POINT.unit_load, POINT.roughness, POINT.viscosity, speeds,
+                                            POINT.relative_radius, 1.0), None)
 
 
 def test_temperature_sensitivity_from_40_to_90_c():
@@ -84,7 +115,7 @@ def test_validity_warnings_name_the_law():
         friction_law("schlenk").coefficient(light)
     fast = PitchContact(**{**POINT.__dict__, "sum_velocity": 60.0})
     with pytest.warns(ExtrapolationWarning, match="60.0 m/s"):
-        friction_law("iso_tr_13989_1").coefficient(fast)
+        friction_law("iso_tr_13989_2").coefficient(fast)
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         friction_law("constant").coefficient(light, 0.05)  # a given value has no range

@@ -15,6 +15,7 @@ from thermogear.gearbox.backlash import (backlash_allowance, backlash_at_tempera
                                          cold_start_backlash)
 from thermogear.gearbox.description import GearboxOperatingPoint, Housing
 from thermogear.gearbox.fzg_example import fzg_type_c_pair, illustrative_fzg_gearbox
+from thermogear.gearbox.losses import NODES
 from thermogear.gearbox.model import GearboxThermalModel
 from thermogear.gearbox.network import NoSteadyStateError
 
@@ -40,7 +41,8 @@ def test_steady_state_energy_balance(model):
     assert steady.energy_residual < 1e-9
     assert steady.heat_out == pytest.approx(steady.losses.total, rel=1e-9)
     # heat flows outwards: gears hottest, then shafts and oil, housing coolest, all above the air
-    assert steady.pinion_c > steady.shafts_c > steady.housing_c > LOAD_STAGE_6.ambient_c
+    assert steady.pinion_c > steady.pinion_shaft_c > steady.housing_c > LOAD_STAGE_6.ambient_c
+    assert steady.wheel_c > steady.wheel_shaft_c > steady.housing_c
     assert steady.wheel_c > steady.oil_c > steady.housing_c
 
 
@@ -56,7 +58,7 @@ def test_losses_reported_per_source_and_efficiency(model):
 def test_losses_follow_the_oil_temperature(model):
     # thinner oil: less churning and bearing drag, more tooth friction (the friction law's μ ∝ η^e, e < 0)
     losses = model.losses(LOAD_STAGE_6)
-    cold, warm = losses.at(np.full(5, 40.0)), losses.at(np.full(5, 90.0))
+    cold, warm = losses.at(np.full(len(NODES), 40.0)), losses.at(np.full(len(NODES), 90.0))
     assert warm.churning < cold.churning
     assert warm.friction_coefficient > cold.friction_coefficient
     viscosity_ratio = (model.description.lubricant.dynamic_viscosity(90.0, warn=False)

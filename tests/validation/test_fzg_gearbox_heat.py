@@ -62,7 +62,9 @@ PUBLISHED_K12_SUMP_C = 140.0
 
 
 @pytest.mark.xfail(strict=True, reason="known gap: the assumed housing and internal heat paths of the set run the "
-                                       "C-gear K12 stage to 151 °C oil; the published A-gear value is at most 140 °C")
+                                       "C-gear K12 stage to 148 °C oil (151 °C while both shafts shared one node); "
+                                       "the published A-gear value is at most 140 °C (docs/gearbox-temperature.md, "
+                                       "'What the gaps say')")
 def test_k12_stage_from_90_c_ends_within_the_published_sump_temperature(stages):
     assert stages[-1].oil_c <= PUBLISHED_K12_SUMP_C + 5.0
 
@@ -73,6 +75,11 @@ def test_k12_stage_from_90_c_ends_within_the_published_sump_temperature(stages):
 # form 117.8 °C, flash method 116.5 °C) differ from it by 26–30 % of the rise, so methods of this kind disagree by that
 # much; the network's rise also rests on assumed gear–oil and gear–shaft paths. The oil is held at 90 °C by the rig's
 # thermostat (heater 2 kW, cooling 5 kW, gain 2 kW/K: within 0.1 K).
+# History: 145.7 °C (a strict xfail) while both shafts shared one node with an assumed 3 W/K from each gear; 138.6 °C
+# with each shaft its own node, the gear body's conduction from its formula (5.5 W/K for the pinion) and Blok's heat
+# partition (pinion 0.493 instead of 0.5). That is inside the band by 0.4 K only: the agreement does not validate
+# the assumed gear–oil (200 W/m²K, −4.4 K per +20 %) and bearing-seat (8 W/K, −2.2 K per +20 %) paths, which
+# still carry most of the pinion's heat.
 FVA_54_7_BULK_C = 127.7
 
 
@@ -88,8 +95,6 @@ def test_fva_point_holds_the_oil_at_90_c(fva_point):
     assert fva_point.energy_balance_w < 1e-9
 
 
-@pytest.mark.xfail(strict=True, reason="known gap: the network's pinion runs 145.7 °C, 18 K (48 % of the rise) above "
-                                       "the reference: the assumed gear–oil (200 W/m²K) and gear–shaft paths")
 def test_fva_54_7_pinion_bulk_temperature(fva_point):
     assert fva_point.pinion_c == pytest.approx(FVA_54_7_BULK_C, abs=0.3 * (FVA_54_7_BULK_C - 90.0))
 

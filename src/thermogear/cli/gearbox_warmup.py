@@ -72,6 +72,7 @@ def run_gearbox_stages(base, stages: str, duration_s: float, start_c: float | No
     (:func:`thermogear.gearbox.procedure.run_load_stages`) and print the end of each stage."""
     from thermogear.errors import CaseError  # noqa: PLC0415
     from thermogear.gearbox.case_model import gearbox_model_from_case, gearbox_operating_point  # noqa: PLC0415
+    from thermogear.gearbox.losses import NODES  # noqa: PLC0415
     from thermogear.gearbox.procedure import FZG_START_C, fzg_load_stages, run_load_stages  # noqa: PLC0415
     from thermogear.temperature_limits import FLAG_MEANINGS  # noqa: PLC0415
 
@@ -87,9 +88,8 @@ def run_gearbox_stages(base, stages: str, duration_s: float, start_c: float | No
     if as_json:
         print_json({"case": base.name, "speed_rpm": operating.speed_rpm, "duration_s": duration_s, "start_c": start,
                     "ambient_c": operating.ambient_c,
-                    "stages": [{"stage": r.name, "torque_nm": r.torque, "pinion_c": r.pinion_c,
-                                "wheel_c": float(r.end_c[1]), "shafts_c": float(r.end_c[2]), "oil_c": r.oil_c,
-                                "housing_c": float(r.end_c[4]), "total_loss_w": r.total_loss,
+                    "stages": [{"stage": r.name, "torque_nm": r.torque,
+                                **{f"{name}_c": r.node_c(name) for name in NODES}, "total_loss_w": r.total_loss,
                                 "conditioning_w": r.conditioning, "flags": list(r.flags),
                                 "energy_residual": r.energy_residual} for r in results]})
         return
@@ -99,8 +99,8 @@ def run_gearbox_stages(base, stages: str, duration_s: float, start_c: float | No
                  "conditioning [W]", "flags"):
         table.add_column(name, justify="right")
     for r in results:
-        table.add_row(r.name, f"{r.torque:g}", f"{r.pinion_c:.1f}", f"{r.end_c[1]:.1f}", f"{r.oil_c:.1f}",
-                      f"{r.end_c[4]:.1f}", f"{r.total_loss:.1f}", f"{r.conditioning:.1f}", ", ".join(r.flags))
+        table.add_row(r.name, f"{r.torque:g}", f"{r.pinion_c:.1f}", f"{r.node_c('wheel'):.1f}", f"{r.oil_c:.1f}",
+                      f"{r.node_c('housing'):.1f}", f"{r.total_loss:.1f}", f"{r.conditioning:.1f}", ", ".join(r.flags))
     console.print(table)
     for flag, meaning in FLAG_MEANINGS.items():
         if any(flag in r.flags for r in results):

@@ -29,6 +29,7 @@ from thermogear.gearbox.backlash import ColdStart, cold_start_backlash
 from thermogear.gearbox.case_model import (PredictedTemperatureError, gearbox_model_from_case,
                                           gearbox_operating_point, gearbox_section)
 from thermogear.gearbox.description import OilConditioning
+from thermogear.gearbox.losses import NODES
 from thermogear.gearbox.model import COLDEST_START_C, GearboxThermalModel, WarmUpHistory
 from thermogear.schema.temperature import TemperatureSection
 from thermogear.temperature_limits import FLAG_MEANINGS, MATERIAL_MAXIMUM_C
@@ -105,7 +106,7 @@ class GearboxWarmupResult:
                            "jammed": self.cold_start.jammed},
             "history": {"time_s": history.times.tolist(),
                         **{f"{name}_c": history.node(name).tolist()
-                           for name in ("pinion", "wheel", "shafts", "oil", "housing")},
+                           for name in NODES},
                         "mesh_loss_w": history.mesh_loss.tolist(), "bearing_loss_w": history.bearing_loss.tolist(),
                         "seal_loss_w": history.seal_loss.tolist(), "churning_loss_w": history.churning_loss.tolist(),
                         "injection_loss_w": history.jet_loss.tolist(),
@@ -130,7 +131,8 @@ def state_case(case, temperatures_c):
     sections are validated one by one.
 
     A resolver: it writes a new case from the case's own sections, so it takes the whole case."""
-    pinion, wheel, _, oil, housing = (round(float(value), 6) for value in temperatures_c)
+    pinion, wheel, oil, housing = (round(float(temperatures_c[NODES.index(name)]), 6)
+                                   for name in ("pinion", "wheel", "oil", "housing"))
     pair = case.gear_pair
     points = pair.path_points
     # a flat table a unit of Γ beyond both ends of the path (degree 0: the same value wherever it is read)

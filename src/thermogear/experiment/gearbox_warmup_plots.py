@@ -5,6 +5,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from thermogear.gearbox.losses import NODES
+
 
 def plot_gearbox_warmup(result):
     """The six panels of a :class:`~thermogear.experiment.gearbox_warmup.GearboxWarmupResult`; returns the
@@ -15,8 +17,8 @@ def plot_gearbox_warmup(result):
     minutes = history.times / 60.0
     figure, axes = plt.subplots(3, 2, figsize=(10, 8.5), sharex=True, layout="constrained")
     ax = axes[0, 0]
-    for name in ("pinion", "wheel", "shafts", "oil", "housing"):
-        ax.plot(minutes, history.node(name), label=name)
+    for name in NODES:
+        ax.plot(minutes, history.node(name), label=name.replace("_", " "))
     ax.axhline(result.ambient_c, color="0.5", lw=0.8, ls=":", label="ambient")
     ax.set_ylabel("temperature [°C]")
     ax.legend(fontsize=7, ncol=2)

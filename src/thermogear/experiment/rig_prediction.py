@@ -83,11 +83,12 @@ def predicted_runs(chained: bool = True, cold: bool = True) -> tuple[list[RigPre
     """(cold-start rows, chained rows) of :func:`predict_table3`; the first run, the same in both, is integrated
     once. A list not asked for is empty."""
     from thermogear.gearbox.description import GearboxOperatingPoint  # noqa: PLC0415
+    from thermogear.gearbox.losses import NODES  # noqa: PLC0415
     from thermogear.gearbox.model import GearboxThermalModel  # noqa: PLC0415
 
     model = GearboxThermalModel(rig_gearbox_description())
     points = int(round(RUN_DURATION_S / OUTPUT_STEP_S)) + 1
-    ambient = np.full(5, RIG_AMBIENT_C)
+    ambient = np.full(len(NODES), RIG_AMBIENT_C)
     rows: dict[str, list[RigPrediction]] = {"cold": [], "chained": []}
     start = ambient
     for order, speed in enumerate(rig_speeds_rpm()):
@@ -108,7 +109,7 @@ def _rows_of_run(history, speed: float, start: str) -> list[RigPrediction]:
     rows = []
     for measured in measurements_at(speed):
         index = int(round(measured.minute * 60.0 / OUTPUT_STEP_S))
-        pinion, wheel, _, oil, housing = history.temperatures_c[:, index]
+        pinion, wheel, oil, housing = (history.node(name)[index] for name in ("pinion", "wheel", "oil", "housing"))
         rows.append(RigPrediction(speed, measured.minute, start, measured.temperature_c, float(oil), float(pinion),
                                   float(wheel), float(housing)))
     return rows

@@ -27,7 +27,7 @@ if TYPE_CHECKING:
     from thermogear.case import Case
 
 __all__ = ["BEARING_CONSTANTS", "BEARING_TYPES", "drivetrain_bearing_loads", "drivetrain_mounted_bearings",
-           "mounted_bearing_power", "rolling_bearing"]
+           "mounted_bearing_power", "rolling_bearing", "shaft_sides"]
 
 #: Built-in bearing constants by designation (SKF model, catalogue units).
 BEARING_CONSTANTS = {"NJ406": (RollingBearing.cylindrical_roller, NJ406_CONSTANTS)}
@@ -58,7 +58,7 @@ def mounted_bearing_power(mounted: MountedBearing, pinion_rpm: float, wheel_rpm:
     return mounted.bearing.moments(speed, viscosity_mm2_s, mounted.load_fraction * normal_force).power
 
 
-def _shaft_sides(section) -> dict[str, bool]:
+def shaft_sides(section) -> dict[str, bool]:
     """Drivetrain shaft name → True where it turns with the wheel, False with the pinion (joined by couplings);
     shafts joined to neither are left out."""
     sides = {section.pinion.shaft: False, section.wheel.shaft: True}
@@ -97,7 +97,7 @@ def drivetrain_mounted_bearings(case: "Case") -> tuple[MountedBearing, ...]:
     section = case.drivetrain
     if section is None or not any(bearing.loss is not None for bearing in section.bearings):
         return ()
-    sides = _shaft_sides(section)
+    sides = shaft_sides(section)
     loads = drivetrain_bearing_loads(case)
     mounted = []
     for bearing in section.bearings:

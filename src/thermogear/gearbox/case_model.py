@@ -138,6 +138,7 @@ def gearbox_description_from_case(case: "Case") -> GearboxDescription:
         roughness=case.roughness_ra, lubricant_factor=section.lubricant_factor, friction=law,
         friction_constant=section.friction_coefficient, conditioning=conditioning,
         pinion_heat_share=section.pinion_heat_share, steel_specific_heat=material.specific_heat,
+        steel_conductivity=material.thermal_conductivity,
         oil_specific_heat=section.oil.specific_heat_j_per_kg_k, gear_expansion=material.thermal_expansion,
         gear_oil_coefficient=section.internal.gear_oil_w_per_m2_k,
         oil_housing_coefficient=section.internal.oil_housing_w_per_m2_k,

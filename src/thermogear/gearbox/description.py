@@ -1,22 +1,33 @@
 """The gearbox as resolved, frozen inputs: gear pair, oil, housing, bearings, seals, capacities and the internal
 heat-transfer coefficients, plus the operating point. Everything in SI (temperatures in °C).
 
-The internal coefficients (gear–oil, oil–housing, conductances through shafts and bearings) have no general
-correlation that this project could verify: they are inputs with stated defaults of the usual order of magnitude
-for a dip-lubricated spur gearbox (gear–oil 100–1000 W/(m²K) where dipped, oil–wall 50–300 W/(m²K); Changenet,
-Oviedo-Marlot & Velex 2006 fit theirs to measurements). They are the first thing to calibrate on a measured
-warm-up (docs/gearbox-temperature.md, "What would validate it").
+Each shaft (with its bearings) is its own node. Each gear body conducts to its own shaft through the solid between
+its root circle and its bore: a cylindrical wall, G = 2π·k·b/ln(r_f/r_bore) (Fourier's law in a hollow cylinder,
+Incropera et al., Fundamentals of Heat and Mass Transfer, 6th ed., Eq. 3.27 for R_t,cond = ln(r2/r1)/(2πLk)); a
+gear without a bore (cut on its shaft) conducts from its rim to its volume mean, G = 8π·k·b (the same book's
+solid cylinder with uniform generation, §3.5.2: T_mean − T_s = q'/(8πk)). The contact resistance of the fit is
+left out (it lowers G), and the node's mean temperature lies inside the annulus (that raises G): the formula is
+an estimate, not a bound. The other internal coefficients (gear–oil, oil–housing, shafts–oil, shafts–housing
+through the bearings) have no general correlation that this project could verify: they are inputs with stated
+defaults of the usual order of magnitude for a dip-lubricated spur gearbox (gear–oil 100–1000 W/(m²K) where
+dipped, oil–wall 50–300 W/(m²K); Changenet, Oviedo-Marlot & Velex 2006 fit theirs to measurements), given for
+both shafts together and shared between them: the shafts–housing path in proportion to the bearings on each shaft
+(it runs through the bearing seats; half each without bearings), the shafts–oil path and the shafts' mass half
+each. They are the first thing to calibrate on a measured warm-up (docs/gearbox-temperature.md, "What would
+validate it").
 """
 
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from functools import cached_property
 
 from thermogear.errors import CaseError
 from thermogear.friction_models import DEFAULT_LOSS_FRICTION_MODEL, FRICTION_MODELS, FrictionLaw
 from thermogear.gearbox.bearing_loss import RollingBearing
 from thermogear.gearbox.injection import OilJet
+from thermogear.gearbox.mesh_loss import rigid_pinion_heat_share
 from thermogear.geometry import GearPair
 from thermogear.lubricant import Lubricant
 
@@ -100,9 +111,10 @@ class Housing:
 class GearboxDescription:
     """One spur gear stage in a dip-lubricated housing (see the module docstring for the internal coefficients).
 
-    Masses [kg] of the pinion, wheel and of the shafts with their bearings (one node), oil volume [m³],
+    Masses [kg] of the pinion, wheel and of both shafts with their bearings (half each), oil volume [m³],
     immersion depths [m] of the wheel and pinion (0: above the oil), composite roughness R_a [m], the friction
-    formula's lubricant factor X_L, the pinion's share of the tooth friction heat, the gear loss factor (None:
+    formula's lubricant factor X_L, the pinion's share of the tooth friction heat (None: Blok's partition
+    averaged over the path, :attr:`heat_share`), the gear loss factor (None:
     Ohlendorf's H_V of the pair; give the mesh model's H_VL to use its load sharing), the cold normal backlash
     [m] (None: the AGMA 2002 minimum) and the assembly temperature [°C] at which it holds; ``oil_jet``: the
     into-mesh jet of injection lubrication (its impulse loss; the gears then usually dip nowhere: immersions 0).
@@ -125,16 +137,17 @@ class GearboxDescription:
     seals: tuple[LipSeal, ...] = ()
     roughness: float = 0.5e-6
     lubricant_factor: float | None = None
-    pinion_heat_share: float = 0.5
+    pinion_heat_share: float | None = None  # None: Blok's partition over the path (mesh_loss)
     loss_factor: float | None = None
     steel_specific_heat: float = 465.0  # [J/(kg·K)]
     oil_specific_heat: float = 2000.0  # [J/(kg·K)]
     gear_expansion: float = 11.5e-6  # [1/K]
     gear_oil_coefficient: float = 200.0  # [W/(m²·K)] over each gear's whole surface (assumed: calibrate)
     oil_housing_coefficient: float = 150.0  # [W/(m²·K)] over the wetted inner wall (assumed: calibrate)
-    gear_shaft_conductance: float = 3.0  # [W/K] each gear to the shaft node (assumed: calibrate)
-    shaft_oil_conductance: float = 4.0  # [W/K] (assumed: calibrate)
-    shaft_housing_conductance: float = 8.0  # [W/K] through the bearing seats (assumed: calibrate)
+    gear_shaft_conductance: float | None = None  # [W/K] each gear to its shaft (None: the hub formula)
+    shaft_oil_conductance: float = 4.0  # [W/K] both shafts to the oil (assumed: calibrate)
+    shaft_housing_conductance: float = 8.0  # [W/K] both shafts through the bearing seats (assumed: calibrate)
+    steel_conductivity: float = 46.0  # k of the gears [W/(m·K)] (carbon steel; the material's)
     backlash: float | None = None
     assembly_c: float = 20.0
     oil_jet: OilJet | None = None  # injection lubrication: an into-mesh jet (None: dip lubrication only)
@@ -145,17 +158,18 @@ class GearboxDescription:
 
     def __post_init__(self) -> None:
         for key in ("oil_volume", "pinion_mass", "wheel_mass", "shaft_mass", "steel_specific_heat",
-                    "oil_specific_heat"):
+                    "oil_specific_heat", "steel_conductivity"):
             _check_positive(key, getattr(self, key))
+        if self.gear_shaft_conductance is not None:
+            _check_positive("gear_shaft_conductance", self.gear_shaft_conductance, allow_zero=True)
         if self.lubricant_factor is not None:
             _check_positive("lubricant_factor", self.lubricant_factor)
         if self.friction_constant is not None:
             _check_positive("friction_constant", self.friction_constant)
         for key in ("wheel_immersion", "pinion_immersion", "roughness", "gear_expansion", "gear_oil_coefficient",
-                    "oil_housing_coefficient", "gear_shaft_conductance", "shaft_oil_conductance",
-                    "shaft_housing_conductance"):
+                    "oil_housing_coefficient", "shaft_oil_conductance", "shaft_housing_conductance"):
             _check_positive(key, getattr(self, key), allow_zero=True)
-        if not 0.0 <= self.pinion_heat_share <= 1.0:
+        if self.pinion_heat_share is not None and not 0.0 <= self.pinion_heat_share <= 1.0:
             raise CaseError("pinion_heat_share", self.pinion_heat_share, "[0, 1]", "a share of the friction heat")
         for key, depth, gear in (("wheel_immersion", self.wheel_immersion, self.gear_pair.wheel),
                                  ("pinion_immersion", self.pinion_immersion, self.gear_pair.pinion)):
@@ -173,13 +187,44 @@ class GearboxDescription:
         """X_L of the friction law [–]: the one given, else the law's for the oil's base oil."""
         return self.friction.lubricant_factor(self.lubricant.base_oil, self.lubricant_factor)
 
+    @cached_property
+    def heat_share(self) -> float:
+        """The pinion's share of the tooth friction heat [–]: the one given, else Blok's partition averaged over
+        the path (:func:`~thermogear.gearbox.mesh_loss.rigid_pinion_heat_share`)."""
+        if self.pinion_heat_share is not None:
+            return float(self.pinion_heat_share)
+        return rigid_pinion_heat_share(self.gear_pair)
+
+    def gear_body_conductance(self, wheel: bool) -> float:
+        """Conductance of a gear body to its shaft [W/K]: the one given, else 2π·k·b/ln(r_f/r_bore), or 8π·k·b for
+        a gear without a bore (module docstring)."""
+        if self.gear_shaft_conductance is not None:
+            return float(self.gear_shaft_conductance)
+        gear = self.gear_pair.wheel if wheel else self.gear_pair.pinion
+        conductivity, width = self.steel_conductivity, gear.face_width
+        if gear.bore_radius <= 0.0:
+            return 8.0 * math.pi * conductivity * width
+        return 2.0 * math.pi * conductivity * width / math.log(gear.root_radius / gear.bore_radius)
+
     @property
-    def capacities(self) -> tuple[float, float, float, float, float]:
-        """C = m·c of pinion, wheel, shafts, oil (ρ at 15 °C·V0), housing [J/K]."""
+    def shaft_housing_conductances(self) -> tuple[float, float]:
+        """(pinion shaft, wheel shaft) to the housing [W/K]: the total in proportion to the bearings on each shaft
+        (half each without bearings)."""
+        on_wheel = sum(1 for mounted in self.bearings if mounted.on_wheel_shaft)
+        count = len(self.bearings)
+        wheel_share = 0.5 if count == 0 else on_wheel / count
+        total = self.shaft_housing_conductance
+        return ((1.0 - wheel_share) * total, wheel_share * total)
+
+    @property
+    def capacities(self) -> tuple[float, float, float, float, float, float]:
+        """C = m·c of pinion, wheel, pinion shaft, wheel shaft (half the shafts' mass each), oil (ρ at 15 °C·V0),
+        housing [J/K]."""
         oil_mass = float(self.lubricant.density(15.0)) * self.oil_volume
         steel = self.steel_specific_heat
-        return (self.pinion_mass * steel, self.wheel_mass * steel, self.shaft_mass * steel,
-                oil_mass * self.oil_specific_heat, self.housing.mass * self.housing.specific_heat)
+        return (self.pinion_mass * steel, self.wheel_mass * steel, 0.5 * self.shaft_mass * steel,
+                0.5 * self.shaft_mass * steel, oil_mass * self.oil_specific_heat,
+                self.housing.mass * self.housing.specific_heat)
 
 
 @dataclass(frozen=True)

@@ -15,6 +15,7 @@ import numpy as np
 from thermogear.gearbox.convection import (air_properties, churchill_chu_vertical, combined_nusselt,
                                            flat_plate_forced, horizontal_plate, radiation_coefficient)
 from thermogear.gearbox.description import GearboxDescription, Housing
+from thermogear.gearbox.losses import HOUSING, NODES, OIL, PINION, PINION_SHAFT, WHEEL, WHEEL_SHAFT
 
 
 def housing_outer_conductance(housing: Housing, housing_c: float, ambient_c: float) -> float:
@@ -40,13 +41,19 @@ def housing_outer_conductance(housing: Housing, housing_c: float, ambient_c: flo
 
 
 def internal_conductances(description: GearboxDescription) -> np.ndarray:
-    """Symmetric G [W/K] between pinion, wheel, shafts, oil, housing (constant)."""
-    matrix = np.zeros((5, 5))
-    links = ((0, 3, description.gear_oil_coefficient * description.gear_surface(False)),
-             (1, 3, description.gear_oil_coefficient * description.gear_surface(True)),
-             (0, 2, description.gear_shaft_conductance), (1, 2, description.gear_shaft_conductance),
-             (2, 3, description.shaft_oil_conductance), (2, 4, description.shaft_housing_conductance),
-             (3, 4, description.oil_housing_coefficient * description.housing.oil_wetted_area))
+    """Symmetric G [W/K] between the nodes of :data:`~thermogear.gearbox.losses.NODES` (constant): each gear to the
+    oil and to its own shaft, each shaft to the oil (half the shafts' path each) and to the housing (through its
+    bearings, :attr:`GearboxDescription.shaft_housing_conductances`), the oil to the housing."""
+    matrix = np.zeros((len(NODES), len(NODES)))
+    pinion_housing, wheel_housing = description.shaft_housing_conductances
+    shaft_oil = 0.5 * description.shaft_oil_conductance
+    links = ((PINION, OIL, description.gear_oil_coefficient * description.gear_surface(False)),
+             (WHEEL, OIL, description.gear_oil_coefficient * description.gear_surface(True)),
+             (PINION, PINION_SHAFT, description.gear_body_conductance(False)),
+             (WHEEL, WHEEL_SHAFT, description.gear_body_conductance(True)),
+             (PINION_SHAFT, OIL, shaft_oil), (WHEEL_SHAFT, OIL, shaft_oil),
+             (PINION_SHAFT, HOUSING, pinion_housing), (WHEEL_SHAFT, HOUSING, wheel_housing),
+             (OIL, HOUSING, description.oil_housing_coefficient * description.housing.oil_wetted_area))
     for first, second, value in links:
         matrix[first, second] = matrix[second, first] = value
     return matrix

@@ -8,8 +8,9 @@ node's temperature, radial load a fraction of the tooth normal force (for a driv
 newton of tooth load, :mod:`~thermogear.gearbox.bearing_entries`); lip seals; churning
 of the dipped gears at the oil temperature (:mod:`~thermogear.gearbox.churning`); the impulse loss of an
 into-mesh oil jet where the description has one (injection lubrication, :mod:`~thermogear.gearbox.injection`).
-Heat goes to the nodes as: tooth friction to pinion and wheel by the description's share, bearings and seals to
-the shaft node, churning and the jet's impulse loss to the oil.
+Heat goes to the nodes as: tooth friction to pinion and wheel by the description's share (Blok's partition over
+the path unless given), each bearing and seal to the node of the shaft it sits on (each bearing at the oil viscosity
+of its own shaft's temperature), churning and the jet's impulse loss to the oil.
 """
 
 from __future__ import annotations
@@ -29,7 +30,10 @@ from thermogear.gearbox.description import GearboxDescription, GearboxOperatingP
 from thermogear.gearbox.injection import jet_impulse_power, jet_validity
 from thermogear.gearbox.mesh_loss import mesh_power_loss, pair_gear_loss_factor
 
-NODES = ("pinion", "wheel", "shafts", "oil", "housing")
+#: The nodes of the gearbox network, in this order: the two gear bodies, the two shafts with their bearings (each
+#: shaft its own node), the oil sump and the housing.
+NODES = ("pinion", "wheel", "pinion_shaft", "wheel_shaft", "oil", "housing")
+PINION, WHEEL, PINION_SHAFT, WHEEL_SHAFT, OIL, HOUSING = range(len(NODES))
 REFERENCE_VISCOSITY = 0.01  # [Pa·s], where the friction coefficient is evaluated once (any value would do)
 
 
@@ -45,6 +49,7 @@ class PowerLosses:
     input_power: float
     pinion_heat_share: float
     injection: float = 0.0  # impulse loss of the oil jet (injection lubrication) [W]
+    wheel_shaft_heat: float = 0.0  # the part of bearings + seals on the wheel shaft [W] (the rest on the pinion's)
 
     @property
     def total(self) -> float:
@@ -58,9 +63,10 @@ class PowerLosses:
 
     @property
     def node_sources(self) -> np.ndarray:
-        """Heat into pinion, wheel, shafts, oil, housing [W]."""
+        """Heat into the nodes of :data:`NODES` [W]: pinion, wheel, pinion shaft, wheel shaft, oil, housing."""
         share = self.pinion_heat_share
-        return np.array([share * self.mesh, (1.0 - share) * self.mesh, self.bearings + self.seals,
+        return np.array([share * self.mesh, (1.0 - share) * self.mesh,
+                         self.bearings + self.seals - self.wheel_shaft_heat, self.wheel_shaft_heat,
                          self.churning + self.injection, 0.0])
 
 
@@ -90,6 +96,7 @@ class LossModel:
                            pair_gear_loss_factor(pair) if loss_factor is None else float(loss_factor))
         object.__setattr__(self, "_dipped", (_dipped(self.description, False), _dipped(self.description, True)))
         object.__setattr__(self, "_reference_friction", self._friction_at_viscosity(REFERENCE_VISCOSITY))
+        object.__setattr__(self, "_heat_share", self.description.heat_share)
         for gear in self._dipped:
             message = None if gear is None else churning_validity(gear)
             if message:
@@ -136,19 +143,23 @@ class LossModel:
         return self._reference_friction * (viscosity / REFERENCE_VISCOSITY)**exponent
 
     def at(self, temperatures_c) -> PowerLosses:
-        """Losses with the pinion, wheel, shafts, oil, housing at ``temperatures_c`` [°C]."""
+        """Losses with the nodes of :data:`NODES` at ``temperatures_c`` [°C]."""
         temperatures = np.asarray(temperatures_c, dtype=float)
-        shaft_c, oil_c = float(temperatures[2]), float(temperatures[3])
+        oil_c = float(temperatures[OIL])
         description, operating = self.description, self.operating
         friction = self.friction_coefficient(oil_c)
         mesh = mesh_power_loss(operating.input_power, friction, self.loss_factor)
         pinion_rpm = operating.speed_rpm
         wheel_rpm = pinion_rpm / description.gear_pair.gear_ratio
-        bearing_viscosity = float(description.lubricant.kinematic_viscosity(shaft_c, warn=False)) * 1e6
-        bearings = sum(mounted_bearing_power(mounted, pinion_rpm, wheel_rpm, bearing_viscosity, self.normal_force)
-                       for mounted in description.bearings)
-        seals = sum(seal_power_loss(seal.shaft_diameter_mm, wheel_rpm if seal.on_wheel_shaft else pinion_rpm)
-                    for seal in description.seals)
+        viscosity = {side: float(description.lubricant.kinematic_viscosity(
+            float(temperatures[WHEEL_SHAFT if side else PINION_SHAFT]), warn=False)) * 1e6 for side in (False, True)}
+        bearing_heat = [mounted_bearing_power(mounted, pinion_rpm, wheel_rpm, viscosity[mounted.on_wheel_shaft],
+                                              self.normal_force) for mounted in description.bearings]
+        seal_heat = [seal_power_loss(seal.shaft_diameter_mm, wheel_rpm if seal.on_wheel_shaft else pinion_rpm)
+                     for seal in description.seals]
+        bearings, seals = sum(bearing_heat), sum(seal_heat)
+        wheel_side = (sum(heat for heat, mounted in zip(bearing_heat, description.bearings) if mounted.on_wheel_shaft)
+                      + sum(heat for heat, seal in zip(seal_heat, description.seals) if seal.on_wheel_shaft))
         oil_viscosity = float(description.lubricant.kinematic_viscosity(oil_c, warn=False))
         density = float(description.lubricant.density(oil_c))
         churning = 0.0
@@ -158,4 +169,4 @@ class LossModel:
         jet = description.oil_jet
         injection = 0.0 if jet is None else jet_impulse_power(jet, density, self.pitch_line_speed)
         return PowerLosses(mesh, float(bearings), float(seals), churning, friction, operating.input_power,
-                           description.pinion_heat_share, injection)
+                           self._heat_share, injection, float(wheel_side))

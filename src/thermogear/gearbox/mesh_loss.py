@@ -118,6 +118,26 @@ def blok_heat_partition(effusivities: tuple[float, float], rolling_speeds) -> np
     return np.where(total > 0.0, first / np.where(total > 0.0, total, 1.0), 0.5)
 
 
+def rigid_pinion_heat_share(pair: GearPair, points_per_stretch: int = 4001) -> float:
+    """β1 [–]: the pinion's share of the mesh's friction heat, Blok's partition (:func:`blok_heat_partition`, one
+    material: the effusivities cancel) averaged over one pair's passage A → E with the friction power of rigid load
+    sharing, β1 = ∫F_n·v_g·β(s) ds / ∫F_n·v_g ds (F_n from :func:`rigid_load_share`, v_g = |v1 − v2|, μ constant
+    as in H_V). Near A the pinion's root rolls slowly against the wheel's tip (β < 1/2), near E the reverse; both
+    rolling speeds scale with the pinion speed, so β1 is a property of the geometry. Trapezoidal rule on
+    ``points_per_stretch`` points of each smooth stretch A–B, B–C, C–D, D–E (exact to about 1e-9)."""
+    points = pair.path_points
+    heat = pinion = 0.0
+    for start, end in (("A", "B"), ("B", "C"), ("C", "D"), ("D", "E")):
+        if not points[end] > points[start]:
+            continue
+        roll = np.linspace(points[start], points[end], points_per_stretch)
+        speeds = pair.rolling_speeds(roll, 1.0)  # any speed: only their ratio matters
+        power = rigid_load_share(pair, 0.5 * (roll[0] + roll[-1])) * np.abs(np.asarray(speeds[0] - speeds[1]))
+        heat += float(np.trapezoid(power, roll))
+        pinion += float(np.trapezoid(power * blok_heat_partition((1.0, 1.0), speeds), roll))
+    return pinion / heat
+
+
 @dataclass(frozen=True)
 class MeshFrictionLoss:
     """Tooth friction loss of one operating point from a mesh model's load sharing and μ."""

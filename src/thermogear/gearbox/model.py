@@ -1,8 +1,8 @@
 """The gearbox thermal model: losses and conductances following the node temperatures, steady state and warm-up.
 
-Nodes: pinion, wheel, shafts with bearings, oil, housing; the ambient air is the boundary
-(:mod:`~thermogear.gearbox.network`). Losses (:mod:`~thermogear.gearbox.losses`) follow the oil and shaft
-temperatures through the viscosity (tooth friction, bearings, churning); the housing's outer conductance follows
+Nodes (:data:`~thermogear.gearbox.losses.NODES`): pinion, wheel, the pinion's and the wheel's shaft each with its
+bearings, oil, housing; the ambient air is the boundary (:mod:`~thermogear.gearbox.network`). Losses
+(:mod:`~thermogear.gearbox.losses`) follow the oil and shaft temperatures through the viscosity (tooth friction, bearings, churning); the housing's outer conductance follows
 the housing and air temperatures (natural convection, radiation). :meth:`GearboxThermalModel.steady_state` gives
 the predicted gear and oil temperatures of an operating point — the stable steady state, with its plausibility
 flags (:mod:`thermogear.temperature_limits`), or :class:`ThermalRunawayError` where the stable branch followed in
@@ -22,7 +22,8 @@ from thermogear.errors import CaseError, ExtrapolationWarning
 from thermogear.gearbox.backlash import backlash_allowance, backlash_at_temperatures
 from thermogear.gearbox.description import GearboxDescription, GearboxOperatingPoint
 from thermogear.gearbox.heat_paths import housing_outer_conductance, internal_conductances
-from thermogear.gearbox.losses import NODES, LossModel, PowerLosses
+from thermogear.gearbox.losses import (HOUSING, NODES, OIL, PINION, PINION_SHAFT, WHEEL, WHEEL_SHAFT, LossModel,
+                                       PowerLosses)
 from thermogear.gearbox.network import (NoSteadyStateError, ThermalNetwork, continue_steady_states,
                                         integrate_transient, solve_steady_state, stability_eigenvalues,
                                         steady_state_at)
@@ -47,33 +48,44 @@ class ThermalRunawayError(NoSteadyStateError):
         self.speed_rpm = speed_rpm
 
 
+def _oil_wetted_range(temperatures) -> tuple[float, float]:
+    """(lowest, highest) temperature [°C] at which the oil's viscosity is evaluated: the two shafts' bearings and
+    the sump (over time where ``temperatures`` is (nodes, m))."""
+    values = np.asarray(temperatures, dtype=float)[[PINION_SHAFT, WHEEL_SHAFT, OIL]]
+    return float(np.min(values)), float(np.max(values))
+
+
 @dataclass(frozen=True)
 class GearboxState:
     """Temperatures of the nodes [°C] at one instant with the losses and backlash there."""
 
-    temperatures_c: np.ndarray  # pinion, wheel, shafts, oil, housing
+    temperatures_c: np.ndarray  # by NODES: pinion, wheel, pinion shaft, wheel shaft, oil, housing
     losses: PowerLosses
     backlash: float  # normal backlash [m]
 
     @property
     def pinion_c(self) -> float:
-        return float(self.temperatures_c[0])
+        return float(self.temperatures_c[PINION])
 
     @property
     def wheel_c(self) -> float:
-        return float(self.temperatures_c[1])
+        return float(self.temperatures_c[WHEEL])
 
     @property
-    def shafts_c(self) -> float:
-        return float(self.temperatures_c[2])
+    def pinion_shaft_c(self) -> float:
+        return float(self.temperatures_c[PINION_SHAFT])
+
+    @property
+    def wheel_shaft_c(self) -> float:
+        return float(self.temperatures_c[WHEEL_SHAFT])
 
     @property
     def oil_c(self) -> float:
-        return float(self.temperatures_c[3])
+        return float(self.temperatures_c[OIL])
 
     @property
     def housing_c(self) -> float:
-        return float(self.temperatures_c[4])
+        return float(self.temperatures_c[HOUSING])
 
 
 @dataclass(frozen=True)
@@ -122,7 +134,8 @@ class GearboxSteadyState(GearboxState):
 
 @dataclass(frozen=True)
 class WarmUpHistory:
-    """Temperatures (5, m) [°C], losses by source (m,) [W], backlash (m,) [m] against times (m,) [s]."""
+    """Temperatures (6, m) [°C] by :data:`NODES`, losses by source (m,) [W], backlash (m,) [m] against times (m,)
+    [s]."""
 
     times: np.ndarray
     temperatures_c: np.ndarray
@@ -150,7 +163,7 @@ class WarmUpHistory:
         return self.mesh_loss + self.bearing_loss + self.seal_loss + self.churning_loss + self.jet_loss
 
     def node(self, name: str) -> np.ndarray:
-        """Temperature history of one node [°C] (``"pinion"``, ``"wheel"``, ``"shafts"``, ``"oil"``, ``"housing"``)."""
+        """Temperature history of one node [°C] (a name of :data:`NODES`)."""
         if name not in NODES:
             raise CaseError("node", name, f"one of {', '.join(NODES)}", "the nodes of the gearbox network")
         return self.temperatures_c[NODES.index(name)]
@@ -208,9 +221,9 @@ class GearboxThermalModel:
         ambient = float(operating.ambient_c)
 
         def conductances(temperatures):
-            boundary = np.zeros(5)
-            boundary[4] = housing_outer_conductance(housing, float(np.clip(temperatures[4], *EVALUATION_RANGE_C)),
-                                                    ambient)
+            boundary = np.zeros(len(NODES))
+            boundary[HOUSING] = housing_outer_conductance(
+                housing, float(np.clip(temperatures[HOUSING], *EVALUATION_RANGE_C)), ambient)
             return internal, boundary
 
         conditioning = self.description.conditioning
@@ -220,7 +233,7 @@ class GearboxThermalModel:
         else:
             def sources(temperatures, time):
                 heat = loss_model.at(np.clip(temperatures, *EVALUATION_RANGE_C)).node_sources
-                heat[3] += conditioning.power(float(temperatures[3]))
+                heat[OIL] += conditioning.power(float(temperatures[OIL]))
                 return heat
 
         return ThermalNetwork(np.array(self.description.capacities), conductances, sources, lambda time: ambient)
@@ -229,8 +242,8 @@ class GearboxThermalModel:
         """Normal backlash [m] with the pinion, wheel and housing at the node temperatures."""
         description = self.description
         return backlash_at_temperatures(description.gear_pair, self.allowance, description.gear_expansion,
-                                        description.housing.expansion, temperatures_c[0], temperatures_c[1],
-                                        temperatures_c[4], description.assembly_c)
+                                        description.housing.expansion, temperatures_c[PINION],
+                                        temperatures_c[WHEEL], temperatures_c[HOUSING], description.assembly_c)
 
     def _warn_viscosity_range(self, low_c: float, high_c: float) -> None:
         fitted = self.description.lubricant.fitted_range_c
@@ -243,8 +256,8 @@ class GearboxThermalModel:
         """Plausibility flags of a state (:func:`thermogear.temperature_limits.state_flags`)."""
         values = np.asarray(temperatures_c, dtype=float)
         oil = self.description.lubricant
-        return state_flags(float(max(values[0], values[1])), float(values[3]), oil.base_oil, oil.fitted_range_c,
-                           (float(np.min(values[2:4])), float(np.max(values[2:4]))))
+        return state_flags(float(max(values[PINION], values[WHEEL])), float(values[OIL]), oil.base_oil,
+                           oil.fitted_range_c, _oil_wetted_range(values))
 
     def steady_state(self, operating: GearboxOperatingPoint) -> GearboxSteadyState:
         """The stable steady state of an operating point, with its plausibility flags (a hot stable state is a
@@ -253,7 +266,7 @@ class GearboxThermalModel:
         branch is followed in torque from zero (:func:`~thermogear.gearbox.network.continue_steady_states`), and
         either reaches the torque asked for or ends at a fold, which the error names."""
         network = self.network(operating)
-        ambient = np.full(5, float(operating.ambient_c))
+        ambient = np.full(len(NODES), float(operating.ambient_c))
         steady, eigenvalue = None, float("nan")
         try:
             steady = solve_steady_state(network, ambient, temperature_limit=HOTTEST_STEADY_C)
@@ -265,7 +278,7 @@ class GearboxThermalModel:
         if steady is None:
             steady, eigenvalue = self._continued_steady_state(operating, network)
         temperatures = steady.temperatures
-        self._warn_viscosity_range(float(np.min(temperatures[2:4])), float(np.max(temperatures[2:4])))
+        self._warn_viscosity_range(*_oil_wetted_range(temperatures))
         return GearboxSteadyState(temperatures, self.losses(operating).at(temperatures), self.backlash(temperatures),
                                   steady.heat_out, steady.energy_residual, steady.time_constants, eigenvalue,
                                   self.flags(temperatures))
@@ -276,7 +289,7 @@ class GearboxThermalModel:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", ExtrapolationWarning)  # raised again for the result itself
             fold = continue_steady_states(lambda torque: self.network(replace(operating, torque=torque)), 0.0,
-                                          operating.torque, np.full(5, float(operating.ambient_c)),
+                                          operating.torque, np.full(len(NODES), float(operating.ambient_c)),
                                           bounds=(EVALUATION_RANGE_C[0], HOTTEST_STEADY_C))
         if fold.reached:
             return steady_state_at(network, fold.temperatures), fold.largest_eigenvalue
@@ -290,25 +303,27 @@ class GearboxThermalModel:
         else:
             message = (f"no stable steady state at {operating.speed_rpm:g} rpm, {operating.torque:g} N·m: the stable "
                        f"branch of steady states, followed in torque from 0, {where} near {fold.parameter:.4g} N·m "
-                       f"(pinion {fold.temperatures[0]:.1f} °C, oil {fold.temperatures[3]:.1f} °C there); above it "
+                       f"(pinion {fold.temperatures[PINION]:.1f} °C, oil {fold.temperatures[OIL]:.1f} °C there); "
+                       "above it "
                        "the losses grow with temperature faster than the cooling: thermal runaway")
         raise ThermalRunawayError(message, float(fold.parameter), fold.temperatures, float(operating.speed_rpm))
 
     def warm_up(self, operating: GearboxOperatingPoint, duration: float, points: int = 121,
                 initial_c=None, method: str = "Radau") -> WarmUpHistory:
         """Temperatures, losses and backlash over ``duration`` [s] at ``points`` evenly spaced times, from the
-        ambient temperature (default) or ``initial_c`` (one value or five, [°C], down to −40 °C)."""
+        ambient temperature (default) or ``initial_c`` (one value or one per node of :data:`NODES`, [°C], down
+        to −40 °C)."""
         if not duration > 0.0:
             raise CaseError("warm_up.duration_s", duration, "> 0 s", "a warm-up takes time")
-        start = np.full(5, float(operating.ambient_c)) if initial_c is None else np.broadcast_to(
-            np.asarray(initial_c, dtype=float), (5,)).copy()
+        start = np.full(len(NODES), float(operating.ambient_c)) if initial_c is None else np.broadcast_to(
+            np.asarray(initial_c, dtype=float), (len(NODES),)).copy()
         if not np.all(np.isfinite(start)) or np.min(start) < COLDEST_START_C:
             raise CaseError("warm_up.initial_c", start.tolist(), f">= {COLDEST_START_C:g} °C",
                             "the coldest start the model supports")
         times = np.linspace(0.0, float(duration), int(points))
         transient = integrate_transient(self.network(operating), start, times, method=method)
         temperatures = transient.temperatures
-        self._warn_viscosity_range(float(np.min(temperatures[2:4])), float(np.max(temperatures[2:4])))
+        self._warn_viscosity_range(*_oil_wetted_range(temperatures))
         loss_model = self.losses(operating)
         conditioning = self.description.conditioning
         states = [loss_model.at(temperatures[:, index]) for index in range(times.size)]
@@ -319,4 +334,4 @@ class GearboxThermalModel:
                              transient.energy_residual,
                              None if self.description.oil_jet is None else np.array([s.injection for s in states]),
                              None if conditioning is None else np.array([conditioning.power(float(value))
-                                                                         for value in temperatures[3]]))
+                                                                         for value in temperatures[OIL]]))

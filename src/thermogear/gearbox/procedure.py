@@ -18,6 +18,7 @@ import numpy as np
 
 from thermogear.errors import CaseError
 from thermogear.gearbox.description import GearboxOperatingPoint, OilConditioning
+from thermogear.gearbox.losses import NODES, OIL, PINION
 
 #: Duration of an FZG load stage [s] (ISO 14635-1, ASTM D5182 §10.2: 15 min).
 FZG_STAGE_DURATION_S = 900.0
@@ -27,8 +28,8 @@ FZG_START_C = 90.0
 
 @dataclass(frozen=True)
 class StageResult:
-    """One load stage: its name, torque [N·m], the temperatures (5,) [°C] at its end (pinion, wheel, shafts, oil,
-    housing), the losses [W] and the conditioning power [W] there, the plausibility flags at the end and the
+    """One load stage: its name, torque [N·m], the temperatures [°C] at its end (one per node of
+    :data:`~thermogear.gearbox.losses.NODES`), the losses [W] and the conditioning power [W] there, the plausibility flags at the end and the
     energy residual of the integration (relative)."""
 
     name: str
@@ -41,11 +42,15 @@ class StageResult:
 
     @property
     def oil_c(self) -> float:
-        return float(self.end_c[3])
+        return float(self.end_c[OIL])
 
     @property
     def pinion_c(self) -> float:
-        return float(self.end_c[0])
+        return float(self.end_c[PINION])
+
+    def node_c(self, name: str) -> float:
+        """The end temperature of one node [°C] (a name of :data:`~thermogear.gearbox.losses.NODES`)."""
+        return float(self.end_c[NODES.index(name)])
 
 
 def run_load_stages(model, speed_rpm: float, stages: dict[str, float], ambient_c: float = 20.0,

@@ -28,7 +28,7 @@ MOST_POINTS = 10_000
 @dataclass(frozen=True)
 class SteadySweep:
     """Speeds (m,) [rpm] × torques (k,) [N·m]; masked arrays (m, k): losses by source [W], efficiency [–],
-    normal backlash [m], and temperatures (5, m, k) [°C] of pinion, wheel, shafts, oil, housing. Masked where the
+    normal backlash [m], and temperatures (nodes, m, k) [°C] by :data:`NODES`. Masked where the
     network has no steady state (``runaway``)."""
 
     speeds_rpm: np.ndarray
@@ -101,13 +101,13 @@ def steady_point(model, speed_rpm: float, torque: float, ambient_c: float):
         return error
 
 
-#: The steady outputs of a grid point besides the five node temperatures, in :func:`solve_grid` order.
+#: The steady outputs of a grid point besides the node temperatures, in :func:`solve_grid` order.
 OUTPUTS = ("mesh", "bearings", "seals", "churning", "efficiency", "backlash", "injection")
 
 
 def solve_grid(model, speeds_rpm, torques, ambient_c: float) -> dict[str, np.ndarray]:
     """The steady states of ``model`` at every speed [rpm] × torque [N·m] (a block of a grid), in a loop: arrays
-    ``temperatures`` (5, m, k) [°C] and one (m, k) per name of :data:`OUTPUTS`, NaN where the network has no stable
+    ``temperatures`` (nodes, m, k) [°C] and one (m, k) per name of :data:`OUTPUTS`, NaN where the network has no stable
     steady state, ``runaway`` (m, k) bool, ``fold`` (m, k) the torque [N·m] where the stable branch ended (NaN
     elsewhere) and ``flag_<name>`` (m, k) bool per plausibility flag (:data:`~thermogear.temperature_limits.
     FLAG_MEANINGS`). Each point is a pure function of the model and the point, so a block gives
@@ -116,7 +116,7 @@ def solve_grid(model, speeds_rpm, torques, ambient_c: float) -> dict[str, np.nda
     speeds = np.atleast_1d(np.asarray(speeds_rpm, dtype=float))
     loads = np.atleast_1d(np.asarray(torques, dtype=float))
     shape = (speeds.size, loads.size)
-    arrays = {"temperatures": np.full((5,) + shape, np.nan), **{name: np.full(shape, np.nan) for name in OUTPUTS},
+    arrays = {"temperatures": np.full((len(NODES),) + shape, np.nan), **{name: np.full(shape, np.nan) for name in OUTPUTS},
               "runaway": np.zeros(shape, dtype=bool), "fold": np.full(shape, np.nan),
               **{f"flag_{flag}": np.zeros(shape, dtype=bool) for flag in FLAG_MEANINGS}}
     with warnings.catch_warnings():
@@ -141,10 +141,11 @@ def solve_grid(model, speeds_rpm, torques, ambient_c: float) -> dict[str, np.nda
 
 
 def warn_oil_range(model, temperatures: np.ndarray) -> None:
-    """Once for a whole grid: the oil and housing temperatures [°C] (``temperatures`` (5, …), NaN where none) that
-    leave the range the viscosity fit was made over."""
+    """Once for a whole grid: the temperatures [°C] at which the oil's viscosity is evaluated (the two shafts'
+    bearings and the sump; ``temperatures`` (nodes, …), NaN where none) that leave the range the viscosity fit was
+    made over."""
     fitted = model.description.lubricant.fitted_range_c
-    oil = np.asarray(temperatures)[2:4]
+    oil = np.asarray(temperatures)[[NODES.index(name) for name in ("pinion_shaft", "wheel_shaft", "oil")]]
     if not np.isfinite(oil).any():
         return
     low, high = float(np.nanmin(oil)), float(np.nanmax(oil))

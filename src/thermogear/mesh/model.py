@@ -19,10 +19,11 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from thermogear.damping import (FRICTION_DAMPING_LOAD_EXPONENT, FRICTION_DAMPING_SPEED_EXPONENT, PairDamping,
+from thermogear.damping import (PairDamping, friction_damping_exponents,
                                 friction_pair_damping, mesh_circular_frequency, mesh_damping)
 from thermogear.composition import X_TE_PROVIDERS
 from thermogear.errors import CaseError
+from thermogear.friction_models import FrictionLaw, friction_law
 from thermogear.lubricant import Lubricant, lubricant_from_case
 from thermogear.mesh.helical_model import helical_model_state
 from thermogear.mesh.model_names import MODELS, Model
@@ -139,8 +140,13 @@ class MeshModel:
         table = mesh_table_of(self.case)
         if table is not None and table.damping is not None:  # the table's c(τ) holds at every speed and load
             return 0.0, 0.0
-        load_exponent = None if self.load_shares_depend_on_load else FRICTION_DAMPING_LOAD_EXPONENT
-        return FRICTION_DAMPING_SPEED_EXPONENT, load_exponent
+        speed_exponent, load_exponent = friction_damping_exponents(self.damping_friction_law)
+        return speed_exponent, None if self.load_shares_depend_on_load else load_exponent
+
+    @property
+    def damping_friction_law(self) -> FrictionLaw:
+        """The mean friction law of the friction damping (``[damping] friction_model``, default the paper's)."""
+        return friction_law(self.case.damping.friction_model, key="damping.friction_model")
 
     @property
     def damping_rule(self) -> str:
@@ -210,12 +216,13 @@ class MeshModel:
         temperature = self.friction_temperature_c(self.flank_gamma(roll))
         viscosity = np.asarray(self.lubricant.dynamic_viscosity(temperature), dtype=float)
         rolling_1, rolling_2 = pair.rolling_speeds(roll, speed_rpm)
-        factor = case.damping.lubricant_factor
-        factor = self.lubricant.lubricant_factor if factor is None else factor
+        law = self.damping_friction_law
+        factor = law.lubricant_factor(self.lubricant.base_oil, case.damping.lubricant_factor,
+                                      key="damping.lubricant_factor")
         friction, damping, unit_load = friction_pair_damping(
             stiffness, share, normal_load / pair.face_width, case.roughness_ra, viscosity,
             np.asarray(rolling_1 + rolling_2, dtype=float), pair.relative_radius_of_curvature(roll), factor,
-            mesh_circular_frequency(pair.pinion.teeth, speed_rpm))
+            mesh_circular_frequency(pair.pinion.teeth, speed_rpm), law, case.damping.friction_coefficient)
         return PairDamping(model=self.model, roll=roll, gamma=gamma, friction_coefficient=friction,
                            viscosity=viscosity, damping=damping, temperature_c=temperature, pair_stiffness=stiffness,
                            load_share=share, unit_load=unit_load)
@@ -326,4 +333,14 @@ class MeshModel:
         return math.sqrt(state.mean_mesh_stiffness / state.mass) / (2.0 * math.pi)
 
 
-__all__ = ["MODELS", "MeshModel", "MeshState"]
+def check_damping_friction_law(case: "Case") -> None:
+    """Load-time check of ``[damping] friction_model``: the law has a lubricant factor X_L for the case's base oil
+    (or the case gives ``damping.lubricant_factor``); CaseError naming the key otherwise.
+
+    Keeps the Case: it is a load-time check (``check(case)``, :data:`thermogear.composition.CASE_CHECKS`)."""
+    law = friction_law(case.damping.friction_model, key="damping.friction_model")
+    law.lubricant_factor(lubricant_from_case(case).base_oil, case.damping.lubricant_factor,
+                         key="damping.lubricant_factor")
+
+
+__all__ = ["MODELS", "MeshModel", "MeshState", "check_damping_friction_law"]

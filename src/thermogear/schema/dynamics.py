@@ -9,6 +9,7 @@ from pydantic import Field, model_validator
 from thermogear.errors import CaseError
 
 from thermogear.schema.base import Section
+from thermogear.schema.friction_inputs import check_friction_inputs
 
 
 #: Most mesh periods a transient run integrates [–]. The history of every sample is kept (about 1.1 MB per period
@@ -34,12 +35,26 @@ class DampingSection(Section):
     ``stiffness``: the pair stiffness k in Eq. 28 (and in the load share of the friction formula) for the
     thermal model: ``"elastic"`` k_e (the paper: c_r differs from c_e by the viscosity only) or ``"thermal"``
     k_T. The elastic model always uses k_e.
+    ``friction_model``: the mean friction law μ of Eq. 28, from the registry of the loss model
+    (:data:`thermogear.friction_models.FRICTION_MODELS`), applied locally along the path like the paper's:
+    ``"paper"`` (Luo & Li Eq. 27, the default: the reproduction keeps every number), ``"schlenk"``,
+    ``"iso_tr_13989_2"`` or ``"constant"`` (then ``friction_coefficient``).
     """
 
     rule: Literal["paper", "parallel"] = "parallel"
     lubricant_factor: Annotated[float, Field(gt=0.0, le=3.0, description="X_L; default from the base oil")] | None = None
     stiffness: Literal["elastic", "thermal"] = Field(
         "elastic", description="pair stiffness of Eq. 28 in the thermal model: k_e (paper) or k_T")
+    friction_model: Literal["paper", "schlenk", "iso_tr_13989_2", "constant"] = Field(
+        "paper", description="mean friction law of the friction damping (Eq. 28): paper (Luo & Li Eq. 27, the "
+                             "default), schlenk (FZG power-loss work), iso_tr_13989_2, constant")
+    friction_coefficient: Annotated[float, Field(gt=0.0, le=0.3, allow_inf_nan=False)] | None = Field(
+        None, description="the friction coefficient [–] of friction_model = 'constant' (only there)")
+
+    @model_validator(mode="after")
+    def _friction_inputs(self):
+        check_friction_inputs("damping", self.friction_model, self.friction_coefficient, self.lubricant_factor)
+        return self
 
 
 class DynamicsSection(Section):

@@ -41,6 +41,7 @@ from pydantic import Field, model_validator
 
 from thermogear.errors import CaseError
 from thermogear.schema.base import Section
+from thermogear.schema.friction_inputs import check_friction_inputs
 from thermogear.schema.bearing_loss import SkfBearingData
 
 #: Ambient air temperatures the correlations (air properties, radiation) are used for [°C].
@@ -176,12 +177,14 @@ class GearboxInternalSection(Section):
         200.0, description="gear surface to oil [W/(m² K)]")
     oil_housing_w_per_m2_k: Annotated[float, Field(ge=0.0, le=1e5, allow_inf_nan=False)] = Field(
         150.0, description="oil to the wetted inner wall [W/(m² K)]")
-    gear_shaft_w_per_k: Annotated[float, Field(ge=0.0, le=1e5, allow_inf_nan=False)] = Field(
-        3.0, description="each gear to the shafts-and-bearings node [W/K]")
+    gear_shaft_w_per_k: Annotated[float, Field(ge=0.0, le=1e5, allow_inf_nan=False)] | None = Field(
+        None, description="each gear to its own shaft's node [W/K]; default conduction through the gear body from "
+                          "its root circle to its bore, 2π k b/ln(r_f/r_bore)")
     shaft_oil_w_per_k: Annotated[float, Field(ge=0.0, le=1e5, allow_inf_nan=False)] = Field(
-        4.0, description="shafts and bearings to the oil [W/K]")
+        4.0, description="both shafts and their bearings to the oil [W/K], half each")
     shaft_housing_w_per_k: Annotated[float, Field(ge=0.0, le=1e5, allow_inf_nan=False)] = Field(
-        8.0, description="shafts to the housing through the bearing seats [W/K]")
+        8.0, description="both shafts to the housing through the bearing seats [W/K], shared in proportion to the "
+                         "bearings on each shaft")
 
 
 class GearboxConditioningSection(Section):
@@ -227,13 +230,15 @@ class GearboxSection(Section):
                                           "lip seals)")
     internal: GearboxInternalSection = GearboxInternalSection()
     shaft_mass_kg: Annotated[float, Field(gt=0.0, le=1e5, allow_inf_nan=False)] = Field(
-        4.0, description="mass of the shafts with their bearings [kg]")
-    pinion_heat_share: Annotated[float, Field(ge=0.0, le=1.0, allow_inf_nan=False)] = Field(
-        0.5, description="pinion's share of the tooth friction heat [–]")
-    friction_model: Literal["schlenk", "paper", "iso_tr_13989_1", "constant"] = Field(
+        4.0, description="mass of both shafts with their bearings [kg], half each")
+    pinion_heat_share: Annotated[float, Field(ge=0.0, le=1.0, allow_inf_nan=False)] | None = Field(
+        None, description="pinion's share of the tooth friction heat [–]; default Blok's partition (equal flash "
+                          "temperatures) averaged over the path with the friction power")
+    friction_model: Literal["schlenk", "paper", "iso_tr_13989_2", "constant"] = Field(
         "schlenk", description="mean friction law of the tooth loss: schlenk (Schlenk 1994 with the X_L of "
                                "Fernandes et al. 2015: FZG power-loss work, the default), paper (DIN 3990-4 as "
-                               "Luo & Li Eq. 27, the paper's damping law), iso_tr_13989_1, constant")
+                               "Luo & Li Eq. 27, the paper's damping law), iso_tr_13989_2 (the integral-temperature "
+                               "method's), constant")
     friction_coefficient: Annotated[float, Field(gt=0.0, le=0.3, allow_inf_nan=False)] | None = Field(
         None, description="the mean friction coefficient [–] of friction_model = 'constant' (only there)")
     lubricant_factor: Annotated[float, Field(gt=0.0, le=3.0, allow_inf_nan=False)] | None = Field(
@@ -243,16 +248,5 @@ class GearboxSection(Section):
 
     @model_validator(mode="after")
     def _friction_inputs(self):
-        if self.friction_model == "constant" and self.friction_coefficient is None:
-            raise CaseError("gearbox.friction_coefficient", None, "a value in (0, 0.3]",
-                            "friction_model = 'constant' needs the coefficient")
-        if self.friction_model != "constant" and self.friction_coefficient is not None:
-            raise CaseError("gearbox.friction_coefficient", self.friction_coefficient,
-                            "only with friction_model = 'constant'",
-                            f"friction_model = {self.friction_model!r} computes the coefficient: the key would "
-                            "have no effect")
-        if self.friction_model == "constant" and self.lubricant_factor is not None:
-            raise CaseError("gearbox.lubricant_factor", self.lubricant_factor, "absent with friction_model = "
-                            "'constant'", "a constant coefficient has no lubricant factor: the key would have no "
-                            "effect")
+        check_friction_inputs("gearbox", self.friction_model, self.friction_coefficient, self.lubricant_factor)
         return self

@@ -140,7 +140,7 @@ def run_gearbox_grid(model, speeds_rpm, torques, ambient_c: float, scheduler: st
         store = TaskStore.open(out, layout, resume=resume, overwrite=overwrite)
     done = store.done_tasks() if store is not None else set()
     pending = [number for number in range(len(blocks)) if number not in done]
-    arrays = {"temperatures": np.full((5, speeds.size, loads.size), np.nan),
+    arrays = {"temperatures": np.full((len(NODES), speeds.size, loads.size), np.nan),
               **{name: np.full((speeds.size, loads.size), np.nan) for name in OUTPUTS},
               "runaway": np.zeros((speeds.size, loads.size), dtype=bool),
               "fold": np.full((speeds.size, loads.size), np.nan),
