@@ -16,18 +16,28 @@ CASE = Path(__file__).resolve().parents[1] / "data" / "gearbox" / "fzg_gearbox.t
 pytestmark = pytest.mark.filterwarnings("ignore")
 
 
-def test_each_point_is_the_warmup_of_its_case(tmp_path):
-    import thermogear
+def test_each_point_is_the_warmup_of_its_case_and_progress_counts_warmups(tmp_path):
+    from contextlib import contextmanager
+
     from thermogear.case import load_case
     from thermogear.experiment.gearbox_warmup import gearbox_warmup
-    from thermogear.sweep.warmup_study import WarmupSettings
+    from thermogear.sweep import Study
+    from thermogear.sweep.warmup_study import WarmupSettings, run_warmup_study
+
+    calls: list = []
+
+    @contextmanager
+    def progress(total: int, completed: int):
+        calls.append(("start", total, completed))
+        yield lambda points=1: calls.append(("advance", points))
 
     settings = WarmupSettings(600.0, 300.0, start_c=25.0)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        data = thermogear.sweep(CASE, vary={"torque_nm": [60, 160]}, out=tmp_path / "w.zarr", kind="warmup",
-                                warmup=settings, scheduler="serial")
+        study = Study.define(load_case(CASE), {"torque_nm": [60, 160]}, model="thermal", chunk_points=1)
+        data = run_warmup_study(study, tmp_path / "w.zarr", settings, "serial", progress=progress)
         alone = gearbox_warmup(load_case(CASE), duration_s=600.0, interval_s=300.0, start_c=25.0, torque=160.0)
+    assert calls == [("start", 2, 0), ("advance", 1), ("advance", 1)]  # one per warm-up
     point = data.sel(torque_nm=160)
     assert list(data["time"].values) == [0.0, 300.0, 600.0] and str(point["status"].values) == "computed"
     # the same computation on the same case: equal to round-off (the store keeps float64)
