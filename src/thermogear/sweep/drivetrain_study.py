@@ -29,12 +29,12 @@ from typing import Any
 import numpy as np
 
 from thermogear.errors import CaseError, JammingError, ModelLimitError, ProblemError
+from thermogear.sweep.drivetrain_branches import DIRECTIONS
 
 __all__ = ["DrivetrainPlan", "plan_drivetrain_study", "point_case"]
 
 #: What a point's numerics may raise: the solver's and the case's refusals, a singular or overflowing matrix.
 FAILURES = (ModelLimitError, CaseError, ProblemError, JammingError, np.linalg.LinAlgError, ValueError)
-DIRECTIONS = ("up", "down")
 _CACHE_SIZE = 4
 #: Per point: the temperatures its case was built with [°C].
 TEMPERATURES = ("oil_temperature_c", "housing_temperature_c")
@@ -119,6 +119,10 @@ def plan_drivetrain_study(study, built, chunk_points: int, directions: tuple[str
     ``directions``: the branches of a backlash study)."""
     from thermogear.mesh.model import PREDICTED_AT_LOAD_TEMPERATURE_MODELS
 
+    unknown = [direction for direction in directions if direction not in DIRECTIONS]
+    if unknown or not directions:
+        raise CaseError("--direction", ", ".join(unknown) or "none", "up | down | both",
+                        "the orbit is followed from the lowest speed up, from the highest down, or both")
     speed_axis = next((a for a, p in enumerate(study.parameters) if p.key == "operating.speed_rpm"), None)
     speeds = _speeds(study, speed_axis)
     if np.any(np.diff(speeds) <= 0.0) and speeds.size > 1:
