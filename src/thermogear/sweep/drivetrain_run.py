@@ -40,7 +40,7 @@ def _resonances(built, models, speeds: np.ndarray) -> dict[str, list[dict[str, A
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         return {model: [r for r in resonance_speeds(mode_table(built.modes(model), built.drivetrains[model]),
-                                                    built.teeth, built.section.bearing_harmonics)
+                                                    built.teeth, built.section.bearing_harmonics, built.stages)
                         if speeds.min() <= r["speed_rpm"] <= speeds.max()] for model in models}
 
 

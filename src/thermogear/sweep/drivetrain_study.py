@@ -36,6 +36,10 @@ __all__ = ["DrivetrainPlan", "plan_drivetrain_study", "point_case"]
 #: What a point's numerics may raise: the solver's and the case's refusals, a singular or overflowing matrix.
 FAILURES = (ModelLimitError, CaseError, ProblemError, JammingError, np.linalg.LinAlgError, ValueError)
 _CACHE_SIZE = 4
+#: A train's per-stage results: stored as ``stage_<key>`` (model, *parameters, mesh).
+STAGE_KEYS = {"kv": ("1", "dynamic factor Kv of each stage's mesh"),
+              "dte_rms_um": ("um", "RMS of each stage's dynamic transmission error"),
+              "max_mesh_force_n": ("N", "largest force of each stage's mesh")}
 #: Per point: the temperatures its case was built with [°C].
 TEMPERATURES = ("oil_temperature_c", "housing_temperature_c")
 _BUILT: OrderedDict = OrderedDict()
@@ -45,7 +49,9 @@ _LOCK = threading.Lock()
 @dataclass(frozen=True, eq=False)
 class DrivetrainPlan:
     """A planned drivetrain study (what every task shares): ``study``, ``models``, ``directions`` (empty: the
-    linear mesh), ``bearings`` (names), ``harmonics``, ``state_size`` (2 N: the full state a branch carries) and
+    linear mesh), ``bearings`` (names), ``harmonics`` (the section's mesh harmonics), ``lines`` (the bearing
+    spectrum's lines: the harmonics j·L_m of every stage of a train; 1 … harmonics for one mesh), ``meshes`` (their
+    names; a train stores each stage's Kv, DTE and force), ``state_size`` (2 N: the full state a branch carries) and
     ``tasks`` (independent slices, or branch points with ``follows``)."""
 
     study: Any
@@ -59,6 +65,12 @@ class DrivetrainPlan:
     tasks: tuple
     follows: tuple
     identity: str = ""  # the study's definition (JSON): the key of the drivetrains built for it in a worker
+    lines: tuple[int, ...] = ()
+    meshes: tuple[str, ...] = ()
+
+    @property
+    def train(self) -> bool:
+        return len(self.meshes) > 1
 
     @property
     def backlash(self) -> bool:
@@ -154,9 +166,12 @@ def plan_drivetrain_study(study, built, chunk_points: int, directions: tuple[str
                 tasks.append((group, slice(start, min(start + step, speeds.size))))
                 follows.append(None)
         directions = ()
-    return DrivetrainPlan(study, models, tuple(directions), bearings, int(built.section.bearing_harmonics),
-                          int(state_size), per_point, speed_axis, tuple(tasks), tuple(follows),
-                          json.dumps(study.describe(), sort_keys=True, default=str))
+    harmonics = int(built.section.bearing_harmonics)
+    lines = tuple(sorted({j * repeat for repeat in built.train_repeats for j in range(1, harmonics + 1)}))
+    meshes = tuple(mesh.name for mesh in built.drivetrains[first].meshes)
+    return DrivetrainPlan(study, models, tuple(directions), bearings, harmonics, int(state_size), per_point,
+                          speed_axis, tuple(tasks), tuple(follows), json.dumps(study.describe(), sort_keys=True,
+                                                                                default=str), lines, meshes)
 
 
 # ------------------------------------------------------------------------------------------------ the store
@@ -190,6 +205,9 @@ def drivetrain_layout(plan: DrivetrainPlan, extra_attrs: dict):
                                 "case (the gearbox model's steady state with temperature.model = 'gearbox')"),
                   StoreVariable("housing_temperature_c", study.dims, "float", "degC", "housing temperature of the "
                                 "point's case (NaN where the case gives none)")]
+    if plan.train and not plan.backlash:
+        variables += [StoreVariable(f"stage_{key}", (*dims, "mesh"), "float", units, text)
+                      for key, (units, text) in STAGE_KEYS.items()]
     if plan.backlash:
         variables.append(StoreVariable("branch_state", (*dims, "state"), "float", "",
                                        "full state (q, dq/dt) the branch carries on from this point (resume)"))
@@ -199,7 +217,9 @@ def drivetrain_layout(plan: DrivetrainPlan, extra_attrs: dict):
     for parameter in study.parameters:
         coords[parameter.name] = np.asarray(parameter.values)
     coords["bearing"] = list(plan.bearings)
-    coords["harmonic"] = np.arange(1, plan.harmonics + 1)
+    coords["harmonic"] = np.asarray(plan.lines)
+    if plan.train and not plan.backlash:
+        coords["mesh"] = list(plan.meshes)
     if plan.backlash:
         coords["state"] = np.arange(plan.state_size)
     chunks = {"model": 1, "direction": 1, **{p.name: 1 for p in study.parameters if p.key != "operating.speed_rpm"}}
@@ -236,33 +256,36 @@ def _missing(status: str, bearings: int, harmonics: int) -> dict[str, Any]:
             "bearing_harmonic_amplitude_n": np.full((bearings, harmonics), np.nan)}
 
 
-def _forces(response, bearings: int, harmonics: int) -> dict[str, np.ndarray]:
+def _forces(response, bearings: int, lines: int, harmonics: int) -> dict[str, np.ndarray]:
+    """Each bearing's dynamic RMS and its amplitudes at the ``lines`` spectrum lines of the first ``harmonics`` mesh
+    harmonics (of every stage of a train)."""
     from thermogear.drivetrain.case_model import bearing_force_summary
 
     forces = bearing_force_summary(response, harmonics)
     return {"bearing_dynamic_rms_n": np.array([forces[name]["dynamic_rms_n"] for name in forces], dtype=float),
             "bearing_harmonic_amplitude_n": np.array([forces[name]["harmonic_amplitude_n"] for name in forces],
-                                                     dtype=float).reshape(bearings, harmonics)}
+                                                     dtype=float).reshape(bearings, lines)}
 
 
-def _linear_point(response, bearings: int, harmonics: int) -> dict[str, Any]:
+def _linear_point(response, bearings: int, lines: int, harmonics: int) -> dict[str, Any]:
     if isinstance(response, np.linalg.LinAlgError):
-        return _missing(f"not computed: the periodic solve failed ({response})", bearings, harmonics)
+        return _missing(f"not computed: the periodic solve failed ({response})", bearings, lines)
     if isinstance(response, Exception):
-        return _missing(f"not computed: {response}", bearings, harmonics)
+        return _missing(f"not computed: {response}", bearings, lines)
     multipliers = np.abs(response.multipliers)
     largest = float(multipliers.max()) if multipliers.size else 0.0
     return {"status": "valid" if largest < 1.0 else "unstable", "valid": largest < 1.0, "kv": response.kv,
             "dte_rms_um": response.metrics["dte_rms"] * 1e6,
             "dte_peak_to_peak_um": response.metrics["dte_peak_to_peak"] * 1e6,
-            "largest_floquet_multiplier_abs": largest, **_forces(response, bearings, harmonics)}
+            "largest_floquet_multiplier_abs": largest, **_forces(response, bearings, lines, harmonics),
+            **_stages(response)}
 
 
 def linear_task(plan: DrivetrainPlan, task) -> dict[str, np.ndarray]:
     """One task of a linear drivetrain study: a group's slice of speeds, every model (arrays of the region)."""
     group, where = task
     speeds = _speeds(plan.study, plan.speed_axis)[where]
-    bearings, harmonics = len(plan.bearings), plan.harmonics
+    bearings, lines, harmonics = len(plan.bearings), len(plan.lines), plan.harmonics
     points: list[list[dict]] = [[{} for _ in speeds] for _ in plan.models]
     slices = [[speed] for speed in speeds] if plan.per_point_case else [list(speeds)]
     offset = 0
@@ -277,13 +300,23 @@ def linear_task(plan: DrivetrainPlan, task) -> dict[str, np.ndarray]:
                              for model in plan.models}
             for m, model in enumerate(plan.models):
                 for k, response in enumerate(responses[model]):
-                    points[m][offset + k] = {**_linear_point(response, bearings, harmonics), **temperatures}
+                    points[m][offset + k] = {**_linear_point(response, bearings, lines, harmonics), **temperatures}
         except FAILURES as error:  # the group's (or point's) case or drivetrain cannot be built
             for m in range(len(plan.models)):
                 for k in range(len(chunk)):
-                    points[m][offset + k] = _missing(f"not computed: {error}", bearings, harmonics)
+                    points[m][offset + k] = _missing(f"not computed: {error}", bearings, lines)
         offset += len(chunk)
     return _arrays(points, plan, squeeze=plan.speed_axis is None)
+
+
+def _stages(response) -> dict[str, list[float]]:
+    """A train's Kv, DTE RMS [um] and largest mesh force [N] of each stage (none for one mesh)."""
+    if len(response.meshes) < 2:
+        return {}
+    from thermogear.drivetrain.case_model import stage_summary
+
+    stages = stage_summary(response).values()
+    return {f"stage_{key}": [np.nan if item[key] is None else item[key] for item in stages] for key in STAGE_KEYS}
 
 
 def _arrays(points: list[list[dict]], plan: DrivetrainPlan, squeeze: bool) -> dict[str, np.ndarray]:
@@ -298,6 +331,10 @@ def _arrays(points: list[list[dict]], plan: DrivetrainPlan, squeeze: bool) -> di
         result[name] = values
     for name in ("bearing_dynamic_rms_n", "bearing_harmonic_amplitude_n"):
         result[name] = np.array([[point[name] for point in row] for row in points], dtype=float)
+    if plan.train:  # each stage's values (NaN where the point was not computed)
+        for key in STAGE_KEYS:
+            result[f"stage_{key}"] = np.array([[point.get(f"stage_{key}", [np.nan] * len(plan.meshes))
+                                                for point in row] for row in points], dtype=float)
     for name in TEMPERATURES:  # the point's, whichever model: (speeds,)
         result[name] = np.array([[point.get(name, np.nan) for point in row] for row in points], dtype=float)
     if squeeze:
@@ -320,7 +357,7 @@ def backlash_task(plan: DrivetrainPlan, task, previous: dict | None = None) -> d
     carried = previous["carried"] if previous is not None else (stored[0] if stored else None)
     model = plan.models[model_index]
     speed = float(_speeds(plan.study, plan.speed_axis)[speed_index])
-    bearings, harmonics = len(plan.bearings), plan.harmonics
+    bearings, harmonics = len(plan.bearings), len(plan.lines)
     point = _missing("", bearings, harmonics)
     try:
         built, temperatures = _built(plan, group, speed)
@@ -364,7 +401,7 @@ def _backlash_point(response, run_in: bool, bearings: int, harmonics: int) -> di
             "back_contact_fraction": response.back_contact_fraction,
             "back_side_contact": float(metrics["back_side_contact"]),
             "largest_floquet_multiplier_abs": float(multipliers.max()) if multipliers.size else np.nan,
-            **_forces(response, bearings, harmonics)}
+            **_forces(response, bearings, harmonics, harmonics)}
 
 
 def backlash_arrays(point: dict[str, Any], state_size: int) -> dict[str, Any]:
