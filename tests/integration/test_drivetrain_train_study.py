@@ -12,11 +12,10 @@ import pytest
 pytestmark = [pytest.mark.slow, pytest.mark.filterwarnings("ignore")]
 
 
-def test_a_train_study_stores_every_stage_as_the_speed_sweep_does(tmp_path):
+def test_a_train_study_stores_every_stage_as_the_response_at_its_speed(tmp_path):
     import thermogear
     from thermogear.case import load_case
-    from thermogear.drivetrain.case_model import case_drivetrain
-    from thermogear.sweep.drivetrain_speeds import SweepOrigin, drivetrain_speed_sweep
+    from thermogear.drivetrain.case_model import bearing_force_summary, case_drivetrain, stage_summary
 
     case = load_case("fzg_type_c_two_stage")
     speeds = [1000.0]
@@ -25,12 +24,20 @@ def test_a_train_study_stores_every_stage_as_the_speed_sweep_does(tmp_path):
         study = thermogear.sweep(case, vary={"speed_rpm": speeds}, out=tmp_path / "train.zarr", model="elastic",
                                  scheduler="serial")
         built = case_drivetrain(case, ("elastic",))
-        origin = SweepOrigin(case.name, str(case.source), case.document, case.operating_point.load_held)
-        alone = drivetrain_speed_sweep(built, origin, np.array(speeds), ("elastic",)).dataset
+        alone = built.response("elastic", speeds[0], case.drivetrain.sweep_points_per_period)
     assert list(study["status"].values.ravel()) == ["valid"]
-    assert list(study["harmonic"].values) == list(alone["harmonic"].values)  # every stage's lines j·L_m
-    assert list(study["mesh"].values) == list(alone["mesh"].values)
-    # the same per-speed solve on the same modal basis: rounding only
-    for name in ("kv", "dte_rms_um", "stage_kv", "stage_dte_rms_um", "stage_max_mesh_force_n",
-                 "bearing_harmonic_amplitude_n"):
-        np.testing.assert_allclose(study[name].values, alone[name].values, rtol=1e-9, err_msg=name)
+    harmonics = case.drivetrain.bearing_harmonics
+    forces = bearing_force_summary(alone, harmonics)
+    stages = list(stage_summary(alone).values())
+    assert list(study["mesh"].values) == list(stage_summary(alone)) and len(stages) == 2
+    # every stage's mesh harmonics j·L_m over the common period: the lines of the bearing spectrum
+    lines = sorted({j * repeat for repeat in built.train_repeats for j in range(1, harmonics + 1)})
+    assert list(study["harmonic"].values) == lines and len(lines) > harmonics
+    # one speed: the same solve on the same modal basis, rounding only
+    point = study.sel(model="elastic").isel(speed_rpm=0)
+    assert float(point["kv"]) == pytest.approx(alone.kv, rel=1e-9)
+    np.testing.assert_allclose(point["stage_kv"].values, [stage["kv"] for stage in stages], rtol=1e-9)
+    np.testing.assert_allclose(point["stage_max_mesh_force_n"].values, [stage["max_mesh_force_n"] for stage in stages],
+                               rtol=1e-9)
+    np.testing.assert_allclose(point["bearing_harmonic_amplitude_n"].values,
+                               [forces[name]["harmonic_amplitude_n"] for name in forces], rtol=1e-9)

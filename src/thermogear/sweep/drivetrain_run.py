@@ -12,8 +12,8 @@ from typing import Any
 import numpy as np
 
 from thermogear.sweep.chains import pending_chains
-from thermogear.sweep.drivetrain_study import (DIRECTIONS, backlash_arrays, drivetrain_layout, plan_drivetrain_study,
-                                               point_case, run_task, task_region)
+from thermogear.sweep.drivetrain_store import backlash_arrays, drivetrain_layout, task_region
+from thermogear.sweep.drivetrain_study import DIRECTIONS, plan_drivetrain_study, point_case, run_task
 
 __all__ = ["DrivetrainStudyRun", "run_drivetrain_study"]
 
