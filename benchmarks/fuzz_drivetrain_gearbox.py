@@ -49,6 +49,8 @@ def drivetrain_case(rng: np.random.Generator) -> dict:
     document["case"]["name"] = "fuzzed_drivetrain"
     document["gears"] = {"module_mm": module, "face_width_mm": _round(module * rng.uniform(4.0, 14.0), 3),
                          "pinion": {"teeth": pinion}, "wheel": {"teeth": wheel}}
+    if pinion < 17 and rng.random() < 0.7:  # mostly the shift that avoids undercut (DIN 3960: x >= (17 − z)/17)
+        document["gears"]["pinion"]["profile_shift"] = _round((17 - pinion) / 17 + 0.05, 3)
     document["operating"] = {"speed_rpm": _round(rng.uniform(300.0, 12000.0), 4),
                              "torque_nm": _round(rng.uniform(5.0, 400.0), 3)}
     document["dynamics"] = {"mesh": str(rng.choice(["nonlinear", "linear"])),
