@@ -5,7 +5,9 @@ cut-off per mesh period against the same baseline; ``thermogear run`` on the use
 memory of the process).
 
 Run: python benchmarks/bench_drivetrain_backlash.py [--full] [SPEED_RPM ...]   (--full: also every DOF, ~30 s+)
-Prints a table and writes benchmarks/results/bench_drivetrain_backlash.json.
+Prints a table and writes benchmarks/results/bench_drivetrain_backlash.json. With --run-only: only the two
+``thermogear run`` processes, interleaved twice, with the user's CPU and peak memory as ratios to fzg_rig_type_c's
+(benchmarks/results/bench_user_drivetrain_run.json).
 
 Per speed (the elastic mesh model's state, the case's ``points_per_period`` intervals): CPU (user + sys of this
 process) and wall seconds of ``drivetrain_backlash_response`` with ``cutoff_hz`` None (every DOF) and with the
@@ -116,19 +118,32 @@ def _run_process(case: str) -> dict:
 
 
 def run_command_rows() -> list[dict]:
-    """``thermogear run`` on the user's drivetrain and on fzg_rig_type_c, interleaved twice: wall, CPU, memory."""
+    """``thermogear run`` on the user's drivetrain and on fzg_rig_type_c, interleaved twice: wall, CPU, memory, and
+    each user run's CPU and peak memory as ratios to the fzg_rig_type_c run just before it (issue 36's targets:
+    3 s and 400 MB, i.e. about the built-in set's own)."""
     user = str(Path(__file__).resolve().parents[1] / "tests" / "data" / "user_drivetrain.toml")
     rows = []
     for _ in range(2):
         for case in ("fzg_rig_type_c", user):
             row = _run_process(case)
+            if case == user:
+                baseline = rows[-1]
+                row["cpu_over_fzg_rig_type_c"] = row["cpu_s"] / baseline["cpu_s"]
+                row["memory_over_fzg_rig_type_c"] = row["peak_memory_mb"] / baseline["peak_memory_mb"]
             rows.append(row)
+            ratios = (f"  ({row['cpu_over_fzg_rig_type_c']:.2f}× CPU, {row['memory_over_fzg_rig_type_c']:.2f}× "
+                      "memory of fzg_rig_type_c)") if case == user else ""
             print(f"run {Path(case).name:24s} wall {row['wall_s']:6.2f} s  CPU {row['cpu_s']:6.2f} s  peak "
-                  f"memory {row['peak_memory_mb']:7.1f} MB  exit {row['exit_code']}", flush=True)
+                  f"memory {row['peak_memory_mb']:7.1f} MB  exit {row['exit_code']}{ratios}", flush=True)
     return rows
 
 
 if __name__ == "__main__":
+    if "--run-only" in sys.argv:  # only the `thermogear run` rows (issue 36's user drivetrain)
+        RESULTS.mkdir(exist_ok=True)
+        (RESULTS / "bench_user_drivetrain_run.json").write_text(json.dumps({"run": run_command_rows()}, indent=2),
+                                                                 encoding="utf-8")
+        sys.exit(0)
     chosen = tuple(float(value) for value in sys.argv[1:] if value != "--full") or SPEEDS_RPM
     results = {"speeds": main(chosen), "run": run_command_rows()}
     RESULTS.mkdir(exist_ok=True)

@@ -11,6 +11,7 @@ import tempfile
 import warnings
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from thermogear.case import case_from_document, load_case
@@ -175,3 +176,36 @@ def test_an_example_run_without_a_folder_writes_outside_the_folder_it_is_run_fro
     exec(compile(ast.Module(body=block.body, type_ignores=[]), str(script), "exec"), namespace)  # noqa: S102
     assert len(given) == 1
     assert Path(tempfile.gettempdir()) in given[0].parents and script.stem in given[0].parts
+
+
+def _held_out_fuzz_module():
+    import importlib.util
+
+    path = ROOT / "benchmarks" / "fuzz_drivetrain_gearbox.py"
+    spec = importlib.util.spec_from_file_location("fuzz_drivetrain_gearbox", path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def test_held_out_fuzz_cases_load_or_are_refused_by_name():
+    # the suite's small version of `benchmarks/fuzz_drivetrain_gearbox.py` (seeded, 8 cases, load only: the
+    # one set of checks every command runs): each random drivetrain or gearbox case is a case or a CaseError
+    # naming a key — never another exception; and the draw reaches both outcomes' side of the checks
+    from thermogear.errors import ThermogearError
+
+    module = _held_out_fuzz_module()
+    rng = np.random.default_rng(36)
+    loaded = 0
+    for index in range(8):
+        document = module.drivetrain_case(rng) if index % 2 == 0 else module.gearbox_case(rng)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            try:
+                case = case_from_document(document, f"held-out fuzz case {index}")
+            except ThermogearError as error:
+                assert isinstance(error, CaseError) and error.key, error
+                continue
+        loaded += 1
+        assert case.name.startswith("fuzzed") and (case.drivetrain is not None) == (index % 2 == 0)
+    assert loaded >= 2

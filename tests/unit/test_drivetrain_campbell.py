@@ -144,3 +144,23 @@ def test_without_damping_and_spin_the_basis_holds_the_modes_exactly():
     exact = drivetrain_modes(still, count=4).frequencies_hz
     np.testing.assert_allclose(diagram.frequencies_hz, np.broadcast_to(exact, (5, 4)), rtol=1e-9)
     assert diagram.basis_size == 4 + 6  # the modes drawn and the spare ones offered to the shape matching
+
+
+def test_eigen_solves_run_on_one_blas_thread(assembled, monkeypatch):
+    # issue 36: 100 speeds cost 4.4 s CPU with two OpenBLAS threads against 0.8 s on one (the ~90-row eigen-solves
+    # only contend); whatever the caller's BLAS threads, each solve sees one
+    from threadpoolctl import threadpool_info, threadpool_limits
+
+    import thermogear.drivetrain.campbell as campbell
+
+    seen = []
+    solve = campbell._ReducedSpinningModes.solve
+
+    def watched(self, speed):
+        seen.extend(info["num_threads"] for info in threadpool_info() if info["user_api"] == "blas")
+        return solve(self, speed)
+
+    monkeypatch.setattr(campbell._ReducedSpinningModes, "solve", watched)
+    with threadpool_limits(limits=2, user_api="blas"):
+        campbell_diagram(assembled, np.linspace(0.0, 6000.0, 4), teeth=20, harmonics=(1,), mode_count=2)
+    assert seen and set(seen) == {1}

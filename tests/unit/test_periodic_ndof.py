@@ -164,3 +164,44 @@ def test_many_pieces_equal_a_piece_by_piece_reference(levels, samples):
     scale = np.abs(reference).max()
     assert response.displacement.shape == reference.shape
     assert np.abs(response.displacement - reference).max() < 1e-10 * scale
+
+
+@pytest.mark.parametrize("levels, samples", [(None, 1), (None, 3), (2, 2)])
+def test_chunked_route_equals_the_piece_by_piece_reference(monkeypatch, levels, samples):
+    # the route of large systems (issue 36: a 1024-piece, 83-coordinate drivetrain held 1.3 GB in the block route's
+    # stacks) forced on the small chain, in chunks of 10 pieces so that several chunks and a partial last one occur:
+    # the whole pieces' transitions formed directly (not as powers of the sub-steps) and the states stepped one
+    # sub-step at a time are exact as the block route, so the same 1e-10 of the orbit's size as above
+    import thermogear.dynamics.periodic_ndof as periodic
+
+    system = _many_pieces(levels)
+    monkeypatch.setattr(periodic, "LEAN_ROUTE_BYTES", 0)
+    monkeypatch.setattr(periodic, "CHUNK_BYTES", 10 * 8 * (2 * system.size + 1) ** 2)
+    chunked = periodic_response(system, samples_per_piece=samples)
+    reference = _reference_orbit(system, samples)
+    scale = np.abs(reference).max()
+    assert np.abs(chunked.displacement - reference).max() < 1e-10 * scale
+    monkeypatch.setattr(periodic, "LEAN_ROUTE_BYTES", 2**62)
+    blocks = periodic_response(system, samples_per_piece=samples)
+    assert np.allclose(np.abs(chunked.multipliers), np.abs(blocks.multipliers), rtol=1e-9, atol=1e-14)
+
+
+def test_motion_projections_from_the_orbit_stay_on_it(monkeypatch):
+    # the motion from the periodic state is the orbit itself, period after period: the functionals watched by the
+    # chunked pass (chunks of 7 pieces) equal the orbit's own sampled displacement at every sub-step of 3 periods
+    import thermogear.dynamics.periodic_ndof as periodic
+    from thermogear.dynamics.periodic_motion import motion_projections
+
+    system = _many_pieces(None)
+    samples = 2
+    monkeypatch.setattr(periodic, "CHUNK_BYTES", 7 * 8 * (2 * system.size + 1) ** 2)
+    orbit = periodic_response(system, samples_per_piece=samples)
+    rows = np.zeros((2, 2 * system.size))
+    rows[0, 0], rows[1, system.size - 1] = 1.0, 1.0
+    values = motion_projections(system, orbit.initial_state, 3, samples, rows)
+    expected = orbit.displacement[:-1][:, [0, system.size - 1]]
+    scale = np.abs(expected).max()
+    assert values.shape == (3 * expected.shape[0] + 1, 2)
+    for period in range(3):
+        block = values[period * expected.shape[0]:(period + 1) * expected.shape[0]]
+        assert np.abs(block - expected).max() < 1e-10 * scale

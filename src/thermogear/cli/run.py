@@ -81,6 +81,9 @@ def run(
                                                  "model, units in the column names)"),
     plot: Path = typer.Option(None, "--plot", help="write the drivetrain's pictures (layout, mode shapes, Campbell "
                                                    "diagram, bearing-force spectra; PNG) into this folder"),
+    multistart: int = typer.Option(0, "--multistart", min=0, help="backlash drivetrain: also search this many starts "
+                                                                  "(rest, the linear solution, a grid) and list every "
+                                                                  "stable orbit with its basin share"),
 ) -> None:
     """Run the dynamics of a case and report Kv, loads, transmission error per region, frequencies and stability.
     Contact loss and instability are said in words (when, how long, how deep)."""
@@ -109,11 +112,15 @@ def run(
 
         check_csv_target(csv, force, "--csv")
     case = load_case(case_name)
+    method = method or case.dynamics.method
+    if multistart:
+        from thermogear.cli.run_multistart import check_multistart
+
+        check_multistart(case, multistart, method, out)  # before any work
     if plot is not None:
         from thermogear.cli.run_drivetrain import check_picture_folder
 
         plot = check_picture_folder(plot, case, force)  # before any work
-    method = method or case.dynamics.method
     models = _MODELS[model]
     with shown_warnings() as shown:  # every warning printed on stderr, for --json's "messages" (issue 36)
         preflight(case, models, quiet=False, method=method)  # the checks `check` makes, before any output is written
@@ -130,9 +137,15 @@ def run(
             steps = [f"{name} model" for name in models]
             if case.drivetrain is not None:
                 steps += [f"drivetrain, {name} model" for name in models]
+            steps += [f"multi-start search, {name} model" for name in models] if multistart else []
             with step_progress(steps, quiet or as_json, error_console) as advance:
                 orchestrator = Orchestrator(case, models, method)
                 results = orchestrator.run(progress=advance)
+                if multistart:
+                    from thermogear.cli.run_multistart import multistart_json
+
+                    orbits = multistart_json(orchestrator.built_drivetrain, models, multistart,
+                                             progress=lambda name: advance(f"multi-start search, {name} model"))
     responses = {name: pair.response for name, pair in results.pair.items()}
     messages = [text for name, response in responses.items() for text in model_messages(response, name)]
     drivetrain = drivetrain_json(results.drivetrain, results.drivetrain_not_computed)
@@ -161,6 +174,8 @@ def run(
             payload["not_computed"] = dict(results.not_computed)
         if drivetrain is not None:
             payload["drivetrain"] = drivetrain
+            if multistart:
+                payload["drivetrain"]["multistart"] = orbits
         if predicted:
             payload["temperatures"] = predicted
         if out is not None:
@@ -187,6 +202,10 @@ def run(
                  pair_label=" (1-DOF pair)" if results.drivetrain is not None else "")
     print_notes([DYNAMIC_FACTORS_NOTE], console)
     print_drivetrain(results.drivetrain, console, results.drivetrain_not_computed)
+    if multistart:
+        from thermogear.cli.run_multistart import print_multistart
+
+        print_multistart(orbits, console)
     if results.drivetrain is not None:
         console.print(headline_line(results), highlight=False)
     console.print(_load_held_line(case.operating_point))

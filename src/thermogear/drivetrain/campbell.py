@@ -38,6 +38,7 @@ from functools import lru_cache
 import numpy as np
 
 from thermogear.drivetrain.assembly import AssembledDrivetrain, Drivetrain
+from thermogear.drivetrain.backlash_response import one_blas_thread
 from thermogear.drivetrain.modes import mode_labels
 from thermogear.dynamics.modal import undamped_modes
 from thermogear.dynamics.rigid_body import rigid_body_reduction
@@ -213,56 +214,60 @@ def campbell_diagram(drivetrain: Drivetrain | AssembledDrivetrain, speeds_rpm: n
                         "the highest undamped mode of the basis")
     if not assembled.drivetrain.meshes:
         raise CaseError("meshes", 0, "at least one mesh", "the diagram's lines are the mesh harmonics")
-    system = _ReducedSpinningModes(assembled, mesh_stiffness, basis_cutoff_hz, int(mode_count))
-    count = system.count
+    # one BLAS thread: the eigen-solves are of ~90 rows, where BLAS threads only contend (measured on fzg_rig_type_c,
+    # 100 speeds: 4.4 s CPU and 27 s wall with two OpenBLAS threads against 0.8 s CPU and 5–6 s wall on one, on the
+    # loaded 2-core development machine)
+    with one_blas_thread():
+        system = _ReducedSpinningModes(assembled, mesh_stiffness, basis_cutoff_hz, int(mode_count))
+        count = system.count
 
-    @lru_cache(maxsize=None)
-    def solved(speed: float) -> tuple[np.ndarray, np.ndarray]:
-        return system.solve(speed)
+        @lru_cache(maxsize=None)
+        def solved(speed: float) -> tuple[np.ndarray, np.ndarray]:
+            return system.solve(speed)
 
-    values, shapes = solved(float(speeds[0]))
-    count = min(count, values.size)
-    tracked = [np.arange(count)]  # per speed: the candidate that is each mode
-    for speed in speeds[1:]:
-        previous_values, previous_shapes = solved(float(speeds[len(tracked) - 1]))
-        _, current_shapes = solved(float(speed))
-        match = _mac(previous_shapes[:, tracked[-1]], current_shapes)
-        _, columns = linear_sum_assignment(-match)
-        tracked.append(columns)
-    eigenvalues = np.array([solved(float(s))[0][columns] for s, columns in zip(speeds, tracked)])
-    frequencies = np.abs(eigenvalues) / (2.0 * math.pi)
-    shares = np.array([system.mesh_shares(solved(float(s))[1][:, columns]) for s, columns in zip(speeds, tracked)])
-    labels = mode_labels(assembled, system.basis @ shapes[:, :count])
+        values, shapes = solved(float(speeds[0]))
+        count = min(count, values.size)
+        tracked = [np.arange(count)]  # per speed: the candidate that is each mode
+        for speed in speeds[1:]:
+            previous_values, previous_shapes = solved(float(speeds[len(tracked) - 1]))
+            _, current_shapes = solved(float(speed))
+            match = _mac(previous_shapes[:, tracked[-1]], current_shapes)
+            _, columns = linear_sum_assignment(-match)
+            tracked.append(columns)
+        eigenvalues = np.array([solved(float(s))[0][columns] for s, columns in zip(speeds, tracked)])
+        frequencies = np.abs(eigenvalues) / (2.0 * math.pi)
+        shares = np.array([system.mesh_shares(solved(float(s))[1][:, columns]) for s, columns in zip(speeds, tracked)])
+        labels = mode_labels(assembled, system.basis @ shapes[:, :count])
 
-    def follow(speed: float, reference: np.ndarray) -> tuple[complex, float]:
-        """(λ, mesh share) of the mode at ``speed`` whose shape is closest to the mode's at both ends of the
-        bracket, ``reference`` (m, 2) (at one end alone, a pair degenerate at standstill would not choose)."""
-        found_values, found_shapes = solved(float(speed))
-        best = int(np.argmax(_mac(reference, found_shapes).sum(axis=0)))
-        return found_values[best], float(system.mesh_shares(found_shapes[:, best:best + 1])[0])
+        def follow(speed: float, reference: np.ndarray) -> tuple[complex, float]:
+            """(λ, mesh share) of the mode at ``speed`` whose shape is closest to the mode's at both ends of the
+            bracket, ``reference`` (m, 2) (at one end alone, a pair degenerate at standstill would not choose)."""
+            found_values, found_shapes = solved(float(speed))
+            best = int(np.argmax(_mac(reference, found_shapes).sum(axis=0)))
+            return found_values[best], float(system.mesh_shares(found_shapes[:, best:best + 1])[0])
 
-    crossings = []
-    for harmonic in harmonics:
-        for mode in range(count):
-            values_on_line = frequencies[:, mode] - harmonic * teeth * speeds / 60.0
-            for index in np.flatnonzero(np.sign(values_on_line[:-1]) * np.sign(values_on_line[1:]) <= 0):
-                if values_on_line[index] == 0.0 and index > 0:
-                    continue  # a root on a grid speed is found from the interval on its left
-                reference = np.column_stack([solved(float(speeds[end]))[1][:, tracked[end][mode]]
-                                             for end in (index, index + 1)])
+        crossings = []
+        for harmonic in harmonics:
+            for mode in range(count):
+                values_on_line = frequencies[:, mode] - harmonic * teeth * speeds / 60.0
+                for index in np.flatnonzero(np.sign(values_on_line[:-1]) * np.sign(values_on_line[1:]) <= 0):
+                    if values_on_line[index] == 0.0 and index > 0:
+                        continue  # a root on a grid speed is found from the interval on its left
+                    reference = np.column_stack([solved(float(speeds[end]))[1][:, tracked[end][mode]]
+                                                 for end in (index, index + 1)])
 
-                def gap(speed: float, reference: np.ndarray = reference, harmonic: int = harmonic) -> float:
-                    return abs(follow(speed, reference)[0]) / (2.0 * math.pi) - harmonic * teeth * speed / 60.0
+                    def gap(speed: float, reference: np.ndarray = reference, harmonic: int = harmonic) -> float:
+                        return abs(follow(speed, reference)[0]) / (2.0 * math.pi) - harmonic * teeth * speed / 60.0
 
-                low, high = float(speeds[index]), float(speeds[index + 1])
-                if gap(low) * gap(high) > 0.0:  # the shape match jumped inside the interval: keep the grid's root
-                    root = low - values_on_line[index] * (high - low) / (values_on_line[index + 1]
-                                                                         - values_on_line[index])
-                else:
-                    root = float(brentq(gap, low, high, xtol=1e-9 * speeds[-1], rtol=1e-12))
-                value, share = follow(root, reference)
-                crossings.append(Crossing(int(harmonic), mode, root, abs(value) / (2.0 * math.pi), share,
-                                          labels[mode]))
-    crossings.sort(key=lambda crossing: crossing.speed_rpm)
-    return CampbellDiagram(speeds, frequencies[:, :count], shares[:, :count], labels, int(teeth),
-                           tuple(int(j) for j in harmonics), tuple(crossings), system.size)
+                    low, high = float(speeds[index]), float(speeds[index + 1])
+                    if gap(low) * gap(high) > 0.0:  # the shape match jumped inside the interval: keep the grid's root
+                        root = low - values_on_line[index] * (high - low) / (values_on_line[index + 1]
+                                                                             - values_on_line[index])
+                    else:
+                        root = float(brentq(gap, low, high, xtol=1e-9 * speeds[-1], rtol=1e-12))
+                    value, share = follow(root, reference)
+                    crossings.append(Crossing(int(harmonic), mode, root, abs(value) / (2.0 * math.pi), share,
+                                              labels[mode]))
+        crossings.sort(key=lambda crossing: crossing.speed_rpm)
+        return CampbellDiagram(speeds, frequencies[:, :count], shares[:, :count], labels, int(teeth),
+                               tuple(int(j) for j in harmonics), tuple(crossings), system.size)

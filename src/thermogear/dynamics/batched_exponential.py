@@ -171,7 +171,9 @@ def expm_of_rank_updates(base: np.ndarray, left: np.ndarray, right: np.ndarray, 
                 @ hankel).reshape(count * size, rank, degree).transpose(0, 2, 1).reshape(count, size, degree * rank)
     result = weighted @ right_blocks.reshape(count, degree * rank, size)  # Σ_ik t^i Y_i H_ik t^{k+1} Z_k
     distinct, where = np.unique(times, return_inverse=True)
-    result += batched_expm(distinct[:, None, None] * base[None])[where.ravel()]
+    exponentials = batched_expm(distinct[:, None, None] * base[None])
+    result += exponentials[0] if distinct.size == 1 else exponentials[where.ravel()]  # (equal widths: no copy)
     for _ in range(squarings):
         result = result @ result
-    return result * (scale[None, :] / scale[:, None])
+    result *= scale[None, :] / scale[:, None]
+    return result

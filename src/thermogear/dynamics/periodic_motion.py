@@ -1,13 +1,13 @@
 """The motion of a piecewise-linear time-periodic system from a given state over many periods, watched through
 linear functionals of its state (e.g. the gap of a mesh) without stepping it period by period: the pieces'
-sub-step exponentials of :func:`~thermogear.dynamics.periodic_ndof.piece_steps`, carried back to the period's start
-once. Knows nothing of gears: matrices only."""
+sub-step exponentials and whole transitions of :func:`~thermogear.dynamics.periodic_ndof.chunked_exponentials`,
+carried back to the period's start once. Knows nothing of gears: matrices only."""
 
 from __future__ import annotations
 
 import numpy as np
 
-from thermogear.dynamics.periodic_ndof import PiecewiseLinearSystem, piece_steps
+from thermogear.dynamics.periodic_ndof import PiecewiseLinearSystem, chunked_exponentials, grouped_pieces
 
 __all__ = ["motion_projections"]
 
@@ -22,22 +22,22 @@ def motion_projections(system: PiecewiseLinearSystem, state: np.ndarray, periods
     period then costs one product with its start state and the period's transition: the motion from rest over
     many periods is watched (e.g. for the mesh gap) without stepping it. Exact as :func:`~thermogear.dynamics.periodic_ndof.periodic_response`."""
     samples = int(samples_per_piece)
-    distinct, where = piece_steps(system, samples)
+    grouped, where = grouped_pieces(system, samples)
     rows = np.atleast_2d(np.asarray(rows, dtype=float))
     n, count = system.size, rows.shape[0]
     augmented = np.zeros((count, 2 * n + 1))
     augmented[:, :2 * n] = rows
-    functionals = np.empty((distinct.shape[0], samples, count, 2 * n + 1))
-    current = np.broadcast_to(augmented, (distinct.shape[0], count, 2 * n + 1))
-    for sample in range(samples):
-        functionals[:, sample] = current
-        current = current @ distinct
-    whole = np.linalg.matrix_power(distinct, samples)  # each piece's whole transition
     transfer = np.empty((where.size, samples, count, 2 * n + 1))
     transition = np.eye(2 * n + 1)
-    for piece, index in enumerate(where):
-        transfer[piece] = functionals[index] @ transition
-        transition = whole[index] @ transition
+    # chunk by chunk (no stack of every piece's matrix is held): the sub-step exponentials and the whole transitions
+    for (first, steps), (_, wholes) in zip(chunked_exponentials(system, grouped, where),
+                                           chunked_exponentials(system, grouped, where, samples), strict=True):
+        for offset, (step, whole) in enumerate(zip(steps, wholes, strict=True)):
+            current = augmented
+            for sample in range(samples):
+                transfer[first + offset, sample] = current @ transition
+                current = current @ step
+            transition = whole @ transition
     z = np.append(np.asarray(state, dtype=float), 1.0)
     values = np.empty((int(periods), where.size * samples, count))
     flat = transfer.reshape(where.size * samples, count, 2 * n + 1)

@@ -36,8 +36,8 @@ from thermogear.dynamics.piece_groups import PIECE_TOLERANCE, group_rows
 from thermogear.dynamics.problem import checked_array, checked_nodes
 from thermogear.errors import ProblemError
 
-__all__ = ["RUN_ROUTE_SIZE", "PiecewiseLinearSystem", "PeriodicResponse", "monodromy", "ordered_product",
-           "periodic_response", "piece_steps"]
+__all__ = ["RUN_ROUTE_SIZE", "PiecewiseLinearSystem", "PeriodicResponse", "chunked_exponentials", "grouped_pieces",
+           "monodromy", "ordered_product", "periodic_response", "piece_steps"]
 
 
 @dataclass(frozen=True, eq=False)
@@ -192,13 +192,26 @@ def _piece_steps(system: PiecewiseLinearSystem, samples: int,
     (:func:`~thermogear.dynamics.batched_exponential.batched_expm`); below ``_RANK_ROUTE_PIECES`` distinct pieces
     the full exponentials cost little and keep Al-Mohy & Higham's tighter scaling, so they are used.
     """
+    distinct, where = grouped_pieces(system, samples, tolerance)
+    return _exponentials(system, distinct), where
+
+
+def grouped_pieces(system: PiecewiseLinearSystem, samples: int,
+                 tolerance: float = PIECE_TOLERANCE) -> tuple[np.ndarray, np.ndarray]:
+    """(distinct rows (D, 1 + 3P) of (sub-step width h_j/``samples`` [s], k_j, c_j, g_j), the index (N,) of each
+    piece's row among them): the pieces grouped as :func:`_piece_steps` groups them (``tolerance``: see there)."""
+    widths = np.diff(system.nodes) / samples
+    factor_k, factor_c, factor_f = system.stacked()[3:]
+    return group_rows(np.column_stack([widths, factor_k, factor_c, factor_f]), tolerance)
+
+
+def _exponentials(system: PiecewiseLinearSystem, distinct: np.ndarray) -> np.ndarray:
+    """(D, 2n+1, 2n+1) exponentials e^{A_j h_j} of the augmented pieces whose rows (h_j, k_j, c_j, g_j) are
+    ``distinct`` (:func:`grouped_pieces`; the routes: :func:`_piece_steps`)."""
     from thermogear.dynamics.batched_exponential import batched_expm, expm_of_rank_updates
 
     inverse = _mass_inverse(system)
-    widths = np.diff(system.nodes) / samples
-    pattern_k, pattern_c, pattern_f, factor_k, factor_c, factor_f = system.stacked()
-    factors = np.column_stack([widths, factor_k, factor_c, factor_f])
-    distinct, where = group_rows(factors, tolerance)
+    pattern_k, pattern_c, pattern_f = system.stacked()[:3]
     n = system.size
     range_basis = _pattern_range(system) if distinct.shape[0] >= _RANK_ROUTE_PIECES else np.zeros((n, 0))
     rank = range_basis.shape[1]
@@ -226,7 +239,7 @@ def _piece_steps(system: PiecewiseLinearSystem, samples: int,
         right = np.concatenate([np.eye(rank) * sign * shift[:, column, None, None]
                                 for column, sign in enumerate(signs)], axis=2)  # (D, r, 3Pr)
         steps = expm_of_rank_updates(mean, left, right, distinct[:, 0], rows)
-    return steps, where
+    return steps
 
 
 def piece_steps(system: PiecewiseLinearSystem, samples: int) -> tuple[np.ndarray, np.ndarray]:
@@ -249,6 +262,12 @@ _SINGLE_ROUTE_SIZE = 401
 # Above this augmented size (about 100 DOF) the orbit is always built run by run: the stacks of the block route hold
 # a matrix per piece (N·m² numbers: 5 GB for 1000 pieces of 800 coordinates).
 RUN_ROUTE_SIZE = 201
+# Above this size of one stack of every distinct piece's (2n+1)² matrix [bytes] the orbit is built chunk by chunk
+# (``_by_chunks``): the block route holds several such stacks at once (the sub-steps, their powers, the padded
+# blocks, the tree's levels: 1.3 GB for the 1024 pieces of an 83-coordinate drivetrain, each freshly allocated, so
+# that filling memory cost as much time as multiplying), the chunked route one chunk of matrices.
+LEAN_ROUTE_BYTES = 32 * 2**20
+CHUNK_BYTES = 16 * 2**20  # one chunk's matrices (75 pieces of 167 × 167): few chunks, small temporaries
 
 
 
@@ -353,11 +372,56 @@ def periodic_response(system: PiecewiseLinearSystem, samples_per_piece: int = 16
     if reached is not None and not reached.all():
         return PeriodicResponse(*on_reached(system, reached, lambda reduced: periodic_response(
             reduced, samples, piece_tolerance)))
-    distinct, where = _piece_steps(system, samples, piece_tolerance)
+    rows, where = grouped_pieces(system, samples, piece_tolerance)
     starts = np.flatnonzero(np.diff(where, prepend=-1))  # runs of equal pieces
-    if 4 * starts.size <= where.size or distinct.shape[1] > RUN_ROUTE_SIZE:
-        return PeriodicResponse(*by_runs(system, distinct, where, starts, samples))
-    return _by_blocks(system, distinct, where, samples)
+    size = 2 * system.size + 1
+    if 4 * starts.size <= where.size or size > RUN_ROUTE_SIZE:
+        return PeriodicResponse(*by_runs(system, _exponentials(system, rows), where, starts, samples))
+    if rows.shape[0] * size**2 * 8 > LEAN_ROUTE_BYTES:
+        return _by_chunks(system, rows, where, samples)
+    return _by_blocks(system, _exponentials(system, rows), where, samples)
+
+
+def chunked_exponentials(system: PiecewiseLinearSystem, rows: np.ndarray, where: np.ndarray, multiple: int = 1):
+    """Yield (first piece, (c, 2n+1, 2n+1) exponentials of the pieces first … first + c − 1 in order) over
+    consecutive chunks of about :data:`CHUNK_BYTES`: the grouped ``rows`` of :func:`grouped_pieces` (each distinct
+    piece of a chunk exponentiated once) over ``multiple`` times their width (the sub-step count: each piece's whole
+    transition e^{A_j h_j}, formed directly, not as a power of the sub-step one). No stack of all the pieces is held."""
+    chunk_pieces = max(1, CHUNK_BYTES // (8 * (2 * system.size + 1) ** 2))
+    for first in range(0, where.size, chunk_pieces):
+        unique, inverse = np.unique(where[first:first + chunk_pieces], return_inverse=True)
+        chunk = rows[unique]
+        chunk[:, 0] *= multiple
+        yield first, _exponentials(system, chunk)[inverse.ravel()]
+
+
+def _by_chunks(system: PiecewiseLinearSystem, rows: np.ndarray, where: np.ndarray,
+               samples: int) -> PeriodicResponse:
+    """:func:`periodic_response` where a stack of every distinct piece's matrix would be large (above
+    :data:`LEAN_ROUTE_BYTES`): the monodromy as the product of the chunks' ordered products of the whole pieces'
+    transitions (:func:`chunked_exponentials`: the same N − 1 products as the block route's tree), then the orbit's
+    state at every sub-step by stepping z₀ through the sub-step exponentials one after another (N·s products of a
+    matrix with a vector, O(m²) each). Exact as the block route (the whole transitions are e^{A_j h_j} itself
+    instead of the power of the sub-step's, and the products come in another order: both differ at the unit
+    roundoff), holding a chunk of matrices at a time instead of several stacks of all of them."""
+    total = np.eye(2 * system.size + 1)
+    for _, whole in chunked_exponentials(system, rows, where, samples):
+        total = ordered_product(whole) @ total
+    multipliers, initial = floquet(total)
+    n, pieces = system.size, where.size
+    states = np.empty((pieces * samples + 1, 2 * n + 1))
+    state, row = np.append(initial, 1.0), 0
+    for _, steps in chunked_exponentials(system, rows, where):
+        for step in steps:
+            for _ in range(samples):
+                states[row] = state
+                state = step @ state
+                row += 1
+    states[-1] = state
+    offsets = np.arange(samples) / samples
+    time = np.concatenate([(system.nodes[:-1, None] + np.diff(system.nodes)[:, None] * offsets).ravel(),
+                           [system.period]])
+    return PeriodicResponse(time, states[:, :n], states[:, n:2 * n], multipliers, initial)
 
 
 def _by_blocks(system: PiecewiseLinearSystem, distinct: np.ndarray, where: np.ndarray,
