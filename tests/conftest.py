@@ -2,10 +2,28 @@
 
 from __future__ import annotations
 
+import os
+
 import matplotlib
 import pytest
 
 matplotlib.use("Agg")
+
+_BLAS_THREAD_VARIABLES = ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS")
+
+
+def pytest_configure(config):
+    """A pytest-xdist worker (one per core) computes on one BLAS thread, as the study engine's workers do: with a
+    worker on every core, more BLAS threads only contend for the cores (the small matrices of the drivetrain tests
+    ran several times slower multi-threaded on a busy machine). The variables reach the commands and Dask workers
+    the tests start; threadpoolctl limits the BLAS libraries already loaded. A thread count the user set wins."""
+    if not os.environ.get("PYTEST_XDIST_WORKER") or any(name in os.environ for name in _BLAS_THREAD_VARIABLES):
+        return
+    for name in _BLAS_THREAD_VARIABLES:
+        os.environ[name] = "1"
+    from threadpoolctl import threadpool_limits
+
+    threadpool_limits(limits=1, user_api="blas")
 
 
 @pytest.fixture(scope="session")

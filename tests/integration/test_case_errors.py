@@ -4,13 +4,13 @@ with that message on stderr and no traceback."""
 from __future__ import annotations
 
 import copy
-import subprocess
-import sys
 import tomllib
 import warnings
 
 import pytest
 import tomli_w
+
+import inprocess_cli
 
 from thermogear.case import case_from_document, load_case, parameter_set_path
 from thermogear.errors import CaseError
@@ -107,8 +107,7 @@ def test_cli_exits_2_with_one_line_and_no_traceback(tmp_path, name):
     edits, removals, key, _ = next(case[1:] for case in BAD_CASES if case[0] == name)
     path = tmp_path / "bad.toml"
     path.write_text(tomli_w.dumps(changed(edits, removals)), encoding="utf-8")
-    completed = subprocess.run([sys.executable, "-m", "thermogear", "check", str(path)], capture_output=True,
-                               text=True, timeout=120)
+    completed = inprocess_cli.run("check", str(path))  # an escaping exception (a traceback) fails the test
     assert completed.returncode == 2
     assert "Traceback" not in completed.stderr
     assert key in completed.stderr
@@ -117,7 +116,6 @@ def test_cli_exits_2_with_one_line_and_no_traceback(tmp_path, name):
 
 def test_cli_accepts_the_built_in_cases():
     for name in ("luo2019", "fzg_type_c"):
-        completed = subprocess.run([sys.executable, "-m", "thermogear", "check", name, "--json"],
-                                   capture_output=True, text=True, timeout=120)
+        completed = inprocess_cli.run("check", name, "--json")
         assert completed.returncode == 0, completed.stderr
         assert '"valid": true' in completed.stdout

@@ -4,14 +4,14 @@ from __future__ import annotations
 
 import json
 import subprocess
-import sys
 
 import pytest
 
+import inprocess_cli
+
 
 def run(*arguments: str) -> subprocess.CompletedProcess:
-    return subprocess.run([sys.executable, "-m", "thermogear", *arguments], capture_output=True, text=True,
-                          timeout=120)
+    return inprocess_cli.run(*arguments)
 
 
 @pytest.fixture(scope="module")

@@ -4,13 +4,13 @@ drivetrain refused the same way by check and run, and a small speed sweep into a
 from __future__ import annotations
 
 import json
-import os
 import subprocess
-import sys
 import tomllib
 from pathlib import Path
 
 import pytest
+
+import inprocess_cli
 
 DATA = Path(__file__).resolve().parents[1] / "data"
 TWO_SHAFTS = DATA / "two_shaft_drivetrain.toml"
@@ -18,9 +18,10 @@ TWO_SHAFTS = DATA / "two_shaft_drivetrain.toml"
 
 def _cli(*args: str) -> subprocess.CompletedProcess:
     # one BLAS thread: the drivetrain's small matrices are slower multi-threaded on a shared machine
-    environment = {**os.environ, "OMP_NUM_THREADS": "1", "OPENBLAS_NUM_THREADS": "1"}
-    return subprocess.run([sys.executable, "-m", "thermogear", *args], capture_output=True, text=True, timeout=600,
-                          env=environment)
+    from threadpoolctl import threadpool_limits
+
+    with threadpool_limits(limits=1):
+        return inprocess_cli.run(*args)
 
 
 def test_run_json_holds_the_drivetrain_modes_bearing_forces_and_heat():

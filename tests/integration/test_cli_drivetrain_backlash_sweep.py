@@ -5,20 +5,21 @@ summary, and the figure."""
 from __future__ import annotations
 
 import json
-import os
 import subprocess
-import sys
 from pathlib import Path
 
 import pytest
+
+import inprocess_cli
 
 DATA = Path(__file__).resolve().parents[1] / "data"
 
 
 def _cli(*args: str) -> subprocess.CompletedProcess:
-    environment = {**os.environ, "OMP_NUM_THREADS": "1", "OPENBLAS_NUM_THREADS": "1"}
-    return subprocess.run([sys.executable, "-m", "thermogear", *args], capture_output=True, text=True, timeout=600,
-                          env=environment)
+    from threadpoolctl import threadpool_limits
+
+    with threadpool_limits(limits=1):
+        return inprocess_cli.run(*args)
 
 
 def _backlash_case(tmp_path: Path) -> Path:

@@ -8,19 +8,21 @@ from __future__ import annotations
 import json
 import os
 import subprocess
-import sys
 from pathlib import Path
 
 import pytest
+
+import inprocess_cli
 
 TWO_SHAFTS = Path(__file__).resolve().parents[1] / "data" / "two_shaft_drivetrain.toml"
 PICTURES = ("drivetrain_layout", "drivetrain_modes", "drivetrain_campbell", "drivetrain_bearing_spectra")
 
 
 def _cli(*args: str) -> subprocess.CompletedProcess:
-    environment = {**os.environ, "OMP_NUM_THREADS": "1", "OPENBLAS_NUM_THREADS": "1"}
-    return subprocess.run([sys.executable, "-m", "thermogear", *args], capture_output=True, text=True, timeout=600,
-                          env=environment)
+    from threadpoolctl import threadpool_limits
+
+    with threadpool_limits(limits=1):
+        return inprocess_cli.run(*args)
 
 
 def test_run_plot_writes_the_four_pictures_and_replaces_them_only_with_force(tmp_path):

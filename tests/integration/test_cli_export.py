@@ -5,17 +5,18 @@ from __future__ import annotations
 
 import csv
 import subprocess
-import sys
 
 import numpy as np
 import pytest
+
+import inprocess_cli
 import xarray as xr
 
 import thermogear
 
 
 def thermogear_command(*arguments: str, cwd=None) -> subprocess.CompletedProcess:
-    return subprocess.run([sys.executable, "-m", "thermogear", *arguments], capture_output=True, text=True, cwd=cwd)
+    return inprocess_cli.run(*arguments, cwd=cwd)
 
 
 def read_csv(text: str) -> tuple[list[str], list[str], list[list[str]]]:

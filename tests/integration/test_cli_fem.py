@@ -3,11 +3,11 @@
 from __future__ import annotations
 
 import json
-import subprocess
-import sys
 
 import numpy as np
 import pytest
+
+import inprocess_cli
 
 KEYS = ("compliance_fe_vs_pem_percent", "x_te", "flank_temperature_c", "base_temperature_c", "bore_temperature_c",
         "expansion_fe_vs_analytical_percent", "refinement_change_percent")
@@ -16,8 +16,7 @@ KEYS = ("compliance_fe_vs_pem_percent", "x_te", "flank_temperature_c", "base_tem
 @pytest.fixture(scope="module")
 def run_json(tmp_path_factory):
     folder = tmp_path_factory.mktemp("plots")
-    result = subprocess.run([sys.executable, "-m", "thermogear", "fem", "luo2019", "--json", "--plot", str(folder)],
-                            capture_output=True, text=True)
+    result = inprocess_cli.run("fem", "luo2019", "--json", "--plot", str(folder))
     assert result.returncode == 0, result.stderr
     return json.loads(result.stdout), folder
 
@@ -38,7 +37,7 @@ def test_plots_are_written(run_json):
 
 
 def test_bad_case_exits_2():
-    result = subprocess.run([sys.executable, "-m", "thermogear", "fem", "no_such_case"], capture_output=True, text=True)
+    result = inprocess_cli.run("fem", "no_such_case")
     assert result.returncode == 2
 
 
@@ -70,8 +69,7 @@ def test_a_user_pair_is_told_what_x_te_and_the_drop_mean():
     from pathlib import Path
 
     user = Path(__file__).resolve().parents[1] / "data" / "user_pair.toml"
-    result = subprocess.run([sys.executable, "-m", "thermogear", "fem", str(user), "--no-refinement"],
-                            capture_output=True, text=True, timeout=600)
+    result = inprocess_cli.run("fem", str(user), "--no-refinement")
     assert result.returncode == 0, result.stderr
     notes = [line for line in result.stdout.splitlines() if line.startswith("note: ")]
     assert len(notes) == 3, notes
@@ -103,8 +101,7 @@ def test_a_cold_case_is_told_there_is_no_x_te_to_verify(tmp_path):
     path = tmp_path / "cold.toml"
     path.write_text(text.replace("operating_temperature_c = 60.0", "operating_temperature_c = -30.0"),
                     encoding="utf-8")
-    result = subprocess.run([sys.executable, "-m", "thermogear", "fem", str(path), "--no-refinement", "--json"],
-                            capture_output=True, text=True)
+    result = inprocess_cli.run("fem", str(path), "--no-refinement", "--json")
     assert result.returncode == 2, (result.stdout[-300:], result.stderr)
     message = " ".join(result.stderr.split())
     assert "no X_te to verify" in message and "thermal.model = 'luo2020'" in message and "Traceback" not in message

@@ -5,11 +5,11 @@ from __future__ import annotations
 import io
 import json
 import re
-import subprocess
-import sys
 
 import pytest
 from rich.console import Console
+
+import inprocess_cli
 
 from thermogear.cli.tables import dict_tables, format_value, split_unit
 
@@ -61,16 +61,14 @@ def test_nested_summary_gives_rows_and_a_matrix():
 
 
 def test_stiffness_thermal_prints_tables_not_dicts():
-    result = subprocess.run([sys.executable, "-m", "thermogear", "stiffness", "luo2019", "--thermal"],
-                            capture_output=True, text=True)
+    result = inprocess_cli.run("stiffness", "luo2019", "--thermal")
     assert result.returncode == 0, result.stderr
     text = result.stdout
     assert "{'" not in text and "':" not in text  # no Python dict reprs
     assert not re.search(r"\d\.\d{9,}", text)
     assert "N/(mm·μm)" in text and "°C" in text and "μm" in text
     # every number of the JSON's thermal block has a row: the drop at C to 5 digits
-    data = json.loads(subprocess.run([sys.executable, "-m", "thermogear", "stiffness", "luo2019", "--thermal",
-                                      "--json"], capture_output=True, text=True).stdout)
+    data = json.loads(inprocess_cli.run("stiffness", "luo2019", "--thermal", "--json").stdout)
     assert format_value(data["thermal"]["stiffness_drop_percent"]["C"]) in text
 
 
@@ -83,8 +81,7 @@ def test_lists_of_sentences_are_lines_and_every_number_has_a_unit(tmp_path):
     source = Path(__file__).resolve().parents[1] / "data" / "user_pair.toml"
     case.write_text(source.read_text(encoding="utf-8").replace("module_mm = 3.0", "module_mm = 3.0\n"
                                                                 "backlash_normal_um = 20.0"), encoding="utf-8")
-    result = subprocess.run([sys.executable, "-m", "thermogear", "stiffness", str(case), "--thermal"],
-                            capture_output=True, text=True, timeout=300)
+    result = inprocess_cli.run("stiffness", str(case), "--thermal")
     assert result.returncode == 0, result.stderr
     text = result.stdout
     table = [line for line in text.splitlines() if line[:1] in "┏┃┡│└"]

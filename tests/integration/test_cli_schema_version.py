@@ -4,9 +4,10 @@ from __future__ import annotations
 
 import json
 import subprocess
-import sys
 
 import pytest
+
+import inprocess_cli
 
 import thermogear
 from thermogear.schema import CaseFile
@@ -14,7 +15,7 @@ from thermogear.schema.reference import case_file_sections
 
 
 def thermogear_command(*arguments: str) -> subprocess.CompletedProcess:
-    return subprocess.run([sys.executable, "-m", "thermogear", *arguments], capture_output=True, text=True)
+    return inprocess_cli.run(*arguments)
 
 
 def test_version_prints_the_package_version():

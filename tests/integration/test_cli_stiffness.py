@@ -4,17 +4,17 @@ from __future__ import annotations
 
 import json
 import subprocess
-import sys
 
 import pytest
+
+import inprocess_cli
 
 KEYS = ("contact_ratio", "centre_distance_mm", "mesh_period_s", "path_mm", "gamma", "pair_stiffness_n_per_mm_um",
         "mesh_stiffness_n_per_mm_um", "iso6336")
 
 
 def run(*arguments: str) -> subprocess.CompletedProcess:
-    return subprocess.run([sys.executable, "-m", "thermogear", "stiffness", *arguments], capture_output=True,
-                          text=True)
+    return inprocess_cli.run("stiffness", *arguments)
 
 
 @pytest.fixture(scope="module")

@@ -4,17 +4,17 @@ from __future__ import annotations
 
 import json
 import subprocess
-import sys
 from pathlib import Path
 
 import pytest
+
+import inprocess_cli
 
 from thermogear.case import parameter_set_path
 
 
 def run(*arguments: str, cwd: Path | None = None) -> subprocess.CompletedProcess:
-    return subprocess.run([sys.executable, "-m", "thermogear", *arguments], capture_output=True, text=True,
-                          timeout=120, cwd=cwd)
+    return inprocess_cli.run(*arguments, cwd=cwd)
 
 
 @pytest.fixture(scope="module")

@@ -4,16 +4,16 @@ from __future__ import annotations
 
 import json
 import subprocess
-import sys
 
 import numpy as np
 import pytest
+
+import inprocess_cli
 from scipy.io import wavfile
 
 
 def run(*arguments: str) -> subprocess.CompletedProcess:
-    return subprocess.run([sys.executable, "-m", "thermogear", "vibration", *arguments], capture_output=True,
-                          text=True, timeout=120)
+    return inprocess_cli.run("vibration", *arguments)
 
 
 @pytest.fixture(scope="module")

@@ -5,10 +5,11 @@ from __future__ import annotations
 
 import json
 import subprocess
-import sys
 from pathlib import Path
 
 import pytest
+
+import inprocess_cli
 
 from thermogear.case import load_case
 
@@ -18,7 +19,7 @@ USER_PAIR = DATA / "user_pair.toml"
 
 
 def _cli(*args: str) -> subprocess.CompletedProcess:
-    return subprocess.run([sys.executable, "-m", "thermogear", *args], capture_output=True, text=True, timeout=300)
+    return inprocess_cli.run(*args)
 
 
 def test_a_case_without_temperature_has_the_gears_at_the_oil_temperature():

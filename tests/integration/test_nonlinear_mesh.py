@@ -3,12 +3,12 @@
 from __future__ import annotations
 
 import json
-import subprocess
-import sys
 import warnings
 
 import numpy as np
 import pytest
+
+import inprocess_cli
 
 from thermogear.case import load_case
 from thermogear.simulation import Simulation
@@ -69,8 +69,7 @@ def test_speed_sweep_through_the_primary_resonance_shows_hysteresis(nonlinear_lu
 
 
 def _cli(*arguments):
-    return subprocess.run([sys.executable, "-m", "thermogear", *arguments], capture_output=True, text=True,
-                          timeout=300)
+    return inprocess_cli.run(*arguments)
 
 
 def test_sweep_cli_writes_both_directions_and_refuses_a_bad_one(tmp_path, nonlinear_luo):

@@ -5,11 +5,11 @@ pair never shows them. The numbers shown are the paper table's."""
 from __future__ import annotations
 
 import json
-import subprocess
-import sys
 from pathlib import Path
 
 import pytest
+
+import inprocess_cli
 
 import thermogear
 from thermogear.report.paper_table import row
@@ -26,8 +26,7 @@ def renamed(tmp_path_factory) -> Path:
 
 
 def _damping_json(case: str) -> dict:
-    result = subprocess.run([sys.executable, "-m", "thermogear", "damping", case, "--json"], capture_output=True,
-                            text=True)
+    result = inprocess_cli.run("damping", case, "--json")
     assert result.returncode == 0, result.stderr
     return json.loads(result.stdout)
 

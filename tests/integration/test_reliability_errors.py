@@ -6,17 +6,18 @@ counted by its ``error:`` prefix.)"""
 from __future__ import annotations
 
 import subprocess
-import sys
 from pathlib import Path
 
 import numpy as np
 import pytest
 from scipy.io import wavfile
 
+import inprocess_cli
+
 
 def _thermogear(*args: str, cwd=None) -> subprocess.CompletedProcess:
-    return subprocess.run([sys.executable, "-m", "thermogear", *args], capture_output=True, text=True, timeout=300,
-                          cwd=cwd)
+    # in this process: an exception escaping the command (a traceback on the command line) fails the test
+    return inprocess_cli.run(*args, cwd=cwd)
 
 
 def _assert_one_error(result: subprocess.CompletedProcess, *words: str) -> None:

@@ -16,14 +16,15 @@ from pathlib import Path
 
 import pytest
 
+import inprocess_cli
+
 from thermogear.errors import CaseError
 from thermogear.ownership import MARKER, is_owned, write_marker
 from thermogear.report.writer import OutputFolder
 
 
 def _thermogear(*args: str, cwd=None) -> subprocess.CompletedProcess:
-    return subprocess.run([sys.executable, "-m", "thermogear", *args], capture_output=True, text=True, timeout=300,
-                          cwd=cwd, env={**os.environ, "COLUMNS": "200"})
+    return inprocess_cli.run(*args, cwd=cwd, env={**os.environ, "COLUMNS": "200"})
 
 
 def _foreign_folder(path: Path) -> dict[str, bytes]:

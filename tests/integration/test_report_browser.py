@@ -15,7 +15,8 @@ import pytest
 
 CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
 
-pytestmark = [pytest.mark.browser,
+# one test worker builds each report once for all the tests of the module (pytest-xdist --dist loadgroup)
+pytestmark = [pytest.mark.browser, pytest.mark.xdist_group(name="report-browser"),
               pytest.mark.skipif(CHROMIUM is None, reason="chromium is not installed (apt-get install -y chromium)")]
 
 _CHECK = ("<script>window.addEventListener('load',function(){var im=document.images,ok=0,bad=[];"

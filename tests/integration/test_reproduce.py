@@ -13,11 +13,16 @@ from pathlib import Path
 
 import pytest
 
+import inprocess_cli
+
 import thermogear
 from thermogear.report.paper_table import PAPER_ROWS
 
 FIGURES = ("fig3c", "fig4", "fig6", "fig7", "fig8", "fig9", "fig10", "fig11", "fig12", "fig15")
 FIELDS = ("quantity", "paper", "thermogear", "unit", "deviation", "tolerance", "within", "note", "status", "reason")
+# one test worker runs the module, so that the README command runs once for the tests of its output (pytest-xdist
+# --dist loadgroup)
+pytestmark = pytest.mark.xdist_group(name="reproduce-default-run")
 
 
 def _command(*args: str) -> list[str]:
@@ -106,8 +111,7 @@ def test_a_folder_thermogear_did_not_write_is_not_overwritten(tmp_path):
     out = tmp_path / "mine"
     out.mkdir()
     (out / "summary.json").write_text("my own", encoding="utf-8")
-    result = subprocess.run(_command("reproduce", "luo2019", "--out", str(out), "--quiet"), capture_output=True,
-                            text=True, timeout=120)
+    result = inprocess_cli.run("reproduce", "luo2019", "--out", str(out), "--quiet")
     assert result.returncode == 2
     assert "did not write" in result.stderr
     assert (out / "summary.json").read_text(encoding="utf-8") == "my own"
@@ -150,7 +154,7 @@ def test_sigterm_leaves_no_output(tmp_path):
 
 
 def test_unknown_paper_is_refused():
-    result = subprocess.run(_command("reproduce", "luo2018"), capture_output=True, text=True, timeout=120)
+    result = inprocess_cli.run("reproduce", "luo2018")
     assert result.returncode == 2
     assert "luo2019" in result.stderr
 

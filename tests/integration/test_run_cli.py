@@ -12,6 +12,8 @@ from types import SimpleNamespace
 
 import pytest
 
+import inprocess_cli
+
 from thermogear.report.evaluate import model_messages
 
 KEYS = ("kv", "max_pair_load_n_per_mm", "max_system_load_ratio", "equilibrium_um", "amplitude_um",
@@ -23,8 +25,7 @@ USER_PAIR = DATA / "user_pair.toml"  # a user's own pair under the default (ther
 
 
 def _run(*args: str, cwd=None) -> subprocess.CompletedProcess:
-    return subprocess.run([sys.executable, "-m", "thermogear", "run", *args], capture_output=True, text=True,
-                          timeout=300, cwd=cwd)
+    return inprocess_cli.run("run", *args, cwd=cwd)
 
 
 def test_json_has_every_key_per_model():

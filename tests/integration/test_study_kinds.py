@@ -90,6 +90,8 @@ def _gearbox_grid(out: Path, scheduler: str, workers=None) -> None:
 KINDS = ("grid", "branches", "multistart", "drivetrain-linear", "drivetrain-backlash", "gearbox-grid", "warmup")
 
 
+# one worker runs these five, so that they share the module's one scheduler and two workers
+@pytest.mark.xdist_group(name="study-kinds-cluster")
 @pytest.mark.parametrize("kind", KINDS)
 def test_serial_local_workers_and_a_scheduler_give_the_same_store(kind, tmp_path, cluster):
     import thermogear

@@ -6,10 +6,10 @@ down (their process groups are killed in a finally block).
 
 from __future__ import annotations
 
+import json
 import os
 import shutil
 import signal
-import socket
 import subprocess
 import sys
 import time
@@ -22,30 +22,38 @@ from thermogear.case import load_case
 from thermogear.sweep import Study, run_study
 
 
-def _free_port() -> int:
-    with socket.socket() as sock:
-        sock.bind(("127.0.0.1", 0))
-        return int(sock.getsockname()[1])
-
-
 def _dask_command() -> list[str]:
     executable = shutil.which("dask")
     return [executable] if executable else [sys.executable, "-m", "distributed.cli.dask_spec"]
 
 
-@pytest.fixture()
-def cluster():
-    """(address, processes) of a scheduler and two single-thread workers on this machine."""
+def _scheduler_address(scheduler_file, scheduler: subprocess.Popen, deadline: float) -> str:
+    """The address the scheduler wrote into its scheduler file (it chose a free port itself: --port 0)."""
+    while True:
+        try:
+            return str(json.loads(scheduler_file.read_text(encoding="utf-8"))["address"])
+        except (OSError, ValueError, KeyError):
+            if scheduler.poll() is not None or time.monotonic() > deadline:
+                raise RuntimeError("the dask scheduler wrote no address") from None
+            time.sleep(0.2)
+
+
+@pytest.fixture(scope="module")
+def cluster(tmp_path_factory):
+    """(address, processes) of a scheduler and two single-thread workers on this machine, one for the tests of a
+    module (their stores do not depend on what ran on the workers before). Ports and dashboard: the scheduler picks
+    a free port itself and starts no dashboard, so that test workers running in parallel cannot collide."""
     if shutil.which("dask") is None:
         pytest.skip("the `dask` command line is not installed")
-    port = _free_port()
-    address = f"tcp://127.0.0.1:{port}"
+    scheduler_file = tmp_path_factory.mktemp("dask") / "scheduler.json"
     env = {**os.environ, "PYTHONWARNINGS": "ignore"}
-    processes = [subprocess.Popen(["dask", "scheduler", "--host", "127.0.0.1", "--port", str(port),
-                                   "--dashboard-address", f"127.0.0.1:{_free_port()}"],
+    processes = [subprocess.Popen(["dask", "scheduler", "--host", "127.0.0.1", "--port", "0", "--no-dashboard",
+                                   "--scheduler-file", str(scheduler_file)],
                                   stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, start_new_session=True,
                                   env=env)]
     try:
+        deadline = time.monotonic() + 45
+        address = _scheduler_address(scheduler_file, processes[0], deadline)
         for _ in range(2):
             processes.append(subprocess.Popen(["dask", "worker", address, "--nthreads", "1", "--nworkers", "1",
                                                "--host", "127.0.0.1", "--no-dashboard"],
@@ -53,7 +61,6 @@ def cluster():
                                               start_new_session=True, env=env))
         from distributed import Client
 
-        deadline = time.monotonic() + 45
         while True:
             try:
                 with Client(address, timeout="5s") as client:

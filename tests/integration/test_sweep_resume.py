@@ -18,6 +18,7 @@ import numpy as np
 import pytest
 import zarr
 
+import inprocess_cli
 from thermogear.sweep.store import open_result
 
 STUDY = ["luo2019", "--vary", "speed_rpm=1000:9000:90", "--vary", "torque_nm=200,300,400", "--chunk-points", "6",
@@ -95,16 +96,14 @@ def test_killed_and_resumed_sweep_equals_uninterrupted(tmp_path):
 
 def test_resume_refuses_another_study(tmp_path):
     out = tmp_path / "a.zarr"
-    base = [sys.executable, "-m", "thermogear", "sweep", "luo2019", "--out", str(out), "--scheduler", "serial",
-            "--no-progress"]
-    first = subprocess.run([*base, "--vary", "speed_rpm=1000,2000"], capture_output=True, text=True, timeout=120)
+    base = ["sweep", "luo2019", "--out", str(out), "--scheduler", "serial", "--no-progress"]
+    first = inprocess_cli.run(*base, "--vary", "speed_rpm=1000,2000")
     assert first.returncode == 0, first.stderr
-    again = subprocess.run([*base, "--vary", "speed_rpm=1000,2000"], capture_output=True, text=True, timeout=120)
+    again = inprocess_cli.run(*base, "--vary", "speed_rpm=1000,2000")
     assert again.returncode == 2 and "--resume" in again.stderr
-    other = subprocess.run([*base, "--vary", "speed_rpm=1000,3000", "--resume"], capture_output=True, text=True,
-                           timeout=120)
+    other = inprocess_cli.run(*base, "--vary", "speed_rpm=1000,3000", "--resume")
     assert other.returncode == 2 and "same study" in other.stderr
-    same = subprocess.run([*base, "--resume"], capture_output=True, text=True, timeout=120)
+    same = inprocess_cli.run(*base, "--resume")
     assert same.returncode == 0 and "0 computed, 1 kept" in " ".join(same.stdout.split()), same.stdout
 
 
