@@ -166,6 +166,24 @@ def test_the_thermal_stiffness_of_a_helical_pair_follows_e_of_t():
     assert thermal.mean_mesh_stiffness / elastic.mean_mesh_stiffness == pytest.approx(ratio, rel=0.01)
 
 
+def test_a_models_period_is_the_same_from_its_cache_at_every_speed_and_load():
+    """What a helical model's period keeps from call to call (the slices' stiffness and gaps, the face integral)
+    depends on neither speed nor load: a model asked at several operating points gives, at each, the state of a
+    model asked only there, to the bit; a caller changing its state's arrays changes no later state."""
+    case = load_case("fzg_h501")
+    for model in ("elastic", "thermal"):
+        reused = MeshModel(case, model)
+        for speed, load in ((2175.0, 3990.3), (900.0, 1500.0), (4000.0, 9000.0)):
+            state = reused.state(speed, load, points_per_period=64)
+            fresh = MeshModel(case, model).state(speed, load, points_per_period=64)
+            for name in ("pair_stiffness", "mesh_damping", "pair_deviation"):
+                np.testing.assert_array_equal(getattr(state, name), getattr(fresh, name), err_msg=name)
+            state.pair_stiffness[...] = 1.0
+        np.testing.assert_array_equal(reused.state(900.0, 1500.0, points_per_period=64).pair_stiffness,
+                                      MeshModel(case, model).state(900.0, 1500.0, points_per_period=64)
+                                      .pair_stiffness)
+
+
 # ------------------------------------------------------------------------------------------------ commands
 def test_stiffness_of_a_helical_pair_is_the_slice_model_beside_iso():
     """stiffness --json: K_t over the cycle from the slice model, the ISO values of the helical pair (not its

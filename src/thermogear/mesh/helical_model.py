@@ -32,10 +32,13 @@ approximation: a helical contact line spans the path, so μ is averaged along it
 from __future__ import annotations
 
 import math
+import threading
+import weakref
 from dataclasses import dataclass, replace
+
 import numpy as np
 
-from thermogear.helical.face_load import FaceLoad, slice_loads, thermal_lead_deviation
+from thermogear.helical.face_load import FaceLoad, SliceContacts, thermal_lead_deviation
 from thermogear.helical.geometry import HelicalPair
 from thermogear.helical.slices import DEFAULT_SLICES, contact_stiffness, helical_mesh_stiffness
 from thermogear.mesh.state import MeshState, mesh_state_from_arrays
@@ -104,23 +107,58 @@ def _lead_gap(mesh_model: MeshModel, helical: HelicalPair, z: np.ndarray) -> np.
                                   (mesh.gears[0].expansion_per_k, mesh.gears[1].expansion_per_k))
 
 
-def helical_mesh_period(mesh_model: MeshModel, load: float, points: int, slices: int = DEFAULT_SLICES,
-                        always_face: bool = False, deviations: bool = True) -> HelicalMeshPeriod:
-    """The period of ``mesh_model``'s case at F_bt = ``load`` [N] on ``points`` intervals (each at its midpoint;
-    module docstring). ``always_face`` solves the load along the face even without deviations (for the report);
-    ``deviations=False`` leaves the model's deviations out (the stiffness of the flanks as they are)."""
-    if not deviations:
-        helical = operating_helical_pair(mesh_model)
-        scale = _stiffness_scale(mesh_model)
-        phase = (np.arange(points) + 0.5) / points * helical.transverse.base_pitch
-        total = scale * helical_mesh_stiffness(helical, mesh_model.case.material, phase).stiffness
-        return HelicalMeshPeriod(helical, phase, load, total, load / total, None, scale)
+@dataclass(frozen=True, eq=False)
+class _PeriodContacts:
+    """What a model's period on given phases needs that changes with neither speed nor load (computed once per
+    model: :func:`_cached`): the operating pair, the phases [m], the E(T) factor, and either the exact face
+    integral K_t (``integral``) or the slices in contact (``z``, their stiffness ×scale and gap, prepared for the
+    solve at any load in ``contacts``; ``gap_free`` where no slice has a deviation)."""
+
+    helical: HelicalPair
+    phase: np.ndarray
+    scale: float
+    integral: np.ndarray | None = None
+    z: np.ndarray | None = None
+    lines_by_slices: tuple[int, int] | None = None
+    contacts: SliceContacts | None = None
+    gap_free: bool = True
+
+
+_CACHE: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
+_CACHE_LOCK = threading.Lock()
+
+
+def _cached(mesh_model: MeshModel, key: tuple, compute):
+    """``compute()`` once per mesh model and ``key`` (a model's geometry, material and temperatures never change:
+    it is frozen). Threads of one sweep may compute the same entry twice; both are equal."""
+    with _CACHE_LOCK:
+        entries = _CACHE.setdefault(mesh_model, {})
+        if key in entries:
+            return entries[key]
+    value = compute()
+    with _CACHE_LOCK:
+        return _CACHE.setdefault(mesh_model, {}).setdefault(key, value)
+
+
+def _frozen(array: np.ndarray) -> np.ndarray:
+    array.setflags(write=False)
+    return array
+
+
+def _integral_contacts(mesh_model: MeshModel, points: int) -> _PeriodContacts:
+    helical = operating_helical_pair(mesh_model)
+    scale = _stiffness_scale(mesh_model)
+    phase = (np.arange(points) + 0.5) / points * helical.transverse.base_pitch
+    total = scale * helical_mesh_stiffness(helical, mesh_model.case.material, phase).stiffness
+    return _PeriodContacts(helical, _frozen(phase), scale, integral=_frozen(total))
+
+
+def _slice_contacts(mesh_model: MeshModel, points: int, slices: int) -> _PeriodContacts:
     helical = operating_helical_pair(mesh_model)
     transverse = helical.transverse
     scale = _stiffness_scale(mesh_model)
-    material = mesh_model.case.material
     phase = (np.arange(points) + 0.5) / points * transverse.base_pitch
-    z, stiffness = contact_stiffness(helical, material, phase, slices)
+    z, stiffness = contact_stiffness(helical, mesh_model.case.material, phase, slices)
     stiffness = scale * stiffness
     lead = _lead_gap(mesh_model, helical, z)
     entries_along_path = _slice_positions(helical, phase, z)
@@ -130,20 +168,39 @@ def helical_mesh_period(mesh_model: MeshModel, load: float, points: int, slices:
     if inside.any():
         roll = np.clip(points_on_path["A"] + entries_along_path[inside], points_on_path["A"], points_on_path["E"])
         profile[inside] = mesh_model.pair_deviation_at(roll)
-    gap = profile + lead
-    if not np.any(gap) and not always_face:
-        total = scale * helical_mesh_stiffness(helical, material, phase).stiffness
-        return HelicalMeshPeriod(helical, phase, load, total, load / total, None, scale)
-    approach = np.empty(points)
-    engaged = np.empty(points)
-    line_load = np.empty((points, z.size))
-    width = helical.face_width / z.size
-    for index in range(points):
-        approach[index], carried = slice_loads(stiffness[index], gap[index], load)
-        engaged[index] = float(np.sum(np.where(carried > 0.0, stiffness[index].ravel(), 0.0)))
-        line_load[index] = carried.reshape(stiffness.shape[1:]).sum(axis=0) / width
-    face = FaceLoad(z, phase, line_load, approach)
-    return HelicalMeshPeriod(helical, phase, load, engaged, approach, face, scale)
+    gap = np.broadcast_to(profile + lead, stiffness.shape)
+    contacts = SliceContacts.prepare(stiffness.reshape(points, -1), gap.reshape(points, -1))
+    return _PeriodContacts(helical, _frozen(phase), scale, z=_frozen(z), lines_by_slices=stiffness.shape[1:],
+                           contacts=contacts, gap_free=not np.any(gap))
+
+
+def _integral_period(mesh_model: MeshModel, load: float, points: int) -> HelicalMeshPeriod:
+    contacts = _cached(mesh_model, ("integral", points), lambda: _integral_contacts(mesh_model, points))
+    total = contacts.integral.copy()
+    return HelicalMeshPeriod(contacts.helical, contacts.phase.copy(), load, total, load / total, None,
+                             contacts.scale)
+
+
+def helical_mesh_period(mesh_model: MeshModel, load: float, points: int, slices: int = DEFAULT_SLICES,
+                        always_face: bool = False, deviations: bool = True) -> HelicalMeshPeriod:
+    """The period of ``mesh_model``'s case at F_bt = ``load`` [N] on ``points`` intervals (each at its midpoint;
+    module docstring). ``always_face`` solves the load along the face even without deviations (for the report);
+    ``deviations=False`` leaves the model's deviations out (the stiffness of the flanks as they are).
+
+    What depends on neither speed nor load (the slices' stiffness and gaps on every contact line, sorted for the
+    solve; the face integral) is computed once per model and number of points; a call solves every mesh position
+    at once for its load."""
+    if not deviations:
+        return _integral_period(mesh_model, load, points)
+    contacts = _cached(mesh_model, ("slices", points, slices), lambda: _slice_contacts(mesh_model, points, slices))
+    if contacts.gap_free and not always_face:
+        return _integral_period(mesh_model, load, points)
+    approach, carried = contacts.contacts.solve(load)
+    engaged = np.sum(np.where(carried > 0.0, contacts.contacts.stiffness, 0.0), axis=-1)
+    width = contacts.helical.face_width / contacts.z.size
+    line_load = carried.reshape((points,) + contacts.lines_by_slices).sum(axis=1) / width
+    face = FaceLoad(contacts.z, contacts.phase, line_load, approach)
+    return HelicalMeshPeriod(contacts.helical, contacts.phase.copy(), load, engaged, approach, face, contacts.scale)
 
 
 def _slice_positions(helical: HelicalPair, phase: np.ndarray, z: np.ndarray) -> np.ndarray:
