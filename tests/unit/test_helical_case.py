@@ -208,6 +208,7 @@ def test_the_report_draws_and_tables_the_helical_pair():
     import matplotlib.pyplot as plt
 
     from thermogear.orchestrator import Orchestrator
+    from thermogear.report.figures import legends_below
     from thermogear.report.helical_section import helical_figure, helical_section
 
     summary = Orchestrator(load_case("fzg_h501"), ("elastic", "thermal")).thermoelastic()
@@ -217,6 +218,9 @@ def test_the_report_draws_and_tables_the_helical_pair():
     assert "Helical pair" in page and "face load factor" in page
     figure = helical_figure(helical)
     assert len(figure.axes) == 5  # four panels and the temperature's twin axis
+    legends_below(figure)  # as the report saves it: the temperature's line is named in the legend below
+    assert [text.get_text() for text in figure.legends[0].get_texts()] == ["elastic (cold)", "thermo-elastic (hot)",
+                                                                          "ΔT (right axis)"]
     plt.close(figure)
     assert helical_section(Orchestrator(load_case("fzg_type_c"), ("elastic", "thermal")).thermoelastic()) == ""
 
