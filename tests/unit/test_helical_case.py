@@ -184,6 +184,18 @@ def test_a_models_period_is_the_same_from_its_cache_at_every_speed_and_load():
                                       .pair_stiffness)
 
 
+def test_a_tip_relief_gives_the_elastic_helical_mesh_its_deviation():
+    """The elastic model of a helical pair solves the load along the face only where there are deviations: none
+    for fzg_h501 as built (the exact face integral, e = 0), a tip relief's for the same pair with one (the
+    transverse section's relief at each slice's place on the path)."""
+    case = load_case("fzg_h501")
+    plain = MeshModel(case, "elastic").state(points_per_period=64)
+    assert not np.any(plain.pair_deviation)
+    relieved = case.with_changes(**{"gears.pinion.tip_relief_um": 10.0, "gears.pinion.tip_relief_length_mm": 1.0})
+    state = MeshModel(relieved, "elastic").state(points_per_period=64)
+    assert 0.0 < np.max(np.abs(state.pair_deviation)) < 10e-6
+
+
 # ------------------------------------------------------------------------------------------------ commands
 def test_stiffness_of_a_helical_pair_is_the_slice_model_beside_iso():
     """stiffness --json: K_t over the cycle from the slice model, the ISO values of the helical pair (not its

@@ -232,7 +232,9 @@ def helical_mesh_period(mesh_model: MeshModel, load: float, points: int, slices:
     What depends on neither speed nor load (the slices' gaps; their stiffness on every contact line, sorted for
     the solve; the face integral) is computed once per model and number of points, the slices' stiffness only
     where the face load is solved; a call solves every mesh position at once for its load."""
-    if not deviations:
+    if not deviations or (mesh_model.thermoelastic_mesh is None and not always_face):
+        # no deviation at all: the profile's and the lead's come from the thermo-elastic component only
+        # (MeshModel.pair_deviation_at, face_temperature_rise), which this model does not have
         return _integral_period(mesh_model, load, points)
     gaps = _cached(mesh_model, ("gaps", points, slices), lambda: _slice_gaps(mesh_model, points, slices))
     if gaps.gap_free and not always_face:
