@@ -1,9 +1,20 @@
-"""Benchmark: the mesh stiffness of a helical pair over one mesh period (the slice model integrated exactly over the face, normal
-section) against the spur pair's (the mesh model's primitives: one pair-stiffness table, the pairs in contact
-summed), both cold (the PEM tables computed) and warm (the tables cached), in the same run.
+"""Benchmark: the mesh stiffness of a helical pair over one mesh period against the spur pair's, in the same run.
 
-Run: python benchmarks/bench_helical.py [POINTS]
-Writes benchmarks/results/bench_helical.json. The issue's target: helical ≤ 10× the spur cost.
+Three figures, each a ratio helical / spur (the issue's target: helical ≤ 10× the spur cost):
+
+1. the library functions: the slice model integrated exactly over the face (normal section) against the spur
+   pair's primitives (one pair-stiffness table, the pairs in contact summed), cold (the PEM tables computed) and
+   warm (the tables cached);
+2. through the mesh model the commands use: ``MeshModel(case, model).state(...)`` of the built-in helical set
+   ``fzg_h501`` (its thermal model carries the lead distortion of a 10 K face gradient, so its period is the face
+   load solved at every mesh position) against the same case cut straight (β = 0, no face gradient), for both
+   models; cold = a new mesh model with every stiffness table dropped, warm = the same mesh model at another speed
+   and load on each call (what a sweep or a run's second state asks);
+3. a 20-point linear speed sweep of both models (``Study`` → ``run_study``, serial, into a zarr store) of the same
+   two cases, ``dynamics.mesh = "linear"``.
+
+Run: python benchmarks/bench_helical.py [--quick]
+Writes benchmarks/results/bench_helical.json.
 """
 
 from __future__ import annotations
@@ -11,7 +22,10 @@ from __future__ import annotations
 import json
 import math
 import platform
+import shutil
 import sys
+import tempfile
+import time
 import warnings
 from pathlib import Path
 
@@ -20,12 +34,14 @@ import numpy as np
 from thermogear.helical.geometry import HelicalPair
 from thermogear.helical.slices import helical_mesh_stiffness
 from thermogear.materials import Material
+from thermogear.mesh import helical_model
 from thermogear.mesh_cycle import MeshCycle
-from thermogear.stiffness import table
+from thermogear.stiffness import scaled_compliance, table
 from thermogear.stiffness.table import pair_stiffness_at
 from timing import wall_times
 
 STEEL = Material()
+RESULTS = Path(__file__).resolve().parent / "results"
 
 
 def spur_period(pair, points: int) -> np.ndarray:
@@ -41,33 +57,127 @@ def helical_period(helical, points: int) -> np.ndarray:
     return helical_mesh_stiffness(helical, STEEL, phase).stiffness
 
 
+def drop_tables() -> None:
+    """Every cached stiffness table and interpolant (the cold start of a new pair)."""
+    table.clear_cache()
+    scaled_compliance.clear_cache()
+    helical_model.clear_cache()
+
+
 def cold(function):
     def run():
-        table._table_with_warnings.cache_clear()
-        table._spline_set.cache_clear()
+        drop_tables()
         function()
     return run
 
 
-def main(points: int = 1024) -> dict:
-    warnings.simplefilter("ignore")
+def _ratio_row(spur_times, helical_times) -> dict:
+    spur, helical = float(np.min(spur_times)), float(np.min(helical_times))
+    return {"spur_s": spur, "helical_s": helical, "ratio": helical / spur}
+
+
+def library_functions(points: int, repeat: int) -> dict:
     spur = HelicalPair.create(27, 35, 3e-3, math.radians(20.0), 0.0, 25e-3, bore_radii=(15e-3, 20e-3)).transverse
     helical = HelicalPair.create(27, 35, 3e-3, math.radians(20.0), math.radians(15.0), 25e-3,
                                  bore_radii=(15e-3, 20e-3))
     rows = {}
     for label, wrap in (("cold", cold), ("warm", lambda function: function)):
-        spur_times = wall_times(wrap(lambda: spur_period(spur, points)), 5)
-        helical_times = wall_times(wrap(lambda: helical_period(helical, points)), 5)
-        rows[label] = {"spur_s": float(np.min(spur_times)), "helical_s": float(np.min(helical_times)),
-                       "ratio": float(np.min(helical_times) / np.min(spur_times))}
-        print(f"{label}: spur {rows[label]['spur_s'] * 1e3:.2f} ms, helical (face integral) "
+        rows[label] = _ratio_row(wall_times(wrap(lambda: spur_period(spur, points)), repeat),
+                                 wall_times(wrap(lambda: helical_period(helical, points)), repeat))
+        print(f"library functions, {label}: spur {rows[label]['spur_s'] * 1e3:.2f} ms, helical (face integral) "
               f"{rows[label]['helical_s'] * 1e3:.2f} ms, ratio {rows[label]['ratio']:.2f}")
-    result = {"points_per_period": points, "rows": rows, "python": sys.version.split()[0],
-              "machine": platform.machine()}
-    out = Path(__file__).parent / "results" / "bench_helical.json"
-    out.write_text(json.dumps(result, indent=2) + "\n", encoding="utf-8")
+    return rows
+
+
+def cases():
+    from thermogear.case import load_case
+
+    helical = load_case("fzg_h501")
+    straight = helical.with_changes(**{"gears.helix_angle_deg": 0.0, "temperature.face_gradient_k": 0.0})
+    return helical, straight
+
+
+def mesh_model_states(repeat: int) -> dict:
+    """Figure 2: MeshModel.state of fzg_h501 against the case cut straight, both models, cold and warm."""
+    from thermogear.mesh.model import MeshModel
+
+    helical_case, straight_case = cases()
+    operating = [(1500.0 + 250.0 * index, 3000.0 + 200.0 * index) for index in range(repeat)]
+    rows = {}
+    for model in ("elastic", "thermal"):
+        def cold_state(case):
+            def run():
+                drop_tables()
+                MeshModel(case, model).state()
+            return run
+
+        def warm_states(case):
+            mesh = MeshModel(case, model)
+            mesh.state()
+            calls = iter(operating)
+            return lambda: mesh.state(*next(calls))
+
+        for label, make in (("cold", cold_state), ("warm", warm_states)):
+            spur_times = wall_times(make(straight_case), repeat)
+            helical_times = wall_times(make(helical_case), repeat)
+            rows[f"{model}, {label}"] = _ratio_row(spur_times, helical_times)
+            row = rows[f"{model}, {label}"]
+            print(f"MeshModel.state, {model}, {label}: straight {row['spur_s'] * 1e3:.2f} ms, fzg_h501 "
+                  f"{row['helical_s'] * 1e3:.2f} ms, ratio {row['ratio']:.2f}")
+    return rows
+
+
+def linear_sweeps(points: int) -> dict:
+    """Figure 3: a linear speed sweep of both models of both cases, serial, into a zarr store."""
+    from thermogear.sweep import Study, run_study
+
+    folder = Path(tempfile.mkdtemp(prefix="bench_helical_"))
+    seconds = {}
+    try:  # a first small study of another case imports and compiles what every study uses
+        from thermogear.case import load_case
+
+        warm_up = Study.define(load_case("luo2019").with_changes(**{"dynamics.mesh": "linear"}),
+                               ["speed_rpm=1000,2000"], model="both")
+        run_study(warm_up, folder / "warm_up.zarr", scheduler="serial", progress=False)
+        for label, case in zip(("helical", "spur"), cases()):
+            linear = case.with_changes(**{"dynamics.mesh": "linear"})
+            study = Study.define(linear, [f"speed_rpm=1000:4000:{points}"], model="both")
+            drop_tables()
+            start = time.perf_counter()
+            run = run_study(study, folder / f"{label}.zarr", scheduler="serial", progress=False)
+            seconds[label] = time.perf_counter() - start
+            kv = run.read("kv")
+            if not np.all(np.isfinite(kv)):
+                raise RuntimeError(f"the {label} sweep has points without a result: {kv}")
+    finally:
+        shutil.rmtree(folder, ignore_errors=True)
+    row = {"points": points, "models": 2, "spur_s": seconds["spur"], "helical_s": seconds["helical"],
+           "ratio": seconds["helical"] / seconds["spur"]}
+    print(f"linear sweep, {points} speeds × 2 models (cold tables): straight {row['spur_s']:.2f} s, fzg_h501 "
+          f"{row['helical_s']:.2f} s, ratio {row['ratio']:.2f}")
+    return row
+
+
+def main(quick: bool = False) -> dict:
+    warnings.simplefilter("ignore")
+    result = {"points_per_period": 1024,
+              "library_functions": library_functions(1024, 3 if quick else 5),
+              "mesh_model_state": mesh_model_states(3 if quick else 5),
+              "linear_sweep": linear_sweeps(20),
+              "python": sys.version.split()[0], "machine": platform.machine()}
+    result["rows"] = result["library_functions"]  # the earlier name of figure 1
+    figures = [(f"helical/spur mesh stiffness, library functions, {label}", row)
+               for label, row in result["library_functions"].items()]
+    figures += [(f"helical/spur MeshModel.state (fzg_h501 / cut straight), {label}", row)
+                for label, row in result["mesh_model_state"].items()]
+    figures.append(("helical/spur linear sweep, 20 speeds x 2 models (fzg_h501 / cut straight)",
+                    result["linear_sweep"]))
+    result["figures"] = [{"name": name, "value": row["helical_s"], "baseline": row["spur_s"],
+                          "ratio": row["ratio"], "unit": "s"} for name, row in figures]
+    RESULTS.mkdir(exist_ok=True)
+    (RESULTS / "bench_helical.json").write_text(json.dumps(result, indent=2) + "\n", encoding="utf-8")
     return result
 
 
 if __name__ == "__main__":
-    main(int(sys.argv[1]) if len(sys.argv) > 1 else 1024)
+    main("--quick" in sys.argv[1:])

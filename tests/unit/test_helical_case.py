@@ -166,6 +166,36 @@ def test_the_thermal_stiffness_of_a_helical_pair_follows_e_of_t():
     assert thermal.mean_mesh_stiffness / elastic.mean_mesh_stiffness == pytest.approx(ratio, rel=0.01)
 
 
+def test_a_models_period_is_the_same_from_its_cache_at_every_speed_and_load():
+    """What a helical model's period keeps from call to call (the slices' stiffness and gaps, the face integral)
+    depends on neither speed nor load: a model asked at several operating points gives, at each, the state of a
+    model asked only there, to the bit; a caller changing its state's arrays changes no later state."""
+    case = load_case("fzg_h501")
+    for model in ("elastic", "thermal"):
+        reused = MeshModel(case, model)
+        for speed, load in ((2175.0, 3990.3), (900.0, 1500.0), (4000.0, 9000.0)):
+            state = reused.state(speed, load, points_per_period=64)
+            fresh = MeshModel(case, model).state(speed, load, points_per_period=64)
+            for name in ("pair_stiffness", "mesh_damping", "pair_deviation"):
+                np.testing.assert_array_equal(getattr(state, name), getattr(fresh, name), err_msg=name)
+            state.pair_stiffness[...] = 1.0
+        np.testing.assert_array_equal(reused.state(900.0, 1500.0, points_per_period=64).pair_stiffness,
+                                      MeshModel(case, model).state(900.0, 1500.0, points_per_period=64)
+                                      .pair_stiffness)
+
+
+def test_a_tip_relief_gives_the_elastic_helical_mesh_its_deviation():
+    """The elastic model of a helical pair solves the load along the face only where there are deviations: none
+    for fzg_h501 as built (the exact face integral, e = 0), a tip relief's for the same pair with one (the
+    transverse section's relief at each slice's place on the path)."""
+    case = load_case("fzg_h501")
+    plain = MeshModel(case, "elastic").state(points_per_period=64)
+    assert not np.any(plain.pair_deviation)
+    relieved = case.with_changes(**{"gears.pinion.tip_relief_um": 10.0, "gears.pinion.tip_relief_length_mm": 1.0})
+    state = MeshModel(relieved, "elastic").state(points_per_period=64)
+    assert 0.0 < np.max(np.abs(state.pair_deviation)) < 10e-6
+
+
 # ------------------------------------------------------------------------------------------------ commands
 def test_stiffness_of_a_helical_pair_is_the_slice_model_beside_iso():
     """stiffness --json: K_t over the cycle from the slice model, the ISO values of the helical pair (not its
@@ -190,6 +220,7 @@ def test_the_report_draws_and_tables_the_helical_pair():
     import matplotlib.pyplot as plt
 
     from thermogear.orchestrator import Orchestrator
+    from thermogear.report.figures import legends_below
     from thermogear.report.helical_section import helical_figure, helical_section
 
     summary = Orchestrator(load_case("fzg_h501"), ("elastic", "thermal")).thermoelastic()
@@ -199,6 +230,9 @@ def test_the_report_draws_and_tables_the_helical_pair():
     assert "Helical pair" in page and "face load factor" in page
     figure = helical_figure(helical)
     assert len(figure.axes) == 5  # four panels and the temperature's twin axis
+    legends_below(figure)  # as the report saves it: the temperature's line is named in the legend below
+    assert [text.get_text() for text in figure.legends[0].get_texts()] == ["elastic (cold)", "thermo-elastic (hot)",
+                                                                          "ΔT (right axis)"]
     plt.close(figure)
     assert helical_section(Orchestrator(load_case("fzg_type_c"), ("elastic", "thermal")).thermoelastic()) == ""
 

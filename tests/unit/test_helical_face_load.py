@@ -11,7 +11,7 @@ import pytest
 
 from thermogear.errors import ExtrapolationWarning, ModelAssumptionWarning
 from thermogear.helical.face_load import (end_relief, face_load, helix_slope_deviation, iso_face_load_factor,
-                                          lead_crowning, slice_loads, thermal_lead_deviation)
+                                          lead_crowning, slice_loads, thermal_lead_deviation, SliceContacts)
 from thermogear.helical.geometry import HelicalPair
 from thermogear.helical.slices import contact_stiffness
 from thermogear.materials import Material
@@ -63,6 +63,31 @@ def test_the_load_balances():
     touching = loads > 0.0
     np.testing.assert_allclose(loads[touching], stiffness[touching] * (delta - gap[touching]), rtol=1e-12)
     assert np.all(gap[~touching] >= delta - 1e-18)
+
+
+def test_all_rows_at_once_solve_each_row_and_balance_every_load():
+    """SliceContacts (prepared once, solved per load) against the equilibrium of each row: rows with slices that
+    cannot touch (k = 0), equal gaps, a row touching on one slice only; the load balances and no slice pulls."""
+    rng = np.random.default_rng(3)
+    stiffness = rng.uniform(0.0, 1e8, (6, 40))
+    stiffness[rng.uniform(size=stiffness.shape) < 0.3] = 0.0
+    stiffness[5] = 0.0
+    stiffness[5, 7] = 2e8
+    gap = rng.uniform(-5e-6, 5e-6, (6, 40))
+    gap[1, ::2] = 1e-6  # ties
+    prepared = SliceContacts.prepare(stiffness, gap)
+    for load in (10.0, 3000.0, 5e5):
+        delta, loads = prepared.solve(load)
+        np.testing.assert_allclose(loads.sum(axis=1), load, rtol=1e-12)
+        assert np.all(loads >= 0.0) and np.all(loads[stiffness == 0.0] == 0.0)
+        touching = loads > 0.0
+        expected = (stiffness * (delta[:, None] - gap))[touching]
+        np.testing.assert_allclose(loads[touching], expected, rtol=1e-9)
+        idle = (stiffness > 0.0) & ~touching  # could touch but the approach does not reach their gap
+        assert np.all((gap - delta[:, None])[idle] >= -1e-15)
+        assert delta[5] == pytest.approx(gap[5, 7] + load / 2e8, rel=1e-12)
+    with pytest.raises(ValueError, match="at least one slice"):
+        SliceContacts.prepare(np.zeros((2, 3)), np.zeros((2, 3)))
 
 
 # ------------------------------------------------------------------------------------- the helical pair in time

@@ -29,7 +29,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["slice_loads", "FaceLoad", "face_load", "helix_slope_deviation", "lead_crowning", "end_relief",
+__all__ = ["slice_loads", "SliceContacts", "FaceLoad", "face_load", "helix_slope_deviation", "lead_crowning", "end_relief",
            "thermal_lead_deviation", "iso_face_load_factor"]
 
 
@@ -37,18 +37,73 @@ def slice_loads(stiffness: np.ndarray, gap: np.ndarray, load: float) -> tuple[fl
     """(δ [m], the slices' loads [N]) of Σ k_i⟨δ − e_i⟩₊ = F (module docstring), solved exactly on the sorted
     gaps: between consecutive gaps the left side is linear in δ."""
     stiffness = np.asarray(stiffness, dtype=float).ravel()
-    gap = np.asarray(gap, dtype=float).ravel()
-    touching = stiffness > 0.0
-    if not np.any(touching) or not load > 0.0:
-        raise ValueError("slice_loads: a positive load needs at least one slice that can touch")
-    order = np.argsort(gap[touching])
-    k, e = stiffness[touching][order], gap[touching][order]
-    cumulative_k, cumulative_ke = np.cumsum(k), np.cumsum(k * e)
-    approach = (load + cumulative_ke) / cumulative_k  # δ if exactly the first m + 1 slices touch
-    upper = np.append(e[1:], np.inf)
-    m = int(np.argmax((approach >= e) & (approach <= upper)))
-    delta = float(approach[m])
-    return delta, stiffness * np.clip(delta - gap, 0.0, None) * touching
+    approach, carried = SliceContacts.prepare(stiffness[None, :], np.asarray(gap, dtype=float).ravel()[None, :]) \
+        .solve(load)
+    return float(approach[0]), carried[0]
+
+
+@dataclass(frozen=True, eq=False)
+class SliceContacts:
+    """Slices at many mesh positions (rows) prepared for :func:`slice_loads` at any load: what does not depend on
+    the load — each row's touching slices sorted by gap, the running sums Σk and Σke over them — is computed once
+    (:meth:`prepare`), and :meth:`solve` or :meth:`totals` take every row at once.
+
+    ``stiffness`` k and ``gap`` e (rows, slices) [N/m, m]; ``order`` each row's slices that can touch (k > 0) by
+    ascending gap, padded to the most any row has (the padding: k = 0, e = +∞); ``sorted_stiffness`` and
+    ``sorted_gap`` k and e in that order, ``upper`` the next sorted gap (+∞ after the last);
+    ``cumulative_stiffness`` and ``cumulative_moment`` Σk and Σke over the first m + 1 of them."""
+
+    stiffness: np.ndarray
+    gap: np.ndarray
+    order: np.ndarray
+    sorted_stiffness: np.ndarray
+    sorted_gap: np.ndarray
+    upper: np.ndarray
+    cumulative_stiffness: np.ndarray
+    cumulative_moment: np.ndarray
+
+    @classmethod
+    def prepare(cls, stiffness: np.ndarray, gap: np.ndarray) -> "SliceContacts":
+        stiffness = np.asarray(stiffness, dtype=float)
+        gap = np.broadcast_to(np.asarray(gap, dtype=float), stiffness.shape)
+        touching = stiffness > 0.0
+        counts = np.count_nonzero(touching, axis=-1)
+        if not np.all(counts > 0):
+            raise ValueError("slice_loads: a positive load needs at least one slice that can touch")
+        order = np.argsort(np.where(touching, gap, np.inf), axis=-1, kind="stable")[..., :int(counts.max())]
+        k = np.take_along_axis(stiffness, order, axis=-1)
+        inside = k > 0.0  # the padding (rows with fewer touching slices) has k = 0
+        e = np.where(inside, np.take_along_axis(gap, order, axis=-1), np.inf)
+        moment = np.where(inside, k * np.where(inside, e, 0.0), 0.0)
+        upper = np.concatenate([e[..., 1:], np.full(e.shape[:-1] + (1,), np.inf)], axis=-1)
+        return cls(stiffness, gap, order, k, e, upper, np.cumsum(k, axis=-1), np.cumsum(moment, axis=-1))
+
+    def approach(self, load: float) -> np.ndarray:
+        """δ [m] of each row at F = ``load`` [N]: with exactly the first m + 1 sorted slices touching,
+        δ = (F + Σke)/Σk, the m whose δ lies between its gap and the next one's."""
+        if not load > 0.0:
+            raise ValueError("slice_loads: a positive load needs at least one slice that can touch")
+        candidates = (load + self.cumulative_moment) / self.cumulative_stiffness
+        first = np.argmax((candidates >= self.sorted_gap) & (candidates <= self.upper), axis=-1)
+        return np.take_along_axis(candidates, first[..., None], axis=-1)[..., 0]
+
+    def solve(self, load: float) -> tuple[np.ndarray, np.ndarray]:
+        """(δ [m] of each row, the slices' loads k⟨δ − e⟩₊ [N], rows × slices) at F = ``load`` [N]."""
+        delta = self.approach(load)
+        touching = self.stiffness > 0.0
+        return delta, self.stiffness * np.clip(delta[..., None] - self.gap, 0.0, None) * touching
+
+    def totals(self, load: float, group: np.ndarray, groups: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """(δ [m], the stiffness of the slices that carry load [N/m], the load [N] of each group of slices,
+        rows × ``groups``) of each row at F = ``load`` [N], from the touching slices only; ``group`` the group
+        (0 … groups − 1) of each slice, e.g. its place across the face."""
+        delta = self.approach(load)
+        carried = self.sorted_stiffness * np.clip(delta[..., None] - self.sorted_gap, 0.0, None)
+        engaged = np.sum(np.where(carried > 0.0, self.sorted_stiffness, 0.0), axis=-1)
+        rows = np.arange(carried.shape[0])[:, None] * groups
+        per_group = np.bincount((rows + np.asarray(group)[self.order]).ravel(), weights=carried.ravel(),
+                                minlength=carried.shape[0] * groups)
+        return delta, engaged, per_group.reshape(carried.shape[0], groups)
 
 
 @dataclass(frozen=True)
@@ -91,12 +146,10 @@ def face_load(slice_stiffness: np.ndarray, z: np.ndarray, phase: np.ndarray, dev
     F_bt [N]."""
     stiffness = np.asarray(slice_stiffness, dtype=float)
     width = float(z[1] - z[0]) if len(z) > 1 else 1.0
-    gaps = np.broadcast_to(np.asarray(deviation, dtype=float), stiffness.shape[1:])
-    loads = np.empty((stiffness.shape[0], stiffness.shape[2]))
-    approach = np.empty(stiffness.shape[0])
-    for index in range(stiffness.shape[0]):
-        approach[index], carried = slice_loads(stiffness[index], gaps, load)
-        loads[index] = carried.reshape(stiffness.shape[1:]).sum(axis=0) / width
+    gaps = np.broadcast_to(np.asarray(deviation, dtype=float), stiffness.shape)
+    rows = stiffness.shape[0]
+    approach, carried = SliceContacts.prepare(stiffness.reshape(rows, -1), gaps.reshape(rows, -1)).solve(load)
+    loads = carried.reshape(stiffness.shape).sum(axis=1) / width
     return FaceLoad(np.asarray(z, dtype=float), np.asarray(phase, dtype=float), loads, approach)
 
 

@@ -32,10 +32,15 @@ approximation: a helical contact line spans the path, so μ is averaged along it
 from __future__ import annotations
 
 import math
+import threading
+import weakref
 from dataclasses import dataclass, replace
+from functools import lru_cache
+
 import numpy as np
 
-from thermogear.helical.face_load import FaceLoad, slice_loads, thermal_lead_deviation
+from thermogear import warning_scope
+from thermogear.helical.face_load import FaceLoad, SliceContacts, thermal_lead_deviation
 from thermogear.helical.geometry import HelicalPair
 from thermogear.helical.slices import DEFAULT_SLICES, contact_stiffness, helical_mesh_stiffness
 from thermogear.mesh.state import MeshState, mesh_state_from_arrays
@@ -44,7 +49,7 @@ from thermogear.mesh.state import MeshState, mesh_state_from_arrays
 MeshModel = object
 
 __all__ = ["HelicalMeshPeriod", "helical_mesh_period", "helical_model_state", "operating_helical_pair",
-           "face_temperature_rise"]
+           "face_temperature_rise", "clear_cache"]
 
 
 @dataclass(frozen=True)
@@ -104,46 +109,142 @@ def _lead_gap(mesh_model: MeshModel, helical: HelicalPair, z: np.ndarray) -> np.
                                   (mesh.gears[0].expansion_per_k, mesh.gears[1].expansion_per_k))
 
 
+@dataclass(frozen=True, eq=False)
+class _PeriodContacts:
+    """What a model's period on given phases needs that changes with neither speed nor load (computed once per
+    model: :func:`_cached`): the operating pair, the phases [m], the E(T) factor, and one of: the exact face
+    integral K_t (``integral``); the slices' gaps (``z`` the slice centres, ``gap`` the deviation of every slice
+    on every contact line (phases, lines, slices), ``gap_free`` where none has one); the slices prepared for the
+    solve at any load (``contacts``: their stiffness ×scale and gap)."""
+
+    helical: HelicalPair
+    phase: np.ndarray
+    scale: float
+    integral: np.ndarray | None = None
+    z: np.ndarray | None = None
+    gap: np.ndarray | None = None
+    gap_free: bool = True
+    contacts: SliceContacts | None = None
+
+
+_CACHE: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
+_CACHE_LOCK = threading.Lock()
+
+
+def _cached(mesh_model: MeshModel, key: tuple, compute):
+    """``compute()`` once per mesh model and ``key`` (a model's geometry, material and temperatures never change:
+    it is frozen). The warnings the computation raised (a stiffness table's extrapolation) are kept with the
+    value and raised again on every later call, as the stiffness tables do. Threads of one sweep may compute the
+    same entry twice; both are equal."""
+    with _CACHE_LOCK:
+        entry = _CACHE.setdefault(mesh_model, {}).get(key)
+    if entry is None:
+        with warning_scope.recorded() as caught:
+            value = compute()
+        with _CACHE_LOCK:
+            entry = _CACHE.setdefault(mesh_model, {}).setdefault(key, (value, warning_scope.kept(caught)))
+    warning_scope.raise_again(entry[1])
+    return entry[0]
+
+
+def _frozen(array: np.ndarray) -> np.ndarray:
+    array.setflags(write=False)
+    return array
+
+
+def _phases(helical: HelicalPair, points: int) -> np.ndarray:
+    return _frozen((np.arange(points) + 0.5) / points * helical.transverse.base_pitch)
+
+
+def _integral_contacts(mesh_model: MeshModel, points: int) -> _PeriodContacts:
+    helical = operating_helical_pair(mesh_model)
+    scale = _stiffness_scale(mesh_model)
+    phase = _phases(helical, points)
+    total = scale * helical_mesh_stiffness(helical, mesh_model.case.material, phase).stiffness
+    return _PeriodContacts(helical, phase, scale, integral=_frozen(total))
+
+
+def _slice_gaps(mesh_model: MeshModel, points: int, slices: int) -> _PeriodContacts:
+    """The gap of every slice on every contact line in the zone of action (where
+    :func:`~thermogear.helical.slices.contact_stiffness` gives it stiffness): the transverse section's profile
+    deviation at the slice's path position and the thermal lead distortion at its place across the face."""
+    helical = operating_helical_pair(mesh_model)
+    transverse = helical.transverse
+    phase = _phases(helical, points)
+    z = (np.arange(slices) + 0.5) * (helical.face_width / slices)
+    lead = _lead_gap(mesh_model, helical, z)
+    entries_along_path = _slice_positions(helical, phase, z)
+    fraction = entries_along_path / transverse.path_length
+    inside = (fraction >= 0.0) & (fraction <= 1.0)
+    points_on_path = transverse.path_points
+    profile = np.zeros(entries_along_path.shape)
+    if inside.any():
+        roll = np.clip(points_on_path["A"] + entries_along_path[inside], points_on_path["A"], points_on_path["E"])
+        profile[inside] = mesh_model.pair_deviation_at(roll)
+    gap = _frozen(np.ascontiguousarray(np.broadcast_to(profile + lead, profile.shape)))
+    return _PeriodContacts(helical, phase, _stiffness_scale(mesh_model), z=_frozen(z), gap=gap,
+                           gap_free=not np.any(gap))
+
+
+@lru_cache(maxsize=8)
+def _recorded_slice_stiffness(helical: HelicalPair, material, points: int, slices: int) -> tuple:
+    with warning_scope.recorded() as caught:
+        phase = _phases(helical, points)
+        z, stiffness = contact_stiffness(helical, material, phase, slices)
+    return (_frozen(z), _frozen(stiffness)), warning_scope.kept(caught)
+
+
+def _slice_stiffness(helical: HelicalPair, material, points: int, slices: int) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`~thermogear.helical.slices.contact_stiffness` at the period's phases, cached on its (frozen,
+    hashable) inputs as the spur pair's stiffness tables are: the mesh models of one pair at other speeds (the
+    points of a sweep, each its own case) share it. Its warnings are raised again on every call."""
+    value, kept = _recorded_slice_stiffness(helical, material, points, slices)
+    warning_scope.raise_again(kept)
+    return value
+
+
+def clear_cache() -> None:
+    """Drop the cached slice stiffness (tests, benchmarks, memory); what one mesh model keeps goes with it."""
+    _recorded_slice_stiffness.cache_clear()
+
+
+def _slice_contacts(mesh_model: MeshModel, points: int, slices: int) -> _PeriodContacts:
+    gaps = _cached(mesh_model, ("gaps", points, slices), lambda: _slice_gaps(mesh_model, points, slices))
+    z, stiffness = _slice_stiffness(gaps.helical, mesh_model.case.material, points, slices)
+    stiffness = gaps.scale * stiffness
+    contacts = SliceContacts.prepare(stiffness.reshape(points, -1), gaps.gap.reshape(points, -1))
+    return replace(gaps, contacts=contacts)
+
+
+def _integral_period(mesh_model: MeshModel, load: float, points: int) -> HelicalMeshPeriod:
+    contacts = _cached(mesh_model, ("integral", points), lambda: _integral_contacts(mesh_model, points))
+    total = contacts.integral.copy()
+    return HelicalMeshPeriod(contacts.helical, contacts.phase.copy(), load, total, load / total, None,
+                             contacts.scale)
+
+
 def helical_mesh_period(mesh_model: MeshModel, load: float, points: int, slices: int = DEFAULT_SLICES,
                         always_face: bool = False, deviations: bool = True) -> HelicalMeshPeriod:
     """The period of ``mesh_model``'s case at F_bt = ``load`` [N] on ``points`` intervals (each at its midpoint;
     module docstring). ``always_face`` solves the load along the face even without deviations (for the report);
-    ``deviations=False`` leaves the model's deviations out (the stiffness of the flanks as they are)."""
-    if not deviations:
-        helical = operating_helical_pair(mesh_model)
-        scale = _stiffness_scale(mesh_model)
-        phase = (np.arange(points) + 0.5) / points * helical.transverse.base_pitch
-        total = scale * helical_mesh_stiffness(helical, mesh_model.case.material, phase).stiffness
-        return HelicalMeshPeriod(helical, phase, load, total, load / total, None, scale)
-    helical = operating_helical_pair(mesh_model)
-    transverse = helical.transverse
-    scale = _stiffness_scale(mesh_model)
-    material = mesh_model.case.material
-    phase = (np.arange(points) + 0.5) / points * transverse.base_pitch
-    z, stiffness = contact_stiffness(helical, material, phase, slices)
-    stiffness = scale * stiffness
-    lead = _lead_gap(mesh_model, helical, z)
-    entries_along_path = _slice_positions(helical, phase, z)
-    points_on_path = transverse.path_points
-    inside = stiffness > 0.0
-    profile = np.zeros(stiffness.shape)
-    if inside.any():
-        roll = np.clip(points_on_path["A"] + entries_along_path[inside], points_on_path["A"], points_on_path["E"])
-        profile[inside] = mesh_model.pair_deviation_at(roll)
-    gap = profile + lead
-    if not np.any(gap) and not always_face:
-        total = scale * helical_mesh_stiffness(helical, material, phase).stiffness
-        return HelicalMeshPeriod(helical, phase, load, total, load / total, None, scale)
-    approach = np.empty(points)
-    engaged = np.empty(points)
-    line_load = np.empty((points, z.size))
-    width = helical.face_width / z.size
-    for index in range(points):
-        approach[index], carried = slice_loads(stiffness[index], gap[index], load)
-        engaged[index] = float(np.sum(np.where(carried > 0.0, stiffness[index].ravel(), 0.0)))
-        line_load[index] = carried.reshape(stiffness.shape[1:]).sum(axis=0) / width
-    face = FaceLoad(z, phase, line_load, approach)
-    return HelicalMeshPeriod(helical, phase, load, engaged, approach, face, scale)
+    ``deviations=False`` leaves the model's deviations out (the stiffness of the flanks as they are).
+
+    What depends on neither speed nor load (the slices' gaps; their stiffness on every contact line, sorted for
+    the solve; the face integral) is computed once per model and number of points, the slices' stiffness only
+    where the face load is solved; a call solves every mesh position at once for its load."""
+    if not deviations or (mesh_model.thermoelastic_mesh is None and not always_face):
+        # no deviation at all: the profile's and the lead's come from the thermo-elastic component only
+        # (MeshModel.pair_deviation_at, face_temperature_rise), which this model does not have
+        return _integral_period(mesh_model, load, points)
+    gaps = _cached(mesh_model, ("gaps", points, slices), lambda: _slice_gaps(mesh_model, points, slices))
+    if gaps.gap_free and not always_face:
+        return _integral_period(mesh_model, load, points)
+    contacts = _cached(mesh_model, ("slices", points, slices), lambda: _slice_contacts(mesh_model, points, slices))
+    lines = contacts.gap.shape[1]
+    approach, engaged, carried = contacts.contacts.totals(load, np.tile(np.arange(slices), lines), slices)
+    line_load = carried / (contacts.helical.face_width / slices)
+    face = FaceLoad(contacts.z, contacts.phase, line_load, approach)
+    return HelicalMeshPeriod(contacts.helical, contacts.phase.copy(), load, engaged, approach, face, contacts.scale)
 
 
 def _slice_positions(helical: HelicalPair, phase: np.ndarray, z: np.ndarray) -> np.ndarray:

@@ -43,7 +43,7 @@ def helical_figure(helical: dict):
     ax.set_ylim(-0.05 * zone["face_width"], 1.05 * zone["face_width"])
     ax.set_xlabel("path of contact from A [mm]")
     ax.set_ylabel("face z from the outlet side [mm]")
-    ax.set_title("contact lines on the plane of action", fontsize=9)
+    ax.set_title("contact lines on the plane of action (phase 0)", fontsize=9)
     ax = axes[0, 1]
     for state in ("cold", "hot"):
         ax.plot(helical[state]["z_mm"], helical[state]["mean_line_load_n_per_mm"], **_STYLE[state])
@@ -52,8 +52,9 @@ def helical_figure(helical: dict):
     ax.set_title(f"load along the face (gradient {helical['face_gradient_k']:g} K)", fontsize=9)
     twin = ax.twinx()
     twin.plot(helical["hot"]["z_mm"], helical["hot"]["face_temperature_rise_k"], color="0.5", lw=0.8,
-              label="ΔT across the face")
+              label="ΔT (right axis)")
     twin.set_ylabel("ΔT across the face [K]")
+    twin.legend()  # its line joins the legend below the plots (figures.legends_below gathers axes with one)
     for ax, key, label in ((axes[1, 0], "mesh_stiffness_curve_n_per_mm_um", "K_t per width [N/(mm·μm)]"),
                            (axes[1, 1], "static_transmission_error_um", "loaded static TE [μm]")):
         for state in ("cold", "hot"):
