@@ -21,13 +21,15 @@ from thermogear.temperature_kinds import temperature_source
 from thermogear.dynamics.mesh_laws import mesh_law
 from thermogear import warning_scope
 from thermogear.case_errors import case_error_from_validation
-from thermogear.case_geometry import gear_pair_of
+from thermogear.case_geometry import gear_pair_of, helical_pair_of
+from thermogear.case_helical import check_face_gradient, check_helical_case, transverse_gears_section
 from thermogear.case_keys import warn_keys_without_effect
 from thermogear.case_limits import check_model_limits
 from thermogear.composition import CASE_CHECKS, TEMPERATURE_MODELS, builtin, resolve
 from thermogear.errors import CaseError, closest_key
 from thermogear.fzg import fzg_load_stage_torque
 from thermogear.geometry import GearPair
+from thermogear.helical.geometry import HelicalPair
 from thermogear.materials import Material
 from thermogear.operating import OperatingPoint
 from thermogear.schema.base import StrictTypeError
@@ -90,6 +92,9 @@ class Case:
     gearbox: GearboxSection | None = None  # the gearbox around the pair (thermogear.gearbox), optional
     drivetrain: DrivetrainSection | None = None  # shafts, bearings, couplings (thermogear.drivetrain), optional
     stages: tuple[GearStage, ...] = ()  # the drivetrain's further gear pairs ([[drivetrain.stages]]), in order
+    # a helical pair (helix_angle_deg > 0): its helix; gear_pair is then its transverse section, and gears_input the
+    # section as the transverse model reads it (backlash along the transverse line of action). None: a spur pair
+    helical_pair: HelicalPair | None = None
 
     @property
     def directory(self) -> Path | None:
@@ -290,7 +295,13 @@ def case_from_document(document: dict[str, Any], source: str = "<memory>") -> Ca
     except pydantic.ValidationError as error:
         raise case_error_from_validation(error) from None
     gears = model.gears
-    pair = gear_pair_of(gears)
+    check_helical_case(model)
+    helical = helical_pair_of(gears)
+    pair = helical.transverse
+    check_face_gradient(model, helical)
+    if helical.helix_angle > 0.0:
+        gears = transverse_gears_section(gears, helical)
+        model = model.model_copy(update={"gears": gears})
     check_thermoelastic_inputs(pair, model)
     stages = ()
     if model.drivetrain is not None:  # the gears' seats on their shafts (the drivetrain is built by its resolver)
@@ -332,7 +343,7 @@ def case_from_document(document: dict[str, Any], source: str = "<memory>") -> Ca
         lubricant=model.lubricant, temperature=temperature, thermal=model.thermal, damping=model.damping,
         dynamics=model.dynamics, fem=model.fem, source=source, document=document, housing=model.housing,
         gears_input=gears, material_input=material, notes=notes, gearbox=model.gearbox, drivetrain=model.drivetrain,
-        stages=stages)
+        stages=stages, helical_pair=helical if helical.helix_angle > 0.0 else None)
     if temperature_source(case.temperature.model).predicted_at_load:  # (see below)
         case = _resolve_temperature_model(case)
     check_case(case)

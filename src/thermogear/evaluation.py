@@ -214,10 +214,9 @@ def evaluate_case(case, method: str = "periodic", models: tuple[str, ...] = MODE
             evaluation.thermal_summary = thermal_stiffness_summary(paper, MeshModel(case, "elastic"), thermal_mesh)
             cite("timoshenko1951")
         else:  # the thermo-elastic model: its mesh model holds the case's component
-            from thermogear.summaries.thermoelastic import thermoelastic_summary
+            from thermogear.summaries.helical import pair_thermoelastic_summary
 
-            evaluation.thermoelastic_summary = thermoelastic_summary(
-                thermal_mesh.thermoelastic_mesh, thermal_mesh.thermal_model, thermal_mesh.temperature)
+            evaluation.thermoelastic_summary = pair_thermoelastic_summary(thermal_mesh)
         if evaluation.paper:  # Fig. 12: the single pair's load share at A, B, D and E
             from thermogear.summaries.load_share import pair_load_share_at_points
 

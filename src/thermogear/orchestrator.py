@@ -229,9 +229,9 @@ class Orchestrator:
         thermal = self.simulation(THERMAL).mesh_model
         if thermal.pair_model.uses_x_te:  # the paper's k_T has none of these
             return None
-        from thermogear.summaries.thermoelastic import thermoelastic_summary  # noqa: PLC0415
+        from thermogear.summaries.helical import pair_thermoelastic_summary  # noqa: PLC0415
 
-        return thermoelastic_summary(thermal.thermoelastic_mesh, thermal.thermal_model, thermal.temperature)
+        return pair_thermoelastic_summary(thermal)
 
     def temperatures(self):
         """The gearbox's predicted steady state where a model predicted the case's temperatures at load time

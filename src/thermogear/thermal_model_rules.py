@@ -29,7 +29,8 @@ class ThermalModelRules:
     (Luo & Li (2020) Eqs. 13–23), so X_te must be given or calibrated. ``expands_geometry``: True where it expands
     gears and housing with temperature, so backlash and jamming at the operating temperatures are checked at load.
     ``own_keys``: ``[thermal]`` keys that only this model reads (a case of another model that sets them is told
-    they have no effect).
+    they have no effect). ``spur_only``: True where the model is defined for spur pairs only (a helical case is
+    refused at load).
     """
 
     name: str
@@ -37,6 +38,7 @@ class ThermalModelRules:
     reads_x_te: bool = False
     expands_geometry: bool = False
     own_keys: tuple[str, ...] = ()
+    spur_only: bool = False
 
 
 #: The predictive thermo-elastic model: E(T), expansion of gears and housing, backlash and flank deviations.
@@ -46,7 +48,7 @@ THERMOELASTIC_RULES = ThermalModelRules("thermoelastic", THERMOELASTIC_LIMITS, e
 LUO2020_RULES = ThermalModelRules(
     "luo2020", LUO2020_LIMITS, reads_x_te=True,
     own_keys=("x_te", "x_te_source", "calibration_drop_percent", "calibration_point", "load_basis",
-              "expansion_model"))
+              "expansion_model"), spur_only=True)
 
 #: The rules per ``[thermal] model`` name; the first is the schema's default. One line per model.
 THERMAL_MODEL_RULES: dict[str, ThermalModelRules] = {

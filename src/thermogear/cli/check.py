@@ -44,6 +44,10 @@ def check(case: str = typer.Argument(..., metavar="CASE",
         # a load no steel tooth carries is computed by run, and labelled there and here
         "load_checks": list(load_flags(pair, loaded.material, loaded.operating_point.torque)),
     }
+    if loaded.helical_pair is not None:  # the pair above is its transverse section
+        from thermogear.helical.summary import helical_geometry_summary
+
+        payload["helical"] = helical_geometry_summary(loaded.helical_pair)
     payload["notes"] = list(loaded.notes)
     payload["model_checks"] = model_choice_flags(loaded.thermal.model, loaded.dynamics.mesh)
     payload["warnings"] = list(dict.fromkeys(shown))  # keys without effect, extrapolated fits, … (once each)
@@ -61,6 +65,8 @@ def check(case: str = typer.Argument(..., metavar="CASE",
                       f"{payload['tip_diameter_mm'][gear]:.3f} / {payload['base_diameter_mm'][gear]:.3f} / "
                       f"{payload['root_diameter_mm'][gear]:.3f}")
     table.add_row("path A/B/C/D/E from T1 [mm]", " / ".join(f"{v:.3f}" for v in payload["path_mm"].values()))
+    if "helical" in payload:
+        add_helical_rows(table, payload["helical"])
     table.add_row("normal load F_bt [N]", f"{loaded.normal_load:.1f}")
     table.add_row("mesh frequency [Hz]", f"{payload['mesh_frequency_hz']:.2f}")
     console.print(table)
@@ -68,6 +74,24 @@ def check(case: str = typer.Argument(..., metavar="CASE",
     for flag in payload["load_checks"] + payload["model_checks"]:
         console.print(f"check — {flag}", highlight=False)
     console.print("case is valid", style="green")
+
+
+def add_helical_rows(table: Table, helical: dict) -> None:
+    """The helical geometry's rows (:func:`thermogear.helical.summary.helical_geometry_summary`)."""
+    lengths = helical["contact_line_length_mm"]
+    for label, text in (
+            ("helix angle β / base helix angle β_b [°]",
+             f"{helical['helix_angle_deg']:.4f} / {helical['base_helix_angle_deg']:.4f}"),
+            ("hand (pinion; the wheel has the other)", helical["hand"]),
+            ("module m_n / m_t [mm]", f"{helical['normal_module_mm']:.4f} / {helical['transverse_module_mm']:.4f}"),
+            ("pressure angle α_n / α_t [°]",
+             f"{helical['normal_pressure_angle_deg']:.4f} / {helical['transverse_pressure_angle_deg']:.4f}"),
+            ("contact ratios ε_α / ε_β / ε_γ [–]", f"{helical['transverse_contact_ratio']:.4f} / "
+                                                  f"{helical['overlap_ratio']:.4f} / {helical['total_contact_ratio']:.4f}"),
+            ("axial pitch p_x [mm]", f"{helical['axial_pitch_mm']:.3f}"),
+            ("contact-line length mean / min / max [mm]",
+             f"{lengths['mean']:.3f} / {lengths['min']:.3f} / {lengths['max']:.3f}")):
+        table.add_row(label, text)
 
 
 @contextmanager

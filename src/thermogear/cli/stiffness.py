@@ -65,12 +65,42 @@ def _print_table(summary: dict) -> None:
     console.print(table)
     mesh = summary["mesh_stiffness_n_per_mm_um"]
     iso = summary["iso6336"]
+    if "helical" in summary:
+        _print_helical(summary)
+        return
     console.print(f"Hertz contact stiffness {teeth['hertz']:.1f} N/(mm·μm)")
     console.print(f"Mesh stiffness over one period: min {mesh['min']:.3f}, mean {mesh['mean']:.3f}, "
                   f"max {mesh['max']:.3f} N/(mm·μm)")
     console.print(f"ISO 6336-1 Method B: c′ = {iso['c_prime_n_per_mm_um']:.3f}, "
                   f"c_γα = {iso['c_gamma_alpha_n_per_mm_um']:.3f} N/(mm·μm); PEM mean / c_γα = "
                   f"{summary['pem_mean_over_iso_c_gamma_alpha']:.3f}")
+
+
+def _print_helical(summary: dict) -> None:
+    """The helical pair's lines: the table above is its transverse section's tooth pair."""
+    from thermogear.cli.check import add_helical_rows  # noqa: PLC0415
+
+    table = Table(title="Helical pair")
+    table.add_column("quantity")
+    table.add_column("value", justify="right")
+    add_helical_rows(table, summary["helical"]["geometry"])
+    for key, label in (("helical", "elastic"), ("helical_thermal", "thermal")):
+        if key not in summary:
+            continue
+        part = summary[key]
+        mesh = part["mesh_stiffness_n_per_mm_um"]
+        table.add_row(f"K_t min / mean / max, {label} [N/(mm·μm)]",
+                      f"{mesh['min']:.3f} / {mesh['mean']:.3f} / {mesh['max']:.3f}")
+        table.add_row(f"ripple (max − min)/mean, {label} [–]", f"{part['ripple']:.4f}")
+    helical = summary["helical"]
+    iso = helical["iso6336"]
+    table.add_row("K_n = K_t/cos²β_b, mean [N/(mm·μm)]", f"{helical['normal_mesh_stiffness_mean_n_per_mm_um']:.3f}")
+    table.add_row("ISO 6336-1 B: c′ / c_γα / c_γβ [N/(mm·μm)]",
+                  f"{iso['c_prime_n_per_mm_um']:.3f} / {iso['c_gamma_alpha_n_per_mm_um']:.3f} / "
+                  f"{iso['c_gamma_beta_n_per_mm_um']:.3f}")
+    table.add_row("slice model mean / c_γα [–]", f"{helical['slice_mean_over_iso_c_gamma_alpha']:.3f}")
+    console.print(table)
+    console.print(f"method: {helical['method']}", highlight=False)
 
 
 def _print_wrapped(renderables: list) -> None:
@@ -109,6 +139,11 @@ def stiffness(
                                        loaded.name)
     for message in summary["warnings"]:
         print_warning(message, error_console)
+    if thermal and loaded.helical_pair is not None:  # the helical pair's K_t under the case's thermal model
+        from thermogear.summaries.helical import helical_stiffness_summary  # noqa: PLC0415
+
+        summary["helical_thermal"] = helical_stiffness_summary(MeshModel(loaded, "thermal"))
+        thermal_module = None
     if thermal_module is not None:
         from thermogear.luo2020.case_stiffness import paper_thermal_model  # noqa: PLC0415
         from thermogear.thermoelastic.mesh import ThermoelasticMesh  # noqa: PLC0415

@@ -25,7 +25,7 @@ import math
 
 import numpy as np
 
-__all__ = ["contact_line_length", "total_contact_length", "contact_length_extremes"]
+__all__ = ["contact_line_length", "total_contact_length", "contact_length_extremes", "contact_line_segments"]
 
 
 def contact_line_length(entry, path_length: float, face_width: float, base_helix_angle: float) -> np.ndarray:
@@ -72,3 +72,23 @@ def contact_length_extremes(transverse_ratio: float, overlap_ratio: float, face_
         low = 1.0 - (1.0 - n_alpha) * (1.0 - n_beta) / product
     high = 1.0 + (min(n_alpha, n_beta) - n_alpha * n_beta) / product
     return mean, mean * low, mean * high
+
+
+def contact_line_segments(phase: float, path_length: float, face_width: float, base_helix_angle: float,
+                          base_pitch: float) -> list[tuple[tuple[float, float], tuple[float, float]]]:
+    """The contact lines inside the zone of action at mesh phase ``phase`` [m], each as its two ends
+    ((s, z), (s, z)) [m] (s along the transverse path from A, z across the face): the line entering at s_0 is
+    s(z) = s_0 + z tan β_b, clipped to 0 ≤ s ≤ g_α and 0 ≤ z ≤ b."""
+    slope = math.tan(base_helix_angle)
+    advance = face_width * slope
+    segments = []
+    for entry in line_entries(float(phase), path_length, advance, base_pitch):
+        if slope == 0.0:
+            if 0.0 <= entry <= path_length:
+                segments.append(((float(entry), 0.0), (float(entry), face_width)))
+            continue
+        low = max(0.0, -entry / slope)
+        high = min(face_width, (path_length - entry) / slope)
+        if low < high:
+            segments.append(((float(entry + low * slope), low), (float(entry + high * slope), high)))
+    return segments

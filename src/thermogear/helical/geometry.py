@@ -187,7 +187,9 @@ class HelicalPair:
                            bore_radius=source.bore_radius * scale, tip_radius=None)
 
         virtual = (gear(pinion, z_n1, self.normal_profile_shifts[0]), gear(wheel, z_n2, self.normal_profile_shifts[1]))
-        opened = self.transverse.centre_distance - zero_backlash_centre_distance(pinion, wheel)
+        # a pair closed below zero backlash (a hot pair whose backlash is its teeth's thinning allowance, which the
+        # virtual gears do not carry) meshes at the virtual pair's zero backlash
+        opened = max(self.transverse.centre_distance - zero_backlash_centre_distance(pinion, wheel), 0.0)
         return GearPair.create(*virtual, zero_backlash_centre_distance(*virtual) + opened)
 
     def axial_force_ratio(self) -> float:

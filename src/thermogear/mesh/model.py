@@ -24,6 +24,7 @@ from thermogear.damping import (FRICTION_DAMPING_LOAD_EXPONENT, FRICTION_DAMPING
 from thermogear.composition import X_TE_PROVIDERS
 from thermogear.errors import CaseError
 from thermogear.lubricant import Lubricant, lubricant_from_case
+from thermogear.mesh.helical_model import helical_model_state
 from thermogear.mesh.model_names import MODELS, Model
 from thermogear.mesh.pair_models import PairModelBase, check_model, pair_model_for
 from thermogear.mesh.state import MeshState
@@ -264,10 +265,21 @@ class MeshModel:
               points_per_period: int | None = None, damping: bool = True) -> MeshState:
         """Everything the dynamics need over one mesh period at a pinion speed [rpm] and normal load [N]
         (defaults: the case's operating point). ``damping=False`` leaves the friction damping out (zeros), for
-        callers that need the stiffness only."""
+        callers that need the stiffness only. A helical pair's period is that of its slice model
+        (:mod:`thermogear.mesh.helical_model`), the torsional projection along the transverse line of action."""
         speed = self.speed_rpm if speed_rpm is None else float(speed_rpm)
         load = self.normal_load(speed) if normal_load is None else float(normal_load)
         self._check_predicted_operating_point(speed, load)
+        state = self._transverse_state(speed, load, points_per_period, damping)
+        if self.case.helical_pair is not None:
+            count = points_per_period or self.case.dynamics.points_per_period
+            state = helical_model_state(self, state, speed, load, count, damping)
+        table = mesh_table_of(self.case)  # a user's k(τ) (dynamics.mesh_table) replaces the model's
+        return state if table is None else table.state_like(state)
+
+    def _transverse_state(self, speed: float, load: float, points_per_period: int | None,
+                          damping: bool) -> MeshState:
+        """The period of the pair's (transverse) section as a spur pair: tooth pairs on the mesh-cycle grid."""
         grid = self.grid(speed, points_per_period)
         stiffness = self._on_grid(grid, lambda roll: self.pair_stiffness_at(roll, load))
         if self.pair_model.damping_uses_pair_stiffness or not damping:
@@ -295,8 +307,7 @@ class MeshModel:
                           pair_deviation=deviation, pair_engaged=engaged, static_transmission_error=static,
                           backlash=self.backlash, face_width=self.face_width,
                           mesh_frequency_hz=self.gear_pair.mesh_frequency(speed))
-        table = mesh_table_of(self.case)  # a user's k(τ) (dynamics.mesh_table) replaces the model's
-        return state if table is None else table.state_like(state)
+        return state
 
     def natural_frequency_hz(self, state: MeshState) -> float:
         """f_n = sqrt(mean k / me)/2π [Hz] of a state."""

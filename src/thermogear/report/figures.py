@@ -13,6 +13,7 @@ from typing import Any, Callable
 import numpy as np
 
 from thermogear.drivetrain.pictures import PICTURES as DRIVETRAIN_PICTURES
+from thermogear.report.helical_section import draw_helical, helical_figure_absent
 
 __all__ = ["FE_FIGURES", "FIG6_SPAN_MS", "FIGURES", "SHARED_FIGURES", "report_figures", "save_figure",
            "write_figures"]
@@ -37,6 +38,8 @@ FIGURES: dict[str, str] = {
              "and thermal.",
     "fig12": "Fig. 12 — dynamic pair and system loads per unit face width in the steady state (three periods).",
     "fig15": "Fig. 15 — FE verification of the elastic and thermal stiffness along Γ.",
+    "helical": "Helical pair — contact lines on the plane of action, mean line load across the face cold and hot "
+               "with the temperature across it, mesh stiffness K_t per width and loaded static TE over one period.",
     **DRIVETRAIN_PICTURES,
 }
 
@@ -302,6 +305,7 @@ _DRAW: dict[str, tuple[Callable[[Any], Any], tuple[str, ...]]] = {
     "fig11": (fig11, ("start-up transients", "elastic model", "thermal model")),
     "fig12": (fig12, ("elastic model", "thermal model")),
     "fig15": (fig15, ("FE verification",)),
+    "helical": (draw_helical, ("thermal stiffness", "thermal model")),
     **{name: (partial(_drivetrain_picture, name), ()) for name in DRIVETRAIN_PICTURES},
 }
 
@@ -318,6 +322,9 @@ def report_figures(evaluation, names=None) -> tuple[dict[str, Any], dict[str, st
             if evaluation.drivetrain is None or evaluation.drivetrain_built is None:
                 missing[name] = evaluation.problems.get("drivetrain") or "the drivetrain was not built"
                 continue
+        if name == "helical" and (absent := helical_figure_absent(evaluation)) is not None:
+            missing.update({name: absent} if absent else {})  # "": a spur pair, nothing to draw, nothing missing
+            continue
         if name == "fig15" and evaluation.fem is None:
             missing[name] = evaluation.problem("FE verification") or "the FE verification was not run"
             continue
@@ -377,7 +384,7 @@ def save_figure(figure, folder, name: str) -> list[str]:
 #: figures (~0.3 s), the single panels last (~0.2 s). Whichever process is free takes the next, so the last ones
 #: taken are short and both processes end close together, however busy each was before (longest job first).
 SHARED_FIGURES = ("drivetrain_campbell", "drivetrain_modes", "fig4", "fig7", "fig8", "fig11", "fig6", "fig9", "fig10",
-                  "drivetrain_layout", "drivetrain_bearing_spectra", "fig3c", "fig12")
+                  "helical", "drivetrain_layout", "drivetrain_bearing_spectra", "fig3c", "fig12")
 #: The figures that need the FE verification: drawn last, once its child process has answered.
 FE_FIGURES = ("fig15",)
 

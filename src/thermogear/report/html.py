@@ -9,6 +9,7 @@ from datetime import datetime, timezone
 from thermogear.report.figures import FIGURES
 from thermogear.report.paper_checks import format_value
 from thermogear.report.drivetrain_section import drivetrain_section
+from thermogear.report.helical_section import helical_section
 from thermogear.report.thermoelastic_section import thermoelastic_section
 
 __all__ = ["render_report"]
@@ -268,6 +269,7 @@ def render_report(evaluation, *, version: str, toml_text: str, pngs: dict[str, b
                                   {"fig15": fe_versus_analytical_text(fe_numbers)} if fe_numbers else {}))
     parts.append(_results_section(results))
     parts.append(thermoelastic_section(evaluation.thermoelastic))
+    parts.append(helical_section(evaluation.thermoelastic_summary))
     parts.append(drivetrain_section(evaluation.drivetrain, evaluation.problems.get("drivetrain")))
     if verdicts:
         parts.append(_paper_section(verdicts))

@@ -28,6 +28,15 @@ def thermoelastic_rows(summary: dict) -> list[tuple[str, str, float | None, floa
     rows += [("loaded static transmission error, mean", "μm", elastic_ste["mean"], ste["mean"], ""),
              ("loaded static transmission error, peak-to-peak", "μm", elastic_ste["peak_to_peak"],
               ste["peak_to_peak"], "")]
+    if "helical" in summary:  # the slice model's load along the face (summaries.helical)
+        helical = summary["helical"]
+        cold_face, hot_face = helical["cold"], helical["hot"]
+        rows += [("temperature across the face, outlet − inlet", "K", None, helical["face_gradient_k"],
+                  "temperature.face_gradient_k"),
+                 ("face load factor max w̄/mean w̄", "–", cold_face["face_load_factor"], hot_face["face_load_factor"],
+                  "the load distribution across the face (ISO 6336-1's K_Hβ describes it)"),
+                 ("load centre from the outlet-side end face", "mm", cold_face["load_centre_mm"],
+                  hot_face["load_centre_mm"], "")]
     jamming, margin = summary["jamming_bulk_temperature_c"], summary["jamming_margin_k"]
     note = "" if jamming is not None else "the backlash does not close at any bulk temperature the model allows"
     rows += [("jamming bulk temperature", "°C", None, jamming, note),

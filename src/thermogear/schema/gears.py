@@ -21,7 +21,8 @@ class GearSection(Section):
     """One gear of the pair. Lengths in millimetres as the key names say."""
 
     teeth: Annotated[int, Field(ge=5, le=1000, description="number of teeth z [–]")]
-    profile_shift: Annotated[float, Field(ge=-1.0, le=1.5, description="profile shift coefficient x [–]")] = 0.0
+    profile_shift: Annotated[float, Field(ge=-1.0, le=1.5, description="profile shift coefficient x [–]; of a "
+                                                                      "helical pair the normal x_n")] = 0.0
     face_width_mm: Annotated[float, Field(ge=MINIMUM_FACE_WIDTH_MM, le=2000.0,
                                           description="face width b [mm]")] | None = None
     bore_radius_mm: Annotated[float, Field(ge=0.0, le=5000.0, allow_inf_nan=False, description=(
@@ -54,8 +55,17 @@ class GearSection(Section):
 class GearsSection(Section):
     """The pair: common rack data, centre distance, and the two gears."""
 
-    module_mm: Annotated[float, Field(ge=0.1, le=100.0, description="module m [mm]")]
-    pressure_angle_deg: Annotated[float, Field(gt=0.0, lt=45.0, description="pressure angle α [°]")] = 20.0
+    module_mm: Annotated[float, Field(ge=0.1, le=100.0, description="module m [mm]; of a helical pair the normal "
+                                                                    "module m_n (ISO 21771)")]
+    pressure_angle_deg: Annotated[float, Field(gt=0.0, lt=45.0, description="pressure angle α [°]; of a helical pair "
+                                                                           "the normal pressure angle α_n")] = 20.0
+    helix_angle_deg: Annotated[float, Field(ge=0.0, le=45.0, allow_inf_nan=False, description=(
+        "helix angle β at the reference cylinder [°]; 0: a spur pair. With β > 0, module_mm, pressure_angle_deg and "
+        "the profile shifts are the normal-section values (ISO 21771); the slice model covers β ≤ 45° "
+        "(docs/helical.md)"))] = 0.0
+    hand: Literal["right", "left"] = Field("right", description=(
+        "hand of the pinion's helix (the wheel of an external pair has the other hand); sets the sense of the "
+        "axial force. Accepted with helix_angle_deg = 0, where it has no effect"))
     face_width_mm: Annotated[float, Field(ge=MINIMUM_FACE_WIDTH_MM, le=2000.0,
                                           description="face width b of both gears [mm]")] | None = None
     addendum_coefficient: Annotated[float, Field(gt=0.0, le=2.0, description="h_a* [–]")] = 1.0

@@ -21,6 +21,10 @@ CASE_MINIMUM_C = -60.0
 #: 150–200 °C).
 CASE_MAXIMUM_C = MATERIAL_MAXIMUM_C
 
+#: Largest temperature difference across the face [K]: measured helical gears differ by a few to some 20 K
+#: between inlet and outlet side; 100 K keeps every tooth within the material data's range (an assumption).
+FACE_GRADIENT_LIMIT_K = 100.0
+
 #: A temperature of a case [°C]: a finite number from CASE_MINIMUM_C to CASE_MAXIMUM_C.
 Celsius = Annotated[float, Field(ge=CASE_MINIMUM_C, le=CASE_MAXIMUM_C, allow_inf_nan=False)]
 
@@ -50,3 +54,9 @@ class TemperatureSection(Section):
     wheel_bore_c: Celsius | None = Field(None, description="wheel bore temperature [°C]")
     wheel_flank_offset_c: Annotated[float, Field(ge=-CASE_MAXIMUM_C, le=CASE_MAXIMUM_C, allow_inf_nan=False)] = Field(
         0.0, description="wheel flank temperature minus the pinion's [°C]")
+    face_gradient_k: Annotated[float, Field(ge=-FACE_GRADIENT_LIMIT_K, le=FACE_GRADIENT_LIMIT_K,
+                                            allow_inf_nan=False)] = Field(0.0, description=(
+        "temperature across the face of a helical pair [K]: the end face where the contact lines leave the mesh "
+        "(the oil's outlet side) minus the one where they enter, a linear variation about the bulk temperatures, "
+        "the same for both gears; it distorts the lead (docs/helical.md). Helical pairs under thermal.model = "
+        "'thermoelastic' only; 0: none"))

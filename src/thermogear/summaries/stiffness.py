@@ -71,6 +71,13 @@ def stiffness_summary(mesh: MeshModel, material: Material, operating: OperatingP
                   "pairs in parallel; ISO 6336-1 Method B cross-check",
         "warnings": messages,
     }
+    if mesh.case.helical_pair is not None:  # the pair's own: the slice model's K_t (mesh.state) and ISO's helical c′
+        from thermogear.summaries.helical import helical_stiffness_summary  # noqa: PLC0415
+
+        helical = helical_stiffness_summary(mesh)
+        summary.update(helical=helical, iso6336=helical["iso6336"],
+                       pem_mean_over_iso_c_gamma_alpha=helical["slice_mean_over_iso_c_gamma_alpha"],
+                       method=helical["method"])
     return summary, messages
 
 
