@@ -221,3 +221,55 @@ def test_the_backlash_response_of_a_helical_mesh_in_permanent_contact_is_the_lin
     for name in linear.bearing_forces:
         theirs = linear.bearing_forces[name]
         assert np.abs(response.bearing_forces[name][rows] - theirs).max() < 1e-8 * np.abs(theirs).max()
+
+
+def _helical_reducer():
+    """The built-in two-stage reducer on coarse elements with helical stages (8° right-hand, then 6° left-hand; the
+    zero-backlash centre distances of the transverse sections) and the spread contact."""
+    import copy
+
+    from thermogear.case import case_from_document, load_case
+    from thermogear.drivetrain.case_model import case_drivetrain
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        document = copy.deepcopy(load_case("fzg_type_c_two_stage").document)
+        section = document["drivetrain"]
+        section.update(maximum_element_length_mm=50.0, response_cutoff_hz=3000.0, helical_contact="spread")
+        document["dynamics"]["points_per_period"] = 64
+        for shaft in section["shafts"]:
+            shaft["material_damping_s"] = 2e-5
+        for gears, helix, hand in ((document["gears"], 8.0, "right"), (section["stages"][0]["gears"], 6.0, "left")):
+            gears.pop("centre_distance_mm", None)
+            gears.update(helix_angle_deg=helix, hand=hand)
+        case = case_from_document(document)
+        return case, case_drivetrain(case, ("elastic",))
+
+
+def test_a_helical_train_carries_each_stages_thrust_and_solves_its_periodic_response():
+    """Each mesh takes its own stage's helix; statically the input shaft's bearings carry the first mesh's thrust
+    W₁ tan β_b1, the output shaft's the second's, the intermediate shaft the difference, and the housing as a whole
+    none (each mesh's axial forces are action and reaction); the train's periodic response is stable."""
+    from thermogear.drivetrain.train import MeshTrain
+
+    case, built = _helical_reducer()
+    drivetrain = built.drivetrains["elastic"]
+    first, second = drivetrain.meshes
+    assert first.base_helix_angle == case.helical_pair.base_helix_angle and first.hand == 1
+    assert second.hand == -1 and 0.0 < second.base_helix_angle < first.base_helix_angle
+    assembled = drivetrain.assemble()
+    load = 1e3
+    # the intermediate shaft in equilibrium: W₁ r_b(wheel 1) = W₂ r_b(pinion 2)
+    loads = np.array([load, load * first.base_radius_2 / second.base_radius_1])
+    state = static_state(assembled, loads)
+    axial = {}
+    for bearing in drivetrain.bearings:
+        axial[bearing.location.shaft] = axial.get(bearing.location.shaft, 0.0) + state.bearing_forces[bearing.name][2]
+    thrusts = loads * np.tan([first.base_helix_angle, second.base_helix_angle])
+    assert abs(axial["input shaft"]) == pytest.approx(thrusts[0], rel=1e-9)
+    assert abs(axial["output shaft"]) == pytest.approx(thrusts[1], rel=1e-9)
+    assert abs(sum(axial.values())) < 1e-9 * thrusts.max()
+    train = built.mesh_states("elastic")
+    assert isinstance(train, MeshTrain)
+    response = drivetrain_periodic_response(assembled, train, cutoff_hz=3000.0)
+    assert np.all(np.abs(response.multipliers) < 1.0) and set(response.meshes) == {"mesh", "stage 2"}
