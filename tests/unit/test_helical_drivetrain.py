@@ -206,6 +206,13 @@ def test_the_periodic_response_of_a_helical_mesh_carries_the_thrust_to_the_beari
     axial = sum(np.trapezoid(force[:, 2], response.time) / period
                 for name, force in response.bearing_forces.items() if name.startswith("wheel"))
     assert abs(axial) == pytest.approx(state.normal_load * math.tan(helical.base_helix_angle), rel=1e-3)
+    from thermogear.drivetrain.results import bearing_forces_of
+
+    summary = bearing_forces_of(response, 2, 256)  # the typed result (JSON, table) of each bearing
+    assert sum(summary[name].mean_axial_n for name in summary if name.startswith("wheel")) == pytest.approx(axial,
+                                                                                                           rel=1e-12)
+    assert all(force.mean_tilting_moment_n_m == 0.0 for force in summary.values())  # no tilting stiffness here
+    assert set(summary["wheel shaft bearing A"].as_json()) >= {"mean_axial_n", "mean_tilting_moment_n_m"}
 
 
 @pytest.mark.slow

@@ -113,6 +113,7 @@ class PeriodForces:
     time: np.ndarray
     bearing_forces: dict[str, np.ndarray]
     period: float
+    bearing_moments: dict[str, np.ndarray] = field(default_factory=dict)  # name → (S, 2) [N·m] about x, y
 
     def bearing_spectrum(self, name: str, points: int = 1024) -> tuple[np.ndarray, np.ndarray]:
         """As :meth:`DrivetrainBacklashResponse.bearing_spectrum`."""
