@@ -164,3 +164,66 @@ def test_the_thermal_stiffness_of_a_helical_pair_follows_e_of_t():
     thermal = thermal_model.state(points_per_period=128, damping=False)
     ratio = np.mean(thermal_model.thermoelastic_mesh.modulus_ratios)
     assert thermal.mean_mesh_stiffness / elastic.mean_mesh_stiffness == pytest.approx(ratio, rel=0.01)
+
+
+# ------------------------------------------------------------------------------------------------ commands
+def test_stiffness_of_a_helical_pair_is_the_slice_model_beside_iso():
+    """stiffness --json: K_t over the cycle from the slice model, the ISO values of the helical pair (not its
+    transverse section's). FZG H501 with its 15 mm bores: the slice mean is within 5 % of ISO 6336-1's c_γα
+    (docs/helical.md: the normal-section slices follow ISO's helix trend, +2 % at 15° on a 27/35 pair; ISO's
+    Method B is itself an empirical fit of that order)."""
+    from thermogear.helical.iso_stiffness import helical_iso_stiffness
+    from thermogear.stiffness.iso6336 import N_PER_MM_UM
+
+    payload = _json(["stiffness", "fzg_h501", "--json"])
+    helical = payload["helical"]
+    mesh = helical["mesh_stiffness_n_per_mm_um"]
+    assert mesh["min"] < mesh["mean"] < mesh["max"]
+    assert helical["ripple"] == pytest.approx((mesh["max"] - mesh["min"]) / mesh["mean"], rel=1e-9)
+    case = load_case("fzg_h501")
+    iso = helical_iso_stiffness(case.helical_pair, case.material)
+    assert payload["iso6336"]["c_gamma_alpha_n_per_mm_um"] == pytest.approx(iso.mesh / N_PER_MM_UM, rel=1e-12)
+    assert helical["slice_mean_over_iso_c_gamma_alpha"] == pytest.approx(1.0, abs=0.05)
+
+
+def test_the_report_draws_and_tables_the_helical_pair():
+    import matplotlib.pyplot as plt
+
+    from thermogear.orchestrator import Orchestrator
+    from thermogear.report.helical_section import helical_figure, helical_section
+
+    summary = Orchestrator(load_case("fzg_h501"), ("elastic", "thermal")).thermoelastic()
+    helical = summary["helical"]
+    assert helical["hot"]["face_load_factor"] > helical["cold"]["face_load_factor"]
+    page = helical_section(summary)
+    assert "Helical pair" in page and "face load factor" in page
+    figure = helical_figure(helical)
+    assert len(figure.axes) == 5  # four panels and the temperature's twin axis
+    plt.close(figure)
+    assert helical_section(Orchestrator(load_case("fzg_type_c"), ("elastic", "thermal")).thermoelastic()) == ""
+
+
+def test_a_linear_sweep_of_a_helical_pair_equals_one_simulation_per_point():
+    """sweep takes a helical case: its batch path (one mesh period reused and scaled where the model allows) gives
+    what one Simulation per point gives (1e-9), and the case's own point is run's."""
+    from sweep_paths import assert_fast_path_equals_simulation
+
+    from thermogear.sweep.study import Study
+
+    case = load_case("fzg_h501").with_changes(**{"dynamics.mesh": "linear", "dynamics.points_per_period": 256})
+    study = Study.define(case, ["speed_rpm=2175,3000", "torque_nm=135.3"], model="both", chunk_points=64)
+    fast = assert_fast_path_equals_simulation(study)
+    assert np.all(np.isfinite(np.asarray(fast["kv"], float))) and np.all(np.asarray(fast["kv"], float) > 1.0)
+
+
+def test_the_commands_built_on_spur_teeth_say_so_or_use_the_transverse_section():
+    """damping: the friction damping of the helical pair's transverse section (finite in both regions); fem: the
+    plane-strain spur tooth refuses a helical pair with the key."""
+    from thermogear.fem.inputs import fem_inputs
+
+    payload = _json(["damping", "fzg_h501", "--json"])
+    means = payload["damping_n_s_per_m"]
+    assert all(math.isfinite(value) and value > 0.0 for model in means.values() for value in model.values())
+    with pytest.raises(CaseError) as error:
+        fem_inputs(load_case("fzg_h501"))
+    assert error.value.key == "gears.helix_angle_deg"

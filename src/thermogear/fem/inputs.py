@@ -8,11 +8,12 @@ verification take the frozen :class:`FemInputs` it returns, or the gear pair, ma
 from __future__ import annotations
 
 import json
+import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 from thermogear import warning_scope
-from thermogear.errors import ExtrapolationWarning
+from thermogear.errors import CaseError, ExtrapolationWarning
 
 if TYPE_CHECKING:
     from thermogear.case import Case
@@ -56,6 +57,10 @@ def fem_inputs(case: "Case") -> FemInputs:
     from thermogear.lubricant import lubricant_from_case  # noqa: PLC0415
     from thermogear.mesh.model import MeshModel  # noqa: PLC0415
 
+    if case.helical_pair is not None:
+        raise CaseError("gears.helix_angle_deg", round(math.degrees(case.helical_pair.helix_angle), 9),
+                        "0 for the FE verification", "the FE tooth model is a spur tooth in plane strain; the "
+                        "helical pair's tooth across the face is not modelled")
     oil_c = case.lubricant.operating_temperature_c
     with warning_scope.ignored(ExtrapolationWarning):  # the case as loaded reported its oil's range already
         changed = case.with_changes(**{"lubricant.reference_temperature_c": oil_c})

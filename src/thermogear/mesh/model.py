@@ -277,6 +277,18 @@ class MeshModel:
         table = mesh_table_of(self.case)  # a user's k(τ) (dynamics.mesh_table) replaces the model's
         return state if table is None else table.state_like(state)
 
+    def section_state(self, speed_rpm: float | None = None, normal_load: float | None = None,
+                      points_per_period: int | None = None, damping: bool = True) -> MeshState:
+        """The period as tooth pairs on the mesh-cycle grid, what per-pair quantities (the friction damping of each
+        pair, its single- and double-pair regions) refer to: :meth:`state` itself for a spur pair; for a helical
+        pair that of its transverse section (its slices share the section's friction, docs/helical.md)."""
+        if self.case.helical_pair is None:
+            return self.state(speed_rpm, normal_load, points_per_period, damping)
+        speed = self.speed_rpm if speed_rpm is None else float(speed_rpm)
+        load = self.normal_load(speed) if normal_load is None else float(normal_load)
+        self._check_predicted_operating_point(speed, load)
+        return self._transverse_state(speed, load, points_per_period, damping)
+
     def _transverse_state(self, speed: float, load: float, points_per_period: int | None,
                           damping: bool) -> MeshState:
         """The period of the pair's (transverse) section as a spur pair: tooth pairs on the mesh-cycle grid."""

@@ -20,7 +20,9 @@ def thermoelastic_rows(summary: dict) -> list[tuple[str, str, float | None, floa
             ("operating pressure angle", "°", cold["pressure_angle_deg"], hot["pressure_angle_deg"], ""),
             ("contact ratio at temperature", "–", cold["contact_ratio"], hot["contact_ratio"], ""),
             ("normal backlash", "μm", cold["backlash_normal_um"], hot["backlash_normal_um"],
-             "cold: at the reference temperature; thermal: at the operating temperatures")]
+             "cold: at the reference temperature; thermal: at the operating temperatures"
+             + ("; of a helical pair along the transverse line of action, j_bn/cos β_b" if "helical" in summary
+                else ""))]
     for gear in ("pinion", "wheel"):
         rows.append((f"Young's modulus E(T), {gear}", "GPa", summary["elastic"]["youngs_modulus_gpa"][gear],
                      summary["youngs_modulus_gpa"][gear], ""))

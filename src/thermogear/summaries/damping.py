@@ -74,7 +74,7 @@ def damping_summary(meshes: Mapping[str, MeshModel], section: DampingSection, na
         pair = mesh_model.gear_pair
         path[model] = mesh_model.pair_damping_at(pair.roll_grid(path_points))
         pitch[model] = mesh_model.pair_damping_at(np.array([pair.path_points["C"]]))
-        state = mesh_model.state(points_per_period=count)
+        state = mesh_model.section_state(points_per_period=count)  # a helical pair: its transverse section's pairs
         grid = grids[model] = state.grid
         mesh[model] = mesh_damping(state.pair_damping, grid.in_contact, rule)
         means[model] = contact_region_means(mesh[model], grid.contact_count, grid.steps)
