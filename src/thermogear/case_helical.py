@@ -30,8 +30,8 @@ def transverse_gears_section(gears, helical: HelicalPair):
 
 def check_helical_case(model) -> None:
     """Refuse, for a helical pair (``[gears] helix_angle_deg`` > 0; before its geometry is built), what the models do not build for one: a thermal model that is spur-only
-    (the paper's ``luo2020``), the temperature models whose heat input is the spur pair's, and the drivetrain (its
-    helical mesh element is a separate part of issue 37)."""
+    (the paper's ``luo2020``) and the temperature models whose heat input is the spur pair's (a ``[drivetrain]``
+    takes the helical pair through its helical mesh element, :mod:`thermogear.drivetrain.mesh_element`)."""
     if model.gears.helix_angle_deg == 0.0:
         return
     rules = thermal_model_rules(model.thermal.model)
@@ -44,10 +44,6 @@ def check_helical_case(model) -> None:
                         "'uniform' or 'tabulated' with gears.helix_angle_deg > 0",
                         "the FE and gearbox temperature models compute the spur pair's heat input; a helical pair "
                         "takes given temperatures (and temperature.face_gradient_k across the face)")
-    if model.drivetrain is not None:
-        raise CaseError("gears.helix_angle_deg", model.gears.helix_angle_deg, "0 with a [drivetrain]",
-                        "the helical mesh element of the drivetrain is not built yet: the drivetrain takes spur "
-                        "pairs")
 
 
 def check_face_gradient(model, helical: HelicalPair) -> None:

@@ -82,6 +82,9 @@ def print_drivetrain(results, console, reason: str | None = None) -> None:
         response.add_section()
         response.add_row(f"{bearing}: mean radial", *(_number(f.mean_radial_n) for f in forces.values()), "N")
         response.add_row(f"{bearing}: dynamic RMS", *(_number(f.dynamic_rms_n) for f in forces.values()), "N")
+        response.add_row(f"{bearing}: mean axial", *(_number(f.mean_axial_n) for f in forces.values()), "N")
+        response.add_row(f"{bearing}: mean tilting moment",
+                         *(_number(f.mean_tilting_moment_n_m) for f in forces.values()), "N·m")
         for j, frequency in enumerate(next(iter(forces.values())).harmonic_hz):
             line = f"mesh harmonic {frequency:.0f} Hz" if first.stages else f"{j + 1}× mesh ({frequency:.0f} Hz)"
             response.add_row(f"{bearing}: {line}",

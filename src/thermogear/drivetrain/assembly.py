@@ -142,11 +142,15 @@ class Drivetrain:
             where = np.concatenate([dofs(location) for location in element.locations])
             block = np.ix_(where, where)
             vector = element.mesh_vector()
-            if vector is not None:  # a mesh: its stiffness is its state's, k(τ)·w wᵀ
+            if vector is not None:  # a mesh: its stiffness is its state's, k(τ)·w wᵀ, plus any constant part
                 full = np.zeros(size)
                 full[where] += vector
                 vectors.append(full)
                 mesh_names.append(element.name)
+                constant = element.stiffness_matrix()
+                if np.any(constant):  # a spread contact's tilting stiffness, under the mesh's name
+                    groups.setdefault(element.energy_group, np.zeros((size, size)))[block] += constant
+                damping[block] += element.damping_matrix()
                 continue
             mass[block] += element.mass_matrix()
             damping[block] += element.damping_matrix()
@@ -169,8 +173,8 @@ class Drivetrain:
 class AssembledDrivetrain:
     """Global matrices [SI] of a drivetrain on its 6·nodes DOFs.
 
-    ``structure_stiffness`` and ``structure_damping`` hold shafts, bearings, couplings and torsional supports (no
-    mesh); ``mesh_vectors`` (meshes, DOFs) the w of each mesh; ``stiffness_groups`` one matrix per shaft, bearing,
+    ``structure_stiffness`` and ``structure_damping`` hold shafts, bearings, couplings and torsional supports (of a
+    mesh only a helical spread contact's constant tilting part); ``mesh_vectors`` (meshes, DOFs) the w of each mesh; ``stiffness_groups`` one matrix per shaft, bearing,
     coupling and support by name (they add up to ``structure_stiffness``); ``gyroscopic`` is per unit reference
     speed [rad/s]; ``dead_zones`` (element name, dead zone on the global DOFs) of every element with one, in
     element order (a bearing's clearance: x, then y).
@@ -213,9 +217,10 @@ class AssembledDrivetrain:
         return mask
 
     def mesh_stiffness_groups(self, mesh_stiffness: np.ndarray | None = None) -> dict[str, np.ndarray]:
-        """k̄·w wᵀ of each mesh by name (the meshes' own stiffness where none is given)."""
+        """k̄·w wᵀ of each mesh by name (the meshes' own stiffness where none is given), plus its constant part (a
+        helical spread contact's tilting stiffness, :mod:`thermogear.drivetrain.mesh_contact`)."""
         values = self._mesh_values(mesh_stiffness)
-        return {mesh.name: value * np.outer(w, w)
+        return {mesh.name: value * np.outer(w, w) + self.stiffness_groups.get(mesh.name, 0.0)
                 for mesh, w, value in zip(self.drivetrain.meshes, self.mesh_vectors, values)}
 
     def _mesh_values(self, mesh_stiffness: np.ndarray | None) -> np.ndarray:

@@ -26,7 +26,7 @@ exact).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
@@ -34,6 +34,7 @@ import numpy as np
 from thermogear.dynamics.metrics import dynamic_factor
 from thermogear.drivetrain.assembly import AssembledDrivetrain
 from thermogear.drivetrain.response import bearing_force_spectrum, bearing_forces, drivetrain_backlash_system
+from thermogear.drivetrain.static_state import bearing_moments
 from thermogear.dynamics.backlash_ndof import (BACK_CONTACT, DRIVING_CONTACT, FREE_FLIGHT, BacklashSystem, DeadZone,
                                                backlash_periodic_orbit)
 from thermogear.dynamics.backlash_orbits_ndof import StartupOrbit, startup_orbit
@@ -81,6 +82,7 @@ class DrivetrainBacklashResponse:
     metrics: dict[str, Any]
     period: float
     notes: tuple[str, ...] = ()
+    bearing_moments: dict[str, np.ndarray] = field(default_factory=dict)  # name → (S, 2) [N·m] about x, y
 
     @property
     def stable(self) -> bool:
@@ -111,6 +113,7 @@ class PeriodForces:
     time: np.ndarray
     bearing_forces: dict[str, np.ndarray]
     period: float
+    bearing_moments: dict[str, np.ndarray] = field(default_factory=dict)  # name → (S, 2) [N·m] about x, y
 
     def bearing_spectrum(self, name: str, points: int = 1024) -> tuple[np.ndarray, np.ndarray]:
         """As :meth:`DrivetrainBacklashResponse.bearing_spectrum`."""
@@ -283,7 +286,7 @@ def _response(assembled: AssembledDrivetrain, state: MeshState, system: Backlash
                                       motion.mesh_force, motion.bearing_forces, motion.displacement,
                                       trajectory.region, multipliers, bool(converged), failure, int(switches),
                                       trajectory.free_flight_time / period, trajectory.back_contact_time / period,
-                                      metrics, period)
+                                      metrics, period, bearing_moments=bearing_moments(assembled, motion.displacement))
 
 
 @dataclass(frozen=True, eq=False)

@@ -16,6 +16,7 @@ import math
 
 from thermogear.drivetrain.assembly import Drivetrain
 from thermogear.drivetrain.layout import Shaft, ShaftSegment
+from thermogear.drivetrain.mesh_contact import mesh_contact
 from thermogear.drivetrain.mesh_element import GearMesh
 from thermogear.drivetrain.point_elements import Bearing, Coupling, NodeLocation, RigidDisk, TorsionalSupport
 from thermogear.drivetrain.section import CrossSection, Material
@@ -56,14 +57,26 @@ def _gear_body(name: str, point, gear, pitch_radius: float, seat_diameter: float
 
 
 def drivetrain_from_section(section, pair, material, mesh_stiffness: float, mesh_damping: float = 0.0,
-                            inertias: tuple[float, float] | None = None, stages: tuple = ()) -> Drivetrain:
+                            inertias: tuple[float, float] | None = None, stages: tuple = (),
+                            helices: tuple[tuple[float, int], ...] = ()) -> Drivetrain:
     """The drivetrain of a ``[drivetrain]`` section (:class:`~thermogear.schema.drivetrain.DrivetrainSection`)
     around ``pair`` (a :class:`~thermogear.geometry.GearPair`: base radii, operating pressure angle and pitch radii,
     bores, face widths) with the case's ``material`` (E [Pa], ν, ρ [kg/m³]; the gear bodies' density and the
     shafts' default), the mean mesh stiffness [N/m] and damping [N·s/m], and the gears' polar ``inertias``
     [kg·m²] where the case gives them. ``stages``: per further stage of ``section.stages``, (its pair, mean mesh
     stiffness [N/m], mean damping [N·s/m]); its mesh is named after the stage, its gear bodies "<stage> pinion" and
-    "<stage> wheel", and its turning sense follows from the shaft its pinion sits on."""
+    "<stage> wheel", and its turning sense follows from the shaft its pinion sits on. ``helices``: per mesh (the
+    case's pair first, then the stages), its base helix angle β_b [rad] and its pinion's hand (+1 right, −1 left);
+    missing ones are spur. Every mesh takes the section's ``helical_contact`` option
+    (:data:`~thermogear.drivetrain.mesh_contact.MESH_CONTACTS`) and its pair's common face width."""
+    contact = mesh_contact(section.helical_contact)
+    helices = tuple(helices) + ((0.0, 1),) * (1 + len(stages) - len(helices))
+
+    def helical(index: int, mesh_pair) -> dict:
+        base_helix, hand = helices[index]
+        return {"base_helix_angle": base_helix, "hand": hand, "contact": contact,
+                "face_width": min(mesh_pair.pinion.face_width, mesh_pair.wheel.face_width)}
+
     ordered = sorted(section.shafts, key=lambda shaft: shaft.name != section.pinion.shaft)  # pinion shaft first
     shafts = []
     for shaft_section in ordered:
@@ -81,7 +94,7 @@ def drivetrain_from_section(section, pair, material, mesh_stiffness: float, mesh
     speeds = shaft_speed_ratios(section, (pair.pinion.teeth, pair.wheel.teeth)) if stages else {}
     sense = 1 if section.pinion_rotation == "counter-clockwise" else -1
     stage_meshes = []
-    for stage_section, (stage_pair, stiffness, damping) in zip(section.stages, stages):
+    for number, (stage_section, (stage_pair, stiffness, damping)) in enumerate(zip(section.stages, stages)):
         pitch_1, pitch_2 = stage_pair.operating_pitch_radii
         for gear_name, point, gear, pitch in (("pinion", stage_section.pinion, stage_pair.pinion, pitch_1),
                                               ("wheel", stage_section.wheel, stage_pair.wheel, pitch_2)):
@@ -93,14 +106,15 @@ def drivetrain_from_section(section, pair, material, mesh_stiffness: float, mesh
             NodeLocation(stage_section.wheel.shaft, stage_section.wheel.position_mm * _MM),
             stage_pair.pinion.base_radius, stage_pair.wheel.base_radius, stage_pair.operating_pressure_angle,
             stiffness, damping, math.radians(stage_section.centre_line_angle_deg),
-            sense if speeds[stage_section.pinion.shaft] > 0 else -sense))
+            sense if speeds[stage_section.pinion.shaft] > 0 else -sense, **helical(number + 1, stage_pair)))
     disks = [RigidDisk(disk.name, NodeLocation(disk.shaft, disk.position_mm * _MM), disk.mass_kg,
                        disk.polar_inertia_kg_m2, disk.diametral_inertia_kg_m2
                        if disk.diametral_inertia_kg_m2 is not None else disk.polar_inertia_kg_m2 / 2.0)
              for disk in section.disks]
     bearings = [Bearing(b.name, NodeLocation(b.shaft, b.position_mm * _MM), b.stiffness_x_n_per_m,
                         b.stiffness_y_n_per_m, b.stiffness_z_n_per_m, b.damping_x_n_s_per_m, b.damping_y_n_s_per_m,
-                        b.damping_z_n_s_per_m, radial_clearance=b.radial_clearance_um * _MICROMETRE)
+                        b.damping_z_n_s_per_m, radial_clearance=b.radial_clearance_um * _MICROMETRE,
+                        tilting_stiffness=b.tilting_stiffness_n_m_per_rad)
                 for b in section.bearings]
     couplings = [Coupling(c.name, NodeLocation(c.shaft_1, c.position_1_mm * _MM),
                           NodeLocation(c.shaft_2, c.position_2_mm * _MM), c.torsional_stiffness_n_m_per_rad,
@@ -114,6 +128,6 @@ def drivetrain_from_section(section, pair, material, mesh_stiffness: float, mesh
                     NodeLocation(section.wheel.shaft, section.wheel.position_mm * _MM), pair.pinion.base_radius,
                     pair.wheel.base_radius, pair.operating_pressure_angle, mesh_stiffness, mesh_damping,
                     math.radians(section.centre_line_angle_deg),
-                    1 if section.pinion_rotation == "counter-clockwise" else -1)
+                    1 if section.pinion_rotation == "counter-clockwise" else -1, **helical(0, pair))
     return Drivetrain(tuple(shafts), (*bodies, *disks), tuple(bearings), tuple(couplings), (mesh, *stage_meshes),
                       tuple(supports))

@@ -222,6 +222,12 @@ def _mean_state(model: MeshModel, points: int) -> tuple[float, float]:
     return float(state.mean_mesh_stiffness), float(np.dot(state.mesh_damping, weights))
 
 
+def _helix(case) -> tuple[float, int]:
+    """(β_b [rad], the pinion's hand) of a case's pair: (0, +1) for a spur pair."""
+    helical = case.helical_pair
+    return (0.0, 1) if helical is None else (helical.base_helix_angle, helical.pinion_hand)
+
+
 def case_drivetrain(case, models: tuple[str, ...] = (ELASTIC, THERMAL)) -> CaseDrivetrain:
     """Build the case's drivetrain for its elastic (cold) and thermal (hot) mesh models (module docstring)."""
     section = case.drivetrain
@@ -235,7 +241,7 @@ def case_drivetrain(case, models: tuple[str, ...] = (ELASTIC, THERMAL)) -> CaseD
     cold_stages = tuple((stage.gear_pair, *_mean_state(model, points))
                         for stage, model in zip(case.stages, stage_models[ELASTIC]))
     cold = drivetrain_from_section(section, case.gear_pair, case.material, stiffness, damping, case.inertias,
-                                   cold_stages)
+                                   cold_stages, tuple(_helix(item) for item in (case, *train.cases)))
     drivetrains = {ELASTIC: cold}
     notes: list[str] = []
     warm_moduli, warm_state = None, {}

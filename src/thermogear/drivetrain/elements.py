@@ -10,7 +10,7 @@ one or more shaft nodes (``locations``, 6 DOF each: x, y, z, α, β, θ) and giv
   (:class:`~thermogear.dynamics.backlash_ndof.DeadZone`: a bearing's radial clearance, one per direction x, y);
 - ``mesh_vector()``: the vector w of a time-varying (mesh) stiffness k(τ)·w wᵀ on its DOFs, None for a constant
   element; a mesh's stiffness, damping, excitation and backlash come from its mesh state, so its constant matrices
-  are zero and its dead zone (the backlash) is built with the state's width;
+  hold only what no state changes (a helical spread contact's tilting stiffness and damping) and its dead zone (the backlash) is built with the state's width;
 - ``energy_group``: the name under which its strain energy is reported (a shaft's elements share the shaft's
   name; None for an element without stiffness).
 

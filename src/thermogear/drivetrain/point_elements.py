@@ -149,6 +149,8 @@ class Bearing(OneNodeElement):
     in y, each on its own, and meets the bearing's stiffness and damping beyond (a dead zone per direction, the
     piecewise-linear form of a radial clearance: a square gap rather than a circle). The modes and the linear periodic
     response use the bearing in contact; the backlash solver (``drivetrain_backlash_system``) takes the clearance.
+    ``tilting_stiffness`` [N·m/rad] resists the shaft's tilts α and β at the bearing (a wide or paired bearing; 0, the
+    default, is a bearing that lets the shaft tilt freely); its moment on the housing is :meth:`housing_moment`.
     """
 
     name: str
@@ -162,10 +164,11 @@ class Bearing(OneNodeElement):
     stiffness_xy: float = 0.0
     damping_xy: float = 0.0
     radial_clearance: float = 0.0
+    tilting_stiffness: float = 0.0
 
     def __post_init__(self) -> None:
         for key in ("stiffness_x", "stiffness_y", "stiffness_z", "damping_x", "damping_y", "damping_z",
-                    "radial_clearance"):
+                    "radial_clearance", "tilting_stiffness"):
             _non_negative(f"{self.name}.{key}", getattr(self, key))
         if self.radial_clearance > 0.0 and (self.stiffness_xy != 0.0 or self.damping_xy != 0.0):
             raise CaseError(f"{self.name}.radial_clearance", self.radial_clearance, "0 with cross-coupling terms",
@@ -176,7 +179,12 @@ class Bearing(OneNodeElement):
         matrix = np.zeros((6, 6))
         matrix[:3, :3] = [[self.stiffness_x, self.stiffness_xy, 0.0], [self.stiffness_xy, self.stiffness_y, 0.0],
                           [0.0, 0.0, self.stiffness_z]]
+        matrix[3, 3] = matrix[4, 4] = self.tilting_stiffness
         return matrix
+
+    def housing_moment(self, tilts: np.ndarray) -> np.ndarray:
+        """Moment on the housing (S, 2) [N·m] about x and y from the node's tilts α, β (S, 2) [rad]."""
+        return self.tilting_stiffness * np.asarray(tilts, dtype=float)
 
     def damping_matrix(self) -> np.ndarray:
         """6×6 damping on the node's DOFs."""

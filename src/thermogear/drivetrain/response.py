@@ -24,7 +24,7 @@ from typing import Any
 import numpy as np
 
 from thermogear.drivetrain.assembly import AssembledDrivetrain
-from thermogear.drivetrain.static_state import mesh_torque_forces
+from thermogear.drivetrain.static_state import bearing_moments, mesh_torque_forces
 from thermogear.drivetrain.train import MeshTrain, TrainGrid, train_grid
 from thermogear.dynamics.backlash_ndof import BacklashSystem
 from thermogear.dynamics.metrics import compute_metrics
@@ -143,7 +143,7 @@ class MeshResponse:
 class DrivetrainResponse:
     """Periodic response over one mesh period: ``time`` (S,) [s]; ``transmission_error`` δ = wᵀq [m] and its rate
     [m/s]; ``mesh_force`` k(δ) − Σk_ie_i + c·δ̇ [N]; ``bearing_forces`` name → (S, 3) force on the housing in
-    x, y, z [N]; ``displacement`` (S, DOFs) [SI]; Floquet ``multipliers``; ``metrics`` of the 1-DOF chain computed
+    x, y, z [N] (``bearing_moments`` name → (S, 2) its tilting moment about x, y [N·m]); ``displacement`` (S, DOFs) [SI]; Floquet ``multipliers``; ``metrics`` of the 1-DOF chain computed
     from δ (kv, dte_rms, …; see :func:`thermogear.dynamics.metrics.compute_metrics`). ``period`` is the mesh period,
     or a train's common period; ``meshes`` holds each mesh's δ, force and metrics by name (the fields above are the
     first mesh's)."""
@@ -158,6 +158,7 @@ class DrivetrainResponse:
     metrics: dict[str, Any]
     period: float
     meshes: dict[str, MeshResponse] = field(default_factory=dict)
+    bearing_moments: dict[str, np.ndarray] = field(default_factory=dict)  # name → (S, 2) [N·m] about x, y
 
     @property
     def kv(self) -> float | None:
@@ -272,7 +273,7 @@ def _response(assembled: AssembledDrivetrain, train: MeshTrain, problems, grid: 
     first = next(iter(meshes.values()))
     return DrivetrainResponse(response.time, first.transmission_error, first.transmission_error_rate,
                               first.mesh_force, forces, displacement, response.multipliers, first.metrics,
-                              grid.period, meshes)
+                              grid.period, meshes, bearing_moments(assembled, displacement))
 
 
 def bearing_forces(assembled: AssembledDrivetrain, displacement: np.ndarray, velocity: np.ndarray,

@@ -7,15 +7,15 @@ meet modes and what heat moved per mode. Values are SI (m, N, Hz); :meth:`as_jso
 
 from __future__ import annotations
 
-import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
-from types import MappingProxyType
 from typing import Any
 
 import numpy as np
 
 from thermogear.drivetrain.case_layout import MESH_NAME
+from thermogear.drivetrain.bearing_results import (BearingForces, _frozen_mapping, bearing_forces_of,  # noqa: F401
+                                                   unknown_bearing_forces)
 from thermogear.drivetrain.heat_results import HeatShift, heat_rows
 from thermogear.drivetrain.train_results import StageResult, harmonic_orders, stage_results  # noqa: F401
 
@@ -29,10 +29,6 @@ MESH_DOMINATED_SHARE = 0.1
 #: Modes with a smaller mesh share still respond where a harmonic meets them: lateral modes of 3–4 % mesh share
 #: carry the largest bearing forces of the FZG rig set. Their crossings are listed too. A threshold chosen here.
 MESH_COUPLED_SHARE = 0.01
-
-
-def _frozen_mapping(values: Mapping) -> Mapping:
-    return MappingProxyType(dict(values))
 
 
 @dataclass(frozen=True)
@@ -123,50 +119,6 @@ def resonances_of(rows: tuple[ModeRow, ...], teeth: int, harmonics: int,
     return tuple(Resonance(60.0 * row.frequency_hz / (j * per_turn), j, row.frequency_hz, row.label, row.mesh_share,
                            row.mesh_dominated, name)
                  for name, per_turn in meshes for row in coupled for j in range(1, harmonics + 1))
-
-
-@dataclass(frozen=True)
-class BearingForces:
-    """One bearing's force on its housing over a mesh period: mean radial force [N], RMS of the dynamic radial force
-    |F − F̄| [N], and the radial amplitudes √(X_j² + Y_j²) [N] of mesh harmonics j = 1… at ``harmonic_hz`` [Hz]
-    (None where the response was not found)."""
-
-    mean_radial_n: float | None
-    dynamic_rms_n: float | None
-    harmonic_hz: tuple[float, ...]
-    harmonic_amplitude_n: tuple[float | None, ...]
-
-    def as_json(self) -> dict[str, Any]:
-        return {"mean_radial_n": self.mean_radial_n, "dynamic_rms_n": self.dynamic_rms_n,
-                "harmonic_hz": list(self.harmonic_hz), "harmonic_amplitude_n": list(self.harmonic_amplitude_n)}
-
-
-def bearing_forces_of(response, harmonics: int, spectrum_points: int) -> Mapping[str, BearingForces]:
-    """Per bearing of a response (anything with ``time``, ``bearing_forces`` and ``bearing_spectrum``): the mean
-    radial force, the RMS of the dynamic radial force (trapezoidal rule on the solver's samples, a jump being a
-    segment of zero width) and the radial amplitudes of the first ``harmonics`` mesh harmonics (from at least
-    ``spectrum_points`` uniform samples of the period); for a train, those of every mesh (:func:`harmonic_orders`)."""
-    summary = {}
-    time = response.time
-    orders = harmonic_orders(response, harmonics)
-    spectrum_points = max(spectrum_points, 4 * orders[-1])
-    for name, force in response.bearing_forces.items():
-        radial = force[:, :2]
-        mean = np.trapezoid(radial, time, axis=0) / (time[-1] - time[0])
-        dynamic = np.sum((radial - mean) ** 2, axis=1)
-        rms = math.sqrt(float(np.trapezoid(dynamic, time)) / (time[-1] - time[0]))
-        frequencies, amplitudes = response.bearing_spectrum(name, points=spectrum_points)
-        radial_amplitudes = np.hypot(amplitudes[0], amplitudes[1])
-        summary[name] = BearingForces(float(np.hypot(*mean)), rms, tuple(float(frequencies[j]) for j in orders),
-                                      tuple(float(radial_amplitudes[j]) for j in orders))
-    return _frozen_mapping(summary)
-
-
-def unknown_bearing_forces(names, period: float, harmonics: int) -> Mapping[str, BearingForces]:
-    """Every bearing's forces unknown (no orbit found), at the mesh harmonics of ``period`` [s]."""
-    frequency = 1.0 / period
-    return _frozen_mapping({name: BearingForces(None, None, tuple(j * frequency for j in range(1, harmonics + 1)),
-                                                (None,) * harmonics) for name in names})
 
 
 def _micro(value: float | None) -> float | None:

@@ -13,6 +13,7 @@ from __future__ import annotations
 from dataclasses import dataclass, replace
 from fractions import Fraction
 
+from thermogear.case_geometry import helical_pair_of
 from thermogear.drivetrain.train import common_period_repeats
 from thermogear.schema.drivetrain_topology import shaft_speed_ratios
 
@@ -46,8 +47,9 @@ def stage_train(case) -> StageTrain:
         relative.append(Fraction(stage.gear_pair.pinion.teeth) * factor / first.pinion.teeth)
         stage_operating = replace(operating, speed_rpm=operating.speed_rpm * float(factor),
                                   torque=operating.torque / float(factor))
+        helical = helical_pair_of(stage.gears_input)  # a stage's own helix (its mesh state and mesh element)
         cases.append(replace(case, gear_pair=stage.gear_pair, gears_input=stage.gears_input,
                              roughness_ra=stage.roughness_ra, operating_point=stage_operating, inertias=None,
-                             drivetrain=None, stages=()))
+                             drivetrain=None, stages=(), helical_pair=helical if helical.helix_angle > 0.0 else None))
     phases = (0.0, *(float(stage.mesh_phase) for stage in section.stages))
     return StageTrain(tuple(cases), tuple(speeds), common_period_repeats(relative), phases)

@@ -9,7 +9,7 @@ K_b·u at its node (Friswell et al. 2010 §5.5); on a shaft with two bearings it
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -17,18 +17,20 @@ from thermogear.drivetrain.assembly import AssembledDrivetrain
 from thermogear.dynamics.rigid_body import rigid_body_reduction
 from thermogear.errors import CaseError
 
-__all__ = ["StaticState", "mesh_torque_forces", "static_state"]
+__all__ = ["StaticState", "bearing_moments", "mesh_torque_forces", "static_state"]
 
 
 @dataclass(frozen=True, eq=False)
 class StaticState:
-    """Static displacement (DOFs,) [SI], mesh deflection δ̄ = wᵀq̄ [m] and force k̄(δ̄ − ē) [N] per mesh, and the
-    force of each bearing on its housing (name → (3,) [N] in x, y, z)."""
+    """Static displacement (DOFs,) [SI], mesh deflection δ̄ = wᵀq̄ [m] and force k̄(δ̄ − ē) [N] per mesh, the
+    force of each bearing on its housing (name → (3,) [N] in x, y, z: radial x, y and axial z) and its tilting
+    moment (name → (2,) [N·m] about x and y; zero where the bearing has no tilting stiffness)."""
 
     displacement: np.ndarray
     mesh_deflection: np.ndarray
     mesh_force: np.ndarray
     bearing_forces: dict[str, np.ndarray]
+    bearing_moments: dict[str, np.ndarray] = field(default_factory=dict)
 
 
 def mesh_torque_forces(assembled: AssembledDrivetrain, normal_loads: np.ndarray) -> np.ndarray:
@@ -66,6 +68,15 @@ def bearing_reactions(assembled: AssembledDrivetrain, displacement: np.ndarray) 
     return forces
 
 
+def bearing_moments(assembled: AssembledDrivetrain, displacement: np.ndarray) -> dict[str, np.ndarray]:
+    """Tilting moment of each bearing on its housing (…, 2) [N·m] about x and y for displacements (…, DOFs)."""
+    moments = {}
+    for bearing in assembled.drivetrain.bearings:
+        dofs = [assembled.dof(bearing.location, name) for name in ("alpha", "beta")]
+        moments[bearing.name] = bearing.housing_moment(np.asarray(displacement)[..., dofs])
+    return moments
+
+
 def static_state(assembled: AssembledDrivetrain, normal_loads: np.ndarray | float,
                  mean_deviation: np.ndarray | float = 0.0, mesh_stiffness: np.ndarray | None = None,
                  external_forces: np.ndarray | None = None) -> StaticState:
@@ -88,4 +99,4 @@ def static_state(assembled: AssembledDrivetrain, normal_loads: np.ndarray | floa
     displacement = reduction.expand(reduced)
     deflection = assembled.mesh_vectors @ displacement
     return StaticState(displacement, deflection, stiffness_values * (deflection - deviation),
-                       bearing_reactions(assembled, displacement))
+                       bearing_reactions(assembled, displacement), bearing_moments(assembled, displacement))

@@ -17,6 +17,7 @@ from thermogear.drivetrain.assembly import AssembledDrivetrain
 from thermogear.drivetrain.backlash_response import (PeriodForces, SampledMotion, one_blas_thread,
                                                     reduced_backlash_system, sampled_metrics, sampled_motion)
 from thermogear.drivetrain.response import drivetrain_backlash_system, drivetrain_periodic_system
+from thermogear.drivetrain.static_state import bearing_moments
 from thermogear.dynamics.backlash_trajectory import backlash_trajectory, linear_trajectory
 from thermogear.errors import CaseError
 from thermogear.mesh.state import MeshState
@@ -90,5 +91,6 @@ def drivetrain_transient(assembled: AssembledDrivetrain, state: MeshState, perio
     for key in _ORBIT_KEYS:
         metrics.pop(key, None)
     return DrivetrainTransient(trajectory.time, motion, trajectory.region, bool(backlash), trajectory.end_state,
-                               metrics, PeriodForces(last.time, last_motion.bearing_forces, problem.period),
+                               metrics, PeriodForces(last.time, last_motion.bearing_forces, problem.period,
+                                                     bearing_moments(assembled, last_motion.displacement)),
                                problem.period, int(periods))

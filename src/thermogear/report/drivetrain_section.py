@@ -74,13 +74,14 @@ def _bearings_table(results) -> str:
     models = results.models
     first = next(iter(models.values()))
     harmonics = len(next(iter(first.bearing_forces.values())).harmonic_amplitude_n)
-    header = ["bearing", "model", "mean radial [N]", "dynamic RMS [N]"] + [f"{j}× mesh [N]"
-                                                                           for j in range(1, harmonics + 1)]
+    header = (["bearing", "model", "mean radial [N]", "dynamic RMS [N]", "mean axial [N]", "tilting moment [N·m]"]
+              + [f"{j}× mesh [N]" for j in range(1, harmonics + 1)])
     rows = [_cells(header, header=True)]
     for bearing in first.bearing_forces:
         for name, model in models.items():
             force = model.bearing_forces[bearing]
-            rows.append(_cells([bearing, name, _number(force.mean_radial_n), _number(force.dynamic_rms_n)]
+            rows.append(_cells([bearing, name, _number(force.mean_radial_n), _number(force.dynamic_rms_n),
+                                _number(force.mean_axial_n), _number(force.mean_tilting_moment_n_m)]
                                + [_number(a, "{:.2f}") for a in force.harmonic_amplitude_n]))
     return "<table>" + "".join(rows) + "</table>"
 

@@ -134,6 +134,9 @@ class BearingSection(Section):
         "square dead zone); 0 (the default) is the bearing in permanent contact; above 0 only with the nonlinear "
         "mesh (dynamics.mesh), whose backlash solver takes the clearance; with the gearbox thermal model it "
         "changes with the ring temperatures (docs/gearbox-temperature.md)"))] = 0.0
+    tilting_stiffness_n_m_per_rad: Annotated[float, Field(ge=0.0, le=1e12, description=(
+        "stiffness against the shaft's tilt at the bearing [N·m/rad], about x and about y (a wide or paired "
+        "bearing); 0, the default, lets the shaft tilt freely there. Its moment is reported per bearing"))] = 0.0
     loss: BearingLossSection | None = Field(None, description=(
         "the bearing's loss-model data for the gearbox thermal model: { designation = 'NJ406' } or type, bore_mm, "
         "outside_mm, width_mm, rolling_constant, sliding_constants, geometry_constant, drag_variable; optional "
@@ -216,6 +219,11 @@ class DrivetrainSection(Section):
         "direction from the pinion's centre to the wheel's [°], from +x towards +y"))] = 0.0
     pinion_rotation: Literal["counter-clockwise", "clockwise"] = Field(
         "counter-clockwise", description="the pinion's turning sense about +z")
+    helical_contact: Literal["point", "spread"] = Field("point", description=(
+        "where a mesh's stiffness acts across the face: 'point' (the default) a constant normal stiffness at the "
+        "operating pitch point at mid-face, as other rotordynamics tools have; 'spread' the stiffness spread "
+        "across the face, which adds the tilting stiffness k̄·b²/12 of a uniform face about mid-face "
+        "(docs/drivetrain.md, 'A helical pair on two shafts'); applies to every mesh, spur ones too"))
     maximum_element_length_mm: Annotated[float, Field(ge=1.0, le=2000.0, description=(
         "longest shaft element [mm] (nodes are also placed at every attachment)"))] = 25.0
     response_cutoff_hz: Annotated[float, Field(ge=100.0, le=1e7, description=(
@@ -234,7 +242,7 @@ class DrivetrainSection(Section):
     bearings: Annotated[list[BearingSection], Field(min_length=1, max_length=200, description=(
         "[[drivetrain.bearings]] tables: name, shaft, position_mm, stiffness_x_n_per_m, stiffness_y_n_per_m, "
         "optional stiffness_z_n_per_m (locates the shaft axially), damping_x_n_s_per_m, damping_y_n_s_per_m, "
-        "damping_z_n_s_per_m, radial_clearance_um (≥ 0 μm, default 0; above 0 only with dynamics.mesh = "
+        "damping_z_n_s_per_m, tilting_stiffness_n_m_per_rad, radial_clearance_um (≥ 0 μm, default 0; above 0 only with dynamics.mesh = "
         "'nonlinear'; with the gearbox thermal model it follows the ring temperatures), loss (the bearing's SKF "
         "loss data for the gearbox thermal model: { designation = 'NJ406' } or type, bore_mm, outside_mm, "
         "width_mm, rolling_constant, sliding_constants, geometry_constant, drag_variable, and optionally "
