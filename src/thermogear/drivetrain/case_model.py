@@ -26,11 +26,11 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from thermogear.composition import DRIVETRAIN_HEAT, builtin
 from thermogear.dynamics.mesh_laws import mesh_law
 from thermogear.drivetrain.assembly import Drivetrain
 from thermogear.drivetrain.case_layout import drivetrain_from_section
 from thermogear.drivetrain.heat import ModeShifts, WarmState, thermal_mode_shifts, warm_drivetrain
-from thermogear.drivetrain.heat_source import drivetrain_heat_of
 from thermogear.drivetrain.stages import stage_train
 from thermogear.drivetrain.warm_state import operating_clearances, shaft_temperatures, with_clearances
 from thermogear.drivetrain.modes import DrivetrainModes, drivetrain_modes
@@ -255,7 +255,10 @@ def case_drivetrain(case, models: tuple[str, ...] = (ELASTIC, THERMAL)) -> CaseD
             tooth_c = MODULUS_REFERENCE_C if bulk is None else float(bulk)
             beta, geometry = MODULUS_TEMPERATURE_COEFFICIENTS_PER_K["carbon_steel"], {}
             expansion = 0.0  # the paper's model keeps the cold geometry
-        heat = drivetrain_heat_of(case)
+        # the temperatures the case's temperature model predicts for the drivetrain (its provider in
+        # composition.DRIVETRAIN_HEAT), or None where that model predicts none
+        provider = builtin(DRIVETRAIN_HEAT, case.temperature.model)
+        heat = None if provider is None else provider(case)
         temperatures, warm_state, note = shaft_temperatures(section, tooth_c, heat, thermoelastic is not None)
         notes += [note] if note else []
         stage_stiffness = tuple(_mean_state(model, points)[0] for model in stage_models[THERMAL])
