@@ -42,7 +42,7 @@ from thermogear.schema.drivetrain import check_drivetrain_fits_gears
 from thermogear.schema.drivetrain_topology import check_drivetrain_train
 from thermogear.temperature_field import (check_temperatures, default_bulk_temperature,
                                          temperature_field_from_section)
-from thermogear.thermal_model_rules import thermal_model_rules
+from thermogear.thermal_model_rules import thermal_model_rules, x_te_source
 from thermogear.text_files import is_existing_file, path_exists, read_user_text
 from thermogear.thermoelastic.inputs import check_thermoelastic_inputs
 from thermogear.involute import disc_polar_inertia
@@ -255,14 +255,15 @@ def _check_thermal_inputs(section: ThermalSection) -> None:
     """The X_te inputs of a ``[thermal]`` section whose model reads X_te: given or calibrated, not both."""
     if not thermal_model_rules(section.model).reads_x_te:  # e.g. the paper's k_T (Eqs. 13–23) uses X_te
         return
-    if section.x_te_source == "given" and section.x_te is None:
+    source = x_te_source(section.x_te_source)
+    if source.given and section.x_te is None:
         raise CaseError("thermal.x_te", None, ">= 0 (or x_te_source = 'calibrated')",
                         "thermal.model = 'luo2020', the paper's thermal stiffness (Luo & Li 2020 Eqs. 13–23), needs "
                         "the thermal-load correction factor X_te; give thermal.x_te or calibrate it")
-    if section.x_te_source == "calibrated" and section.x_te is not None:
+    if source.calibrated and section.x_te is not None:
         raise CaseError("thermal.x_te", section.x_te, "absent with x_te_source = 'calibrated'",
                         "X_te is either given or calibrated; remove one of them")
-    if section.x_te_source == "calibrated" and section.calibration_drop_percent is None:
+    if source.calibrated and section.calibration_drop_percent is None:
         raise CaseError("thermal.calibration_drop_percent", None, "(0, 100)",
                         "x_te_source = 'calibrated' needs the target stiffness drop")
 
