@@ -27,7 +27,8 @@ import numpy as np  # noqa: E402
 
 from thermogear import load_case  # noqa: E402
 from thermogear.drivetrain.case_model import case_drivetrain, heat_table, mode_table  # noqa: E402
-from thermogear.sweep.drivetrain_speeds import SweepOrigin, drivetrain_speed_sweep  # noqa: E402
+from thermogear.sweep import Study  # noqa: E402
+from thermogear.sweep.drivetrain_run import run_drivetrain_study  # noqa: E402
 
 SPEEDS = np.linspace(1000.0, 14000.0, 53)  # pinion speeds [rpm]: 250 rpm steps, through the lateral resonances
 
@@ -40,8 +41,13 @@ def main(out: Path) -> dict:
         built = case_drivetrain(case)
         cold = mode_table(built.modes("elastic"), built.drivetrains["elastic"])
         heat = heat_table(built.heat_shifts(), built.drivetrains["elastic"])
-        origin = SweepOrigin(case.name, str(case.source), case.document, case.operating_point.load_held)
-        sweep = drivetrain_speed_sweep(built, origin, SPEEDS, ("elastic", "thermal"))
+        # the speed study `thermogear sweep` runs, here in this process, into a store in the output folder, with the
+        # linear mesh (permanent contact: each speed's one periodic response; the set's own backlash mesh would
+        # follow the orbit up and down in speed)
+        linear = case.with_changes(**{"dynamics.mesh": "linear"})
+        study = Study.define(linear, {"speed_rpm": SPEEDS.tolist()}, model="both")
+        sweep = run_drivetrain_study(study, out / "speeds.zarr", scheduler="serial",
+                                     overwrite=(out / "speeds.zarr").exists())
     data = sweep.dataset
     first = data["bearing_harmonic_amplitude_n"].sel(harmonic=1).max("bearing")  # largest bearing, 1× mesh
     teeth = case.gear_pair.pinion.teeth

@@ -3,7 +3,8 @@ external `dask scheduler` with two `dask worker` processes give the same store f
 with SIGKILL part-way and resumed, a study gives the store of an uninterrupted run, and no process of it is left.
 
 Tiny grids: the two-shaft drivetrain cut to 32 intervals and a 10 kHz modal cut-off, the FZG pair's branches at
-three speeds, luo2019's grid (the paper's linear mesh), the FZG gearbox's steady grid.
+three speeds (and with a two-start search at every point), luo2019's grid (the paper's linear mesh), the FZG
+gearbox's steady grid and its warm-ups at three torques.
 """
 
 from __future__ import annotations
@@ -20,10 +21,16 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from test_sweep_distributed import cluster  # noqa: F401  (the scheduler + two workers fixture)
+from test_sweep_distributed import cluster as _one_cluster
 
 DATA = Path(__file__).resolve().parents[1] / "data"
 pytestmark = [pytest.mark.slow, pytest.mark.filterwarnings("ignore")]
+
+
+@pytest.fixture(scope="module")
+def cluster():
+    """One scheduler and two workers for every kind of this module (each start costs seconds)."""
+    yield from _one_cluster.__wrapped__()
 
 
 def _drivetrain_case(tmp_path: Path, mesh: str) -> Path:
@@ -57,6 +64,14 @@ def _study(kind: str, tmp_path: Path) -> tuple[object, dict]:
                                                            "model": "elastic"}
     if kind == "branches":
         return "fzg_type_c", {"vary": {"torque_nm": [100, 200], "speed_rpm": "8000:24000:3"}, "model": "elastic"}
+    if kind == "warmup":  # the FZG gearbox's warm-up (10 min, the mesh every 5 min) at three torques
+        from thermogear.sweep.warmup_study import WarmupSettings
+
+        return DATA / "gearbox" / "fzg_gearbox.toml", {"vary": {"torque_nm": [50, 100, 150]}, "kind": "warmup",
+                                                       "warmup": WarmupSettings(600.0, 300.0)}
+    if kind == "multistart":  # the branches and, at every point, the search from two starts
+        return "fzg_type_c", {"vary": {"torque_nm": [200], "speed_rpm": "16000:24000:3"}, "model": "elastic",
+                              "multistart": 2}
     return "luo2019", {"vary": {"speed_rpm": "1000:12000:24", "torque_nm": [100, 200]},
                                     "chunk_points": 8}
 
@@ -72,11 +87,11 @@ def _gearbox_grid(out: Path, scheduler: str, workers=None) -> None:
                      scheduler, workers, out=out, chunk_points=4, case=case)
 
 
-KINDS = ("grid", "branches", "drivetrain-linear", "drivetrain-backlash", "gearbox-grid")
+KINDS = ("grid", "branches", "multistart", "drivetrain-linear", "drivetrain-backlash", "gearbox-grid", "warmup")
 
 
 @pytest.mark.parametrize("kind", KINDS)
-def test_serial_local_workers_and_a_scheduler_give_the_same_store(kind, tmp_path, cluster):  # noqa: F811
+def test_serial_local_workers_and_a_scheduler_give_the_same_store(kind, tmp_path, cluster):
     import thermogear
 
     address, _ = cluster
@@ -108,6 +123,10 @@ def _command(kind: str, tmp_path: Path, out: Path, scheduler: str, *extra: str) 
     for name, values in arguments["vary"].items():
         vary += ["--vary", f"{name}={values if isinstance(values, str) else ','.join(map(str, values))}"]
     options = [*(("--model", arguments["model"]) if "model" in arguments else ()),
+               *(("--multistart", str(arguments["multistart"])) if "multistart" in arguments else ()),
+               *(("--kind", arguments["kind"]) if "kind" in arguments else ()),
+               *(("--duration-s", str(arguments["warmup"].duration_s), "--interval-s",
+                  str(arguments["warmup"].interval_s)) if "warmup" in arguments else ()),
                *(("--chunk-points", str(arguments["chunk_points"])) if "chunk_points" in arguments else ())]
     return [sys.executable, "-m", "thermogear", "sweep", str(case), *vary, *options, "--out", str(out),
             "--scheduler", scheduler, "--no-progress", "--json", *extra]

@@ -1,5 +1,6 @@
-"""The drivetrain sweep with the backlash mesh (issue 27): each point's numbers are the backlash response at that
-speed, and a point without an orbit is stored as missing with the reason."""
+"""The drivetrain study with the backlash mesh (issues 27, 34): each point's numbers are the backlash response at
+that speed, and a point without an orbit is stored as missing with the reason (the study of
+thermogear.sweep.drivetrain_study, serial, into its store)."""
 
 from __future__ import annotations
 
@@ -12,16 +13,12 @@ import pytest
 from thermogear.case import case_from_document
 from thermogear.drivetrain.backlash_response import drivetrain_backlash_response
 from thermogear.drivetrain.case_model import bearing_force_summary, case_drivetrain
-from thermogear.sweep.drivetrain_branches import SAMPLES_PER_PIECE, SUBSTEPS, drivetrain_branch_sweep
-from thermogear.sweep.drivetrain_speeds import SweepOrigin
+from thermogear.sweep.drivetrain_branches import SAMPLES_PER_PIECE, SUBSTEPS
 
 DATA = Path(__file__).resolve().parents[1] / "data"
 
 
-ORIGIN = SweepOrigin("two_shaft_backlash", "test", {}, "constant torque")  # recorded only (no worker here)
-
-
-def _built():
+def _case():
     import tomllib
 
     document = tomllib.loads((DATA / "two_shaft_drivetrain.toml").read_text(encoding="utf-8"))
@@ -30,13 +27,29 @@ def _built():
     document["drivetrain"].update(sweep_points_per_period=32, response_cutoff_hz=10000.0)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        return case_drivetrain(case_from_document(document, "two_shaft_backlash"), ("elastic",))
+        return case_from_document(document, "two_shaft_backlash")
 
 
-def test_each_point_is_the_backlash_response_at_its_speed():
-    built = _built()
+def _built(case):
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        return case_drivetrain(case, ("elastic",))
+
+
+def _study(case, speeds, out: Path, **options):
+    import thermogear
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        return thermogear.sweep(case, vary={"speed_rpm": [float(speed) for speed in speeds]}, out=out,
+                                model="elastic", scheduler="serial", **options)
+
+
+def test_each_point_is_the_backlash_response_at_its_speed(tmp_path):
+    case = _case()
+    built = _built(case)
     speeds = np.array([3000.0, 5000.0])  # well below the mesh-coupled modes: one orbit, in permanent contact
-    data = drivetrain_branch_sweep(built, ORIGIN, speeds, ("elastic",)).dataset
+    data = _study(case, speeds, tmp_path / "s.zarr")
     assert bool(data["valid"].all())
     section = built.section
     for index, speed in enumerate(speeds):
@@ -58,11 +71,21 @@ def test_each_point_is_the_backlash_response_at_its_speed():
                                        [forces[name]["harmonic_amplitude_n"] for name in forces], rtol=1e-9)
 
 
-def test_a_point_without_an_orbit_is_missing_with_its_reason():
-    # at 1e-12 rpm the mesh period is ~1e11 s: the flow overflows and the shooting fails; the other speed is
-    # computed, its branch starting afresh
-    built = _built()
-    data = drivetrain_branch_sweep(built, ORIGIN, np.array([1e-12, 3000.0]), ("elastic",)).dataset
+def test_a_point_without_an_orbit_is_missing_with_its_reason(tmp_path, monkeypatch):
+    # a speed whose backlash system cannot be built (here: its matrices made to overflow, as a transition matrix
+    # does at a speed far below the study's checked range) is stored as missing with the reason; the other speed is
+    # computed, the up branch starting afresh after it and the down branch carrying on past it
+    import thermogear.drivetrain.response as response
+
+    built_system = response.drivetrain_backlash_system
+
+    def overflowing(assembled, state):
+        if state.speed_rpm == 1000.0:
+            raise np.linalg.LinAlgError("the transition matrix overflowed")
+        return built_system(assembled, state)
+
+    monkeypatch.setattr(response, "drivetrain_backlash_system", overflowing)  # the serial study runs here
+    data = _study(_case(), [1000.0, 3000.0], tmp_path / "s.zarr")
     for direction in ("up", "down"):
         point = data.sel(direction=direction, model="elastic")
         status = [str(value) for value in point["status"].values]
@@ -72,8 +95,9 @@ def test_a_point_without_an_orbit_is_missing_with_its_reason():
         assert np.isfinite(point["kv"].values[1])
 
 
-def test_directions_are_checked():
+def test_directions_are_checked(tmp_path):
     from thermogear.errors import CaseError
 
     with pytest.raises(CaseError, match="--direction"):
-        drivetrain_branch_sweep(_built(), ORIGIN, np.array([3000.0]), ("elastic",), ("sideways",))
+        _study(_case(), [3000.0], tmp_path / "s.zarr", direction="sideways")
+    assert not (tmp_path / "s.zarr").exists()

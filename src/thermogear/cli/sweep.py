@@ -45,13 +45,21 @@ def sweep(
                                    "share (about 0.1 s per start, point and model; default 0: branches only)"),
     hold: str = typer.Option(None, "--hold", help="the load a speed sweep keeps from speed to speed: torque "
                              "(default) | power; stated in the store, the summary, the JSON and the plot"),
+    kind: str = typer.Option(None, "--kind", help="the kind of study when the case's own is not meant: warmup (the "
+                             "gearbox warm-up at every point of the grid; a case with a [gearbox])"),
+    duration_s: float = typer.Option(None, "--duration-s", help="--kind warmup: each warm-up's duration [s] "
+                                     "(default 1200)"),
+    interval_s: float = typer.Option(None, "--interval-s", help="--kind warmup: time between mesh "
+                                     "re-evaluations [s] (default 10)"),
+    start_c: float = typer.Option(None, "--start-c", help="--kind warmup: every node's start temperature [°C] "
+                                  "(default: each point's ambient)"),
 ) -> None:
     """Run a parameter study of a case (grid over speed, load, temperatures, geometry) into a zarr store.
 
     Every kind of study runs on one Dask executor into one resumable store: a linear-mesh pair's independent points,
     a nonlinear-mesh pair's branches up and down in speed (each orbit from its neighbour's), a drivetrain case's
-    speeds (linear or backlash mesh) over any other keys; a speed sweep holds the torque (--hold power: the
-    power)."""
+    speeds (linear or backlash mesh) over any other keys, and, named with --kind warmup, a gearbox case's warm-up at
+    every point; a speed sweep holds the torque (--hold power: the power)."""
     from thermogear.sweep import Study, load_study_case, run_study
     from thermogear.sweep.store import study_description
 
@@ -80,8 +88,36 @@ def sweep(
         if stored is not None:
             chosen_model = chosen_model or ("both" if len(stored["models"]) == 2 else stored["models"][0])
             chunks = chunks or stored["chunk_points"]
-        study = Study.define(loaded, definition, model=chosen_model or "both", chunk_points=chunks,
+        from thermogear.sweep.api import study_kind
+
+        chosen = study_kind(loaded, method, kind)
+        study = Study.define(loaded, definition, model=chosen_model or chosen.default_model, chunk_points=chunks,
                              hold=hold or (stored or {}).get("hold", "torque"))
+        warmup = None
+        if (duration_s, interval_s, start_c) != (None, None, None):
+            from thermogear.sweep.warmup_study import WarmupSettings
+
+            warmup = WarmupSettings(1200.0 if duration_s is None else duration_s,
+                                    10.0 if interval_s is None else interval_s, start_c)
+        elif (stored or {}).get("warmup"):  # --resume of a warm-up family: its settings as stored
+            from thermogear.sweep.warmup_study import WarmupSettings
+
+            warmup = WarmupSettings(**stored["warmup"])
+        if not chosen.by_case:  # a kind named on the command line, through the registry
+            from thermogear.cli.sweep_named import run_named_sweep
+
+            if plot is not None or dashboard is not None:
+                raise CaseError("--plot" if plot is not None else "--dashboard", str(plot or dashboard),
+                                f"absent with --kind {kind}", "this kind of study draws no speed plot and runs on the "
+                                "executor without a dashboard")
+            run_named_sweep(chosen, study, out, {
+                "scheduler": scheduler, "workers": workers, "resume": resume, "overwrite": overwrite,
+                "chunk_points": chunk_points or (stored or {}).get("chunk_points"), "method": method,
+                "direction": direction, "multistart": multistart, "warmup": warmup}, _progress_bar if progress and not as_json else None, as_json)
+            return
+        if warmup is not None:
+            raise CaseError("--duration-s/--interval-s/--start-c", warmup.describe(), "only with --kind warmup",
+                            f"the case's {chosen.name} study runs no warm-up")
         if loaded.drivetrain is not None:  # the drivetrain's studies: linear or backlash mesh, any grid
             _run_drivetrain(study, out, direction, multistart, method, scheduler, workers, dashboard, resume,
                             overwrite, chunk_points or (stored or {}).get("speeds_per_task"), plot,

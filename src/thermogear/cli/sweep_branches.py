@@ -53,8 +53,8 @@ def run_branch_sweep(study, out: Path, direction: str, overwrite: bool, resume: 
         check_figure_file(plot)
     if chunk_points is not None:
         raise CaseError("--chunk-points", chunk_points, "absent with the nonlinear mesh",
-                        "a branch study's task is one combination of the parameters other than the speed (its branches "
-                        "follow each speed from its neighbour), written and resumed as one")
+                        "a branch study's task is one point of one branch (each speed followed from its neighbour's "
+                        "orbit), written and resumed point by point")
     kind = scheduler if scheduler not in (None, "", "local") else ("processes" if dashboard else None)
     if dashboard is not None and kind != "processes":
         raise CaseError("--dashboard", dashboard, "only with the local Dask cluster (--scheduler processes)",
@@ -62,11 +62,11 @@ def run_branch_sweep(study, out: Path, direction: str, overwrite: bool, resume: 
     start = time.perf_counter()
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
-        with point_progress("branches", total=study.size * len(study.models), completed=0, unit="points",
-                            enabled=progress and not as_json) as advance:
-            dataset = branch_study(study, direction, progress=lambda points: advance(points * len(study.models)),
-                                   workers=workers, multistart=multistart, scheduler=kind, out=out, resume=resume,
-                                   overwrite=overwrite)
+        dataset = branch_study(study, direction, workers=workers, multistart=multistart, scheduler=kind, out=out,
+                               resume=resume, overwrite=overwrite,
+                               progress=lambda total, completed: point_progress(
+                                   "branches", total=total, completed=completed, unit="points",
+                                   enabled=progress and not as_json))
     from thermogear.ownership import resolve_output  # noqa: PLC0415
 
     target = resolve_output(out)

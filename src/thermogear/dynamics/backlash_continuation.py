@@ -22,7 +22,7 @@ from thermogear.dynamics.backlash_periodic import (BacklashOrbit, orbit_from_sho
 from thermogear.dynamics.backlash_problem import BacklashMeshProblem
 from thermogear.errors import ProblemError, ModelLimitError
 
-__all__ = ["Branch", "follow_branch"]
+__all__ = ["Branch", "BranchPoint", "branch_options", "branch_point", "follow_branch"]
 
 _FLOAT_METRICS = ("residual", "largest_multiplier", "contact_loss_fraction", "back_contact_fraction",
                   "max_mesh_force", "max_pair_force", "kv", "dte_peak_to_peak", "dte_rms", "dte_mean")
@@ -58,6 +58,47 @@ def _solve_point(problem: BacklashMeshProblem, state: tuple[float, float] | None
     return periodic_response(problem, initial_state=state, **options)
 
 
+@dataclass(frozen=True)
+class BranchPoint:
+    """One point of a branch: ``response``, ``period_count``, ``converged``, ``initial_state`` (2,) at τ = 0
+    [m, m/s] (NaN where the point failed), ``metrics`` {name: float} of :data:`_FLOAT_METRICS` plus
+    ``back_side_contact`` (bool), and ``carried``: the state the branch goes on from (this orbit's where it
+    converged, else the state the point started from)."""
+
+    response: str
+    period_count: int
+    converged: bool
+    initial_state: np.ndarray
+    metrics: dict
+    carried: tuple[float, float] | None
+
+
+def branch_options(max_period_count: int = 4, tolerance: float = 1e-10, max_iterations: int = 30,
+                   run_in_periods: int = 200, classify_periods: int = 400, samples_per_interval: int = 1) -> dict:
+    """The solver options of a branch point (the defaults of :func:`follow_branch`)."""
+    return {"max_period_count": max_period_count, "tolerance": tolerance, "max_iterations": max_iterations,
+            "run_in_periods": run_in_periods, "classify_periods": classify_periods,
+            "samples_per_interval": samples_per_interval}
+
+
+def branch_point(problem: BacklashMeshProblem, state: tuple[float, float] | None, options: dict | None = None,
+                 include_damping_force: bool = False) -> BranchPoint:
+    """One step of a continuation: the orbit of ``problem`` started from its neighbour's ``state`` (None: from the
+    linear response), as :func:`follow_branch` solves each point (a point that fails is reported "failed" and the
+    state carries over unchanged)."""
+    options = branch_options() if options is None else options
+    metrics = {name: np.nan for name in _FLOAT_METRICS}
+    try:
+        orbit = _solve_point(problem, state, options)
+    except ModelLimitError:
+        return BranchPoint("failed", 0, False, np.full(2, np.nan), {**metrics, "back_side_contact": False}, state)
+    values = orbit_metrics(orbit, include_damping_force=include_damping_force)
+    metrics = {name: values[name] for name in _FLOAT_METRICS}
+    metrics["back_side_contact"] = values["back_side_contact"]
+    return BranchPoint(orbit.response, orbit.period_count, orbit.converged, orbit.initial_state, metrics,
+                       orbit.initial_state if orbit.converged else state)
+
+
 def follow_branch(problems: Sequence[BacklashMeshProblem], direction: str = "up",
                   parameter: Sequence[float] | None = None, initial_state: tuple[float, float] | None = None,
                   max_period_count: int = 4, tolerance: float = 1e-10, max_iterations: int = 30,
@@ -76,9 +117,8 @@ def follow_branch(problems: Sequence[BacklashMeshProblem], direction: str = "up"
     labels = np.arange(count, dtype=float) if parameter is None else np.asarray(parameter, dtype=float)
     if labels.shape != (count,):
         raise ProblemError("parameter", f"shape {labels.shape}", f"({count},)", "one label per problem")
-    options = {"max_period_count": max_period_count, "tolerance": tolerance, "max_iterations": max_iterations,
-               "run_in_periods": run_in_periods, "classify_periods": classify_periods,
-               "samples_per_interval": samples_per_interval}
+    options = branch_options(max_period_count, tolerance, max_iterations, run_in_periods, classify_periods,
+                             samples_per_interval)
     response = np.empty(count, dtype=object)
     period_count = np.zeros(count, dtype=np.int64)
     converged = np.zeros(count, dtype=bool)
@@ -88,20 +128,14 @@ def follow_branch(problems: Sequence[BacklashMeshProblem], direction: str = "up"
     order = range(count) if direction == "up" else range(count - 1, -1, -1)
     state = None if initial_state is None else (float(initial_state[0]), float(initial_state[1]))
     for index in order:
-        try:
-            orbit = _solve_point(problems[index], state, options)
-        except ModelLimitError:
-            response[index] = "failed"
-            continue
-        values = orbit_metrics(orbit, include_damping_force=include_damping_force)
-        response[index] = orbit.response
-        period_count[index] = orbit.period_count
-        converged[index] = orbit.converged
-        states[index] = orbit.initial_state
+        point = branch_point(problems[index], state, options, include_damping_force)
+        state = point.carried
+        response[index] = point.response  # a failed point: "failed", NaN metrics, 0 periods, not converged
+        period_count[index] = point.period_count
+        converged[index] = point.converged
+        states[index] = point.initial_state
         for name in _FLOAT_METRICS:
-            metrics[name][index] = values[name]
-        metrics["back_side_contact"][index] = values["back_side_contact"]
-        if orbit.converged:
-            state = orbit.initial_state
+            metrics[name][index] = point.metrics[name]
+        metrics["back_side_contact"][index] = point.metrics["back_side_contact"]
     return Branch(parameter=labels, direction=direction, response=response.astype(str), period_count=period_count,
                   converged=converged, initial_state=states, metrics=metrics)

@@ -176,6 +176,21 @@ def _periodic_kv(sim, previous: tuple[float, float] | None) -> tuple[float, tupl
     return kv, (orbit.initial_state if orbit.converged else None)
 
 
+def warmup_state_count(duration_s: float, interval_s: float) -> int:
+    """The mesh re-evaluations after the start of a warm-up of ``duration_s`` [s] every ``interval_s`` [s], or a
+    CaseError naming the input that does not give evenly spaced times ending at the duration."""
+    if not (math.isfinite(duration_s) and 0.0 < duration_s <= LONGEST_WARM_UP_S):
+        raise CaseError("--duration-s", duration_s, f"(0, {LONGEST_WARM_UP_S:g}] s", "the warm-up's duration")
+    if not (math.isfinite(interval_s) and 0.0 < interval_s <= duration_s):
+        raise CaseError("--interval-s", interval_s, f"(0, duration = {duration_s:g}] s",
+                        "the time between mesh re-evaluations")
+    count = int(round(duration_s / interval_s))
+    if count + 1 > MOST_STATES or abs(count * interval_s - duration_s) > 1e-9 * duration_s:
+        raise CaseError("--interval-s", interval_s, f"a divisor of the duration giving at most {MOST_STATES} states",
+                        "the mesh is re-evaluated at evenly spaced times that end at the duration")
+    return count
+
+
 def gearbox_warmup(case, duration_s: float = 1200.0, start_c: float | None = None, interval_s: float = 10.0,
                    gear_model: str = "thermal", dynamics: bool = True, speed_rpm: float | None = None,
                    points_per_interval: int = 1, simulation: Callable | None = None,
@@ -190,15 +205,7 @@ def gearbox_warmup(case, duration_s: float = 1200.0, start_c: float | None = Non
     thermostat) instead of the case's ``[gearbox.conditioning]``."""
     if simulation is None:
         from thermogear.simulation import Simulation as simulation  # noqa: PLC0415
-    if not (math.isfinite(duration_s) and 0.0 < duration_s <= LONGEST_WARM_UP_S):
-        raise CaseError("--duration-s", duration_s, f"(0, {LONGEST_WARM_UP_S:g}] s", "the warm-up's duration")
-    if not (math.isfinite(interval_s) and 0.0 < interval_s <= duration_s):
-        raise CaseError("--interval-s", interval_s, f"(0, duration = {duration_s:g}] s",
-                        "the time between mesh re-evaluations")
-    count = int(round(duration_s / interval_s))
-    if count + 1 > MOST_STATES or abs(count * interval_s - duration_s) > 1e-9 * duration_s:
-        raise CaseError("--interval-s", interval_s, f"a divisor of the duration giving at most {MOST_STATES} states",
-                        "the mesh is re-evaluated at evenly spaced times that end at the duration")
+    count = warmup_state_count(duration_s, interval_s)
     operating = gearbox_operating_point(case.operating_point, case.gearbox, speed_rpm, torque)
     start = operating.ambient_c if start_c is None else float(start_c)
     if not (math.isfinite(start) and COLDEST_START_C <= start <= 150.0):

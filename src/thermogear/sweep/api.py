@@ -18,22 +18,28 @@ from typing import Any
 from thermogear.errors import CaseError
 from thermogear.dynamics.mesh_laws import mesh_law
 
-__all__ = ["STUDY_KINDS", "StudyKind", "study"]
+__all__ = ["STUDY_KINDS", "StudyKind", "study", "study_kind"]
 
 
 @dataclass(frozen=True)
 class StudyKind:
-    """A kind of study: ``name``, ``accepts(case, method)`` and ``run(study, out, options)`` → Dataset."""
+    """A kind of study: ``name``, ``accepts(case, method)``, ``run(study, out, options)`` → Dataset,
+    ``by_case`` (picked from the case when no kind is named; False: only when named, e.g. the warm-ups of a gearbox
+    case, whose case also has a steady study), ``needs`` (what ``accepts`` asks of the case, for the refusal) and
+    ``default_model`` (the gear model when none is given)."""
 
     name: str
     accepts: Callable[[Any, str], bool]
     run: Callable[[Any, Path, dict], Any]
+    by_case: bool = True
+    needs: str = ""
+    default_model: str = "both"
 
 
 def _run_drivetrain(study, out, options: dict):
     from thermogear.sweep.drivetrain_run import run_drivetrain_study
 
-    _refuse(options, "drivetrain", method="batch", multistart=0)
+    _refuse(options, "drivetrain", method="batch", multistart=0, warmup=None)
     direction = options["direction"]
     directions = ("up", "down") if direction in (None, "both") else (direction,)
     scheduler = options["scheduler"] if options["scheduler"] not in (None, "", "local") else "processes"
@@ -44,7 +50,7 @@ def _run_drivetrain(study, out, options: dict):
 def _run_branches(study, out, options: dict):
     from thermogear.sweep.branches import branch_study
 
-    _refuse(options, "branch", chunk_points=None)
+    _refuse(options, "branch", chunk_points=None, warmup=None)
     return branch_study(study, options["direction"] or "both", workers=options["workers"],
                         multistart=options["multistart"], scheduler=options["scheduler"], out=out,
                         resume=options["resume"], overwrite=options["overwrite"])
@@ -53,9 +59,21 @@ def _run_branches(study, out, options: dict):
 def _run_grid(study, out, options: dict):
     from thermogear.sweep.engine import run_study
 
-    _refuse(options, "linear-mesh grid", direction=None, multistart=0)
+    _refuse(options, "linear-mesh grid", direction=None, multistart=0, warmup=None)
     return run_study(study, out, scheduler=options["scheduler"], resume=options["resume"],
                      overwrite=options["overwrite"], workers=options["workers"], method=options["method"]).dataset
+
+
+def _run_warmups(study, out, options: dict):
+    from dataclasses import replace
+
+    from thermogear.sweep.warmup_study import WarmupSettings, run_warmup_study
+
+    _refuse(options, "warm-up", direction=None, multistart=0, method="batch")
+    scheduler = options["scheduler"] if options["scheduler"] not in (None, "", "local") else "processes"
+    return run_warmup_study(replace(study, chunk_points=options["chunk_points"] or 1), out,
+                            options["warmup"] or WarmupSettings(), scheduler, options["workers"], options["resume"],
+                            options["overwrite"], options.get("progress"))
 
 
 def _refuse(options: dict, kind: str, **defaults) -> None:
@@ -66,32 +84,57 @@ def _refuse(options: dict, kind: str, **defaults) -> None:
                             f"a {kind} study has no use for it")
 
 
-#: The kinds of study, tried in order.
+#: The kinds of study, tried in order (those picked by the case), or named.
 STUDY_KINDS: tuple[StudyKind, ...] = (
     StudyKind("drivetrain", lambda case, method: case.drivetrain is not None, _run_drivetrain),
     StudyKind("branches", lambda case, method: mesh_law(case.dynamics.mesh).backlash and method == "batch",
               _run_branches),
     StudyKind("grid", lambda case, method: True, _run_grid),
+    StudyKind("warmup", lambda case, method: case.gearbox is not None, _run_warmups, by_case=False,
+              needs="a case with a [gearbox] (the thermal network the warm-up integrates)", default_model="thermal"),
 )
 
 
+def study_kind(case, method: str = "batch", name: str | None = None) -> StudyKind:
+    """The kind of study of ``case``: the first of :data:`STUDY_KINDS` picked by the case that accepts it, or the
+    kind ``name`` (refused where it does not accept the case, or where the case picks another kind of its own)."""
+    automatic = next(kind for kind in STUDY_KINDS if kind.by_case and kind.accepts(case, method))
+    if name is None:
+        return automatic
+    kinds = {kind.name: kind for kind in STUDY_KINDS}
+    if name not in kinds:
+        raise CaseError("kind", name, " | ".join(kinds), "unknown kind of study")
+    chosen = kinds[name]
+    if chosen.by_case and chosen is not automatic:
+        raise CaseError("kind", name, f"{automatic.name} (or a kind named only: "
+                        f"{', '.join(kind.name for kind in STUDY_KINDS if not kind.by_case)})",
+                        f"this case's study is the {automatic.name} study")
+    if not chosen.accepts(case, method):
+        raise CaseError("kind", name, chosen.needs or "a case this kind accepts", f"the {name} study needs it")
+    return chosen
+
+
 def study(case, vary: dict[str, Any] | list[str], out: str | Path, scheduler: str | None = None,
-          model: str = "both", hold: str = "torque", direction: str | None = None, workers: int | None = None,
+          model: str | None = None, hold: str = "torque", direction: str | None = None, workers: int | None = None,
           resume: bool = False, overwrite: bool = False, chunk_points: int | None = None, method: str = "batch",
-          multistart: int = 0):
+          multistart: int = 0, kind: str | None = None, warmup=None):
     """Run the study of ``case`` (a :class:`~thermogear.case.Case`, a built-in name or a case file) over ``vary``
     (``{"speed_rpm": "1000:3000:21", "oil_temperature_c": [50, 70]}``) into the zarr store ``out`` and return the
     store's xarray Dataset. ``scheduler``: None (the local default), ``"serial"``, ``"threads"``, ``"processes"``
     or a ``dask.distributed`` scheduler address; ``hold``: the load a speed sweep keeps (``"torque"`` |
     ``"power"``); ``direction``: the branches of a nonlinear mesh (``"up"`` | ``"down"`` | ``"both"``); ``resume``
     continues an interrupted study in ``out``; the rest as the command line's options (docs/sweeps.md). An option
-    the study's kind cannot act on is refused with a CaseError."""
+    the study's kind cannot act on is refused with a CaseError. ``kind``: None (picked from the case) or a kind of
+    :data:`STUDY_KINDS` by name, e.g. ``"warmup"``: the gearbox warm-up at every point
+    (:mod:`thermogear.sweep.warmup_study`; ``warmup``: its :class:`~thermogear.sweep.warmup_study.WarmupSettings`).
+    ``model``: None gives the kind's default (both models; the warm-up: thermal)."""
     from thermogear.sweep.study import Study, load_study_case
 
     if isinstance(case, (str, Path)):
         case, _ = load_study_case(case)
-    defined = Study.define(case, vary, model=model, chunk_points=chunk_points, hold=hold)
+    chosen = study_kind(case, method, kind)
+    defined = Study.define(case, vary, model=model or chosen.default_model, chunk_points=chunk_points, hold=hold)
     options = {"scheduler": scheduler, "workers": workers, "resume": resume, "overwrite": overwrite,
-               "chunk_points": chunk_points, "method": method, "direction": direction, "multistart": multistart}
-    kind = next(kind for kind in STUDY_KINDS if kind.accepts(case, method))
-    return kind.run(defined, Path(out), options)
+               "chunk_points": chunk_points, "method": method, "direction": direction, "multistart": multistart,
+               "warmup": warmup}
+    return chosen.run(defined, Path(out), options)

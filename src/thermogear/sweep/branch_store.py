@@ -10,7 +10,7 @@ import numpy as np
 
 from thermogear.sweep.load_held import study_load_held
 
-__all__ = ["BRANCH_VARIABLES", "branch_layout", "branch_region"]
+__all__ = ["BRANCH_VARIABLES", "STATE_SIZE", "branch_layout", "branch_region", "orbit_arrays"]
 
 #: Per-direction, per-model result variables: name → (units, long name).
 BRANCH_VARIABLES: dict[str, tuple[str, str]] = {
@@ -28,6 +28,10 @@ BRANCH_VARIABLES: dict[str, tuple[str, str]] = {
     "floquet_multiplier_max": ("1", "largest Floquet multiplier modulus of the orbit"),
     "residual": ("1", "scaled residual |phi_NT(y0) - y0| of the orbit's Newton iteration (large: not converged)"),
 }
+#: The state a branch carries from point to point: (x [m], dx/dt [m/s]) at the start of the period.
+STATE_SIZE = 2
+
+
 def branch_layout(study, directions: tuple[str, ...], starts: int, tasks: int):
     """The store of a branch study (:class:`~thermogear.sweep.task_store.StoreLayout`)."""
     import json  # noqa: PLC0415
@@ -44,8 +48,11 @@ def branch_layout(study, directions: tuple[str, ...], starts: int, tasks: int):
                   StoreVariable("natural_frequency_hz", point, "float", "Hz", "natural frequency of the linear mesh "
                                 "with every pair in contact, sqrt(mean k / me) / 2 pi"),
                   StoreVariable("static_load", study.dims, "float", "N", "static normal load w"),
-                  StoreVariable("mesh_frequency_hz", study.dims, "float", "Hz", "mesh frequency z1 n1 / 60")]
-    coords: dict[str, Any] = {"direction": list(directions), "model": list(study.models)}
+                  StoreVariable("mesh_frequency_hz", study.dims, "float", "Hz", "mesh frequency z1 n1 / 60"),
+                  StoreVariable("branch_state", (*dims, "state"), "float", "", "state (x [m], dx/dt [m/s]) the branch "
+                                "carries on from this point (resume); NaN before its first orbit")]
+    coords: dict[str, Any] = {"direction": list(directions), "model": list(study.models),
+                              "state": np.arange(STATE_SIZE)}
     coords.update({p.name: np.asarray(p.values) for p in study.parameters})
     if starts:
         from thermogear.sweep.multistart import ORBIT_VARIABLES  # noqa: PLC0415
@@ -60,7 +67,7 @@ def branch_layout(study, directions: tuple[str, ...], starts: int, tasks: int):
     load, load_note = study_load_held(study)
     speed = next((p.name for p in study.parameters if p.key == "operating.speed_rpm"), None)
     chunks = {"model": 1, **{p.name: 1 for p in study.parameters if p.name != speed}}
-    definition = {**study.describe(), "kind": "nonlinear branches", "directions": list(directions),
+    definition = {**study.describe(), "kind": "nonlinear branches, a task per point", "directions": list(directions),
                   "multistart": starts}
     attrs = {"mesh": "nonlinear", "directions": ",".join(directions), "case": study.case.name,
              "case_name": study.case.name, "case_source": str(study.case.source), "load": load,
@@ -69,32 +76,30 @@ def branch_layout(study, directions: tuple[str, ...], starts: int, tasks: int):
                        chunks=chunks)
 
 
-def branch_region(study, task, speed_axis, result, starts: int) -> tuple[dict, dict]:
-    """The region of the store a task writes and its arrays."""
+def branch_region(study, task, speed_axis) -> dict[str, Any]:
+    """The region of the store a task writes: one point of one model (and direction, for a branch point)."""
     names = [p.name for a, p in enumerate(study.parameters) if a != speed_axis]
     region: dict[str, Any] = dict(zip(names, task[1]))
-    if task[0] == "orbits":
-        from thermogear.sweep.multistart import ORBIT_VARIABLES  # noqa: PLC0415
+    region["model"] = task[2]
+    if task[0] == "point":
+        region["direction"] = task[3]
+    if speed_axis is not None:
+        region[study.parameters[speed_axis].name] = task[3] if task[0] == "orbits" else task[4]
+    return region
 
-        region["model"] = task[2]
-        if speed_axis is not None:
-            region[study.parameters[speed_axis].name] = task[3]
-        arrays = {name: np.full(starts, np.nan) for name in ORBIT_VARIABLES}
-        arrays["stable_orbit_count"] = np.nan
-        arrays["unsettled_start_share"] = np.nan
-        if result is not None:
-            arrays["stable_orbit_count"] = float(len(result["orbits"]))
-            arrays["unsettled_start_share"] = result["unresolved"] + result["unbounded"]
-            for number, values in enumerate(result["orbits"]):
-                for name, (_, _, source) in ORBIT_VARIABLES.items():
-                    arrays[name][number] = float(values[source])
-        return region, arrays
-    group = result
-    pick = (lambda a: a) if speed_axis is not None else (lambda a: a[..., 0])
-    arrays = {name: pick(group.arrays[name]) for name in BRANCH_VARIABLES}
-    arrays["response"] = pick(group.response)
-    arrays["jammed"] = pick(group.jammed).astype(np.int8)
-    arrays["natural_frequency_hz"] = pick(group.natural_frequency_hz)
-    arrays["static_load"] = pick(group.static_load)
-    arrays["mesh_frequency_hz"] = pick(group.mesh_frequency_hz)
-    return region, arrays
+
+def orbit_arrays(result, starts: int) -> dict[str, Any]:
+    """The stored arrays of one point's multi-start search (:func:`thermogear.sweep.multistart.point_orbits`;
+    None where the gears jam: NaN)."""
+    from thermogear.sweep.multistart import ORBIT_VARIABLES  # noqa: PLC0415
+
+    arrays: dict[str, Any] = {name: np.full(starts, np.nan) for name in ORBIT_VARIABLES}
+    arrays["stable_orbit_count"] = np.nan
+    arrays["unsettled_start_share"] = np.nan
+    if result is not None:
+        arrays["stable_orbit_count"] = float(len(result["orbits"]))
+        arrays["unsettled_start_share"] = result["unresolved"] + result["unbounded"]
+        for number, values in enumerate(result["orbits"]):
+            for name, (_, _, source) in ORBIT_VARIABLES.items():
+                arrays[name][number] = float(values[source])
+    return arrays

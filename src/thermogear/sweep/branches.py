@@ -3,30 +3,34 @@
 Where teeth separate the steady response of a gear pair depends on where it came from: near the primary resonance
 a speed run-up stays on the high-amplitude branch beyond the linear peak and drops ("jumps down") off it, a
 run-down jumps up later — the hysteresis of a backlash oscillator (Kahraman & Singh 1990). A grid point therefore
-has one result per sweep direction. For every combination of the other parameters (a group), the mesh model gives
-one backlash problem per speed and :func:`~thermogear.dynamics.backlash_continuation.follow_branch` solves them in
-order, each from its neighbour's orbit, ``up`` (lowest speed first), ``down`` or both.
+has one result per sweep direction. For every combination of the other parameters (a group), model and direction,
+the points of the branch are solved in order, each from its neighbour's orbit
+(:func:`~thermogear.dynamics.backlash_continuation.branch_point`, the step of
+:func:`~thermogear.dynamics.backlash_continuation.follow_branch`), ``up`` (lowest speed first), ``down`` or both.
 
-Continuation is sequential along the speed axis, but the groups are independent: they run in parallel on a pool
-of threads (the backlash integrator releases Python's global interpreter lock) and the study is written as one
-zarr store at the end (no chunked resume and no Dask; a few seconds per thousand speeds and model). A group whose
-gears jam (the thermal expansion closes the backlash) is marked ``jammed`` and the others are computed.
+Each branch point is one task of the one executor (:mod:`thermogear.sweep.executor`) that follows the task of its
+neighbour speed; the branches run in parallel (threads: the backlash integrator releases Python's global
+interpreter lock; worker processes; a scheduler by address) and every point is written to the one task store as it
+finishes, with the state its branch carries on from, so progress advances per point and ``--resume`` continues
+each branch from its last completed point, exactly. A point whose gears jam (the thermal expansion closes the
+backlash) is marked ``jammed`` and its branch goes on from the last orbit found.
 """
 
 from __future__ import annotations
 
+import threading
 import warnings
-from dataclasses import dataclass
+from collections import OrderedDict
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
 from thermogear import warning_scope
-from thermogear.dynamics.backlash_continuation import follow_branch
+from thermogear.dynamics.backlash_continuation import branch_point
 from thermogear.errors import CaseError, JammingError
 from thermogear.mesh.model import PREDICTED_AT_LOAD_TEMPERATURE_MODELS, MeshModel
-from thermogear.sweep.branch_store import BRANCH_VARIABLES, branch_layout, branch_region
+from thermogear.sweep.branch_store import BRANCH_VARIABLES, branch_layout, branch_region, orbit_arrays
 from thermogear.sweep.hysteresis import hysteresis_bands
 from thermogear.sweep.load_held import study_load_held
 
@@ -48,21 +52,6 @@ def _directions(direction: str) -> tuple[str, ...]:
     return ("up", "down") if direction == "both" else (direction,)
 
 
-@dataclass(frozen=True)
-class _Group:
-    """The results of one group (one combination of the parameters other than speed), all speeds of it.
-
-    Arrays ``(directions, models, speeds)`` per variable, ``jammed`` and ``natural_frequency_hz``
-    ``(models, speeds)``, ``static_load`` and ``mesh_frequency_hz`` (speeds,)."""
-
-    arrays: dict[str, np.ndarray]
-    response: np.ndarray
-    jammed: np.ndarray
-    static_load: np.ndarray
-    mesh_frequency_hz: np.ndarray
-    natural_frequency_hz: np.ndarray  # (models, speeds) of the linear mesh with every pair in contact [Hz]
-
-
 def _group_values(study, rest: tuple[int, ...], speed_axis: int | None) -> tuple[list, tuple]:
     """The parameter values of a group's first point and the index of the group in the grid (a slice along the
     speed axis)."""
@@ -73,124 +62,162 @@ def _group_values(study, rest: tuple[int, ...], speed_axis: int | None) -> tuple
     return values, tuple(index)
 
 
-def _speed_cases(group_case, speeds: np.ndarray) -> list | None:
-    """One case per speed where the case's temperatures are predicted at its own operating point (the gearbox
-    model: each speed has its own steady temperatures, so its own hot geometry, E(T) and oil); None otherwise
-    (every speed evaluated on the group's case)."""
-    if group_case.temperature.model not in PREDICTED_AT_LOAD_TEMPERATURE_MODELS:
-        return None
-    return [group_case.with_changes(**{"operating.speed_rpm": float(speed)}) for speed in speeds]
+def _speed_of(study, group_case, speed_axis: int | None, speed_index: int) -> float:
+    if speed_axis is None:
+        return float(group_case.operating_point.speed_rpm)
+    return float(np.asarray(study.parameters[speed_axis].values, dtype=float)[speed_index])
 
 
-def _problems(group_case, model: str, speeds: np.ndarray) -> tuple[list, np.ndarray]:
-    """The backlash problem of every speed [rpm] of one model of a group's case, and the static loads [N]. A speed
-    whose gears jam gives None (with a gearbox case each speed has its own temperatures: some may jam, others
-    not); on the group's case a jam at the case's temperatures raises JammingError (every speed jams)."""
-    cases = _speed_cases(group_case, speeds)
-    if cases is None:
-        mesh = MeshModel(group_case, model)
-        loads = np.array([mesh.normal_load(speed) for speed in speeds])
-        problems = [mesh.state(speed_rpm=speed, normal_load=load).backlash_problem(
-            group_case.dynamics.damping_in_flight) for speed, load in zip(speeds, loads)]
-        return problems, loads
-    problems, loads = [], np.full(speeds.size, np.nan)
-    for index, (case, speed) in enumerate(zip(cases, speeds)):
+_BUILT = threading.local()  # per thread: a mesh model is never shared between threads
+_CACHE_SIZE = 8
+
+
+def _cached(key, build):
+    """``build()`` kept per thread (a few, least recently used first out), the JammingError it raised included."""
+    cache = getattr(_BUILT, "items", None)
+    if cache is None:
+        cache = _BUILT.items = OrderedDict()
+    if key not in cache:
         try:
-            mesh = MeshModel(case, model)
-            loads[index] = mesh.normal_load(speed)
-            problems.append(mesh.state(speed_rpm=speed, normal_load=loads[index]).backlash_problem(
-                case.dynamics.damping_in_flight))
-        except JammingError:  # this speed's steady temperatures close the backlash
-            problems.append(None)
+            cache[key] = build()
+        except JammingError as error:
+            cache[key] = error
+        while len(cache) > _CACHE_SIZE:
+            cache.popitem(last=False)
+    cache.move_to_end(key)
+    if isinstance(cache[key], JammingError):
+        raise cache[key]
+    return cache[key]
+
+
+def _group_case(study, identity: str, rest: tuple[int, ...], speed_axis: int | None):
+    """The case of a group (JammingError where its gears jam at the case's temperatures)."""
+    values, _ = _group_values(study, rest, speed_axis)
+    return _cached(("case", identity, rest), lambda: study.case_at(tuple(values)))
+
+
+def _point_problem(study, identity: str, rest: tuple[int, ...], group_case, model: str, speed: float):
+    """The backlash problem of one point and model and its static load [N]. With temperatures predicted at the
+    operating point (the gearbox model) the point's case is the group's at this speed (its own steady
+    temperatures, hot geometry, E(T) and oil); otherwise every speed is evaluated on the group's mesh model.
+    JammingError where the gears jam."""
+    if group_case.temperature.model in PREDICTED_AT_LOAD_TEMPERATURE_MODELS:
+        try:
+            mesh = _cached(("mesh", identity, rest, model, speed), lambda: MeshModel(
+                group_case.with_changes(**{"operating.speed_rpm": float(speed)}), model))
         except CaseError as error:  # e.g. temperatures beyond the material data: say at which speed
             raise CaseError(error.key, error.value, error.allowed, f"{error.reason} (at {speed:g} rpm, the gearbox "
                             "model's steady temperatures there)") from None
-    return problems, loads
+    else:
+        mesh = _cached(("mesh", identity, rest, model), lambda: MeshModel(group_case, model))
+    load = mesh.normal_load(speed)
+    return mesh.state(speed_rpm=speed, normal_load=load).backlash_problem(
+        mesh.case.dynamics.damping_in_flight), load
 
 
-def _solve_group(study, rest: tuple[int, ...], speed_axis: int | None, directions: tuple[str, ...]) -> _Group:
-    """Both branches of every model of one group. A case whose gears jam (the thermal expansion closes the
-    backlash) gives NaN results marked ``jammed``, never an error: the other groups are computed."""
-    values, _ = _group_values(study, rest, speed_axis)
-    speeds = (np.asarray(study.parameters[speed_axis].values, dtype=float) if speed_axis is not None else None)
-    count = 1 if speeds is None else speeds.size
-    shape = (len(directions), len(study.models), count)
-    arrays = {name: np.full(shape, np.nan) for name in BRANCH_VARIABLES}
-    arrays["converged"][:] = 0.0  # a jammed point has no orbit: never labelled converged (nor NaN)
-    response = np.full(shape, "jammed", dtype=object)
-    jammed = np.zeros((len(study.models), count), dtype=bool)
-    static_load, frequency = np.full(count, np.nan), np.full(count, np.nan)
-    natural = np.full((len(study.models), count), np.nan)
-    try:
-        group_case = study.case_at(tuple(values))
-    except JammingError:
-        jammed[:] = True
-        return _Group(arrays, response, jammed, static_load, frequency, natural)
-    if speeds is None:
-        speeds = np.array([group_case.operating_point.speed_rpm], dtype=float)
-    frequency[:] = group_case.gear_pair.pinion.teeth * speeds / 60.0
-    for model_index, model in enumerate(study.models):
+def _static_load(study, identity: str, rest, group_case, speed: float, problem_load: float | None) -> float:
+    """The stored static load of a point: the last model's whose problem is built there (a model whose gears jam
+    gives way to the one before it; with the gearbox model the last model's, NaN where it jams)."""
+    if problem_load is not None or group_case.temperature.model in PREDICTED_AT_LOAD_TEMPERATURE_MODELS:
+        return np.nan if problem_load is None else float(problem_load)
+    for model in reversed(study.models[:-1]):
         try:
-            problems, loads = _problems(group_case, model, speeds)
-        except JammingError:  # a temperature the model computes closes the backlash
-            jammed[model_index] = True
+            return float(_point_problem(study, identity, rest, group_case, model, speed)[1])
+        except JammingError:
             continue
-        static_load[:] = loads
-        # the speeds whose gears do not jam, followed in order (with a gearbox case a jammed speed is skipped: the
-        # branch goes on from the last orbit found, which only seeds Newton at the next speed)
-        free = np.array([problem is not None for problem in problems])
-        jammed[model_index] = ~free
-        if not free.any():
-            continue
-        solvable = [problem for problem in problems if problem is not None]
-        natural[model_index, free] = [problem.natural_frequency for problem in solvable]
-        for direction_index, way in enumerate(directions):
-            branch = follow_branch(solvable, way, parameter=speeds[free],
-                                   include_damping_force=group_case.dynamics.include_damping_force)
-            target = (direction_index, model_index, free)
-            for name, source in _FROM_BRANCH.items():
-                arrays[name][target] = (branch[source] / loads[free] if name == "max_system_load_ratio"
-                                        else branch[source])
-            arrays["back_side_contact"][target] = branch["back_side_contact"].astype(float)
-            arrays["period_count"][target] = branch.period_count.astype(float)
-            arrays["converged"][target] = branch.converged.astype(float)
-            response[target] = branch.response
-    return _Group(arrays, response, jammed, static_load, frequency, natural)
+    return np.nan
 
 
-def _search_point(study, rest: tuple[int, ...], speed_axis: int | None, model_index: int, speed_index: int,
-                  starts: int) -> dict | None:
+def _branch_point(shared: tuple, task: tuple, previous: dict | None) -> dict[str, Any]:
+    """One point of one branch (``task``: ("point", group, model, direction, speed[, stored state])), solved from
+    the state its neighbour's result carries (``previous``), or the state stored with the neighbour (a resumed
+    branch), or from the linear response (the first point). A point whose gears jam passes the state on."""
+    study, speed_axis, _, _, identity = shared
+    _, rest, model_index, _, speed_index, *stored = task
+    carried = previous["carried"] if previous is not None else (stored[0] if stored else None)
+    values: dict[str, Any] = {name: np.nan for name in BRANCH_VARIABLES}
+    values.update(converged=0.0, response="jammed", jammed=np.int8(1), natural_frequency_hz=np.nan)
+    last_model = model_index == len(study.models) - 1
+    try:
+        group_case = _group_case(study, identity, rest, speed_axis)
+    except JammingError:
+        if last_model:
+            values.update(static_load=np.nan, mesh_frequency_hz=np.nan)
+        return {"values": values, "carried": carried}
+    speed = _speed_of(study, group_case, speed_axis, speed_index)
+    load = None
+    try:
+        problem, load = _point_problem(study, identity, rest, group_case, study.models[model_index], speed)
+    except JammingError:  # a temperature the model computes closes the backlash (at this speed)
+        problem = None
+    if last_model:
+        values["static_load"] = _static_load(study, identity, rest, group_case, speed, load)
+        values["mesh_frequency_hz"] = group_case.gear_pair.pinion.teeth * speed / 60.0
+    if problem is None:
+        return {"values": values, "carried": carried}
+    point = branch_point(problem, carried, include_damping_force=group_case.dynamics.include_damping_force)
+    for name, source in _FROM_BRANCH.items():
+        values[name] = point.metrics[source] / load if name == "max_system_load_ratio" else point.metrics[source]
+    values.update(back_side_contact=float(point.metrics["back_side_contact"]), period_count=float(point.period_count),
+                  converged=float(point.converged), response=point.response, jammed=np.int8(0),
+                  natural_frequency_hz=problem.natural_frequency)
+    return {"values": values, "carried": point.carried}
+
+
+def _search_point(shared: tuple, task: tuple) -> dict | None:
     """The multi-start orbit search at one point and model (:func:`thermogear.sweep.multistart.point_orbits`);
     None where the gears jam."""
     from thermogear.sweep.multistart import point_orbits  # noqa: PLC0415
 
-    values, _ = _group_values(study, rest, speed_axis)
+    study, speed_axis, _, starts, identity = shared
+    _, rest, model_index, speed_index, *_ = task
     try:
-        group_case = study.case_at(tuple(values))
-        speeds = (np.asarray(study.parameters[speed_axis].values, dtype=float)[[speed_index]]
-                  if speed_axis is not None else np.array([group_case.operating_point.speed_rpm], dtype=float))
-        problems, _ = _problems(group_case, study.models[model_index], speeds)
+        group_case = _group_case(study, identity, rest, speed_axis)
+        speed = _speed_of(study, group_case, speed_axis, speed_index)
+        problem, _ = _point_problem(study, identity, rest, group_case, study.models[model_index], speed)
     except JammingError:
         return None
-    if problems[0] is None:  # this speed's own temperatures jam the gears (a gearbox case)
-        return None
-    return point_orbits(problems[0], starts, group_case.dynamics.include_damping_force)
+    return point_orbits(problem, starts, group_case.dynamics.include_damping_force)
 
 
-def _execute(study, task: tuple, speed_axis, directions, starts: int):
-    """One task: ("group", rest) → :func:`_solve_group`; ("orbits", rest, model, speed) → :func:`_search_point`."""
-    if task[0] == "group":
-        return _solve_group(study, task[1], speed_axis, directions)
-    return _search_point(study, task[1], speed_axis, task[2], task[3], starts)
-
-
-def execute_recorded(shared: tuple, task) -> tuple[Any, list]:
-    """One task of the executor (``shared``: the study, the speed axis, the directions, the starts): :func:`_execute`
-    with its warnings recorded (in the thread's own scope on a thread) as ``(text, category, file, line)``."""
-    study, speed_axis, directions, starts = shared
+def execute_recorded(shared: tuple, task, *previous) -> tuple[Any, list]:
+    """One task of the executor (``shared``: the study, the speed axis, the directions, the starts, the study's
+    identity): a branch point (:func:`_branch_point`, after ``previous``: its neighbour's outcome) or a point's
+    multi-start search (:func:`_search_point`), with its warnings recorded (in the thread's own scope on a thread)
+    as ``(text, category, file, line)``."""
     with warning_scope.recorded() as caught:
-        result = _execute(study, task, speed_axis, directions, starts)
+        if task[0] == "point":
+            result = _branch_point(shared, task, previous[0][0] if previous else None)
+        else:
+            result = _search_point(shared, task)
     return result, [(str(item.message), item.category, item.filename, item.lineno) for item in caught]
+
+
+def plan_branches(study, directions: tuple[str, ...], multistart: int) -> tuple[list, list]:
+    """The tasks of a branch study and whom each follows: per group (combination of the other parameters), model
+    and direction the chain of its speeds, each point following its neighbour (up: lowest speed first); then, with
+    ``multistart``, one search per point and model (independent)."""
+    speed_axis = next((a for a, p in enumerate(study.parameters) if p.key == "operating.speed_rpm"), None)
+    others = [p.size for a, p in enumerate(study.parameters) if a != speed_axis]
+    groups = list(np.ndindex(*others)) if others else [()]
+    count = study.parameters[speed_axis].size if speed_axis is not None else 1
+    tasks: list = []
+    follows: list = []
+    for rest in groups:
+        for model_index in range(len(study.models)):
+            for direction_index, way in enumerate(directions):
+                previous = None
+                for speed_index in (range(count) if way == "up" else range(count - 1, -1, -1)):
+                    tasks.append(("point", rest, model_index, direction_index, speed_index))
+                    follows.append(previous)
+                    previous = len(tasks) - 1
+    if multistart:  # one task per point and model: a few speeds searched on every worker
+        for rest in groups:
+            for model_index in range(len(study.models)):
+                for speed_index in range(count):
+                    tasks.append(("orbits", rest, model_index, speed_index))
+                    follows.append(None)
+    return tasks, follows
 
 
 def branch_study(study, direction: str = "both", progress=None, workers: int | None = None, multistart: int = 0,
@@ -200,114 +227,112 @@ def branch_study(study, direction: str = "both", progress=None, workers: int | N
     ``jammed`` with dims ``(model, *parameters)`` (1 where the thermal expansion closes the backlash: no result,
     NaN there), plus the per-point ``static_load`` [N] and ``mesh_frequency_hz`` [Hz].
 
-    Each combination of the parameters other than the speed (a group) is one task: its up and down branches in
-    speed (one point at the case's speed without a speed axis). The tasks run on ``workers`` threads (default:
-    one per core; 1: in the calling thread): the backlash integrator releases Python's global interpreter lock.
-    The numbers do not depend on the thread count. Warnings raised by the tasks are raised again in the calling
-    thread, once each. ``progress(points)`` is called as each group finishes (``points``: its speeds).
-    ``scheduler``: any of :func:`thermogear.sweep.executor.execute` (default: threads; serial where ``workers`` is
-    1). ``out``: the zarr store the groups are written to as they finish (:mod:`thermogear.sweep.task_store`;
-    ``resume`` continues it, the finished groups kept; ``overwrite`` replaces thermogear's own store); the dataset
-    returned is then the store's (its ``orbit`` dimension as long as the starts).
+    Each point of each branch (group × model × direction × speed; a group is one combination of the parameters
+    other than the speed; without a speed axis one point at the case's speed) is one task, which follows the task
+    of its neighbour speed and starts Newton from the orbit state that task carried
+    (:func:`~thermogear.dynamics.backlash_continuation.branch_point`, as
+    :func:`~thermogear.dynamics.backlash_continuation.follow_branch` solves each point). The tasks run on the one
+    executor (:func:`thermogear.sweep.executor.execute`; ``scheduler`` default threads, serial where ``workers``
+    is 1: the backlash integrator releases Python's global interpreter lock); the numbers do not depend on where
+    they run. Warnings raised by the tasks are raised again in the calling thread, once each.
+    ``progress(total, completed)``: a context manager yielding ``advance(points)``, advanced by one as each branch
+    point (of one model and direction) or point search finishes. ``out``: the zarr store the points are written to
+    as they finish (:mod:`thermogear.sweep.task_store`), with the state each branch carries on from
+    (``branch_state``), so ``resume`` continues every branch from its last completed point, exactly as the
+    uninterrupted study; ``overwrite`` replaces thermogear's own store. The dataset returned is then the store's
+    (its ``orbit`` dimension as long as the starts).
 
     ``multistart`` N > 0: at every point and model also the multi-start search of
     :func:`~thermogear.dynamics.backlash_orbits.stable_orbits` from N starts (about 0.1 s per start and point):
     the variables of :data:`thermogear.sweep.multistart.ORBIT_VARIABLES` with an extra ``orbit`` dimension (the
     largest basin share first), ``stable_orbit_count`` and ``unsettled_start_share``.
     """
-    import xarray as xr  # noqa: PLC0415
+    import json  # noqa: PLC0415
+    from contextlib import nullcontext  # noqa: PLC0415
+
+    from thermogear.sweep.chains import pending_chains  # noqa: PLC0415
+    from thermogear.sweep.task_store import MemoryStore, TaskStore  # noqa: PLC0415
 
     directions = _directions(direction)
-    speed_axis = next((a for a, p in enumerate(study.parameters) if p.key == "operating.speed_rpm"), None)
-    shape = study.shape
-    full = (len(directions), len(study.models), *shape)
-    arrays = {name: np.full(full, np.nan) for name in BRANCH_VARIABLES}
-    response = np.full(full, "", dtype=object)
-    jammed = np.zeros((len(study.models), *shape), dtype=np.int8)
-    natural = np.full((len(study.models), *shape), np.nan)
-    static_load = np.full(shape, np.nan)
-    frequency = np.full(shape, np.nan)
     if int(multistart) != multistart or multistart < 0:
         raise CaseError("multistart", multistart, "an integer >= 0 (0: no search)", "number of starts per point")
-    censuses = np.full((len(study.models), *shape), None, dtype=object) if multistart else None
-    others = [p.size for a, p in enumerate(study.parameters) if a != speed_axis]
-    groups = list(np.ndindex(*others)) if others else [()]
+    speed_axis = next((a for a, p in enumerate(study.parameters) if p.key == "operating.speed_rpm"), None)
+    tasks, follows = plan_branches(study, directions, int(multistart))
+    layout = branch_layout(study, directions, int(multistart), len(tasks))
+    store = (TaskStore.open(out, layout, resume=resume, overwrite=overwrite) if out is not None
+             else MemoryStore(layout))
+    done = store.done_tasks()
 
-    def place(task: tuple, result) -> None:
-        rest = task[1]
-        _, where = _group_values(study, rest, speed_axis)
-        if task[0] == "orbits":  # the census of one point and model
-            point = tuple(task[3] if isinstance(i, slice) else i for i in where)
-            censuses[(task[2], *point)] = result
-            return
-        group = result
-        pick = (lambda a: a) if speed_axis is not None else (lambda a: a[..., 0])
-        for name in BRANCH_VARIABLES:
-            arrays[name][(slice(None), slice(None), *where)] = pick(group.arrays[name])
-        response[(slice(None), slice(None), *where)] = pick(group.response)
-        jammed[(slice(None), *where)] = group.jammed if speed_axis is not None else group.jammed[:, 0]
-        natural[(slice(None), *where)] = (group.natural_frequency_hz if speed_axis is not None
-                                          else group.natural_frequency_hz[:, 0])
-        static_load[where] = pick(group.static_load)
-        frequency[where] = pick(group.mesh_frequency_hz)
-        if progress is not None:
-            progress(int(group.static_load.size))
+    states: list = []  # read once, where a branch is continued
 
-    tasks = [("group", rest) for rest in groups]
-    if multistart:  # one task per point and model: a few speeds searched on every worker
-        speed_count = study.parameters[speed_axis].size if speed_axis is not None else 1
-        tasks += [("orbits", rest, model, speed) for rest in groups for model in range(len(study.models))
-                  for speed in range(speed_count)]
-    store = None
-    if out is not None:
-        from thermogear.sweep.task_store import TaskStore  # noqa: PLC0415
+    def stored_state(number: int):
+        region = branch_region(study, tasks[number], speed_axis)
+        states[:] = states or [store.read_variable("branch_state")]
+        state = states[0][tuple(region.get(name, slice(None)) for name in
+                                                          ("direction", "model", *study.dims))]
+        return None if not np.isfinite(state).all() else tuple(float(value) for value in state)
 
-        store = TaskStore.open(out, branch_layout(study, directions, int(multistart), len(tasks)), resume=resume,
-                               overwrite=overwrite)
-    done = store.done_tasks() if store is not None else set()
-    pending = [(number, task) for number, task in enumerate(tasks) if number not in done]
+    pending, pending_follows = pending_chains(tasks, follows, done, stored_state)
+    censuses: dict = {}
     caught: list = []
 
     def finished(index: int, outcome) -> None:
-        number, task = pending[index]
+        number = pending[index][0]
+        task = tasks[number]
         result, messages = outcome
         caught.extend(messages)
-        place(task, result)
-        if store is not None:
-            store.write(number, *branch_region(study, task, speed_axis, result, int(multistart)))
+        region = branch_region(study, task, speed_axis)
+        if task[0] == "orbits":
+            censuses[task] = result
+            store.write(number, region, orbit_arrays(result, int(multistart)))
+        else:
+            state = result["carried"]
+            store.write(number, region, {**result["values"], "branch_state": np.full(2, np.nan) if state is None
+                                         else np.asarray(state, dtype=float)})
+        advance(1)
 
     kind = scheduler if scheduler not in (None, "", "local") else ("serial" if workers == 1 else "threads")
-    _run_tasks((study, speed_axis, directions, int(multistart)), [task for _, task in pending], finished, kind,
-               None if kind == "serial" else workers, caught)
-    if store is not None:
+    identity = json.dumps(layout.definition, sort_keys=True, default=str)
+    with (progress(len(tasks), len(done)) if progress is not None else nullcontext(lambda points=1: None)) as advance:
+        _run_tasks((study, speed_axis, directions, int(multistart), identity), [task for _, task in pending],
+                   finished, kind, None if kind == "serial" else workers, caught, pending_follows)
+    if out is not None:
         return store.dataset()
+    return _memory_dataset(store, study, directions, censuses, speed_axis, int(multistart))
+
+
+def _memory_dataset(store, study, directions: tuple[str, ...], censuses: dict, speed_axis, starts: int):
+    """The dataset of a study run without a store (``out`` None): the arrays the tasks wrote, as xarray."""
+    import xarray as xr  # noqa: PLC0415
+
     coords: dict[str, Any] = {"direction": ("direction", np.array(directions, dtype=str)),
                               "model": ("model", np.array(study.models, dtype=str))}
     for parameter in study.parameters:
         coords[parameter.name] = (parameter.name, np.asarray(parameter.values))
-    dims = ("direction", "model", *study.dims)
-    data = {name: (dims, values, {"units": BRANCH_VARIABLES[name][0], "long_name": BRANCH_VARIABLES[name][1]})
-            for name, values in arrays.items()}
-    data["response"] = (dims, response.astype(str),
-                        {"long_name": "periodic | subharmonic | non-periodic | failed | jammed"})
-    data["jammed"] = (("model", *study.dims), jammed,
-                      {"units": "1", "long_name": "1 where the gears jam (the thermal expansion closes the backlash): "
-                                                  "no result, NaN"})
-    data["natural_frequency_hz"] = (("model", *study.dims), natural,
-                                    {"units": "Hz", "long_name": "natural frequency of the linear mesh with every "
-                                                                 "pair in contact, sqrt(mean k / me) / 2 pi"})
-    data["static_load"] = (study.dims, static_load, {"units": "N", "long_name": "static normal load w"})
-    data["mesh_frequency_hz"] = (study.dims, frequency, {"units": "Hz", "long_name": "mesh frequency z1 n1 / 60"})
-    if censuses is not None:
+    data = {}
+    for variable in store.layout.variables:
+        if variable.name == "branch_state" or variable.dims[-1:] == ("orbit",) or variable.name in (
+                "stable_orbit_count", "unsettled_start_share"):
+            continue
+        values = store.read_variable(variable.name)
+        data[variable.name] = (variable.dims, values.astype(str) if variable.kind == "str" else values,
+                               {"units": variable.units, "long_name": variable.long_name} if variable.units else
+                               {"long_name": variable.long_name})
+    if starts:
         from thermogear.sweep.multistart import orbit_dataset_variables  # noqa: PLC0415
 
-        data.update(orbit_dataset_variables(censuses, study.models, study.dims, int(multistart)))
+        found = np.full((len(study.models), *study.shape), None, dtype=object)
+        for task, census in censuses.items():
+            _, rest, model_index, speed_index = task
+            _, where = _group_values(study, rest, speed_axis)
+            found[(model_index, *(speed_index if isinstance(i, slice) else i for i in where))] = census
+        data.update(orbit_dataset_variables(found, study.models, study.dims, starts))
     load, load_note = study_load_held(study)
     return xr.Dataset(data, coords=coords, attrs={"mesh": "nonlinear", "directions": ",".join(directions),
                                                    "case": study.case.name, "load": load, "load_note": load_note})
 
 
-def _run_tasks(shared, tasks, finished, scheduler: str, workers: int | None, caught: list) -> None:
+def _run_tasks(shared, tasks, finished, scheduler: str, workers: int | None, caught: list, follows=None) -> None:
     """Every task on the one executor (:mod:`thermogear.sweep.executor`); ``finished(index, (result, warnings))``
     in the calling thread as each finishes; the warnings raised again in the calling thread, once per text."""
     from contextlib import ExitStack  # noqa: PLC0415
@@ -316,7 +341,7 @@ def _run_tasks(shared, tasks, finished, scheduler: str, workers: int | None, cau
 
     with ExitStack() as stack:
         unscoped = stack.enter_context(warning_scope.routed()) if scheduler == "threads" else []
-        execute(execute_recorded, shared, tasks, finished, scheduler, workers)
+        execute(execute_recorded, shared, tasks, finished, scheduler, workers, follows=follows)
         stack.close()
         caught.extend((str(item.message), item.category, item.filename, item.lineno) for item in unscoped)
     seen = set()

@@ -11,8 +11,9 @@ from typing import Any
 
 import numpy as np
 
-from thermogear.sweep.drivetrain_study import (DIRECTIONS, backlash_arrays, drivetrain_layout, plan_drivetrain_study,
-                                               point_case, run_task, task_region)
+from thermogear.sweep.chains import pending_chains
+from thermogear.sweep.drivetrain_store import backlash_arrays, drivetrain_layout, task_region
+from thermogear.sweep.drivetrain_study import DIRECTIONS, plan_drivetrain_study, point_case, run_task
 
 __all__ = ["DrivetrainStudyRun", "run_drivetrain_study"]
 
@@ -39,7 +40,7 @@ def _resonances(built, models, speeds: np.ndarray) -> dict[str, list[dict[str, A
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         return {model: [r for r in resonance_speeds(mode_table(built.modes(model), built.drivetrains[model]),
-                                                    built.teeth, built.section.bearing_harmonics)
+                                                    built.teeth, built.section.bearing_harmonics, built.stages)
                         if speeds.min() <= r["speed_rpm"] <= speeds.max()] for model in models}
 
 
@@ -49,32 +50,16 @@ def _pending(plan, done: set[int], store) -> tuple[list, list]:
     if not plan.backlash:
         pending = [number for number in range(len(plan.tasks)) if number not in done]
         return [(number, plan.tasks[number]) for number in pending], [None] * len(pending)
-    chains: list[list[int]] = []
-    for number, follow in enumerate(plan.follows):
-        if follow is None:
-            chains.append([number])
-        else:
-            chains[-1].append(number)
-    state = None
-    tasks, follows = [], []
-    for chain in chains:
-        first = next((position for position, number in enumerate(chain) if number not in done), None)
-        if first is None:
-            continue
-        stored = None
-        if first > 0:
-            if state is None:
-                state = store.read_variable("branch_state")
-            region = task_region(plan, plan.tasks[chain[first - 1]])
-            names = ["model", "direction", *plan.study.dims]
-            values = state[tuple(region.get(name, slice(None)) for name in names)]
-            stored = None if not np.isfinite(values).any() else np.asarray(values, dtype=float)
-        for position in range(first, len(chain)):
-            number = chain[position]
-            task = plan.tasks[number] + ((stored,) if position == first else ())
-            follows.append(None if position == first else len(tasks) - 1)
-            tasks.append((number, task))
-    return tasks, follows
+    names = ["model", "direction", *plan.study.dims]
+    states: list = []  # read once, where a branch is continued
+
+    def stored_state(number: int):
+        region = task_region(plan, plan.tasks[number])
+        states[:] = states or [store.read_variable("branch_state")]
+        values = states[0][tuple(region.get(name, slice(None)) for name in names)]
+        return None if not np.isfinite(values).any() else np.asarray(values, dtype=float)
+
+    return pending_chains(plan.tasks, plan.follows, done, stored_state)
 
 
 def run_drivetrain_study(study, out: str | Path, directions: tuple[str, ...] = DIRECTIONS,

@@ -29,15 +29,14 @@ from typing import Any
 import numpy as np
 
 from thermogear.errors import CaseError, JammingError, ModelLimitError, ProblemError
+from thermogear.sweep.drivetrain_branches import DIRECTIONS
+from thermogear.sweep.drivetrain_store import STAGE_KEYS, TEMPERATURES
 
-__all__ = ["DrivetrainPlan", "plan_drivetrain_study", "point_case"]
+__all__ = ["DrivetrainPlan", "plan_drivetrain_study", "point_case", "run_task"]
 
 #: What a point's numerics may raise: the solver's and the case's refusals, a singular or overflowing matrix.
 FAILURES = (ModelLimitError, CaseError, ProblemError, JammingError, np.linalg.LinAlgError, ValueError)
-DIRECTIONS = ("up", "down")
 _CACHE_SIZE = 4
-#: Per point: the temperatures its case was built with [°C].
-TEMPERATURES = ("oil_temperature_c", "housing_temperature_c")
 _BUILT: OrderedDict = OrderedDict()
 _LOCK = threading.Lock()
 
@@ -45,7 +44,9 @@ _LOCK = threading.Lock()
 @dataclass(frozen=True, eq=False)
 class DrivetrainPlan:
     """A planned drivetrain study (what every task shares): ``study``, ``models``, ``directions`` (empty: the
-    linear mesh), ``bearings`` (names), ``harmonics``, ``state_size`` (2 N: the full state a branch carries) and
+    linear mesh), ``bearings`` (names), ``harmonics`` (the section's mesh harmonics), ``lines`` (the bearing
+    spectrum's lines: the harmonics j·L_m of every stage of a train; 1 … harmonics for one mesh), ``meshes`` (their
+    names; a train stores each stage's Kv, DTE and force), ``state_size`` (2 N: the full state a branch carries) and
     ``tasks`` (independent slices, or branch points with ``follows``)."""
 
     study: Any
@@ -59,6 +60,12 @@ class DrivetrainPlan:
     tasks: tuple
     follows: tuple
     identity: str = ""  # the study's definition (JSON): the key of the drivetrains built for it in a worker
+    lines: tuple[int, ...] = ()
+    meshes: tuple[str, ...] = ()
+
+    @property
+    def train(self) -> bool:
+        return len(self.meshes) > 1
 
     @property
     def backlash(self) -> bool:
@@ -119,6 +126,10 @@ def plan_drivetrain_study(study, built, chunk_points: int, directions: tuple[str
     ``directions``: the branches of a backlash study)."""
     from thermogear.mesh.model import PREDICTED_AT_LOAD_TEMPERATURE_MODELS
 
+    unknown = [direction for direction in directions if direction not in DIRECTIONS]
+    if unknown or not directions:
+        raise CaseError("--direction", ", ".join(unknown) or "none", "up | down | both",
+                        "the orbit is followed from the lowest speed up, from the highest down, or both")
     speed_axis = next((a for a, p in enumerate(study.parameters) if p.key == "operating.speed_rpm"), None)
     speeds = _speeds(study, speed_axis)
     if np.any(np.diff(speeds) <= 0.0) and speeds.size > 1:
@@ -150,79 +161,12 @@ def plan_drivetrain_study(study, built, chunk_points: int, directions: tuple[str
                 tasks.append((group, slice(start, min(start + step, speeds.size))))
                 follows.append(None)
         directions = ()
-    return DrivetrainPlan(study, models, tuple(directions), bearings, int(built.section.bearing_harmonics),
-                          int(state_size), per_point, speed_axis, tuple(tasks), tuple(follows),
-                          json.dumps(study.describe(), sort_keys=True, default=str))
-
-
-# ------------------------------------------------------------------------------------------------ the store
-def drivetrain_layout(plan: DrivetrainPlan, extra_attrs: dict):
-    """The store of a drivetrain study: per model (× direction) × parameters the response, per bearing its forces,
-    and for a backlash study the state each branch carries on (``branch_state``)."""
-    from thermogear.sweep.study import case_fingerprint
-    from thermogear.sweep.task_store import StoreLayout, StoreVariable
-
-    study = plan.study
-    dims = plan.dims
-    scalar = [("kv", "float", "1", "dynamic factor Kv of the drivetrain's mesh"),
-              ("dte_rms_um", "float", "um", "RMS of the dynamic transmission error"),
-              ("dte_peak_to_peak_um", "float", "um", "peak-to-peak dynamic transmission error"),
-              ("largest_floquet_multiplier_abs", "float", "1", "largest Floquet multiplier modulus"),
-              ("valid", "bool", "1", "True where the point has a stable periodic orbit with finite metrics"),
-              ("status", "str", "", "valid | unstable | not computed: why")]
-    if plan.backlash:
-        scalar += [("contact_loss_fraction", "float", "1", "share of the period without driving-flank contact"),
-                   ("back_contact_fraction", "float", "1", "share of the period on the back flanks"),
-                   ("back_side_contact", "float", "1", "1 where a back flank is struck"),
-                   ("converged", "bool", "1", "True where the orbit was found"),
-                   ("stable", "bool", "1", "True where the orbit found is stable"),
-                   ("run_in", "bool", "1", "True where the neighbour's orbit was lost and the point run in")]
-    variables = [StoreVariable(name, dims, kind, units, text) for name, kind, units, text in scalar]
-    variables += [StoreVariable("bearing_dynamic_rms_n", (*dims, "bearing"), "float", "N",
-                                "RMS of each bearing's dynamic force"),
-                  StoreVariable("bearing_harmonic_amplitude_n", (*dims, "bearing", "harmonic"), "float", "N",
-                                "radial amplitude of each bearing's force at the mesh harmonics")]
-    variables += [StoreVariable("oil_temperature_c", study.dims, "float", "degC", "oil temperature of the point's "
-                                "case (the gearbox model's steady state with temperature.model = 'gearbox')"),
-                  StoreVariable("housing_temperature_c", study.dims, "float", "degC", "housing temperature of the "
-                                "point's case (NaN where the case gives none)")]
-    if plan.backlash:
-        variables.append(StoreVariable("branch_state", (*dims, "state"), "float", "",
-                                       "full state (q, dq/dt) the branch carries on from this point (resume)"))
-    coords: dict[str, Any] = {"model": list(plan.models)}
-    if plan.backlash:
-        coords["direction"] = list(plan.directions)
-    for parameter in study.parameters:
-        coords[parameter.name] = np.asarray(parameter.values)
-    coords["bearing"] = list(plan.bearings)
-    coords["harmonic"] = np.arange(1, plan.harmonics + 1)
-    if plan.backlash:
-        coords["state"] = np.arange(plan.state_size)
-    chunks = {"model": 1, "direction": 1, **{p.name: 1 for p in study.parameters if p.key != "operating.speed_rpm"}}
-    definition = {**study.describe(), "kind": "drivetrain backlash branches" if plan.backlash else
-                  "drivetrain speeds", "directions": list(plan.directions)}
-    if not plan.backlash:  # the slices of speeds the tasks share a modal basis over: part of the study's identity
-        definition["speeds_per_task"] = max((task[1].stop - task[1].start for task in plan.tasks), default=1)
-    attrs = {"case_json": json.dumps(study.case.document, sort_keys=True, default=str),
-             "case_document_sha256": case_fingerprint(study.case.document), **extra_attrs}
-    return StoreLayout(coords=coords, variables=tuple(variables), tasks=len(plan.tasks), definition=definition,
-                       attrs=attrs, chunks=chunks)
-
-
-def task_region(plan: DrivetrainPlan, task) -> dict[str, Any]:
-    """The store region one task writes."""
-    study = plan.study
-    if plan.backlash:
-        group, model_index, direction_index, speed_index = task
-        region: dict[str, Any] = {"model": model_index, "direction": direction_index}
-    else:
-        group, speeds = task
-        region = {}
-    names = [p.name for a, p in enumerate(study.parameters) if a != plan.speed_axis]
-    region.update(dict(zip(names, group)))
-    if plan.speed_axis is not None:
-        region[study.parameters[plan.speed_axis].name] = speed_index if plan.backlash else speeds
-    return region
+    harmonics = int(built.section.bearing_harmonics)
+    lines = tuple(sorted({j * repeat for repeat in built.train_repeats for j in range(1, harmonics + 1)}))
+    meshes = tuple(mesh.name for mesh in built.drivetrains[first].meshes)
+    return DrivetrainPlan(study, models, tuple(directions), bearings, harmonics, int(state_size), per_point,
+                          speed_axis, tuple(tasks), tuple(follows), json.dumps(study.describe(), sort_keys=True,
+                                                                                default=str), lines, meshes)
 
 
 # ------------------------------------------------------------------------------------------------ the tasks
@@ -232,33 +176,36 @@ def _missing(status: str, bearings: int, harmonics: int) -> dict[str, Any]:
             "bearing_harmonic_amplitude_n": np.full((bearings, harmonics), np.nan)}
 
 
-def _forces(response, bearings: int, harmonics: int) -> dict[str, np.ndarray]:
+def _forces(response, bearings: int, lines: int, harmonics: int) -> dict[str, np.ndarray]:
+    """Each bearing's dynamic RMS and its amplitudes at the ``lines`` spectrum lines of the first ``harmonics`` mesh
+    harmonics (of every stage of a train)."""
     from thermogear.drivetrain.case_model import bearing_force_summary
 
     forces = bearing_force_summary(response, harmonics)
     return {"bearing_dynamic_rms_n": np.array([forces[name]["dynamic_rms_n"] for name in forces], dtype=float),
             "bearing_harmonic_amplitude_n": np.array([forces[name]["harmonic_amplitude_n"] for name in forces],
-                                                     dtype=float).reshape(bearings, harmonics)}
+                                                     dtype=float).reshape(bearings, lines)}
 
 
-def _linear_point(response, bearings: int, harmonics: int) -> dict[str, Any]:
+def _linear_point(response, bearings: int, lines: int, harmonics: int) -> dict[str, Any]:
     if isinstance(response, np.linalg.LinAlgError):
-        return _missing(f"not computed: the periodic solve failed ({response})", bearings, harmonics)
+        return _missing(f"not computed: the periodic solve failed ({response})", bearings, lines)
     if isinstance(response, Exception):
-        return _missing(f"not computed: {response}", bearings, harmonics)
+        return _missing(f"not computed: {response}", bearings, lines)
     multipliers = np.abs(response.multipliers)
     largest = float(multipliers.max()) if multipliers.size else 0.0
     return {"status": "valid" if largest < 1.0 else "unstable", "valid": largest < 1.0, "kv": response.kv,
             "dte_rms_um": response.metrics["dte_rms"] * 1e6,
             "dte_peak_to_peak_um": response.metrics["dte_peak_to_peak"] * 1e6,
-            "largest_floquet_multiplier_abs": largest, **_forces(response, bearings, harmonics)}
+            "largest_floquet_multiplier_abs": largest, **_forces(response, bearings, lines, harmonics),
+            **_stages(response)}
 
 
 def linear_task(plan: DrivetrainPlan, task) -> dict[str, np.ndarray]:
     """One task of a linear drivetrain study: a group's slice of speeds, every model (arrays of the region)."""
     group, where = task
     speeds = _speeds(plan.study, plan.speed_axis)[where]
-    bearings, harmonics = len(plan.bearings), plan.harmonics
+    bearings, lines, harmonics = len(plan.bearings), len(plan.lines), plan.harmonics
     points: list[list[dict]] = [[{} for _ in speeds] for _ in plan.models]
     slices = [[speed] for speed in speeds] if plan.per_point_case else [list(speeds)]
     offset = 0
@@ -273,13 +220,23 @@ def linear_task(plan: DrivetrainPlan, task) -> dict[str, np.ndarray]:
                              for model in plan.models}
             for m, model in enumerate(plan.models):
                 for k, response in enumerate(responses[model]):
-                    points[m][offset + k] = {**_linear_point(response, bearings, harmonics), **temperatures}
+                    points[m][offset + k] = {**_linear_point(response, bearings, lines, harmonics), **temperatures}
         except FAILURES as error:  # the group's (or point's) case or drivetrain cannot be built
             for m in range(len(plan.models)):
                 for k in range(len(chunk)):
-                    points[m][offset + k] = _missing(f"not computed: {error}", bearings, harmonics)
+                    points[m][offset + k] = _missing(f"not computed: {error}", bearings, lines)
         offset += len(chunk)
     return _arrays(points, plan, squeeze=plan.speed_axis is None)
+
+
+def _stages(response) -> dict[str, list[float]]:
+    """A train's Kv, DTE RMS [um] and largest mesh force [N] of each stage (none for one mesh)."""
+    if len(response.meshes) < 2:
+        return {}
+    from thermogear.drivetrain.case_model import stage_summary
+
+    stages = stage_summary(response).values()
+    return {f"stage_{key}": [np.nan if item[key] is None else item[key] for item in stages] for key in STAGE_KEYS}
 
 
 def _arrays(points: list[list[dict]], plan: DrivetrainPlan, squeeze: bool) -> dict[str, np.ndarray]:
@@ -294,6 +251,10 @@ def _arrays(points: list[list[dict]], plan: DrivetrainPlan, squeeze: bool) -> di
         result[name] = values
     for name in ("bearing_dynamic_rms_n", "bearing_harmonic_amplitude_n"):
         result[name] = np.array([[point[name] for point in row] for row in points], dtype=float)
+    if plan.train:  # each stage's values (NaN where the point was not computed)
+        for key in STAGE_KEYS:
+            result[f"stage_{key}"] = np.array([[point.get(f"stage_{key}", [np.nan] * len(plan.meshes))
+                                                for point in row] for row in points], dtype=float)
     for name in TEMPERATURES:  # the point's, whichever model: (speeds,)
         result[name] = np.array([[point.get(name, np.nan) for point in row] for row in points], dtype=float)
     if squeeze:
@@ -316,7 +277,7 @@ def backlash_task(plan: DrivetrainPlan, task, previous: dict | None = None) -> d
     carried = previous["carried"] if previous is not None else (stored[0] if stored else None)
     model = plan.models[model_index]
     speed = float(_speeds(plan.study, plan.speed_axis)[speed_index])
-    bearings, harmonics = len(plan.bearings), plan.harmonics
+    bearings, harmonics = len(plan.bearings), len(plan.lines)
     point = _missing("", bearings, harmonics)
     try:
         built, temperatures = _built(plan, group, speed)
@@ -360,22 +321,7 @@ def _backlash_point(response, run_in: bool, bearings: int, harmonics: int) -> di
             "back_contact_fraction": response.back_contact_fraction,
             "back_side_contact": float(metrics["back_side_contact"]),
             "largest_floquet_multiplier_abs": float(multipliers.max()) if multipliers.size else np.nan,
-            **_forces(response, bearings, harmonics)}
-
-
-def backlash_arrays(point: dict[str, Any], state_size: int) -> dict[str, Any]:
-    """The stored values of one branch point (the carried state NaN before the first orbit)."""
-    values = {name: point.get(name, np.nan) for name in ("kv", "dte_rms_um", "dte_peak_to_peak_um",
-                                                          "largest_floquet_multiplier_abs", "contact_loss_fraction",
-                                                          "back_contact_fraction", "back_side_contact")}
-    values.update({name: bool(point.get(name, False)) for name in ("valid", "converged", "stable", "run_in")})
-    values.update({name: point.get(name, np.nan) for name in TEMPERATURES})
-    values["status"] = point["status"]
-    values["bearing_dynamic_rms_n"] = point["bearing_dynamic_rms_n"]
-    values["bearing_harmonic_amplitude_n"] = point["bearing_harmonic_amplitude_n"]
-    carried = point["carried"]
-    values["branch_state"] = np.full(state_size, np.nan) if carried is None else np.asarray(carried, dtype=float)
-    return values
+            **_forces(response, bearings, harmonics, harmonics)}
 
 
 def run_task(plan: DrivetrainPlan, task, *previous):

@@ -52,6 +52,7 @@ ALIASES: dict[str, str] = {
     "bulk_temperature_c": "temperature.bulk_c",
     "flank_temperature_offset_c": "temperature.flank_offset_c",
     "wheel_flank_offset_c": "temperature.wheel_flank_offset_c",
+    "ambient_c": "gearbox.ambient_c",
 }
 
 #: Keys set together with a parameter so that the case stays consistent (exactly one load input; a given X_te).

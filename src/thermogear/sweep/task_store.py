@@ -24,7 +24,7 @@ import numpy as np
 from thermogear.errors import CaseError
 from thermogear.ownership import require_owned, resolve_output
 
-__all__ = ["DONE", "StoreLayout", "StoreVariable", "TaskStore", "store_is_complete"]
+__all__ = ["DONE", "MemoryStore", "StoreLayout", "StoreVariable", "TaskStore", "store_is_complete"]
 
 #: The completion record: one entry (and one zarr chunk) per task.
 DONE = "task_done"
@@ -128,12 +128,8 @@ class TaskStore:
 
         with _quiet_zarr():
             for name, values in arrays.items():
-                array = self._arrays[name]
-                variable = next(v for v in self.layout.variables if v.name == name)
-                selection = tuple(region.get(dim, slice(None)) for dim in variable.dims)
-                if variable.kind == "str":
-                    values = np.asarray(values, dtype=object).astype(str).astype(f"<U{variable.width}")
-                array[selection] = values
+                selection, values = _placed(self.layout, name, region, values)
+                self._arrays[name][selection] = values
             self._done[number] = 1
 
     def read_variable(self, name: str) -> np.ndarray:
@@ -146,6 +142,37 @@ class TaskStore:
     def dataset(self):
         """The store as a loaded xarray Dataset, without its completion record."""
         return open_task_store(self.path)
+
+
+def _placed(layout: StoreLayout, name: str, region: Mapping[str, Any], values) -> tuple[tuple, Any]:
+    """Where a task's values of variable ``name`` go (``region``: dim → slice or index) and the values as stored."""
+    variable = next(v for v in layout.variables if v.name == name)
+    if variable.kind == "str":
+        values = np.asarray(values, dtype=object).astype(str).astype(f"<U{variable.width}")
+    return tuple(region.get(dim, slice(None)) for dim in variable.dims), values
+
+
+class MemoryStore:
+    """A study's arrays held in memory, written task by task as :class:`TaskStore` writes its store (a study run
+    without ``out``): the same layout, regions and fill values."""
+
+    def __init__(self, layout: StoreLayout) -> None:
+        self.layout = layout
+        self._arrays = {variable.name: np.full(layout.shape(variable.dims), _FILL[variable.kind],
+                                               dtype=f"<U{variable.width}" if variable.kind == "str" else
+                                               {"float": np.float64, "int8": np.int8, "bool": bool}[variable.kind])
+                        for variable in layout.variables}
+
+    def done_tasks(self) -> set[int]:
+        return set()
+
+    def write(self, number: int, region: Mapping[str, Any], arrays: Mapping[str, Any]) -> None:
+        for name, values in arrays.items():
+            selection, values = _placed(self.layout, name, region, values)
+            self._arrays[name][selection] = values
+
+    def read_variable(self, name: str) -> np.ndarray:
+        return self._arrays[name]
 
 
 def open_task_store(path: str | Path, keep_record: bool = False):
