@@ -32,8 +32,9 @@ SOURCE = Path(__file__).resolve().parents[2] / "src" / "thermogear"
 #: drivetrain bearings' loads and losses the section, pair and material, the gearbox description its pieces (the case
 #: resolved once, by gearbox_model_from_case), the coupled heat's parts the gearbox model and sections, the mesh
 #: table's resolver is its own load-time check, the drivetrain's heat provider and the predicted-temperature model
-#: are looked up by their one resolver, and preflight is asked through the Orchestrator.
-MAXIMUM_CASE_READERS = 36
+#: are looked up by their one resolver, and preflight is asked through the Orchestrator. 35 once main's study kinds
+#: (the warm-up kind and study_kind, merged at 38) pick a case's kind from its StudySubject, resolved once.
+MAXIMUM_CASE_READERS = 35
 
 
 def _takes_case(argument: ast.arg) -> bool:
