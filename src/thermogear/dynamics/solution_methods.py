@@ -17,7 +17,7 @@ from dataclasses import dataclass
 
 from thermogear.errors import CaseError
 
-__all__ = ["PERIODIC", "SOLUTION_METHODS", "SolutionMethod", "TRANSIENT", "solution_method"]
+__all__ = ["SOLUTION_METHODS", "SolutionMethod", "solution_method"]
 
 
 @dataclass(frozen=True)
@@ -31,11 +31,11 @@ class SolutionMethod:
     citation: str
 
 
-PERIODIC = SolutionMethod("periodic", False, "floquet1883")
-TRANSIENT = SolutionMethod("transient", True, "rk4")
-
-#: Every solution method by name: the one place the names are compared.
-SOLUTION_METHODS: dict[str, SolutionMethod] = {method.name: method for method in (PERIODIC, TRANSIENT)}
+#: Every solution method by name (the first the default of ``[dynamics] method``): the one place the names are
+#: compared.
+SOLUTION_METHODS: dict[str, SolutionMethod] = {method.name: method for method in (
+    SolutionMethod("periodic", from_rest=False, citation="floquet1883"),
+    SolutionMethod("transient", from_rest=True, citation="rk4"))}
 
 
 def solution_method(name: str, key: str = "dynamics.method") -> SolutionMethod:
