@@ -147,7 +147,7 @@ def check_pair(document: dict, method: str = "periodic") -> dict:
     from thermogear.case import case_from_document
     from thermogear.errors import CaseError, ModelLimitError
     from thermogear.mesh.model import MeshModel
-    from thermogear.preflight import preflight
+    from thermogear.orchestrator import Orchestrator
     from thermogear.simulation import MODELS, Simulation
     from thermogear.evaluation import uses_paper_thermal_stiffness
     from thermogear.serialization import json_ready
@@ -167,7 +167,7 @@ def check_pair(document: dict, method: str = "periodic") -> dict:
                 variant.setdefault("dynamics", {})["mesh"] = mesh
                 cases[mesh] = case = case_from_document(variant, source="<random>")
                 stage = "check"
-                preflight(case, method=method)  # as run --method does
+                Orchestrator(case, method=method).preflight()  # as run --method does
             stage = "stiffness"
             linear = cases["linear"]
             summary, _ = stiffness_summary(MeshModel(linear, "elastic"), linear.material, linear.operating_point,

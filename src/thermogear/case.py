@@ -19,6 +19,7 @@ import pydantic
 
 from thermogear.temperature_kinds import temperature_source
 from thermogear.dynamics.mesh_laws import mesh_law
+from thermogear.dynamics.solution_methods import solution_method
 from thermogear import warning_scope
 from thermogear.case_errors import case_error_from_validation
 from thermogear.case_geometry import gear_pair_of, helical_pair_of
@@ -41,7 +42,7 @@ from thermogear.schema.drivetrain import check_drivetrain_fits_gears
 from thermogear.schema.drivetrain_topology import check_drivetrain_train
 from thermogear.temperature_field import (check_temperatures, default_bulk_temperature,
                                          temperature_field_from_section)
-from thermogear.thermal_model_rules import thermal_model_rules
+from thermogear.thermal_model_rules import thermal_model_rules, x_te_source
 from thermogear.text_files import is_existing_file, path_exists, read_user_text
 from thermogear.thermoelastic.inputs import check_thermoelastic_inputs
 from thermogear.involute import disc_polar_inertia
@@ -229,37 +230,40 @@ def check_case(case: "Case") -> None:
     temperatures within what the case's thermal model evaluates) and the X_te the paper's thermal model needs.
     Warnings of these checks are left to the stage that uses the value (it issues them once, there)."""
     with warning_scope.ignored():
-        _check_temperature_field(case)
-    _check_thermal_inputs(case)
-    check_model_limits(case)
+        _check_temperature_field(case.temperature, case.directory, case.gear_pair, case.thermal.model)
+    _check_thermal_inputs(case.thermal)
+    check_model_limits(case.gear_pair, case.material, case.operating_point, case.inertias, case.drivetrain,
+                       case.dynamics.mesh, case.gears_input, case.document.get("operating", {}))
     builtin_checks = [check for check in map(resolve, CASE_CHECKS) if check is not None]
     for check in builtin_checks + [check for check in _CASE_CHECKS if check not in builtin_checks]:
         check(case)
 
 
-def _check_temperature_field(case: "Case") -> None:
-    section = case.temperature
+def _check_temperature_field(section: TemperatureSection, directory: Path | None, pair: GearPair,
+                             thermal_model: str) -> None:
+    """A given temperature field (``[temperature]``, files relative to ``directory``) over the path of contact of
+    ``pair``, within what the ``[thermal] model`` evaluates."""
     if not temperature_source(section.model).given:  # computed by its provider, checked there
         return
-    field = temperature_field_from_section(section, case.directory)
-    pair = case.gear_pair
+    field = temperature_field_from_section(section, directory)
     points = pair.path_points
     check_temperatures(field, float(pair.gamma(points["A"])), float(pair.gamma(points["E"])),
-                       limits=thermal_model_rules(case.thermal.model).temperature_limits)
+                       limits=thermal_model_rules(thermal_model).temperature_limits)
 
 
-def _check_thermal_inputs(case: "Case") -> None:
-    section = case.thermal
+def _check_thermal_inputs(section: ThermalSection) -> None:
+    """The X_te inputs of a ``[thermal]`` section whose model reads X_te: given or calibrated, not both."""
     if not thermal_model_rules(section.model).reads_x_te:  # e.g. the paper's k_T (Eqs. 13–23) uses X_te
         return
-    if section.x_te_source == "given" and section.x_te is None:
+    source = x_te_source(section.x_te_source)
+    if source.given and section.x_te is None:
         raise CaseError("thermal.x_te", None, ">= 0 (or x_te_source = 'calibrated')",
                         "thermal.model = 'luo2020', the paper's thermal stiffness (Luo & Li 2020 Eqs. 13–23), needs "
                         "the thermal-load correction factor X_te; give thermal.x_te or calibrate it")
-    if section.x_te_source == "calibrated" and section.x_te is not None:
+    if source.calibrated and section.x_te is not None:
         raise CaseError("thermal.x_te", section.x_te, "absent with x_te_source = 'calibrated'",
                         "X_te is either given or calibrated; remove one of them")
-    if section.x_te_source == "calibrated" and section.calibration_drop_percent is None:
+    if source.calibrated and section.calibration_drop_percent is None:
         raise CaseError("thermal.calibration_drop_percent", None, "(0, 100)",
                         "x_te_source = 'calibrated' needs the target stiffness drop")
 
@@ -270,7 +274,7 @@ def _stage(section, model: CaseFile) -> GearStage:
     temperatures along its path are not given: the case's temperature must be uniform."""
     key = f"drivetrain.stages '{section.name}'.gears"
     backlash = mesh_law(model.dynamics.mesh).backlash
-    if backlash or model.dynamics.method == "transient":
+    if backlash or solution_method(model.dynamics.method).from_rest:
         raise CaseError("dynamics.mesh" if backlash else "dynamics.method",
                         model.dynamics.mesh if backlash else model.dynamics.method,
                         "'linear' mesh and a periodic method with [[drivetrain.stages]]",
@@ -344,8 +348,13 @@ def case_from_document(document: dict[str, Any], source: str = "<memory>") -> Ca
         dynamics=model.dynamics, fem=model.fem, source=source, document=document, housing=model.housing,
         gears_input=gears, material_input=material, notes=notes, gearbox=model.gearbox, drivetrain=model.drivetrain,
         stages=stages, helical_pair=helical if helical.helix_angle > 0.0 else None)
-    if temperature_source(case.temperature.model).predicted_at_load:  # (see below)
-        case = _resolve_temperature_model(case)
+    if temperature_source(case.temperature.model).predicted_at_load:  # the model's resolver (see below)
+        name = case.temperature.model
+        resolver = _TEMPERATURE_MODELS.get(name) or builtin(TEMPERATURE_MODELS, name)
+        if resolver is None:
+            raise CaseError("temperature.model", name, "a registered model (its module is not installed)",
+                            "this temperature model is predicted by a model that is not loaded")
+        case = resolver(case)
     check_case(case)
     warn_keys_without_effect(case.thermal, case.dynamics)
     return case
@@ -364,16 +373,6 @@ def register_temperature_model(name: str, resolver: CaseResolver) -> None:
     if not callable(resolver):
         raise TypeError("a temperature model must be callable: resolver(case) -> Case")
     _TEMPERATURE_MODELS[name] = resolver
-
-
-def _resolve_temperature_model(case: "Case") -> "Case":
-    resolver = _TEMPERATURE_MODELS.get(case.temperature.model) or builtin(TEMPERATURE_MODELS,
-                                                                          case.temperature.model)
-    if resolver is None:
-        raise CaseError("temperature.model", case.temperature.model, "a registered model (its module is not "
-                        "installed)",
-                        "this temperature model is predicted by a model that is not loaded")
-    return resolver(case)
 
 
 # --------------------------------------------------------------------------------------------- errors

@@ -22,7 +22,7 @@ import warnings
 
 from thermogear.dynamics.mesh_laws import mesh_law
 from thermogear.errors import IneffectiveKeyWarning
-from thermogear.thermal_model_rules import LUO2020_RULES, THERMAL_MODEL_RULES, thermal_model_rules
+from thermogear.thermal_model_rules import LUO2020_RULES, THERMAL_MODEL_RULES, thermal_model_rules, x_te_source
 
 __all__ = ["LUO2020_KEYS", "keys_without_effect", "luo2020_complete", "warn_keys_without_effect"]
 
@@ -32,11 +32,12 @@ LUO2020_KEYS = LUO2020_RULES.own_keys
 
 def luo2020_complete(thermal) -> bool:
     """True when the [thermal] section defines X_te completely (the paper's model can be computed from it)."""
-    if thermal.x_te_source == "given":
+    source = x_te_source(thermal.x_te_source)
+    if source.given:
         return thermal.x_te is not None
-    if thermal.x_te_source == "calibrated":
+    if source.calibrated:
         return thermal.x_te is None and thermal.calibration_drop_percent is not None
-    return True  # "fem": the FE model computes it
+    return True  # a provider (the FE model) computes it
 
 
 def keys_without_effect(thermal, dynamics) -> list[tuple[list[str], str]]:

@@ -153,14 +153,20 @@ def check_bearing_clearance(drivetrain, mesh: str) -> None:
                             "backlash orbit with the clearance")
 
 
-def check_model_limits(case) -> None:
-    """Every limit of this module, in order (called by :func:`thermogear.case.check_case`)."""
-    check_fillet_fit(case.gear_pair)
-    check_load_range(case.normal_load, case.gear_pair.face_width, case.document.get("operating", {}))
-    check_rim_speed(case.gear_pair, case.material, case.operating_point.speed_rpm)  # before λ: the cause first
-    check_dynamic_range(case.gear_pair, case.material, case.operating_point.speed_rpm, case.inertias)
-    check_bearing_clearance(case.drivetrain, case.dynamics.mesh)
-    flag_deep_tip_relief(case.gear_pair, case.material, case.normal_load, case.gears_input)
+def check_model_limits(pair, material, operating, inertias, drivetrain, mesh: str, gears_input,
+                       operating_keys: dict) -> None:
+    """Every limit of this module, in order (called by :func:`thermogear.case.check_case` with the case's pieces):
+    ``pair`` the cold GearPair, ``material`` its Material, ``operating`` the OperatingPoint, ``inertias`` the
+    case's gear inertias [kg m²] or None, ``drivetrain`` the [drivetrain] section or None, ``mesh`` the
+    ``dynamics.mesh`` law, ``gears_input`` the [gears] section and ``operating_keys`` the case file's
+    ``[operating]`` table (which key gave the load)."""
+    normal_load = operating.normal_load(pair.pinion.base_radius)
+    check_fillet_fit(pair)
+    check_load_range(normal_load, pair.face_width, operating_keys)
+    check_rim_speed(pair, material, operating.speed_rpm)  # before λ: the cause first
+    check_dynamic_range(pair, material, operating.speed_rpm, inertias)
+    check_bearing_clearance(drivetrain, mesh)
+    flag_deep_tip_relief(pair, material, normal_load, gears_input)
 
 
 def check_rim_speed(pair: "GearPair", material: "Material", speed_rpm: float) -> None:

@@ -19,6 +19,7 @@ import numpy as np
 
 from thermogear import forked
 from thermogear.citations import cite, cited_in
+from thermogear.dynamics.solution_methods import solution_method
 from thermogear.mesh.model_names import ELASTIC, MODELS, THERMAL
 from thermogear.thermal_model_rules import LUO2020_RULES, THERMOELASTIC_RULES
 from thermogear.warning_causes import warning_text
@@ -170,7 +171,7 @@ def evaluate_case(case, method: str = "periodic", models: tuple[str, ...] = MODE
             evaluation.simulations[model] = orchestrator.simulation(model)
             evaluation.pairs[model] = orchestrator.pair(model)
             evaluation.responses[model] = evaluation.pairs[model].response
-            cite("floquet1883" if method == "periodic" else "rk4", "den_hartog1931", "iso_tr13989_1", "astm_d341")
+            cite(solution_method(method).citation, "den_hartog1931", "iso_tr13989_1", "astm_d341")
             if evaluation.simulations[model].mesh_model.thermal:
                 cite("timoshenko1951")
 

@@ -27,6 +27,7 @@ from typing import TYPE_CHECKING, Any
 
 from thermogear import warning_scope
 from thermogear.composition import TEMPERATURE_MODELS
+from thermogear.dynamics.solution_methods import SOLUTION_METHODS, solution_method
 from thermogear.errors import CaseError, ModelLimitError
 from thermogear.mesh.model_names import MODELS, THERMAL
 from thermogear.warning_causes import warning_text
@@ -44,7 +45,7 @@ _HIDDEN_BY_DEFAULT = (DeprecationWarning, PendingDeprecationWarning, ImportWarni
 
 #: The solution methods of one operating point (the solver of each, with the case's contact law, in
 #: :func:`thermogear.simulation.solver_for`).
-METHODS = ("periodic", "transient")
+METHODS = tuple(SOLUTION_METHODS)
 
 
 @dataclass(frozen=True, eq=False)
@@ -165,8 +166,8 @@ class Orchestrator:
     method: str | None = None
 
     def __post_init__(self) -> None:
-        if self.method is not None and self.method not in METHODS:
-            raise CaseError("method", self.method, " | ".join(METHODS), "unknown solution method")
+        if self.method is not None:
+            solution_method(self.method, key="method")  # a CaseError for an unknown one
 
     @cached_property
     def solution_method(self) -> str:
@@ -191,6 +192,16 @@ class Orchestrator:
             self._simulations[model] = Simulation(self.case, model, solver=self.solver)
         return self._simulations[model]
 
+    def preflight(self, quiet: bool = True) -> None:
+        """Build every component :meth:`run` would build (no solving) and raise CaseError where one fails: the one
+        set of checks ``check``, ``run`` and ``sweep`` share (:func:`thermogear.preflight.preflight`). ``quiet``
+        drops the warnings of the building."""
+        from thermogear.preflight import preflight  # noqa: PLC0415
+        from thermogear.simulation import Simulation  # noqa: PLC0415  (registers the FE temperature model too)
+
+        preflight(lambda model: Simulation(self.case, model), self.models, self.case.dynamics,
+                  self.solution_method, quiet)
+
     def pair(self, model: str) -> PairResult:
         """The 1-DOF pair under ``model``, solved (raises ModelLimitError where the model cannot give a result)."""
         from thermogear.dynamics.metric_results import typed_metrics  # noqa: PLC0415
@@ -208,7 +219,8 @@ class Orchestrator:
             return None
         from thermogear.drivetrain.case_model import drivetrain_results  # noqa: PLC0415
 
-        return drivetrain_results(self.built_drivetrain, self.models, transient=self.solution_method == "transient",
+        from_rest = solution_method(self.solution_method).from_rest
+        return drivetrain_results(self.built_drivetrain, self.models, transient=from_rest,
                                   progress=progress, series=series)
 
     @cached_property

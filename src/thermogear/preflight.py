@@ -11,7 +11,11 @@ on to solve pays nothing twice.
 
 from __future__ import annotations
 
+from collections.abc import Callable
+from typing import Any
+
 from thermogear.dynamics.mesh_laws import mesh_law
+from thermogear.dynamics.solution_methods import solution_method
 from thermogear import warning_scope
 from thermogear.errors import CaseError, ProblemError
 
@@ -19,22 +23,21 @@ from thermogear.errors import CaseError, ProblemError
 _KEYS = {"backlash": ("gears.backlash_normal_um", 1e6)}
 
 
-def preflight(case, models: tuple[str, ...] = ("elastic", "thermal"), quiet: bool = True,
-              method: str | None = None) -> None:
+def preflight(simulation_of: Callable[[str], Any], models: tuple[str, ...], dynamics, method: str,
+              quiet: bool = True) -> None:
     """Build every component ``run`` would build for ``models`` (no solving); raise CaseError where one fails.
-    ``quiet``: drop the warnings of the building (``check`` validates; the stage that uses a value warns).
-    ``method``: the solution method ``run`` will use (default the case's ``dynamics.method``)."""
-    method = method or case.dynamics.method
-    from thermogear.simulation import Simulation  # registers the FE temperature model too
-
+    ``simulation_of(model)`` gives a model's :class:`~thermogear.simulation.Simulation` of the case, ``dynamics``
+    is the case's ``[dynamics]`` section and ``method`` the solution method ``run`` will use. ``quiet``: drop the
+    warnings of the building (``check`` validates; the stage that uses a value warns). Asked through the case's
+    resolver, :meth:`thermogear.orchestrator.Orchestrator.preflight`."""
     for model in models:
-        simulation = Simulation(case, model)
+        simulation = simulation_of(model)
         try:
             if quiet:
                 with warning_scope.ignored():
-                    _build(simulation, case.dynamics, method)
+                    _build(simulation, dynamics, method)
             else:
-                _build(simulation, case.dynamics, method)
+                _build(simulation, dynamics, method)
         except ProblemError as error:
             key, scale = _KEYS.get(error.quantity, ("case", None))
             value = round(error.value * scale, 4) if scale is not None else error.value
@@ -46,7 +49,7 @@ def _build(simulation, dynamics, method: str) -> None:
     """Build the problem ``simulation`` would solve under the ``[dynamics]`` section and ``method`` (the check)."""
     if mesh_law(dynamics.mesh).backlash:
         simulation.state.backlash_problem(dynamics.damping_in_flight)
-    elif method == "transient":
+    elif solution_method(method).from_rest:
         check_transient_length(simulation.problem, dynamics.transient_periods, simulation.speed_rpm)
     else:
         simulation.problem  # noqa: B018  (building it is the check)

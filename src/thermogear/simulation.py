@@ -17,16 +17,16 @@ from typing import Callable, Literal
 import numpy as np
 
 from thermogear.case import Case
+from thermogear.dynamics.solution_methods import SOLUTION_METHODS, solution_method
 from thermogear.dynamics.solvers import (BacklashShootingSolver, BacklashTransientSolver, PeriodicSolver, Solver,
                                          TransientSolver)
-from thermogear.errors import CaseError
 from thermogear.mesh.model import MeshModel
 from thermogear.mesh.model_names import MODELS, Model
 from thermogear.mesh.pair_models import check_model
 from thermogear.mesh.state import MeshState
 
 Method = Literal["periodic", "transient"]
-METHODS: tuple[str, ...] = ("periodic", "transient")
+METHODS: tuple[str, ...] = tuple(SOLUTION_METHODS)
 
 
 @dataclass(frozen=True)
@@ -165,8 +165,7 @@ def solver_for(dynamics, method: str | None = None) -> Solver:
     section's own): the exact periodic steady state or the transient from rest, of the linear mesh or of the mesh
     with backlash as ``[dynamics] mesh`` says."""
     method = method or dynamics.method
-    if method not in METHODS:
-        raise CaseError("method", method, " | ".join(METHODS), "unknown solution method")
+    solution_method(method, key="method")  # a CaseError for an unknown one (the registry of the names)
     return _SOLVERS[(dynamics.mesh, method)](dynamics)
 
 

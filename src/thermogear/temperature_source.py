@@ -66,18 +66,19 @@ def temperature_field_from_case(case: "Case") -> TemperatureField:
                                   "model is not registered (its module is not installed); use "
                                   "'uniform' or 'tabulated'")
         field = provider(case)
-    check_temperatures(field, gamma_start, gamma_end, _lubricant_data_maximum_c(case),
+    # the highest temperature of the lubricant's viscosity data [°C]: the case's viscosity points, else the fitted
+    # range of the case's oil (a built-in oil's data)
+    data_maximum_c = _viscosity_data_maximum_c(case.lubricant.viscosity_points)
+    if data_maximum_c is None:
+        from thermogear.lubricant import lubricant_from_case  # noqa: PLC0415
+
+        with warning_scope.ignored(ModelAssumptionWarning):  # the lubricant model reports its own assumptions
+            data_maximum_c = float(lubricant_from_case(case).fitted_range_c[1])
+    check_temperatures(field, gamma_start, gamma_end, data_maximum_c,
                        limits=thermal_model_rules(case.thermal.model).temperature_limits)
     return field
 
 
-def _lubricant_data_maximum_c(case: "Case") -> float | None:
-    """Highest temperature of the lubricant's viscosity data [°C]: the case's viscosity points, else the fitted
-    range of the case's oil (a built-in oil's data)."""
-    points = case.lubricant.viscosity_points
-    if points:
-        return float(max(temperature for temperature, _ in points))
-    from thermogear.lubricant import lubricant_from_case  # noqa: PLC0415
-
-    with warning_scope.ignored(ModelAssumptionWarning):  # the lubricant model reports its own assumptions
-        return float(lubricant_from_case(case).fitted_range_c[1])
+def _viscosity_data_maximum_c(points) -> float | None:
+    """Highest temperature of a case's own viscosity points [(°C, mm²/s)] [°C], None where it gives none."""
+    return float(max(temperature for temperature, _ in points)) if points else None

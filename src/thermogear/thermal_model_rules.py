@@ -65,4 +65,32 @@ def thermal_model_rules(name: str) -> ThermalModelRules:
         raise CaseError("thermal.model", name, " | ".join(THERMAL_MODEL_RULES), "no thermal model of this name") from None
 
 
-__all__ = ["LUO2020_RULES", "THERMAL_MODEL_RULES", "THERMOELASTIC_RULES", "ThermalModelRules", "thermal_model_rules"]
+@dataclass(frozen=True)
+class XTeSource:
+    """Where the X_te of a model that reads it comes from (``[thermal] x_te_source``): ``given`` — the case's
+    ``thermal.x_te``; ``calibrated`` — solved for the X_te that gives ``thermal.calibration_drop_percent`` at
+    ``thermal.calibration_point``; neither — computed by the provider of that name
+    (:data:`thermogear.composition.X_TE_PROVIDERS`, the finite-element analysis for ``"fem"``)."""
+
+    name: str
+    given: bool = False
+    calibrated: bool = False
+
+
+#: The sources of X_te per ``[thermal] x_te_source`` name (the schema's values, in its order): the one place the
+#: names are compared.
+X_TE_SOURCES: dict[str, XTeSource] = {source.name: source for source in (
+    XTeSource("given", given=True), XTeSource("calibrated", calibrated=True), XTeSource("fem"))}
+
+
+def x_te_source(name: str) -> XTeSource:
+    """The X_te source called ``name`` (``[thermal] x_te_source``)."""
+    try:
+        return X_TE_SOURCES[name]
+    except KeyError:
+        raise CaseError("thermal.x_te_source", name, " | ".join(X_TE_SOURCES),
+                        "no source of X_te of this name") from None
+
+
+__all__ = ["LUO2020_RULES", "THERMAL_MODEL_RULES", "THERMOELASTIC_RULES", "ThermalModelRules", "X_TE_SOURCES",
+           "XTeSource", "thermal_model_rules", "x_te_source"]

@@ -27,8 +27,14 @@ SOURCE = Path(__file__).resolve().parents[2] / "src" / "thermogear"
 #: branches, against this rule, and said so in its note: new resolvers (a train's stages, the mesh table file, the
 #: coupled heat of gearbox and drivetrain, the drivetrain's bearings for the loss model) and entry points
 #: (thermogear.run, thermogear.sweep, the gearbox grid on the executor). Issue 33 asks for at most 15 and stays open
-#: until it is brought down; bring it down, never up again.
-MAXIMUM_CASE_READERS = 49
+#: until it is brought down; bring it down, never up again. 36 (from 50) once the load-time checks take the sections
+#: they check (temperature field, X_te inputs, the model limits), the picture folder the [drivetrain] section, the
+#: drivetrain bearings' loads and losses the section, pair and material, the gearbox description its pieces (the case
+#: resolved once, by gearbox_model_from_case), the coupled heat's parts the gearbox model and sections, the mesh
+#: table's resolver is its own load-time check, the drivetrain's heat provider and the predicted-temperature model
+#: are looked up by their one resolver, and preflight is asked through the Orchestrator. 35 once main's study kinds
+#: (the warm-up kind and study_kind, merged at 38) pick a case's kind from its StudySubject, resolved once.
+MAXIMUM_CASE_READERS = 35
 
 
 def _takes_case(argument: ast.arg) -> bool:

@@ -18,6 +18,7 @@ from thermogear.drivetrain.bearing_clearance import (BEARING_STEEL_EXPANSION_PER
                                                      estimated_outer_raceway_diameter, operating_clearance,
                                                      radial_clearance_change)
 from thermogear.errors import CaseError
+from thermogear.gearbox.case_model import gearbox_model_from_case
 
 DATA = Path(__file__).resolve().parents[1] / "data" / "gearbox"
 COUPLED = DATA / "fzg_gearbox_drivetrain.toml"
@@ -71,9 +72,9 @@ def test_a_bearing_described_once_gives_its_stiffness_and_its_loss_at_the_static
     from thermogear.drivetrain.case_layout import drivetrain_from_section
     from thermogear.drivetrain.static_state import static_state
     from thermogear.gearbox.bearing_entries import rolling_bearing
-    from thermogear.gearbox.drivetrain_coupling import coupled_parts_from_case, operating_point_temperatures
+    from thermogear.gearbox.drivetrain_coupling import coupled_parts, operating_point_temperatures
 
-    parts = coupled_parts_from_case(coupled)
+    parts = coupled_parts(gearbox_model_from_case(coupled), coupled.gearbox, coupled.drivetrain)
     point = operating_point_temperatures(parts, 1400.0, 138.0)
     pair = coupled.gear_pair
     normal_force = 138.0 / pair.pinion.base_radius
@@ -103,7 +104,8 @@ def test_an_overhung_gear_loads_its_bearings_by_the_lever_rule():
 
     document = _document()
     document["drivetrain"]["pinion"]["position_mm"] = 75.0  # 3/4 of the span: bearings carry W/4 and 3W/4
-    loads = drivetrain_bearing_loads(_load(document))
+    case = _load(document)
+    loads = drivetrain_bearing_loads(case.drivetrain, case.gear_pair, case.material)
     assert loads["pinion bearing A"] == pytest.approx(0.25, rel=1e-6)
     assert loads["pinion bearing B"] == pytest.approx(0.75, rel=1e-6)
 
@@ -140,13 +142,15 @@ def test_the_skf_constants_give_the_designations_loss(coupled):
 
     document = _document()
     document["drivetrain"]["bearings"][1]["loss"] = {**_CONSTANTS, "drag_variable": 1.49e-4}
-    by_constants = {item.name: item.bearing for item in drivetrain_mounted_bearings(_load(document))}
-    by_designation = {item.name: item.bearing for item in drivetrain_mounted_bearings(coupled)}
+    case = _load(document)
+    by_constants = {item.name: item.bearing
+                    for item in drivetrain_mounted_bearings(case.drivetrain, case.gear_pair, case.material)}
+    by_designation = {item.name: item.bearing
+                      for item in drivetrain_mounted_bearings(coupled.drivetrain, coupled.gear_pair, coupled.material)}
     assert by_constants["pinion bearing B"] == by_designation["pinion bearing B"]
 
 
 def test_the_old_gearbox_bearings_stay_for_a_gearbox_without_drivetrain():
-    from thermogear.gearbox.case_model import gearbox_model_from_case
 
     document = _document()
     del document["drivetrain"]
@@ -159,18 +163,19 @@ def test_the_old_gearbox_bearings_stay_for_a_gearbox_without_drivetrain():
 # --- the coupled steady state ------------------------------------------------------------------------------------
 
 def test_the_coupled_steady_state_balances_to_a_nano_watt(coupled):
-    from thermogear.gearbox.drivetrain_coupling import coupled_parts_from_case, operating_point_temperatures
+    from thermogear.gearbox.drivetrain_coupling import coupled_parts, operating_point_temperatures
 
-    state = operating_point_temperatures(coupled_parts_from_case(coupled), 1400.0, 138.0).state
+    parts = coupled_parts(gearbox_model_from_case(coupled), coupled.gearbox, coupled.drivetrain)
+    state = operating_point_temperatures(parts, 1400.0, 138.0).state
     total = state.losses.total
     assert total > 100.0 and state.losses.bearings > 0.0
     assert abs(total - state.heat_out) < 1e-9  # W
 
 
 def test_each_operating_point_has_its_own_temperatures(coupled):
-    from thermogear.gearbox.drivetrain_coupling import coupled_parts_from_case, operating_point_temperatures
+    from thermogear.gearbox.drivetrain_coupling import coupled_parts, operating_point_temperatures
 
-    parts = coupled_parts_from_case(coupled)
+    parts = coupled_parts(gearbox_model_from_case(coupled), coupled.gearbox, coupled.drivetrain)
     slow = operating_point_temperatures(parts, 700.0, 138.0)
     fast = operating_point_temperatures(parts, 2100.0, 138.0)
     assert fast.state.pinion_shaft_c > slow.state.pinion_shaft_c + 1.0
@@ -230,14 +235,15 @@ def test_the_backlash_drivetrain_takes_the_hot_clearance():
 
 
 def test_a_changed_operating_point_predicts_its_own_drivetrain_temperatures(coupled):
-    from thermogear.gearbox.drivetrain_coupling import (coupled_parts_from_case, network_drivetrain_heat,
+    from thermogear.gearbox.drivetrain_coupling import (coupled_parts, network_drivetrain_heat,
                                                         operating_point_temperatures)
 
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         faster = coupled.with_changes(**{"operating.speed_rpm": 2100.0})
         heat = network_drivetrain_heat(faster)
-    expected = operating_point_temperatures(coupled_parts_from_case(coupled), 2100.0, 138.0).heat
+    parts = coupled_parts(gearbox_model_from_case(coupled), coupled.gearbox, coupled.drivetrain)
+    expected = operating_point_temperatures(parts, 2100.0, 138.0).heat
     assert heat.shaft_temperature_c == pytest.approx(expected.shaft_temperature_c, rel=1e-9)
     assert heat.shaft_temperature_c["wheel shaft"] > network_drivetrain_heat(coupled).shaft_temperature_c[
         "wheel shaft"] + 1.0

@@ -14,7 +14,7 @@ import thermogear.simulation  # noqa: F401  (the composition root registers the 
 from thermogear.case import case_from_document, load_case
 from thermogear.errors import CaseError
 from thermogear.gearbox.description import GearboxOperatingPoint
-from thermogear.gearbox.case_model import (gearbox_description_from_case, gearbox_model_from_case,
+from thermogear.gearbox.case_model import (gearbox_model_from_case,
                                            gearbox_operating_point, predicted_steady_state)
 from thermogear.temperature_source import temperature_field_from_case
 
@@ -108,7 +108,7 @@ def test_steady_state_memo_raises_its_warnings_again():
 
 
 def test_section_values_reach_the_description(case):
-    description = gearbox_description_from_case(case)
+    description = gearbox_model_from_case(case).description
     assert description.oil_volume == pytest.approx(1.25e-3, rel=1e-12)
     assert description.housing.length == pytest.approx(0.45, rel=1e-12)
     assert description.housing.expansion == pytest.approx(11.4e-6, rel=1e-12)  # cast iron, thermoelastic table

@@ -106,9 +106,9 @@ def test_friction_keys_checked_together(document):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         case = loaded(document, **{"gearbox.friction_model": "constant", "gearbox.friction_coefficient": 0.05})
-    from thermogear.gearbox.case_model import gearbox_description_from_case
+    from thermogear.gearbox.case_model import gearbox_model_from_case
 
-    assert gearbox_description_from_case(case).friction.name == "constant"
+    assert gearbox_model_from_case(case).description.friction.name == "constant"
     error = refusal(document, **{"gearbox.friction_model": "stribeck"})
     assert error.key == "gearbox.friction_model"
 

@@ -114,3 +114,40 @@ def test_the_scan_passes_what_the_seam_writes():
               'simulation = Simulation(case, "thermal")\n'
               'if THERMAL in models:\n    pass\n')
     assert model_name_branches(source) == []
+
+
+#: Where the solution methods (``[dynamics] method``) and the sources of X_te (``[thermal] x_te_source``) are resolved
+#: from their names (issue 33: no method chosen by comparing a string outside one registry).
+METHOD_REGISTRIES = ("dynamics/solution_methods.py", "thermal_model_rules.py")
+#: Comparisons with those names left on purpose: a response's kind (``metrics["response"]``: "periodic",
+#: "subharmonic", "non-periodic", "not settled") shares the word "periodic" with the method and is not a method.
+METHOD_KNOWN = {"report/evaluate.py": 1}
+
+
+def test_solution_methods_and_x_te_sources_are_compared_only_in_their_registries():
+    from thermogear.dynamics.solution_methods import SOLUTION_METHODS
+    from thermogear.thermal_model_rules import X_TE_SOURCES
+
+    names = frozenset(SOLUTION_METHODS) | frozenset(X_TE_SOURCES)
+    hits = {}
+    for path in sorted(SOURCE.rglob("*.py")):
+        relative = path.relative_to(SOURCE).as_posix()
+        found = [] if relative in METHOD_REGISTRIES else model_name_branches(path.read_text(encoding="utf-8"),
+                                                                              names, frozenset())
+        if len(found) > METHOD_KNOWN.get(relative, 0):
+            hits[relative] = found
+    assert not hits, hits
+    # the scan can fail: a comparison of a method's name is found
+    assert model_name_branches('if method == "transient": pass\n', names, frozenset())
+
+
+def test_the_schema_accepts_exactly_the_registered_methods_and_x_te_sources():
+    import typing
+
+    from thermogear.dynamics.solution_methods import SOLUTION_METHODS
+    from thermogear.schema.dynamics import DynamicsSection
+    from thermogear.schema.thermal import ThermalSection
+    from thermogear.thermal_model_rules import X_TE_SOURCES
+
+    assert typing.get_args(DynamicsSection.model_fields["method"].annotation) == tuple(SOLUTION_METHODS)
+    assert typing.get_args(ThermalSection.model_fields["x_te_source"].annotation) == tuple(X_TE_SOURCES)

@@ -170,3 +170,17 @@ def print_json(payload: dict[str, Any]) -> None:
 
     sys.stdout.write(json.dumps(json_ready(payload), indent=2) + "\n")
     sys.stdout.flush()
+
+
+def result_payload(result, plot, as_json: bool, save) -> dict[str, Any] | None:
+    """A study result's JSON (``result.as_dict()``) with its figure written to ``plot`` by ``save(figure, path)``
+    (the path added as ``"plot"``); printed on stdout and None with ``--json`` (the command is done), else returned
+    for the table."""
+    payload = result.as_dict()
+    if plot is not None:
+        save(result.plot(), plot)
+        payload["plot"] = str(plot)
+    if as_json:
+        print_json(payload)
+        return None
+    return payload

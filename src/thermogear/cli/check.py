@@ -21,11 +21,12 @@ def check(case: str = typer.Argument(..., metavar="CASE",
           as_json: bool = typer.Option(False, "--json", help="one JSON object on stdout")) -> None:
     """Validate a case and print its gear-pair geometry (exit status 2 with one clear message if it is invalid)."""
     from thermogear.load_capacity import load_flags
-    from thermogear.preflight import preflight
+    from thermogear.orchestrator import Orchestrator
 
     with shown_warnings() as shown:  # printed on stderr as they come, and listed in the JSON
         loaded = load_case(case)
-        preflight(loaded)  # what run builds before it solves (the hot backlash of the whole temperature field)
+        # what run builds before it solves (the hot backlash of the whole temperature field)
+        Orchestrator(loaded).preflight()
         _check_study_table(case, loaded.document.get("sweep"))
     pair = loaded.gear_pair
     payload = {

@@ -7,7 +7,7 @@ from pathlib import Path
 
 from rich.table import Table
 
-from thermogear.cli.app import console, print_json
+from thermogear.cli.app import console, print_json, result_payload
 
 
 def run_gearbox_warmup(base, duration_s: float, start_c: float | None, interval_s: float, gear_model: str,
@@ -20,12 +20,8 @@ def run_gearbox_warmup(base, duration_s: float, start_c: float | None, interval_
     result = gearbox_warmup(base, duration_s=duration_s, start_c=start_c, interval_s=interval_s,
                             gear_model=gear_model, dynamics=dynamics, speed_rpm=speed_rpm, torque=torque,
                             conditioning=conditioning)
-    payload = result.as_dict()
-    if plot is not None:
-        save(result.plot(), plot)
-        payload["plot"] = str(plot)
-    if as_json:
-        print_json(payload)
+    payload = result_payload(result, plot, as_json, save)
+    if payload is None:  # printed as JSON
         return
     history = result.history
     table = Table(title=f"predicted warm-up of {result.case_name} at {result.speed_rpm:g} rpm, {result.torque:g} N·m "

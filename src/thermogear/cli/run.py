@@ -88,7 +88,8 @@ def run(
     """Run the dynamics of a case and report Kv, loads, transmission error per region, frequencies and stability.
     Contact loss and instability are said in words (when, how long, how deep)."""
     from thermogear.case import load_case
-    from thermogear.preflight import preflight
+    from thermogear.dynamics.solution_methods import solution_method
+    from thermogear.orchestrator import Orchestrator
     from thermogear.report.evaluate import model_messages
     from thermogear.cli.check import shown_warnings
     from thermogear.cli.console import print_notes, step_progress
@@ -99,8 +100,8 @@ def run(
 
     if model not in _MODELS:
         raise CaseError("--model", model, "elastic | thermal | both", "unknown model")
-    if method is not None and method not in ("periodic", "transient"):
-        raise CaseError("--method", method, "periodic | transient", "unknown solution method")
+    if method is not None:
+        solution_method(method, key="--method")  # a CaseError for an unknown one
     if out is not None:
         from thermogear.ownership import check_output_folder
         from thermogear.report.writer import OutputFolder
@@ -116,14 +117,15 @@ def run(
     if multistart:
         from thermogear.cli.run_multistart import check_multistart
 
-        check_multistart(case, multistart, method, out)  # before any work
+        check_multistart(case.drivetrain, case.dynamics, multistart, method, out)  # before any work
     if plot is not None:
         from thermogear.cli.run_drivetrain import check_picture_folder
 
-        plot = check_picture_folder(plot, case, force)  # before any work
+        plot = check_picture_folder(plot, case.drivetrain, force)  # before any work
     models = _MODELS[model]
+    orchestrator = Orchestrator(case, models, method)
     with shown_warnings() as shown:  # every warning printed on stderr, for --json's "messages" (issue 36)
-        preflight(case, models, quiet=False, method=method)  # the checks `check` makes, before any output is written
+        orchestrator.preflight(quiet=False)  # the checks `check` makes, before any output is written
         if out is not None:
             from thermogear.report.build import build_report, report_steps
 
@@ -132,14 +134,11 @@ def run(
                 outcome = build_report(case, out, force=force, method=method, paper=False, progress=advance)
             results = outcome.evaluation.run_results(models)
         else:
-            from thermogear.orchestrator import Orchestrator
-
             steps = [f"{name} model" for name in models]
             if case.drivetrain is not None:
                 steps += [f"drivetrain, {name} model" for name in models]
             steps += [f"multi-start search, {name} model" for name in models] if multistart else []
             with step_progress(steps, quiet or as_json, error_console) as advance:
-                orchestrator = Orchestrator(case, models, method)
                 results = orchestrator.run(progress=advance)
                 if multistart:
                     from thermogear.cli.run_multistart import multistart_json

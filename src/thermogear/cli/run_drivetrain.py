@@ -149,15 +149,16 @@ def _found(model) -> str:
     return "yes" if model.stable else "yes (unstable)"
 
 
-def check_picture_folder(folder: Path, case, force: bool) -> Path:
-    """``run --plot FOLDER``, checked before any work: the case has a [drivetrain] (the pictures are of it), the
+def check_picture_folder(folder: Path, drivetrain, force: bool) -> Path:
+    """``run --plot FOLDER``, checked before any work: the case has a [drivetrain] (``drivetrain``, the section or
+    None; the pictures are of it), the
     folder can be written, and no picture file of the same name is there unless ``force`` (thermogear replaces only
     what it wrote: the files it would replace are its own names, and --force says to replace them)."""
     from thermogear.drivetrain.pictures import PICTURES
     from thermogear.errors import CaseError
     from thermogear.ownership import check_output_folder
 
-    if case.drivetrain is None:
+    if drivetrain is None:
         raise CaseError("--plot", str(folder), "a case with a [drivetrain] section",
                         "the pictures are of the drivetrain (layout, modes, Campbell, bearing forces); the pair's "
                         "own figures are in the report: run --out FOLDER")

@@ -17,25 +17,26 @@ from thermogear.errors import CaseError
 __all__ = ["check_multistart", "multistart_json", "print_multistart"]
 
 
-def check_multistart(case, starts: int, method: str, out) -> None:
+def check_multistart(drivetrain, dynamics, starts: int, method: str, out) -> None:
     """Refuse ``--multistart`` (CaseError naming the option, its value, what it needs and why) where it does not
-    apply (module docstring); nothing where ``starts`` is 0 (the option not given)."""
+    apply (module docstring) for a case's ``[drivetrain]`` and ``[dynamics]`` sections; nothing where ``starts`` is
+    0 (the option not given)."""
     if not starts:
         return
     from thermogear.dynamics.mesh_laws import mesh_law
 
-    if case.drivetrain is None:
+    if drivetrain is None:
         raise CaseError("--multistart", starts, "a case with a [drivetrain]",
                         "the search runs on the drivetrain's backlash orbit; the 1-DOF pair's orbits are searched "
                         "point by point by `thermogear sweep --multistart`")
-    if not mesh_law(case.dynamics.mesh).backlash:
+    if not mesh_law(dynamics.mesh).backlash:
         raise CaseError("--multistart", starts, 'dynamics.mesh = "nonlinear" (the backlash mesh)',
-                        f"with the {case.dynamics.mesh} mesh the drivetrain is a linear periodic system: it has one "
+                        f"with the {dynamics.mesh} mesh the drivetrain is a linear periodic system: it has one "
                         "periodic orbit, which every start reaches")
     if method != "periodic":
         raise CaseError("--multistart", starts, "--method periodic",
                         "the search lists periodic orbits; --method transient follows one motion from rest")
-    if case.drivetrain.stages:
+    if drivetrain.stages:
         raise CaseError("--multistart", starts, "a drivetrain of one mesh (no [[drivetrain.stages]])",
                         "the backlash orbit, and so its search, is solved for a single mesh")
     if out is not None:

@@ -64,7 +64,7 @@ def sweep(
     from thermogear.sweep.store import study_description
 
     from thermogear.ownership import check_figure_file, check_output_folder, exclusive_writer
-    from thermogear.preflight import preflight
+    from thermogear.orchestrator import Orchestrator
 
     check_output_folder(out, "--out")  # every output path before any work
     if plot is not None:
@@ -124,7 +124,7 @@ def sweep(
                             progress and not as_json, as_json)
             return
         # the case itself passes what check and run check; a study solves periodic steady states only
-        preflight(loaded, tuple(study.models), method="periodic")
+        Orchestrator(loaded, tuple(study.models), "periodic").preflight()
         if direction is not None and direction not in ("up", "down", "both"):
             raise CaseError("--direction", direction, "up | down | both",
                             "a branch is followed from the lowest speed up, from the highest down, or both")

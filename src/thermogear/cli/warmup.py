@@ -9,7 +9,7 @@ import typer
 from rich.table import Table
 
 from thermogear.case import load_case
-from thermogear.cli.app import app, console, print_json
+from thermogear.cli.app import app, console, result_payload
 from thermogear.errors import CaseError
 
 
@@ -106,12 +106,8 @@ def warmup(
 
             speed_rpm = history_speed_rpm(temperature_history)
     result = run_warmup(base, history, gear_model, speed_rpm, dynamics)
-    payload = result.as_dict()
-    if plot is not None:
-        _save(result.plot(), plot)
-        payload["plot"] = str(plot)
-    if as_json:
-        print_json(payload)
+    payload = result_payload(result, plot, as_json, _save)
+    if payload is None:  # printed as JSON
         return
     table = Table(title=f"warm-up of {result.case_name} at {result.speed_rpm:g} rpm ({result.model} model; "
                         f"{result.history_source})")
@@ -134,12 +130,7 @@ def _rig_comparison(case: str, gear_model: str, as_json: bool, plot: Path | None
     from thermogear.experiment.comparison import compare_with_rig
 
     comparison = compare_with_rig(case, gear_model)
-    payload = comparison.as_dict()
-    if plot is not None:
-        _save(comparison.plot(), plot)
-        payload["plot"] = str(plot)
-    if as_json:
-        print_json(payload)
+    if result_payload(comparison, plot, as_json, _save) is None:  # printed as JSON
         return
     console.print(f"{comparison.case_name} ({comparison.model} model) beside Luo & Li (2020) Table 3 / Fig. 18")
     console.print(comparison.markdown())

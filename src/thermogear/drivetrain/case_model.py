@@ -26,11 +26,11 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from thermogear.composition import DRIVETRAIN_HEAT, builtin
 from thermogear.dynamics.mesh_laws import mesh_law
 from thermogear.drivetrain.assembly import Drivetrain
 from thermogear.drivetrain.case_layout import drivetrain_from_section
 from thermogear.drivetrain.heat import ModeShifts, WarmState, thermal_mode_shifts, warm_drivetrain
-from thermogear.drivetrain.heat_source import drivetrain_heat_of
 from thermogear.drivetrain.stages import stage_train
 from thermogear.drivetrain.warm_state import operating_clearances, shaft_temperatures, with_clearances
 from thermogear.drivetrain.modes import DrivetrainModes, drivetrain_modes
@@ -222,9 +222,9 @@ def _mean_state(model: MeshModel, points: int) -> tuple[float, float]:
     return float(state.mean_mesh_stiffness), float(np.dot(state.mesh_damping, weights))
 
 
-def _helix(case) -> tuple[float, int]:
-    """(β_b [rad], the pinion's hand) of a case's pair: (0, +1) for a spur pair."""
-    helical = case.helical_pair
+def _helix(helical) -> tuple[float, int]:
+    """(β_b [rad], the pinion's hand) of a pair's :class:`~thermogear.helical.geometry.HelicalPair` (None: a spur
+    pair, (0, +1))."""
     return (0.0, 1) if helical is None else (helical.base_helix_angle, helical.pinion_hand)
 
 
@@ -241,7 +241,7 @@ def case_drivetrain(case, models: tuple[str, ...] = (ELASTIC, THERMAL)) -> CaseD
     cold_stages = tuple((stage.gear_pair, *_mean_state(model, points))
                         for stage, model in zip(case.stages, stage_models[ELASTIC]))
     cold = drivetrain_from_section(section, case.gear_pair, case.material, stiffness, damping, case.inertias,
-                                   cold_stages, tuple(_helix(item) for item in (case, *train.cases)))
+                                   cold_stages, tuple(_helix(item.helical_pair) for item in (case, *train.cases)))
     drivetrains = {ELASTIC: cold}
     notes: list[str] = []
     warm_moduli, warm_state = None, {}
@@ -261,7 +261,10 @@ def case_drivetrain(case, models: tuple[str, ...] = (ELASTIC, THERMAL)) -> CaseD
             tooth_c = MODULUS_REFERENCE_C if bulk is None else float(bulk)
             beta, geometry = MODULUS_TEMPERATURE_COEFFICIENTS_PER_K["carbon_steel"], {}
             expansion = 0.0  # the paper's model keeps the cold geometry
-        heat = drivetrain_heat_of(case)
+        # the temperatures the case's temperature model predicts for the drivetrain (its provider in
+        # composition.DRIVETRAIN_HEAT), or None where that model predicts none
+        provider = builtin(DRIVETRAIN_HEAT, case.temperature.model)
+        heat = None if provider is None else provider(case)
         temperatures, warm_state, note = shaft_temperatures(section, tooth_c, heat, thermoelastic is not None)
         notes += [note] if note else []
         stage_stiffness = tuple(_mean_state(model, points)[0] for model in stage_models[THERMAL])

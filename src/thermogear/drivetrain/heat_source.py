@@ -3,7 +3,8 @@
 temperatures as a :class:`DrivetrainHeat`.
 
 The provider is found by the temperature model's name in :data:`thermogear.composition.DRIVETRAIN_HEAT`
-(``provider(case) -> DrivetrainHeat``); a temperature model without one leaves the shafts at the default of
+(``provider(case) -> DrivetrainHeat``; looked up by the drivetrain's resolver,
+:func:`thermogear.drivetrain.case_model.case_drivetrain`); a temperature model without one leaves the shafts at the default of
 :mod:`thermogear.drivetrain.case_model` (each shaft's ``temperature_c``, else the gears' mean tooth temperature).
 """
 
@@ -12,10 +13,9 @@ from __future__ import annotations
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 
-from thermogear.composition import DRIVETRAIN_HEAT, builtin
 from thermogear.drivetrain.bearing_clearance import OperatingClearance, operating_clearance
 
-__all__ = ["BearingRings", "DrivetrainHeat", "drivetrain_heat_of"]
+__all__ = ["BearingRings", "DrivetrainHeat"]
 
 
 @dataclass(frozen=True)
@@ -49,10 +49,3 @@ class DrivetrainHeat:
         if rings is None or rings.outer_raceway_diameter is None:
             return None
         return operating_clearance(mounted, rings.outer_raceway_diameter, rings.inner_c, rings.outer_c)
-
-
-def drivetrain_heat_of(case) -> DrivetrainHeat | None:
-    """The temperatures the case's temperature model predicts for its drivetrain, or None where that model predicts
-    none (the provider of :data:`~thermogear.composition.DRIVETRAIN_HEAT` for ``case.temperature.model``)."""
-    provider = builtin(DRIVETRAIN_HEAT, case.temperature.model)
-    return None if provider is None else provider(case)

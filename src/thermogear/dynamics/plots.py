@@ -29,6 +29,16 @@ def _axes(ax: Any):
     return ax.figure, ax
 
 
+def _finished(figure, ax, xlabel: str, ylabel: str, legend_columns: int = 1):
+    """The figure with its axis labels, legend (in ``legend_columns`` columns) and grid: how the figures over time
+    and the phase portrait end."""
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.legend(fontsize="small", ncol=legend_columns)
+    ax.grid(True, alpha=0.3)
+    return figure
+
+
 def _series(response: Any, periods: int | None) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """(time, x, ẋ, interval) to draw: the history (or its last ``periods``) or the orbit repeated."""
     history = response.history
@@ -80,11 +90,7 @@ def plot_displacement(response: Any, other: Any = None, ax: Any = None, periods:
                                               static[np.concatenate([[interval[0]], interval[:-1]])])
         ax.plot(t_static * 1e3, static_values * 1e6, color=style["color"], linestyle=":", linewidth=1.0,
                 label=f"{_label(item, item.method)}: static TE")
-    ax.set_xlabel("time [ms]")
-    ax.set_ylabel("transmission error x [μm]")
-    ax.legend(fontsize="small")
-    ax.grid(True, alpha=0.3)
-    return figure
+    return _finished(figure, ax, "time [ms]", "transmission error x [μm]")
 
 
 def plot_phase(response: Any, other: Any = None, ax: Any = None, periods: int | None = None):
@@ -100,11 +106,7 @@ def plot_phase(response: Any, other: Any = None, ax: Any = None, periods: int | 
                 linestyle=style["linestyle"], label=f"{_label(item, item.method)}: steady orbit")
         static = item.problem.static_transmission_error
         ax.plot(static * 1e6, np.zeros_like(static), "o", color=style["color"], markersize=5)
-    ax.set_xlabel("transmission error x [μm]")
-    ax.set_ylabel("velocity ẋ [mm/s]")
-    ax.legend(fontsize="small")
-    ax.grid(True, alpha=0.3)
-    return figure
+    return _finished(figure, ax, "transmission error x [μm]", "velocity ẋ [mm/s]")
 
 
 def plot_velocity(response: Any, other: Any = None, ax: Any = None, periods: int | None = None):
@@ -113,11 +115,7 @@ def plot_velocity(response: Any, other: Any = None, ax: Any = None, periods: int
     for number, item in enumerate(_responses(response, other)):
         time, _, v, _ = _series(item, periods)
         ax.plot(time * 1e3, v * 1e3, label=_label(item, item.method), **MODEL_STYLES[number % 2])
-    ax.set_xlabel("time [ms]")
-    ax.set_ylabel("velocity ẋ [mm/s]")
-    ax.legend(fontsize="small")
-    ax.grid(True, alpha=0.3)
-    return figure
+    return _finished(figure, ax, "time [ms]", "velocity ẋ [mm/s]")
 
 
 def plot_loads(response: Any, other: Any = None, ax: Any = None, periods: int | None = None):
@@ -147,11 +145,7 @@ def plot_loads(response: Any, other: Any = None, ax: Any = None, periods: int | 
                 ax.plot(t_pair * 1e3, pairs[slot] * scale, linewidth=0.9, alpha=0.8, color=style["color"],
                         linestyle=(0, (3, 1 + slot)), label=f"{name}: pair {slot}")
         ax.axhline(problem.static_load * scale, color=style["color"], linestyle=":", linewidth=1.0)
-    ax.set_xlabel("time [ms]")
-    ax.set_ylabel("dynamic load per face width [N/mm]")
-    ax.legend(fontsize="small", ncol=2)
-    ax.grid(True, alpha=0.3)
-    return figure
+    return _finished(figure, ax, "time [ms]", "dynamic load per face width [N/mm]", legend_columns=2)
 
 
 def plot_spectrum(response: Any, quantity: str = "displacement", ax: Any = None, harmonics: int = 20):

@@ -33,7 +33,7 @@ from thermogear.gearbox.losses import NODES
 from thermogear.gearbox.model import COLDEST_START_C, GearboxThermalModel, WarmUpHistory
 from thermogear.schema.temperature import TemperatureSection
 from thermogear.temperature_limits import FLAG_MEANINGS, MATERIAL_MAXIMUM_C
-from thermogear.thermal_model_rules import thermal_model_rules
+from thermogear.thermal_model_rules import thermal_model_rules, x_te_source
 
 #: Longest warm-up accepted [s] (a day: the network's slowest time constants are hours at most).
 LONGEST_WARM_UP_S = 86400.0
@@ -147,7 +147,7 @@ def state_case(case, temperatures_c):
     changes: dict[str, Any] = dict(
         temperature=temperature, lubricant=case.lubricant.model_copy(update={"operating_temperature_c": oil}),
         housing=case.housing.model_copy(update=housing_update))
-    if thermal_model_rules(case.thermal.model).reads_x_te and case.thermal.x_te_source == "calibrated":
+    if thermal_model_rules(case.thermal.model).reads_x_te and x_te_source(case.thermal.x_te_source).calibrated:
         from thermogear.luo2020.case_stiffness import paper_thermal_model  # noqa: PLC0415
 
         x_te = paper_thermal_model(case).resolve_x_te()[0]

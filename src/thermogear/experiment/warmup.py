@@ -26,6 +26,7 @@ import numpy as np
 
 from thermogear.errors import CaseError
 from thermogear.schema.temperature import CASE_MAXIMUM_C, CASE_MINIMUM_C
+from thermogear.thermal_model_rules import x_te_source
 
 TIME_COLUMNS = {"time_s": 1.0, "time": 1.0, "t_s": 1.0, "time_min": 60.0, "minute": 60.0, "minutes": 60.0}
 TEMPERATURE_COLUMNS = ("temperature_c", "temperature", "temp_c")
@@ -215,7 +216,7 @@ def state_case(case, temperature_c: float, speed_rpm: float | None = None):
     # the whole [temperature] section is replaced: a uniform field takes no flank table, base or bore temperatures
     section = {"model": "uniform", "bulk_c": float(temperature_c), "reference_c": case.temperature.reference_c}
     changes: dict[str, Any] = {"temperature": section, "lubricant.operating_temperature_c": float(temperature_c)}
-    if pair_model_for(case, "thermal").uses_x_te and case.thermal.x_te_source == "calibrated":
+    if pair_model_for(case, "thermal").uses_x_te and x_te_source(case.thermal.x_te_source).calibrated:
         # the paper's X_te is calibrated once, at the case's own temperatures, and held through the warm-up: a
         # state near the assembly temperature has no thermal interference to calibrate against
         from thermogear.luo2020.case_stiffness import paper_thermal_model  # noqa: PLC0415

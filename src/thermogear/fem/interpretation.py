@@ -11,6 +11,7 @@ to a published drop reproduces that drop by construction; for any other pair the
 
 from __future__ import annotations
 
+from thermogear.thermal_model_rules import x_te_source
 from thermogear.thermoelastic.materials import MODULUS_TEMPERATURE_COEFFICIENTS_PER_K
 
 __all__ = ["fem_interpretation"]
@@ -35,7 +36,7 @@ def fem_interpretation(reference_c: float, thermal, summary: dict) -> dict:
         f"tooth's stiffness by at most {limit:.1f} %: the rest is the secant construction (it depends on the load and "
         "tends to 0 without load), not a softer tooth",
     ]
-    if thermal.x_te_source == "calibrated" and thermal.calibration_drop_percent is not None:
+    if x_te_source(thermal.x_te_source).calibrated and thermal.calibration_drop_percent is not None:
         notes.append(f"this case calibrates X_te to a {thermal.calibration_drop_percent:g} % drop at "
                      f"{thermal.calibration_point}: the paper's model reproduces that drop by construction, and the FE "
                      "X_te is a check of the calibration, not a prediction")

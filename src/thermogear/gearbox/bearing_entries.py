@@ -24,7 +24,9 @@ from thermogear.gearbox.bearing_loss import NJ406_CONSTANTS, RollingBearing
 from thermogear.gearbox.description import MountedBearing
 
 if TYPE_CHECKING:
-    from thermogear.case import Case
+    from thermogear.geometry import GearPair
+    from thermogear.materials import Material
+    from thermogear.schema import DrivetrainSection
 
 __all__ = ["BEARING_CONSTANTS", "BEARING_TYPES", "drivetrain_bearing_loads", "drivetrain_mounted_bearings",
            "mounted_bearing_power", "rolling_bearing", "shaft_sides"]
@@ -73,32 +75,33 @@ def shaft_sides(section) -> dict[str, bool]:
     return sides
 
 
-def drivetrain_bearing_loads(case: "Case") -> dict[str, float]:
-    """Radial force of each drivetrain bearing per newton of tooth normal load [N/N] in the static state (module
-    docstring): |(F_x, F_y)| of the bearing's force on the housing at W = 1 N."""
+def drivetrain_bearing_loads(section: "DrivetrainSection", pair: "GearPair", material: "Material") -> dict[str, float]:
+    """Radial force of each bearing of the ``[drivetrain]`` ``section`` per newton of tooth normal load [N/N] in the
+    static state (module docstring), the gears being the cold ``pair`` of ``material``: |(F_x, F_y)| of the
+    bearing's force on the housing at W = 1 N."""
     from thermogear.drivetrain.case_layout import drivetrain_from_section  # noqa: PLC0415
     from thermogear.drivetrain.static_state import static_state  # noqa: PLC0415
     from thermogear.stiffness.iso6336 import iso6336_mesh_stiffness, iso6336_single_stiffness  # noqa: PLC0415
 
-    pair, material = case.gear_pair, case.material
     pinion, wheel = pair.pinion, pair.wheel
     single = iso6336_single_stiffness(pinion.teeth, wheel.teeth, pinion.profile_shift, wheel.profile_shift,
                                       material.youngs_modulus, material.youngs_modulus, pinion.dedendum_coefficient,
                                       pinion.pressure_angle, warn=False)
     stiffness = iso6336_mesh_stiffness(single, pair.contact_ratio) * pair.face_width
-    drivetrain = drivetrain_from_section(case.drivetrain, pair, material, stiffness)
+    drivetrain = drivetrain_from_section(section, pair, material, stiffness)
     forces = static_state(drivetrain.assemble(), 1.0).bearing_forces
     return {name: float(np.hypot(force[0], force[1])) for name, force in forces.items()}
 
 
-def drivetrain_mounted_bearings(case: "Case") -> tuple[MountedBearing, ...]:
-    """The drivetrain bearings with loss data as bearings of the loss model (module docstring), by name; () for a
-    case without a ``[drivetrain]`` or without loss data on its bearings."""
-    section = case.drivetrain
+def drivetrain_mounted_bearings(section: "DrivetrainSection | None", pair: "GearPair",
+                                material: "Material") -> tuple[MountedBearing, ...]:
+    """The bearings of the ``[drivetrain]`` ``section`` with loss data as bearings of the loss model (module
+    docstring), by name, under the cold ``pair`` of ``material``; () for no section (None) or no loss data on its
+    bearings."""
     if section is None or not any(bearing.loss is not None for bearing in section.bearings):
         return ()
     sides = shaft_sides(section)
-    loads = drivetrain_bearing_loads(case)
+    loads = drivetrain_bearing_loads(section, pair, material)
     mounted = []
     for bearing in section.bearings:
         if bearing.loss is None:

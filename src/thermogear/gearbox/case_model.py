@@ -35,6 +35,10 @@ from thermogear.thermoelastic.materials import HOUSING_EXPANSION_PER_K
 
 if TYPE_CHECKING:
     from thermogear.case import Case
+    from thermogear.geometry import GearPair
+    from thermogear.lubricant import Lubricant
+    from thermogear.materials import Material
+    from thermogear.schema import DrivetrainSection, GearsSection, TemperatureSection
     from thermogear.schema.gearbox import GearboxSection
     from thermogear.schema.housing import HousingSection
     from thermogear.gearbox.model import GearboxSteadyState, GearboxThermalModel
@@ -58,7 +62,7 @@ def check_gearbox_section(case: "Case") -> None:
     Keeps the Case: it is a load-time check (``check(case)``, :data:`thermogear.composition.CASE_CHECKS`) that
     resolves the case's description."""
     if getattr(case, "gearbox", None) is not None:
-        gearbox_description_from_case(case)
+        gearbox_model_from_case(case)  # its description builds (memoised: every later stage asks for this one)
 
 
 def housing_expansion(housing: "HousingSection", gearbox: "GearboxSection | None") -> float:
@@ -97,20 +101,20 @@ def _bearings(section) -> tuple[MountedBearing, ...]:
     return tuple(mounted)
 
 
-def gearbox_description_from_case(case: "Case") -> GearboxDescription:
-    """The :class:`GearboxDescription` of a case with a ``[gearbox]`` section (module docstring).
-
-    Keeps the Case: it is the resolver that turns the case's sections into the description."""
-    from thermogear.lubricant import lubricant_from_case  # noqa: PLC0415
-
-    section = gearbox_section(case.gearbox)
-    pair, material = case.gear_pair, case.material
-    check_gearbox_inputs(section, pair, case.temperature)
+def gearbox_description(gearbox: "GearboxSection | None", pair: "GearPair", material: "Material",
+                        oil: "Lubricant", temperature: "TemperatureSection", housing: "HousingSection",
+                        gears_input: "GearsSection | None", drivetrain: "DrivetrainSection | None",
+                        roughness_ra: float) -> GearboxDescription:
+    """The :class:`GearboxDescription` (module docstring) of a ``[gearbox]`` section around the cold ``pair`` of
+    ``material``, lubricated by ``oil``, with the case's ``[temperature]`` (its assembly temperature), ``[housing]``,
+    ``[gears]`` (backlash), ``[drivetrain]`` (bearings with loss data) and composite roughness Ra [m]: the pieces
+    :func:`gearbox_model_from_case` resolves a case into."""
+    section = gearbox_section(gearbox)
+    check_gearbox_inputs(section, pair, temperature)
 
     def disc_mass(gear) -> float:
         return material.density * math.pi * (gear.tip_radius**2 - gear.bore_radius**2) * gear.face_width
 
-    oil = lubricant_from_case(case)
     injection = section.oil.lubrication == "injection"
     default_immersion = 0.0 if injection else pair.operating_pitch_radii[1]
     wheel_immersion = (default_immersion if section.oil.wheel_immersion_mm is None
@@ -122,20 +126,20 @@ def gearbox_description_from_case(case: "Case") -> GearboxDescription:
         if depth > 2.0 * gear.tip_radius:
             raise CaseError(f"gearbox.oil.{key}", round(depth * 1e3, 6), f"<= the tip diameter "
                             f"{2e3 * gear.tip_radius:.4g} mm", "a gear cannot dip deeper than it is tall")
-    backlash_um = None if case.gears_input is None else case.gears_input.backlash_normal_um
+    backlash_um = None if gears_input is None else gears_input.backlash_normal_um
     law = friction_law(section.friction_model)
     law.lubricant_factor(oil.base_oil, section.lubricant_factor)  # refuses a base oil the law has no X_L for
     conditioning = None if section.conditioning is None else OilConditioning(
         section.conditioning.setpoint_c, section.conditioning.heater_w, section.conditioning.cooling_w,
         section.conditioning.gain_w_per_k)
     return GearboxDescription(
-        gear_pair=pair, lubricant=oil, housing=_housing(section, housing_expansion(case.housing, section)),
+        gear_pair=pair, lubricant=oil, housing=_housing(section, housing_expansion(housing, section)),
         oil_volume=section.oil.volume_l * 1e-3,
         pinion_mass=disc_mass(pair.pinion), wheel_mass=disc_mass(pair.wheel), shaft_mass=section.shaft_mass_kg,
         wheel_immersion=wheel_immersion, pinion_immersion=section.oil.pinion_immersion_mm * 1e-3,
-        bearings=_bearings(section) + drivetrain_mounted_bearings(case),
+        bearings=_bearings(section) + drivetrain_mounted_bearings(drivetrain, pair, material),
         seals=tuple(LipSeal(seal.diameter_mm, seal.shaft == "wheel") for seal in section.seals),
-        roughness=case.roughness_ra, lubricant_factor=section.lubricant_factor, friction=law,
+        roughness=roughness_ra, lubricant_factor=section.lubricant_factor, friction=law,
         friction_constant=section.friction_coefficient, conditioning=conditioning,
         pinion_heat_share=section.pinion_heat_share, steel_specific_heat=material.specific_heat,
         steel_conductivity=material.thermal_conductivity,
@@ -145,7 +149,7 @@ def gearbox_description_from_case(case: "Case") -> GearboxDescription:
         gear_shaft_conductance=section.internal.gear_shaft_w_per_k,
         shaft_oil_conductance=section.internal.shaft_oil_w_per_k,
         shaft_housing_conductance=section.internal.shaft_housing_w_per_k,
-        backlash=None if backlash_um is None else backlash_um * 1e-6, assembly_c=case.temperature.reference_c,
+        backlash=None if backlash_um is None else backlash_um * 1e-6, assembly_c=temperature.reference_c,
         oil_jet=jet)
 
 
@@ -160,12 +164,16 @@ def gearbox_operating_point(operating: "OperatingPoint", gearbox: "GearboxSectio
 
 @cached_per_case
 def gearbox_model_from_case(case: "Case"):
-    """The :class:`~thermogear.gearbox.model.GearboxThermalModel` of a case (memoised per case).
+    """The :class:`~thermogear.gearbox.model.GearboxThermalModel` of a case with a ``[gearbox]`` section (memoised
+    per case; its ``description`` is the case's :class:`GearboxDescription`).
 
-    Keeps the Case: a resolver (the description of the case, built once)."""
+    Keeps the Case: the resolver that turns the case's sections into the gearbox's description, once."""
     from thermogear.gearbox.model import GearboxThermalModel  # noqa: PLC0415
+    from thermogear.lubricant import lubricant_from_case  # noqa: PLC0415
 
-    return GearboxThermalModel(gearbox_description_from_case(case))
+    return GearboxThermalModel(gearbox_description(case.gearbox, case.gear_pair, case.material,
+                                                   lubricant_from_case(case), case.temperature, case.housing,
+                                                   case.gears_input, case.drivetrain, case.roughness_ra))
 
 
 #: Steady states already solved, per thermal model (by identity: the model is built once per case and compares by

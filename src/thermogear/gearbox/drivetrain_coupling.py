@@ -16,8 +16,9 @@ The bearings' losses in that network come from the same bearings (:mod:`thermoge
 drivetrain bearing's loss data, loaded by its static force), so the two halves describe one gearbox.
 
 :func:`operating_point_temperatures` is the per-operating-point function: the resolved parts of a case
-(:func:`coupled_parts_from_case`, built once) and a pinion speed [rpm] and torque [N·m] give that point's own steady
-temperatures (every command and every study point computes its own, never the case's point reused).
+(:func:`coupled_parts` of the case's gearbox model and sections, built once) and a pinion speed [rpm] and torque
+[N·m] give that point's own steady temperatures (every command and every study point computes its own, never the
+case's point reused).
 """
 
 from __future__ import annotations
@@ -25,7 +26,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
-from thermogear.case import cached_per_case
 from thermogear.drivetrain.bearing_clearance import estimated_outer_raceway_diameter
 from thermogear.drivetrain.heat_source import BearingRings, DrivetrainHeat
 from thermogear.errors import CaseError
@@ -37,9 +37,10 @@ from thermogear.gearbox.losses import NODES
 
 if TYPE_CHECKING:
     from thermogear.case import Case
+    from thermogear.schema import DrivetrainSection, GearboxSection
     from thermogear.gearbox.model import GearboxSteadyState, GearboxThermalModel
 
-__all__ = ["CoupledThermalParts", "OperatingTemperatures", "coupled_parts_from_case", "network_drivetrain_heat",
+__all__ = ["CoupledThermalParts", "OperatingTemperatures", "coupled_parts", "network_drivetrain_heat",
            "operating_point_temperatures"]
 
 _MM = 1e-3
@@ -82,16 +83,15 @@ def _raceway(section) -> float | None:
     return estimated_outer_raceway_diameter(bearing.bore_mm, bearing.outside_mm) * _MM
 
 
-@cached_per_case
-def coupled_parts_from_case(case: "Case") -> CoupledThermalParts:
-    """The :class:`CoupledThermalParts` of a case with ``[gearbox]`` and ``[drivetrain]`` (memoised per case).
-
-    Keeps the Case: a resolver (the gearbox model and the drivetrain's names, built once)."""
-    section = case.drivetrain
+def coupled_parts(model: "GearboxThermalModel", gearbox: "GearboxSection | None",
+                  section: "DrivetrainSection | None") -> CoupledThermalParts:
+    """The :class:`CoupledThermalParts` of a case with ``[gearbox]`` and ``[drivetrain]``: its gearbox ``model``
+    (:func:`~thermogear.gearbox.case_model.gearbox_model_from_case`, memoised per case), its ``[gearbox]`` section
+    (the ambient) and its ``[drivetrain]`` ``section`` (the shafts' sides and bearings)."""
     if section is None:
         raise CaseError("drivetrain", None, "a [drivetrain] section", "the network's temperatures set a drivetrain")
     sides = shaft_sides(section)
-    return CoupledThermalParts(gearbox_model_from_case(case), gearbox_section(case.gearbox).ambient_c,
+    return CoupledThermalParts(model, gearbox_section(gearbox).ambient_c,
                                {shaft.name: sides.get(shaft.name) for shaft in section.shafts},
                                {bearing.name: _raceway(bearing) for bearing in section.bearings},
                                {bearing.name: bearing.shaft for bearing in section.bearings})
@@ -132,4 +132,5 @@ def network_drivetrain_heat(case: "Case") -> DrivetrainHeat:
 
     Keeps the Case: it is a drivetrain temperature provider (``provider(case) -> DrivetrainHeat``)."""
     operating = gearbox_operating_point(case.operating_point, case.gearbox)
-    return operating_point_temperatures(coupled_parts_from_case(case), operating.speed_rpm, operating.torque).heat
+    parts = coupled_parts(gearbox_model_from_case(case), case.gearbox, case.drivetrain)
+    return operating_point_temperatures(parts, operating.speed_rpm, operating.torque).heat

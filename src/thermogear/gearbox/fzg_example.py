@@ -37,8 +37,8 @@ def fzg_test_gearbox_case():
 def illustrative_fzg_gearbox(**changes) -> GearboxDescription:
     """The FZG test gearbox of the parameter set (module docstring); keyword arguments replace description
     fields."""
-    from thermogear.gearbox.case_model import gearbox_description_from_case  # noqa: PLC0415
+    from thermogear.gearbox.case_model import gearbox_model_from_case  # noqa: PLC0415
 
     case = fzg_test_gearbox_case()
-    description = replace(gearbox_description_from_case(case), notes=tuple(case.assumptions))
+    description = replace(gearbox_model_from_case(case).description, notes=tuple(case.assumptions))
     return replace(description, **changes) if changes else description

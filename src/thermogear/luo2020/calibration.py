@@ -23,6 +23,7 @@ from thermogear.stiffness.potential_energy import pair_compliance
 from thermogear.luo2020.case_inputs import PaperThermalInputs
 from thermogear.luo2020.stiffness import check_x_te
 from thermogear.temperature_source import TemperatureField
+from thermogear.thermal_model_rules import x_te_source
 
 if TYPE_CHECKING:
     from thermogear.case import Case
@@ -114,12 +115,13 @@ def section_x_te(section: "ThermalSection", inputs: PaperThermalInputs, temperat
     """(X_te, source label) from a ``[thermal]`` section: ``"given"``, ``"calibrated: X_te=… gives … % drop at …"``
     (solved by :func:`calibrate` in the field ``temperature()`` at ``normal_load`` [N], default the operating
     point's) or the provider's value ``provided()``. Raises CaseError for missing or contradictory keys."""
-    if section.x_te_source == "given":
+    source = x_te_source(section.x_te_source)
+    if source.given:
         if section.x_te is None:
             raise CaseError("thermal.x_te", None, ">= 0", "x_te_source = 'given' needs thermal.x_te")
         check_x_te(section.x_te)
         return float(section.x_te), "given"
-    if section.x_te_source == "calibrated":
+    if source.calibrated:
         if section.x_te is not None:
             raise CaseError("thermal.x_te", section.x_te, "absent with x_te_source = 'calibrated'",
                             "X_te is either given or calibrated; remove one of them")

@@ -147,19 +147,15 @@ def read_mesh_table(name: str, directory: Path | None = None) -> MeshTable:
     return MeshTable(phase, stiffness, damping, arrays.get("deviation"), name)
 
 
-def mesh_table_of(case) -> MeshTable | None:
-    """The case's mesh table (read once per case), None where ``dynamics.mesh_table`` is not set."""
-    name = getattr(case.dynamics, "mesh_table", None)
-    if name is None:
-        return None
-    return _cached_table(case)
-
-
 @cached_per_case
-def _cached_table(case) -> MeshTable:
-    return read_mesh_table(case.dynamics.mesh_table, case.directory)
+def mesh_table_of(case) -> MeshTable | None:
+    """The case's mesh table (read once per case), None where ``dynamics.mesh_table`` is not set.
+
+    It is also the load-time check of that table (:data:`thermogear.composition.CASE_CHECKS`: every command runs
+    it, check = run): reading the file is what checks it, and the table read then is the one the mesh model uses."""
+    name = getattr(case.dynamics, "mesh_table", None)
+    return None if name is None else read_mesh_table(name, case.directory)
 
 
-def check_mesh_table(case) -> None:
-    """Load-time check of the case's mesh table (every command runs it: check = run)."""
-    mesh_table_of(case)
+#: The load-time check of the case's mesh table: the resolver itself (reading the table checks it).
+check_mesh_table = mesh_table_of

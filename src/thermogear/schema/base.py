@@ -11,6 +11,7 @@ from __future__ import annotations
 import numbers
 import types
 import typing
+from collections.abc import Callable
 from typing import Any, Literal
 
 from pydantic import BaseModel, ConfigDict, model_validator
@@ -49,28 +50,26 @@ def _leaf_kinds(annotation: Any) -> set[str]:
     return {"any"}
 
 
-def _items_annotation(annotation: Any) -> list[Any]:
-    """Annotations of the items of the list/tuple members of a field annotation."""
+def _member_annotations(annotation: Any, members: Callable[[Any, tuple], list[Any]]) -> list[Any]:
+    """``members(origin, arguments)`` of each plain annotation inside a field annotation (through ``Annotated`` and
+    unions)."""
     origin = typing.get_origin(annotation)
     if origin is typing.Annotated:
-        return _items_annotation(typing.get_args(annotation)[0])
+        return _member_annotations(typing.get_args(annotation)[0], members)
     if origin in (typing.Union, types.UnionType):
-        return [item for argument in typing.get_args(annotation) for item in _items_annotation(argument)]
-    if origin in (list, tuple):
-        return [argument for argument in typing.get_args(annotation) if argument is not Ellipsis]
-    return []
+        return [item for argument in typing.get_args(annotation) for item in _member_annotations(argument, members)]
+    return members(origin, typing.get_args(annotation))
+
+
+def _items_annotation(annotation: Any) -> list[Any]:
+    """Annotations of the items of the list/tuple members of a field annotation."""
+    return _member_annotations(annotation, lambda origin, arguments: [
+        argument for argument in arguments if argument is not Ellipsis] if origin in (list, tuple) else [])
 
 
 def _dict_value_annotations(annotation: Any) -> list[Any]:
     """Annotations of the values of the plain ``dict[str, X]`` members of a field annotation (not sections)."""
-    origin = typing.get_origin(annotation)
-    if origin is typing.Annotated:
-        return _dict_value_annotations(typing.get_args(annotation)[0])
-    if origin in (typing.Union, types.UnionType):
-        return [item for argument in typing.get_args(annotation) for item in _dict_value_annotations(argument)]
-    if origin is dict:
-        return list(typing.get_args(annotation)[1:2])
-    return []
+    return _member_annotations(annotation, lambda origin, arguments: list(arguments[1:2]) if origin is dict else [])
 
 
 def strict_type_problem(value: Any, annotation: Any) -> str | None:

@@ -6,6 +6,7 @@ from typing import Annotated, Literal
 
 from pydantic import Field, model_validator
 
+from thermogear.dynamics.solution_methods import solution_method
 from thermogear.errors import CaseError
 
 from thermogear.schema.base import Section
@@ -97,7 +98,7 @@ class DynamicsSection(Section):
     @model_validator(mode="after")
     def _transient_memory(self):
         samples = self.transient_periods * self.points_per_period
-        if self.method == "transient" and samples > MAX_TRANSIENT_SAMPLES:
+        if solution_method(self.method).from_rest and samples > MAX_TRANSIENT_SAMPLES:
             raise CaseError("dynamics.transient_periods", self.transient_periods,
                             f"<= {MAX_TRANSIENT_SAMPLES // self.points_per_period} with points_per_period = "
                             f"{self.points_per_period}", f"the transient keeps every sample (about 1 kB each): "

@@ -18,12 +18,26 @@ from typing import Any
 from thermogear.errors import CaseError
 from thermogear.dynamics.mesh_laws import mesh_law
 
-__all__ = ["STUDY_KINDS", "StudyKind", "study", "study_kind"]
+__all__ = ["STUDY_KINDS", "StudyKind", "StudySubject", "study", "study_kind"]
+
+
+@dataclass(frozen=True)
+class StudySubject:
+    """What picks a case's kind of study, resolved once from the case (:meth:`of`): whether it has a
+    ``[drivetrain]``, whether its mesh has the backlash dead zone, whether it has a ``[gearbox]``."""
+
+    drivetrain: bool
+    backlash: bool
+    gearbox: bool
+
+    @classmethod
+    def of(cls, case) -> "StudySubject":
+        return cls(case.drivetrain is not None, mesh_law(case.dynamics.mesh).backlash, case.gearbox is not None)
 
 
 @dataclass(frozen=True)
 class StudyKind:
-    """A kind of study: ``name``, ``accepts(case, method)``, ``run(study, out, options)`` → Dataset,
+    """A kind of study: ``name``, ``accepts(subject, method)`` (a :class:`StudySubject`), ``run(study, out, options)`` → Dataset,
     ``by_case`` (picked from the case when no kind is named; False: only when named, e.g. the warm-ups of a gearbox
     case, whose case also has a steady study), ``needs`` (what ``accepts`` asks of the case, for the refusal) and
     ``default_model`` (the gear model when none is given)."""
@@ -86,11 +100,10 @@ def _refuse(options: dict, kind: str, **defaults) -> None:
 
 #: The kinds of study, tried in order (those picked by the case), or named.
 STUDY_KINDS: tuple[StudyKind, ...] = (
-    StudyKind("drivetrain", lambda case, method: case.drivetrain is not None, _run_drivetrain),
-    StudyKind("branches", lambda case, method: mesh_law(case.dynamics.mesh).backlash and method == "batch",
-              _run_branches),
-    StudyKind("grid", lambda case, method: True, _run_grid),
-    StudyKind("warmup", lambda case, method: case.gearbox is not None, _run_warmups, by_case=False,
+    StudyKind("drivetrain", lambda subject, method: subject.drivetrain, _run_drivetrain),
+    StudyKind("branches", lambda subject, method: subject.backlash and method == "batch", _run_branches),
+    StudyKind("grid", lambda subject, method: True, _run_grid),
+    StudyKind("warmup", lambda subject, method: subject.gearbox, _run_warmups, by_case=False,
               needs="a case with a [gearbox] (the thermal network the warm-up integrates)", default_model="thermal"),
 )
 
@@ -98,7 +111,8 @@ STUDY_KINDS: tuple[StudyKind, ...] = (
 def study_kind(case, method: str = "batch", name: str | None = None) -> StudyKind:
     """The kind of study of ``case``: the first of :data:`STUDY_KINDS` picked by the case that accepts it, or the
     kind ``name`` (refused where it does not accept the case, or where the case picks another kind of its own)."""
-    automatic = next(kind for kind in STUDY_KINDS if kind.by_case and kind.accepts(case, method))
+    subject = StudySubject.of(case)
+    automatic = next(kind for kind in STUDY_KINDS if kind.by_case and kind.accepts(subject, method))
     if name is None:
         return automatic
     kinds = {kind.name: kind for kind in STUDY_KINDS}
@@ -109,7 +123,7 @@ def study_kind(case, method: str = "batch", name: str | None = None) -> StudyKin
         raise CaseError("kind", name, f"{automatic.name} (or a kind named only: "
                         f"{', '.join(kind.name for kind in STUDY_KINDS if not kind.by_case)})",
                         f"this case's study is the {automatic.name} study")
-    if not chosen.accepts(case, method):
+    if not chosen.accepts(subject, method):
         raise CaseError("kind", name, chosen.needs or "a case this kind accepts", f"the {name} study needs it")
     return chosen
 
