@@ -205,15 +205,21 @@ def grouped_pieces(system: PiecewiseLinearSystem, samples: int,
     return group_rows(np.column_stack([widths, factor_k, factor_c, factor_f]), tolerance)
 
 
-def _exponentials(system: PiecewiseLinearSystem, distinct: np.ndarray) -> np.ndarray:
+def _exponentials(system: PiecewiseLinearSystem, distinct: np.ndarray,
+                  operators: tuple[np.ndarray, np.ndarray] | None = None) -> np.ndarray:
     """(D, 2n+1, 2n+1) exponentials e^{A_j h_j} of the augmented pieces whose rows (h_j, k_j, c_j, g_j) are
-    ``distinct`` (:func:`grouped_pieces`; the routes: :func:`_piece_steps`)."""
+    ``distinct`` (:func:`grouped_pieces`; the routes: :func:`_piece_steps`). ``operators``: the system's
+    (M⁻¹, pattern range) of :func:`_piece_operators` where several calls on one system share them (the chunks)."""
     from thermogear.dynamics.batched_exponential import batched_expm, expm_of_rank_updates
 
-    inverse = _mass_inverse(system)
-    pattern_k, pattern_c, pattern_f = system.stacked()[:3]
     n = system.size
-    range_basis = _pattern_range(system) if distinct.shape[0] >= _RANK_ROUTE_PIECES else np.zeros((n, 0))
+    if operators is None:
+        inverse = _mass_inverse(system)
+        range_basis = _pattern_range(system) if distinct.shape[0] >= _RANK_ROUTE_PIECES else np.zeros((n, 0))
+    else:
+        inverse = operators[0]
+        range_basis = operators[1] if distinct.shape[0] >= _RANK_ROUTE_PIECES else np.zeros((n, 0))
+    pattern_k, pattern_c, pattern_f = system.stacked()[:3]
     rank = range_basis.shape[1]
     if distinct.shape[0] < _RANK_ROUTE_PIECES or rank == 0 or rank * _RANK_ROUTE_RATIO > 2 * n + 1:
         stack = _with_factors(system, distinct).augmented_stack(inverse) * distinct[:, :1, None]
@@ -293,6 +299,12 @@ def _pattern_range(system: PiecewiseLinearSystem) -> np.ndarray:
     if values.size == 0 or values[0] == 0.0:
         return np.zeros((system.size, 0))
     return vectors[:, values > 1e-13 * values[0]]
+
+
+def _piece_operators(system: PiecewiseLinearSystem) -> tuple[np.ndarray, np.ndarray]:
+    """(M⁻¹, the orthonormal range of the patterns) of ``system``: what every call of :func:`_exponentials` on it
+    forms first, once for all its chunks (the same numbers as each call forming them)."""
+    return _mass_inverse(system), _pattern_range(system)
 
 
 def _power(matrices: np.ndarray, count: int) -> np.ndarray:
@@ -388,11 +400,12 @@ def chunked_exponentials(system: PiecewiseLinearSystem, rows: np.ndarray, where:
     piece of a chunk exponentiated once) over ``multiple`` times their width (the sub-step count: each piece's whole
     transition e^{A_j h_j}, formed directly, not as a power of the sub-step one). No stack of all the pieces is held."""
     chunk_pieces = max(1, CHUNK_BYTES // (8 * (2 * system.size + 1) ** 2))
+    operators = _piece_operators(system)  # once, not per chunk
     for first in range(0, where.size, chunk_pieces):
         unique, inverse = np.unique(where[first:first + chunk_pieces], return_inverse=True)
         chunk = rows[unique]
         chunk[:, 0] *= multiple
-        yield first, _exponentials(system, chunk)[inverse.ravel()]
+        yield first, _exponentials(system, chunk, operators)[inverse.ravel()]
 
 
 def _by_chunks(system: PiecewiseLinearSystem, rows: np.ndarray, where: np.ndarray,
