@@ -367,11 +367,15 @@ def monodromy(system: PiecewiseLinearSystem,
 
 
 def periodic_response(system: PiecewiseLinearSystem, samples_per_piece: int = 16,
-                      piece_tolerance: float = PIECE_TOLERANCE) -> PeriodicResponse:
+                      piece_tolerance: float = PIECE_TOLERANCE, observer=None) -> PeriodicResponse:
     """The exact periodic steady state, sampled at ``samples_per_piece`` equal steps per piece.
 
     ``piece_tolerance`` ε: pieces whose (h_j, k_j, c_j, g_j) agree within ε of each column's largest magnitude share
     one exponential (:mod:`~thermogear.dynamics.piece_groups` bounds the effect; 0: bit-identical pieces only).
+    ``observer``: called as observer(first piece, sub-step exponentials) with each chunk of
+    :func:`chunked_exponentials` (default grouping) where the solve forms them chunk by chunk (the large systems'
+    route, ``_by_chunks``), e.g. to prepare the motion from rest on the same pass
+    (:class:`~thermogear.dynamics.periodic_motion.MotionProjector`); on the other routes it is not called.
 
     Raises ModelLimitError when a Floquet multiplier has modulus >= 1 (parametric instability, an undamped mode or
     a rigid-body mode left in the system): there is then no attracting periodic orbit.
@@ -390,7 +394,7 @@ def periodic_response(system: PiecewiseLinearSystem, samples_per_piece: int = 16
     if 4 * starts.size <= where.size or size > RUN_ROUTE_SIZE:
         return PeriodicResponse(*by_runs(system, _exponentials(system, rows), where, starts, samples))
     if rows.shape[0] * size**2 * 8 > LEAN_ROUTE_BYTES:
-        return _by_chunks(system, rows, where, samples)
+        return _by_chunks(system, rows, where, samples, observer)
     return _by_blocks(system, _exponentials(system, rows), where, samples)
 
 
@@ -409,7 +413,7 @@ def chunked_exponentials(system: PiecewiseLinearSystem, rows: np.ndarray, where:
 
 
 def _by_chunks(system: PiecewiseLinearSystem, rows: np.ndarray, where: np.ndarray,
-               samples: int) -> PeriodicResponse:
+               samples: int, observer=None) -> PeriodicResponse:
     """:func:`periodic_response` where a stack of every distinct piece's matrix would be large (above
     :data:`LEAN_ROUTE_BYTES`): the monodromy as the product of the chunks' ordered products of the whole pieces'
     transitions (:func:`chunked_exponentials`: the same N − 1 products as the block route's tree), then the orbit's
@@ -424,7 +428,9 @@ def _by_chunks(system: PiecewiseLinearSystem, rows: np.ndarray, where: np.ndarra
     n, pieces = system.size, where.size
     states = np.empty((pieces * samples + 1, 2 * n + 1))
     state, row = np.append(initial, 1.0), 0
-    for _, steps in chunked_exponentials(system, rows, where):
+    for first, steps in chunked_exponentials(system, rows, where):
+        if observer is not None:
+            observer(first, steps)
         for step in steps:
             for _ in range(samples):
                 states[row] = state
