@@ -208,17 +208,13 @@ def grouped_pieces(system: PiecewiseLinearSystem, samples: int,
 def _exponentials(system: PiecewiseLinearSystem, distinct: np.ndarray,
                   operators: tuple[np.ndarray, np.ndarray] | None = None) -> np.ndarray:
     """(D, 2n+1, 2n+1) exponentials e^{A_j h_j} of the augmented pieces whose rows (h_j, k_j, c_j, g_j) are
-    ``distinct`` (:func:`grouped_pieces`; the routes: :func:`_piece_steps`). ``operators``: the system's
-    (M⁻¹, pattern range) of :func:`_piece_operators` where several calls on one system share them (the chunks)."""
+    ``distinct`` (:func:`grouped_pieces`; the routes: :func:`_piece_steps`); ``operators`` (M⁻¹, the patterns' range)."""
     from thermogear.dynamics.batched_exponential import batched_expm, expm_of_rank_updates
 
     n = system.size
-    if operators is None:
-        inverse = _mass_inverse(system)
-        range_basis = _pattern_range(system) if distinct.shape[0] >= _RANK_ROUTE_PIECES else np.zeros((n, 0))
-    else:
-        inverse = operators[0]
-        range_basis = operators[1] if distinct.shape[0] >= _RANK_ROUTE_PIECES else np.zeros((n, 0))
+    inverse, full_range = operators or (_mass_inverse(system), None)
+    range_basis = np.zeros((n, 0)) if distinct.shape[0] < _RANK_ROUTE_PIECES \
+        else (_pattern_range(system) if full_range is None else full_range)
     pattern_k, pattern_c, pattern_f = system.stacked()[:3]
     rank = range_basis.shape[1]
     if distinct.shape[0] < _RANK_ROUTE_PIECES or rank == 0 or rank * _RANK_ROUTE_RATIO > 2 * n + 1:
@@ -301,12 +297,6 @@ def _pattern_range(system: PiecewiseLinearSystem) -> np.ndarray:
     return vectors[:, values > 1e-13 * values[0]]
 
 
-def _piece_operators(system: PiecewiseLinearSystem) -> tuple[np.ndarray, np.ndarray]:
-    """(M⁻¹, the orthonormal range of the patterns) of ``system``: what every call of :func:`_exponentials` on it
-    forms first, once for all its chunks (the same numbers as each call forming them)."""
-    return _mass_inverse(system), _pattern_range(system)
-
-
 def _power(matrices: np.ndarray, count: int) -> np.ndarray:
     return matrices if count == 1 else np.linalg.matrix_power(matrices, count)
 
@@ -372,10 +362,8 @@ def periodic_response(system: PiecewiseLinearSystem, samples_per_piece: int = 16
 
     ``piece_tolerance`` ε: pieces whose (h_j, k_j, c_j, g_j) agree within ε of each column's largest magnitude share
     one exponential (:mod:`~thermogear.dynamics.piece_groups` bounds the effect; 0: bit-identical pieces only).
-    ``observer``: called as observer(first piece, sub-step exponentials) with each chunk of
-    :func:`chunked_exponentials` (default grouping) where the solve forms them chunk by chunk (the large systems'
-    route, ``_by_chunks``), e.g. to prepare the motion from rest on the same pass
-    (:class:`~thermogear.dynamics.periodic_motion.MotionProjector`); on the other routes it is not called.
+    ``observer``(first piece, sub-step exponentials): fed each chunk where the solve forms them chunk by chunk
+    (``_by_chunks``; :class:`~thermogear.dynamics.periodic_motion.MotionProjector`), else never called.
 
     Raises ModelLimitError when a Floquet multiplier has modulus >= 1 (parametric instability, an undamped mode or
     a rigid-body mode left in the system): there is then no attracting periodic orbit.
@@ -404,7 +392,7 @@ def chunked_exponentials(system: PiecewiseLinearSystem, rows: np.ndarray, where:
     piece of a chunk exponentiated once) over ``multiple`` times their width (the sub-step count: each piece's whole
     transition e^{A_j h_j}, formed directly, not as a power of the sub-step one). No stack of all the pieces is held."""
     chunk_pieces = max(1, CHUNK_BYTES // (8 * (2 * system.size + 1) ** 2))
-    operators = _piece_operators(system)  # once, not per chunk
+    operators = (_mass_inverse(system), _pattern_range(system))  # once for every chunk, not per chunk
     for first in range(0, where.size, chunk_pieces):
         unique, inverse = np.unique(where[first:first + chunk_pieces], return_inverse=True)
         chunk = rows[unique]
