@@ -148,3 +148,23 @@ def test_an_odd_crossing_count_refines_the_substeps_or_fails(monkeypatch, odd_be
     assert (orbit.failure == "") == converged
     if not converged:
         assert "odd number of times" in orbit.failure and "('mesh', 0)" in orbit.failure and not orbit.stable
+
+
+def test_the_start_up_check_takes_the_motion_prepared_on_the_orbit_s_pass(monkeypatch):
+    # the switch-free orbit's solve (chunked route) prepares the start-up check's motion when asked: the check then
+    # runs no pass of its own and decides as with its own pass (the motion from rest stays in driving contact)
+    import thermogear.dynamics.backlash_orbits_ndof as orbits
+    import thermogear.dynamics.periodic_ndof as periodic
+    from thermogear.dynamics.backlash_ndof import STARTUP_MOTION, WATCH_STARTUP
+
+    linear = _chain()
+    system = BacklashSystem(linear, linear.force_pattern, np.zeros(2), backlash=1e-5)
+    monkeypatch.setattr(periodic, "LEAN_ROUTE_BYTES", 0)
+    own = orbits.startup_orbit(system, backlash_periodic_orbit(system, substeps=8), 5, 8)
+    cache = {WATCH_STARTUP: True}
+    orbit = backlash_periodic_orbit(system, substeps=8, cache=cache)
+    assert (STARTUP_MOTION, 8) in cache
+    monkeypatch.setattr(orbits, "motion_projections", lambda *arguments: pytest.fail("a pass of its own"))
+    shared = orbits.startup_orbit(system, orbit, 5, 8, cache=cache)
+    assert own.same and not own.left_contact_state
+    assert shared.same and not shared.left_contact_state

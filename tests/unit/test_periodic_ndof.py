@@ -205,3 +205,30 @@ def test_motion_projections_from_the_orbit_stay_on_it(monkeypatch):
     for period in range(3):
         block = values[period * expected.shape[0]:(period + 1) * expected.shape[0]]
         assert np.abs(block - expected).max() < 1e-10 * scale
+
+
+def test_motion_prepared_on_the_orbits_pass_equals_its_own_pass(monkeypatch):
+    # the start-up check's motion prepared on the periodic solve's pass of sub-step exponentials (its observer, on
+    # the chunked route) is the motion of motion_projections' own pass bit for bit (the same chunks, the same
+    # transitions in the same order); on a route that forms no chunks the projector is fed nothing and says so
+    import thermogear.dynamics.periodic_ndof as periodic
+    from thermogear.dynamics.periodic_motion import MotionProjector, motion_projections
+
+    system = _many_pieces(None)
+    samples = 2
+    monkeypatch.setattr(periodic, "LEAN_ROUTE_BYTES", 0)
+    monkeypatch.setattr(periodic, "CHUNK_BYTES", 7 * 8 * (2 * system.size + 1) ** 2)
+    rows = np.zeros((2, 2 * system.size))
+    rows[0, 0], rows[1, system.size + 3] = 1.0, 1.0
+    projector = MotionProjector(system, samples, rows)
+    observed = periodic_response(system, samples_per_piece=samples, observer=projector.add)
+    assert projector.complete
+    rest = np.zeros(2 * system.size)
+    assert np.array_equal(projector.projections(rest, 4), motion_projections(system, rest, 4, samples, rows))
+    monkeypatch.setattr(periodic, "LEAN_ROUTE_BYTES", 2**62)
+    unfed = MotionProjector(system, samples, rows)
+    plain = periodic_response(system, samples_per_piece=samples, observer=unfed.add)
+    assert not unfed.complete
+    with pytest.raises(ProblemError, match="pieces"):
+        unfed.projections(rest, 1)
+    assert np.allclose(plain.displacement, observed.displacement, rtol=0.0, atol=1e-9 * np.abs(plain.displacement).max())

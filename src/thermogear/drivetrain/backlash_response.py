@@ -35,8 +35,8 @@ from thermogear.dynamics.metrics import dynamic_factor
 from thermogear.drivetrain.assembly import AssembledDrivetrain
 from thermogear.drivetrain.response import bearing_force_spectrum, bearing_forces, drivetrain_backlash_system
 from thermogear.drivetrain.static_state import bearing_moments
-from thermogear.dynamics.backlash_ndof import (BACK_CONTACT, DRIVING_CONTACT, FREE_FLIGHT, BacklashSystem, DeadZone,
-                                               backlash_periodic_orbit)
+from thermogear.dynamics.backlash_ndof import (BACK_CONTACT, DRIVING_CONTACT, FREE_FLIGHT, WATCH_STARTUP,
+                                               BacklashSystem, DeadZone, backlash_periodic_orbit)
 from thermogear.dynamics.backlash_orbits_ndof import StartupOrbit, startup_orbit
 from thermogear.dynamics.backlash_trajectory import BacklashTrajectory, backlash_trajectory
 from thermogear.dynamics.metrics import sampled_load
@@ -171,6 +171,8 @@ def drivetrain_backlash_response(assembled: AssembledDrivetrain, state: MeshStat
     recovered: tuple[str, ...] = ()
     try:
         cache: dict = {}  # the pieces' exponentials, computed by the shooting and reused by the sampling
+        if startup_periods is not None:  # the switch-free orbit's solve also prepares the start-up check's motion
+            cache[WATCH_STARTUP] = True
         with one_blas_thread():
             orbit = backlash_periodic_orbit(system, initial_state, substeps, tolerance, cache=cache)
             startup = None

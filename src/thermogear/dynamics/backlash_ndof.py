@@ -33,7 +33,7 @@ from thermogear.dynamics.periodic_ndof import PiecewiseLinearSystem, periodic_re
 from thermogear.dynamics.problem import checked_array
 from thermogear.errors import ModelLimitError, ProblemError
 
-__all__ = ["BACK_CONTACT", "DRIVING_CONTACT", "FREE_FLIGHT", "BacklashSystem", "BacklashOrbitNDOF", "DeadZone",
+__all__ = ["BACK_CONTACT", "DRIVING_CONTACT", "FREE_FLIGHT", "STARTUP_MOTION", "WATCH_STARTUP", "BacklashSystem", "BacklashOrbitNDOF", "DeadZone",
            "backlash_flow_ndof", "backlash_periodic_orbit", "odd_crossings", "piece_exponentials",
            "switch_free_record"]
 
@@ -244,6 +244,12 @@ class BacklashOrbitNDOF:
 
 
 MAX_SUBSTEPS = 64  # the odd-crossing guard refines the sub-steps up to this many per piece
+#: A ``cache`` entry set to True by a caller that will run the start-up check (the motion from rest under the
+#: switch-free orbit's linear flow, :func:`~thermogear.dynamics.backlash_orbits_ndof.startup_orbit`): the
+#: switch-free orbit's solve then prepares that motion on its own pass of sub-step exponentials
+#: (:class:`~thermogear.dynamics.periodic_motion.MotionProjector`, kept in the cache under ``STARTUP_MOTION``).
+WATCH_STARTUP = "watch the start-up"
+STARTUP_MOTION = "start-up motion"
 
 
 def backlash_periodic_orbit(system: BacklashSystem, initial_state: np.ndarray | None = None, substeps: int = 16,
@@ -290,7 +296,14 @@ def _switch_free_orbit(system: BacklashSystem, substeps: int, tolerance: float, 
     (:func:`~thermogear.dynamics.periodic_ndof.periodic_response`, all pieces batched) instead of Newton's flows of
     the whole period with their monodromy products. Its sub-step states are kept in ``cache`` for the sampling
     (:func:`switch_free_record`)."""
-    response = periodic_response(system.linear, substeps)
+    projector = None
+    if cache.get(WATCH_STARTUP):  # the start-up check will follow: prepare its motion on this solve's pass
+        from thermogear.dynamics.periodic_motion import MotionProjector
+
+        projector = MotionProjector(system.linear, substeps, system.state_functionals())
+    response = periodic_response(system.linear, substeps, observer=None if projector is None else projector.add)
+    if projector is not None and projector.complete:
+        cache[(STARTUP_MOTION, substeps)] = projector
     start = response.initial_state
     key = (system.region(start, 0), system.sides(start))
     if key[0] != _DRIVE:

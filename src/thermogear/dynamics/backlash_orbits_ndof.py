@@ -34,7 +34,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from thermogear.dynamics.backlash_ndof import (DRIVING_CONTACT, BacklashOrbitNDOF, BacklashSystem,
+from thermogear.dynamics.backlash_ndof import (DRIVING_CONTACT, STARTUP_MOTION, BacklashOrbitNDOF, BacklashSystem,
                                                backlash_flow_ndof, backlash_periodic_orbit)
 from thermogear.dynamics.backlash_pieces import contact_state_system
 from thermogear.dynamics.periodic_motion import motion_projections
@@ -98,9 +98,12 @@ class StartupOrbit:
     failure: str = ""
 
 
-def _stays_in_contact(system: BacklashSystem, reference: BacklashOrbitNDOF, periods: int, substeps: int) -> bool:
+def _stays_in_contact(system: BacklashSystem, reference: BacklashOrbitNDOF, periods: int, substeps: int,
+                      cache: dict | None = None) -> bool:
     """Whether the motion from rest, under the linear flow of the reference orbit's contact state, keeps that state
-    at every sub-step end of ``periods`` periods (its start, at rest, may sit on the mesh boundary: g = 0)."""
+    at every sub-step end of ``periods`` periods (its start, at rest, may sit on the mesh boundary: g = 0). The
+    motion prepared by the switch-free orbit's solve (``cache``, :data:`~thermogear.dynamics.backlash_ndof.
+    STARTUP_MOTION`) serves where its system is this contact state's, the same numbers without a pass of its own."""
     n = system.linear.size
     key = (system.region(reference.initial_state, 0), system.sides(reference.initial_state))
     if key[0] != DRIVING_CONTACT or reference.switches or reference.free_flight_time or reference.back_contact_time:
@@ -108,14 +111,26 @@ def _stays_in_contact(system: BacklashSystem, reference: BacklashOrbitNDOF, peri
     rest = np.zeros(2 * n)
     if system.mesh_vector @ rest[:n] - system.deviation[0] < 0.0:
         return False
-    values = motion_projections(contact_state_system(system, key), rest, periods, substeps,
-                                system.state_functionals())
+    flow = contact_state_system(system, key)
+    prepared = (cache or {}).get((STARTUP_MOTION, substeps))
+    if prepared is not None and _same_system(prepared.system, flow) \
+            and np.array_equal(prepared.rows, system.state_functionals()):
+        values = prepared.projections(rest, periods)
+    else:
+        values = motion_projections(flow, rest, periods, substeps, system.state_functionals())
     pieces = system.linear.nodes.size - 1
     rows = np.arange(1, values.shape[0])
     ends = ((rows - 1) % (pieces * substeps)) // substeps  # each sub-step end on its own piece
     starts = (rows[:-1] % (pieces * substeps)) // substeps  # and each piece's start on the new piece
     return (system.keeps_projected_state(values[1:], ends, key)
             and system.keeps_projected_state(values[1:-1], starts, key))
+
+
+def _same_system(first, second) -> bool:
+    """Whether two piecewise-linear systems hold the same matrices and pieces (bit for bit)."""
+    from dataclasses import fields
+
+    return all(np.array_equal(getattr(first, field.name), getattr(second, field.name)) for field in fields(first))
 
 
 def startup_orbit(system: BacklashSystem, reference: BacklashOrbitNDOF | None, run_in_periods: int = 60,
@@ -126,7 +141,7 @@ def startup_orbit(system: BacklashSystem, reference: BacklashOrbitNDOF | None, r
     if isinstance(run_in_periods, bool) or int(run_in_periods) != run_in_periods or run_in_periods < 1:
         raise ProblemError("run_in_periods", run_in_periods, "integer >= 1", "mesh periods of the run-in from rest")
     if reference is not None and reference.stable and _stays_in_contact(system, reference, int(run_in_periods),
-                                                                         int(substeps)):
+                                                                         int(substeps), cache):
         return StartupOrbit(reference, True, False, int(run_in_periods))
     rest = np.zeros(2 * system.linear.size)
     orbit = settle(system, rest, int(run_in_periods), int(substeps), tolerance, max_iterations, cache)

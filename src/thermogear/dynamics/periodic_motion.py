@@ -7,9 +7,10 @@ from __future__ import annotations
 
 import numpy as np
 
+from thermogear.errors import ProblemError
 from thermogear.dynamics.periodic_ndof import PiecewiseLinearSystem, chunked_exponentials, grouped_pieces
 
-__all__ = ["motion_projections"]
+__all__ = ["MotionProjector", "motion_projections"]
 
 
 def motion_projections(system: PiecewiseLinearSystem, state: np.ndarray, periods: int, samples_per_piece: int,
@@ -21,27 +22,63 @@ def motion_projections(system: PiecewiseLinearSystem, state: np.ndarray, periods
     with T_j the transition from the start to node j (one (2n+1)² product per piece, as the monodromy), so that each
     period then costs one product with its start state and the period's transition: the motion from rest over
     many periods is watched (e.g. for the mesh gap) without stepping it. Exact as :func:`~thermogear.dynamics.periodic_ndof.periodic_response`."""
-    samples = int(samples_per_piece)
-    grouped, where = grouped_pieces(system, samples)
-    rows = np.atleast_2d(np.asarray(rows, dtype=float))
-    n, count = system.size, rows.shape[0]
-    augmented = np.zeros((count, 2 * n + 1))
-    augmented[:, :2 * n] = rows
-    transfer = np.empty((where.size, samples, count, 2 * n + 1))
-    transition = np.eye(2 * n + 1)
-    # chunk by chunk (no stack of every piece's matrix is held): the sub-step exponentials and the whole transitions
-    for (first, steps), (_, wholes) in zip(chunked_exponentials(system, grouped, where),
-                                           chunked_exponentials(system, grouped, where, samples), strict=True):
+    projector = MotionProjector(system, samples_per_piece, rows)
+    grouped, where = grouped_pieces(system, int(samples_per_piece))
+    for first, steps in chunked_exponentials(system, grouped, where):
+        projector.add(first, steps)
+    return projector.projections(state, periods)
+
+
+class MotionProjector:
+    """The pass of :func:`motion_projections` fed chunk by chunk with the sub-step exponentials of ``system``
+    (those of :func:`~thermogear.dynamics.periodic_ndof.chunked_exponentials`, in order), so that a solve that
+    forms them anyway (the periodic orbit's second pass: ``periodic_response(..., observer=projector.add)``) also
+    prepares the motion from any start without a pass of its own; the whole transitions are formed here, chunk by
+    chunk as :func:`motion_projections` forms them, so the numbers are the same. ``complete`` says whether every
+    piece was fed (a solve on another route feeds none)."""
+
+    def __init__(self, system: PiecewiseLinearSystem, samples_per_piece: int, rows: np.ndarray):
+        self.system, self.samples = system, int(samples_per_piece)
+        grouped, self._where = grouped_pieces(system, self.samples)
+        self.rows = np.atleast_2d(np.asarray(rows, dtype=float))
+        n, count = system.size, self.rows.shape[0]
+        self._augmented = np.zeros((count, 2 * n + 1))
+        self._augmented[:, :2 * n] = self.rows
+        self._transfer = np.empty((self._where.size, self.samples, count, 2 * n + 1))
+        self._transition = np.eye(2 * n + 1)
+        self._wholes = chunked_exponentials(system, grouped, self._where, self.samples)
+        self._fed = 0
+
+    @property
+    def complete(self) -> bool:
+        """Whether every piece's sub-step exponential was fed."""
+        return self._fed == self._where.size
+
+    def add(self, first: int, steps: np.ndarray) -> None:
+        """Take the sub-step exponentials ``steps`` (c, 2n+1, 2n+1) of the pieces first … first + c − 1 (the next
+        chunk of :func:`~thermogear.dynamics.periodic_ndof.chunked_exponentials`)."""
+        if first != self._fed:
+            raise ProblemError("first", first, f"= {self._fed}", "the chunks are fed in order")
+        _, wholes = next(self._wholes)
+        transition = self._transition
         for offset, (step, whole) in enumerate(zip(steps, wholes, strict=True)):
-            current = augmented
-            for sample in range(samples):
-                transfer[first + offset, sample] = current @ transition
+            current = self._augmented
+            for sample in range(self.samples):
+                self._transfer[first + offset, sample] = current @ transition
                 current = current @ step
             transition = whole @ transition
-    z = np.append(np.asarray(state, dtype=float), 1.0)
-    values = np.empty((int(periods), where.size * samples, count))
-    flat = transfer.reshape(where.size * samples, count, 2 * n + 1)
-    for period in range(int(periods)):
-        values[period] = flat @ z
-        z = transition @ z
-    return np.vstack([values.reshape(-1, count), (augmented @ z)[None]])
+        self._transition, self._fed = transition, first + len(steps)
+
+    def projections(self, state: np.ndarray, periods: int) -> np.ndarray:
+        """The (P·N·s + 1, r) functionals of the motion from ``state`` over ``periods`` periods
+        (:func:`motion_projections`)."""
+        if not self.complete:
+            raise ProblemError("pieces", self._fed, f"all {self._where.size} fed", "the motion needs every piece")
+        count, size = self.rows.shape[0], self._transfer.shape[-1]
+        z = np.append(np.asarray(state, dtype=float), 1.0)
+        values = np.empty((int(periods), self._where.size * self.samples, count))
+        flat = self._transfer.reshape(self._where.size * self.samples, count, size)
+        for period in range(int(periods)):
+            values[period] = flat @ z
+            z = self._transition @ z
+        return np.vstack([values.reshape(-1, count), (self._augmented @ z)[None]])

@@ -205,15 +205,17 @@ def grouped_pieces(system: PiecewiseLinearSystem, samples: int,
     return group_rows(np.column_stack([widths, factor_k, factor_c, factor_f]), tolerance)
 
 
-def _exponentials(system: PiecewiseLinearSystem, distinct: np.ndarray) -> np.ndarray:
+def _exponentials(system: PiecewiseLinearSystem, distinct: np.ndarray,
+                  operators: tuple[np.ndarray, np.ndarray] | None = None) -> np.ndarray:
     """(D, 2n+1, 2n+1) exponentials e^{A_j h_j} of the augmented pieces whose rows (h_j, k_j, c_j, g_j) are
-    ``distinct`` (:func:`grouped_pieces`; the routes: :func:`_piece_steps`)."""
+    ``distinct`` (:func:`grouped_pieces`; the routes: :func:`_piece_steps`); ``operators`` (M⁻¹, the patterns' range)."""
     from thermogear.dynamics.batched_exponential import batched_expm, expm_of_rank_updates
 
-    inverse = _mass_inverse(system)
-    pattern_k, pattern_c, pattern_f = system.stacked()[:3]
     n = system.size
-    range_basis = _pattern_range(system) if distinct.shape[0] >= _RANK_ROUTE_PIECES else np.zeros((n, 0))
+    inverse, full_range = operators or (_mass_inverse(system), None)
+    range_basis = np.zeros((n, 0)) if distinct.shape[0] < _RANK_ROUTE_PIECES \
+        else (_pattern_range(system) if full_range is None else full_range)
+    pattern_k, pattern_c, pattern_f = system.stacked()[:3]
     rank = range_basis.shape[1]
     if distinct.shape[0] < _RANK_ROUTE_PIECES or rank == 0 or rank * _RANK_ROUTE_RATIO > 2 * n + 1:
         stack = _with_factors(system, distinct).augmented_stack(inverse) * distinct[:, :1, None]
@@ -355,11 +357,13 @@ def monodromy(system: PiecewiseLinearSystem,
 
 
 def periodic_response(system: PiecewiseLinearSystem, samples_per_piece: int = 16,
-                      piece_tolerance: float = PIECE_TOLERANCE) -> PeriodicResponse:
+                      piece_tolerance: float = PIECE_TOLERANCE, observer=None) -> PeriodicResponse:
     """The exact periodic steady state, sampled at ``samples_per_piece`` equal steps per piece.
 
     ``piece_tolerance`` ε: pieces whose (h_j, k_j, c_j, g_j) agree within ε of each column's largest magnitude share
     one exponential (:mod:`~thermogear.dynamics.piece_groups` bounds the effect; 0: bit-identical pieces only).
+    ``observer``(first piece, sub-step exponentials): fed each chunk where the solve forms them chunk by chunk
+    (``_by_chunks``; :class:`~thermogear.dynamics.periodic_motion.MotionProjector`), else never called.
 
     Raises ModelLimitError when a Floquet multiplier has modulus >= 1 (parametric instability, an undamped mode or
     a rigid-body mode left in the system): there is then no attracting periodic orbit.
@@ -378,7 +382,7 @@ def periodic_response(system: PiecewiseLinearSystem, samples_per_piece: int = 16
     if 4 * starts.size <= where.size or size > RUN_ROUTE_SIZE:
         return PeriodicResponse(*by_runs(system, _exponentials(system, rows), where, starts, samples))
     if rows.shape[0] * size**2 * 8 > LEAN_ROUTE_BYTES:
-        return _by_chunks(system, rows, where, samples)
+        return _by_chunks(system, rows, where, samples, observer)
     return _by_blocks(system, _exponentials(system, rows), where, samples)
 
 
@@ -388,15 +392,16 @@ def chunked_exponentials(system: PiecewiseLinearSystem, rows: np.ndarray, where:
     piece of a chunk exponentiated once) over ``multiple`` times their width (the sub-step count: each piece's whole
     transition e^{A_j h_j}, formed directly, not as a power of the sub-step one). No stack of all the pieces is held."""
     chunk_pieces = max(1, CHUNK_BYTES // (8 * (2 * system.size + 1) ** 2))
+    operators = (_mass_inverse(system), _pattern_range(system))  # once for every chunk, not per chunk
     for first in range(0, where.size, chunk_pieces):
         unique, inverse = np.unique(where[first:first + chunk_pieces], return_inverse=True)
         chunk = rows[unique]
         chunk[:, 0] *= multiple
-        yield first, _exponentials(system, chunk)[inverse.ravel()]
+        yield first, _exponentials(system, chunk, operators)[inverse.ravel()]
 
 
 def _by_chunks(system: PiecewiseLinearSystem, rows: np.ndarray, where: np.ndarray,
-               samples: int) -> PeriodicResponse:
+               samples: int, observer=None) -> PeriodicResponse:
     """:func:`periodic_response` where a stack of every distinct piece's matrix would be large (above
     :data:`LEAN_ROUTE_BYTES`): the monodromy as the product of the chunks' ordered products of the whole pieces'
     transitions (:func:`chunked_exponentials`: the same N − 1 products as the block route's tree), then the orbit's
@@ -411,7 +416,9 @@ def _by_chunks(system: PiecewiseLinearSystem, rows: np.ndarray, where: np.ndarra
     n, pieces = system.size, where.size
     states = np.empty((pieces * samples + 1, 2 * n + 1))
     state, row = np.append(initial, 1.0), 0
-    for _, steps in chunked_exponentials(system, rows, where):
+    for first, steps in chunked_exponentials(system, rows, where):
+        if observer is not None:
+            observer(first, steps)
         for step in steps:
             for _ in range(samples):
                 states[row] = state
