@@ -137,8 +137,7 @@ def reduced_backlash_system(system: BacklashSystem, cutoff_hz: float):
         raise CaseError("cutoff_hz", cutoff_hz, "> 0 Hz, finite", "the highest mode frequency kept")
     basis = modal_basis(system.linear, 2.0 * math.pi * cutoff_hz, [zone.vector for zone in system.dead_zones])
     b = basis.basis
-    zones = tuple(DeadZone(b.T @ zone.vector, zone.stiffness, zone.damping, zone.clearance)
-                  for zone in system.dead_zones)
+    zones = tuple(replace(zone, vector=b.T @ zone.vector) for zone in system.dead_zones)
     return BacklashSystem(basis.reduce(system.linear), b.T @ system.mesh_vector, system.deviation, system.backlash,
                           zones), basis
 
