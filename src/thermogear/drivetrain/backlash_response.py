@@ -26,15 +26,17 @@ exact).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
 
 from thermogear.dynamics.metrics import dynamic_factor
 from thermogear.drivetrain.assembly import AssembledDrivetrain
-from thermogear.drivetrain.response import bearing_force_spectrum, bearing_forces, drivetrain_backlash_system
-from thermogear.dynamics.backlash_ndof import (BACK_CONTACT, DRIVING_CONTACT, FREE_FLIGHT, BacklashSystem, DeadZone,
+from thermogear.drivetrain.response import (MeshResponse, bearing_force_spectrum, bearing_forces,
+                                            drivetrain_backlash_system, train_problems)
+from thermogear.drivetrain.train import MeshTrain
+from thermogear.dynamics.backlash_ndof import (BACK_CONTACT, DRIVING_CONTACT, FREE_FLIGHT, BacklashSystem, MeshZone,
                                                backlash_periodic_orbit)
 from thermogear.dynamics.backlash_orbits_ndof import StartupOrbit, startup_orbit
 from thermogear.dynamics.backlash_trajectory import BacklashTrajectory, backlash_trajectory
@@ -44,8 +46,8 @@ from thermogear.errors import CaseError, ModelLimitError, ProblemError
 from thermogear.mesh.state import MeshState
 
 __all__ = ["SHOOTING_TOLERANCE", "DrivetrainBacklashResponse", "PeriodForces", "SampledMotion", "bearing_forces",
-           "drivetrain_backlash_response", "one_blas_thread", "orbit_summary", "reduced_backlash_system",
-           "sampled_metrics", "sampled_motion"]
+           "drivetrain_backlash_response", "mesh_trajectory", "one_blas_thread", "orbit_summary",
+           "reduced_backlash_system", "sampled_metrics", "sampled_motion", "train_mesh_responses"]
 
 
 #: Relative residual |φ_T(z₀) − z₀| the shooting must reach. A drivetrain's stiff coordinates leave a rounding floor
@@ -63,7 +65,9 @@ class DrivetrainBacklashResponse:
     (S, DOFs) [SI]; ``region`` (S,) the mesh's contact region; Floquet ``multipliers``; ``converged``; ``failure``
     why not ('' when converged); ``switches`` of the mesh per period; ``contact_loss_fraction`` and
     ``back_contact_fraction`` [-]; ``metrics``; ``period`` [s]; ``notes`` what the reader must know (two coexisting
-    orbits, a start-up that settled on none)."""
+    orbits, a start-up that settled on none); a train (several meshes): ``period`` the common period, the fields
+    above the first mesh's and ``meshes`` each mesh's δ, force and metrics (contact loss of its own dead zone)
+    by name."""
 
     time: np.ndarray
     transmission_error: np.ndarray
@@ -81,6 +85,7 @@ class DrivetrainBacklashResponse:
     metrics: dict[str, Any]
     period: float
     notes: tuple[str, ...] = ()
+    meshes: dict[str, MeshResponse] = field(default_factory=dict)
 
     @property
     def stable(self) -> bool:
@@ -142,7 +147,7 @@ def reduced_backlash_system(system: BacklashSystem, cutoff_hz: float):
                           zones), basis
 
 
-def drivetrain_backlash_response(assembled: AssembledDrivetrain, state: MeshState,
+def drivetrain_backlash_response(assembled: AssembledDrivetrain, state: MeshState | MeshTrain,
                                  initial_state: np.ndarray | None = None, substeps: int = 16,
                                  samples_per_piece: int = 8, cutoff_hz: float | None = None,
                                  tolerance: float = SHOOTING_TOLERANCE,
@@ -259,30 +264,79 @@ def _expanded(reduction, basis, values: np.ndarray) -> np.ndarray:
     return reduction.expand(values).T
 
 
-def _failed(state: MeshState, failure: str, bearings: list[str]) -> DrivetrainBacklashResponse:
+def _failed(state: MeshState | MeshTrain, failure: str, bearings: list[str]) -> DrivetrainBacklashResponse:
     """A response that carries no motion, only why."""
+    period = state.period if isinstance(state, MeshTrain) else state.problem().period
+    state = state.states[0] if isinstance(state, MeshTrain) else state
     empty = np.zeros(0)
     metrics = {"static_load": state.normal_load, "kv": None, "valid": False, "converged": False, "stable": False,
                "bearings": bearings}
     return DrivetrainBacklashResponse(empty, empty, empty, empty, {}, np.zeros((0, 0)), np.zeros(0, dtype=int),
-                                      empty, False, failure, 0, math.nan, math.nan, metrics,
-                                      state.problem().period)
+                                      empty, False, failure, 0, math.nan, math.nan, metrics, period)
 
 
 def _response(assembled: AssembledDrivetrain, state: MeshState, system: BacklashSystem, reduction, basis,
               trajectory: BacklashTrajectory, initial_state: np.ndarray, multipliers: np.ndarray, converged: bool,
               failure: str, switches: int) -> DrivetrainBacklashResponse:
-    """The sampled orbit expanded to every DOF, with δ, the forces and the metrics."""
-    problem = state.problem()
-    motion = sampled_motion(assembled, problem, reduction, basis, trajectory, system.deviation, system.backlash)
-    metrics = sampled_metrics(problem, trajectory, motion, multipliers, converged)
+    """The sampled orbit expanded to every DOF, with δ, the forces and the metrics (of every mesh of a train)."""
+    meshes = {}
+    if isinstance(state, MeshTrain) and len(state.states) > 1:
+        meshes, motion = train_mesh_responses(assembled, state, system, reduction, basis, trajectory, multipliers,
+                                              converged)
+        metrics = dict(next(iter(meshes.values())).metrics)
+        period = state.period
+    else:
+        state = state.states[0] if isinstance(state, MeshTrain) else state
+        problem = state.problem()
+        motion = sampled_motion(assembled, problem, reduction, basis, trajectory, system.deviation, system.backlash)
+        metrics = sampled_metrics(problem, trajectory, motion, multipliers, converged)
+        period = problem.period
     metrics["initial_state"] = [float(value) for value in initial_state]
-    period = problem.period
     return DrivetrainBacklashResponse(trajectory.time, motion.transmission_error, motion.transmission_error_rate,
                                       motion.mesh_force, motion.bearing_forces, motion.displacement,
                                       trajectory.region, multipliers, bool(converged), failure, int(switches),
                                       trajectory.free_flight_time / period, trajectory.back_contact_time / period,
-                                      metrics, period)
+                                      metrics, period, meshes=meshes)
+
+
+def mesh_trajectory(trajectory: BacklashTrajectory, zone: int) -> BacklashTrajectory:
+    """The trajectory as a further mesh of a train sees it (its :class:`~thermogear.dynamics.backlash_ndof.MeshZone`
+    is dead zone ``zone``): its region from the zone's side (+1 driving, 0 free flight, −1 back flanks), its time
+    without contact and on the back flanks summed over the samples (every switch of every dead zone is sampled on
+    both sides and every node, so between two samples of different instants the region holds: exact), its switches
+    the changes of region between samples."""
+    sides = trajectory.sides[:, zone]
+    region = np.where(sides > 0, DRIVING_CONTACT, np.where(sides < 0, BACK_CONTACT, FREE_FLIGHT))
+    steps, held = np.diff(trajectory.time), region[1:]
+    return replace(trajectory, region=region, switches=int(np.count_nonzero(held != region[:-1])),
+                   free_flight_time=float(np.sum(steps[held == FREE_FLIGHT])),
+                   back_contact_time=float(np.sum(steps[held == BACK_CONTACT])))
+
+
+def train_mesh_responses(assembled: AssembledDrivetrain, train: MeshTrain, system: BacklashSystem, reduction, basis,
+                         trajectory: BacklashTrajectory, multipliers: np.ndarray, converged: bool
+                         ) -> tuple[dict[str, MeshResponse], SampledMotion]:
+    """(each mesh's δ, force and metrics over the common period by name, the first mesh's sampled motion) of a
+    train's sampled motion: each mesh with its own problem on the common pieces, its own dead zone (the system's
+    own for the first mesh, its :class:`~thermogear.dynamics.backlash_ndof.MeshZone` for the others), its mesh
+    frequency its own (as the linear train's metrics)."""
+    on_grid, own, _ = train_problems(train)
+    zones = {zone.column: index for index, zone in enumerate(system.dead_zones) if isinstance(zone, MeshZone)}
+    meshes, first = {}, None
+    for column, mesh in enumerate(assembled.drivetrain.meshes):
+        if column == 0:
+            seen, deviation, backlash = trajectory, system.deviation, system.backlash
+        else:
+            zone = system.dead_zones[zones[column]]
+            seen, deviation, backlash = mesh_trajectory(trajectory, zones[column]), zone.deviation, zone.backlash
+        motion = sampled_motion(assembled, on_grid[column], reduction, basis, seen, deviation, backlash, column)
+        metrics = sampled_metrics(on_grid[column], seen, motion, multipliers, converged)
+        metrics["mesh_frequency_hz"] = own[column].mesh_frequency
+        metrics["frequency_ratio"] = own[column].mesh_frequency / metrics["natural_frequency_hz"]
+        meshes[mesh.name] = MeshResponse(motion.transmission_error, motion.transmission_error_rate, motion.mesh_force,
+                                         metrics, own[column].period)
+        first = motion if first is None else first
+    return meshes, first
 
 
 @dataclass(frozen=True, eq=False)
@@ -299,12 +353,13 @@ class SampledMotion:
 
 
 def sampled_motion(assembled: AssembledDrivetrain, problem, reduction, basis, trajectory: BacklashTrajectory,
-                   deviation: np.ndarray, backlash: float) -> SampledMotion:
+                   deviation: np.ndarray, backlash: float, mesh: int = 0) -> SampledMotion:
     """The trajectory (in the solver's coordinates) on every DOF with δ and the forces of the module docstring;
-    ``deviation`` ē_j [m] per piece and the ``backlash`` b [m] of the mesh coordinate g = δ − ē_j."""
+    ``deviation`` ē_j [m] per piece and the ``backlash`` b [m] of the mesh coordinate g = δ − ē_j of the
+    drivetrain's ``mesh``-th mesh (``trajectory.region`` its region)."""
     displacement = _expanded(reduction, basis, trajectory.displacement)
     velocity = _expanded(reduction, basis, trajectory.velocity)
-    w = assembled.mesh_vectors[0]
+    w = assembled.mesh_vectors[mesh]
     delta, rate = displacement @ w, velocity @ w
     piece, region = trajectory.piece, trajectory.region
     gap = delta - deviation[piece]

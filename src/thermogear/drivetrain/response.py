@@ -34,7 +34,7 @@ from thermogear.dynamics.spectra import harmonic_spectrum
 from thermogear.errors import CaseError
 from thermogear.mesh.state import MeshState
 
-__all__ = ["DrivetrainResponse", "MeshResponse", "bearing_force_spectrum", "bearing_forces", "drivetrain_backlash_system", "drivetrain_periodic_system",
+__all__ = ["DrivetrainResponse", "MeshResponse", "train_problems", "bearing_force_spectrum", "bearing_forces", "drivetrain_backlash_system", "drivetrain_periodic_system",
            "drivetrain_periodic_response", "drivetrain_speed_sweep"]
 
 
@@ -235,6 +235,14 @@ def drivetrain_speed_sweep(assembled: AssembledDrivetrain, states: Sequence[Mesh
             system = basis.reduce(system)
         responses.append(_response(assembled, train, problems, grid, system, reduction, basis, samples_per_piece))
     return responses
+
+
+def train_problems(train: MeshTrain) -> tuple[tuple, tuple, TrainGrid]:
+    """(each mesh's problem with its per-interval arrays on the train's common pieces, each mesh's own problem over
+    its own period, the common grid), for the metrics of each mesh of a train."""
+    problems = tuple(item.problem() for item in train.states)
+    grid = _grid(train, problems)
+    return tuple(_on_grid(problem, grid, m) for m, problem in enumerate(problems)), problems, grid
 
 
 def _on_grid(problem, grid: TrainGrid, column: int):

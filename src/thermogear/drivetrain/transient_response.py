@@ -8,15 +8,17 @@ periodic orbit as the slowest Floquet multiplier's modulus to the power N.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
 
 from thermogear.drivetrain.assembly import AssembledDrivetrain
 from thermogear.drivetrain.backlash_response import (PeriodForces, SampledMotion, one_blas_thread,
-                                                    reduced_backlash_system, sampled_metrics, sampled_motion)
-from thermogear.drivetrain.response import drivetrain_backlash_system, drivetrain_periodic_system
+                                                    reduced_backlash_system, sampled_metrics, sampled_motion,
+                                                    train_mesh_responses)
+from thermogear.drivetrain.response import drivetrain_backlash_system, drivetrain_periodic_system, train_problems
+from thermogear.drivetrain.train import MeshTrain
 from thermogear.dynamics.backlash_trajectory import backlash_trajectory, linear_trajectory
 from thermogear.errors import CaseError
 from thermogear.mesh.state import MeshState
@@ -33,7 +35,8 @@ class DrivetrainTransient:
     :class:`~thermogear.drivetrain.backlash_response.SampledMotion`); ``region`` (S,) of the mesh; ``backlash``
     whether the mesh may separate; ``end_state`` the solver's state after the last period; ``last_period`` the
     metrics of the last period (keys of :func:`~thermogear.drivetrain.backlash_response.sampled_metrics` less the
-    orbit's) and ``last_period_forces`` its bearing forces."""
+    orbit's) and ``last_period_forces`` its bearing forces. A train: ``period`` the common period, the fields above
+    the first mesh's, ``meshes`` each mesh's last period (δ, force, metrics) by name."""
 
     time: np.ndarray
     motion: SampledMotion
@@ -44,6 +47,7 @@ class DrivetrainTransient:
     last_period_forces: PeriodForces
     period: float
     periods: int
+    meshes: dict = field(default_factory=dict)
 
     @property
     def transmission_error(self) -> np.ndarray:
@@ -51,7 +55,7 @@ class DrivetrainTransient:
         return self.motion.transmission_error
 
 
-def drivetrain_transient(assembled: AssembledDrivetrain, state: MeshState, periods: int, backlash: bool = True,
+def drivetrain_transient(assembled: AssembledDrivetrain, state: MeshState | MeshTrain, periods: int, backlash: bool = True,
                          samples_per_piece: int = 8, substeps: int = 16,
                          cutoff_hz: float | None = None) -> DrivetrainTransient:
     """The motion from rest over ``periods`` mesh periods (module docstring): with ``backlash`` the backlash mesh
@@ -61,7 +65,9 @@ def drivetrain_transient(assembled: AssembledDrivetrain, state: MeshState, perio
     None on every DOF. Rest is q = q̇ = 0 on either basis (the basis holds the rest state exactly)."""
     if isinstance(periods, bool) or int(periods) != periods or periods < 1:
         raise CaseError("periods", periods, "integer >= 1", "whole mesh periods of the motion from rest")
-    problem = state.problem()
+    train = isinstance(state, MeshTrain) and len(state.states) > 1
+    problem = train_problems(state)[0][0] if train else (
+        state.states[0] if isinstance(state, MeshTrain) else state).problem()
     basis = None
     if backlash:
         system, reduction = drivetrain_backlash_system(assembled, state)
@@ -82,13 +88,43 @@ def drivetrain_transient(assembled: AssembledDrivetrain, state: MeshState, perio
         trajectory = linear_trajectory(linear, np.zeros(2 * linear.size), int(periods), samples_per_piece)
         deviation = np.divide(linear.force_factor, linear.stiffness_factor,
                               out=np.zeros_like(linear.force_factor), where=linear.stiffness_factor != 0.0)
+        deviation = deviation[:, 0] if deviation.ndim == 2 else deviation  # a train: the first mesh's
         gap = np.inf
     motion = sampled_motion(assembled, problem, reduction, basis, trajectory, deviation, gap)
     last = trajectory.last_period()
-    last_motion = sampled_motion(assembled, problem, reduction, basis, last, deviation, gap)
-    metrics = sampled_metrics(problem, last, last_motion, np.zeros(0), True)
-    for key in _ORBIT_KEYS:
-        metrics.pop(key, None)
+    meshes = {}
+    if train and backlash:
+        meshes, last_motion = train_mesh_responses(assembled, state, system, reduction, basis, last, np.zeros(0), True)
+        metrics = dict(next(iter(meshes.values())).metrics)
+    elif train:  # permanent contact: every mesh's δ and force from its own deviation on the common pieces
+        meshes, last_motion = _linear_train_meshes(assembled, state, reduction, basis, last, linear)
+        metrics = dict(next(iter(meshes.values())).metrics)
+    else:
+        last_motion = sampled_motion(assembled, problem, reduction, basis, last, deviation, gap)
+        metrics = sampled_metrics(problem, last, last_motion, np.zeros(0), True)
+    for values in [metrics] + [item.metrics for item in meshes.values()]:
+        for key in _ORBIT_KEYS:
+            values.pop(key, None)
     return DrivetrainTransient(trajectory.time, motion, trajectory.region, bool(backlash), trajectory.end_state,
                                metrics, PeriodForces(last.time, last_motion.bearing_forces, problem.period),
-                               problem.period, int(periods))
+                               problem.period, int(periods), meshes)
+
+
+def _linear_train_meshes(assembled, train, reduction, basis, last, linear):
+    """:func:`~thermogear.drivetrain.backlash_response.train_mesh_responses` of a train in permanent contact (the
+    linear trajectory: every mesh on its driving flanks)."""
+    from thermogear.drivetrain.response import MeshResponse
+
+    on_grid, own, _ = train_problems(train)
+    meshes, first = {}, None
+    for column, mesh in enumerate(assembled.drivetrain.meshes):
+        factor = linear.stiffness_factor[:, column]
+        deviation = np.divide(linear.force_factor[:, column], factor, out=np.zeros_like(factor), where=factor != 0.0)
+        motion = sampled_motion(assembled, on_grid[column], reduction, basis, last, deviation, np.inf, column)
+        metrics = sampled_metrics(on_grid[column], last, motion, np.zeros(0), True)
+        metrics["mesh_frequency_hz"] = own[column].mesh_frequency
+        metrics["frequency_ratio"] = own[column].mesh_frequency / metrics["natural_frequency_hz"]
+        meshes[mesh.name] = MeshResponse(motion.transmission_error, motion.transmission_error_rate, motion.mesh_force,
+                                         metrics, own[column].period)
+        first = motion if first is None else first
+    return meshes, first
