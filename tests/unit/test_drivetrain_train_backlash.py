@@ -270,3 +270,27 @@ def test_run_json_of_the_two_stage_reducer_with_the_nonlinear_mesh_reports_each_
             # the larger and within 1e-4
             expected = linear["models"][model]["stages"][name]["kv"]
             assert expected * (1.0 - 1e-12) <= stage["kv"] <= expected * (1.0 + 1e-4)
+
+
+@pytest.mark.slow
+def test_the_backlash_speed_sweep_of_the_train_stores_each_stage(tmp_path):
+    """The speed sweep of the (coarse) two-stage set with the backlash mesh: every branch point found, each stage's
+    Kv stored, the first stage's equal to the point's Kv (the first mesh's)."""
+    import tomli_w
+    import xarray as xr
+    from typer.testing import CliRunner
+
+    from thermogear.cli.app import app
+
+    path = tmp_path / "reducer.toml"
+    path.write_text(tomli_w.dumps(_damped_reducer_document()))
+    store = tmp_path / "sweep.zarr"
+    outcome = CliRunner().invoke(app, ["sweep", str(path), "--vary", "speed_rpm=2000:2400:2", "--out", str(store),
+                                       "--json"])
+    assert outcome.exit_code == 0, outcome.output
+    data = xr.open_zarr(store)
+    assert list(data["mesh"].values) == ["mesh", "stage 2"]
+    assert bool(data["valid"].all())
+    stage = data["stage_kv"].values
+    assert np.all(np.isfinite(stage)) and np.all(stage >= 1.0)
+    np.testing.assert_array_equal(stage[..., 0], data["kv"].values)
