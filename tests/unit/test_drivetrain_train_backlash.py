@@ -169,21 +169,21 @@ def test_a_single_mesh_backlash_system_is_unchanged_by_the_train_path():
     solved with the train's multi-pattern form holding a second mesh that never touches (zero stiffness)."""
     system = _separating_train()
     linear = system.linear
-    single = PiecewiseLinearSystem(mass=linear.mass, stiffness=linear.stiffness, damping=linear.damping,
-                                   force=linear.force, nodes=linear.nodes, stiffness_pattern=linear.stiffness_pattern[0],
-                                   stiffness_factor=linear.stiffness_factor[:, 0],
-                                   damping_pattern=linear.damping_pattern[0], damping_factor=linear.damping_factor[:, 0],
-                                   force_pattern=linear.force_pattern[0], force_factor=linear.force_factor[:, 0])
+    single = PiecewiseLinearSystem(
+        mass=linear.mass, stiffness=linear.stiffness, damping=linear.damping, force=linear.force, nodes=linear.nodes,
+        stiffness_pattern=linear.stiffness_pattern[0], stiffness_factor=linear.stiffness_factor[:, 0],
+        damping_pattern=linear.damping_pattern[0], damping_factor=linear.damping_factor[:, 0],
+        force_pattern=linear.force_pattern[0], force_factor=linear.force_factor[:, 0])
     one = backlash_periodic_orbit(BacklashSystem(single, system.mesh_vector, system.deviation, system.backlash),
                                   substeps=16, tolerance=1e-12)
-    silent = PiecewiseLinearSystem(mass=linear.mass, stiffness=linear.stiffness, damping=linear.damping,
-                                   force=linear.force, nodes=linear.nodes, stiffness_pattern=linear.stiffness_pattern,
-                                   stiffness_factor=linear.stiffness_factor * [1.0, 0.0],
-                                   damping_pattern=linear.damping_pattern, damping_factor=linear.damping_factor * [1.0, 0.0],
-                                   force_pattern=linear.force_pattern, force_factor=linear.force_factor * [1.0, 0.0])
+    silent = PiecewiseLinearSystem(
+        mass=linear.mass, stiffness=linear.stiffness, damping=linear.damping, force=linear.force, nodes=linear.nodes,
+        stiffness_pattern=linear.stiffness_pattern, stiffness_factor=linear.stiffness_factor * [1.0, 0.0],
+        damping_pattern=linear.damping_pattern, damping_factor=linear.damping_factor * [1.0, 0.0],
+        force_pattern=linear.force_pattern, force_factor=linear.force_factor * [1.0, 0.0])
+    zone = MeshZone(linear.force_pattern[1], 1, system.dead_zones[0].deviation, 0.4)
     two = backlash_periodic_orbit(BacklashSystem(silent, system.mesh_vector, system.deviation, system.backlash,
-                                                 (MeshZone(linear.force_pattern[1], 1, system.dead_zones[0].deviation,
-                                                           0.4),)), substeps=16, tolerance=1e-12)
+                                                 (zone,)), substeps=16, tolerance=1e-12)
     assert one.converged and two.converged and one.free_flight_time > 0.0
     np.testing.assert_allclose(two.initial_state, one.initial_state, rtol=0.0,
                                atol=1e-10 * np.abs(one.initial_state).max())

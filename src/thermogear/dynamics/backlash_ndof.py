@@ -33,7 +33,8 @@ from thermogear.dynamics.periodic_ndof import PiecewiseLinearSystem, periodic_re
 from thermogear.dynamics.problem import checked_array
 from thermogear.errors import ModelLimitError, ProblemError
 
-__all__ = ["BACK_CONTACT", "DRIVING_CONTACT", "FREE_FLIGHT", "BacklashSystem", "BacklashOrbitNDOF", "DeadZone", "MeshZone",
+__all__ = ["BACK_CONTACT", "DRIVING_CONTACT", "FREE_FLIGHT", "BacklashSystem", "BacklashOrbitNDOF", "DeadZone",
+           "MeshZone",
            "backlash_flow_ndof", "backlash_periodic_orbit", "odd_crossings", "piece_exponentials",
            "switch_free_record"]
 
