@@ -13,8 +13,9 @@ For each model: the lowest modes (undamped, mean mesh stiffness) with a label, t
 mesh, each bearing, shaft, coupling and support; the exact periodic response to one mesh period of the model's mesh
 state on the modes up to the section's ``response_cutoff_hz`` (:func:`~thermogear.drivetrain.response.
 drivetrain_periodic_response`): DTE, Kv, and per bearing the dynamic force on the housing (RMS of F − F̄ over the
-period, and the amplitude of the first mesh harmonics). The mesh is linear here (permanent contact): where the
-1-DOF nonlinear model finds the teeth separating, the drivetrain's response is the linear one and says so.
+period, and the amplitude of the first mesh harmonics). With the case's nonlinear mesh the backlash orbit (or the
+motion from rest) of every mesh's dead zone instead; a train of several meshes is solved over its common period
+(:mod:`thermogear.drivetrain.train`), each mesh its own dead zone.
 """
 
 from __future__ import annotations

@@ -17,6 +17,10 @@ u = vᵀq that act only beyond ±δ. Their dashpot stops at a switch, so the vec
 takes the saltation matrix S = I + (f⁺ − f⁻) nᵀ/(nᵀf⁻) at each of their switches (n = [v; 0] the boundary's
 normal, f∓ the vector fields on either side; Leine & Nijmeijer 2004, §7.2).
 
+A train's further meshes (:class:`MeshZone`): each the same dead zone law on its own coordinate wᵀ_m q − e_mj, its
+stiffness and damping a further pattern of the linear system (column m of its factors); in free flight its stiffness
+factor is zero and its damping acts on, so its switches, like the system's own mesh's, need no saltation matrix.
+
 Limits: a double crossing inside one sub-step (grazing) is not seen; take ``substeps`` so that a sub-step is short
 against the fastest mode the mesh coordinate takes part in.
 """
