@@ -34,8 +34,8 @@ import numpy as np
 from thermogear.drivetrain.assembly import AssembledDrivetrain
 from thermogear.drivetrain.response import (MeshResponse, bearing_force_spectrum, bearing_forces,
                                             drivetrain_backlash_system)
-from thermogear.drivetrain.sampled_period import (SampledMotion, mesh_trajectory, sampled_metrics,  # noqa: F401
-                                                  sampled_motion, train_mesh_responses)
+from thermogear.drivetrain.sampled_period import (SampledMotion, mesh_contacts, mesh_trajectory,  # noqa: F401
+                                                  sampled_metrics, sampled_motion, train_mesh_responses)
 from thermogear.drivetrain.train import MeshTrain
 from thermogear.dynamics.backlash_ndof import BacklashSystem, backlash_periodic_orbit
 from thermogear.dynamics.backlash_orbits_ndof import StartupOrbit, startup_orbit
@@ -271,8 +271,8 @@ def _response(assembled: AssembledDrivetrain, state: MeshState, system: Backlash
     """The sampled orbit expanded to every DOF, with δ, the forces and the metrics (of every mesh of a train)."""
     meshes = {}
     if isinstance(state, MeshTrain) and len(state.states) > 1:
-        meshes, motion = train_mesh_responses(assembled, state, system, reduction, basis, trajectory, multipliers,
-                                              converged)
+        meshes, motion = train_mesh_responses(assembled, state, reduction, basis, mesh_contacts(system, trajectory),
+                                              multipliers, converged)
         metrics = dict(next(iter(meshes.values())).metrics)
         period = state.period
     else:

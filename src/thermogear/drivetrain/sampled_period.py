@@ -20,7 +20,8 @@ from thermogear.dynamics.backlash_trajectory import BacklashTrajectory
 from thermogear.dynamics.metrics import dynamic_factor, sampled_load
 from thermogear.dynamics.spectra import time_mean_and_rms
 
-__all__ = ["SampledMotion", "mesh_trajectory", "sampled_metrics", "sampled_motion", "train_mesh_responses"]
+__all__ = ["SampledMotion", "mesh_contacts", "mesh_trajectory",
+           "sampled_metrics", "sampled_motion", "train_mesh_responses"]
 
 
 def _expanded(reduction, basis, values: np.ndarray) -> np.ndarray:
@@ -45,22 +46,25 @@ def mesh_trajectory(trajectory: BacklashTrajectory, zone: int) -> BacklashTrajec
                    back_contact_time=float(np.sum(steps[held == BACK_CONTACT])))
 
 
-def train_mesh_responses(assembled: AssembledDrivetrain, train: MeshTrain, system: BacklashSystem, reduction, basis,
-                         trajectory: BacklashTrajectory, multipliers: np.ndarray, converged: bool
-                         ) -> tuple[dict[str, MeshResponse], SampledMotion]:
+def mesh_contacts(system: BacklashSystem, trajectory: BacklashTrajectory) -> list[tuple]:
+    """Per mesh of a train's backlash system (the system's own first, then each
+    :class:`~thermogear.dynamics.backlash_ndof.MeshZone` by its column): (the trajectory as that mesh sees it, its
+    deviation per piece [m], its backlash [m]), for :func:`train_mesh_responses`."""
+    zones = sorted((zone.column, index) for index, zone in enumerate(system.dead_zones) if isinstance(zone, MeshZone))
+    return [(trajectory, system.deviation, system.backlash)] + [
+        (mesh_trajectory(trajectory, index), system.dead_zones[index].deviation, system.dead_zones[index].backlash)
+        for _, index in zones]
+
+
+def train_mesh_responses(assembled: AssembledDrivetrain, train: MeshTrain, reduction, basis, contacts: list[tuple],
+                         multipliers: np.ndarray, converged: bool) -> tuple[dict[str, MeshResponse], SampledMotion]:
     """(each mesh's δ, force and metrics over the common period by name, the first mesh's sampled motion) of a
-    train's sampled motion: each mesh with its own problem on the common pieces, its own dead zone (the system's
-    own for the first mesh, its :class:`~thermogear.dynamics.backlash_ndof.MeshZone` for the others), its mesh
-    frequency its own (as the linear train's metrics)."""
+    train's sampled motion: each mesh with its own problem on the common pieces and its ``contacts`` entry
+    (trajectory as it sees it, deviation, backlash: :func:`mesh_contacts`; in permanent contact the trajectory, its
+    deviation and an infinite backlash), its mesh frequency its own (as the linear train's metrics)."""
     on_grid, own, _ = train_problems(train)
-    zones = {zone.column: index for index, zone in enumerate(system.dead_zones) if isinstance(zone, MeshZone)}
     meshes, first = {}, None
-    for column, mesh in enumerate(assembled.drivetrain.meshes):
-        if column == 0:
-            seen, deviation, backlash = trajectory, system.deviation, system.backlash
-        else:
-            zone = system.dead_zones[zones[column]]
-            seen, deviation, backlash = mesh_trajectory(trajectory, zones[column]), zone.deviation, zone.backlash
+    for column, (mesh, (seen, deviation, backlash)) in enumerate(zip(assembled.drivetrain.meshes, contacts)):
         motion = sampled_motion(assembled, on_grid[column], reduction, basis, seen, deviation, backlash, column)
         metrics = sampled_metrics(on_grid[column], seen, motion, multipliers, converged)
         metrics["mesh_frequency_hz"] = own[column].mesh_frequency

@@ -15,8 +15,8 @@ import numpy as np
 
 from thermogear.drivetrain.assembly import AssembledDrivetrain
 from thermogear.drivetrain.backlash_response import (PeriodForces, SampledMotion, one_blas_thread,
-                                                    reduced_backlash_system, sampled_metrics, sampled_motion,
-                                                    train_mesh_responses)
+                                                    mesh_contacts, reduced_backlash_system, sampled_metrics,
+                                                    sampled_motion, train_mesh_responses)
 from thermogear.drivetrain.response import drivetrain_backlash_system, drivetrain_periodic_system, train_problems
 from thermogear.drivetrain.train import MeshTrain
 from thermogear.dynamics.backlash_trajectory import backlash_trajectory, linear_trajectory
@@ -55,7 +55,8 @@ class DrivetrainTransient:
         return self.motion.transmission_error
 
 
-def drivetrain_transient(assembled: AssembledDrivetrain, state: MeshState | MeshTrain, periods: int, backlash: bool = True,
+def drivetrain_transient(assembled: AssembledDrivetrain, state: MeshState | MeshTrain, periods: int,
+                         backlash: bool = True,
                          samples_per_piece: int = 8, substeps: int = 16,
                          cutoff_hz: float | None = None) -> DrivetrainTransient:
     """The motion from rest over ``periods`` mesh periods (module docstring): with ``backlash`` the backlash mesh
@@ -93,11 +94,14 @@ def drivetrain_transient(assembled: AssembledDrivetrain, state: MeshState | Mesh
     motion = sampled_motion(assembled, problem, reduction, basis, trajectory, deviation, gap)
     last = trajectory.last_period()
     meshes = {}
-    if train and backlash:
-        meshes, last_motion = train_mesh_responses(assembled, state, system, reduction, basis, last, np.zeros(0), True)
-        metrics = dict(next(iter(meshes.values())).metrics)
-    elif train:  # permanent contact: every mesh's δ and force from its own deviation on the common pieces
-        meshes, last_motion = _linear_train_meshes(assembled, state, reduction, basis, last, linear)
+    if train:  # each mesh from its own dead zone, or in permanent contact from its own deviation
+        if backlash:
+            contacts = mesh_contacts(system, last)
+        else:
+            factors = linear.stiffness_factor
+            deviations = np.divide(linear.force_factor, factors, out=np.zeros_like(factors), where=factors != 0.0)
+            contacts = [(last, deviations[:, column], np.inf) for column in range(factors.shape[1])]
+        meshes, last_motion = train_mesh_responses(assembled, state, reduction, basis, contacts, np.zeros(0), True)
         metrics = dict(next(iter(meshes.values())).metrics)
     else:
         last_motion = sampled_motion(assembled, problem, reduction, basis, last, deviation, gap)
@@ -109,22 +113,3 @@ def drivetrain_transient(assembled: AssembledDrivetrain, state: MeshState | Mesh
                                metrics, PeriodForces(last.time, last_motion.bearing_forces, problem.period),
                                problem.period, int(periods), meshes)
 
-
-def _linear_train_meshes(assembled, train, reduction, basis, last, linear):
-    """:func:`~thermogear.drivetrain.backlash_response.train_mesh_responses` of a train in permanent contact (the
-    linear trajectory: every mesh on its driving flanks)."""
-    from thermogear.drivetrain.response import MeshResponse
-
-    on_grid, own, _ = train_problems(train)
-    meshes, first = {}, None
-    for column, mesh in enumerate(assembled.drivetrain.meshes):
-        factor = linear.stiffness_factor[:, column]
-        deviation = np.divide(linear.force_factor[:, column], factor, out=np.zeros_like(factor), where=factor != 0.0)
-        motion = sampled_motion(assembled, on_grid[column], reduction, basis, last, deviation, np.inf, column)
-        metrics = sampled_metrics(on_grid[column], last, motion, np.zeros(0), True)
-        metrics["mesh_frequency_hz"] = own[column].mesh_frequency
-        metrics["frequency_ratio"] = own[column].mesh_frequency / metrics["natural_frequency_hz"]
-        meshes[mesh.name] = MeshResponse(motion.transmission_error, motion.transmission_error_rate, motion.mesh_force,
-                                         metrics, own[column].period)
-        first = motion if first is None else first
-    return meshes, first
