@@ -18,8 +18,6 @@ from typing import Any, Callable
 import pydantic
 
 from thermogear.temperature_kinds import temperature_source
-from thermogear.dynamics.mesh_laws import mesh_law
-from thermogear.dynamics.solution_methods import solution_method
 from thermogear import warning_scope
 from thermogear.case_errors import case_error_from_validation
 from thermogear.case_geometry import gear_pair_of, helical_pair_of
@@ -273,12 +271,6 @@ def _stage(section, model: CaseFile) -> GearStage:
     backlash, no jamming hot), under the case's material, temperatures and thermal model. A stage's own
     temperatures along its path are not given: the case's temperature must be uniform."""
     key = f"drivetrain.stages '{section.name}'.gears"
-    backlash = mesh_law(model.dynamics.mesh).backlash
-    if backlash or solution_method(model.dynamics.method).from_rest:
-        raise CaseError("dynamics.mesh" if backlash else "dynamics.method",
-                        model.dynamics.mesh if backlash else model.dynamics.method,
-                        "'linear' mesh and a periodic method with [[drivetrain.stages]]",
-                        "the backlash orbit and the motion from rest of a drivetrain are solved for a single mesh")
     if not temperature_source(model.temperature.model).uniform:
         raise CaseError("temperature.model", model.temperature.model, "'uniform' with [[drivetrain.stages]]",
                         "a tabulated or computed flank temperature is given along the first stage's path of contact "

@@ -343,7 +343,6 @@ def _reducer_with(change) -> dict:
     (lambda d: d["drivetrain"]["stages"][0].update(pinion={"shaft": "output shaft", "position_mm": 50.0},
                                                    wheel={"shaft": "intermediate shaft", "position_mm": 150.0}),
      "drivetrain.stages 'stage 2'.pinion.shaft", "a shaft the train already drives"),
-    (lambda d: d["dynamics"].update(mesh="nonlinear"), "dynamics.mesh", "'linear'"),
     (lambda d: d["drivetrain"]["stages"][0].update(name="mesh"), "drivetrain names", "unique names"),
 ])
 def test_a_wrong_stage_is_refused_at_load(change, key, words):

@@ -63,14 +63,17 @@ def print_drivetrain(results, console, reason: str | None = None) -> None:
         rows.append(("largest |Floquet multiplier|", lambda m: m.largest_floquet_multiplier_abs, "{:.4f}", "–"))
     for label, value, pattern, unit in rows:
         response.add_row(label, *(_number(value(model), pattern) for model in models.values()), unit)
-    for stage in first.stages or {}:  # a train: each mesh over the common period
+    stages = next((model.stages for model in models.values() if model.stages), None) or {}
+    for stage in stages:  # a train: each mesh over the common period (none where a model's orbit was not found)
         response.add_section()
-        for label, value, pattern, unit in (
-                ("Kv", lambda s: s.kv, "{:.4f}", "–"), ("DTE RMS", lambda s: _micro(s.dte_rms), "{:.3f}", "μm"),
-                ("DTE peak-to-peak", lambda s: _micro(s.dte_peak_to_peak), "{:.3f}", "μm"),
-                ("largest mesh force", lambda s: s.max_mesh_force_n, "{:.1f}", "N")):
-            response.add_row(f"{stage}: {label}", *(_number(value(model.stages[stage]), pattern)
-                                                    for model in models.values()), unit)
+        lines = [("Kv", lambda s: s.kv, "{:.4f}", "–"), ("DTE RMS", lambda s: _micro(s.dte_rms), "{:.3f}", "μm"),
+                 ("DTE peak-to-peak", lambda s: _micro(s.dte_peak_to_peak), "{:.3f}", "μm"),
+                 ("largest mesh force", lambda s: s.max_mesh_force_n, "{:.1f}", "N")]
+        if results.backlash_mesh:  # each mesh's own dead zone
+            lines.append(("time without contact", lambda s: _percent(s.contact_loss_fraction), "{:.2f}", "%"))
+        for label, value, pattern, unit in lines:
+            response.add_row(f"{stage}: {label}", *(_number(value(model.stages[stage]) if model.stages else None,
+                                                            pattern) for model in models.values()), unit)
     if results.backlash_mesh:
         response.add_row("time without contact", *(_number(_percent(model.contact_loss_fraction), "{:.2f}")
                                                    for model in models.values()), "%")

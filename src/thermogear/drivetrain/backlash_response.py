@@ -31,22 +31,22 @@ from typing import Any
 
 import numpy as np
 
-from thermogear.dynamics.metrics import dynamic_factor
 from thermogear.drivetrain.assembly import AssembledDrivetrain
-from thermogear.drivetrain.response import bearing_force_spectrum, bearing_forces, drivetrain_backlash_system
+from thermogear.drivetrain.response import (MeshResponse, bearing_force_spectrum, bearing_forces,
+                                            drivetrain_backlash_system)
+from thermogear.drivetrain.sampled_period import (SampledMotion, mesh_contacts, mesh_trajectory,  # noqa: F401
+                                                  sampled_metrics, sampled_motion, train_mesh_responses)
 from thermogear.drivetrain.static_state import bearing_moments
-from thermogear.dynamics.backlash_ndof import (BACK_CONTACT, DRIVING_CONTACT, FREE_FLIGHT, WATCH_STARTUP,
-                                               BacklashSystem, DeadZone, backlash_periodic_orbit)
+from thermogear.drivetrain.train import MeshTrain
+from thermogear.dynamics.backlash_ndof import WATCH_STARTUP, BacklashSystem, backlash_periodic_orbit
 from thermogear.dynamics.backlash_orbits_ndof import StartupOrbit, startup_orbit
 from thermogear.dynamics.backlash_trajectory import BacklashTrajectory, backlash_trajectory
-from thermogear.dynamics.metrics import sampled_load
-from thermogear.dynamics.spectra import time_mean_and_rms
 from thermogear.errors import CaseError, ModelLimitError, ProblemError
 from thermogear.mesh.state import MeshState
 
 __all__ = ["SHOOTING_TOLERANCE", "DrivetrainBacklashResponse", "PeriodForces", "SampledMotion", "bearing_forces",
-           "drivetrain_backlash_response", "one_blas_thread", "orbit_summary", "reduced_backlash_system",
-           "sampled_metrics", "sampled_motion"]
+           "drivetrain_backlash_response", "mesh_trajectory", "one_blas_thread", "orbit_summary",
+           "reduced_backlash_system", "sampled_metrics", "sampled_motion", "train_mesh_responses"]
 
 
 #: Relative residual |φ_T(z₀) − z₀| the shooting must reach. A drivetrain's stiff coordinates leave a rounding floor
@@ -64,7 +64,9 @@ class DrivetrainBacklashResponse:
     (S, DOFs) [SI]; ``region`` (S,) the mesh's contact region; Floquet ``multipliers``; ``converged``; ``failure``
     why not ('' when converged); ``switches`` of the mesh per period; ``contact_loss_fraction`` and
     ``back_contact_fraction`` [-]; ``metrics``; ``period`` [s]; ``notes`` what the reader must know (two coexisting
-    orbits, a start-up that settled on none)."""
+    orbits, a start-up that settled on none); a train (several meshes): ``period`` the common period, the fields
+    above the first mesh's and ``meshes`` each mesh's δ, force and metrics (contact loss of its own dead zone)
+    by name."""
 
     time: np.ndarray
     transmission_error: np.ndarray
@@ -83,6 +85,7 @@ class DrivetrainBacklashResponse:
     period: float
     notes: tuple[str, ...] = ()
     bearing_moments: dict[str, np.ndarray] = field(default_factory=dict)  # name → (S, 2) [N·m] about x, y
+    meshes: dict[str, MeshResponse] = field(default_factory=dict)
 
     @property
     def stable(self) -> bool:
@@ -140,13 +143,12 @@ def reduced_backlash_system(system: BacklashSystem, cutoff_hz: float):
         raise CaseError("cutoff_hz", cutoff_hz, "> 0 Hz, finite", "the highest mode frequency kept")
     basis = modal_basis(system.linear, 2.0 * math.pi * cutoff_hz, [zone.vector for zone in system.dead_zones])
     b = basis.basis
-    zones = tuple(DeadZone(b.T @ zone.vector, zone.stiffness, zone.damping, zone.clearance)
-                  for zone in system.dead_zones)
+    zones = tuple(replace(zone, vector=b.T @ zone.vector) for zone in system.dead_zones)
     return BacklashSystem(basis.reduce(system.linear), b.T @ system.mesh_vector, system.deviation, system.backlash,
                           zones), basis
 
 
-def drivetrain_backlash_response(assembled: AssembledDrivetrain, state: MeshState,
+def drivetrain_backlash_response(assembled: AssembledDrivetrain, state: MeshState | MeshTrain,
                                  initial_state: np.ndarray | None = None, substeps: int = 16,
                                  samples_per_piece: int = 8, cutoff_hz: float | None = None,
                                  tolerance: float = SHOOTING_TOLERANCE,
@@ -257,120 +259,37 @@ def orbit_summary(response: DrivetrainBacklashResponse) -> dict[str, Any]:
             if response.multipliers.size else None, "stable": response.stable}
 
 
-def _expanded(reduction, basis, values: np.ndarray) -> np.ndarray:
-    """(S, m) solver coordinates → (S, DOFs)."""
-    values = values.T
-    if basis is not None:
-        values = basis.expand(values)
-    return reduction.expand(values).T
-
-
-def _failed(state: MeshState, failure: str, bearings: list[str]) -> DrivetrainBacklashResponse:
+def _failed(state: MeshState | MeshTrain, failure: str, bearings: list[str]) -> DrivetrainBacklashResponse:
     """A response that carries no motion, only why."""
+    period = state.period if isinstance(state, MeshTrain) else state.problem().period
+    state = state.states[0] if isinstance(state, MeshTrain) else state
     empty = np.zeros(0)
     metrics = {"static_load": state.normal_load, "kv": None, "valid": False, "converged": False, "stable": False,
                "bearings": bearings}
     return DrivetrainBacklashResponse(empty, empty, empty, empty, {}, np.zeros((0, 0)), np.zeros(0, dtype=int),
-                                      empty, False, failure, 0, math.nan, math.nan, metrics,
-                                      state.problem().period)
+                                      empty, False, failure, 0, math.nan, math.nan, metrics, period)
 
 
 def _response(assembled: AssembledDrivetrain, state: MeshState, system: BacklashSystem, reduction, basis,
               trajectory: BacklashTrajectory, initial_state: np.ndarray, multipliers: np.ndarray, converged: bool,
               failure: str, switches: int) -> DrivetrainBacklashResponse:
-    """The sampled orbit expanded to every DOF, with δ, the forces and the metrics."""
-    problem = state.problem()
-    motion = sampled_motion(assembled, problem, reduction, basis, trajectory, system.deviation, system.backlash)
-    metrics = sampled_metrics(problem, trajectory, motion, multipliers, converged)
+    """The sampled orbit expanded to every DOF, with δ, the forces and the metrics (of every mesh of a train)."""
+    meshes = {}
+    if isinstance(state, MeshTrain) and len(state.states) > 1:
+        meshes, motion = train_mesh_responses(assembled, state, reduction, basis, mesh_contacts(system, trajectory),
+                                              multipliers, converged)
+        metrics = dict(next(iter(meshes.values())).metrics)
+        period = state.period
+    else:
+        state = state.states[0] if isinstance(state, MeshTrain) else state
+        problem = state.problem()
+        motion = sampled_motion(assembled, problem, reduction, basis, trajectory, system.deviation, system.backlash)
+        metrics = sampled_metrics(problem, trajectory, motion, multipliers, converged)
+        period = problem.period
     metrics["initial_state"] = [float(value) for value in initial_state]
-    period = problem.period
     return DrivetrainBacklashResponse(trajectory.time, motion.transmission_error, motion.transmission_error_rate,
                                       motion.mesh_force, motion.bearing_forces, motion.displacement,
                                       trajectory.region, multipliers, bool(converged), failure, int(switches),
                                       trajectory.free_flight_time / period, trajectory.back_contact_time / period,
-                                      metrics, period, bearing_moments=bearing_moments(assembled, motion.displacement))
-
-
-@dataclass(frozen=True, eq=False)
-class SampledMotion:
-    """A sampled motion on every DOF: ``displacement`` (S, DOFs), δ = wᵀq [m] and its rate [m/s], the
-    ``mesh_force`` k_j·φ(g) + c_j·ġ and its elastic part k_j·φ(g) [N], ``bearing_forces`` name → (S, 3) [N]."""
-
-    displacement: np.ndarray
-    transmission_error: np.ndarray
-    transmission_error_rate: np.ndarray
-    mesh_force: np.ndarray
-    elastic_force: np.ndarray
-    bearing_forces: dict[str, np.ndarray]
-
-
-def sampled_motion(assembled: AssembledDrivetrain, problem, reduction, basis, trajectory: BacklashTrajectory,
-                   deviation: np.ndarray, backlash: float) -> SampledMotion:
-    """The trajectory (in the solver's coordinates) on every DOF with δ and the forces of the module docstring;
-    ``deviation`` ē_j [m] per piece and the ``backlash`` b [m] of the mesh coordinate g = δ − ē_j."""
-    displacement = _expanded(reduction, basis, trajectory.displacement)
-    velocity = _expanded(reduction, basis, trajectory.velocity)
-    w = assembled.mesh_vectors[0]
-    delta, rate = displacement @ w, velocity @ w
-    piece, region = trajectory.piece, trajectory.region
-    gap = delta - deviation[piece]
-    elastic = np.where(region == DRIVING_CONTACT, gap, np.where(region == BACK_CONTACT, gap + backlash, 0.0))
-    elastic = problem.stiffness[piece] * elastic
-    return SampledMotion(displacement, delta, rate, elastic + problem.damping[piece] * rate, elastic,
-                         bearing_forces(assembled, displacement, velocity))
-
-
-def sampled_metrics(problem, trajectory: BacklashTrajectory, motion: SampledMotion, multipliers: np.ndarray,
-                    converged: bool) -> dict[str, Any]:
-    """The module docstring's metrics of one sampled period (of an orbit, or the last of a motion)."""
-    delta, rate, elastic = motion.transmission_error, motion.transmission_error_rate, motion.elastic_force
-    w0, period, piece = problem.static_load, problem.period, trajectory.piece
-    driving = trajectory.region == DRIVING_CONTACT
-    pair = problem.pair_arrays()
-    if pair is not None:
-        loads = sampled_load(pair[0], pair[1], problem.pair_offset, piece, delta, rate, False)
-        max_pair, basis = float(np.max(np.where(driving[None, :], loads, 0.0))), "pair_loads"
-    elif np.any(problem.contact_count == 1):
-        single = problem.contact_count[piece] == 1
-        max_pair, basis = float(np.max(np.where(single & driving, elastic, 0.0))), "system_load_in_single_contact"
-    else:
-        max_pair, basis = None, "unavailable: no pair stiffness and no single-contact interval"
-    mean, rms = time_mean_and_rms(trajectory.time, delta)
-    moduli = np.sort(np.abs(np.asarray(multipliers)))[::-1]
-    stable = bool(converged and moduli.size and moduli[0] < 1.0)
-    free = trajectory.region == FREE_FLIGHT
-    starts, durations = _runs(trajectory.time, free)
-    max_system = float(np.max(elastic))
-    metrics: dict[str, Any] = {
-        "static_load": w0, "static_load_n_per_mm": w0 / problem.face_width / 1e3,
-        "kv": None if max_pair is None else dynamic_factor(max_pair, w0), "kv_basis": basis, "max_pair_load": max_pair,
-        "max_pair_load_n_per_mm": None if max_pair is None else max_pair / problem.face_width / 1e3,
-        "max_system_load": max_system, "max_system_load_n_per_mm": max_system / problem.face_width / 1e3,
-        "max_system_load_ratio": max_system / w0,
-        "dte_mean": mean, "dte_rms": rms, "dte_peak_to_peak": float(np.ptp(delta)),
-        "max_velocity": float(np.max(np.abs(rate))),
-        "natural_frequency_hz": problem.natural_frequency, "mesh_frequency_hz": problem.mesh_frequency,
-        "frequency_ratio": problem.frequency_ratio,
-        "floquet_multipliers_abs": [float(m) for m in moduli], "converged": bool(converged), "stable": stable,
-        "contact_loss": {"detected": bool(trajectory.free_flight_time > 0.0), "start_times": starts,
-                         "durations": durations,
-                         "total_duration": float(trajectory.free_flight_time / trajectory.periods),
-                         "min_force": float(np.min(elastic)), "min_force_ratio": float(np.min(elastic) / w0)},
-        "contact_loss_fraction": float(trajectory.free_flight_time / (period * trajectory.periods)),
-        "back_side_contact": bool(trajectory.back_contact_time > 0.0),
-        "back_contact_fraction": float(trajectory.back_contact_time / (period * trajectory.periods)),
-        "switches_per_period": float(trajectory.switches / trajectory.periods),
-    }
-    finite = all(math.isfinite(value) for value in (mean, rms, max_system) + (() if max_pair is None else (max_pair,)))
-    metrics["valid"] = bool(converged and stable and finite)
-    return metrics
-
-
-def _runs(time: np.ndarray, mask: np.ndarray) -> tuple[list[float], list[float]]:
-    """Start times and durations [s] of the runs of ``mask`` (a run ends at the first sample outside it, which a
-    switch's right-side sample places at the switch)."""
-    edges = np.diff(np.concatenate([[0], mask.astype(np.int8), [0]]))
-    first, last = np.flatnonzero(edges == 1), np.flatnonzero(edges == -1)
-    starts = [float(time[a]) for a in first]
-    durations = [float(time[min(b, time.size - 1)] - time[a]) for a, b in zip(first, last, strict=True)]
-    return starts, durations
+                                      metrics, period, meshes=meshes,
+                                      bearing_moments=bearing_moments(assembled, motion.displacement))

@@ -13,8 +13,9 @@ For each model: the lowest modes (undamped, mean mesh stiffness) with a label, t
 mesh, each bearing, shaft, coupling and support; the exact periodic response to one mesh period of the model's mesh
 state on the modes up to the section's ``response_cutoff_hz`` (:func:`~thermogear.drivetrain.response.
 drivetrain_periodic_response`): DTE, Kv, and per bearing the dynamic force on the housing (RMS of F − F̄ over the
-period, and the amplitude of the first mesh harmonics). The mesh is linear here (permanent contact): where the
-1-DOF nonlinear model finds the teeth separating, the drivetrain's response is the linear one and says so.
+period, and the amplitude of the first mesh harmonics). With the case's nonlinear mesh the backlash orbit (or the
+motion from rest) of every mesh's dead zone instead; a train of several meshes is solved over its common period
+(:mod:`thermogear.drivetrain.train`), each mesh its own dead zone.
 """
 
 from __future__ import annotations
@@ -112,11 +113,15 @@ class CaseDrivetrain:
                             for stage, factor in zip(self.stage_models[model], self.stage_speeds)]
         return MeshTrain(tuple(states), self.train_repeats, self.train_phases)
 
-    def _single_mesh(self, what: str) -> None:
-        if self.stage_speeds:
-            raise CaseError("drivetrain.stages", [stage.name for stage in self.section.stages],
-                            f"none for the {what}", f"the {what} is solved for a single mesh; run the train with the "
-                            "linear mesh and the periodic method")
+    def _pieces(self, state) -> int:
+        """The pieces of one period of a state (a train: of its common period, the union of its meshes' grids)."""
+        from thermogear.drivetrain.train import MeshTrain
+
+        if isinstance(state, MeshTrain) and len(state.states) > 1:
+            from thermogear.drivetrain.response import train_problems
+
+            return train_problems(state)[2].nodes.size - 1
+        return state.grid.nodes.size - 1
 
     @property
     def backlash_mesh(self) -> bool:
@@ -161,10 +166,9 @@ class CaseDrivetrain:
         linear cut-off's: 2.5e-4 on fzg_rig_type_c at 30 kHz; set the cut-off higher to approach every DOF)."""
         from thermogear.drivetrain.backlash_response import drivetrain_backlash_response
 
-        self._single_mesh("backlash orbit")
-        state = self.models[model].state(speed_rpm=speed_rpm, points_per_period=self.dynamics.points_per_period)
+        state = self.mesh_states(model, speed_rpm)
         return drivetrain_backlash_response(self.assembled(model), state, initial_state,
-                                            substeps=backlash_substeps(state.grid.nodes.size - 1),
+                                            substeps=backlash_substeps(self._pieces(state)),
                                             samples_per_piece=SAMPLES_PER_PIECE,
                                             cutoff_hz=self.section.response_cutoff_hz,
                                             startup_periods=self.dynamics.transient_periods)
@@ -174,11 +178,10 @@ class CaseDrivetrain:
         case's mesh is nonlinear, else permanent contact), solved as the periodic orbit (cut-off, sub-steps)."""
         from thermogear.drivetrain.transient_response import drivetrain_transient
 
-        self._single_mesh("motion from rest")
-        state = self.models[model].state(points_per_period=self.dynamics.points_per_period)
+        state = self.mesh_states(model)
         return drivetrain_transient(self.assembled(model), state, self.dynamics.transient_periods,
                                     backlash=self.backlash_mesh, samples_per_piece=SAMPLES_PER_PIECE,
-                                    substeps=backlash_substeps(state.grid.nodes.size - 1),
+                                    substeps=backlash_substeps(self._pieces(state)),
                                     cutoff_hz=self.section.response_cutoff_hz)
 
     def speed_responses(self, model: str, speeds_rpm: list[float], points_per_period: int,
@@ -306,6 +309,9 @@ def _backlash_result(response: DrivetrainBacklashResponse, harmonics: int, **com
         return None if not found or value is None or not math.isfinite(value) else value
 
     startup = metrics.get("startup") or {}
+    train = {}
+    if found and len(response.meshes) > 1:  # a train: each mesh over the common period, with its own contact
+        train = {"common_period_s": response.period, "stages": stage_results(response)}
     forces = (bearing_forces_of(response, harmonics, SPECTRUM_POINTS) if found
               else unknown_bearing_forces(response.bearing_names, response.period, harmonics))
     return DrivetrainBacklashResult(
@@ -316,18 +322,21 @@ def _backlash_result(response: DrivetrainBacklashResponse, harmonics: int, **com
         back_side_contact=bool(metrics.get("back_side_contact")) if found else None,
         back_contact_fraction=shown("back_contact_fraction"), switches_per_period=shown("switches_per_period"),
         reached_from=startup.get("reached_from"), branch=startup.get("branch"),
-        coexisting_orbits=tuple(startup.get("coexisting", [])), orbit_notes=tuple(response.notes), **common)
+        coexisting_orbits=tuple(startup.get("coexisting", [])), orbit_notes=tuple(response.notes), **train, **common)
 
 
 def _transient_result(transient: DrivetrainTransient, harmonics: int, **common) -> DrivetrainTransientResult:
     """The last period of the motion from rest: Kv, DTE, contact and bearing forces (no orbit: no multipliers)."""
     metrics = transient.last_period
+    train = {}
+    if len(transient.meshes) > 1:  # a train: each mesh's last period
+        train = {"common_period_s": transient.period, "stages": stage_results(transient)}
     return DrivetrainTransientResult(
         metrics["kv"], metrics["dte_rms"], metrics["dte_peak_to_peak"], None, None,
         bearing_forces_of(transient.last_period_forces, harmonics, SPECTRUM_POINTS), response=transient,
         transient_periods=transient.periods, contact_loss_fraction=metrics["contact_loss_fraction"],
         back_side_contact=metrics["back_side_contact"], back_contact_fraction=metrics["back_contact_fraction"],
-        **common)
+        **train, **common)
 
 
 def mesh_modes_above(built: CaseDrivetrain, model: str, rows: tuple[ModeRow, ...]) -> tuple[ModeRow, ...]:

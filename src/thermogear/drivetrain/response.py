@@ -26,7 +26,7 @@ import numpy as np
 from thermogear.drivetrain.assembly import AssembledDrivetrain
 from thermogear.drivetrain.static_state import bearing_moments, mesh_torque_forces
 from thermogear.drivetrain.train import MeshTrain, TrainGrid, train_grid
-from thermogear.dynamics.backlash_ndof import BacklashSystem
+from thermogear.dynamics.backlash_ndof import BacklashSystem, MeshZone
 from thermogear.dynamics.metrics import compute_metrics
 from thermogear.dynamics.periodic_ndof import PiecewiseLinearSystem, periodic_response
 from thermogear.dynamics.rigid_body import RigidBodyReduction, rigid_body_reduction
@@ -34,7 +34,7 @@ from thermogear.dynamics.spectra import harmonic_spectrum
 from thermogear.errors import CaseError
 from thermogear.mesh.state import MeshState
 
-__all__ = ["DrivetrainResponse", "MeshResponse", "bearing_force_spectrum", "bearing_forces", "drivetrain_backlash_system", "drivetrain_periodic_system",
+__all__ = ["DrivetrainResponse", "MeshResponse", "train_problems", "bearing_force_spectrum", "bearing_forces", "drivetrain_backlash_system", "drivetrain_periodic_system",
            "drivetrain_periodic_response", "drivetrain_speed_sweep"]
 
 
@@ -105,7 +105,7 @@ def _periodic_system(assembled: AssembledDrivetrain, train: MeshTrain, problems,
 
 
 def drivetrain_backlash_system(assembled: AssembledDrivetrain,
-                               state: MeshState) -> tuple[BacklashSystem, RigidBodyReduction]:
+                               state: MeshState | MeshTrain) -> tuple[BacklashSystem, RigidBodyReduction]:
     """The drivetrain with the backlash mesh: one dead-zone coordinate g = wᵀq − ē_j of the normal backlash of the
     state (solve with :func:`thermogear.dynamics.backlash_ndof.backlash_periodic_orbit`).
 
@@ -113,17 +113,27 @@ def drivetrain_backlash_system(assembled: AssembledDrivetrain,
     mesh separates at once (unlike the 1-DOF backlash model, where each pair leaves contact on its own); the back
     flanks take the driving flanks' stiffness. Without deviations the two descriptions coincide. A bearing with a
     ``radial_clearance`` adds a dead zone in x and one in y (:class:`~thermogear.dynamics.backlash_ndof.DeadZone`).
+
+    A train (:class:`~thermogear.drivetrain.train.MeshTrain`): every mesh has its own dead zone of its own normal
+    backlash, deviation and stiffness factor on the pieces of the common period; the first mesh is the system's own,
+    each further one a :class:`~thermogear.dynamics.backlash_ndof.MeshZone` of its column (listed before the
+    bearings' clearances).
     """
-    if isinstance(state, MeshTrain) or len(assembled.drivetrain.meshes) != 1:
-        raise CaseError("dynamics.mesh", "nonlinear", "'linear' for a train of several meshes",
-                        "the backlash orbit is solved for one mesh's dead zone (and the bearings' clearances)")
-    if state.backlash is None:
-        raise CaseError("backlash", None, "a mesh state whose backlash is known", "the dead zone needs its width")
+    states = state.states if isinstance(state, MeshTrain) else (state,)
+    for index, item in enumerate(states):
+        if item.backlash is None:
+            raise CaseError("backlash", None, "a mesh state whose backlash is known",
+                            f"the dead zone of mesh {index + 1} needs its width")
     linear, reduction = drivetrain_periodic_system(assembled, state)
-    excitation = linear.force_factor
-    deviation = excitation / linear.stiffness_factor
     zones = [replace(zone, vector=reduction.project_vector(zone.vector)) for _, zone in assembled.dead_zones]
-    return BacklashSystem(linear, linear.force_pattern, deviation, state.backlash, tuple(zones)), reduction
+    if linear.pattern_count == 1:
+        deviation = linear.force_factor / linear.stiffness_factor
+        return BacklashSystem(linear, linear.force_pattern, deviation, states[0].backlash, tuple(zones)), reduction
+    deviation = linear.force_factor / linear.stiffness_factor  # (N, M): each mesh's e_j = Σk_ie_i / Σk_i
+    meshes = [MeshZone(linear.force_pattern[m], m, deviation[:, m], states[m].backlash)
+              for m in range(1, linear.pattern_count)]
+    return BacklashSystem(linear, linear.force_pattern[0], deviation[:, 0], states[0].backlash,
+                          tuple(meshes) + tuple(zones)), reduction
 
 
 @dataclass(frozen=True, eq=False)
@@ -226,6 +236,14 @@ def drivetrain_speed_sweep(assembled: AssembledDrivetrain, states: Sequence[Mesh
             system = basis.reduce(system)
         responses.append(_response(assembled, train, problems, grid, system, reduction, basis, samples_per_piece))
     return responses
+
+
+def train_problems(train: MeshTrain) -> tuple[tuple, tuple, TrainGrid]:
+    """(each mesh's problem with its per-interval arrays on the train's common pieces, each mesh's own problem over
+    its own period, the common grid), for the metrics of each mesh of a train."""
+    problems = tuple(item.problem() for item in train.states)
+    grid = _grid(train, problems)
+    return tuple(_on_grid(problem, grid, m) for m, problem in enumerate(problems)), problems, grid
 
 
 def _on_grid(problem, grid: TrainGrid, column: int):

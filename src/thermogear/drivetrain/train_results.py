@@ -31,14 +31,21 @@ class StageResult:
     dte_peak_to_peak: float
     max_mesh_force_n: float
     mesh_frequency_hz: float
+    contact_loss_fraction: float | None = None  # the backlash mesh: the mesh's own time off and on its back flanks
+    back_contact_fraction: float | None = None
 
     def as_json(self) -> dict[str, Any]:
+        contact = {} if self.contact_loss_fraction is None else {
+            "contact_loss_fraction": self.contact_loss_fraction, "back_contact_fraction": self.back_contact_fraction}
         return {"kv": self.kv, "dte_rms_um": self.dte_rms * 1e6, "dte_peak_to_peak_um": self.dte_peak_to_peak * 1e6,
-                "max_mesh_force_n": self.max_mesh_force_n, "mesh_frequency_hz": self.mesh_frequency_hz}
+                "max_mesh_force_n": self.max_mesh_force_n, "mesh_frequency_hz": self.mesh_frequency_hz, **contact}
 
 
 def stage_results(response) -> Mapping[str, StageResult]:
-    """Per mesh of a train's periodic response (``response.meshes``): its :class:`StageResult`."""
+    """Per mesh of a train's response (``response.meshes``: periodic, backlash orbit or last period from rest):
+    its :class:`StageResult` (with the backlash mesh, its own contact loss)."""
     return MappingProxyType({name: StageResult(item.metrics["kv"], item.metrics["dte_rms"],
                                                item.metrics["dte_peak_to_peak"], float(np.max(item.mesh_force)),
-                                               1.0 / item.mesh_period) for name, item in response.meshes.items()})
+                                               1.0 / item.mesh_period, item.metrics.get("contact_loss_fraction"),
+                                               item.metrics.get("back_contact_fraction"))
+                             for name, item in response.meshes.items()})

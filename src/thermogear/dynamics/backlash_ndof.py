@@ -17,6 +17,10 @@ u = vᵀq that act only beyond ±δ. Their dashpot stops at a switch, so the vec
 takes the saltation matrix S = I + (f⁺ − f⁻) nᵀ/(nᵀf⁻) at each of their switches (n = [v; 0] the boundary's
 normal, f∓ the vector fields on either side; Leine & Nijmeijer 2004, §7.2).
 
+A train's further meshes (:class:`MeshZone`): each the same dead zone law on its own coordinate wᵀ_m q − e_mj, its
+stiffness and damping a further pattern of the linear system (column m of its factors); in free flight its stiffness
+factor is zero and its damping acts on, so its switches, like the system's own mesh's, need no saltation matrix.
+
 Limits: a double crossing inside one sub-step (grazing) is not seen; take ``substeps`` so that a sub-step is short
 against the fastest mode the mesh coordinate takes part in.
 """
@@ -28,12 +32,13 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from thermogear.dynamics.backlash_pieces import PieceExponentials, contact_state_system
-from thermogear.dynamics.backlash_switches import DeadZone, count_crossings, first_switch, odd_crossings, saltation
+from thermogear.dynamics.backlash_switches import DeadZone, MeshZone, count_crossings, first_switch, odd_crossings, saltation
 from thermogear.dynamics.periodic_ndof import PiecewiseLinearSystem, periodic_response
 from thermogear.dynamics.problem import checked_array
 from thermogear.errors import ModelLimitError, ProblemError
 
-__all__ = ["BACK_CONTACT", "DRIVING_CONTACT", "FREE_FLIGHT", "STARTUP_MOTION", "WATCH_STARTUP", "BacklashSystem", "BacklashOrbitNDOF", "DeadZone",
+__all__ = ["BACK_CONTACT", "DRIVING_CONTACT", "FREE_FLIGHT", "STARTUP_MOTION", "WATCH_STARTUP", "BacklashSystem",
+           "BacklashOrbitNDOF", "DeadZone", "MeshZone",
            "backlash_flow_ndof", "backlash_periodic_orbit", "odd_crossings", "piece_exponentials",
            "switch_free_record"]
 
@@ -56,13 +61,19 @@ class BacklashSystem:
 
     def __post_init__(self) -> None:
         n, pieces = self.linear.size, self.linear.nodes.size - 1
-        if self.linear.pattern_count != 1:  # the shooting follows one mesh coordinate's dead zone
-            raise ProblemError("linear", f"{self.linear.pattern_count} meshes", "one mesh", "one backlash coordinate")
         object.__setattr__(self, "dead_zones", tuple(self.dead_zones))
         for zone in self.dead_zones:
-            if not isinstance(zone, DeadZone) or zone.vector.shape != (n,):
-                raise ProblemError("dead_zones", type(zone).__name__, f"DeadZone with a vector of {n} entries",
+            if not isinstance(zone, (DeadZone, MeshZone)) or zone.vector.shape != (n,):
+                raise ProblemError("dead_zones", type(zone).__name__,
+                                   f"DeadZone or MeshZone with a vector of {n} entries",
                                    "one entry per DOF of the linear system")
+        columns = sorted(zone.column for zone in self.dead_zones if isinstance(zone, MeshZone))
+        if columns != list(range(1, self.linear.pattern_count)):  # the own mesh is column 0, the train's the others
+            raise ProblemError("linear", f"{self.linear.pattern_count} meshes", f"1 + {len(columns)} MeshZone(s)",
+                               "each further mesh pattern of the linear system is a MeshZone of its column")
+        for zone in self.dead_zones:
+            if isinstance(zone, MeshZone) and zone.deviation.shape != (pieces,):
+                raise ProblemError("mesh_zone.deviation", zone.deviation.shape, f"({pieces},)", "one per piece")
         object.__setattr__(self, "mesh_vector", checked_array("mesh_vector", self.mesh_vector, (n,), "one per DOF"))
         object.__setattr__(self, "deviation", checked_array("deviation", self.deviation, (pieces,)))
         if not np.isfinite(self.backlash) or self.backlash <= 0.0:
@@ -95,15 +106,16 @@ class BacklashSystem:
             return False
         for index, (zone, side) in enumerate(zip(self.dead_zones, sides)):
             value, speed = values[:, 2 + 2 * index], values[:, 3 + 2 * index]
-            above = (value > zone.clearance) | ((value == zone.clearance) & (speed > 0.0))
-            below = (value < -zone.clearance) | ((value == -zone.clearance) & (speed < 0.0))
+            upper, lower = zone.bounds(piece)
+            above = (value > upper) | ((value == upper) & (speed > 0.0))
+            below = (value < lower) | ((value == lower) & (speed < 0.0))
             if not np.all(above if side > 0 else below if side < 0 else ~(above | below)):
                 return False
         return True
 
-    def sides(self, state: np.ndarray) -> tuple[int, ...]:
-        """The side of every dead zone (:meth:`DeadZone.side`)."""
-        return tuple(zone.side(state, self.linear.size) for zone in self.dead_zones)
+    def sides(self, state: np.ndarray, piece: int = 0) -> tuple[int, ...]:
+        """The side of every dead zone on a piece (:meth:`DeadZone.side`, :meth:`MeshZone.side`)."""
+        return tuple(zone.side(state, self.linear.size, piece) for zone in self.dead_zones)
 
     def region(self, state: np.ndarray, piece: int) -> int:
         """Contact region of a state (n-DOF displacement first) on a piece, by g and, on a boundary, by ġ."""
@@ -145,7 +157,7 @@ def backlash_flow_ndof(system: BacklashSystem, state: np.ndarray, substeps: int 
     for piece in range(linear.nodes.size - 1):
         start, stop = linear.nodes[piece], linear.nodes[piece + 1]
         step = (stop - start) / substeps
-        previous, key = key, (system.region(z, piece), system.sides(z))  # at a node the deviation steps: afresh
+        previous, key = key, (system.region(z, piece), system.sides(z, piece))  # at a node the deviation steps: afresh
         if previous is not None:
             count_crossings(info["crossings"], previous, key)
         full_step = pieces.step(piece, key)
@@ -176,7 +188,7 @@ def backlash_flow_ndof(system: BacklashSystem, state: np.ndarray, substeps: int 
             matrix, full_step = pieces.matrix(piece, key), pieces.step(piece, key)
             h = min(step, stop - t)
             trial = (full_step if h == step else expm(matrix * h)) @ z
-            after = (system.region(trial, piece), system.sides(trial))
+            after = (system.region(trial, piece), system.sides(trial, piece))
             following, zone = key, None
             if after != key:
                 h, following, zone, switched, seen = first_switch(system, piece, key, after, matrix, z, h,
@@ -194,7 +206,7 @@ def backlash_flow_ndof(system: BacklashSystem, state: np.ndarray, substeps: int 
                 elif key[0] == _BACK:
                     info["back_contact_time"] += h
                 t += h
-            if zone is not None and monodromy:  # the dead zone's dashpot starts or stops: the vector field jumps
+            if zone is not None and monodromy and system.dead_zones[zone].jumps:  # its dashpot starts or stops
                 product.append(saltation(matrix, pieces.matrix(piece, following), system.dead_zones[zone].vector, z))
             if record:
                 info["time"].append(t)
@@ -308,11 +320,13 @@ def _switch_free_orbit(system: BacklashSystem, substeps: int, tolerance: float, 
     key = (system.region(start, 0), system.sides(start))
     if key[0] != _DRIVE:
         return start, None
-    if any(zone.clearance > 0.0 for zone in system.dead_zones):  # the clearances' forces: another system
+    if any(not side == 1 for zone, side in zip(system.dead_zones, key[1]) if isinstance(zone, MeshZone)):
+        return start, None  # a further mesh out of driving contact in the linear state: no switch-free orbit
+    if any(zone.opens() for zone in system.dead_zones):  # the clearances' forces: another system
         # each loaded clearance closed on the side its load pushes it to (the sign of its deflection in the linear
         # state): the contact state of a shaft that rests in its bearings
         n = system.linear.size
-        key = (_DRIVE, tuple(1 if zone.vector @ start[:n] >= 0.0 else -1 for zone in system.dead_zones))
+        key = (_DRIVE, tuple(zone.resting_side(zone.vector @ start[:n]) for zone in system.dead_zones))
         try:
             response = periodic_response(contact_state_system(system, key), substeps)
         except ModelLimitError:

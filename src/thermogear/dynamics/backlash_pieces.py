@@ -40,16 +40,30 @@ def contact_state_system(system, key: tuple) -> PiecewiseLinearSystem:
     linear = system.linear
     region, sides = key
     stiffness, damping, force = linear.stiffness, linear.damping, linear.force
+    meshes = []  # (column, side) of the train's further meshes
     for zone, side in zip(system.dead_zones, sides):
-        if side == 0:
+        if hasattr(zone, "column"):
+            meshes.append((zone, side))
+        elif side == 0:
             pattern = np.outer(zone.vector, zone.vector)
             stiffness, damping = stiffness - zone.stiffness * pattern, damping - zone.damping * pattern
         else:
             force = force + side * zone.stiffness * zone.clearance * zone.vector
-    factor = np.zeros_like(linear.stiffness_factor) if region == _FREE else linear.stiffness_factor
-    shift = system.deviation - (system.backlash if region == _BACK else 0.0)
-    return replace(linear, stiffness=stiffness, damping=damping, force=force, force_pattern=system.mesh_vector,
-                   stiffness_factor=factor, force_factor=factor * shift)
+    if linear.pattern_count == 1:
+        factor = np.zeros_like(linear.stiffness_factor) if region == _FREE else linear.stiffness_factor
+        shift = system.deviation - (system.backlash if region == _BACK else 0.0)
+        return replace(linear, stiffness=stiffness, damping=damping, force=force, force_pattern=system.mesh_vector,
+                       stiffness_factor=factor, force_factor=factor * shift)
+    # a train: every mesh its own column, each zeroed in free flight and shifted by its backlash on the back flanks
+    factors, forces = linear.stiffness_factor.copy(), np.empty_like(linear.stiffness_factor)
+    columns = [(0, region == _FREE, region == _BACK, system.deviation, system.backlash)]
+    columns += [(zone.column, side == 0, side == -1, zone.deviation, zone.backlash) for zone, side in meshes]
+    for column, free, back, deviation, backlash in columns:
+        if free:
+            factors[:, column] = 0.0
+        forces[:, column] = factors[:, column] * (deviation - (backlash if back else 0.0))
+    return replace(linear, stiffness=stiffness, damping=damping, force=force, stiffness_factor=factors,
+                   force_factor=forces)
 
 
 class PieceExponentials:
@@ -74,10 +88,17 @@ class PieceExponentials:
             constant[n:2 * n, :n] = -inverse @ variant.stiffness
             constant[n:2 * n, n:2 * n] = -inverse @ variant.damping
             constant[n:2 * n, 2 * n] = inverse @ variant.force
-            patterns = np.zeros((3, 2 * n + 1, 2 * n + 1))
-            patterns[0, n:2 * n, :n] = -inverse @ variant.stiffness_pattern
-            patterns[1, n:2 * n, n:2 * n] = -inverse @ variant.damping_pattern
-            patterns[2, n:2 * n, 2 * n] = inverse @ variant.force_pattern
+            if variant.pattern_count == 1:
+                patterns = np.zeros((3, 2 * n + 1, 2 * n + 1))
+                patterns[0, n:2 * n, :n] = -inverse @ variant.stiffness_pattern
+                patterns[1, n:2 * n, n:2 * n] = -inverse @ variant.damping_pattern
+                patterns[2, n:2 * n, 2 * n] = inverse @ variant.force_pattern
+            else:  # a train: one set of three per mesh (M, 2n+1, 2n+1)
+                count = variant.pattern_count
+                patterns = np.zeros((3, count, 2 * n + 1, 2 * n + 1))
+                patterns[0, :, n:2 * n, :n] = -inverse @ variant.stiffness_pattern
+                patterns[1, :, n:2 * n, n:2 * n] = -inverse @ variant.damping_pattern
+                patterns[2, :, n:2 * n, 2 * n] = variant.force_pattern @ inverse.T
             self._systems[key] = (variant, constant, patterns)
         return self._systems[key]
 
@@ -113,6 +134,10 @@ class PieceExponentials:
     def matrix(self, piece: int, key: tuple) -> np.ndarray:
         """The augmented matrix [[A_j, b_j], [0, 0]] of one piece in one contact state."""
         variant, constant, patterns = self._state(key)
+        if patterns.ndim == 4:  # a train: the factors of every mesh
+            return (constant + np.tensordot(variant.stiffness_factor[piece], patterns[0], 1)
+                    + np.tensordot(variant.damping_factor[piece], patterns[1], 1)
+                    + np.tensordot(variant.force_factor[piece], patterns[2], 1))
         return (constant + variant.stiffness_factor[piece] * patterns[0]
                 + variant.damping_factor[piece] * patterns[1] + variant.force_factor[piece] * patterns[2])
 

@@ -1,5 +1,5 @@
 """Contact switches of a backlash flow (:mod:`thermogear.dynamics.backlash_ndof`): the dead zones beside the mesh's
-(:class:`DeadZone`); the first boundary a segment crosses, located by Brent's method on the exact solution; the saltation matrix at a dead zone's switch; and the
+(:class:`DeadZone`) and the further meshes of a train (:class:`MeshZone`); the first boundary a segment crosses, located by Brent's method on the exact solution; the saltation matrix at a dead zone's switch; and the
 count of boundary crossings per period, whose parity tells a closed orbit from a point where a switch was missed.
 Knows nothing of gears: matrices only.
 """
@@ -13,7 +13,7 @@ import numpy as np
 from thermogear.dynamics.backlash_pieces import exponential_action
 from thermogear.errors import ProblemError
 
-__all__ = ["DeadZone", "count_crossings", "first_switch", "odd_crossings", "saltation"]
+__all__ = ["DeadZone", "MeshZone", "count_crossings", "first_switch", "odd_crossings", "saltation"]
 
 _DRIVE, _FREE, _BACK = 0, 1, 2  # as thermogear.dynamics.backlash_ndof (which imports this module)
 
@@ -45,12 +45,76 @@ class DeadZone:
         return (np.where(beyond, value - np.sign(value) * self.clearance, 0.0),
                 np.where(beyond, rate, 0.0))
 
-    def side(self, state: np.ndarray, size: int) -> int:
+    #: the dashpot stops at a switch: the vector field jumps (saltation matrix)
+    jumps = True
+
+    def bounds(self, piece=0) -> tuple[float, float]:
+        """The boundaries (+δ, −δ) of u on a piece (the same on every piece)."""
+        return self.clearance, -self.clearance
+
+    def opens(self) -> bool:
+        """Whether the linear system (the element in contact, no gap) differs from the element's contact law."""
+        return self.clearance > 0.0
+
+    def resting_side(self, value: float) -> int:
+        """The side a static deflection u = ``value`` pushes the element to (+1 at u >= 0, else −1)."""
+        return 1 if value >= 0.0 else -1
+
+    def side(self, state: np.ndarray, size: int, piece: int = 0) -> int:
         """+1 or −1 in contact beyond +δ or −δ, 0 inside the clearance (on a boundary, by the rate)."""
         value, rate = self.vector @ state[:size], self.vector @ state[size:2 * size]
         if value > self.clearance or (value == self.clearance and rate > 0.0):
             return 1
         if value < -self.clearance or (value == -self.clearance and rate < 0.0):
+            return -1
+        return 0
+
+
+@dataclass(frozen=True, eq=False)
+class MeshZone:
+    """A further mesh of a train beside the :class:`~thermogear.dynamics.backlash_ndof.BacklashSystem`'s own: the
+    dead zone of width ``backlash`` b [m] on g = vᵀq − e_j (``vector`` v, ``deviation`` e_j (N,) [m] per piece),
+    whose stiffness k_j and damping c_j are column ``column`` of the linear system's multi-pattern factors (the mesh
+    in driving contact, force factor k_j·e_j). Side +1: driving flanks (g > 0); 0: free flight (−b <= g <= 0, the
+    stiffness factor 0, the damping acting throughout as for the system's own mesh); −1: back flanks (g < −b,
+    force factor k_j(e_j − b)). As the system's own mesh, the force k_j·φ(g) is continuous at a switch and the
+    damping unchanged, so the vector field does not jump (no saltation; Kahraman & Singh 1990's law per mesh)."""
+
+    vector: np.ndarray
+    column: int
+    deviation: np.ndarray
+    backlash: float
+
+    jumps = False
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "vector", np.asarray(self.vector, dtype=float))
+        object.__setattr__(self, "deviation", np.asarray(self.deviation, dtype=float))
+        if not np.isfinite(self.backlash) or self.backlash <= 0.0:
+            raise ProblemError("backlash", self.backlash, "> 0 m", "a zero or negative backlash is a jammed mesh")
+        if not np.all(np.isfinite(self.deviation)):
+            raise ProblemError("deviation", "not finite", "finite per piece", "the mesh's loaded deviation")
+
+    def bounds(self, piece=0) -> tuple:
+        """The boundaries of u = vᵀq on a piece (or an array of pieces): (e_j, e_j − b)."""
+        upper = self.deviation[piece]
+        return upper, upper - self.backlash
+
+    def opens(self) -> bool:
+        """False: the linear system holds the mesh in driving contact, as its contact law there."""
+        return False
+
+    def resting_side(self, value: float) -> int:
+        """+1: a loaded mesh rests on its driving flanks."""
+        return 1
+
+    def side(self, state: np.ndarray, size: int, piece: int = 0) -> int:
+        """+1 driving, −1 back flanks, 0 free flight (on a boundary, by the rate)."""
+        value, rate = self.vector @ state[:size], self.vector @ state[size:2 * size]
+        upper, lower = self.bounds(piece)
+        if value > upper or (value == upper and rate > 0.0):
+            return 1
+        if value < lower or (value == lower and rate < 0.0):
             return -1
         return 0
 
@@ -96,7 +160,8 @@ def first_switch(system, piece: int, key: tuple, after: tuple, matrix: np.ndarra
     for index, (old, new) in enumerate(zip(sides, after[1])):
         if old != new:
             zone = system.dead_zones[index]
-            boundary = zone.clearance if (old > 0 or (old == 0 and new > 0)) else -zone.clearance
+            upper, lower = zone.bounds(piece)
+            boundary = upper if (old > 0 or (old == 0 and new > 0)) else lower
             side = 0 if old != 0 else (1 if new > 0 else -1)
             candidates.append((zone.vector, boundary, (region, sides[:index] + (side,) + sides[index + 1:]), index))
     best = None

@@ -110,7 +110,7 @@ def run_drivetrain_study(study, out: str | Path, directions: tuple[str, ...] = D
         def finished(index: int, result) -> None:
             number, task = pending[index]
             region = task_region(plan, plan.tasks[number])
-            arrays = backlash_arrays(result, plan.state_size) if plan.backlash else result
+            arrays = backlash_arrays(result, plan.state_size, len(plan.meshes)) if plan.backlash else result
             store.write(number, region, arrays)
             advance(per_task[number])
 

@@ -50,7 +50,7 @@ def drivetrain_layout(plan, extra_attrs: dict):
                                 "case (the gearbox model's steady state with temperature.model = 'gearbox')"),
                   StoreVariable("housing_temperature_c", study.dims, "float", "degC", "housing temperature of the "
                                 "point's case (NaN where the case gives none)")]
-    if plan.train and not plan.backlash:
+    if plan.train:  # each stage's values (the backlash branches too)
         variables += [StoreVariable(f"stage_{key}", (*dims, "mesh"), "float", units, text)
                       for key, (units, text) in STAGE_KEYS.items()]
     if plan.backlash:
@@ -63,7 +63,7 @@ def drivetrain_layout(plan, extra_attrs: dict):
         coords[parameter.name] = np.asarray(parameter.values)
     coords["bearing"] = list(plan.bearings)
     coords["harmonic"] = np.asarray(plan.lines)
-    if plan.train and not plan.backlash:
+    if plan.train:
         coords["mesh"] = list(plan.meshes)
     if plan.backlash:
         coords["state"] = np.arange(plan.state_size)
@@ -94,8 +94,9 @@ def task_region(plan, task) -> dict[str, Any]:
     return region
 
 
-def backlash_arrays(point: dict[str, Any], state_size: int) -> dict[str, Any]:
-    """The stored values of one branch point (the carried state NaN before the first orbit)."""
+def backlash_arrays(point: dict[str, Any], state_size: int, meshes: int = 1) -> dict[str, Any]:
+    """The stored values of one branch point (the carried state NaN before the first orbit; a train of ``meshes``
+    meshes: each stage's values, NaN where the point was not computed)."""
     values = {name: point.get(name, np.nan) for name in ("kv", "dte_rms_um", "dte_peak_to_peak_um",
                                                           "largest_floquet_multiplier_abs", "contact_loss_fraction",
                                                           "back_contact_fraction", "back_side_contact")}
@@ -104,6 +105,9 @@ def backlash_arrays(point: dict[str, Any], state_size: int) -> dict[str, Any]:
     values["status"] = point["status"]
     values["bearing_dynamic_rms_n"] = point["bearing_dynamic_rms_n"]
     values["bearing_harmonic_amplitude_n"] = point["bearing_harmonic_amplitude_n"]
+    if meshes > 1:
+        values.update({f"stage_{key}": np.asarray(point.get(f"stage_{key}", [np.nan] * meshes), dtype=float)
+                       for key in STAGE_KEYS})
     carried = point["carried"]
     values["branch_state"] = np.full(state_size, np.nan) if carried is None else np.asarray(carried, dtype=float)
     return values

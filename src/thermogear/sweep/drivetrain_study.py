@@ -286,7 +286,7 @@ def backlash_task(plan: DrivetrainPlan, task, previous: dict | None = None) -> d
         assembled = built.assembled(model)
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
-            state = built.models[model].state(speed_rpm=speed, points_per_period=section.sweep_points_per_period)
+            state = built.mesh_states(model, speed, section.sweep_points_per_period)  # a train: every stage's
             system, reduction = drivetrain_backlash_system(assembled, state)
             reduced, basis = reduced_backlash_system(system, section.response_cutoff_hz)
             coordinates = reduction.basis @ basis.basis
@@ -300,14 +300,17 @@ def backlash_task(plan: DrivetrainPlan, task, previous: dict | None = None) -> d
             else:
                 response = drivetrain_backlash_response(assembled, state, orbit.initial_state, SUBSTEPS,
                                                         SAMPLES_PER_PIECE, section.response_cutoff_hz)
-                point = {**_backlash_point(response, step.run_in, bearings, harmonics), **temperatures}
+                point = {**_backlash_point(response, step.run_in, bearings, harmonics, plan.harmonics), **temperatures}
     except FAILURES as error:
         point = _missing(f"not computed: {error}", bearings, harmonics)
     point["carried"] = carried
     return point
 
 
-def _backlash_point(response, run_in: bool, bearings: int, harmonics: int) -> dict[str, Any]:
+def _backlash_point(response, run_in: bool, bearings: int, harmonics: int,
+                    mesh_harmonics: int | None = None) -> dict[str, Any]:
+    """``harmonics`` the spectrum lines kept, ``mesh_harmonics`` the mesh harmonics they come from (of every stage of
+    a train; default the same)."""
     if not response.converged:
         return _missing(f"not computed: {response.failure or 'the orbit was not found'}", bearings, harmonics)
     metrics = response.metrics
@@ -321,7 +324,7 @@ def _backlash_point(response, run_in: bool, bearings: int, harmonics: int) -> di
             "back_contact_fraction": response.back_contact_fraction,
             "back_side_contact": float(metrics["back_side_contact"]),
             "largest_floquet_multiplier_abs": float(multipliers.max()) if multipliers.size else np.nan,
-            **_forces(response, bearings, harmonics, harmonics)}
+            **_forces(response, bearings, harmonics, mesh_harmonics or harmonics), **_stages(response)}
 
 
 def run_task(plan: DrivetrainPlan, task, *previous):
