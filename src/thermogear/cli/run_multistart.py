@@ -24,6 +24,7 @@ def check_multistart(drivetrain, dynamics, starts: int, method: str, out) -> Non
     if not starts:
         return
     from thermogear.dynamics.mesh_laws import mesh_law
+    from thermogear.dynamics.solution_methods import solution_method
 
     if drivetrain is None:
         raise CaseError("--multistart", starts, "a case with a [drivetrain]",
@@ -33,7 +34,7 @@ def check_multistart(drivetrain, dynamics, starts: int, method: str, out) -> Non
         raise CaseError("--multistart", starts, 'dynamics.mesh = "nonlinear" (the backlash mesh)',
                         f"with the {dynamics.mesh} mesh the drivetrain is a linear periodic system: it has one "
                         "periodic orbit, which every start reaches")
-    if method != "periodic":
+    if solution_method(method).from_rest:
         raise CaseError("--multistart", starts, "--method periodic",
                         "the search lists periodic orbits; --method transient follows one motion from rest")
     if drivetrain.stages:
