@@ -21,16 +21,10 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from test_sweep_distributed import cluster as _one_cluster
+from test_sweep_distributed import cluster  # noqa: F401  (module-scoped: one scheduler and two workers here)
 
 DATA = Path(__file__).resolve().parents[1] / "data"
 pytestmark = [pytest.mark.slow, pytest.mark.filterwarnings("ignore")]
-
-
-@pytest.fixture(scope="module")
-def cluster():
-    """One scheduler and two workers for every kind of this module (each start costs seconds)."""
-    yield from _one_cluster.__wrapped__()
 
 
 def _drivetrain_case(tmp_path: Path, mesh: str) -> Path:
