@@ -30,6 +30,7 @@ from thermogear.friction_models import friction_law
 from thermogear.gearbox.description import (GearboxDescription, GearboxOperatingPoint, Housing, LipSeal,
                                             MountedBearing, OilConditioning)
 from thermogear.gearbox.input_checks import check_gearbox_inputs, housing_box, oil_floor_and_level
+from thermogear.gearbox.network import NoSteadyStateError
 from thermogear.temperature_limits import MATERIAL_MAXIMUM_C
 from thermogear.thermoelastic.materials import HOUSING_EXPANSION_PER_K
 
@@ -211,12 +212,30 @@ class PredictedTemperatureError(CaseError):
     mesh cannot be evaluated there, so commands that evaluate it (``check``, ``run``, ``sweep``) refuse the case.
     ``unresolved_case`` is the case before its temperatures were predicted (its gearbox network complete), which the
     commands that report the network itself (``gearbox``, ``warmup --model gearbox``) go on with; ``state`` the
-    steady state, flags included."""
+    steady state, flags included (None where the network has no stable steady state there: thermal runaway)."""
 
     def __init__(self, unresolved_case: "Case", state: "GearboxSteadyState", *arguments) -> None:
         super().__init__(*arguments)
         self.unresolved_case = unresolved_case
         self.state = state
+
+
+def _no_steady_state(case: "Case", operating: GearboxOperatingPoint, error: "NoSteadyStateError"
+                     ) -> PredictedTemperatureError:
+    """The load-time error of a ``temperature.model = "gearbox"`` case whose network has no stable steady state at
+    its operating point: the load key and the fold torque where the stable branch ends (thermal runaway), else the
+    temperature model; the unresolved case for ``gearbox`` and ``warmup``, which follow the network itself."""
+    fold = getattr(error, "fold_torque", None)
+    if fold is None:
+        return PredictedTemperatureError(case, None, "temperature.model", "gearbox",
+                                         "a gearbox network with a stable steady state at the operating point",
+                                         f"{error} (`thermogear gearbox CASE` reports the network itself)")
+    given = [name for name in ("torque_nm", "power_kw", "fzg_load_stage") if name in case.document.get("operating", {})]
+    key = f"operating.{given[0] if given else 'torque_nm'}"
+    return PredictedTemperatureError(case, None, key, case.document.get("operating", {}).get(key[10:]),
+                                     f"a pinion torque below the fold near {fold:.1f} N·m at "
+                                     f"{operating.speed_rpm:g} rpm", f"{error} (`thermogear gearbox CASE` reports "
+                                     "the network itself)")
 
 
 def load_gearbox_case(name_or_path) -> "Case":
@@ -248,7 +267,10 @@ def with_predicted_temperatures(case: "Case") -> "Case":
         raise CaseError("lubricant.operating_temperature_c", case.lubricant.operating_temperature_c,
                         "absent with temperature.model = 'gearbox'", "the gearbox model predicts the oil temperature")
     operating = gearbox_operating_point(case.operating_point, case.gearbox)
-    state = predicted_steady_state(gearbox_model_from_case(case), operating)
+    try:
+        state = predicted_steady_state(gearbox_model_from_case(case), operating)
+    except NoSteadyStateError as error:  # a case the commands cannot evaluate: refused at load, naming the key
+        raise _no_steady_state(case, operating, error) from error
     hottest = max(state.pinion_c, state.wheel_c, state.oil_c, state.housing_c)
     if hottest > MATERIAL_MAXIMUM_C:
         raise PredictedTemperatureError(case, state, "temperature.model", "gearbox",

@@ -27,10 +27,10 @@ from typing import Any
 import numpy as np
 
 from thermogear.errors import CaseError, JammingError, ModelLimitError, ProblemError
+from thermogear.gearbox.losses import NODES  # one stored temperature per node of the network
 
 __all__ = ["WarmupSettings", "run_warmup_study", "warmup_layout"]
 
-NODES = ("pinion", "wheel", "shafts", "oil", "housing")
 #: Per point and time: stored name → (units, long name, history attribute).
 LOSSES = {"mesh_loss_w": ("W", "tooth mesh loss", "mesh_loss"),
           "bearing_loss_w": ("W", "bearing losses", "bearing_loss"),
