@@ -220,22 +220,18 @@ class PredictedTemperatureError(CaseError):
         self.state = state
 
 
-def _no_steady_state(case: "Case", operating: GearboxOperatingPoint, error: "NoSteadyStateError"
-                     ) -> PredictedTemperatureError:
-    """The load-time error of a ``temperature.model = "gearbox"`` case whose network has no stable steady state at
-    its operating point: the load key and the fold torque where the stable branch ends (thermal runaway), else the
-    temperature model; the unresolved case for ``gearbox`` and ``warmup``, which follow the network itself."""
+def _no_steady_state(given: dict, operating: GearboxOperatingPoint, error: "NoSteadyStateError") -> tuple:
+    """(key, value, allowed, reason) of the load-time error of a ``temperature.model = "gearbox"`` case whose network
+    has no stable steady state at its operating point: the load key the case file ``given`` as its ``[operating]``
+    and the fold torque where the stable branch ends (thermal runaway), else the temperature model."""
     fold = getattr(error, "fold_torque", None)
+    reason = f"{error} (`thermogear gearbox CASE` reports the network itself)"
     if fold is None:
-        return PredictedTemperatureError(case, None, "temperature.model", "gearbox",
-                                         "a gearbox network with a stable steady state at the operating point",
-                                         f"{error} (`thermogear gearbox CASE` reports the network itself)")
-    given = [name for name in ("torque_nm", "power_kw", "fzg_load_stage") if name in case.document.get("operating", {})]
-    key = f"operating.{given[0] if given else 'torque_nm'}"
-    return PredictedTemperatureError(case, None, key, case.document.get("operating", {}).get(key[10:]),
-                                     f"a pinion torque below the fold near {fold:.1f} N·m at "
-                                     f"{operating.speed_rpm:g} rpm", f"{error} (`thermogear gearbox CASE` reports "
-                                     "the network itself)")
+        return ("temperature.model", "gearbox", "a gearbox network with a stable steady state at the operating point",
+                reason)
+    name = next((name for name in ("torque_nm", "power_kw", "fzg_load_stage") if name in given), "torque_nm")
+    return (f"operating.{name}", given.get(name),
+            f"a pinion torque below the fold near {fold:.1f} N·m at {operating.speed_rpm:g} rpm", reason)
 
 
 def load_gearbox_case(name_or_path) -> "Case":
@@ -270,7 +266,8 @@ def with_predicted_temperatures(case: "Case") -> "Case":
     try:
         state = predicted_steady_state(gearbox_model_from_case(case), operating)
     except NoSteadyStateError as error:  # a case the commands cannot evaluate: refused at load, naming the key
-        raise _no_steady_state(case, operating, error) from error
+        raise PredictedTemperatureError(case, None, *_no_steady_state(case.document.get("operating", {}), operating,
+                                                                      error)) from error
     hottest = max(state.pinion_c, state.wheel_c, state.oil_c, state.housing_c)
     if hottest > MATERIAL_MAXIMUM_C:
         raise PredictedTemperatureError(case, state, "temperature.model", "gearbox",
