@@ -140,6 +140,9 @@ def _distributed(client, function, shared, tasks, follows, on_result) -> None:
         client.cancel(list(futures))
 
 
+_TRIM = "MALLOC_TRIM_THRESHOLD_"
+
+
 @contextmanager
 def _one_blas_thread_environment():
     """The worker processes start with one BLAS thread (NumPy reads the variables when it is first imported), and
@@ -148,10 +151,11 @@ def _one_blas_thread_environment():
     exponentials ran 1.4× slower in a worker than in a plain process (3.1–3.9 s against 2.1–2.9 s a task)."""
     import dask
 
-    saved = {name: os.environ.get(name) for name in _THREAD_VARIABLES}
+    saved = {name: os.environ.get(name) for name in (*_THREAD_VARIABLES, _TRIM)}
     os.environ.update({name: "1" for name in _THREAD_VARIABLES})
+    os.environ.pop(_TRIM, None)  # a cluster started before in this process leaves the nanny's value in os.environ
     environment = {name: value for name, value in dask.config.get("distributed.nanny.pre-spawn-environ", {}).items()
-                   if name != "MALLOC_TRIM_THRESHOLD_"}
+                   if name != _TRIM}
     try:
         with dask.config.set({"distributed.nanny.pre-spawn-environ": environment}):
             yield
