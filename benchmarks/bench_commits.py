@@ -23,7 +23,7 @@ Figures (what the project's benchmarks measured at fe2cd59, each through the tre
    bench_sweep_cli.py's first figure) in points/s, target >= 10 000;
 4. the nonlinear (backlash) continuation up and down over 1000 speeds of luo2019 at a 100 μm backlash
    (``follow_branch``, as bench_nonlinear.py's third figure) in s;
-5. the 1000-speed sweep of the reduced ~50-DOF two-shaft drivetrain on luo2019's thermal mesh state per speed
+5. the 1000-speed sweep of bench_drivetrain.py's reduced two-shaft drivetrain (60 DOF) on luo2019's thermal mesh state per speed
    (``drivetrain_speed_sweep`` with ``MeshModel.state`` per speed, cut-off 20 kHz, timed on a sample of speeds and
    scaled to 1000, as bench_drivetrain.py's fifth figure) in s.
 
@@ -141,32 +141,16 @@ def measure_continuation(quick: bool) -> dict:
             "value": wall * 1000 / count, "cpu": cpu * 1000 / count, "speeds_timed": count}
 
 
-def _two_shaft_drivetrain(elements: int):
-    """bench_drivetrain.py's drivetrain: two 0.2 m steel shafts (d = 40 mm), gear at mid-span, two bearings each."""
-    from thermogear.drivetrain import (Bearing, CrossSection, Drivetrain, GearMesh, Material, NodeLocation,
-                                       RigidDisk, Shaft, ShaftSegment)
-
-    pinion_radius, wheel_radius = 0.0381, 0.0493
-    steel = Material(youngs_modulus=206e9, density=7850.0, poisson_ratio=0.3)
-    shafts = tuple(Shaft(name, (ShaftSegment(0.2, CrossSection(0.04), steel),), 0.2 / elements * (1 + 1e-12),
-                         material_damping=1e-6) for name in ("pinion shaft", "wheel shaft"))
-    pinion, wheel = NodeLocation("pinion shaft", 0.1), NodeLocation("wheel shaft", 0.1)
-    disks = (RigidDisk.annulus("pinion", pinion, 7850.0, 0.02, 2 * pinion_radius / math.cos(math.radians(20)), 0.04),
-             RigidDisk.annulus("wheel", wheel, 7850.0, 0.02, 2 * wheel_radius / math.cos(math.radians(20)), 0.04))
-    bearings = tuple(Bearing(f"{s} {e}", NodeLocation(s, z), 2e8, 2e8, 1e9, 2e3, 2e3, 2e3)
-                     for s in ("pinion shaft", "wheel shaft") for e, z in (("A", 0.0), ("B", 0.2)))
-    mesh = GearMesh("mesh", pinion, wheel, pinion_radius, wheel_radius, math.radians(20.0), 2.2e8)
-    return Drivetrain(shafts, disks, bearings, meshes=(mesh,))
-
-
 def measure_drivetrain_sweep(quick: bool) -> dict:
     import numpy as np
+
+    from bench_drivetrain import _drivetrain  # its two-shaft drivetrain, built with this tree's public classes
 
     from thermogear.case import load_case
     from thermogear.drivetrain.response import drivetrain_speed_sweep
     from thermogear.mesh.model import MeshModel
 
-    assembled = _two_shaft_drivetrain(elements=3).assemble()
+    assembled = _drivetrain(elements=3).assemble()
     model = MeshModel(load_case("luo2019"), "thermal")
     sample = 8 if quick else 40
     speeds = np.linspace(500.0, 6000.0, sample)
@@ -270,8 +254,23 @@ def run_sweep_cli(tree: Path, quick: bool, torques: int | None = None, speeds: i
 
 
 def _git(repository: Path, *arguments: str) -> str:
-    return subprocess.run(["git", "-C", str(repository), *arguments], capture_output=True, text=True,
-                          check=True).stdout.strip()
+    completed = subprocess.run(["git", "-C", str(repository), *arguments], capture_output=True, text=True)
+    if completed.returncode != 0:
+        raise SystemExit(f"git {' '.join(arguments)} in {repository} failed: {completed.stderr.strip()}")
+    return completed.stdout.strip()
+
+
+def check_tree(tree: Path) -> str:
+    """The thermogear a child on ``tree`` imports must be that tree's (else PYTHONPATH did not reach it and both
+    sides would time the installed package)."""
+    completed = subprocess.run([sys.executable, "-c", "import thermogear; print(thermogear.__file__)"],
+                               capture_output=True, text=True, cwd=tree, env=_environment(tree))
+    if completed.returncode != 0:
+        raise SystemExit(f"thermogear does not import from {tree / 'src'}:\n{completed.stderr[-2000:]}")
+    source = Path(completed.stdout.strip().splitlines()[-1]).resolve()
+    if (tree / "src").resolve() not in source.parents:
+        raise SystemExit(f"a child on {tree} imported {source}, not {tree / 'src'}")
+    return str(source)
 
 
 class Worktrees:
@@ -369,7 +368,8 @@ def main(argv: list[str]) -> int:
                           else f"working tree at {_git(repository, 'rev-parse', '--short', 'HEAD')}"
                                + (" with uncommitted changes" if _git(repository, "status", "--porcelain",
                                                                       "--untracked-files=no") else ""))}
-        print(f"old: {labels['old']}\nnew: {labels['new']}", flush=True)
+        for side, tree in (("old", old_tree), ("new", new_tree)):
+            print(f"{side}: {labels[side]}, imports {check_tree(tree)}", flush=True)
         start = time.perf_counter()
         runs = compare(old_tree, new_tree, names, arguments.repeats, arguments.quick)
         elapsed = time.perf_counter() - start
@@ -384,11 +384,13 @@ def main(argv: list[str]) -> int:
     (RESULTS / "bench_commits.json").write_text(json.dumps(result, indent=2) + "\n", encoding="utf-8")
     print(f"\nold = {labels['old']}, new = {labels['new']}; median of {arguments.repeats} child processes per tree"
           f"{' (--quick: not the figures)' if arguments.quick else ''}")
-    print(f"{'figure':76s} {'unit':>8s} {'old':>10s} {'new':>10s} {'new/old':>8s} {'CPU new/old':>11s}  within 10 %?")
+    print("slower: new time / old time (for points/s, old / new); CPU: the same in CPU time of the child process")
+    print(f"{'figure':76s} {'unit':>8s} {'old':>10s} {'new':>10s} {'new/old':>8s} {'slower':>7s} {'CPU':>6s}  "
+          "within 10 %?")
     for figure in figures:
-        cpu_ratio = figure["cpu"] / figure["baseline_cpu"]
         print(f"{figure['name'][:76]:76s} {figure['unit']:>8s} {figure['baseline']:10.4g} {figure['value']:10.4g} "
-              f"{figure['ratio']:8.3f} {cpu_ratio:11.3f}  {'yes' if figure['within_10_percent'] else 'NO'}")
+              f"{figure['ratio']:8.3f} {figure['slowdown']:7.3f} {figure['cpu_slowdown']:6.3f}  "
+              f"{'yes' if figure['within_10_percent'] else 'NO'}")
         if not figure["same_call"]:
             print(f"    the trees differ in API: old {figure['old_call']}, new {figure['new_call']}")
     for figure in figures:
