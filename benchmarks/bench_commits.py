@@ -23,9 +23,9 @@ Figures (what the project's benchmarks measured at fe2cd59, each through the tre
    bench_sweep_cli.py's first figure) in points/s, target >= 10 000;
 4. the nonlinear (backlash) continuation up and down over 1000 speeds of luo2019 at a 100 μm backlash
    (``follow_branch``, as bench_nonlinear.py's third figure) in s;
-5. the 1000-speed sweep of bench_drivetrain.py's reduced two-shaft drivetrain (60 DOF) on luo2019's thermal mesh state per speed
-   (``drivetrain_speed_sweep`` with ``MeshModel.state`` per speed, cut-off 20 kHz, timed on a sample of speeds and
-   scaled to 1000, as bench_drivetrain.py's fifth figure) in s.
+5. the 1000-speed sweep of bench_drivetrain.py's reduced two-shaft drivetrain (60 DOF) on luo2019's thermal mesh
+   state per speed (``drivetrain_speed_sweep`` with ``MeshModel.state`` per speed, cut-off 20 kHz, timed on a
+   sample of speeds and scaled to 1000, as bench_drivetrain.py's fifth figure) in s.
 
 Where a call differs between the trees, each figure lists the variants it knows, in order; a child uses the first
 its tree has, and the table and the JSON say which call each tree used (a new API gets a new variant here).
