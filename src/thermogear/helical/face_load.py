@@ -44,64 +44,79 @@ def slice_loads(stiffness: np.ndarray, gap: np.ndarray, load: float) -> tuple[fl
 
 @dataclass(frozen=True, eq=False)
 class SliceContacts:
-    """Slices at many mesh positions (rows) prepared for :func:`slice_loads` at any load: what does not depend on
-    the load — each row's touching slices sorted by gap, the running sums Σk and Σke over them — is computed once
-    (:meth:`prepare`), and :meth:`solve` or :meth:`totals` take every row at once.
+    """Slices at many mesh positions (rows) prepared for :func:`slice_loads` at any load, every row solved at once
+    (:meth:`solve`, :meth:`totals`).
 
-    ``stiffness`` k and ``gap`` e (rows, slices) [N/m, m]; ``order`` each row's slices that can touch (k > 0) by
-    ascending gap, padded to the most any row has (the padding: k = 0, e = +∞); ``sorted_stiffness`` and
-    ``sorted_gap`` k and e in that order, ``upper`` the next sorted gap (+∞ after the last);
-    ``cumulative_stiffness`` and ``cumulative_moment`` Σk and Σke over the first m + 1 of them."""
+    ``stiffness`` k ≥ 0 and ``gap`` e (rows, slices) [N/m, m], k = 0 for a slice that cannot touch; ``touching``
+    where k > 0; ``total_stiffness`` Σk and ``total_moment`` Σke of each row over its touching slices.
+
+    δ of a row is Newton's method on the piecewise-linear, convex and increasing g(δ) = Σ k⟨δ − e⟩₊ started on the
+    right, at the δ of every touching slice in contact: each step is δ = (F + Σ_A ke)/Σ_A k over the slices A
+    with e < δ of the step before. The steps fall monotonically onto the root (g lies above each step's line) and
+    A shrinks, so it ends, exactly, once A repeats: at once where every slice touches, in a few steps where the
+    contact is partial. Nothing is sorted (the cost of a first call is a few passes over the slices)."""
 
     stiffness: np.ndarray
     gap: np.ndarray
-    order: np.ndarray
-    sorted_stiffness: np.ndarray
-    sorted_gap: np.ndarray
-    upper: np.ndarray
-    cumulative_stiffness: np.ndarray
-    cumulative_moment: np.ndarray
+    touching: np.ndarray
+    total_stiffness: np.ndarray
+    total_moment: np.ndarray
 
     @classmethod
     def prepare(cls, stiffness: np.ndarray, gap: np.ndarray) -> "SliceContacts":
         stiffness = np.asarray(stiffness, dtype=float)
         gap = np.broadcast_to(np.asarray(gap, dtype=float), stiffness.shape)
+        if np.any(stiffness < 0.0):
+            raise ValueError("slice_loads: a slice's stiffness is negative (0 for a slice that cannot touch)")
         touching = stiffness > 0.0
-        counts = np.count_nonzero(touching, axis=-1)
-        if not np.all(counts > 0):
+        if not np.all(np.any(touching, axis=-1)):
             raise ValueError("slice_loads: a positive load needs at least one slice that can touch")
-        order = np.argsort(np.where(touching, gap, np.inf), axis=-1, kind="stable")[..., :int(counts.max())]
-        k = np.take_along_axis(stiffness, order, axis=-1)
-        inside = k > 0.0  # the padding (rows with fewer touching slices) has k = 0
-        e = np.where(inside, np.take_along_axis(gap, order, axis=-1), np.inf)
-        moment = np.where(inside, k * np.where(inside, e, 0.0), 0.0)
-        upper = np.concatenate([e[..., 1:], np.full(e.shape[:-1] + (1,), np.inf)], axis=-1)
-        return cls(stiffness, gap, order, k, e, upper, np.cumsum(k, axis=-1), np.cumsum(moment, axis=-1))
+        moment = np.multiply(stiffness, gap, out=np.zeros(stiffness.shape), where=touching)
+        return cls(stiffness, gap, touching, stiffness.sum(axis=-1), moment.sum(axis=-1))
 
     def approach(self, load: float) -> np.ndarray:
-        """δ [m] of each row at F = ``load`` [N]: with exactly the first m + 1 sorted slices touching,
-        δ = (F + Σke)/Σk, the m whose δ lies between its gap and the next one's."""
+        """δ [m] of each row at F = ``load`` [N] (class docstring): δ = (F + Σ_A ke)/Σ_A k over the slices A in
+        contact, e < δ."""
         if not load > 0.0:
             raise ValueError("slice_loads: a positive load needs at least one slice that can touch")
-        candidates = (load + self.cumulative_moment) / self.cumulative_stiffness
-        first = np.argmax((candidates >= self.sorted_gap) & (candidates <= self.upper), axis=-1)
-        return np.take_along_axis(candidates, first[..., None], axis=-1)[..., 0]
+        delta = (load + self.total_moment) / self.total_stiffness
+        flat_delta = delta.reshape(-1)
+        stiffness, gap, touching = (array.reshape(flat_delta.size, -1)
+                                    for array in (self.stiffness, self.gap, self.touching))
+        # the rows with a touching slice that the approach of all of them does not reach
+        pending = np.flatnonzero(np.any(touching & (gap >= flat_delta[:, None]), axis=-1))
+        active = touching[pending] & (gap[pending] < flat_delta[pending, None])
+        for _ in range(gap.shape[-1]):  # A shrinks at every step that does not end a row
+            if not pending.size:
+                break
+            row_stiffness, row_gap = stiffness[pending], gap[pending]
+            contact = np.where(active, row_stiffness, 0.0)
+            step = (load + np.sum(contact * np.where(active, row_gap, 0.0), axis=-1)) / np.sum(contact, axis=-1)
+            flat_delta[pending] = step
+            still = active & (row_gap < step[:, None])
+            moved = np.any(still != active, axis=-1)
+            pending, active = pending[moved], still[moved]
+        return delta
+
+    def carried(self, load: float) -> tuple[np.ndarray, np.ndarray]:
+        """(δ [m] of each row, the slices' loads k⟨δ − e⟩₊ [N], rows × slices) at F = ``load`` [N]."""
+        delta = self.approach(load)
+        return delta, np.where(self.touching, self.stiffness * np.clip(delta[..., None] - self.gap, 0.0, None), 0.0)
 
     def solve(self, load: float) -> tuple[np.ndarray, np.ndarray]:
         """(δ [m] of each row, the slices' loads k⟨δ − e⟩₊ [N], rows × slices) at F = ``load`` [N]."""
-        delta = self.approach(load)
-        touching = self.stiffness > 0.0
-        return delta, self.stiffness * np.clip(delta[..., None] - self.gap, 0.0, None) * touching
+        return self.carried(load)
 
     def totals(self, load: float, group: np.ndarray, groups: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """(δ [m], the stiffness of the slices that carry load [N/m], the load [N] of each group of slices,
-        rows × ``groups``) of each row at F = ``load`` [N], from the touching slices only; ``group`` the group
-        (0 … groups − 1) of each slice, e.g. its place across the face."""
-        delta = self.approach(load)
-        carried = self.sorted_stiffness * np.clip(delta[..., None] - self.sorted_gap, 0.0, None)
-        engaged = np.sum(np.where(carried > 0.0, self.sorted_stiffness, 0.0), axis=-1)
+        rows × ``groups``) of each row at F = ``load`` [N]; ``group`` the group (0 … groups − 1) of each slice,
+        e.g. its place across the face: one per column, or one per entry (rows × slices) where the rows hold
+        different slices."""
+        delta, carried = self.carried(load)
+        engaged = np.sum(np.where(carried > 0.0, self.stiffness, 0.0), axis=-1)
         rows = np.arange(carried.shape[0])[:, None] * groups
-        per_group = np.bincount((rows + np.asarray(group)[self.order]).ravel(), weights=carried.ravel(),
+        member = np.broadcast_to(np.asarray(group), carried.shape)
+        per_group = np.bincount((rows + member).ravel(), weights=carried.ravel(),
                                 minlength=carried.shape[0] * groups)
         return delta, engaged, per_group.reshape(carried.shape[0], groups)
 
