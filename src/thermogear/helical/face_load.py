@@ -29,7 +29,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["slice_loads", "SliceContacts", "FaceLoad", "face_load", "helix_slope_deviation", "lead_crowning", "end_relief",
+__all__ = ["slice_loads", "SliceContacts", "FaceLoad", "FaceStiffnessMoments", "face_load", "helix_slope_deviation", "lead_crowning", "end_relief",
            "thermal_lead_deviation", "iso_face_load_factor"]
 
 
@@ -120,6 +120,52 @@ class SliceContacts:
                                 minlength=carried.shape[0] * groups)
         return delta, engaged, per_group.reshape(carried.shape[0], groups)
 
+    def engaged_groups(self, load: float, group: np.ndarray, groups: int) -> np.ndarray:
+        """The stiffness [N/m] of the slices that carry load at F = ``load`` [N], summed per group (rows ×
+        ``groups``; ``group`` as for :meth:`totals`)."""
+        _, carried = self.carried(load)
+        rows = np.arange(carried.shape[0])[:, None] * groups
+        member = np.broadcast_to(np.asarray(group), carried.shape)
+        per_group = np.bincount((rows + member).ravel(), weights=np.where(carried > 0.0, self.stiffness, 0.0).ravel(),
+                                minlength=carried.shape[0] * groups)
+        return per_group.reshape(carried.shape[0], groups)
+
+
+@dataclass(frozen=True)
+class FaceStiffnessMoments:
+    """The moments across the face of the stiffness of the slices in contact, per mesh position φ: with z_j from
+    mid-face, k₀ = Σk_j [N/m], k₁ = Σk_j z_j [N], k₂ = Σk_j z_j² [N·m]. They are what the mesh element of the
+    drivetrain needs: Σ_j k_j w(z_j)w(z_j)ᵀ = k₀ w₀w₀ᵀ + k₁ (w₀w_zᵀ + w_zw₀ᵀ) + k₂ w_zw_zᵀ for w(z) = w₀ + z w_z
+    (:mod:`thermogear.drivetrain.mesh_contact`), i.e. k(φ) at the load centre z̄(φ) = k₁/k₀ plus the tilting
+    stiffness k(φ)ρ(φ)² = k₂ − k₁²/k₀ about it. The period means of k₀, k₁, k₂ give the mean matrix exactly: its load
+    centre ``mean_load_centre`` and radius of gyration ``mean_gyration``."""
+
+    phase: np.ndarray  # [m]
+    stiffness: np.ndarray  # k₀(φ) [N/m]
+    first_moment: np.ndarray  # k₁(φ) [N]
+    second_moment: np.ndarray  # k₂(φ) [N·m]
+
+    @property
+    def load_centre(self) -> np.ndarray:
+        """z̄(φ) = k₁/k₀ [m] from mid-face."""
+        return self.first_moment / self.stiffness
+
+    @property
+    def tilting_stiffness(self) -> np.ndarray:
+        """k(φ)ρ(φ)² = k₂ − k₁²/k₀ [N·m]: the stiffness of the relative tilt about the load centre."""
+        return self.second_moment - self.first_moment**2 / self.stiffness
+
+    @property
+    def mean_load_centre(self) -> float:
+        """z̄ of the period-mean matrix, mean k₁ / mean k₀ [m] from mid-face."""
+        return float(np.mean(self.first_moment) / np.mean(self.stiffness))
+
+    @property
+    def mean_gyration(self) -> float:
+        """ρ of the period-mean matrix, √(mean k₂ / mean k₀ − z̄²) [m]."""
+        centre = self.mean_load_centre
+        return float(math.sqrt(max(np.mean(self.second_moment) / np.mean(self.stiffness) - centre**2, 0.0)))
+
 
 @dataclass(frozen=True)
 class FaceLoad:
@@ -130,6 +176,18 @@ class FaceLoad:
     phase: np.ndarray
     line_load: np.ndarray  # (phases, slices)
     approach: np.ndarray  # (phases,)
+    engaged_stiffness: np.ndarray | None = None  # (phases, slices) [N/m]: the stiffness of the slices in contact
+
+    @property
+    def stiffness_moments(self) -> FaceStiffnessMoments:
+        """The moments across the face of the stiffness in contact at each mesh position (z from mid-face; needs
+        ``engaged_stiffness``)."""
+        if self.engaged_stiffness is None:
+            raise ValueError("stiffness_moments: the face load carries no engaged stiffness")
+        position = self.z - 0.5 * (self.z[0] + self.z[-1])
+        stiffness = self.engaged_stiffness
+        return FaceStiffnessMoments(self.phase, stiffness.sum(axis=-1), stiffness @ position,
+                                    stiffness @ position**2)
 
     @property
     def mean_line_load(self) -> np.ndarray:
@@ -148,6 +206,11 @@ class FaceLoad:
         return float(self.line_load.max() / self.line_load.mean())
 
     @property
+    def load_centres(self) -> np.ndarray:
+        """∫ z w dz / ∫ w dz [m] at each mesh position: where along the face the load acts over the period."""
+        return self.line_load @ self.z / self.line_load.sum(axis=-1)
+
+    @property
     def load_centre(self) -> float:
         """∫ z w̄ dz / ∫ w̄ dz [m]: where along the face the load acts on average."""
         mean = self.mean_line_load
@@ -164,8 +227,10 @@ def face_load(slice_stiffness: np.ndarray, z: np.ndarray, phase: np.ndarray, dev
     gaps = np.broadcast_to(np.asarray(deviation, dtype=float), stiffness.shape)
     rows = stiffness.shape[0]
     approach, carried = SliceContacts.prepare(stiffness.reshape(rows, -1), gaps.reshape(rows, -1)).solve(load)
-    loads = carried.reshape(stiffness.shape).sum(axis=1) / width
-    return FaceLoad(np.asarray(z, dtype=float), np.asarray(phase, dtype=float), loads, approach)
+    carried = carried.reshape(stiffness.shape)
+    loads = carried.sum(axis=1) / width
+    engaged = np.where(carried > 0.0, stiffness, 0.0).sum(axis=1)
+    return FaceLoad(np.asarray(z, dtype=float), np.asarray(phase, dtype=float), loads, approach, engaged)
 
 
 def helix_slope_deviation(z, face_width: float, amount: float) -> np.ndarray:

@@ -254,14 +254,18 @@ def _integral_period(mesh_model: MeshModel, load: float, points: int) -> Helical
 
 
 def helical_mesh_period(mesh_model: MeshModel, load: float, points: int, slices: int = DEFAULT_SLICES,
-                        always_face: bool = False, deviations: bool = True) -> HelicalMeshPeriod:
+                        always_face: bool = False, deviations: bool = True,
+                        face_stiffness: bool = False) -> HelicalMeshPeriod:
     """The period of ``mesh_model``'s case at F_bt = ``load`` [N] on ``points`` intervals (each at its midpoint;
     module docstring). ``always_face`` solves the load along the face even without deviations (for the report);
-    ``deviations=False`` leaves the model's deviations out (the stiffness of the flanks as they are).
+    ``deviations=False`` leaves the model's deviations out (the stiffness of the flanks as they are);
+    ``face_stiffness`` keeps the stiffness of the slices in contact per place across the face
+    (``face.stiffness_moments``: the load centre and tilting stiffness over the period; implies ``always_face``).
 
     What depends on neither speed nor load (the slices' gaps; their stiffness on every contact line, sorted for
     the solve; the face integral) is computed once per model and number of points, the slices' stiffness only
     where the face load is solved; a call solves every mesh position at once for its load."""
+    always_face = always_face or face_stiffness
     if not deviations or (mesh_model.thermoelastic_mesh is None and not always_face):
         # no deviation at all: the profile's and the lead's come from the thermo-elastic component only
         # (MeshModel.pair_deviation_at, face_temperature_rise), which this model does not have
@@ -272,7 +276,8 @@ def helical_mesh_period(mesh_model: MeshModel, load: float, points: int, slices:
     contacts = _cached(mesh_model, ("slices", points, slices), lambda: _slice_contacts(mesh_model, points, slices))
     approach, engaged, carried = contacts.contacts.totals(load, contacts.group, slices)
     line_load = carried / (contacts.helical.face_width / slices)
-    face = FaceLoad(contacts.z, contacts.phase, line_load, approach)
+    face = FaceLoad(contacts.z, contacts.phase, line_load, approach,
+                    contacts.contacts.engaged_groups(load, contacts.group, slices) if face_stiffness else None)
     return HelicalMeshPeriod(contacts.helical, contacts.phase.copy(), load, engaged, approach, face, contacts.scale)
 
 
