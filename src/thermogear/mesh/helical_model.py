@@ -31,7 +31,6 @@ approximation: a helical contact line spans the path, so μ is averaged along it
 
 from __future__ import annotations
 
-import math
 import threading
 import weakref
 from dataclasses import dataclass, replace
