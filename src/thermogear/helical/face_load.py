@@ -34,8 +34,9 @@ __all__ = ["slice_loads", "SliceContacts", "FaceLoad", "FaceStiffnessMoments", "
 
 
 def slice_loads(stiffness: np.ndarray, gap: np.ndarray, load: float) -> tuple[float, np.ndarray]:
-    """(δ [m], the slices' loads [N]) of Σ k_i⟨δ − e_i⟩₊ = F (module docstring), solved exactly on the sorted
-    gaps: between consecutive gaps the left side is linear in δ."""
+    """(δ [m], the slices' loads [N]) of Σ k_i⟨δ − e_i⟩₊ = F (module docstring), solved exactly: the left side is
+    piecewise linear in δ, and Newton's method from full contact ends on the set of slices in contact
+    (:class:`SliceContacts`)."""
     stiffness = np.asarray(stiffness, dtype=float).ravel()
     approach, carried = SliceContacts.prepare(stiffness[None, :], np.asarray(gap, dtype=float).ravel()[None, :]) \
         .solve(load)

@@ -261,9 +261,9 @@ def helical_mesh_period(mesh_model: MeshModel, load: float, points: int, slices:
     ``face_stiffness`` keeps the stiffness of the slices in contact per place across the face
     (``face.stiffness_moments``: the load centre and tilting stiffness over the period; implies ``always_face``).
 
-    What depends on neither speed nor load (the slices' gaps; their stiffness on every contact line, sorted for
-    the solve; the face integral) is computed once per model and number of points, the slices' stiffness only
-    where the face load is solved; a call solves every mesh position at once for its load."""
+    What depends on neither speed nor load (the slices in the zone of action with their stiffness, cached on the
+    pair; their gaps; the face integral) is computed once per model and number of points, the slices only where
+    the face load is solved; a call solves every mesh position at once for its load."""
     always_face = always_face or face_stiffness
     if not deviations or (mesh_model.thermoelastic_mesh is None and not always_face):
         # no deviation at all: the profile's and the lead's come from the thermo-elastic component only
