@@ -107,3 +107,28 @@ def test_fzg_test_gearbox_paths_by_hand():
     assert gear_shaft == pytest.approx(body * 2.0 * 0.5163 / seat, rel=2e-4)  # 0.771 W/K (5.53 without the shaft)
     assert gear_oil == pytest.approx(body * 2.0 * 0.4215 / seat, rel=2e-4)
     assert shaft_oil == pytest.approx(2.0 * 0.4215 + 2.0 * 0.5163 * 2.0 * 0.4215 / seat, rel=2e-4)
+
+
+def _section(bearing_positions, loss=True, pinion_position=50.0):
+    from types import SimpleNamespace
+
+    shaft = SimpleNamespace(name="a", segments=[SimpleNamespace(length_mm=100.0, outer_diameter_mm=30.0,
+                                                                inner_diameter_mm=0.0)])
+    other = SimpleNamespace(name="b", segments=shaft.segments)
+    bearings = [SimpleNamespace(shaft="a", position_mm=position, loss=object() if loss else None)
+                for position in bearing_positions] + [SimpleNamespace(shaft="b", position_mm=0.0, loss=object())]
+    return SimpleNamespace(shafts=[shaft, other], bearings=bearings,
+                           pinion=SimpleNamespace(shaft="a", position_mm=pinion_position),
+                           wheel=SimpleNamespace(shaft="b", position_mm=100.0))
+
+
+def test_drivetrain_spans_come_from_the_gearbox_bearings_on_the_gears_own_shaft():
+    from thermogear.gearbox.shaft_conduction import drivetrain_shaft_spans
+
+    assert drivetrain_shaft_spans(None) == ((), ())
+    pinion, wheel = drivetrain_shaft_spans(_section([0.0, 100.0]))
+    assert [span.length for span in pinion] == [pytest.approx(0.05), pytest.approx(0.05)]
+    assert [span.length for span in wheel] == [pytest.approx(0.1)]  # the wheel at 100 mm, its bearing at 0
+    # bearings without loss data are not the gearbox's: no spans (the lumped seat), nor a bearing at the gear itself
+    assert drivetrain_shaft_spans(_section([0.0, 100.0], loss=False))[0] == ()
+    assert drivetrain_shaft_spans(_section([50.0, 100.0]))[0] == ()
