@@ -25,6 +25,7 @@ from thermogear import warning_scope
 from thermogear.case import cached_per_case
 from thermogear.errors import CaseError
 from thermogear.gearbox.bearing_entries import drivetrain_mounted_bearings, rolling_bearing
+from thermogear.gearbox.shaft_conduction import drivetrain_shaft_spans
 from thermogear.gearbox.injection import OilJet
 from thermogear.friction_models import friction_law
 from thermogear.gearbox.description import (GearboxDescription, GearboxOperatingPoint, Housing, LipSeal,
@@ -130,6 +131,7 @@ def gearbox_description(gearbox: "GearboxSection | None", pair: "GearPair", mate
     backlash_um = None if gears_input is None else gears_input.backlash_normal_um
     law = friction_law(section.friction_model)
     law.lubricant_factor(oil.base_oil, section.lubricant_factor)  # refuses a base oil the law has no X_L for
+    pinion_spans, wheel_spans = drivetrain_shaft_spans(drivetrain)
     conditioning = None if section.conditioning is None else OilConditioning(
         section.conditioning.setpoint_c, section.conditioning.heater_w, section.conditioning.cooling_w,
         section.conditioning.gain_w_per_k)
@@ -151,7 +153,7 @@ def gearbox_description(gearbox: "GearboxSection | None", pair: "GearPair", mate
         shaft_oil_conductance=section.internal.shaft_oil_w_per_k,
         shaft_housing_conductance=section.internal.shaft_housing_w_per_k,
         backlash=None if backlash_um is None else backlash_um * 1e-6, assembly_c=temperature.reference_c,
-        oil_jet=jet)
+        oil_jet=jet, pinion_shaft_spans=pinion_spans, wheel_shaft_spans=wheel_spans)
 
 
 def gearbox_operating_point(operating: "OperatingPoint", gearbox: "GearboxSection | None",

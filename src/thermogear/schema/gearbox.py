@@ -181,7 +181,9 @@ class GearboxInternalSection(Section):
         None, description="each gear to its own shaft's node [W/K]; default conduction through the gear body from "
                           "its root circle to its bore, 2π k b/ln(r_f/r_bore)")
     shaft_oil_w_per_k: Annotated[float, Field(ge=0.0, le=1e5, allow_inf_nan=False)] = Field(
-        4.0, description="both shafts and their bearings to the oil [W/K], half each")
+        4.0, description="both shafts and their bearings to the oil [W/K], half each (with a [drivetrain], the stretches "
+                         "of shaft from each gear to its bearings add their own surfaces as fins: then the bearings' "
+                         "and the rest of the shafts')")
     shaft_housing_w_per_k: Annotated[float, Field(ge=0.0, le=1e5, allow_inf_nan=False)] = Field(
         8.0, description="both shafts to the housing through the bearing seats [W/K], shared in proportion to the "
                          "bearings on each shaft")
