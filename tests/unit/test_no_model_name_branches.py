@@ -19,6 +19,8 @@ from __future__ import annotations
 import ast
 from pathlib import Path
 
+import pytest
+
 import thermogear
 from thermogear.mesh.model_names import MODELS
 from thermogear.mesh.pair_models import PAIR_MODELS
@@ -151,3 +153,70 @@ def test_the_schema_accepts_exactly_the_registered_methods_and_x_te_sources():
 
     assert typing.get_args(DynamicsSection.model_fields["method"].annotation) == tuple(SOLUTION_METHODS)
     assert typing.get_args(ThermalSection.model_fields["x_te_source"].annotation) == tuple(X_TE_SOURCES)
+
+
+def _choice_registries() -> dict:
+    """(registry module, the names it resolves) of every other choice of a model, method or law by name
+    (issue 33): each name is compared in its registry only, every other module asks the resolved object."""
+    from thermogear.cli.warmup import WARMUP_MODELS
+    from thermogear.damping import DAMPING_RULES
+    from thermogear.friction_models import FRICTION_MODELS
+    from thermogear.lubrication_methods import LUBRICATION_METHODS
+    from thermogear.luo2020.expansion import EXPANSION_FORMS
+    from thermogear.sweep.evaluation_methods import EVALUATION_METHODS
+
+    return {
+        "lubrication method ([gearbox.oil] lubrication)": ("lubrication_methods.py", LUBRICATION_METHODS),
+        "warm-up model (warmup --model)": ("cli/warmup.py", WARMUP_MODELS),
+        "evaluation method of a study (sweep --method)": ("sweep/evaluation_methods.py", EVALUATION_METHODS),
+        "mesh-damping rule ([damping] rule)": ("damping.py", DAMPING_RULES),
+        "form of Eq. 9 ([thermal] expansion_model)": ("luo2020/expansion.py", EXPANSION_FORMS),
+        "friction law (friction_model)": ("friction_models.py", FRICTION_MODELS),
+    }
+
+
+CHOICES = ("lubrication method ([gearbox.oil] lubrication)", "warm-up model (warmup --model)",
+           "evaluation method of a study (sweep --method)", "mesh-damping rule ([damping] rule)",
+           "form of Eq. 9 ([thermal] expansion_model)", "friction law (friction_model)")
+
+
+@pytest.mark.parametrize("choice", CHOICES)
+def test_every_choice_is_compared_only_in_its_registry(choice):
+    # at 98809ca: lubrication == "injection" (gearbox x2, schema), == "dip" (gearbox input checks), model ==
+    # "gearbox" (cli/warmup x2), method == "batch" (cli/sweep x2, sweep/api, sweep/batch, sweep/engine), rule ==
+    # "paper" (damping, damping plots), circumferential == "consistent" (luo2020/expansion), model == "constant"
+    # (schema/friction_inputs x3)
+    registry, names = _choice_registries()[choice]
+    hits = {}
+    for path in sorted(SOURCE.rglob("*.py")):
+        relative = path.relative_to(SOURCE).as_posix()
+        if relative != registry and (found := model_name_branches(path.read_text(encoding="utf-8"),
+                                                                  frozenset(names), frozenset())):
+            hits[relative] = found
+    assert not hits, hits
+
+
+def test_the_choice_scan_finds_the_forms_the_package_held():
+    source = ('injection = section.oil.lubrication == "injection"\n'
+              'if model == "gearbox":\n    pass\n'
+              'flag = subject.backlash and method == "batch"\n'
+              'show = summary.rule == "paper"\n'
+              'if model != "constant":\n    pass\n'
+              'jet = lubrication_method(section.oil.lubrication).oil_jet\n')
+    names = frozenset().union(*(frozenset(names) for _, names in _choice_registries().values()))
+    assert sorted(int(hit.split(":")[0]) for hit in model_name_branches(source, names, frozenset())) == [1, 2, 4, 5, 6]
+
+
+def test_the_schema_accepts_exactly_the_registered_choices():
+    import typing
+
+    from thermogear.damping import DAMPING_RULES
+    from thermogear.lubrication_methods import LUBRICATION_METHODS
+    from thermogear.luo2020.expansion import EXPANSION_FORMS
+    from thermogear.schema.dynamics import DampingSection
+    from thermogear.schema.gearbox import GearboxOilSection
+    from thermogear.schema.thermal import ThermalSection
+
+    assert typing.get_args(GearboxOilSection.model_fields["lubrication"].annotation) == tuple(LUBRICATION_METHODS)
+    assert set(typing.get_args(DampingSection.model_fields["rule"].annotation)) == set(DAMPING_RULES)
+    assert set(typing.get_args(ThermalSection.model_fields["expansion_model"].annotation)) == set(EXPANSION_FORMS)

@@ -27,6 +27,7 @@ from thermogear.errors import CaseError
 from thermogear.gearbox.bearing_entries import drivetrain_mounted_bearings, rolling_bearing
 from thermogear.gearbox.injection import OilJet
 from thermogear.friction_models import friction_law
+from thermogear.lubrication_methods import lubrication_method
 from thermogear.gearbox.description import (GearboxDescription, GearboxOperatingPoint, Housing, LipSeal,
                                             MountedBearing, OilConditioning)
 from thermogear.gearbox.input_checks import check_gearbox_inputs, housing_box, oil_floor_and_level
@@ -116,12 +117,12 @@ def gearbox_description(gearbox: "GearboxSection | None", pair: "GearPair", mate
     def disc_mass(gear) -> float:
         return material.density * math.pi * (gear.tip_radius**2 - gear.bore_radius**2) * gear.face_width
 
-    injection = section.oil.lubrication == "injection"
-    default_immersion = 0.0 if injection else pair.operating_pitch_radii[1]
+    lubrication = lubrication_method(section.oil.lubrication)
+    default_immersion = pair.operating_pitch_radii[1] if lubrication.wheel_dipped else 0.0
     wheel_immersion = (default_immersion if section.oil.wheel_immersion_mm is None
                        else section.oil.wheel_immersion_mm * 1e-3)
     jet = OilJet(section.oil.injection_flow_l_min / 60000.0, section.oil.jet_speed_m_s,
-                 at_outlet=section.oil.jet_position == "outlet") if injection else None
+                 at_outlet=section.oil.jet_position == "outlet") if lubrication.oil_jet else None
     for key, depth, gear in (("wheel_immersion_mm", wheel_immersion, pair.wheel),
                              ("pinion_immersion_mm", section.oil.pinion_immersion_mm * 1e-3, pair.pinion)):
         if depth > 2.0 * gear.tip_radius:

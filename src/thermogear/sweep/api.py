@@ -17,6 +17,7 @@ from typing import Any
 
 from thermogear.errors import CaseError
 from thermogear.dynamics.mesh_laws import mesh_law
+from thermogear.sweep.evaluation_methods import is_batched
 
 __all__ = ["STUDY_KINDS", "StudyKind", "StudySubject", "study", "study_kind"]
 
@@ -101,7 +102,7 @@ def _refuse(options: dict, kind: str, **defaults) -> None:
 #: The kinds of study, tried in order (those picked by the case), or named.
 STUDY_KINDS: tuple[StudyKind, ...] = (
     StudyKind("drivetrain", lambda subject, method: subject.drivetrain, _run_drivetrain),
-    StudyKind("branches", lambda subject, method: subject.backlash and method == "batch", _run_branches),
+    StudyKind("branches", lambda subject, method: subject.backlash and is_batched(method), _run_branches),
     StudyKind("grid", lambda subject, method: True, _run_grid),
     StudyKind("warmup", lambda subject, method: subject.gearbox, _run_warmups, by_case=False,
               needs="a case with a [gearbox] (the thermal network the warm-up integrates)", default_model="thermal"),
