@@ -24,6 +24,7 @@ from thermogear.case_geometry import gear_pair_of, helical_pair_of
 from thermogear.case_helical import check_face_gradient, check_helical_case, transverse_gears_section
 from thermogear.case_keys import warn_keys_without_effect
 from thermogear.case_limits import check_model_limits
+from thermogear.case_pieces import call_with_pieces
 from thermogear.composition import CASE_CHECKS, TEMPERATURE_MODELS, builtin, resolve
 from thermogear.errors import CaseError, closest_key
 from thermogear.fzg import fzg_load_stage_torque
@@ -204,13 +205,14 @@ def load_case(name_or_path: str | Path) -> Case:
 
 
 # --------------------------------------------------------------------------------------------- load-time checks
-CaseCheck = Callable[["Case"], None]
+CaseCheck = Callable[..., None]  # its parameters name pieces of the case (thermogear.case_pieces)
 _CASE_CHECKS: list[CaseCheck] = []
 
 
 def register_case_check(check: CaseCheck) -> CaseCheck:
-    """Add a check that every loaded case must pass (it raises CaseError). Returns the check, so it can be used as
-    a decorator. The built-in checks (temperatures, X_te, then those named in :mod:`thermogear.composition`) run
+    """Add a check that every loaded case must pass (it raises CaseError). The check receives the pieces of the
+    case its parameters name (:mod:`thermogear.case_pieces`: ``check(gear_pair, operating_point)``; ``check(case)``
+    the whole case). Returns the check, so it can be used as a decorator. The built-in checks (temperatures, X_te, then those named in :mod:`thermogear.composition`) run
     first; registered ones after, in order."""
     if not callable(check):
         raise TypeError("a case check must be callable: check(case) -> None")
@@ -234,7 +236,7 @@ def check_case(case: "Case") -> None:
                        case.dynamics.mesh, case.gears_input, case.document.get("operating", {}))
     builtin_checks = [check for check in map(resolve, CASE_CHECKS) if check is not None]
     for check in builtin_checks + [check for check in _CASE_CHECKS if check not in builtin_checks]:
-        check(case)
+        call_with_pieces(check, case)  # each receives the pieces of the case it names (thermogear.case_pieces)
 
 
 def _check_temperature_field(section: TemperatureSection, directory: Path | None, pair: GearPair,
@@ -346,7 +348,7 @@ def case_from_document(document: dict[str, Any], source: str = "<memory>") -> Ca
         if resolver is None:
             raise CaseError("temperature.model", name, "a registered model (its module is not installed)",
                             "this temperature model is predicted by a model that is not loaded")
-        case = resolver(case)
+        case = call_with_pieces(resolver, case)
     check_case(case)
     warn_keys_without_effect(case.thermal, case.dynamics)
     return case

@@ -143,8 +143,7 @@ def _standard_factor(base_oil: str) -> float | None:
 class FrictionLaw:
     """One mean friction law: its name, source, the exponent of η in it, its X_L per base oil (None: the law has no
     published value for that base oil), the law itself, ``law(contact, constant) -> μ [–]``, and the exponent p of
-    μ ∝ (w/v_Σ)^p (module docstring); ``given`` where the case gives μ itself (``friction_coefficient``, required
-    then and refused otherwise) and the law has no lubricant factor."""
+    μ ∝ (w/v_Σ)^p (module docstring)."""
 
     name: str
     source: str
@@ -153,7 +152,6 @@ class FrictionLaw:
     law: Callable[[PitchContact, float | None], float]
     factor_of: Callable[[str], float | None]
     load_exponent: float
-    given: bool = False
 
     def lubricant_factor(self, base_oil: str, given: float | None = None,
                          key: str = "gearbox.lubricant_factor") -> float:
@@ -199,7 +197,7 @@ FRICTION_MODELS: dict[str, FrictionLaw] = {
     "schlenk": FrictionLaw("schlenk", "Schlenk (1994) with X_L of Fernandes et al. (2015)", -0.05, True, _schlenk,
                            SCHLENK_LUBRICANT_FACTORS.get, 0.2),
     "constant": FrictionLaw("constant", "a given constant coefficient", 0.0, False, _constant, lambda base: 1.0,
-                            0.0, given=True),
+                            0.0),
 }
 #: The gearbox loss model's default friction law (docs/gearbox-temperature.md, "Which friction law").
 DEFAULT_LOSS_FRICTION_MODEL = "schlenk"

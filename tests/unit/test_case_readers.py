@@ -33,8 +33,12 @@ SOURCE = Path(__file__).resolve().parents[2] / "src" / "thermogear"
 #: resolved once, by gearbox_model_from_case), the coupled heat's parts the gearbox model and sections, the mesh
 #: table's resolver is its own load-time check, the drivetrain's heat provider and the predicted-temperature model
 #: are looked up by their one resolver, and preflight is asked through the Orchestrator. 35 once main's study kinds
-#: (the warm-up kind and study_kind, merged at 38) pick a case's kind from its StudySubject, resolved once.
-MAXIMUM_CASE_READERS = 35
+#: (the warm-up kind and study_kind, merged at 38) pick a case's kind from its StudySubject, resolved once. 28 once
+#: the checks and providers of thermogear.composition receive the pieces of the case they name
+#: (thermogear.case_pieces.call_with_pieces: the FE and gearbox temperature providers, the FE X_te, the network's
+#: drivetrain heat, the gearbox and damping-law checks; +1 for call_with_pieces itself), study_kind takes the
+#: StudySubject and the held load of a sweep the case's [operating] keys and operating point.
+MAXIMUM_CASE_READERS = 28
 
 
 def _takes_case(argument: ast.arg) -> bool:

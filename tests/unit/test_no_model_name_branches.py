@@ -184,8 +184,7 @@ CHOICES = ("lubrication method ([gearbox.oil] lubrication)", "warm-up model (war
 def test_every_choice_is_compared_only_in_its_registry(choice):
     # at 98809ca: lubrication == "injection" (gearbox x2, schema), == "dip" (gearbox input checks), model ==
     # "gearbox" (cli/warmup x2), method == "batch" (cli/sweep x2, sweep/api, sweep/batch, sweep/engine), rule ==
-    # "paper" (damping, damping plots), circumferential == "consistent" (luo2020/expansion), model == "constant"
-    # (schema/friction_inputs x3)
+    # "paper" (damping, damping plots), circumferential == "consistent" (luo2020/expansion)
     registry, names = _choice_registries()[choice]
     hits = {}
     for path in sorted(SOURCE.rglob("*.py")):
@@ -193,7 +192,13 @@ def test_every_choice_is_compared_only_in_its_registry(choice):
         if relative != registry and (found := model_name_branches(path.read_text(encoding="utf-8"),
                                                                   frozenset(names), frozenset())):
             hits[relative] = found
-    assert not hits, hits
+    assert {path: len(found) for path, found in hits.items()} == CHOICES_KNOWN.get(choice, {}), hits
+
+
+#: Comparisons left on purpose, with their reason: the schema checks the keys of the ``"constant"`` friction law
+#: (its coefficient required, its lubricant factor refused) by name, because it sits below the friction laws' layer
+#: (:mod:`thermogear.friction_models` reads the lubricant model, which reads the case: the layers contract).
+CHOICES_KNOWN = {"friction law (friction_model)": {"schema/friction_inputs.py": 3}}
 
 
 def test_the_choice_scan_finds_the_forms_the_package_held():
@@ -201,7 +206,7 @@ def test_the_choice_scan_finds_the_forms_the_package_held():
               'if model == "gearbox":\n    pass\n'
               'flag = subject.backlash and method == "batch"\n'
               'show = summary.rule == "paper"\n'
-              'if model != "constant":\n    pass\n'
+              'if model != "constant":\n    pass\n'  # the schema's, left with its reason (CHOICES_KNOWN)
               'jet = lubrication_method(section.oil.lubrication).oil_jet\n')
     names = frozenset().union(*(frozenset(names) for _, names in _choice_registries().values()))
     assert sorted(int(hit.split(":")[0]) for hit in model_name_branches(source, names, frozenset())) == [1, 2, 4, 5, 6]

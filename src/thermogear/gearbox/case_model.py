@@ -58,13 +58,12 @@ def gearbox_section(section: "GearboxSection | None") -> "GearboxSection":
     return section
 
 
-def check_gearbox_section(case: "Case") -> None:
+def check_gearbox_section(gearbox_model: "GearboxThermalModel | None") -> None:
     """Load-time check of a ``[gearbox]`` section under any temperature model: the description builds.
 
-    Keeps the Case: it is a load-time check (``check(case)``, :data:`thermogear.composition.CASE_CHECKS`) that
-    resolves the case's description."""
-    if getattr(case, "gearbox", None) is not None:
-        gearbox_model_from_case(case)  # its description builds (memoised: every later stage asks for this one)
+    A load-time check (:data:`thermogear.composition.CASE_CHECKS`) whose work is done by asking for the piece
+    ``gearbox_model`` (:mod:`thermogear.case_pieces`): resolving it builds the case's description (memoised: every
+    later stage asks for this one), None for a case without ``[gearbox]``."""
 
 
 def housing_expansion(housing: "HousingSection", gearbox: "GearboxSection | None") -> float:

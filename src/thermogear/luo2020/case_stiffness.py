@@ -21,6 +21,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from thermogear import warning_scope
+from thermogear.case_pieces import call_with_pieces
 from thermogear.stiffness.potential_energy import pair_compliance
 from thermogear.stiffness.table import pair_compliance_table, tooth_compliance_at
 from thermogear.luo2020.calibration import Calibration, calibrate, section_x_te, x_te_provider
@@ -171,7 +172,7 @@ def paper_thermal_model(case: "Case") -> PaperThermalModel:
         return temperature_field_from_case(case)
 
     def provided_x_te() -> float:
-        return x_te_provider(section.x_te_source)(case)
+        return call_with_pieces(x_te_provider(section.x_te_source), case)  # the pieces it names
 
     key = id(case)
     entry = _MEMOS.get(key)

@@ -37,6 +37,7 @@ from thermogear.thermoelastic.mesh import ThermoelasticMesh
 
 if TYPE_CHECKING:
     from thermogear.case import Case
+    from thermogear.schema import DampingSection
 
 
 #: Temperature sources whose temperatures depend on the operating point (speed and load): the FE heat model and
@@ -333,14 +334,14 @@ class MeshModel:
         return math.sqrt(state.mean_mesh_stiffness / state.mass) / (2.0 * math.pi)
 
 
-def check_damping_friction_law(case: "Case") -> None:
-    """Load-time check of ``[damping] friction_model``: the law has a lubricant factor X_L for the case's base oil
-    (or the case gives ``damping.lubricant_factor``); CaseError naming the key otherwise.
+def check_damping_friction_law(damping: "DampingSection", oil: "Lubricant") -> None:
+    """Load-time check of ``[damping] friction_model``: the law has a lubricant factor X_L for the base oil of the
+    case's ``oil`` (or the case gives ``damping.lubricant_factor``); CaseError naming the key otherwise.
 
-    Keeps the Case: it is a load-time check (``check(case)``, :data:`thermogear.composition.CASE_CHECKS`)."""
-    law = friction_law(case.damping.friction_model, key="damping.friction_model")
-    law.lubricant_factor(lubricant_from_case(case).base_oil, case.damping.lubricant_factor,
-                         key="damping.lubricant_factor")
+    A load-time check (:data:`thermogear.composition.CASE_CHECKS`): it receives these pieces of the case
+    (:mod:`thermogear.case_pieces`)."""
+    law = friction_law(damping.friction_model, key="damping.friction_model")
+    law.lubricant_factor(oil.base_oil, damping.lubricant_factor, key="damping.lubricant_factor")
 
 
 __all__ = ["MODELS", "MeshModel", "MeshState", "check_damping_friction_law"]

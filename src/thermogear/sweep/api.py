@@ -109,10 +109,10 @@ STUDY_KINDS: tuple[StudyKind, ...] = (
 )
 
 
-def study_kind(case, method: str = "batch", name: str | None = None) -> StudyKind:
-    """The kind of study of ``case``: the first of :data:`STUDY_KINDS` picked by the case that accepts it, or the
-    kind ``name`` (refused where it does not accept the case, or where the case picks another kind of its own)."""
-    subject = StudySubject.of(case)
+def study_kind(subject: StudySubject, method: str = "batch", name: str | None = None) -> StudyKind:
+    """The kind of study of a case (its ``subject``, :meth:`StudySubject.of`): the first of :data:`STUDY_KINDS`
+    picked by the case that accepts it, or the kind ``name`` (refused where it does not accept the case, or where
+    the case picks another kind of its own)."""
     automatic = next(kind for kind in STUDY_KINDS if kind.by_case and kind.accepts(subject, method))
     if name is None:
         return automatic
@@ -147,7 +147,7 @@ def study(case, vary: dict[str, Any] | list[str], out: str | Path, scheduler: st
 
     if isinstance(case, (str, Path)):
         case, _ = load_study_case(case)
-    chosen = study_kind(case, method, kind)
+    chosen = study_kind(StudySubject.of(case), method, kind)
     defined = Study.define(case, vary, model=model or chosen.default_model, chunk_points=chunk_points, hold=hold)
     options = {"scheduler": scheduler, "workers": workers, "resume": resume, "overwrite": overwrite,
                "chunk_points": chunk_points, "method": method, "direction": direction, "multistart": multistart,
