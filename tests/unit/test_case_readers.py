@@ -37,8 +37,9 @@ SOURCE = Path(__file__).resolve().parents[2] / "src" / "thermogear"
 #: the checks and providers of thermogear.composition receive the pieces of the case they name
 #: (thermogear.case_pieces.call_with_pieces: the FE and gearbox temperature providers, the FE X_te, the network's
 #: drivetrain heat, the gearbox and damping-law checks; +1 for call_with_pieces itself), study_kind takes the
-#: StudySubject and the held load of a sweep the case's [operating] keys and operating point.
-MAXIMUM_CASE_READERS = 28
+#: StudySubject and the held load of a sweep the case's [operating] keys and operating point. 27 once the callable
+#: module thermogear.sweep forwards its arguments to thermogear.sweep.api.study (the entry point) unread.
+MAXIMUM_CASE_READERS = 27
 
 
 def _takes_case(argument: ast.arg) -> bool:

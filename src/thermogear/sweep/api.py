@@ -19,7 +19,7 @@ from thermogear.errors import CaseError
 from thermogear.dynamics.mesh_laws import mesh_law
 from thermogear.sweep.evaluation_methods import is_batched
 
-__all__ = ["STUDY_KINDS", "StudyKind", "StudySubject", "study", "study_kind"]
+__all__ = ["STUDY_KINDS", "StudyKind", "StudySubject", "register_study_kind", "study", "study_kind", "study_kinds"]
 
 
 @dataclass(frozen=True)
@@ -109,20 +109,41 @@ STUDY_KINDS: tuple[StudyKind, ...] = (
 )
 
 
+#: Kinds of study added at run time (:func:`register_study_kind`), tried before the built-in ones.
+_REGISTERED: list[StudyKind] = []
+
+
+def register_study_kind(kind: StudyKind) -> StudyKind:
+    """Add a kind of study, named by ``sweep --kind`` and ``thermogear.sweep(kind=...)`` (``by_case=False``), or
+    picked from the case before the built-in kinds wherever its ``accepts`` does (``by_case=True``). Its
+    ``run(study, out, options)`` computes the study's points and writes them to ``out``; it returns the Dataset.
+    Returns the kind; ValueError for a name already taken."""
+    if kind.name in {known.name for known in (*_REGISTERED, *STUDY_KINDS)}:
+        raise ValueError(f"a kind of study named {kind.name!r} exists already")
+    _REGISTERED.append(kind)
+    return kind
+
+
+def study_kinds() -> tuple[StudyKind, ...]:
+    """Every kind of study, in the order they are tried: the registered ones, then :data:`STUDY_KINDS`."""
+    return (*_REGISTERED, *STUDY_KINDS)
+
+
 def study_kind(subject: StudySubject, method: str = "batch", name: str | None = None) -> StudyKind:
-    """The kind of study of a case (its ``subject``, :meth:`StudySubject.of`): the first of :data:`STUDY_KINDS`
+    """The kind of study of a case (its ``subject``, :meth:`StudySubject.of`): the first of :func:`study_kinds`
     picked by the case that accepts it, or the kind ``name`` (refused where it does not accept the case, or where
     the case picks another kind of its own)."""
-    automatic = next(kind for kind in STUDY_KINDS if kind.by_case and kind.accepts(subject, method))
+    every = study_kinds()
+    automatic = next(kind for kind in every if kind.by_case and kind.accepts(subject, method))
     if name is None:
         return automatic
-    kinds = {kind.name: kind for kind in STUDY_KINDS}
+    kinds = {kind.name: kind for kind in every}
     if name not in kinds:
         raise CaseError("kind", name, " | ".join(kinds), "unknown kind of study")
     chosen = kinds[name]
     if chosen.by_case and chosen is not automatic:
         raise CaseError("kind", name, f"{automatic.name} (or a kind named only: "
-                        f"{', '.join(kind.name for kind in STUDY_KINDS if not kind.by_case)})",
+                        f"{', '.join(kind.name for kind in every if not kind.by_case)})",
                         f"this case's study is the {automatic.name} study")
     if not chosen.accepts(subject, method):
         raise CaseError("kind", name, chosen.needs or "a case this kind accepts", f"the {name} study needs it")
