@@ -8,6 +8,7 @@ the reason.
 from __future__ import annotations
 
 import functools
+import inspect
 import tomllib
 import weakref
 from dataclasses import dataclass, field
@@ -138,7 +139,10 @@ def _section_default(name: str) -> dict[str, Any]:
 
 
 def cached_per_case(function):
-    """Memoise a function of a Case alone on that Case instance.
+    """A resolver of a case, memoised on that Case instance: ``function``'s parameters name the pieces of the case it
+    reads (:mod:`thermogear.case_pieces`: ``lubricant``, ``gear_pair``, a derived piece such as ``oil``; ``case``
+    the whole case), and the memoised resolver is called with the case (``resolver(case)``), which it reads in one
+    place: here.
 
     Derived components of a case (its temperature field, lubricant, X_te) are pure functions of the case and are
     asked for by several stages of one operating point; like the stiffness tables they are computed once per case.
@@ -154,13 +158,15 @@ def cached_per_case(function):
         entry = results.get(key)
         if entry is None or entry[0]() is not case:
             with warning_scope.recorded() as caught:
-                value = function(case)
+                value = call_with_pieces(function, case)
             entry = (weakref.ref(case, lambda _, key=key: results.pop(key, None)), value, warning_scope.kept(caught))
             results[key] = entry
         warning_scope.raise_again(entry[2])
         return entry[1]
 
     cached.cache_clear = results.clear
+    # called with the case: its signature is (case); the resolver of the pieces stays ``cached.__wrapped__``
+    cached.__signature__ = inspect.Signature([inspect.Parameter("case", inspect.Parameter.POSITIONAL_OR_KEYWORD)])
     return cached
 
 

@@ -41,7 +41,7 @@ def piece_names(function: Callable) -> tuple[str, ...]:
     """The pieces ``function`` asks for: the names of its parameters, each passed by keyword (TypeError for
     ``*args``/``**kwargs``, which name no piece)."""
     names = []
-    for parameter in inspect.signature(function).parameters.values():
+    for parameter in inspect.signature(function, follow_wrapped=False).parameters.values():
         if parameter.kind in (parameter.VAR_POSITIONAL, parameter.VAR_KEYWORD, parameter.POSITIONAL_ONLY):
             raise TypeError(f"{getattr(function, '__qualname__', function)!s}: parameter '{parameter.name}' names no "
                             "piece of a case (a check or provider takes the pieces it reads by name)")

@@ -27,6 +27,7 @@ CASE_PIECES: dict[str, tuple[str, str | None]] = {
     "oil": ("thermogear.lubricant:lubricant_from_case", None),
     "gearbox_model": ("thermogear.gearbox.case_model:gearbox_model_from_case", "gearbox"),
     "fem_inputs": ("thermogear.fem.inputs:fem_inputs", None),
+    "temperature_field": ("thermogear.temperature_source:temperature_field_from_case", None),
 }
 
 #: Every check and provider below receives the pieces of the case its parameters name

@@ -38,8 +38,16 @@ SOURCE = Path(__file__).resolve().parents[2] / "src" / "thermogear"
 #: (thermogear.case_pieces.call_with_pieces: the FE and gearbox temperature providers, the FE X_te, the network's
 #: drivetrain heat, the gearbox and damping-law checks; +1 for call_with_pieces itself), study_kind takes the
 #: StudySubject and the held load of a sweep the case's [operating] keys and operating point. 27 once the callable
-#: module thermogear.sweep forwards its arguments to thermogear.sweep.api.study (the entry point) unread.
-MAXIMUM_CASE_READERS = 27
+#: module thermogear.sweep forwards its arguments to thermogear.sweep.api.study (the entry point) unread. 22 once the
+#: memoised resolvers name the pieces they read and thermogear.case.cached_per_case reads the case for them (the oil,
+#: the gearbox network, the mesh table, the thermo-elastic mesh: called with the case as before, each declares its
+#: inputs) and StudySubject.of takes the three sections it reads. Left: the machinery that reads the case for the
+#: others (check_case, cached_per_case, call_with_pieces), the entry points (thermogear.run, evaluate_case, the
+#: report, the sweeps and Study.define/from_description, the warm-ups, the gearbox grid) and the resolvers that
+#: write a new case or hand the case on lazily (the warm-up states, fem_inputs, the gearbox's predicted
+#: temperatures, the stages' cases, the drivetrain, the paper's k_T, the pair model, the temperature field) and
+#: PredictedTemperatureError, which carries the unresolved case. The next step to 15: those resolvers onto pieces.
+MAXIMUM_CASE_READERS = 22
 
 
 def _takes_case(argument: ast.arg) -> bool:

@@ -164,17 +164,18 @@ def gearbox_operating_point(operating: "OperatingPoint", gearbox: "GearboxSectio
 
 
 @cached_per_case
-def gearbox_model_from_case(case: "Case"):
-    """The :class:`~thermogear.gearbox.model.GearboxThermalModel` of a case with a ``[gearbox]`` section (memoised
-    per case; its ``description`` is the case's :class:`GearboxDescription`).
-
-    Keeps the Case: the resolver that turns the case's sections into the gearbox's description, once."""
+def gearbox_model_from_case(gearbox: "GearboxSection | None", gear_pair: "GearPair", material: "Material",
+                            oil: "Lubricant", temperature: "TemperatureSection", housing: "HousingSection",
+                            gears_input: "GearsSection | None", drivetrain: "DrivetrainSection | None",
+                            roughness_ra: float):
+    """The :class:`~thermogear.gearbox.model.GearboxThermalModel` of a case with a ``[gearbox]`` section, its
+    ``description`` the :class:`GearboxDescription` of these pieces of the case (:func:`gearbox_description`).
+    Called with the case (``gearbox_model_from_case(case)``), memoised per case
+    (:func:`thermogear.case.cached_per_case`)."""
     from thermogear.gearbox.model import GearboxThermalModel  # noqa: PLC0415
-    from thermogear.lubricant import lubricant_from_case  # noqa: PLC0415
 
-    return GearboxThermalModel(gearbox_description(case.gearbox, case.gear_pair, case.material,
-                                                   lubricant_from_case(case), case.temperature, case.housing,
-                                                   case.gears_input, case.drivetrain, case.roughness_ra))
+    return GearboxThermalModel(gearbox_description(gearbox, gear_pair, material, oil, temperature, housing,
+                                                   gears_input, drivetrain, roughness_ra))
 
 
 #: Steady states already solved, per thermal model (by identity: the model is built once per case and compares by

@@ -15,6 +15,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from thermogear.case_pieces import call_with_pieces
 from thermogear.errors import CaseError
 from thermogear.dynamics.mesh_laws import mesh_law
 from thermogear.sweep.evaluation_methods import is_batched
@@ -24,7 +25,7 @@ __all__ = ["STUDY_KINDS", "StudyKind", "StudySubject", "register_study_kind", "s
 
 @dataclass(frozen=True)
 class StudySubject:
-    """What picks a case's kind of study, resolved once from the case (:meth:`of`): whether it has a
+    """What picks a case's kind of study, resolved once from the case (:meth:`of` its sections): whether it has a
     ``[drivetrain]``, whether its mesh has the backlash dead zone, whether it has a ``[gearbox]``."""
 
     drivetrain: bool
@@ -32,8 +33,9 @@ class StudySubject:
     gearbox: bool
 
     @classmethod
-    def of(cls, case) -> "StudySubject":
-        return cls(case.drivetrain is not None, mesh_law(case.dynamics.mesh).backlash, case.gearbox is not None)
+    def of(cls, drivetrain, dynamics, gearbox) -> "StudySubject":
+        """The subject of a case with these sections (``call_with_pieces(StudySubject.of, case)``)."""
+        return cls(drivetrain is not None, mesh_law(dynamics.mesh).backlash, gearbox is not None)
 
 
 @dataclass(frozen=True)
@@ -168,7 +170,7 @@ def study(case, vary: dict[str, Any] | list[str], out: str | Path, scheduler: st
 
     if isinstance(case, (str, Path)):
         case, _ = load_study_case(case)
-    chosen = study_kind(StudySubject.of(case), method, kind)
+    chosen = study_kind(call_with_pieces(StudySubject.of, case), method, kind)
     defined = Study.define(case, vary, model=model or chosen.default_model, chunk_points=chunk_points, hold=hold)
     options = {"scheduler": scheduler, "workers": workers, "resume": resume, "overwrite": overwrite,
                "chunk_points": chunk_points, "method": method, "direction": direction, "multistart": multistart,
