@@ -44,6 +44,7 @@ from typing import Literal
 import numpy as np
 
 from thermogear.errors import CaseError
+from thermogear.registry import registered
 from thermogear.friction import friction_validity_warnings
 from thermogear.friction_models import DEFAULT_DAMPING_FRICTION_MODEL, FRICTION_MODELS, FrictionLaw, PitchContact
 from thermogear.mesh.model_names import MODELS
@@ -96,10 +97,7 @@ RULES = tuple(DAMPING_RULES)
 
 def damping_rule(name: str) -> MeshDampingRule:
     """The mesh-damping rule called ``name``; a CaseError naming ``damping.rule`` for any other."""
-    rule = DAMPING_RULES.get(name)
-    if rule is None:
-        raise CaseError("damping.rule", name, " | ".join(RULES), "unknown mesh-damping rule")
-    return rule
+    return registered(DAMPING_RULES, name, "damping.rule", "unknown mesh-damping rule")
 
 
 # ---------------------------------------------------------------------------------------------- functions

@@ -9,14 +9,14 @@ default), never compared as a string.
 
 A new method is one :class:`LubricationMethod` line in :data:`LUBRICATION_METHODS` (and the ``Literal`` of
 :class:`thermogear.schema.gearbox.GearboxOilSection`, tested equal). This module imports nothing of thermogear but
-its errors, so every layer may read it.
+its errors (through :mod:`thermogear.registry`), so every layer may read it.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
 
-from thermogear.errors import CaseError
+from thermogear.registry import registered
 
 __all__ = ["LUBRICATION_METHODS", "LubricationMethod", "lubrication_method"]
 
@@ -41,8 +41,4 @@ LUBRICATION_METHODS: dict[str, LubricationMethod] = {method.name: method for met
 
 def lubrication_method(name: str) -> LubricationMethod:
     """The lubrication method called ``name``; a CaseError naming ``gearbox.oil.lubrication`` for any other."""
-    method = LUBRICATION_METHODS.get(name)
-    if method is None:
-        raise CaseError("gearbox.oil.lubrication", name, " | ".join(LUBRICATION_METHODS),
-                        "unknown lubrication method")
-    return method
+    return registered(LUBRICATION_METHODS, name, "gearbox.oil.lubrication", "unknown lubrication method")

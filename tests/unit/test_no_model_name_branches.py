@@ -266,3 +266,13 @@ def test_a_bearing_entry_of_each_type_is_that_type():
     assert roller == RollingBearing.cylindrical_roller(sliding_constants=(0.16, 0.0015), drag_variable=0.0,
                                                        **constants)
     assert not ball.roller and roller.roller
+
+
+def test_a_name_outside_a_registry_is_refused_naming_the_key_and_the_registered_names():
+    from thermogear.errors import CaseError
+    from thermogear.lubrication_methods import lubrication_method
+
+    assert lubrication_method("injection").oil_jet and lubrication_method("dip").wheel_dipped
+    with pytest.raises(CaseError) as caught:
+        lubrication_method("mist")
+    assert caught.value.key == "gearbox.oil.lubrication" and "dip | injection" in str(caught.value)

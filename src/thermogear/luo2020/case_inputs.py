@@ -8,7 +8,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from thermogear.errors import CaseError
+from thermogear.registry import registered
 from thermogear.geometry import GearPair
 from thermogear.materials import Material
 from thermogear.stiffness.table import pair_stiffness_at
@@ -71,10 +71,7 @@ LOAD_BASES: dict[str, LoadBasis] = {basis.name: basis for basis in (
 
 def load_basis_of(name: str) -> LoadBasis:
     """The load basis called ``name``; a CaseError naming ``thermal.load_basis`` for any other."""
-    basis = LOAD_BASES.get(name)
-    if basis is None:
-        raise CaseError("thermal.load_basis", name, "'external' or 'pair_share'", "unknown load basis")
-    return basis
+    return registered(LOAD_BASES, name, "thermal.load_basis", "unknown load basis", "'external' or 'pair_share'")
 
 
 __all__ = ["LOAD_BASES", "LoadBasis", "PaperThermalInputs", "load_basis_of"]

@@ -19,6 +19,7 @@ from typing import Literal
 import numpy as np
 
 from thermogear.errors import CaseError
+from thermogear.registry import registered
 
 
 def base_circle_radial_expansion(alpha_th, base_radius, bore_radius, base_rise, bore_rise):
@@ -69,10 +70,8 @@ EXPANSION_FORMS = {"paper": _as_printed, "consistent": _less_radial_widening}
 
 def expansion_form(name: str):
     """The form of Eq. 9 called ``name``; a CaseError naming ``thermal.expansion_model`` for any other."""
-    form = EXPANSION_FORMS.get(name)
-    if form is None:
-        raise CaseError("thermal.expansion_model", name, "'paper' or 'consistent'", "unknown form of Eq. 9")
-    return form
+    return registered(EXPANSION_FORMS, name, "thermal.expansion_model", "unknown form of Eq. 9",
+                      "'paper' or 'consistent'")
 
 
 def flank_point_displacement(alpha_th, radius, half_angle, flank_rise, base_expansion, base_radius,

@@ -14,7 +14,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from thermogear.errors import CaseError
+from thermogear.registry import registered
 
 __all__ = ["EVALUATION_METHODS", "EvaluationMethod", "evaluation_method", "is_batched"]
 
@@ -35,10 +35,7 @@ EVALUATION_METHODS: dict[str, EvaluationMethod] = {method.name: method for metho
 
 def evaluation_method(name: str) -> EvaluationMethod:
     """The evaluation method called ``name``; a CaseError naming ``method`` for any other."""
-    method = EVALUATION_METHODS.get(name)
-    if method is None:
-        raise CaseError("method", name, " | ".join(EVALUATION_METHODS), "unknown evaluation method")
-    return method
+    return registered(EVALUATION_METHODS, name, "method", "unknown evaluation method")
 
 
 def is_batched(name: str) -> bool:
