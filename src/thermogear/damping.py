@@ -37,12 +37,14 @@ model (the dynamics relays the error).
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Literal
 
 import numpy as np
 
 from thermogear.errors import CaseError
+from thermogear.registry import registered
 from thermogear.friction import friction_validity_warnings
 from thermogear.friction_models import DEFAULT_DAMPING_FRICTION_MODEL, FRICTION_MODELS, FrictionLaw, PitchContact
 from thermogear.mesh.model_names import MODELS
@@ -63,7 +65,39 @@ def friction_damping_exponents(law: FrictionLaw) -> tuple[float, float]:
 
 
 Rule = Literal["paper", "parallel"]
-RULES = ("paper", "parallel")
+
+
+def _mean_of_pairs(total: np.ndarray, count: np.ndarray) -> np.ndarray:
+    """The arithmetic mean of the pairs in contact (0 where none is)."""
+    return np.divide(total, count, out=np.zeros_like(total), where=count > 0)
+
+
+def _sum_of_pairs(total: np.ndarray, count: np.ndarray) -> np.ndarray:
+    """The sum of the pairs in contact: dampers in parallel."""
+    return total
+
+
+@dataclass(frozen=True)
+class MeshDampingRule:
+    """How the dampings of the pairs in contact combine into the mesh damping c(τ): ``name`` (the ``[damping]
+    rule`` value), ``combine(total, count)`` of the summed dampings [N·s/m] and the number of pairs in contact per
+    position, and whether it is the rule of Luo & Li (2020) (``published``: their mean dampings are of this rule)."""
+
+    name: str
+    combine: Callable[[np.ndarray, np.ndarray], np.ndarray]
+    published: bool
+
+
+#: Every mesh-damping rule by name (the first the default): the one place the names are compared.
+DAMPING_RULES: dict[str, MeshDampingRule] = {rule.name: rule for rule in (
+    MeshDampingRule("paper", _mean_of_pairs, published=True),  # Luo & Li Fig. 7
+    MeshDampingRule("parallel", _sum_of_pairs, published=False))}
+RULES = tuple(DAMPING_RULES)
+
+
+def damping_rule(name: str) -> MeshDampingRule:
+    """The mesh-damping rule called ``name``; a CaseError naming ``damping.rule`` for any other."""
+    return registered(DAMPING_RULES, name, "damping.rule", "unknown mesh-damping rule")
 
 
 # ---------------------------------------------------------------------------------------------- functions
@@ -126,12 +160,7 @@ def mesh_damping(per_pair_damping, in_contact, rule: Rule = "paper"):
     if damping.shape != contact.shape:
         raise ValueError(f"mesh_damping: per_pair_damping {damping.shape} and in_contact {contact.shape} differ")
     total = np.where(contact, damping, 0.0).sum(axis=0)
-    if rule == "parallel":
-        return total
-    if rule == "paper":
-        count = contact.sum(axis=0)
-        return np.divide(total, count, out=np.zeros_like(total), where=count > 0)
-    raise CaseError("damping.rule", rule, " | ".join(RULES), "unknown mesh-damping rule")
+    return damping_rule(rule).combine(total, contact.sum(axis=0))
 
 
 def contact_region_means(mesh_values, contact_count, weights=None) -> dict[str, float]:
@@ -198,5 +227,5 @@ class PairDamping:
     unit_load: np.ndarray
 
 
-__all__ = ["FRICTION_DAMPING_LOAD_EXPONENT", "FRICTION_DAMPING_SPEED_EXPONENT", "MODELS", "RULES", "PairDamping", "contact_region_means", "coulomb_equivalent_damping", "friction_damping",
+__all__ = ["FRICTION_DAMPING_LOAD_EXPONENT", "FRICTION_DAMPING_SPEED_EXPONENT", "DAMPING_RULES", "MODELS", "MeshDampingRule", "RULES", "PairDamping", "contact_region_means", "coulomb_equivalent_damping", "damping_rule", "friction_damping",
            "friction_damping_exponents", "friction_pair_damping", "mesh_circular_frequency", "mesh_damping"]

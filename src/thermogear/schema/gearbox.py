@@ -41,6 +41,7 @@ from pydantic import Field, model_validator
 
 from thermogear.errors import CaseError
 from thermogear.schema.base import Section
+from thermogear.lubrication_methods import lubrication_method
 from thermogear.schema.friction_inputs import check_friction_inputs
 from thermogear.schema.bearing_loss import SkfBearingData
 
@@ -118,7 +119,7 @@ class GearboxOilSection(Section):
     @model_validator(mode="after")
     def _jet_with_injection(self):
         jet = {"injection_flow_l_min": self.injection_flow_l_min, "jet_speed_m_s": self.jet_speed_m_s}
-        if self.lubrication == "injection":
+        if lubrication_method(self.lubrication).oil_jet:
             for key, value in jet.items():
                 if value is None:
                     raise CaseError(f"gearbox.oil.{key}", None, "a number > 0",

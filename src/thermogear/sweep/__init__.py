@@ -34,10 +34,11 @@ class _CallableModule(_types.ModuleType):
     """``thermogear.sweep(case, vary=..., out=...)``: the module called runs a study (:func:`~thermogear.sweep.api.
     study`)."""
 
-    def __call__(self, case, vary, out, **options):
+    def __call__(self, *arguments, **options):
+        """:func:`thermogear.sweep.api.study` (``case, vary, out, **options``), to which the call is forwarded."""
         from thermogear.sweep.api import study
 
-        return study(case, vary, out, **options)
+        return study(*arguments, **options)
 
 
 _sys.modules[__name__].__class__ = _CallableModule

@@ -42,6 +42,7 @@ from thermogear.dynamics.mesh_laws import mesh_law
 from thermogear import warning_scope
 from thermogear.errors import JammingError, ModelLimitError, ProblemError
 from thermogear.mesh.model import MeshModel
+from thermogear.sweep.evaluation_methods import evaluation_method
 from thermogear.dynamics.periodic_batch_metrics import periodic_metrics_batch
 from thermogear.warning_causes import warning_text
 
@@ -317,7 +318,7 @@ def _evaluate_model(study, method, shared, group_case, model, model_index, value
     from thermogear.orchestrator import Orchestrator  # noqa: PLC0415  (the model chain only where a point runs it)
 
     speed_axis, load_axes, members = layout
-    if method == "batch":
+    if evaluation_method(method).batched:
         mesh = MeshModel(group_case, model)
         key = (model, *(values[a] for a in range(len(values)) if a != speed_axis and a not in load_axes))
         if key not in shared:
