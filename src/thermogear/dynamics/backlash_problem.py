@@ -25,18 +25,16 @@ This module holds inputs and checks them; it has no solver logic.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 
-from thermogear.dynamics.problem import MeshDynamicsProblem, MeshProblemBase, checked_array
-from thermogear.dynamics.structure import MeshStructure
+from thermogear.dynamics.problem import STRUCTURE_FIELDS, MeshDynamicsProblem, MeshProblemBase, checked_array
 from thermogear.errors import ProblemError
 
 __all__ = ["DAMPING_MODES", "BacklashMeshProblem"]
 
 DAMPING_MODES = ("always", "in_contact")
-_STRUCTURE_FIELDS = ("mesh_vector", "structural_stiffness", "structural_damping", "structural_force")
 
 
 @dataclass(frozen=True)
@@ -81,12 +79,6 @@ class BacklashMeshProblem(MeshProblemBase):
     force: float | np.ndarray
     damping_mode: str = "always"
     face_width: float = 1.0
-    mesh_vector: np.ndarray | None = None
-    structural_stiffness: np.ndarray | None = None
-    structural_damping: np.ndarray | None = None
-    structural_force: np.ndarray | None = None
-    structure: MeshStructure = field(init=False, repr=False, compare=False)
-    _force_array: np.ndarray = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         n = self._check_frame()
@@ -171,15 +163,11 @@ class BacklashMeshProblem(MeshProblemBase):
                                    force=load, contact_count=contact, pair_stiffness=self.pair_stiffness,
                                    face_width=self.face_width, **self.structure_fields())
 
-    def structure_fields(self) -> dict[str, object]:
-        """The structure's inputs (mesh vector, structural matrices and loads) as keyword arguments."""
-        return {name: getattr(self, name) for name in _STRUCTURE_FIELDS}
-
     def with_changes(self, **changes: object) -> BacklashMeshProblem:
         """A copy with some fields replaced (checked again)."""
         values = {name: getattr(self, name) for name in
                   ("mass", "nodes", "pair_stiffness", "pair_deviation", "back_pair_stiffness", "back_pair_deviation",
-                   "backlash", "damping", "force", "damping_mode", "face_width") + _STRUCTURE_FIELDS}
+                   "backlash", "damping", "force", "damping_mode", "face_width") + STRUCTURE_FIELDS}
         unknown = set(changes) - set(values)
         if unknown:
             raise ProblemError("with_changes", sorted(unknown), ", ".join(values), "unknown field")
@@ -211,4 +199,4 @@ class BacklashMeshProblem(MeshProblemBase):
                    back_pair_stiffness=back_k, back_pair_deviation=back_e, backlash=backlash,
                    damping=problem.damping, force=problem.force, damping_mode=damping_mode,
                    face_width=problem.face_width,
-                   **{name: getattr(problem, name) for name in _STRUCTURE_FIELDS})
+                   **problem.structure_fields())

@@ -17,9 +17,13 @@ from thermogear.dynamics.mesh_period import MeshPeriod
 from thermogear.dynamics.structure import MeshStructure, checked_structure
 from thermogear.errors import ProblemError
 
-__all__ = ["MeshDynamicsProblem", "MeshProblemBase", "region_name"]
+__all__ = ["STRUCTURE_FIELDS", "MeshDynamicsProblem", "MeshProblemBase", "region_name"]
 
 _REGION_NAMES = {0: "no_contact", 1: "single", 2: "double", 3: "triple", 4: "quadruple"}
+
+
+#: The structure's inputs of a mesh problem (:class:`MeshProblemBase`), by name.
+STRUCTURE_FIELDS = ("mesh_vector", "structural_stiffness", "structural_damping", "structural_force")
 
 
 def region_name(contact_count: int) -> str:
@@ -62,13 +66,26 @@ def checked_nodes(value: object) -> np.ndarray:
     return nodes
 
 
+@dataclass(frozen=True)
 class MeshProblemBase(MeshPeriod):
-    """The input checks the linear and the backlash mesh problem share (a base of both; fields are theirs).
+    """What the linear and the backlash mesh problem share: the structure's inputs and the input checks.
 
-    A problem has ``mass`` (scalar or a mass matrix), the structure's inputs (``mesh_vector``,
-    ``structural_stiffness``, ``structural_damping``, ``structural_force``), ``nodes``, ``damping``, ``force`` and
-    ``face_width``; each check below stores the checked, read-only value in place of the input.
+    The structure's inputs (keyword-only: a subclass's own fields come first in its ``__init__``) are w, K₀, C₀
+    and f₀ of :class:`~.structure.MeshStructure`; ``structure`` holds them checked. A subclass has ``mass``
+    (scalar or a mass matrix), ``nodes``, ``damping``, ``force`` and ``face_width``; each check below stores the
+    checked, read-only value in place of the input.
     """
+
+    mesh_vector: np.ndarray | None = field(default=None, kw_only=True)
+    structural_stiffness: np.ndarray | None = field(default=None, kw_only=True)
+    structural_damping: np.ndarray | None = field(default=None, kw_only=True)
+    structural_force: np.ndarray | None = field(default=None, kw_only=True)
+    structure: MeshStructure = field(init=False, repr=False, compare=False)
+    _force_array: np.ndarray = field(init=False, repr=False, compare=False)
+
+    def structure_fields(self) -> dict[str, object]:
+        """The structure's inputs (mesh vector, structural matrices and loads) as keyword arguments."""
+        return {name: getattr(self, name) for name in STRUCTURE_FIELDS}
 
     def _check_frame(self) -> int:
         """Check and store the structure (:func:`~.structure.checked_structure`), the mass (a float for the 1-DOF
@@ -162,12 +179,6 @@ class MeshDynamicsProblem(MeshProblemBase):
     pair_damping: np.ndarray | None = None
     face_width: float = 1.0
     pair_deviation: np.ndarray | None = None
-    mesh_vector: np.ndarray | None = None
-    structural_stiffness: np.ndarray | None = None
-    structural_damping: np.ndarray | None = None
-    structural_force: np.ndarray | None = None
-    structure: MeshStructure = field(init=False, repr=False, compare=False)
-    _force_array: np.ndarray = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         n = self._check_frame()
