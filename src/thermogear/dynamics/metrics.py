@@ -111,7 +111,7 @@ def compute_metrics(problem: MeshDynamicsProblem, time: np.ndarray, displacement
     metrics["amplitude_per_region"] = amplitude
     metrics["deviation_per_region"] = deviation
 
-    metrics.update(dte_statistics(time, x))
+    metrics.update(dte_statistics(time, x, problem.period))  # time from 0 to T: over the mesh period T
     metrics["max_velocity"] = float(np.max(np.abs(v)))
     metrics.update(frequency_metrics(problem))
     moduli = multiplier_moduli(multipliers)

@@ -61,10 +61,11 @@ def pair_load_maximum(pair_loads: np.ndarray | None, single_contact_loads: np.nd
     return None, KV_UNAVAILABLE
 
 
-def dte_statistics(time: np.ndarray, displacement: np.ndarray) -> dict[str, float]:
-    """``dte_mean``, ``dte_rms`` (about the mean) over the record's span and ``dte_peak_to_peak`` [m] of the
-    transmission error sampled at increasing ``time`` [s]."""
-    mean, rms = time_mean_and_rms(time, displacement)
+def dte_statistics(time: np.ndarray, displacement: np.ndarray, span: float | None = None) -> dict[str, float]:
+    """``dte_mean``, ``dte_rms`` (about the mean) and ``dte_peak_to_peak`` [m] of the transmission error sampled at
+    increasing ``time`` [s]; the mean and RMS over ``span`` [s], the record's unless given
+    (:func:`~thermogear.dynamics.spectra.time_mean_and_rms`)."""
+    mean, rms = time_mean_and_rms(time, displacement, span)
     return {"dte_mean": mean, "dte_rms": rms, "dte_peak_to_peak": float(np.ptp(displacement))}
 
 
