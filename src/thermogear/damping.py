@@ -101,6 +101,15 @@ def damping_rule(name: str) -> MeshDampingRule:
 
 
 # ---------------------------------------------------------------------------------------------- functions
+def _checked(key: str, value, positive: bool, reason: str) -> np.ndarray:
+    """``value`` as a float array, every element > 0 (``positive``) or >= 0 (NaN fails both); CaseError naming
+    ``key``, the smallest value and ``reason`` otherwise."""
+    array = np.asarray(value, dtype=float)
+    if np.any(~(array > 0.0 if positive else array >= 0.0)):
+        raise CaseError(key, float(np.min(array)), "> 0" if positive else ">= 0", reason)
+    return array
+
+
 def coulomb_equivalent_damping(friction_force, circular_frequency, amplitude):
     """Viscous damping that dissipates per cycle what Coulomb friction does, c = 4F/(π·ω·B) [N·s/m].
 
@@ -108,16 +117,10 @@ def coulomb_equivalent_damping(friction_force, circular_frequency, amplitude):
     viscous damping of Coulomb friction).
     friction_force F [N], circular_frequency ω [rad/s], amplitude B [m].
     """
-    force = np.asarray(friction_force, dtype=float)
-    frequency = np.asarray(circular_frequency, dtype=float)
-    amplitude = np.asarray(amplitude, dtype=float)
-    if np.any(~(frequency > 0.0)):
-        raise CaseError("operating.speed_rpm", float(np.min(frequency)), "> 0",
-                        "the equivalent viscous damping of Coulomb friction needs motion (ω > 0)")
-    if np.any(~(amplitude > 0.0)):
-        raise CaseError("amplitude", float(np.min(amplitude)), "> 0", "the vibration amplitude must be positive")
-    if np.any(~(force >= 0.0)):
-        raise CaseError("friction_force", float(np.min(force)), ">= 0", "a friction force magnitude")
+    frequency = _checked("operating.speed_rpm", circular_frequency, True,
+                         "the equivalent viscous damping of Coulomb friction needs motion (ω > 0)")
+    amplitude = _checked("amplitude", amplitude, True, "the vibration amplitude must be positive")
+    force = _checked("friction_force", friction_force, False, "a friction force magnitude")
     return 4.0 * force / (math.pi * frequency * amplitude)
 
 
@@ -128,16 +131,10 @@ def friction_damping(pair_stiffness, friction_coefficient, mesh_circular_frequen
     width gives the total damping), friction_coefficient μ [–], mesh_circular_frequency ω = 2π·z1·n1/60 [rad/s].
     With μ = 0.12·X^0.25 and ω in rpm this is the paper's c = 1.459·k·X^0.25/(z1·n1).
     """
-    stiffness = np.asarray(pair_stiffness, dtype=float)
-    friction = np.asarray(friction_coefficient, dtype=float)
-    frequency = np.asarray(mesh_circular_frequency, dtype=float)
-    if np.any(~(frequency > 0.0)):
-        raise CaseError("operating.speed_rpm", float(np.min(frequency)), "> 0",
-                        "the friction damping of Eq. 28 is defined for a running mesh only")
-    if np.any(~(stiffness >= 0.0)):
-        raise CaseError("pair_stiffness", float(np.min(stiffness)), ">= 0", "a stiffness cannot be negative")
-    if np.any(~(friction >= 0.0)):
-        raise CaseError("friction_coefficient", float(np.min(friction)), ">= 0", "a friction coefficient")
+    frequency = _checked("operating.speed_rpm", mesh_circular_frequency, True,
+                         "the friction damping of Eq. 28 is defined for a running mesh only")
+    stiffness = _checked("pair_stiffness", pair_stiffness, False, "a stiffness cannot be negative")
+    friction = _checked("friction_coefficient", friction_coefficient, False, "a friction coefficient")
     return 4.0 * friction * stiffness / (math.pi * frequency)
 
 

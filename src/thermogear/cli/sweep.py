@@ -163,15 +163,11 @@ def sweep(
                           "does not vary speed_rpm (add --vary speed_rpm=..., or draw a map with "
                           "thermogear.sweep.plots.plot_map)", error_console)
         if plot is not None and "speed_rpm" in study.dims:
+            from thermogear.cli.sweep_drivetrain_branches import save_figure
             from thermogear.sweep.plots import plot_speed_response
 
-            figure = plot_speed_response(run.dataset)
-            try:
-                figure.savefig(plot, dpi=120)
-            except OSError as error:  # checked before the study; the disk may still refuse
-                raise CaseError("--plot", str(plot), "a writable figure file", f"the study is complete in {out}, but "
-                                f"its figure could not be written: {error.strerror or error}") from None
-            figure_path = str(plot)
+            # the path was checked before the study; the disk may still refuse
+            figure_path = save_figure(plot_speed_response(run.dataset), plot, out)
         summary = {
             "out": str(out),
             "dims": {name: int(size) for name, size in zip(study.dims, study.shape)},

@@ -89,26 +89,26 @@ def thermal_load(basis: skfem.Basis, youngs_modulus: float, poisson_ratio: float
     return form.assemble(basis)
 
 
-def body_force_load(basis: skfem.Basis, force: Callable[[np.ndarray, np.ndarray], tuple]) -> np.ndarray:
-    """Load vector of a body force f(x, y) = (f_x, f_y) [N/m³]."""
+def _vector_load(basis: skfem.AbstractBasis, density: Callable[[np.ndarray, np.ndarray], tuple]) -> np.ndarray:
+    """Load vector ∫ (d_x v_x + d_y v_y) of a vector load density d(x, y) = (d_x, d_y) over the basis' cells (a
+    body force) or facets (a traction)."""
 
     @skfem.LinearForm
     def form(v, w):
-        fx, fy = force(w.x[0], w.x[1])
-        return fx * v[0] + fy * v[1]
+        dx, dy = density(w.x[0], w.x[1])
+        return dx * v[0] + dy * v[1]
 
     return form.assemble(basis)
 
 
+def body_force_load(basis: skfem.Basis, force: Callable[[np.ndarray, np.ndarray], tuple]) -> np.ndarray:
+    """Load vector of a body force f(x, y) = (f_x, f_y) [N/m³]."""
+    return _vector_load(basis, force)
+
+
 def traction_load(facet_basis: skfem.FacetBasis, traction: Callable[[np.ndarray, np.ndarray], tuple]) -> np.ndarray:
     """Load vector of a surface traction t(x, y) = (t_x, t_y) [N/m²] on the facet basis' facets."""
-
-    @skfem.LinearForm
-    def form(v, w):
-        tx, ty = traction(w.x[0], w.x[1])
-        return tx * v[0] + ty * v[1]
-
-    return form.assemble(facet_basis)
+    return _vector_load(facet_basis, traction)
 
 
 def solve_many(matrix, loads: np.ndarray, fixed_dofs: np.ndarray, fixed_values: np.ndarray | None = None) -> np.ndarray:
