@@ -223,8 +223,9 @@ def drivetrain_backlash_response(assembled: AssembledDrivetrain, state: MeshStat
             f"{startup.run_in_periods} mesh periods, then shot) settles on the {branch} branch (Kv "
             f"{_shown(reached.kv)}, contact loss {reached.contact_loss_fraction:.3f}), which is reported; shot from "
             f"the linear solution the orbit is the {other_branch} branch (Kv {_shown(shot.kv)}, contact loss "
-            f"{shot.contact_loss_fraction:.3f}). The multi-start search (thermogear.drivetrain.backlash_orbits."
-            "drivetrain_stable_orbits) lists every stable orbit a grid of starts finds, with its basin share",)
+            f"{shot.contact_loss_fraction:.3f}). The multi-start search (`thermogear run CASE --multistart N`; in "
+            "Python thermogear.drivetrain.backlash_orbits.drivetrain_stable_orbits) lists every stable orbit a grid "
+            "of starts finds, with its basin share",)
     return replace(reached, notes=note)
 
 
