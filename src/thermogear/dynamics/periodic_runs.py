@@ -33,7 +33,11 @@ def by_runs(system, steps: np.ndarray, where: np.ndarray, starts: np.ndarray,
     monodromy is the product of one such power per run, and the sampled states of a run follow by doubling,
     [z, Sz] → [z, Sz, S²z, S³z] → …, each step one matrix product with all states found so far (Moler & Van Loan,
     SIAM Review 45 (2003) 3–49, §3, for the powers). Exact: only the order of the floating-point products differs
-    from the block route."""
+    from the block route. The multipliers and the periodic state come from the run maps as factors
+    (:func:`~thermogear.dynamics.monodromy_range.floquet_of_maps`: on a large system from the range of the
+    monodromy, never formed)."""
+    from thermogear.dynamics.monodromy_range import floquet_of_maps
+
     lengths = np.diff(np.append(starts, where.size)) * samples
     pieces = where[starts]
     powers: dict[int, list[np.ndarray]] = {}
@@ -55,10 +59,7 @@ def by_runs(system, steps: np.ndarray, where: np.ndarray, starts: np.ndarray,
         if (piece, count) not in cache:
             cache[(piece, count)] = run_power(piece, count)
         run_maps.append(cache[(piece, count)])
-    total = run_maps[0]
-    for matrix in run_maps[1:]:
-        total = matrix @ total
-    multipliers, initial = floquet(total)
+    multipliers, initial = floquet_of_maps(run_maps)
     n, size = system.size, steps.shape[1]
     states = np.empty((where.size * samples + 1, size))
     state, row = np.append(initial, 1.0), 0
