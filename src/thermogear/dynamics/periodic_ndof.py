@@ -143,9 +143,13 @@ def _large_pieces(system: PiecewiseLinearSystem, units: np.ndarray, durations: n
 
     from thermogear.dynamics.shared_pade import low_rank_piece_exponentials
 
-    if units.shape[0] > 1:
-        n = system.size
-        basis = _pattern_range(system) if full_range is None else full_range
+    n = system.size
+    # the force patterns' span first (a mesh: P_K = P_C = w wᵀ, P_f = w; the differences are checked to lie in
+    # it), the range of every pattern (an SVD) where they do not
+    candidates = [np.linalg.qr(system.stacked()[2].T)[0], lambda: _pattern_range(system) if full_range is None
+                  else full_range]
+    for candidate in candidates if units.shape[0] > 1 else ():
+        basis = candidate() if callable(candidate) else candidate
         left = np.zeros((2 * n + 1, basis.shape[1]))
         left[n:2 * n] = inverse @ basis
         left_inverse = np.zeros((basis.shape[1], 2 * n + 1))

@@ -101,6 +101,25 @@ def _power_norm(matrix: np.ndarray, power: int) -> float:
     return float(onenormest(operator))
 
 
+def _row_sparse_product(matrix: np.ndarray):
+    """Y ↦ ``matrix`` @ Y taking the rows with at most one nonzero entry as scalings of one row of Y (a state
+    matrix [[0, I], [·, ·]]: the velocity rows and the forcing row), so that only the other rows cost a product."""
+    nonzero = matrix != 0.0
+    sparse = np.flatnonzero(nonzero.sum(axis=1) <= 1)
+    dense = np.setdiff1d(np.arange(matrix.shape[0]), sparse)
+    columns = np.argmax(nonzero[sparse], axis=1)
+    values = matrix[sparse, columns]
+    rows = matrix[dense]
+
+    def product(other: np.ndarray) -> np.ndarray:
+        result = np.empty((matrix.shape[0], other.shape[1]))
+        result[sparse] = values[:, None] * other[columns]
+        result[dense] = rows @ other
+        return result
+
+    return product
+
+
 def _squarings(eta: float) -> int:
     """Least s >= 0 with η/2ˢ <= θ₁₃."""
     return max(0, int(math.ceil(math.log2(eta / _THETA_13)))) if eta > _THETA_13 else 0
@@ -132,7 +151,8 @@ def low_rank_piece_exponentials(units: np.ndarray, left: np.ndarray, left_invers
     rights = rights * scale[None, None, :]
     identity = np.eye(size)
     # powers of the first piece (dense) and of the others (rank updates of it) at the step δ
-    x2 = base @ base
+    product = _row_sparse_product(base)
+    x2 = product(base)
     x4 = x2 @ x2
     x6 = x4 @ x2
     pieces = []
@@ -152,12 +172,12 @@ def low_rank_piece_exponentials(units: np.ndarray, left: np.ndarray, left_invers
         pieces.append((first, second, fourth, sixth))
     squarings = _squarings(eta)
     factor = 2.0 ** -squarings
-    base, x2, x4, x6 = base * factor, x2 * factor**2, x4 * factor**4, x6 * factor**6
+    x2, x4, x6 = x2 * factor**2, x4 * factor**4, x6 * factor**6
     b = _PADE_13
     inner_high = b[13] * x6 + b[11] * x4 + b[9] * x2
     z1 = x6 @ inner_high
     inner = z1 + b[7] * x6 + b[5] * x4 + b[3] * x2 + b[1] * identity
-    odd = base @ inner
+    odd = product(inner) * factor  # X·inner of the scaled X
     even_high = b[12] * x6 + b[10] * x4 + b[8] * x2
     z2 = x6 @ even_high
     even = z2 + b[6] * x6 + b[4] * x4 + b[2] * x2 + b[0] * identity
@@ -175,7 +195,7 @@ def low_rank_piece_exponentials(units: np.ndarray, left: np.ndarray, left_invers
             high = _combination([(b[13], sixth), (b[11], fourth), (b[9], second)])
             inner_j = _combination([(1.0, sixth.times(high, x6, inner_high)), (b[7], sixth), (b[5], fourth),
                                     (b[3], second)])
-            odd_j = first.times(inner_j, base, inner)
+            odd_j = first.times(inner_j, base * factor, inner)
             even_high_j = _combination([(b[12], sixth), (b[10], fourth), (b[8], second)])
             even_j = _combination([(1.0, sixth.times(even_high_j, x6, even_high)), (b[6], sixth), (b[4], fourth),
                                    (b[2], second)])
