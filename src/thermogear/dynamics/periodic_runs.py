@@ -36,16 +36,27 @@ def by_runs(system, steps: np.ndarray, where: np.ndarray, starts: np.ndarray,
     from the block route. The multipliers and the periodic state come from the run maps as factors
     (:func:`~thermogear.dynamics.monodromy_range.floquet_of_maps`: on a large system from the range of the
     monodromy, never formed)."""
-    from thermogear.dynamics.monodromy_range import floquet_of_maps
+    from thermogear.dynamics.monodromy_range import floquet_of_maps, uses_range
 
     lengths = np.diff(np.append(starts, where.size)) * samples
     pieces = where[starts]
+    # the range route multiplies the maps only into blocks of columns: there the highest power is left out and
+    # applied twice (or three times), which costs less than its squaring (half a product against a full one)
+    lean = uses_range(steps.shape[1] - 1)
     powers: dict[int, list[np.ndarray]] = {}
     for piece in np.unique(pieces):
         longest, chain = int(lengths[pieces == piece].max()), [steps[piece]]
-        while 2 ** len(chain) <= longest:
+        while 2 ** len(chain) <= (longest // 2 if lean else longest):
             chain.append(chain[-1] @ chain[-1])
         powers[int(piece)] = chain
+
+    def run_factors(piece: int, count: int) -> list[np.ndarray]:
+        """Powers of the piece's step whose product (in list order, each applied after the one before) is its
+        ``count``-th power."""
+        chain = powers[piece]
+        top = len(chain) - 1
+        factors = [power for bit, power in enumerate(chain[:top]) if (count % 2 ** top) >> bit & 1]
+        return factors + [chain[top]] * (count >> top)
 
     def run_power(piece: int, count: int) -> np.ndarray:
         result = None
@@ -57,21 +68,23 @@ def by_runs(system, steps: np.ndarray, where: np.ndarray, starts: np.ndarray,
     run_maps, cache = [], {}
     for piece, count in zip(pieces.tolist(), lengths.tolist()):
         if (piece, count) not in cache:
-            cache[(piece, count)] = run_power(piece, count)
+            cache[(piece, count)] = run_factors(piece, count) if lean else [run_power(piece, count)]
         run_maps.append(cache[(piece, count)])
-    multipliers, initial = floquet_of_maps(run_maps)
+    multipliers, initial = floquet_of_maps([factor for factors in run_maps for factor in factors])
     n, size = system.size, steps.shape[1]
     states = np.empty((where.size * samples + 1, size))
     state, row = np.append(initial, 1.0), 0
-    for piece, count, matrix in zip(pieces.tolist(), lengths.tolist(), run_maps):
+    for piece, count, factors in zip(pieces.tolist(), lengths.tolist(), run_maps):
         found = state[None]
-        for power in powers[piece]:
-            if found.shape[0] >= count:
-                break
-            found = np.vstack([found, found[:count - found.shape[0]] @ power.T])
+        chain = powers[piece]
+        while found.shape[0] < count:  # doubling with S, S², S⁴, …, then strides of the highest power
+            level = min(int(found.shape[0]).bit_length() - 1, len(chain) - 1)
+            stride, first = 2 ** level, found.shape[0] - 2 ** level
+            found = np.vstack([found, found[first:first + min(stride, count - found.shape[0])] @ chain[level].T])
         states[row:row + count] = found[:count]
         row += count
-        state = matrix @ state
+        for factor in factors:
+            state = factor @ state
     states[-1] = state
     offsets = np.arange(samples) / samples
     time = np.concatenate([(system.nodes[:-1, None] + np.diff(system.nodes)[:, None] * offsets).ravel(),
