@@ -51,6 +51,29 @@ def test_shared_pade_equals_each_piece_s_own_exponential(durations):
         assert np.abs(step - reference).max() < 1e-11 * np.abs(reference).max()
 
 
+def test_large_pieces_square_as_rank_updates_of_the_first(monkeypatch):
+    """Above 4·61 coordinates the other pieces' Padé results, squarings and powers stay rank updates of the first
+    piece's (the dense fallback is not taken): still each piece's own exponential."""
+    import thermogear.dynamics.shared_pade as shared_pade
+
+    units, left, left_inverse = _pieces(size=250)
+    dense = []
+    original = shared_pade._compressed
+
+    def watched(term, reference):
+        result = original(term, reference)
+        dense.append(isinstance(result, np.ndarray))
+        return result
+
+    monkeypatch.setattr(shared_pade, "_compressed", watched)
+    durations = np.array([3e-5, 2e-5])
+    steps = low_rank_piece_exponentials(units, left, left_inverse, durations)
+    assert dense and not any(dense)
+    for matrix, duration, step in zip(units, durations, steps):
+        reference = expm(matrix * duration)
+        assert np.abs(step - reference).max() < 1e-11 * np.abs(reference).max()  # as above
+
+
 def test_incommensurate_durations_or_a_full_rank_difference_are_declined():
     units, left, left_inverse = _pieces()
     assert low_rank_piece_exponentials(units, left, left_inverse, np.array([3e-5, 3e-5 * np.sqrt(2.0)])) is None
