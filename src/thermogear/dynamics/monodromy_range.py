@@ -70,9 +70,8 @@ def _balancing_scale(matrix: np.ndarray, sweeps: int = 4) -> np.ndarray:
     magnitude = np.abs(matrix)
     np.fill_diagonal(magnitude, 0.0)
     scale = np.ones(matrix.shape[0])
-    for _ in range(sweeps):
-        scaled = magnitude * (scale[None, :] / scale[:, None])
-        rows, columns = scaled.sum(axis=1), scaled.sum(axis=0)
+    for _ in range(sweeps):  # row and column sums of |D⁻¹XD| as two products with vectors
+        rows, columns = (magnitude @ scale) / scale, (magnitude.T @ (1.0 / scale)) * scale
         usable = (rows > 0.0) & (columns > 0.0)
         step = np.ones_like(scale)
         step[usable] = 2.0 ** np.round(0.5 * np.log2(rows[usable] / columns[usable]))
