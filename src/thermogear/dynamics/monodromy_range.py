@@ -36,7 +36,7 @@ import numpy as np
 
 from thermogear.errors import ModelLimitError
 
-__all__ = ["LARGEST_RANK_SHARE", "RANGE_TOLERANCE", "floquet_of_maps", "uses_range"]
+__all__ = ["LARGEST_RANK_SHARE", "RANGE_TOLERANCE", "floquet", "floquet_of_maps", "uses_range"]
 
 #: Bound on ‖(I − QQᵀ)Φ_T‖ / ‖Φ_T‖ (balanced) of the range found.
 RANGE_TOLERANCE = 1e-13
@@ -48,9 +48,17 @@ _BLOCK = 48
 _SEED = 20110517  # any fixed seed: the result is the same to the tolerance for every seed
 
 
-def _dense(maps: list[np.ndarray]) -> tuple[np.ndarray, np.ndarray]:
-    from thermogear.dynamics.periodic_runs import floquet
+def floquet(total: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(multipliers largest first, z₀) of the augmented one-period map (formed: the dense route); ModelLimitError
+    where |μ| >= 1."""
+    transition, image = total[:-1, :-1], total[:-1, -1]
+    multipliers = np.linalg.eigvals(transition)
+    multipliers = multipliers[np.argsort(-np.abs(multipliers))]
+    _unstable(float(np.abs(multipliers).max()))
+    return multipliers, np.linalg.solve(np.eye(transition.shape[0]) - transition, image)
 
+
+def _dense(maps: list[np.ndarray]) -> tuple[np.ndarray, np.ndarray]:
     total = maps[0]
     for matrix in maps[1:]:
         total = matrix @ total

@@ -8,21 +8,10 @@ from __future__ import annotations
 
 import numpy as np
 
+from thermogear.dynamics.monodromy_range import floquet, floquet_of_maps, uses_range
 from thermogear.errors import ModelLimitError
 
 __all__ = ["by_runs", "floquet", "on_reached", "reached_coordinates"]
-
-
-def floquet(total: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """(multipliers largest first, z₀) of the augmented one-period map; ModelLimitError where |μ| >= 1."""
-    transition, image = total[:-1, :-1], total[:-1, -1]
-    multipliers = np.linalg.eigvals(transition)
-    multipliers = multipliers[np.argsort(-np.abs(multipliers))]
-    radius = float(np.abs(multipliers).max())
-    if not np.isfinite(radius) or radius >= 1.0:
-        raise ModelLimitError(f"a Floquet multiplier has modulus {radius:.6g} >= 1: parametric instability, an "
-                              "undamped or a rigid-body mode; there is no attracting periodic orbit")
-    return multipliers, np.linalg.solve(np.eye(transition.shape[0]) - transition, image)
 
 
 def by_runs(system, steps: np.ndarray, where: np.ndarray, starts: np.ndarray,
@@ -36,8 +25,6 @@ def by_runs(system, steps: np.ndarray, where: np.ndarray, starts: np.ndarray,
     from the block route. The multipliers and the periodic state come from the run maps as factors
     (:func:`~thermogear.dynamics.monodromy_range.floquet_of_maps`: on a large system from the range of the
     monodromy, never formed)."""
-    from thermogear.dynamics.monodromy_range import floquet_of_maps, uses_range
-
     lengths = np.diff(np.append(starts, where.size)) * samples
     pieces = where[starts]
     # the range route multiplies the maps only into blocks of columns: there the highest power is left out and
