@@ -38,7 +38,7 @@ def _pieces(size: int = 60, levels=(2.6e8, 1.6e8), seed: int = 5):
     return np.array(units), left, left_inverse
 
 
-@pytest.mark.parametrize("durations", [(3e-5, 2e-5), (2.5e-5, 2.5e-5), (1e-4, 2e-5), (2e-7, 3e-7)])
+@pytest.mark.parametrize("durations", [(3e-5, 2e-5), (2.5e-5, 2.5e-5), (1e-4, 2e-5), (2e-7, 3e-7), (6.3e-5, 3.7e-5)])
 def test_shared_pade_equals_each_piece_s_own_exponential(durations):
     units, left, left_inverse = _pieces()
     durations = np.array(durations)
@@ -87,5 +87,8 @@ def test_commensurate_steps():
     assert step == pytest.approx(0.025e-3, rel=1e-14) and counts.tolist() == [3, 2]
     step, counts = commensurate_steps(np.array([1.0, 1.0 + 1e-13]))
     assert step == pytest.approx(1.0) and counts.tolist() == [1, 1]
-    assert commensurate_steps(np.array([1.0, 7.0])) is None  # beyond the largest multiple
+    step, counts = commensurate_steps(np.array([0.63, 0.37]))
+    assert step == pytest.approx(0.01, rel=1e-12) and counts.tolist() == [63, 37]
+    assert commensurate_steps(np.array([1.0, 65.0])) is None  # beyond the largest multiple
+    assert commensurate_steps(np.array([1.0, np.sqrt(2.0)])) is None
     assert commensurate_steps(np.array([1.0, 1.0 + 1e-9])) is None

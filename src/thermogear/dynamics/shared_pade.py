@@ -41,8 +41,11 @@ _THETA_13 = 5.371920351148152
 _PADE_13 = (64764752532480000.0, 32382376266240000.0, 7771770303897600.0, 1187353796428800.0, 129060195264000.0,
             10559470521600.0, 670442572800.0, 33522128640.0, 1323241920.0, 40840800.0, 960960.0, 16380.0, 182.0,
             1.0)
-#: Largest multiple n_j of the common step: beyond it the powers cost more than separate exponentials.
-LARGEST_MULTIPLE = 6
+#: Largest multiple n_j of the common step. The powers F^{n_j} replace the scaling squarings a piece's own
+#: exponential would take and add a product per further binary digit; measured on 819-square pieces: 0.6/0.4 of the
+#: period (n = 3, 2) 0.46 s against 0.78 s for separate exponentials, 0.55/0.45 (11, 9) 0.53 s against 0.78 s,
+#: 0.63/0.37 (63, 37) 0.76 s against 0.85 s.
+LARGEST_MULTIPLE = 64
 #: Relative difference within which a duration counts as n_j·δ (the pieces' ends moved by at most this share).
 COMMENSURATE_TOLERANCE = 1e-12
 
