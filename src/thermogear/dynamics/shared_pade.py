@@ -136,10 +136,15 @@ def _row_sparse_product(matrix: np.ndarray):
     values = matrix[sparse, columns]
     rows = matrix[dense]
 
+    contiguous = dense.size > 0 and dense[-1] - dense[0] + 1 == dense.size
+
     def product(other: np.ndarray) -> np.ndarray:
         result = np.empty((matrix.shape[0], other.shape[1]))
         result[sparse] = values[:, None] * other[columns]
-        result[dense] = rows @ other
+        if contiguous:  # the product straight into its rows (the state matrix's acceleration rows are a block)
+            np.matmul(rows, other, out=result[dense[0]:dense[-1] + 1])
+        else:
+            result[dense] = rows @ other
         return result
 
     return product
