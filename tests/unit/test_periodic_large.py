@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 
 import thermogear.dynamics.monodromy_range as monodromy_range
+import thermogear.dynamics.periodic_runs as periodic_runs
 import thermogear.dynamics.shared_pade as shared_pade
 from thermogear.dynamics.periodic_ndof import PiecewiseLinearSystem, periodic_response
 
@@ -47,14 +48,14 @@ def _route_before(monkeypatch):
 def test_large_system_equals_the_route_of_separate_exponentials_and_dense_monodromy(monkeypatch, intervals):
     system = _stiff_chain(intervals=intervals)
     used = []
-    original = monodromy_range.floquet_of_maps
+    original = periodic_runs.floquet_of_maps
 
     def watched(maps):
         multipliers, state = original(maps)
         used.append(int(np.sum(multipliers == 0.0)))  # multipliers dropped with the range: the range route ran
         return multipliers, state
 
-    monkeypatch.setattr(monodromy_range, "floquet_of_maps", watched)
+    monkeypatch.setattr(periodic_runs, "floquet_of_maps", watched)
     response = periodic_response(system, samples_per_piece=8 if intervals == 2 else 2)
     assert used and used[0] > 0
     with monkeypatch.context() as patch:
