@@ -14,29 +14,23 @@ from thermogear.dynamics.periodic_ndof import PiecewiseLinearSystem, periodic_re
 
 
 def _stiff_chain(size: int = 200, period: float = 1e-3, intervals: int = 2) -> PiecewiseLinearSystem:
-    """Light masses on stiff springs with strong stiffness-proportional damping, so that most modes decay away
-    within the period (a monodromy of low numerical rank, as a shaft's finite-element modes give), one
-    parametric spring (a square wave, 60 % high) between DOFs 0 and 1; ``intervals`` equal intervals (2: the
-    pieces [0, 0.6), [0.6, 1))."""
-    generator = np.random.default_rng(11)
-    masses = generator.uniform(0.01, 0.02, size)
-    springs = generator.uniform(0.5e8, 2e8, size + 1)
-    stiffness = np.diag(springs[:-1] + springs[1:]) - np.diag(springs[1:-1], 1) - np.diag(springs[1:-1], -1)
-    mass = np.diag(masses)
-    pattern = np.zeros((size, size))
-    pattern[np.ix_([0, 1], [0, 1])] = [[1.0, -1.0], [-1.0, 1.0]]
-    force_pattern = np.zeros(size)
-    force_pattern[[0, 1]] = [1.0, -1.0]
-    force = np.zeros(size)
-    force[0], force[-1] = 500.0, -200.0
-    phase = np.array([0.0, 0.6]) if intervals == 2 else np.arange(intervals) / intervals
-    high = phase < 0.6 - 1e-12
-    return PiecewiseLinearSystem(
-        mass=mass, stiffness=stiffness, damping=50.0 * mass + 2e-5 * stiffness, force=force,
-        nodes=np.append(phase, 1.0) * period, stiffness_pattern=pattern,
-        stiffness_factor=np.where(high, 1.3e8, 0.9e8), damping_pattern=pattern,
-        damping_factor=np.where(high, 200.0, 150.0), force_pattern=force_pattern,
-        force_factor=np.where(high, 2e2, 0.0))
+    """The chain of test_periodic_ndof with light masses (10–20 g) and strong stiffness-proportional damping, so that
+    most modes decay away within the period (a monodromy of low numerical rank, as a shaft's finite-element modes
+    give); ``intervals`` equal intervals (2: its pieces [0, 0.6), [0.6, 1))."""
+    from dataclasses import replace
+
+    from test_periodic_ndof import _chain
+
+    chain = _chain(size, period)
+    mass = np.diag(np.random.default_rng(11).uniform(0.01, 0.02, size))
+    chain = replace(chain, mass=mass, damping=50.0 * mass + 2e-5 * chain.stiffness)
+    if intervals == 2:
+        return chain
+    high = np.arange(intervals) / intervals < 0.6 - 1e-12
+    pick = np.where(high, 0, 1)
+    return replace(chain, nodes=np.arange(intervals + 1) / intervals * period,
+                   stiffness_factor=chain.stiffness_factor[pick], damping_factor=chain.damping_factor[pick],
+                   force_factor=chain.force_factor[pick])
 
 
 def _route_before(monkeypatch):
