@@ -74,6 +74,28 @@ def test_large_pieces_square_as_rank_updates_of_the_first(monkeypatch):
         assert np.abs(step - reference).max() < 1e-11 * np.abs(reference).max()  # as above
 
 
+def test_an_update_grown_past_its_share_continues_dense(monkeypatch):
+    """Where an update's rank passes its limit (forced here by a zero limit after the Padé step) the piece goes on
+    with dense products: the same exponentials."""
+    import thermogear.dynamics.shared_pade as shared_pade
+
+    units, left, left_inverse = _pieces(size=250)
+    original = shared_pade._compressed
+    calls = []
+
+    def dense_after_first(term, reference):
+        calls.append(1)
+        return original(term, reference) if len(calls) == 1 else reference + term.left @ term.right
+
+    monkeypatch.setattr(shared_pade, "_compressed", dense_after_first)
+    durations = np.array([3e-5, 2e-5])
+    steps = low_rank_piece_exponentials(units, left, left_inverse, durations)
+    assert len(calls) == 2  # the Padé update, then the first squaring's (dense from there on)
+    for matrix, duration, step in zip(units, durations, steps):
+        reference = expm(matrix * duration)
+        assert np.abs(step - reference).max() < 1e-11 * np.abs(reference).max()
+
+
 def test_incommensurate_durations_or_a_full_rank_difference_are_declined():
     units, left, left_inverse = _pieces()
     assert low_rank_piece_exponentials(units, left, left_inverse, np.array([3e-5, 3e-5 * np.sqrt(2.0)])) is None

@@ -253,9 +253,7 @@ def low_rank_piece_exponentials(units: np.ndarray, left: np.ndarray, left_invers
             if isinstance(update, np.ndarray):
                 updates[index] = update @ update
             else:
-                update = _compressed(update.times(update, current, current), following)
-                updates[index] = update if update.left.shape[1] <= size // 8 \
-                    else following + update.left @ update.right
+                updates[index] = _compressed(update.times(update, current, current), following)
         current = following
     results = np.empty((count, size, size))
     for index in range(count):
