@@ -23,11 +23,11 @@ lies below :data:`RANGE_TOLERANCE` of ‖Φ_T‖ (estimated from the same produc
 
 The work is a few products of the maps with blocks of k ≈ rank columns instead of the L − 1 dense products, the
 (2n)³ eigenvalue problem and the dense solve. The system is balanced first (an exact diagonal similarity of the
-first map): displacements and velocities differ by the frequencies, and the tolerance is meant
-relative to the balanced map (a few vectorised sweeps of the Parlett–Reinsch scaling: any scaling gives the same
-result, it only sets what the tolerance is relative to). Where the rank exceeds :data:`LARGEST_RANK_SHARE` of the size, the dense product
-and eigenvalues are taken instead (:func:`~thermogear.dynamics.periodic_runs.floquet`). The random blocks come
-from a fixed seed: the result does not change between runs. Knows nothing of gears: matrices only.
+first map): displacements and velocities differ by the frequencies, and the tolerance is meant relative to the
+balanced map (a few vectorised sweeps of the Parlett–Reinsch scaling: any scaling gives the same result, it only
+sets what the tolerance is relative to). Where the rank exceeds :data:`LARGEST_RANK_SHARE` of the size, the dense
+product and eigenvalues are taken instead (:func:`floquet`). The random blocks come from a fixed seed: the result
+does not change between runs. Knows nothing of gears: matrices only.
 """
 
 from __future__ import annotations

@@ -31,7 +31,6 @@ evaluated in another order. Knows nothing of gears: matrices only.
 from __future__ import annotations
 
 import math
-from fractions import Fraction
 
 import numpy as np
 
