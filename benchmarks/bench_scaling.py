@@ -1,8 +1,10 @@
 """Benchmark: cost per speed of the exact drivetrain solvers against the size of the rotor (issue 38), with the
 project's own Newmark integrator on the same systems as the baseline, in one run, on one BLAS thread.
 
-Run: python benchmarks/bench_scaling.py [--quick] [--full]
-Prints a table and writes benchmarks/results/bench_scaling.json.
+Run: python benchmarks/bench_scaling.py [--quick] [--full] [--every-dof]
+Prints a table and writes benchmarks/results/bench_scaling.json (``--every-dof``: only the 492-DOF every-DOF
+figures against the route before, one and two threads, one run and within a sweep, and the 1000-interval table:
+benchmarks/results/bench_scaling_every_dof.json).
 
 The rotor (``large_rotor.py``): two steel shafts of E Timoshenko elements each, gears at mid-span, four bearings,
 a square-wave mesh stiffness (two pieces per mesh period), 3000 rpm (f_m = 1 kHz). E = 4, 40, 166 give 60, 492
@@ -77,6 +79,74 @@ def route_before_issue_38():
         yield
     finally:
         periodic_ndof.RUN_ROUTE_SIZE, periodic_ndof._SINGLE_ROUTE_SIZE, periodic_ndof.reached_coordinates = saved
+
+
+@contextlib.contextmanager
+def route_before_this_turn():
+    """The every-DOF route as it stood before its second turn on issue 38 (commit 98809ca): each large piece's
+    exponential by itself (scipy's Padé 13), the monodromy formed and its eigenvalues taken densely."""
+    from scipy.linalg import expm
+
+    import thermogear.dynamics.monodromy_range as monodromy_range
+    import thermogear.dynamics.periodic_ndof as periodic_ndof
+
+    def separate(system, units, durations, inverse, full_range):
+        return np.stack([expm(matrix * duration) for matrix, duration in zip(units, durations)])
+
+    saved = (monodromy_range.LARGEST_RANK_SHARE, periodic_ndof._large_pieces)
+    monodromy_range.LARGEST_RANK_SHARE = 0.0
+    periodic_ndof._large_pieces = separate
+    try:
+        yield
+    finally:
+        monodromy_range.LARGEST_RANK_SHARE, periodic_ndof._large_pieces = saved
+
+
+def _timed(function, threads: int) -> tuple[float, float, object]:
+    """(CPU seconds, wall seconds, result) of one call with BLAS on ``threads`` threads."""
+    from threadpoolctl import threadpool_limits
+
+    with threadpool_limits(limits=threads, user_api="blas"):
+        start, wall = time.process_time(), time.perf_counter()
+        result = function()
+        return time.process_time() - start, time.perf_counter() - wall, result
+
+
+def every_dof_figures(repeat: int = 5, sweep_speeds: int = 4) -> dict:
+    """The 492-DOF rotor on every DOF, this route against the one before (:func:`route_before_this_turn`), in
+    the same process and interleaved (``repeat`` rounds, medians): one ``run`` (one speed) on one and on two BLAS
+    threads, and per speed within a sweep of ``sweep_speeds`` speeds (``drivetrain_speed_sweep``, which shares
+    the rigid-body reduction); with the largest difference of the two routes' DTE (over its peak-to-peak) and
+    Floquet multipliers (moduli, sorted)."""
+    from thermogear.drivetrain.response import drivetrain_periodic_response, drivetrain_speed_sweep
+
+    assembled = rotor(40).assemble()
+    state = square_wave(3000.0)
+    states = [square_wave(float(speed)) for speed in np.linspace(2500.0, 3500.0, sweep_speeds)]
+    routes = {"after": contextlib.nullcontext, "before": route_before_this_turn}
+    samples: dict[str, list[float]] = {}
+    results = {}
+    for _ in range(repeat):
+        for name, route in routes.items():
+            with route():
+                for threads in (1, 2):
+                    cpu_s, wall_s, results[name] = _timed(lambda: drivetrain_periodic_response(assembled, state),
+                                                          threads)
+                    samples.setdefault(f"{name}_{threads}_cpu", []).append(cpu_s)
+                    samples.setdefault(f"{name}_{threads}_wall", []).append(wall_s)
+                cpu_s, _, _ = _timed(lambda: drivetrain_speed_sweep(assembled, states), 1)
+                samples.setdefault(f"{name}_sweep_cpu", []).append(cpu_s / sweep_speeds)
+    figure = {key: float(np.median(values)) for key, values in samples.items()}
+    figure |= {f"{key}_min": float(np.min(values)) for key, values in samples.items()}
+    after, before = results["after"], results["before"]
+    moduli = [np.sort(np.abs(result.multipliers))[::-1] for result in (after, before)]
+    figure |= {"dte_difference": _distance(after.transmission_error, before.transmission_error),
+               "multiplier_difference": float(np.abs(moduli[0] - moduli[1]).max()),
+               "ratio_1_thread": figure["before_1_cpu"] / figure["after_1_cpu"],
+               "ratio_2_threads_wall": figure["before_2_wall"] / figure["after_2_wall"],
+               "ratio_sweep": figure["before_sweep_cpu"] / figure["after_sweep_cpu"],
+               "repeat": repeat, "sweep_speeds": sweep_speeds}
+    return figure
 
 
 def _distance(response_dte: np.ndarray, reference_dte: np.ndarray) -> float:
@@ -225,5 +295,37 @@ def main(quick: bool = False, full: bool = False) -> dict:
     return payload
 
 
+def main_every_dof() -> dict:
+    """Only the every-DOF figures of the 492-DOF rotor (:func:`every_dof_figures`) and the 1000-interval table;
+    writes benchmarks/results/bench_scaling_every_dof.json."""
+    warnings.simplefilter("ignore")
+    from thermogear.drivetrain.response import drivetrain_periodic_response
+
+    drivetrain_periodic_response(rotor(2).assemble(), square_wave(3000.0))  # imports outside the timings
+    figure = every_dof_figures()
+    table = table_figures(2)
+    payload = {"machine": platform.platform(), "python": sys.version.split()[0], "every_dof": figure,
+               "table": table, "load_average": os.getloadavg()}
+    RESULTS.mkdir(exist_ok=True)
+    (RESULTS / "bench_scaling_every_dof.json").write_text(json.dumps(payload, indent=2), encoding="utf-8")
+    print("492 DOF, every DOF, per speed: before -> after (ratio)")
+    print(f"  one run, 1 BLAS thread (CPU): {figure['before_1_cpu']:.2f} s -> {figure['after_1_cpu']:.2f} s "
+          f"({figure['ratio_1_thread']:.2f}x; fastest of {figure['repeat']}: {figure['before_1_cpu_min']:.2f} s -> "
+          f"{figure['after_1_cpu_min']:.2f} s)")
+    print(f"  one run, 2 BLAS threads (CPU of both): {figure['before_2_cpu']:.2f} s -> {figure['after_2_cpu']:.2f} s")
+    print(f"  one run, 2 BLAS threads (wall): {figure['before_2_wall']:.2f} s -> {figure['after_2_wall']:.2f} s "
+          f"({figure['ratio_2_threads_wall']:.2f}x)")
+    print(f"  within a sweep of {figure['sweep_speeds']} speeds, 1 thread (CPU): {figure['before_sweep_cpu']:.2f} s "
+          f"-> {figure['after_sweep_cpu']:.2f} s ({figure['ratio_sweep']:.2f}x)")
+    print(f"  DTE difference {figure['dte_difference']:.1e} of its peak-to-peak, multipliers "
+          f"{figure['multiplier_difference']:.1e}")
+    print(f"1000-interval table: clean {table['clean_s']:.2f} s, 3e-13 scatter {table['noisy_s']:.2f} s "
+          f"(ratio {table['ratio']:.2f}), DTE difference {table['difference']:.1e}")
+    return payload
+
+
 if __name__ == "__main__":
-    main(quick="--quick" in sys.argv, full="--full" in sys.argv)
+    if "--every-dof" in sys.argv:
+        main_every_dof()
+    else:
+        main(quick="--quick" in sys.argv, full="--full" in sys.argv)

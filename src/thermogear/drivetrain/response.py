@@ -74,10 +74,13 @@ def _grid(train: MeshTrain, problems) -> TrainGrid:
 
 
 def _periodic_system(assembled: AssembledDrivetrain, train: MeshTrain, problems, grid: TrainGrid,
-                     reduction: RigidBodyReduction | None) -> tuple[PiecewiseLinearSystem, RigidBodyReduction]:
+                     reduction: RigidBodyReduction | None,
+                     projected: dict | None = None) -> tuple[PiecewiseLinearSystem, RigidBodyReduction]:
     """:func:`drivetrain_periodic_system` with the states' problems and grid given and, optionally, a rigid-body
     reduction from another state of the same drivetrain: Q depends only on M and the rigid modes, which no mesh state
-    changes (the mesh stiffness joins the shafts whatever its value), so sharing it across speeds is exact."""
+    changes (the mesh stiffness joins the shafts whatever its value), so sharing it across speeds is exact.
+    ``projected``: a dict shared by the speeds of a sweep with that reduction, holding QᵀMQ and QᵀKQ (no speed
+    changes them; the damping, with Ω·G, is projected per speed), filled on the first call."""
     speed = train.states[0].speed_rpm * math.pi / 30.0
     damping = assembled.structure_damping + speed * assembled.gyroscopic
     if reduction is None:
@@ -95,9 +98,12 @@ def _periodic_system(assembled: AssembledDrivetrain, train: MeshTrain, problems,
     if len(problems) == 1:  # one mesh: its own pattern and factors (the single-pattern form)
         patterns, vectors = patterns[0], vectors[0]
         stiffness, damping_factor, force = stiffness[:, 0], damping_factor[:, 0], force[:, 0]
+    projected = {} if projected is None else projected
+    if "mass" not in projected:
+        projected["mass"] = reduction.project(assembled.mass)
+        projected["stiffness"] = reduction.project(assembled.structure_stiffness)
     system = PiecewiseLinearSystem(
-        mass=reduction.project(assembled.mass), stiffness=reduction.project(assembled.structure_stiffness),
-        damping=reduction.project(damping),
+        mass=projected["mass"], stiffness=projected["stiffness"], damping=reduction.project(damping),
         force=reduction.project_vector(mesh_torque_forces(assembled, loads[0] if loads.size == 1 else loads)),
         nodes=grid.nodes, stiffness_pattern=patterns, stiffness_factor=stiffness,
         damping_pattern=patterns, damping_factor=damping_factor, force_pattern=vectors, force_factor=force)
@@ -225,7 +231,8 @@ def drivetrain_speed_sweep(assembled: AssembledDrivetrain, states: Sequence[Mesh
     """:func:`drivetrain_periodic_response` at each mesh state (one per speed; a train of states per speed where
     the drivetrain has several meshes), sharing what no speed changes.
 
-    The rigid-body reduction is shared exactly (see :func:`_periodic_system`). With ``cutoff_hz`` the modal basis
+    The rigid-body reduction and the projected mass and stiffness are shared exactly (see
+    :func:`_periodic_system`). With ``cutoff_hz`` the modal basis
     of the first state's mean system serves every state: each state's pieces are K̄ + (k_j − k̄)·w wᵀ for any
     reference k̄, and by Sherman–Morrison their static solutions stay in span{K̄⁻¹w, K̄⁻¹f₀} (f₀ the torque pair,
     whose direction no load changes), so the static corrections keep every piece's quasi-static response exact at
@@ -236,12 +243,12 @@ def drivetrain_speed_sweep(assembled: AssembledDrivetrain, states: Sequence[Mesh
     """
     if cutoff_hz is not None and (not math.isfinite(cutoff_hz) or cutoff_hz <= 0.0):
         raise CaseError("cutoff_hz", cutoff_hz, "> 0 Hz, finite", "the highest mode frequency kept")
-    reduction, basis, responses = None, None, []
+    reduction, basis, responses, projected = None, None, [], {}
     for state in states:
         train = _as_train(assembled, state)
         problems = tuple(item.problem() for item in train.states)
         grid = _grid(train, problems)
-        system, reduction = _periodic_system(assembled, train, problems, grid, reduction)
+        system, reduction = _periodic_system(assembled, train, problems, grid, reduction, projected)
         if cutoff_hz is not None:
             from thermogear.dynamics.modal_reduction import modal_basis
 

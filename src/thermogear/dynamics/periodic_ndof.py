@@ -110,13 +110,11 @@ def _exponentials(system: PiecewiseLinearSystem, distinct: np.ndarray,
     pattern_k, pattern_c, pattern_f = system.stacked()[:3]
     rank = range_basis.shape[1]
     if distinct.shape[0] < _RANK_ROUTE_PIECES or rank == 0 or rank * _RANK_ROUTE_RATIO > 2 * n + 1:
-        stack = _with_factors(system, distinct).augmented_stack(inverse) * distinct[:, :1, None]
-        if 2 * n + 1 >= _SINGLE_ROUTE_SIZE:  # a few large pieces: each by itself (Al-Mohy & Higham 2009, Padé 13)
-            from scipy.linalg import expm
-
-            steps = np.stack([expm(matrix) for matrix in stack])
+        units = _with_factors(system, distinct).augmented_stack(inverse)
+        if 2 * n + 1 >= _SINGLE_ROUTE_SIZE:  # a few large pieces: one Padé evaluation, or each by itself
+            steps = _large_pieces(system, units, distinct[:, 0], inverse, full_range)
         else:
-            steps = batched_expm(stack)
+            steps = batched_expm(units * distinct[:, :1, None])
     else:
         mean_factors = distinct[:, 1:].mean(axis=0)
         mean = _with_factors(system, np.append(1.0, mean_factors)[None]).augmented_stack(inverse)[0]
@@ -134,6 +132,32 @@ def _exponentials(system: PiecewiseLinearSystem, distinct: np.ndarray,
                                 for column, sign in enumerate(signs)], axis=2)  # (D, r, 3Pr)
         steps = expm_of_rank_updates(mean, left, right, distinct[:, 0], rows)
     return steps
+
+
+def _large_pieces(system: PiecewiseLinearSystem, units: np.ndarray, durations: np.ndarray, inverse: np.ndarray,
+                  full_range: np.ndarray | None) -> np.ndarray:
+    """e^{A_j τ_j} of a few large pieces (unit-width augmented ``units``, ``durations`` τ_j): over commensurate
+    durations from one Padé evaluation and rank updates through the patterns' range (:mod:`~thermogear.dynamics.
+    shared_pade`), otherwise each by itself with scipy's Padé-13 scaling and squaring (Al-Mohy & Higham 2009)."""
+    from scipy.linalg import expm
+
+    from thermogear.dynamics.shared_pade import low_rank_piece_exponentials
+
+    n = system.size
+    # the force patterns' span first (a mesh: P_K = P_C = w wᵀ, P_f = w; the differences are checked to lie in
+    # it), the range of every pattern (an SVD) where they do not
+    candidates = [np.linalg.qr(system.stacked()[2].T)[0], lambda: _pattern_range(system) if full_range is None
+                  else full_range]
+    for candidate in candidates if units.shape[0] > 1 else ():
+        basis = candidate() if callable(candidate) else candidate
+        left = np.zeros((2 * n + 1, basis.shape[1]))
+        left[n:2 * n] = inverse @ basis
+        left_inverse = np.zeros((basis.shape[1], 2 * n + 1))
+        left_inverse[:, n:2 * n] = basis.T @ system.mass
+        steps = low_rank_piece_exponentials(units, left, left_inverse, durations)
+        if steps is not None:
+            return steps
+    return np.stack([expm(matrix * duration) for matrix, duration in zip(units, durations)])
 
 
 def piece_steps(system: PiecewiseLinearSystem, samples: int) -> tuple[np.ndarray, np.ndarray]:

@@ -8,21 +8,10 @@ from __future__ import annotations
 
 import numpy as np
 
+from thermogear.dynamics.monodromy_range import floquet, floquet_of_maps, uses_range
 from thermogear.errors import ModelLimitError
 
 __all__ = ["by_runs", "floquet", "on_reached", "reached_coordinates"]
-
-
-def floquet(total: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """(multipliers largest first, z₀) of the augmented one-period map; ModelLimitError where |μ| >= 1."""
-    transition, image = total[:-1, :-1], total[:-1, -1]
-    multipliers = np.linalg.eigvals(transition)
-    multipliers = multipliers[np.argsort(-np.abs(multipliers))]
-    radius = float(np.abs(multipliers).max())
-    if not np.isfinite(radius) or radius >= 1.0:
-        raise ModelLimitError(f"a Floquet multiplier has modulus {radius:.6g} >= 1: parametric instability, an "
-                              "undamped or a rigid-body mode; there is no attracting periodic orbit")
-    return multipliers, np.linalg.solve(np.eye(transition.shape[0]) - transition, image)
 
 
 def by_runs(system, steps: np.ndarray, where: np.ndarray, starts: np.ndarray,
@@ -33,15 +22,28 @@ def by_runs(system, steps: np.ndarray, where: np.ndarray, starts: np.ndarray,
     monodromy is the product of one such power per run, and the sampled states of a run follow by doubling,
     [z, Sz] → [z, Sz, S²z, S³z] → …, each step one matrix product with all states found so far (Moler & Van Loan,
     SIAM Review 45 (2003) 3–49, §3, for the powers). Exact: only the order of the floating-point products differs
-    from the block route."""
+    from the block route. The multipliers and the periodic state come from the run maps as factors
+    (:func:`~thermogear.dynamics.monodromy_range.floquet_of_maps`: on a large system from the range of the
+    monodromy, never formed)."""
     lengths = np.diff(np.append(starts, where.size)) * samples
     pieces = where[starts]
+    # the range route multiplies the maps only into blocks of columns: there the highest power is left out and
+    # applied twice (or three times), which costs less than its squaring (half a product against a full one)
+    lean = uses_range(steps.shape[1] - 1)
     powers: dict[int, list[np.ndarray]] = {}
     for piece in np.unique(pieces):
         longest, chain = int(lengths[pieces == piece].max()), [steps[piece]]
-        while 2 ** len(chain) <= longest:
+        while 2 ** len(chain) <= (longest // 2 if lean else longest):
             chain.append(chain[-1] @ chain[-1])
         powers[int(piece)] = chain
+
+    def run_factors(piece: int, count: int) -> list[np.ndarray]:
+        """Powers of the piece's step whose product (in list order, each applied after the one before) is its
+        ``count``-th power."""
+        chain = powers[piece]
+        top = len(chain) - 1
+        factors = [power for bit, power in enumerate(chain[:top]) if (count % 2 ** top) >> bit & 1]
+        return factors + [chain[top]] * (count >> top)
 
     def run_power(piece: int, count: int) -> np.ndarray:
         result = None
@@ -53,24 +55,23 @@ def by_runs(system, steps: np.ndarray, where: np.ndarray, starts: np.ndarray,
     run_maps, cache = [], {}
     for piece, count in zip(pieces.tolist(), lengths.tolist()):
         if (piece, count) not in cache:
-            cache[(piece, count)] = run_power(piece, count)
+            cache[(piece, count)] = run_factors(piece, count) if lean else [run_power(piece, count)]
         run_maps.append(cache[(piece, count)])
-    total = run_maps[0]
-    for matrix in run_maps[1:]:
-        total = matrix @ total
-    multipliers, initial = floquet(total)
+    multipliers, initial = floquet_of_maps([factor for factors in run_maps for factor in factors])
     n, size = system.size, steps.shape[1]
     states = np.empty((where.size * samples + 1, size))
     state, row = np.append(initial, 1.0), 0
-    for piece, count, matrix in zip(pieces.tolist(), lengths.tolist(), run_maps):
+    for piece, count, factors in zip(pieces.tolist(), lengths.tolist(), run_maps):
         found = state[None]
-        for power in powers[piece]:
-            if found.shape[0] >= count:
-                break
-            found = np.vstack([found, found[:count - found.shape[0]] @ power.T])
+        chain = powers[piece]
+        while found.shape[0] < count:  # doubling with S, S², S⁴, …, then strides of the highest power
+            level = min(int(found.shape[0]).bit_length() - 1, len(chain) - 1)
+            stride, first = 2 ** level, found.shape[0] - 2 ** level
+            found = np.vstack([found, found[first:first + min(stride, count - found.shape[0])] @ chain[level].T])
         states[row:row + count] = found[:count]
         row += count
-        state = matrix @ state
+        for factor in factors:
+            state = factor @ state
     states[-1] = state
     offsets = np.arange(samples) / samples
     time = np.concatenate([(system.nodes[:-1, None] + np.diff(system.nodes)[:, None] * offsets).ravel(),
