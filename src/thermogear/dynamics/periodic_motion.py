@@ -8,7 +8,9 @@ from __future__ import annotations
 import numpy as np
 
 from thermogear.errors import ProblemError
-from thermogear.dynamics.periodic_ndof import PiecewiseLinearSystem, chunked_exponentials, grouped_pieces
+from thermogear.dynamics.periodic_ndof import (PiecewiseLinearSystem, chunked_exponentials, chunked_transitions,
+                                               grouped_pieces)
+from thermogear.dynamics.sub_steps import as_steps
 
 __all__ = ["MotionProjector", "motion_projections"]
 
@@ -24,18 +26,19 @@ def motion_projections(system: PiecewiseLinearSystem, state: np.ndarray, periods
     many periods is watched (e.g. for the mesh gap) without stepping it. Exact as :func:`~thermogear.dynamics.periodic_ndof.periodic_response`."""
     projector = MotionProjector(system, samples_per_piece, rows)
     grouped, where = grouped_pieces(system, int(samples_per_piece))
-    for first, steps in chunked_exponentials(system, grouped, where):
-        projector.add(first, steps)
+    for first, wholes, steps in chunked_transitions(system, grouped, where, int(samples_per_piece)):
+        projector.add(first, steps, wholes)
     return projector.projections(state, periods)
 
 
 class MotionProjector:
-    """The pass of :func:`motion_projections` fed chunk by chunk with the sub-step exponentials of ``system``
-    (those of :func:`~thermogear.dynamics.periodic_ndof.chunked_exponentials`, in order), so that a solve that
-    forms them anyway (the periodic orbit's second pass: ``periodic_response(..., observer=projector.add)``) also
-    prepares the motion from any start without a pass of its own; the whole transitions are formed here, chunk by
-    chunk as :func:`motion_projections` forms them, so the numbers are the same. ``complete`` says whether every
-    piece was fed (a solve on another route feeds none)."""
+    """The pass of :func:`motion_projections` fed chunk by chunk with the sub-step transitions of ``system`` and
+    their whole pieces' (those of :func:`~thermogear.dynamics.periodic_ndof.chunked_transitions`, in order), so
+    that a solve that forms them anyway (``periodic_response(..., observer=projector.add)``, whose first pass forms
+    both) also prepares the motion from any start without a pass of its own, with the numbers of
+    :func:`motion_projections`. Fed without the wholes (a solve whose second pass forms the sub-steps' matrices),
+    it forms them here chunk by chunk. ``complete`` says whether every piece was fed (a solve on another route
+    feeds none)."""
 
     def __init__(self, system: PiecewiseLinearSystem, samples_per_piece: int, rows: np.ndarray):
         self.system, self.samples = system, int(samples_per_piece)
@@ -46,7 +49,8 @@ class MotionProjector:
         self._augmented[:, :2 * n] = self.rows
         self._transfer = np.empty((self._where.size, self.samples, count, 2 * n + 1))
         self._transition = np.eye(2 * n + 1)
-        self._wholes = chunked_exponentials(system, grouped, self._where, self.samples)
+        self._grouped = grouped
+        self._wholes = None  # formed here only where a solve feeds the sub-steps without them
         self._fed = 0
 
     @property
@@ -54,19 +58,28 @@ class MotionProjector:
         """Whether every piece's sub-step exponential was fed."""
         return self._fed == self._where.size
 
-    def add(self, first: int, steps: np.ndarray) -> None:
-        """Take the sub-step exponentials ``steps`` (c, 2n+1, 2n+1) of the pieces first … first + c − 1 (the next
-        chunk of :func:`~thermogear.dynamics.periodic_ndof.chunked_exponentials`)."""
+    def add(self, first: int, steps, wholes: np.ndarray | None = None) -> None:
+        """Take the sub-step transitions ``steps`` of the pieces first … first + c − 1 (the next chunk: a (c, 2n+1,
+        2n+1) array or a :mod:`~thermogear.dynamics.sub_steps` form) and their whole transitions ``wholes`` (c, 2n+1,
+        2n+1) (None: formed here as :func:`~thermogear.dynamics.periodic_ndof.chunked_exponentials` forms them)."""
         if first != self._fed:
             raise ProblemError("first", first, f"= {self._fed}", "the chunks are fed in order")
-        _, wholes = next(self._wholes)
+        steps = as_steps(steps)
+        if wholes is None:
+            if self._wholes is None:
+                self._wholes = chunked_exponentials(self.system, self._grouped, self._where, self.samples)
+            start, wholes = next(self._wholes)
+            while start < first:
+                start, wholes = next(self._wholes)
+        if len(wholes) != len(steps):
+            raise ProblemError("wholes", len(wholes), f"= {len(steps)}", "one whole transition per piece")
         transition = self._transition
-        for offset, (step, whole) in enumerate(zip(steps, wholes, strict=True)):
+        for offset in range(len(steps)):
             current = self._augmented
             for sample in range(self.samples):
                 self._transfer[first + offset, sample] = current @ transition
-                current = current @ step
-            transition = whole @ transition
+                current = steps.apply_left(offset, current)
+            transition = wholes[offset] @ transition
         self._transition, self._fed = transition, first + len(steps)
 
     def projections(self, state: np.ndarray, periods: int) -> np.ndarray:

@@ -34,9 +34,11 @@ import numpy as np
 from thermogear.dynamics.periodic_runs import by_runs, floquet, on_reached, reached_coordinates
 from thermogear.dynamics.piece_groups import PIECE_TOLERANCE, group_rows
 from thermogear.dynamics.piecewise_system import PiecewiseLinearSystem
+from thermogear.dynamics.sub_steps import DenseSteps, PartedSteps
 from thermogear.errors import ProblemError
 
-__all__ = ["RUN_ROUTE_SIZE", "PiecewiseLinearSystem", "PeriodicResponse", "chunked_exponentials", "grouped_pieces",
+__all__ = ["RUN_ROUTE_SIZE", "PiecewiseLinearSystem", "PeriodicResponse", "chunked_exponentials", "chunked_transitions",
+           "grouped_pieces",
            "monodromy", "ordered_product", "periodic_response", "piece_steps"]
 
 
@@ -103,37 +105,61 @@ def _exponentials(system: PiecewiseLinearSystem, distinct: np.ndarray,
     ``distinct`` (:func:`grouped_pieces`; the routes: :func:`_piece_steps`); ``operators`` (M⁻¹, the patterns' range)."""
     from thermogear.dynamics.batched_exponential import batched_expm, expm_of_rank_updates
 
-    n = system.size
-    inverse, full_range = operators or (_mass_inverse(system), None)
-    range_basis = np.zeros((n, 0)) if distinct.shape[0] < _RANK_ROUTE_PIECES \
-        else (_pattern_range(system) if full_range is None else full_range)
-    pattern_k, pattern_c, pattern_f = system.stacked()[:3]
-    rank = range_basis.shape[1]
-    if distinct.shape[0] < _RANK_ROUTE_PIECES or rank == 0 or rank * _RANK_ROUTE_RATIO > 2 * n + 1:
-        stack = _with_factors(system, distinct).augmented_stack(inverse) * distinct[:, :1, None]
-        if 2 * n + 1 >= _SINGLE_ROUTE_SIZE:  # a few large pieces: each by itself (Al-Mohy & Higham 2009, Padé 13)
-            from scipy.linalg import expm
+    route = _rank_route(system, distinct, operators)
+    if route is not None:
+        return expm_of_rank_updates(*route)
+    inverse = operators[0] if operators else _mass_inverse(system)
+    stack = _with_factors(system, distinct).augmented_stack(inverse) * distinct[:, :1, None]
+    if 2 * system.size + 1 >= _SINGLE_ROUTE_SIZE:  # a few large pieces: each by itself (Al-Mohy & Higham 2009, Padé 13)
+        from scipy.linalg import expm
 
-            steps = np.stack([expm(matrix) for matrix in stack])
-        else:
-            steps = batched_expm(stack)
-    else:
-        mean_factors = distinct[:, 1:].mean(axis=0)
-        mean = _with_factors(system, np.append(1.0, mean_factors)[None]).augmented_stack(inverse)[0]
-        left = np.zeros((2 * n + 1, range_basis.shape[1]))
-        left[n:2 * n] = inverse @ range_basis
-        shift = distinct[:, 1:] - mean_factors
-        meshes = pattern_k.shape[0]
-        rows = np.zeros((3 * meshes * rank, 2 * n + 1))  # the stiffness, damping and excitation rows, r per mesh
-        for mesh in range(meshes):
-            rows[mesh * rank:(mesh + 1) * rank, :n] = range_basis.T @ pattern_k[mesh]
-            rows[(meshes + mesh) * rank:(meshes + mesh + 1) * rank, n:2 * n] = range_basis.T @ pattern_c[mesh]
-            rows[(2 * meshes + mesh) * rank:(2 * meshes + mesh + 1) * rank, 2 * n] = range_basis.T @ pattern_f[mesh]
-        signs = (-1.0,) * (2 * meshes) + (1.0,) * meshes  # columns of shift: k per mesh, c per mesh, g per mesh
-        right = np.concatenate([np.eye(rank) * sign * shift[:, column, None, None]
-                                for column, sign in enumerate(signs)], axis=2)  # (D, r, 3Pr)
-        steps = expm_of_rank_updates(mean, left, right, distinct[:, 0], rows)
-    return steps
+        return np.stack([expm(matrix) for matrix in stack])
+    return batched_expm(stack)
+
+
+def _rank_route(system: PiecewiseLinearSystem, distinct: np.ndarray,
+                operators: tuple[np.ndarray, np.ndarray] | None = None) -> tuple | None:
+    """The arguments (X₀, U, C, t, V) of :func:`~thermogear.dynamics.batched_exponential.expm_of_rank_updates` for
+    the pieces ``distinct``, or None where they take the full exponentials (few pieces, or patterns of high rank:
+    :func:`_piece_steps`)."""
+    n = system.size
+    if distinct.shape[0] < _RANK_ROUTE_PIECES:
+        return None
+    inverse, full_range = operators or (_mass_inverse(system), None)
+    range_basis = _pattern_range(system) if full_range is None else full_range
+    rank = range_basis.shape[1]
+    if rank == 0 or rank * _RANK_ROUTE_RATIO > 2 * n + 1:
+        return None
+    pattern_k, pattern_c, pattern_f = system.stacked()[:3]
+    mean_factors = distinct[:, 1:].mean(axis=0)
+    mean = _with_factors(system, np.append(1.0, mean_factors)[None]).augmented_stack(inverse)[0]
+    left = np.zeros((2 * n + 1, range_basis.shape[1]))
+    left[n:2 * n] = inverse @ range_basis
+    shift = distinct[:, 1:] - mean_factors
+    meshes = pattern_k.shape[0]
+    rows = np.zeros((3 * meshes * rank, 2 * n + 1))  # the stiffness, damping and excitation rows, r per mesh
+    for mesh in range(meshes):
+        rows[mesh * rank:(mesh + 1) * rank, :n] = range_basis.T @ pattern_k[mesh]
+        rows[(meshes + mesh) * rank:(meshes + mesh + 1) * rank, n:2 * n] = range_basis.T @ pattern_c[mesh]
+        rows[(2 * meshes + mesh) * rank:(2 * meshes + mesh + 1) * rank, 2 * n] = range_basis.T @ pattern_f[mesh]
+    signs = (-1.0,) * (2 * meshes) + (1.0,) * meshes  # columns of shift: k per mesh, c per mesh, g per mesh
+    right = np.concatenate([np.eye(rank) * sign * shift[:, column, None, None]
+                            for column, sign in enumerate(signs)], axis=2)  # (D, r, 3Pr)
+    return mean, left, right, distinct[:, 0], rows
+
+
+def _step_parts(system: PiecewiseLinearSystem, distinct: np.ndarray, operators) -> PartedSteps | None:
+    """The exponentials of ``distinct`` as their parts (:class:`~thermogear.dynamics.sub_steps.PartedSteps`), or
+    None where they are not held so (the full route, or squarings: the parts then are not the pieces' own)."""
+    from thermogear.dynamics.batched_exponential import RankUpdateExponentials, rank_update_parts
+
+    route = _rank_route(system, distinct, operators)
+    if route is None:
+        return None
+    parts = rank_update_parts(*route)
+    if not isinstance(parts, RankUpdateExponentials) or parts.squarings:
+        return None
+    return PartedSteps(parts, np.arange(distinct.shape[0]))
 
 
 def piece_steps(system: PiecewiseLinearSystem, samples: int) -> tuple[np.ndarray, np.ndarray]:
@@ -292,30 +318,65 @@ def chunked_exponentials(system: PiecewiseLinearSystem, rows: np.ndarray, where:
         yield first, _exponentials(system, chunk, operators)[inverse.ravel()]
 
 
+def chunked_transitions(system: PiecewiseLinearSystem, rows: np.ndarray, where: np.ndarray, samples: int,
+                        dense_steps: bool = True):
+    """Yield (first piece, the whole transitions e^{A_j h_j} (c, 2n+1, 2n+1) of the pieces first … first + c − 1,
+    their sub-step transitions e^{A_j h_j/s}, s = ``samples``) over the chunks of :func:`chunked_exponentials`, in
+    one pass: the wholes as :func:`chunked_exponentials` forms them (the same numbers), the sub-steps as their parts
+    (:class:`~thermogear.dynamics.sub_steps.PartedSteps`, O(q·m) numbers a piece) on the rank-update route without
+    squarings, else as matrices (:class:`~thermogear.dynamics.sub_steps.DenseSteps`), or None with ``dense_steps``
+    False (the caller then forms them in a pass of its own, holding no chunk of matrices)."""
+    chunk_pieces = max(1, CHUNK_BYTES // (8 * (2 * system.size + 1) ** 2))
+    operators = (_mass_inverse(system), _pattern_range(system))
+    for first in range(0, where.size, chunk_pieces):
+        unique, inverse = np.unique(where[first:first + chunk_pieces], return_inverse=True)
+        chunk = rows[unique]
+        whole = chunk.copy()
+        whole[:, 0] *= samples
+        wholes = _exponentials(system, whole, operators)[inverse.ravel()]
+        steps = _step_parts(system, chunk, operators)
+        if steps is not None:
+            steps = PartedSteps(steps.parts, inverse.ravel())
+        elif dense_steps:
+            steps = DenseSteps(_exponentials(system, chunk, operators)[inverse.ravel()])
+        yield first, wholes, steps
+
+
 def _by_chunks(system: PiecewiseLinearSystem, rows: np.ndarray, where: np.ndarray,
                samples: int, observer=None) -> PeriodicResponse:
     """:func:`periodic_response` where a stack of every distinct piece's matrix would be large (above
     :data:`LEAN_ROUTE_BYTES`): the monodromy as the product of the chunks' ordered products of the whole pieces'
-    transitions (:func:`chunked_exponentials`: the same N − 1 products as the block route's tree), then the orbit's
-    state at every sub-step by stepping z₀ through the sub-step exponentials one after another (N·s products of a
+    transitions (:func:`chunked_transitions`: the same N − 1 products as the block route's tree), then the orbit's
+    state at every sub-step by stepping z₀ through the sub-step transitions one after another (N·s products of a
     matrix with a vector, O(m²) each). Exact as the block route (the whole transitions are e^{A_j h_j} itself
     instead of the power of the sub-step's, and the products come in another order: both differ at the unit
-    roundoff), holding a chunk of matrices at a time instead of several stacks of all of them."""
+    roundoff), holding a chunk of matrices at a time instead of several stacks of all of them. The sub-steps held
+    as their parts (O(q·m) a piece) are formed in the first pass and kept; otherwise a second pass forms their
+    matrices chunk by chunk."""
     total = np.eye(2 * system.size + 1)
-    for _, whole in chunked_exponentials(system, rows, where, samples):
-        total = ordered_product(whole) @ total
+    kept: list | None = []
+    fed = 0
+    for first, wholes, steps in chunked_transitions(system, rows, where, samples, dense_steps=False):
+        total = ordered_product(wholes) @ total
+        if steps is None:
+            kept = None
+        elif kept is not None:
+            kept.append((first, steps))
+            if observer is not None and fed == first:
+                observer(first, steps, wholes)
+                fed = first + len(steps)
     multipliers, initial = floquet(total)
     n, pieces = system.size, where.size
     states = np.empty((pieces * samples + 1, 2 * n + 1))
-    state, row = np.append(initial, 1.0), 0
-    for first, steps in chunked_exponentials(system, rows, where):
-        if observer is not None:
+    state = np.append(initial, 1.0)
+    if kept is None:
+        kept = ((first, DenseSteps(steps)) for first, steps in chunked_exponentials(system, rows, where))
+    for first, steps in kept:
+        if observer is not None and first >= fed:
             observer(first, steps)
-        for step in steps:
-            for _ in range(samples):
-                states[row] = state
-                state = step @ state
-                row += 1
+        for offset in range(len(steps)):
+            row = (first + offset) * samples
+            state = steps.walk(offset, state, samples, states[row:row + samples])
     states[-1] = state
     offsets = np.arange(samples) / samples
     time = np.concatenate([(system.nodes[:-1, None] + np.diff(system.nodes)[:, None] * offsets).ravel(),

@@ -1,0 +1,67 @@
+"""The sub-step transitions e^{A_j h_j/s} of a chunk of pieces, as the periodic solvers step states through them:
+either their matrices, or (the rank-update route) the parts they are made of, which act on a state at O(m² + q·m)
+without the (m, m) matrix of each piece being formed and held (:class:`~thermogear.dynamics.batched_exponential.
+RankUpdateExponentials`). Both give the same transitions to the unit roundoff: the parts add the shared
+exponential's product and the rank-q update's instead of forming their sum first. Knows nothing of gears."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from thermogear.dynamics.batched_exponential import RankUpdateExponentials
+
+__all__ = ["DenseSteps", "PartedSteps", "as_steps"]
+
+
+class DenseSteps:
+    """The sub-step transitions of a chunk as a (c, m, m) stack of matrices."""
+
+    def __init__(self, matrices: np.ndarray):
+        self.matrices = matrices
+
+    def __len__(self) -> int:
+        return self.matrices.shape[0]
+
+    def walk(self, index: int, state: np.ndarray, count: int, out: np.ndarray) -> np.ndarray:
+        """Write the states before each of ``count`` sub-steps of piece ``index`` from ``state`` into ``out``
+        (count, m); return the state after them."""
+        step = self.matrices[index]
+        for sample in range(count):
+            out[sample] = state
+            state = step @ state
+        return state
+
+    def apply_left(self, index: int, rows: np.ndarray) -> np.ndarray:
+        """rows·e^{A_j h_j/s} of piece ``index`` for rows (r, m)."""
+        return rows @ self.matrices[index]
+
+
+class PartedSteps:
+    """The sub-step transitions of a chunk as the parts of their exponentials (no squarings): ``parts`` of the
+    chunk's distinct pieces and ``which`` (c,) the distinct piece of each piece of the chunk."""
+
+    def __init__(self, parts: RankUpdateExponentials, which: np.ndarray):
+        self.parts, self.which = parts, which
+
+    def __len__(self) -> int:
+        return self.which.size
+
+    def walk(self, index: int, state: np.ndarray, count: int, out: np.ndarray) -> np.ndarray:
+        """As :meth:`DenseSteps.walk`: in the balanced coordinates D·z of the parts, D⁻¹(E + L R)D per sub-step."""
+        parts, distinct = self.parts, self.which[index]
+        shared, left, right = parts.exponentials[parts.which[distinct]], parts.left[distinct], parts.right[distinct]
+        scaled = parts.scale * state
+        for sample in range(count):
+            out[sample] = state
+            scaled = shared @ scaled + left @ (right @ scaled)
+            state = scaled / parts.scale
+        return state
+
+    def apply_left(self, index: int, rows: np.ndarray) -> np.ndarray:
+        """rows·e^{A_j h_j/s} of piece ``index`` for rows (r, m)."""
+        return self.parts.apply_left(self.which[index], rows)
+
+
+def as_steps(steps) -> DenseSteps | PartedSteps:
+    """Either form as given; a (c, m, m) array as :class:`DenseSteps`."""
+    return steps if isinstance(steps, (DenseSteps, PartedSteps)) else DenseSteps(np.asarray(steps))
