@@ -58,10 +58,12 @@ class MotionProjector:
         """Whether every piece's sub-step exponential was fed."""
         return self._fed == self._where.size
 
-    def add(self, first: int, steps, wholes: np.ndarray | None = None) -> None:
+    def add(self, first: int, steps, wholes: np.ndarray | None = None, starts: np.ndarray | None = None) -> None:
         """Take the sub-step transitions ``steps`` of the pieces first … first + c − 1 (the next chunk: a (c, 2n+1,
         2n+1) array or a :mod:`~thermogear.dynamics.sub_steps` form) and their whole transitions ``wholes`` (c, 2n+1,
-        2n+1) (None: formed here as :func:`~thermogear.dynamics.periodic_ndof.chunked_exponentials` forms them)."""
+        2n+1) (None: formed here as :func:`~thermogear.dynamics.periodic_ndof.chunked_exponentials` forms them);
+        ``starts`` (c, 2n+1, 2n+1) the transitions from the period's start to each piece's start where the caller
+        formed them (the product of the wholes one after another, as here: the same numbers), else formed here."""
         if first != self._fed:
             raise ProblemError("first", first, f"= {self._fed}", "the chunks are fed in order")
         steps = as_steps(steps)
@@ -75,11 +77,14 @@ class MotionProjector:
             raise ProblemError("wholes", len(wholes), f"= {len(steps)}", "one whole transition per piece")
         transition = self._transition
         for offset in range(len(steps)):
+            if starts is not None:
+                transition = starts[offset]
             current = self._augmented
             for sample in range(self.samples):
                 self._transfer[first + offset, sample] = current @ transition
                 current = steps.apply_left(offset, current)
-            transition = wholes[offset] @ transition
+            if starts is None or offset + 1 == len(steps):
+                transition = wholes[offset] @ transition
         self._transition, self._fed = transition, first + len(steps)
 
     def projections(self, state: np.ndarray, periods: int) -> np.ndarray:

@@ -280,8 +280,9 @@ def periodic_response(system: PiecewiseLinearSystem, samples_per_piece: int = 16
 
     ``piece_tolerance`` ε: pieces whose (h_j, k_j, c_j, g_j) agree within ε of each column's largest magnitude share
     one exponential (:mod:`~thermogear.dynamics.piece_groups` bounds the effect; 0: bit-identical pieces only).
-    ``observer``(first piece, sub-step exponentials): fed each chunk where the solve forms them chunk by chunk
-    (``_by_chunks``; :class:`~thermogear.dynamics.periodic_motion.MotionProjector`), else never called.
+    ``observer``(first piece, sub-step transitions[, whole transitions, transitions from the period's start to each
+    piece's start]): fed each chunk where the solve forms them chunk by chunk (``_by_chunks``; :class:`~thermogear.
+    dynamics.periodic_motion.MotionProjector`), else never called.
 
     Raises ModelLimitError when a Floquet multiplier has modulus >= 1 (parametric instability, an undamped mode or
     a rigid-body mode left in the system): there is then no attracting periodic orbit.
@@ -345,26 +346,31 @@ def chunked_transitions(system: PiecewiseLinearSystem, rows: np.ndarray, where: 
 def _by_chunks(system: PiecewiseLinearSystem, rows: np.ndarray, where: np.ndarray,
                samples: int, observer=None) -> PeriodicResponse:
     """:func:`periodic_response` where a stack of every distinct piece's matrix would be large (above
-    :data:`LEAN_ROUTE_BYTES`): the monodromy as the product of the chunks' ordered products of the whole pieces'
-    transitions (:func:`chunked_transitions`: the same N − 1 products as the block route's tree), then the orbit's
+    :data:`LEAN_ROUTE_BYTES`): the monodromy as the product of the whole pieces' transitions, one after another
+    (:func:`chunked_transitions`: the same N − 1 products as the block route's tree; the observer takes the
+    transition from the period's start to each piece's start on the way, at no cost), then the orbit's
     state at every sub-step by stepping z₀ through the sub-step transitions one after another (N·s products of a
     matrix with a vector, O(m²) each). Exact as the block route (the whole transitions are e^{A_j h_j} itself
     instead of the power of the sub-step's, and the products come in another order: both differ at the unit
     roundoff), holding a chunk of matrices at a time instead of several stacks of all of them. The sub-steps held
     as their parts (O(q·m) a piece) are formed in the first pass and kept; otherwise a second pass forms their
     matrices chunk by chunk."""
-    total = np.eye(2 * system.size + 1)
+    size = 2 * system.size + 1
+    total = np.eye(size)
     kept: list | None = []
     fed = 0
     for first, wholes, steps in chunked_transitions(system, rows, where, samples, dense_steps=False):
-        total = ordered_product(wholes) @ total
-        if steps is None:
-            kept = None
-        elif kept is not None:
-            kept.append((first, steps))
-            if observer is not None and fed == first:
-                observer(first, steps, wholes)
-                fed = first + len(steps)
+        kept = None if kept is None or steps is None else [*kept, (first, steps)]
+        if kept is not None and observer is not None and fed == first:  # it takes each piece's start transition
+            starts = np.empty((len(wholes), size, size))
+            for index, whole in enumerate(wholes):
+                starts[index] = total
+                total = whole @ total
+            observer(first, steps, wholes, starts)
+            fed = first + len(steps)
+        else:
+            for whole in wholes:
+                total = whole @ total
     multipliers, initial = floquet(total)
     n, pieces = system.size, where.size
     states = np.empty((pieces * samples + 1, 2 * n + 1))
