@@ -1,15 +1,14 @@
 """The motion of a piecewise-linear time-periodic system from a given state over many periods, watched through
 linear functionals of its state (e.g. the gap of a mesh) without stepping it period by period: the pieces'
-sub-step exponentials and whole transitions of :func:`~thermogear.dynamics.periodic_ndof.chunked_exponentials`,
-carried back to the period's start once. Knows nothing of gears: matrices only."""
+sub-step and whole transitions of :func:`~thermogear.dynamics.periodic_ndof.chunked_transitions`, carried back to
+the period's start once. Knows nothing of gears: matrices only."""
 
 from __future__ import annotations
 
 import numpy as np
 
 from thermogear.errors import ProblemError
-from thermogear.dynamics.periodic_ndof import (PiecewiseLinearSystem, chunked_exponentials, chunked_transitions,
-                                               grouped_pieces)
+from thermogear.dynamics.periodic_ndof import PiecewiseLinearSystem, chunked_transitions, grouped_pieces
 from thermogear.dynamics.sub_steps import as_steps
 
 __all__ = ["MotionProjector", "motion_projections"]
@@ -26,8 +25,11 @@ def motion_projections(system: PiecewiseLinearSystem, state: np.ndarray, periods
     many periods is watched (e.g. for the mesh gap) without stepping it. Exact as :func:`~thermogear.dynamics.periodic_ndof.periodic_response`."""
     projector = MotionProjector(system, samples_per_piece, rows)
     grouped, where = grouped_pieces(system, int(samples_per_piece))
+    total = np.eye(2 * system.size + 1)
     for first, wholes, steps in chunked_transitions(system, grouped, where, int(samples_per_piece)):
-        projector.add(first, steps, wholes)
+        starts = np.empty((len(wholes), total.shape[0], total.shape[0]))
+        total = wholes.chain(total, starts)  # as the chunked periodic solve forms them for its observer
+        projector.add(first, steps, starts, total)
     return projector.projections(state, periods)
 
 
@@ -58,34 +60,33 @@ class MotionProjector:
         """Whether every piece's sub-step exponential was fed."""
         return self._fed == self._where.size
 
-    def add(self, first: int, steps, wholes: np.ndarray | None = None, starts: np.ndarray | None = None) -> None:
+    def add(self, first: int, steps, starts: np.ndarray | None = None, end: np.ndarray | None = None) -> None:
         """Take the sub-step transitions ``steps`` of the pieces first … first + c − 1 (the next chunk: a (c, 2n+1,
-        2n+1) array or a :mod:`~thermogear.dynamics.sub_steps` form) and their whole transitions ``wholes`` (c, 2n+1,
-        2n+1) (None: formed here as :func:`~thermogear.dynamics.periodic_ndof.chunked_exponentials` forms them);
-        ``starts`` (c, 2n+1, 2n+1) the transitions from the period's start to each piece's start where the caller
-        formed them (the product of the wholes one after another, as here: the same numbers), else formed here."""
+        2n+1) array or a :mod:`~thermogear.dynamics.sub_steps` form) with ``starts`` (c, 2n+1, 2n+1) the transitions
+        from the period's start to each piece's start and ``end`` the one to the chunk's end, as the caller formed
+        them (None: formed here from the whole transitions of :func:`~thermogear.dynamics.periodic_ndof.
+        chunked_transitions`, one after another as there: the same numbers)."""
         if first != self._fed:
             raise ProblemError("first", first, f"= {self._fed}", "the chunks are fed in order")
         steps = as_steps(steps)
-        if wholes is None:
+        if starts is None:
             if self._wholes is None:
-                self._wholes = chunked_exponentials(self.system, self._grouped, self._where, self.samples)
-            start, wholes = next(self._wholes)
+                self._wholes = chunked_transitions(self.system, self._grouped, self._where, self.samples,
+                                                   dense_steps=False)
+            start, wholes, _ = next(self._wholes)
             while start < first:
-                start, wholes = next(self._wholes)
-        if len(wholes) != len(steps):
-            raise ProblemError("wholes", len(wholes), f"= {len(steps)}", "one whole transition per piece")
-        transition = self._transition
+                self._transition = wholes.chain(self._transition)
+                start, wholes, _ = next(self._wholes)
+            starts = np.empty((len(wholes), *self._transition.shape))
+            end = wholes.chain(self._transition, starts)
+        if len(starts) != len(steps):
+            raise ProblemError("starts", len(starts), f"= {len(steps)}", "one start transition per piece")
         for offset in range(len(steps)):
-            if starts is not None:
-                transition = starts[offset]
             current = self._augmented
             for sample in range(self.samples):
-                self._transfer[first + offset, sample] = current @ transition
+                self._transfer[first + offset, sample] = current @ starts[offset]
                 current = steps.apply_left(offset, current)
-            if starts is None or offset + 1 == len(steps):
-                transition = wholes[offset] @ transition
-        self._transition, self._fed = transition, first + len(steps)
+        self._transition, self._fed = end, first + len(steps)
 
     def projections(self, state: np.ndarray, periods: int) -> np.ndarray:
         """The (P·N·s + 1, r) functionals of the motion from ``state`` over ``periods`` periods

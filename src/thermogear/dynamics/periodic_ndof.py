@@ -118,12 +118,13 @@ def _exponentials(system: PiecewiseLinearSystem, distinct: np.ndarray,
 
 
 def _rank_route(system: PiecewiseLinearSystem, distinct: np.ndarray,
-                operators: tuple[np.ndarray, np.ndarray] | None = None) -> tuple | None:
+                operators: tuple[np.ndarray, np.ndarray] | None = None,
+                least_pieces: int | None = None) -> tuple | None:
     """The arguments (X₀, U, C, t, V) of :func:`~thermogear.dynamics.batched_exponential.expm_of_rank_updates` for
-    the pieces ``distinct``, or None where they take the full exponentials (few pieces, or patterns of high rank:
-    :func:`_piece_steps`)."""
+    the pieces ``distinct``, or None where they take the full exponentials (fewer than ``least_pieces`` pieces, or
+    patterns of high rank: :func:`_piece_steps`; default :data:`_RANK_ROUTE_PIECES`)."""
     n = system.size
-    if distinct.shape[0] < _RANK_ROUTE_PIECES:
+    if distinct.shape[0] < max(1, _RANK_ROUTE_PIECES if least_pieces is None else least_pieces):
         return None
     inverse, full_range = operators or (_mass_inverse(system), None)
     range_basis = _pattern_range(system) if full_range is None else full_range
@@ -148,18 +149,23 @@ def _rank_route(system: PiecewiseLinearSystem, distinct: np.ndarray,
     return mean, left, right, distinct[:, 0], rows
 
 
-def _step_parts(system: PiecewiseLinearSystem, distinct: np.ndarray, operators) -> PartedSteps | None:
-    """The exponentials of ``distinct`` as their parts (:class:`~thermogear.dynamics.sub_steps.PartedSteps`), or
-    None where they are not held so (the full route, or squarings: the parts then are not the pieces' own)."""
+def _transitions(system: PiecewiseLinearSystem, distinct: np.ndarray, operators, which: np.ndarray,
+                 dense: bool = True) -> DenseSteps | PartedSteps | None:
+    """The exponentials of the pieces ``distinct`` (each piece of a chunk: ``which``) as their parts
+    (:class:`~thermogear.dynamics.sub_steps.PartedSteps`, O(q·m) numbers a piece) where the rank-update route takes
+    them without squarings (any number of pieces: the parts are what is kept, not the matrices' cost), else as
+    matrices (:class:`~thermogear.dynamics.sub_steps.DenseSteps`; None without ``dense``)."""
     from thermogear.dynamics.batched_exponential import RankUpdateExponentials, rank_update_parts
 
-    route = _rank_route(system, distinct, operators)
-    if route is None:
+    route = _rank_route(system, distinct, operators, least_pieces=1)
+    parts = None if route is None else rank_update_parts(*route)
+    if isinstance(parts, RankUpdateExponentials) and not parts.squarings:
+        return PartedSteps(parts, which)
+    if not dense:
         return None
-    parts = rank_update_parts(*route)
-    if not isinstance(parts, RankUpdateExponentials) or parts.squarings:
-        return None
-    return PartedSteps(parts, np.arange(distinct.shape[0]))
+    if parts is None:
+        return DenseSteps(_exponentials(system, distinct, operators), which)
+    return DenseSteps(parts if isinstance(parts, np.ndarray) else parts.matrices(), which)
 
 
 def piece_steps(system: PiecewiseLinearSystem, samples: int) -> tuple[np.ndarray, np.ndarray]:
@@ -321,12 +327,12 @@ def chunked_exponentials(system: PiecewiseLinearSystem, rows: np.ndarray, where:
 
 def chunked_transitions(system: PiecewiseLinearSystem, rows: np.ndarray, where: np.ndarray, samples: int,
                         dense_steps: bool = True):
-    """Yield (first piece, the whole transitions e^{A_j h_j} (c, 2n+1, 2n+1) of the pieces first … first + c − 1,
-    their sub-step transitions e^{A_j h_j/s}, s = ``samples``) over the chunks of :func:`chunked_exponentials`, in
-    one pass: the wholes as :func:`chunked_exponentials` forms them (the same numbers), the sub-steps as their parts
-    (:class:`~thermogear.dynamics.sub_steps.PartedSteps`, O(q·m) numbers a piece) on the rank-update route without
-    squarings, else as matrices (:class:`~thermogear.dynamics.sub_steps.DenseSteps`), or None with ``dense_steps``
-    False (the caller then forms them in a pass of its own, holding no chunk of matrices)."""
+    """Yield (first piece, the whole transitions e^{A_j h_j} of the pieces first … first + c − 1, their sub-step
+    transitions e^{A_j h_j/s}, s = ``samples``) over consecutive chunks of about :data:`CHUNK_BYTES` of matrices,
+    in one pass: each as the parts of its rank-update exponential where it has them without squarings
+    (:class:`~thermogear.dynamics.sub_steps.PartedSteps`, O(q·m) numbers a piece, no (m, m) matrix per piece
+    formed), else as matrices (:class:`~thermogear.dynamics.sub_steps.DenseSteps`; sub-steps None with
+    ``dense_steps`` False: the caller then forms them in a pass of its own)."""
     chunk_pieces = max(1, CHUNK_BYTES // (8 * (2 * system.size + 1) ** 2))
     operators = (_mass_inverse(system), _pattern_range(system))
     for first in range(0, where.size, chunk_pieces):
@@ -334,27 +340,23 @@ def chunked_transitions(system: PiecewiseLinearSystem, rows: np.ndarray, where: 
         chunk = rows[unique]
         whole = chunk.copy()
         whole[:, 0] *= samples
-        wholes = _exponentials(system, whole, operators)[inverse.ravel()]
-        steps = _step_parts(system, chunk, operators)
-        if steps is not None:
-            steps = PartedSteps(steps.parts, inverse.ravel())
-        elif dense_steps:
-            steps = DenseSteps(_exponentials(system, chunk, operators)[inverse.ravel()])
-        yield first, wholes, steps
+        which = inverse.ravel()
+        yield (first, _transitions(system, whole, operators, which),
+               _transitions(system, chunk, operators, which, dense_steps))
 
 
 def _by_chunks(system: PiecewiseLinearSystem, rows: np.ndarray, where: np.ndarray,
                samples: int, observer=None) -> PeriodicResponse:
     """:func:`periodic_response` where a stack of every distinct piece's matrix would be large (above
     :data:`LEAN_ROUTE_BYTES`): the monodromy as the product of the whole pieces' transitions, one after another
-    (:func:`chunked_transitions`: the same N − 1 products as the block route's tree; the observer takes the
-    transition from the period's start to each piece's start on the way, at no cost), then the orbit's
-    state at every sub-step by stepping z₀ through the sub-step transitions one after another (N·s products of a
-    matrix with a vector, O(m²) each). Exact as the block route (the whole transitions are e^{A_j h_j} itself
-    instead of the power of the sub-step's, and the products come in another order: both differ at the unit
-    roundoff), holding a chunk of matrices at a time instead of several stacks of all of them. The sub-steps held
-    as their parts (O(q·m) a piece) are formed in the first pass and kept; otherwise a second pass forms their
-    matrices chunk by chunk."""
+    (:func:`chunked_transitions`: the same N − 1 products as the block route's tree, each through the parts of the
+    piece's exponential where it has them; the observer takes the transition from the period's start to each
+    piece's start on the way, at no cost), then the orbit's state at every sub-step by stepping z₀ through the
+    sub-step transitions one after another (N·s products with a vector, O(m²) each). Exact as the block route (the
+    whole transitions are e^{A_j h_j} itself instead of the power of the sub-step's, and the products come in
+    another order: both differ at the unit roundoff), holding a chunk of matrices at a time at most. The sub-steps
+    held as their parts are formed in the first pass and kept; otherwise a second pass forms their matrices chunk by
+    chunk."""
     size = 2 * system.size + 1
     total = np.eye(size)
     kept: list | None = []
@@ -363,14 +365,11 @@ def _by_chunks(system: PiecewiseLinearSystem, rows: np.ndarray, where: np.ndarra
         kept = None if kept is None or steps is None else [*kept, (first, steps)]
         if kept is not None and observer is not None and fed == first:  # it takes each piece's start transition
             starts = np.empty((len(wholes), size, size))
-            for index, whole in enumerate(wholes):
-                starts[index] = total
-                total = whole @ total
-            observer(first, steps, wholes, starts)
+            total = wholes.chain(total, starts)
+            observer(first, steps, starts, total)
             fed = first + len(steps)
         else:
-            for whole in wholes:
-                total = whole @ total
+            total = wholes.chain(total)
     multipliers, initial = floquet(total)
     n, pieces = system.size, where.size
     states = np.empty((pieces * samples + 1, 2 * n + 1))

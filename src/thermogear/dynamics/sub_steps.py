@@ -1,4 +1,5 @@
-"""The sub-step transitions e^{A_j h_j/s} of a chunk of pieces, as the periodic solvers step states through them:
+"""The transitions of a chunk of pieces (sub-steps e^{A_j h_j/s} or whole pieces), as the periodic solvers step
+states and products through them:
 either their matrices, or (the rank-update route) the parts they are made of, which act on a state at O(m² + q·m)
 without the (m, m) matrix of each piece being formed and held (:class:`~thermogear.dynamics.batched_exponential.
 RankUpdateExponentials`). Both give the same transitions to the unit roundoff: the parts add the shared
@@ -14,26 +15,37 @@ __all__ = ["DenseSteps", "PartedSteps", "as_steps"]
 
 
 class DenseSteps:
-    """The sub-step transitions of a chunk as a (c, m, m) stack of matrices."""
+    """The transitions of a chunk's pieces as matrices: ``matrices`` (k, m, m) of its distinct pieces, ``which`` (c,)
+    each piece's (None: one matrix per piece, in order)."""
 
-    def __init__(self, matrices: np.ndarray):
+    def __init__(self, matrices: np.ndarray, which: np.ndarray | None = None):
         self.matrices = matrices
+        self.which = np.arange(matrices.shape[0]) if which is None else which
 
     def __len__(self) -> int:
-        return self.matrices.shape[0]
+        return self.which.size
 
     def walk(self, index: int, state: np.ndarray, count: int, out: np.ndarray) -> np.ndarray:
-        """Write the states before each of ``count`` sub-steps of piece ``index`` from ``state`` into ``out``
-        (count, m); return the state after them."""
-        step = self.matrices[index]
+        """Write the states before each of ``count`` steps of piece ``index`` from ``state`` into ``out`` (count, m);
+        return the state after them."""
+        step = self.matrices[self.which[index]]
         for sample in range(count):
             out[sample] = state
             state = step @ state
         return state
 
     def apply_left(self, index: int, rows: np.ndarray) -> np.ndarray:
-        """rows·e^{A_j h_j/s} of piece ``index`` for rows (r, m)."""
-        return rows @ self.matrices[index]
+        """rows·X_j of piece ``index`` for rows (r, m)."""
+        return rows @ self.matrices[self.which[index]]
+
+    def chain(self, total: np.ndarray, starts: np.ndarray | None = None) -> np.ndarray:
+        """X_{c−1}···X₀·``total`` (m, m), the pieces one after another; ``starts`` (c, m, m) receives the product
+        before each piece."""
+        for index in range(len(self)):
+            if starts is not None:
+                starts[index] = total
+            total = self.matrices[self.which[index]] @ total
+        return total
 
 
 class PartedSteps:
@@ -58,8 +70,21 @@ class PartedSteps:
         return state
 
     def apply_left(self, index: int, rows: np.ndarray) -> np.ndarray:
-        """rows·e^{A_j h_j/s} of piece ``index`` for rows (r, m)."""
+        """rows·X_j of piece ``index`` for rows (r, m)."""
         return self.parts.apply_left(self.which[index], rows)
+
+    def chain(self, total: np.ndarray, starts: np.ndarray | None = None) -> np.ndarray:
+        """As :meth:`DenseSteps.chain`, in the balanced coordinates D·T of the parts: (E + L_j R_j)·B per piece,
+        O(m³ + q·m²), without forming the piece's matrix."""
+        parts, scale = self.parts, self.parts.scale[:, None]
+        balanced = scale * total
+        for index in range(len(self)):
+            if starts is not None:
+                starts[index] = balanced / scale
+            distinct = self.which[index]
+            balanced = (parts.exponentials[parts.which[distinct]] @ balanced
+                        + parts.left[distinct] @ (parts.right[distinct] @ balanced))
+        return balanced / scale
 
 
 def as_steps(steps) -> DenseSteps | PartedSteps:
