@@ -112,7 +112,7 @@ class RankUpdateExponentials:
     is D⁻¹·(E_{which[j]} + L_j·R_j)^(2^squarings)·D, with ``exponentials`` E (k, m, m) the shared e^{t X₀} of the k
     distinct scaled times (balanced), ``which`` (N,), ``left`` L (N, m, q), ``right`` R (N, q, m) the rank-q
     update of each piece (module docstring) and ``scale`` the diagonal of D (m,). Without squarings a piece acts on
-    a vector at O(m² + q·m) without its matrix being formed (:meth:`apply_left`; :mod:`~thermogear.dynamics.sub_steps`)."""
+    a vector at O(m² + q·m) without its matrix being formed (:mod:`~thermogear.dynamics.sub_steps`)."""
 
     exponentials: np.ndarray
     which: np.ndarray
@@ -132,17 +132,6 @@ class RankUpdateExponentials:
             result = result @ result
         result *= self.scale[None, :] / self.scale[:, None]
         return result
-
-    def apply_left(self, index: int, rows: np.ndarray) -> np.ndarray:
-        """rows·e^{X_j} of piece j = ``index`` for rows (r, m) (no squarings)."""
-        self._unsquared()
-        scaled = rows / self.scale
-        return (scaled @ self.exponentials[self.which[index]] + (scaled @ self.left[index]) @ self.right[index]) \
-            * self.scale
-
-    def _unsquared(self) -> None:
-        if self.squarings:
-            raise ProblemError("squarings", self.squarings, "0", "a piece acts through its parts only unsquared")
 
 
 def expm_of_rank_updates(base: np.ndarray, left: np.ndarray, right: np.ndarray, times: np.ndarray,

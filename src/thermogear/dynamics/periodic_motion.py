@@ -81,12 +81,13 @@ class MotionProjector:
             end = wholes.chain(self._transition, starts)
         if len(starts) != len(steps):
             raise ProblemError("starts", len(starts), f"= {len(steps)}", "one start transition per piece")
-        for offset in range(len(steps)):
-            current = self._augmented
-            for sample in range(self.samples):
-                self._transfer[first + offset, sample] = current @ starts[offset]
-                current = steps.apply_left(offset, current)
-        self._transition, self._fed = end, first + len(steps)
+        count = len(steps)
+        current = np.broadcast_to(self._augmented, (count, *self._augmented.shape))
+        for sample in range(self.samples):  # every piece of the chunk at once
+            self._transfer[first:first + count, sample] = current @ starts
+            if sample + 1 < self.samples:
+                current = steps.apply_left_all(current)
+        self._transition, self._fed = end, first + count
 
     def projections(self, state: np.ndarray, periods: int) -> np.ndarray:
         """The (P·N·s + 1, r) functionals of the motion from ``state`` over ``periods`` periods
@@ -95,9 +96,10 @@ class MotionProjector:
             raise ProblemError("pieces", self._fed, f"all {self._where.size} fed", "the motion needs every piece")
         count, size = self.rows.shape[0], self._transfer.shape[-1]
         z = np.append(np.asarray(state, dtype=float), 1.0)
-        values = np.empty((int(periods), self._where.size * self.samples, count))
-        flat = self._transfer.reshape(self._where.size * self.samples, count, size)
+        starts = np.empty((size, int(periods)))  # the state at each period's start, then all periods at once
         for period in range(int(periods)):
-            values[period] = flat @ z
+            starts[:, period] = z
             z = self._transition @ z
+        flat = self._transfer.reshape(self._where.size * self.samples * count, size)
+        values = (flat @ starts).reshape(self._where.size * self.samples, count, int(periods)).transpose(2, 0, 1)
         return np.vstack([values.reshape(-1, count), (self._augmented @ z)[None]])

@@ -34,9 +34,9 @@ class DenseSteps:
             state = step @ state
         return state
 
-    def apply_left(self, index: int, rows: np.ndarray) -> np.ndarray:
-        """rows·X_j of piece ``index`` for rows (r, m)."""
-        return rows @ self.matrices[self.which[index]]
+    def apply_left_all(self, rows: np.ndarray) -> np.ndarray:
+        """rows_j·X_j of every piece j of the chunk at once, for rows (c, r, m)."""
+        return rows @ self.matrices[self.which]
 
     def chain(self, total: np.ndarray, starts: np.ndarray | None = None) -> np.ndarray:
         """X_{c−1}···X₀·``total`` (m, m), the pieces one after another; ``starts`` (c, m, m) receives the product
@@ -69,9 +69,16 @@ class PartedSteps:
             state = scaled / parts.scale
         return state
 
-    def apply_left(self, index: int, rows: np.ndarray) -> np.ndarray:
-        """rows·X_j of piece ``index`` for rows (r, m)."""
-        return self.parts.apply_left(self.which[index], rows)
+    def apply_left_all(self, rows: np.ndarray) -> np.ndarray:
+        """rows_j·X_j of every piece j of the chunk at once, for rows (c, r, m): D(rows D⁻¹)(E + L_j R_j)D⁻¹…, the
+        shared exponential as one product where the chunk's pieces share one width."""
+        parts, distinct = self.parts, self.which
+        scaled = rows / parts.scale
+        if parts.exponentials.shape[0] == 1:
+            shared = (scaled.reshape(-1, scaled.shape[-1]) @ parts.exponentials[0]).reshape(scaled.shape)
+        else:
+            shared = scaled @ parts.exponentials[parts.which[distinct]]
+        return (shared + (scaled @ parts.left[distinct]) @ parts.right[distinct]) * parts.scale
 
     def chain(self, total: np.ndarray, starts: np.ndarray | None = None) -> np.ndarray:
         """As :meth:`DenseSteps.chain`, in the balanced coordinates D·T of the parts: (E + L_j R_j)·B per piece,
