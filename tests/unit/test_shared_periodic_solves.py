@@ -11,28 +11,15 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from test_backlash_ndof import _chain
 
 from thermogear.case import case_from_document
 from thermogear.drivetrain.case_model import SAMPLES_PER_PIECE, case_drivetrain
 from thermogear.drivetrain.response import drivetrain_periodic_response
-from thermogear.dynamics.periodic_ndof import PiecewiseLinearSystem, periodic_response
+from thermogear.dynamics.periodic_ndof import periodic_response
 from thermogear.dynamics.periodic_solves import PeriodicSolves, same_system
 
 USER_DRIVETRAIN = Path(__file__).resolve().parents[1] / "data" / "user_drivetrain.toml"
-
-
-def _chain(size: int = 5) -> PiecewiseLinearSystem:
-    rng = np.random.default_rng(7)
-    stiffness = np.diag(rng.uniform(1e8, 2e8, size)) * 2
-    for i in range(size - 1):
-        stiffness[i, i + 1] = stiffness[i + 1, i] = -1e8
-    mass = np.diag(rng.uniform(0.5, 1.5, size))
-    w = np.zeros(size)
-    w[[0, 1]] = [1.0, -1.0]
-    return PiecewiseLinearSystem(mass=mass, stiffness=stiffness, damping=100.0 * mass + 1e-6 * stiffness,
-                                 force=2000.0 * w, nodes=[0.0, 4e-4, 1e-3], stiffness_pattern=np.outer(w, w),
-                                 stiffness_factor=[3e8, 2e8], damping_pattern=np.outer(w, w),
-                                 damping_factor=[300.0, 200.0], force_pattern=w, force_factor=[10.0, -5.0])
 
 
 def test_a_system_equal_bit_for_bit_is_solved_once_and_one_bit_off_afresh():
