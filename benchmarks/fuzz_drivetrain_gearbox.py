@@ -5,9 +5,11 @@ hangs (past the timeout), and check ≠ run (check accepts a case the command th
 case `run` computes; a gearbox too hot for the mesh is refused by check, for `run`, and reported by `gearbox` with
 its flags, by design).
 
-Run: python benchmarks/fuzz_drivetrain_gearbox.py [--cases N] [--seed S] [--timeout SECONDS]
+Run: python benchmarks/fuzz_drivetrain_gearbox.py [--cases N] [--seed S] [--timeout SECONDS] [--shard K/N]
 Prints one line per case and writes benchmarks/results/fuzz_drivetrain_gearbox.json (the cases that failed are
-kept as TOML under benchmarks/results/fuzz_failures/).
+kept as TOML under benchmarks/results/fuzz_failures/). ``--shard K/N`` judges only the cases whose number is K
+modulo N (every case is still drawn, so the set is the same) and writes ``…_shardKofN.json``: N shards started side
+by side on a many-core machine cover the set; ``--combine`` then sums the shard files of the same seed and count.
 
 The generator (:func:`drivetrain_case`, :func:`gearbox_case`) starts from tests/data/user_drivetrain.toml and
 tests/data/gearbox/fzg_gearbox.toml and draws, from one ``numpy.random.Generator``: gear size and ratio, face
@@ -140,7 +142,7 @@ def judge(kind: str, path: Path, timeout: float) -> dict:
             "hang": check["hang"] or ran["hang"], "check_differs": bool(disagree)}
 
 
-def main(cases: int, seed: int, timeout: float) -> dict:
+def main(cases: int, seed: int, timeout: float, shard: tuple[int, int] = (0, 1)) -> dict:
     import tomli_w
 
     import tempfile
@@ -152,6 +154,8 @@ def main(cases: int, seed: int, timeout: float) -> dict:
     for number in range(cases):
         kind = "drivetrain" if number % 2 == 0 else "gearbox"
         document = drivetrain_case(rng) if kind == "drivetrain" else gearbox_case(rng)
+        if number % shard[1] != shard[0]:
+            continue
         path = work / f"case_{number:03d}.toml"
         path.write_text(tomli_w.dumps(document), encoding="utf-8")
         verdict = judge(kind, path, timeout)
@@ -165,17 +169,42 @@ def main(cases: int, seed: int, timeout: float) -> dict:
             "stderr_tail": verdict["command"]["stderr"][-300:] if bad else ""})
         print(f"{number:3d} {kind:10s} check {verdict['check']['status']} command {verdict['command']['status']} "
               f"{verdict['command']['seconds']:6.1f} s{'  FAILED' if bad else ''}", flush=True)
-    summary = {"seed": seed, "cases": cases, "timeout_s": timeout,
+    return _summary(seed, cases, timeout, rows)
+
+
+def _summary(seed: int, cases: int, timeout: float, rows: list[dict]) -> dict:
+    summary = {"seed": seed, "cases": cases, "judged": len(rows), "timeout_s": timeout,
                "tracebacks": sum(row["traceback"] for row in rows), "hangs": sum(row["hang"] for row in rows),
-               "check_differs": sum(row["check_differs"] for row in rows), "rows": rows}
-    print(f"{cases} cases: {summary['tracebacks']} tracebacks, {summary['hangs']} hangs, "
+               "check_differs": sum(row["check_differs"] for row in rows),
+               "longest_command_s": max((row["command_seconds"] for row in rows), default=0.0), "rows": rows}
+    print(f"{len(rows)} of {cases} cases: {summary['tracebacks']} tracebacks, {summary['hangs']} hangs, "
           f"{summary['check_differs']} check ≠ run")
     return summary
+
+
+def combine(seed: int, cases: int) -> dict:
+    """The summary of every shard file of this seed and count, as one run of the whole set would give it."""
+    shards = [json.loads(path.read_text(encoding="utf-8"))
+              for path in sorted(RESULTS.glob("fuzz_drivetrain_gearbox_shard*.json"))]
+    shards = [shard for shard in shards if shard["seed"] == seed and shard["cases"] == cases]
+    rows = sorted((row for shard in shards for row in shard["rows"]), key=lambda row: row["case"])
+    if [row["case"] for row in rows] != list(range(cases)):
+        raise SystemExit(f"the shard files of seed {seed} cover {len(rows)} of the {cases} cases")
+    return _summary(seed, cases, max(shard["timeout_s"] for shard in shards), rows)
 
 
 if __name__ == "__main__":
     def _option(name: str, default: float) -> float:
         return float(sys.argv[sys.argv.index(name) + 1]) if name in sys.argv else default
 
-    result = main(int(_option("--cases", 100)), int(_option("--seed", 36)), _option("--timeout", 300.0))
-    (RESULTS / "fuzz_drivetrain_gearbox.json").write_text(json.dumps(result, indent=2), encoding="utf-8")
+    cases, seed = int(_option("--cases", 100)), int(_option("--seed", 36))
+    if "--combine" in sys.argv:
+        result, name = combine(seed, cases), "fuzz_drivetrain_gearbox.json"
+    elif "--shard" in sys.argv:
+        part, count = (int(value) for value in sys.argv[sys.argv.index("--shard") + 1].split("/"))
+        result = main(cases, seed, _option("--timeout", 300.0), (part, count))
+        name = f"fuzz_drivetrain_gearbox_shard{part}of{count}.json"
+    else:
+        result, name = main(cases, seed, _option("--timeout", 300.0)), "fuzz_drivetrain_gearbox.json"
+    RESULTS.mkdir(exist_ok=True)
+    (RESULTS / name).write_text(json.dumps(result, indent=2), encoding="utf-8")

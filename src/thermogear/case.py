@@ -8,6 +8,7 @@ the reason.
 from __future__ import annotations
 
 import functools
+import inspect
 import tomllib
 import weakref
 from dataclasses import dataclass, field
@@ -24,6 +25,7 @@ from thermogear.case_geometry import gear_pair_of, helical_pair_of
 from thermogear.case_helical import check_face_gradient, check_helical_case, transverse_gears_section
 from thermogear.case_keys import warn_keys_without_effect
 from thermogear.case_limits import check_model_limits
+from thermogear.case_pieces import call_with_pieces
 from thermogear.composition import CASE_CHECKS, TEMPERATURE_MODELS, builtin, resolve
 from thermogear.errors import CaseError, closest_key
 from thermogear.fzg import fzg_load_stage_torque
@@ -137,7 +139,10 @@ def _section_default(name: str) -> dict[str, Any]:
 
 
 def cached_per_case(function):
-    """Memoise a function of a Case alone on that Case instance.
+    """A resolver of a case, memoised on that Case instance: ``function``'s parameters name the pieces of the case it
+    reads (:mod:`thermogear.case_pieces`: ``lubricant``, ``gear_pair``, a derived piece such as ``oil``; ``case``
+    the whole case), and the memoised resolver is called with the case (``resolver(case)``), which it reads in one
+    place: here.
 
     Derived components of a case (its temperature field, lubricant, X_te) are pure functions of the case and are
     asked for by several stages of one operating point; like the stiffness tables they are computed once per case.
@@ -153,13 +158,15 @@ def cached_per_case(function):
         entry = results.get(key)
         if entry is None or entry[0]() is not case:
             with warning_scope.recorded() as caught:
-                value = function(case)
+                value = call_with_pieces(function, case)
             entry = (weakref.ref(case, lambda _, key=key: results.pop(key, None)), value, warning_scope.kept(caught))
             results[key] = entry
         warning_scope.raise_again(entry[2])
         return entry[1]
 
     cached.cache_clear = results.clear
+    # called with the case: its signature is (case); the resolver of the pieces stays ``cached.__wrapped__``
+    cached.__signature__ = inspect.Signature([inspect.Parameter("case", inspect.Parameter.POSITIONAL_OR_KEYWORD)])
     return cached
 
 
@@ -204,13 +211,14 @@ def load_case(name_or_path: str | Path) -> Case:
 
 
 # --------------------------------------------------------------------------------------------- load-time checks
-CaseCheck = Callable[["Case"], None]
+CaseCheck = Callable[..., None]  # its parameters name pieces of the case (thermogear.case_pieces)
 _CASE_CHECKS: list[CaseCheck] = []
 
 
 def register_case_check(check: CaseCheck) -> CaseCheck:
-    """Add a check that every loaded case must pass (it raises CaseError). Returns the check, so it can be used as
-    a decorator. The built-in checks (temperatures, X_te, then those named in :mod:`thermogear.composition`) run
+    """Add a check that every loaded case must pass (it raises CaseError). The check receives the pieces of the
+    case its parameters name (:mod:`thermogear.case_pieces`: ``check(gear_pair, operating_point)``; ``check(case)``
+    the whole case). Returns the check, so it can be used as a decorator. The built-in checks (temperatures, X_te, then those named in :mod:`thermogear.composition`) run
     first; registered ones after, in order."""
     if not callable(check):
         raise TypeError("a case check must be callable: check(case) -> None")
@@ -234,7 +242,7 @@ def check_case(case: "Case") -> None:
                        case.dynamics.mesh, case.gears_input, case.document.get("operating", {}))
     builtin_checks = [check for check in map(resolve, CASE_CHECKS) if check is not None]
     for check in builtin_checks + [check for check in _CASE_CHECKS if check not in builtin_checks]:
-        check(case)
+        call_with_pieces(check, case)  # each receives the pieces of the case it names (thermogear.case_pieces)
 
 
 def _check_temperature_field(section: TemperatureSection, directory: Path | None, pair: GearPair,
@@ -346,7 +354,7 @@ def case_from_document(document: dict[str, Any], source: str = "<memory>") -> Ca
         if resolver is None:
             raise CaseError("temperature.model", name, "a registered model (its module is not installed)",
                             "this temperature model is predicted by a model that is not loaded")
-        case = resolver(case)
+        case = call_with_pieces(resolver, case)
     check_case(case)
     warn_keys_without_effect(case.thermal, case.dynamics)
     return case

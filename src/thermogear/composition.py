@@ -20,30 +20,43 @@ from __future__ import annotations
 import importlib
 from collections.abc import Callable
 
-#: ``[temperature] model`` name → the provider of its tooth temperature field, ``provider(case) -> TemperatureField``.
+#: The derived pieces of a case a check or provider may ask for by name (:mod:`thermogear.case_pieces`): name →
+#: (its resolver, the Case field it needs: None where that section is absent, or None where every case has it).
+#: A resolver's own parameters are pieces too.
+CASE_PIECES: dict[str, tuple[str, str | None]] = {
+    "oil": ("thermogear.lubricant:lubricant_from_case", None),
+    "gearbox_model": ("thermogear.gearbox.case_model:gearbox_model_from_case", "gearbox"),
+    "fem_inputs": ("thermogear.fem.inputs:fem_inputs", None),
+    "temperature_field": ("thermogear.temperature_source:temperature_field_from_case", None),
+}
+
+#: Every check and provider below receives the pieces of the case its parameters name
+#: (:func:`thermogear.case_pieces.call_with_pieces`): ``provider(fem_inputs)``, ``check(damping, oil)``.
+
+#: ``[temperature] model`` name → the provider of its tooth temperature field, ``provider(pieces) -> TemperatureField``.
 TEMPERATURE_PROVIDERS: dict[str, str] = {
     "fem": "thermogear.fem.provider:fem_temperature_field",
     "gearbox": "thermogear.gearbox.provider:gearbox_temperature_field",
 }
 
-#: ``[thermal] x_te_source`` name → the provider of X_te, ``provider(case) -> float``.
+#: ``[thermal] x_te_source`` name → the provider of X_te, ``provider(pieces) -> float``.
 X_TE_PROVIDERS: dict[str, str] = {
     "fem": "thermogear.fem.provider:fem_x_te",
 }
 
 #: ``[temperature] model`` name → the model that predicts the case's oil and housing temperatures at load time,
-#: ``resolver(case) -> Case``.
+#: ``resolver(case) -> Case`` (a resolver: it writes a new case).
 TEMPERATURE_MODELS: dict[str, str] = {
     "gearbox": "thermogear.gearbox.case_model:with_predicted_temperatures",
 }
 
 #: ``[temperature] model`` name → the provider of the drivetrain's shaft and bearing-ring temperatures,
-#: ``provider(case) -> thermogear.drivetrain.heat_source.DrivetrainHeat`` (none: the drivetrain's own default).
+#: ``provider(pieces) -> thermogear.drivetrain.heat_source.DrivetrainHeat`` (none: the drivetrain's own default).
 DRIVETRAIN_HEAT: dict[str, str] = {
     "gearbox": "thermogear.gearbox.drivetrain_coupling:network_drivetrain_heat",
 }
 
-#: Load-time checks every case passes (after the built-in ones), ``check(case) -> None``.
+#: Load-time checks every case passes (after the built-in ones), ``check(pieces) -> None``.
 CASE_CHECKS: tuple[str, ...] = (
     "thermogear.gearbox.case_model:check_gearbox_section",
     "thermogear.mesh.table_file:check_mesh_table",
@@ -73,4 +86,4 @@ def builtin(table: dict[str, str], name: str) -> Callable | None:
     return None if target is None else resolve(target)
 
 
-__all__ = ["CASE_CHECKS", "DRIVETRAIN_HEAT", "TEMPERATURE_MODELS", "TEMPERATURE_PROVIDERS", "X_TE_PROVIDERS", "builtin", "resolve"]
+__all__ = ["CASE_CHECKS", "CASE_PIECES", "DRIVETRAIN_HEAT", "TEMPERATURE_MODELS", "TEMPERATURE_PROVIDERS", "X_TE_PROVIDERS", "builtin", "resolve"]

@@ -37,12 +37,14 @@ model (the dynamics relays the error).
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Literal
 
 import numpy as np
 
 from thermogear.errors import CaseError
+from thermogear.registry import registered
 from thermogear.friction import friction_validity_warnings
 from thermogear.friction_models import DEFAULT_DAMPING_FRICTION_MODEL, FRICTION_MODELS, FrictionLaw, PitchContact
 from thermogear.mesh.model_names import MODELS
@@ -63,10 +65,51 @@ def friction_damping_exponents(law: FrictionLaw) -> tuple[float, float]:
 
 
 Rule = Literal["paper", "parallel"]
-RULES = ("paper", "parallel")
+
+
+def _mean_of_pairs(total: np.ndarray, count: np.ndarray) -> np.ndarray:
+    """The arithmetic mean of the pairs in contact (0 where none is)."""
+    return np.divide(total, count, out=np.zeros_like(total), where=count > 0)
+
+
+def _sum_of_pairs(total: np.ndarray, count: np.ndarray) -> np.ndarray:
+    """The sum of the pairs in contact: dampers in parallel."""
+    return total
+
+
+@dataclass(frozen=True)
+class MeshDampingRule:
+    """How the dampings of the pairs in contact combine into the mesh damping c(τ): ``name`` (the ``[damping]
+    rule`` value), ``combine(total, count)`` of the summed dampings [N·s/m] and the number of pairs in contact per
+    position, and whether it is the rule of Luo & Li (2020) (``published``: their mean dampings are of this rule)."""
+
+    name: str
+    combine: Callable[[np.ndarray, np.ndarray], np.ndarray]
+    published: bool
+
+
+#: Every mesh-damping rule by name (the first the default): the one place the names are compared.
+DAMPING_RULES: dict[str, MeshDampingRule] = {rule.name: rule for rule in (
+    MeshDampingRule("paper", _mean_of_pairs, published=True),  # Luo & Li Fig. 7
+    MeshDampingRule("parallel", _sum_of_pairs, published=False))}
+RULES = tuple(DAMPING_RULES)
+
+
+def damping_rule(name: str) -> MeshDampingRule:
+    """The mesh-damping rule called ``name``; a CaseError naming ``damping.rule`` for any other."""
+    return registered(DAMPING_RULES, name, "damping.rule", "unknown mesh-damping rule")
 
 
 # ---------------------------------------------------------------------------------------------- functions
+def _checked(key: str, value, positive: bool, reason: str) -> np.ndarray:
+    """``value`` as a float array, every element > 0 (``positive``) or >= 0 (NaN fails both); CaseError naming
+    ``key``, the smallest value and ``reason`` otherwise."""
+    array = np.asarray(value, dtype=float)
+    if np.any(~(array > 0.0 if positive else array >= 0.0)):
+        raise CaseError(key, float(np.min(array)), "> 0" if positive else ">= 0", reason)
+    return array
+
+
 def coulomb_equivalent_damping(friction_force, circular_frequency, amplitude):
     """Viscous damping that dissipates per cycle what Coulomb friction does, c = 4F/(π·ω·B) [N·s/m].
 
@@ -74,16 +117,10 @@ def coulomb_equivalent_damping(friction_force, circular_frequency, amplitude):
     viscous damping of Coulomb friction).
     friction_force F [N], circular_frequency ω [rad/s], amplitude B [m].
     """
-    force = np.asarray(friction_force, dtype=float)
-    frequency = np.asarray(circular_frequency, dtype=float)
-    amplitude = np.asarray(amplitude, dtype=float)
-    if np.any(~(frequency > 0.0)):
-        raise CaseError("operating.speed_rpm", float(np.min(frequency)), "> 0",
-                        "the equivalent viscous damping of Coulomb friction needs motion (ω > 0)")
-    if np.any(~(amplitude > 0.0)):
-        raise CaseError("amplitude", float(np.min(amplitude)), "> 0", "the vibration amplitude must be positive")
-    if np.any(~(force >= 0.0)):
-        raise CaseError("friction_force", float(np.min(force)), ">= 0", "a friction force magnitude")
+    frequency = _checked("operating.speed_rpm", circular_frequency, True,
+                         "the equivalent viscous damping of Coulomb friction needs motion (ω > 0)")
+    amplitude = _checked("amplitude", amplitude, True, "the vibration amplitude must be positive")
+    force = _checked("friction_force", friction_force, False, "a friction force magnitude")
     return 4.0 * force / (math.pi * frequency * amplitude)
 
 
@@ -94,16 +131,10 @@ def friction_damping(pair_stiffness, friction_coefficient, mesh_circular_frequen
     width gives the total damping), friction_coefficient μ [–], mesh_circular_frequency ω = 2π·z1·n1/60 [rad/s].
     With μ = 0.12·X^0.25 and ω in rpm this is the paper's c = 1.459·k·X^0.25/(z1·n1).
     """
-    stiffness = np.asarray(pair_stiffness, dtype=float)
-    friction = np.asarray(friction_coefficient, dtype=float)
-    frequency = np.asarray(mesh_circular_frequency, dtype=float)
-    if np.any(~(frequency > 0.0)):
-        raise CaseError("operating.speed_rpm", float(np.min(frequency)), "> 0",
-                        "the friction damping of Eq. 28 is defined for a running mesh only")
-    if np.any(~(stiffness >= 0.0)):
-        raise CaseError("pair_stiffness", float(np.min(stiffness)), ">= 0", "a stiffness cannot be negative")
-    if np.any(~(friction >= 0.0)):
-        raise CaseError("friction_coefficient", float(np.min(friction)), ">= 0", "a friction coefficient")
+    frequency = _checked("operating.speed_rpm", mesh_circular_frequency, True,
+                         "the friction damping of Eq. 28 is defined for a running mesh only")
+    stiffness = _checked("pair_stiffness", pair_stiffness, False, "a stiffness cannot be negative")
+    friction = _checked("friction_coefficient", friction_coefficient, False, "a friction coefficient")
     return 4.0 * friction * stiffness / (math.pi * frequency)
 
 
@@ -126,12 +157,7 @@ def mesh_damping(per_pair_damping, in_contact, rule: Rule = "paper"):
     if damping.shape != contact.shape:
         raise ValueError(f"mesh_damping: per_pair_damping {damping.shape} and in_contact {contact.shape} differ")
     total = np.where(contact, damping, 0.0).sum(axis=0)
-    if rule == "parallel":
-        return total
-    if rule == "paper":
-        count = contact.sum(axis=0)
-        return np.divide(total, count, out=np.zeros_like(total), where=count > 0)
-    raise CaseError("damping.rule", rule, " | ".join(RULES), "unknown mesh-damping rule")
+    return damping_rule(rule).combine(total, contact.sum(axis=0))
 
 
 def contact_region_means(mesh_values, contact_count, weights=None) -> dict[str, float]:
@@ -198,5 +224,5 @@ class PairDamping:
     unit_load: np.ndarray
 
 
-__all__ = ["FRICTION_DAMPING_LOAD_EXPONENT", "FRICTION_DAMPING_SPEED_EXPONENT", "MODELS", "RULES", "PairDamping", "contact_region_means", "coulomb_equivalent_damping", "friction_damping",
+__all__ = ["FRICTION_DAMPING_LOAD_EXPONENT", "FRICTION_DAMPING_SPEED_EXPONENT", "DAMPING_RULES", "MODELS", "MeshDampingRule", "RULES", "PairDamping", "contact_region_means", "coulomb_equivalent_damping", "damping_rule", "friction_damping",
            "friction_damping_exponents", "friction_pair_damping", "mesh_circular_frequency", "mesh_damping"]

@@ -14,7 +14,21 @@ class ThermogearError(Exception):
     """Base class of every error thermogear raises on purpose."""
 
 
-class CaseError(ThermogearError, ValueError):
+class InputError(ThermogearError, ValueError):
+    """An input refused: the message names it, shows the value given, the allowed range or set in words and the
+    reason (the physics or the model limit behind it). The base of :class:`CaseError` and :class:`ProblemError`,
+    which say what the name is; ``prefix`` opens the message."""
+
+    prefix = ""
+
+    def __init__(self, name: str, value: object, allowed: str, reason: str) -> None:
+        self.value = value
+        self.allowed = allowed
+        self.reason = reason
+        super().__init__(f"{self.prefix}{name} = {shown_value(value)}: allowed {allowed}; {reason}")
+
+
+class CaseError(InputError):
     """A case (file or API input) that is invalid or outside what the model supports.
 
     Parameters
@@ -31,10 +45,7 @@ class CaseError(ThermogearError, ValueError):
 
     def __init__(self, key: str, value: object, allowed: str, reason: str) -> None:
         self.key = key
-        self.value = value
-        self.allowed = allowed
-        self.reason = reason
-        super().__init__(f"{key} = {shown_value(value)}: allowed {allowed}; {reason}")
+        super().__init__(key, value, allowed, reason)
 
 
 #: Longest representation of a value an error message shows [characters]: a 5000-character path or a whole
@@ -55,18 +66,17 @@ class JammingError(CaseError):
     marks such points (``jammed``) and computes the others instead of refusing the whole grid."""
 
 
-class ProblemError(ThermogearError, ValueError):
+class ProblemError(InputError):
     """An invalid input to a solver: the arrays a mesh model hands over, or what a user passes to a solver
     directly. It names the solver's quantity (``"nodes"``, ``"stiffness"``), not a case-file key: a solver
     knows nothing of gears or case files.
     """
 
+    prefix = "solver input "
+
     def __init__(self, quantity: str, value: object, allowed: str, reason: str) -> None:
         self.quantity = quantity
-        self.value = value
-        self.allowed = allowed
-        self.reason = reason
-        super().__init__(f"solver input {quantity} = {shown_value(value)}: allowed {allowed}; {reason}")
+        super().__init__(quantity, value, allowed, reason)
 
 
 class ModelLimitError(ThermogearError, RuntimeError):

@@ -22,7 +22,7 @@ from thermogear.errors import CaseError, ExtrapolationWarning, ModelAssumptionWa
 from thermogear.schema.lubricant import check_viscosity_points
 
 if TYPE_CHECKING:  # pragma: no cover
-    from thermogear.case import Case
+    from thermogear.schema.lubricant import LubricantSection
 
 #: Constant of the Walther double logarithm, ν + 0.7 with ν in mm²/s (ASTM D341, valid for ν ≥ 2 mm²/s).
 WALTHER_OFFSET_CST = 0.7
@@ -206,10 +206,12 @@ def builtin_lubricant(name: str) -> Lubricant:
 
 
 @cached_per_case
-def lubricant_from_case(case: "Case") -> Lubricant:
-    """The oil a case selects: a built-in one (optionally with the case's density or base oil), or its own
-    ``viscosity_points``."""
-    section = case.lubricant
+def lubricant_from_case(lubricant: "LubricantSection", source: str) -> Lubricant:
+    """The oil a case selects (its ``[lubricant]`` section; ``source``: the case file or parameter set, named in the
+    oil's source): a built-in one (optionally with the case's density or
+    base oil), or its own ``viscosity_points``. Called with the case (``lubricant_from_case(case)``, memoised per
+    case, :func:`thermogear.case.cached_per_case`)."""
+    section = lubricant
     if section.viscosity_points is None:
         oil = builtin_lubricant(section.name)
         changes = {}
@@ -233,7 +235,7 @@ def lubricant_from_case(case: "Case") -> Lubricant:
                                  density_reference_c=section.density_reference_c,
                                  density_coefficient=section.density_coefficient_per_k,
                                  base_oil=section.base_oil or "mineral",
-                                 source=f"case file {case.source} [lubricant]")
+                                 source=f"case file {source} [lubricant]")
 
 
 __all__ = ["BASE_OIL_DENSITY", "LUBRICANT_FACTORS", "Lubricant", "builtin_lubricant", "builtin_lubricant_names",

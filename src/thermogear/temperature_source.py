@@ -22,6 +22,7 @@ from typing import TYPE_CHECKING
 from thermogear.temperature_kinds import temperature_source
 from thermogear import warning_scope
 from thermogear.case import cached_per_case
+from thermogear.case_pieces import call_with_pieces
 from thermogear.composition import TEMPERATURE_PROVIDERS, builtin
 from thermogear.errors import ModelAssumptionWarning, ThermogearError
 from thermogear.thermal_model_rules import thermal_model_rules
@@ -38,13 +39,14 @@ if TYPE_CHECKING:
     from thermogear.case import Case
 
 # ------------------------------------------------------------------------------------------- case wiring
-TemperatureProvider = Callable[["Case"], TemperatureField]
+TemperatureProvider = Callable[..., TemperatureField]  # its parameters name pieces (thermogear.case_pieces)
 _PROVIDERS: dict[str, TemperatureProvider] = {}
 
 
 def register_temperature_provider(name: str, provider: TemperatureProvider) -> None:
     """Plug in a temperature source selectable as ``[temperature].model = name`` (the finite-element bulk
-    temperature model registers ``"fem"``). The provider takes the Case and returns a TemperatureField."""
+    temperature model registers ``"fem"``). The provider receives the pieces of the case its parameters name
+    (:mod:`thermogear.case_pieces`; ``provider(case)``: the whole case) and returns a TemperatureField."""
     if not callable(provider):
         raise TypeError("provider must be callable: provider(case) -> TemperatureField")
     _PROVIDERS[name] = provider
@@ -65,7 +67,7 @@ def temperature_field_from_case(case: "Case") -> TemperatureField:
             raise ThermogearError(f"temperature.model = '{section.model}': the finite-element bulk-temperature "
                                   "model is not registered (its module is not installed); use "
                                   "'uniform' or 'tabulated'")
-        field = provider(case)
+        field = call_with_pieces(provider, case)  # the pieces of the case it names (thermogear.case_pieces)
     # the highest temperature of the lubricant's viscosity data [°C]: the case's viscosity points, else the fitted
     # range of the case's oil (a built-in oil's data)
     data_maximum_c = _viscosity_data_maximum_c(case.lubricant.viscosity_points)

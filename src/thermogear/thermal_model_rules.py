@@ -76,6 +76,11 @@ class XTeSource:
     given: bool = False
     calibrated: bool = False
 
+    @property
+    def provided(self) -> bool:
+        """Whether a model's provider computes X_te (neither given nor calibrated)."""
+        return not (self.given or self.calibrated)
+
 
 #: The sources of X_te per ``[thermal] x_te_source`` name (the schema's values, in its order): the one place the
 #: names are compared.

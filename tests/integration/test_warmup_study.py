@@ -52,10 +52,11 @@ def test_each_point_is_the_warmup_of_its_case_and_progress_counts_warmups(tmp_pa
 
 def test_the_kind_is_named_and_refused_where_it_cannot_run(tmp_path):
     import thermogear
-    from thermogear.sweep.api import study_kind
+    from thermogear.case_pieces import call_with_pieces
+    from thermogear.sweep.api import StudySubject, study_kind
     from thermogear.case import load_case
 
-    assert study_kind(load_case(CASE)).name != "warmup"  # a gearbox case's own study is its steady one
+    assert study_kind(call_with_pieces(StudySubject.of, load_case(CASE))).name != "warmup"  # a gearbox case's own study is its steady one
     with pytest.raises(CaseError, match=r"\[gearbox\]"):  # luo2019 has no thermal network to integrate
         thermogear.sweep("luo2019", vary={"torque_nm": [100]}, out=tmp_path / "a.zarr", kind="warmup")
     with pytest.raises(CaseError, match="one gear model"):

@@ -125,3 +125,69 @@ def test_the_examples_of_the_typed_results_and_of_a_solver_run(capsys, monkeypat
     # the denser sampling of the same exact orbit: the same Kv to how finely the peak is sampled (the orbit is exact
     # at every sample, so only the peak's position between samples differs: 1e-3 is far above that, far below Kv-1)
     assert response.metrics["kv"] == pytest.approx(results.pair["thermal"].kv, rel=1e-3)
+
+
+def _run_section(title: str, monkeypatch, name: str) -> dict:
+    """Run the one python block of the section ``title`` as a module of its own; its namespace."""
+    text = PAGE.read_text(encoding="utf-8").split(f"## {title}\n", 1)[1].split("\n## ", 1)[0]
+    blocks = re.findall(r"```python\n(.*?)```", text, flags=re.DOTALL)
+    assert len(blocks) == 1
+    module = types.ModuleType(name)  # dataclasses need their module in sys.modules
+    monkeypatch.setitem(sys.modules, module.__name__, module)
+    exec(compile(blocks[0], str(PAGE), "exec"), module.__dict__)  # noqa: S102 - the page's own example
+    return module.__dict__
+
+
+def test_the_example_of_adding_a_bearing_model_runs(capsys, monkeypatch):
+    import math
+
+    namespace = _run_section("Adding a bearing model", monkeypatch, "architecture_bearing_example")
+    printed = capsys.readouterr().out
+    assert re.fullmatch(r"bearings \d+\.\d W, oil \d+\.\d °C\n", printed)
+    case, description, state = namespace["case"], namespace["description"], namespace["state"]
+    # the network dissipates exactly M·ω of each bearing: μ·(its share of the tooth normal force)·d/2 at its
+    # shaft's speed (the Coulomb model has no viscous part, so the oil temperature does not enter)
+    operating = namespace["gearbox_operating_point"](case.operating_point, case.gearbox)
+    normal_force = operating.torque / case.gear_pair.pinion.base_radius
+    expected = sum(0.0011 * mounted.load_fraction * normal_force * 15e-3 * 2.0 * math.pi / 60.0
+                   * (operating.speed_rpm / case.gear_pair.gear_ratio if mounted.on_wheel_shaft
+                      else operating.speed_rpm) for mounted in description.bearings)
+    assert state.losses.bearings == pytest.approx(expected, rel=1e-9)
+
+
+def test_the_example_of_adding_a_loss_correlation_runs(capsys, monkeypatch):
+    from thermogear.friction_models import FRICTION_MODELS, friction_law
+
+    saved = dict(FRICTION_MODELS)
+    try:
+        _run_section("Adding a loss correlation", monkeypatch, "architecture_loss_example")
+        assert friction_law("modified_schlenk").name == "modified_schlenk"
+    finally:
+        FRICTION_MODELS.clear()
+        FRICTION_MODELS.update(saved)
+    rows = re.findall(r"^(\w+): mesh (\d+\.\d) W, pinion (\d+\.\d) °C$", capsys.readouterr().out, flags=re.MULTILINE)
+    assert [row[0] for row in rows] == ["schlenk", "modified_schlenk"]
+    (_, mesh, pinion), (_, lower_mesh, lower_pinion) = rows
+    # less friction: less mesh loss and a cooler pinion (not 0.75 of the loss: the cooler oil is more viscous)
+    assert float(lower_mesh) < float(mesh) and float(lower_pinion) < float(pinion)
+
+
+def test_the_example_of_adding_a_study_kind_runs(capsys, monkeypatch, tmp_path):
+    import xarray as xr
+
+    from thermogear.case import load_case
+    from thermogear.simulation import Simulation
+    from thermogear.sweep import api
+
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.setattr(api, "_REGISTERED", [])
+    _run_section("Adding a study kind", monkeypatch, "architecture_kind_example")
+    assert [kind.name for kind in api.study_kinds()][0] == "mean_stiffness"
+    capsys.readouterr()
+    stored = xr.open_dataset(tmp_path / "stiffness.nc", engine="h5netcdf")
+    # the point at the case's own flank temperatures is the case's own mean stiffness; the cooler flank another
+    as_given = Simulation(load_case("luo2019"), "thermal").state.mean_mesh_stiffness
+    thermal = stored["mean_stiffness"].sel(model="thermal")
+    assert float(thermal.sel(flank_temperature_offset_c=0.0)) == pytest.approx(as_given, rel=1e-12)
+    assert float(thermal.sel(flank_temperature_offset_c=-20.0)) != pytest.approx(as_given, rel=1e-6)
+    stored.close()

@@ -53,3 +53,14 @@ def test_jumps_equal_the_one_dof_continuation():
 def test_bad_direction_is_named():
     with pytest.raises(ProblemError, match="direction"):
         follow_backlash_branch([_as_matrices(textbook_problem(1.0, 0.03, n=8))], "sideways")
+
+
+@pytest.mark.parametrize(("count", "parameter", "key"), [(0, None, "systems"), (2, [1.0, 2.0, 3.0], "parameter")])
+def test_both_continuations_refuse_the_same_inputs(count, parameter, key):
+    # issue 33: the 1-DOF continuation (over problems) and the n-DOF one (over systems) check their inputs with one
+    # function; an empty sequence and a label count other than the item count are refused by both, naming the key
+    problem = textbook_problem(1.0, 0.03, n=8)
+    with pytest.raises(ProblemError, match=key):
+        follow_backlash_branch([_as_matrices(problem)] * count, "up", parameter)
+    with pytest.raises(ProblemError, match=key.replace("systems", "problems")):
+        follow_branch([problem] * count, "up", parameter)

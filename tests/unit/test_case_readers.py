@@ -33,8 +33,21 @@ SOURCE = Path(__file__).resolve().parents[2] / "src" / "thermogear"
 #: resolved once, by gearbox_model_from_case), the coupled heat's parts the gearbox model and sections, the mesh
 #: table's resolver is its own load-time check, the drivetrain's heat provider and the predicted-temperature model
 #: are looked up by their one resolver, and preflight is asked through the Orchestrator. 35 once main's study kinds
-#: (the warm-up kind and study_kind, merged at 38) pick a case's kind from its StudySubject, resolved once.
-MAXIMUM_CASE_READERS = 35
+#: (the warm-up kind and study_kind, merged at 38) pick a case's kind from its StudySubject, resolved once. 28 once
+#: the checks and providers of thermogear.composition receive the pieces of the case they name
+#: (thermogear.case_pieces.call_with_pieces: the FE and gearbox temperature providers, the FE X_te, the network's
+#: drivetrain heat, the gearbox and damping-law checks; +1 for call_with_pieces itself), study_kind takes the
+#: StudySubject and the held load of a sweep the case's [operating] keys and operating point. 27 once the callable
+#: module thermogear.sweep forwards its arguments to thermogear.sweep.api.study (the entry point) unread. 22 once the
+#: memoised resolvers name the pieces they read and thermogear.case.cached_per_case reads the case for them (the oil,
+#: the gearbox network, the mesh table, the thermo-elastic mesh: called with the case as before, each declares its
+#: inputs) and StudySubject.of takes the three sections it reads. Left: the machinery that reads the case for the
+#: others (check_case, cached_per_case, call_with_pieces), the entry points (thermogear.run, evaluate_case, the
+#: report, the sweeps and Study.define/from_description, the warm-ups, the gearbox grid) and the resolvers that
+#: write a new case or hand the case on lazily (the warm-up states, fem_inputs, the gearbox's predicted
+#: temperatures, the stages' cases, the drivetrain, the paper's k_T, the pair model, the temperature field) and
+#: PredictedTemperatureError, which carries the unresolved case. The next step to 15: those resolvers onto pieces.
+MAXIMUM_CASE_READERS = 22
 
 
 def _takes_case(argument: ast.arg) -> bool:

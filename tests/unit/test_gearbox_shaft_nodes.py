@@ -52,8 +52,14 @@ def test_each_shaft_is_joined_to_its_own_gear_and_bearings():
     housing = NODES.index("housing")
     assert matrix[pinion, WHEEL_SHAFT] == 0.0 and matrix[wheel, PINION_SHAFT] == 0.0
     assert matrix[PINION_SHAFT, WHEEL_SHAFT] == 0.0
-    # the totals of the shared paths are kept: shafts–oil and shafts–housing add up to the description's
-    assert matrix[PINION_SHAFT, OIL] + matrix[WHEEL_SHAFT, OIL] == pytest.approx(description.shaft_oil_conductance)
+    # the totals of the shared paths are kept: shafts–oil (less the surfaces of the stretches of shaft between gear
+    # and bearings, which the set's drivetrain gives: thermogear.gearbox.shaft_conduction) and shafts–housing add up
+    # to the description's
+    for shaft, wheel_side in ((PINION_SHAFT, False), (WHEEL_SHAFT, True)):
+        assert matrix[shaft, OIL] == pytest.approx(0.5 * description.shaft_oil_conductance
+                                                   + description.shaft_paths(wheel_side)[2], rel=1e-14)
+    lumped = internal_conductances(dataclasses.replace(description, pinion_shaft_spans=(), wheel_shaft_spans=()))
+    assert lumped[PINION_SHAFT, OIL] + lumped[WHEEL_SHAFT, OIL] == pytest.approx(description.shaft_oil_conductance)
     assert matrix[PINION_SHAFT, housing] + matrix[WHEEL_SHAFT, housing] == pytest.approx(
         description.shaft_housing_conductance)
     # three of four bearings on the wheel shaft: three quarters of the bearing-seat path there

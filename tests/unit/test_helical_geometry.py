@@ -9,7 +9,8 @@ import numpy as np
 import pytest
 
 from thermogear.geometry import Gear, GearPair
-from thermogear.helical.contact_lines import contact_length_extremes, total_contact_length
+from thermogear.helical.contact_lines import (contact_length_extremes, contact_line_length, line_entries,
+                                             total_contact_length, zone_line_entries)
 from thermogear.helical.geometry import HelicalPair
 
 ALPHA_N = math.radians(20.0)
@@ -114,6 +115,27 @@ def test_the_total_contact_length_has_its_closed_form_mean_and_extremes(beta_deg
     # most b/40 000 per step and the extremes are exact at the sampled plateaus
     assert np.mean(length) == pytest.approx(mean, abs=2 * helical.face_width / 40000)
     assert np.min(length) == pytest.approx(low, rel=1e-4) and np.max(length) == pytest.approx(high, rel=1e-4)
+
+
+@pytest.mark.parametrize("beta_deg, width_mm", [(0.0, 25.0), (15.0, 25.0), (30.0, 25.0), (15.0, 10.0),
+                                                 (8.0, 40.0), (40.0, 60.0)])
+def test_the_lines_in_the_zone_are_every_line_that_touches_it(beta_deg, width_mm):
+    """zone_line_entries (each phase its own first line, the mesh model's slices) keeps every line with a length
+    in the zone, at the same entry value, and leaves out lines: the lengths sum to the same total (to the
+    rounding of a sum taken in another order where many lines touch)."""
+    helical = HelicalPair.create(27, 35, 3e-3, ALPHA_N, math.radians(beta_deg), width_mm * 1e-3)
+    pair = helical.transverse
+    phase = (np.arange(4096) + 0.5) / 4096 * pair.base_pitch
+    arguments = (pair.path_length, helical.face_advance, pair.base_pitch)
+    every, zone = line_entries(phase, *arguments), zone_line_entries(phase, *arguments)
+    lengths = [contact_line_length(entries, pair.path_length, helical.face_width, helical.base_helix_angle)
+               for entries in (every, zone)]
+    assert zone.shape[-1] < every.shape[-1]
+    kept = lengths[0] > 0.0
+    for row in range(phase.size):  # the touching lines, in order, with their entries exactly
+        touching = lengths[1][row] > 0.0
+        np.testing.assert_array_equal(zone[row][touching], every[row][kept[row]])
+    np.testing.assert_allclose(lengths[1].sum(axis=-1), lengths[0].sum(axis=-1), rtol=1e-14)
 
 
 def test_the_contact_length_is_constant_at_an_integer_overlap_ratio_and_spur_like_at_a_small_one():

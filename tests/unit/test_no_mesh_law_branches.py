@@ -20,9 +20,8 @@ SOURCE = Path(thermogear.__file__).parent
 #: (registry module, the names it resolves, comparisons left on purpose with their reason: module -> count)
 SCANS = {
     "contact law": ("dynamics/mesh_laws.py", frozenset(MESH_LAWS), {}),
-    # cli/warmup.py: `--model gearbox` names a warm-up model (first-order | gearbox), not a temperature source (the
-    # case it loads, and the warm-up it runs)
-    "temperature source": ("temperature_kinds.py", frozenset(TEMPERATURE_SOURCES), {"cli/warmup.py": 2}),
+    # (cli/warmup.py's `--model gearbox`, a warm-up model, is resolved from its own registry, WARMUP_MODELS)
+    "temperature source": ("temperature_kinds.py", frozenset(TEMPERATURE_SOURCES), {}),
 }
 
 

@@ -61,25 +61,26 @@ def test_stage_end_temperatures_rise_with_the_load(stages):
 PUBLISHED_K12_SUMP_C = 140.0
 
 
-@pytest.mark.xfail(strict=True, reason="known gap: the assumed housing and internal heat paths of the set run the "
-                                       "C-gear K12 stage to 148 °C oil (151 °C while both shafts shared one node); "
-                                       "the published A-gear value is at most 140 °C (docs/gearbox-temperature.md, "
-                                       "'What the gaps say')")
+@pytest.mark.xfail(strict=True, reason="known gap: the set's assumed housing (40 kg, 0.45 x 0.30 x 0.40 m) and "
+                                       "assumed internal coefficients run the C-gear K12 stage to 162 °C oil (148 °C "
+                                       "while the shafts were lumped with their bearings, 151 °C while both shafts "
+                                       "shared one node); the published A-gear value is at most 140 °C "
+                                       "(docs/gearbox-temperature.md, 'What the gaps say')")
 def test_k12_stage_from_90_c_ends_within_the_published_sump_temperature(stages):
     assert stages[-1].oil_c <= PUBLISHED_K12_SUMP_C + 5.0
 
 
 # FVA information sheet 54/7 reference point as printed by a commercial calculation (KISSsoft "Reference data FZG-C
 # test"): T1 = 265.1 N·m, 2250 rpm, oil 90 °C, pinion bulk temperature θ_M = 127.7 °C (37.7 K above the oil).
-# Tolerance ±30 % of that rise (±11.3 K): the project's two closed-form estimates of the same point (ISO/TR 15144-1
-# form 117.8 °C, flash method 116.5 °C) differ from it by 26–30 % of the rise, so methods of this kind disagree by that
-# much; the network's rise also rests on assumed gear–oil and gear–shaft paths. The oil is held at 90 °C by the rig's
-# thermostat (heater 2 kW, cooling 5 kW, gain 2 kW/K: within 0.1 K).
-# History: 145.7 °C (a strict xfail) while both shafts shared one node with an assumed 3 W/K from each gear; 138.6 °C
-# with each shaft its own node, the gear body's conduction from its formula (5.5 W/K for the pinion) and Blok's heat
-# partition (pinion 0.493 instead of 0.5). That is inside the band by 0.4 K only: the agreement does not validate
-# the assumed gear–oil (200 W/m²K, −4.4 K per +20 %) and bearing-seat (8 W/K, −2.2 K per +20 %) paths, which
-# still carry most of the pinion's heat.
+# The oil is held at 90 °C by the rig's thermostat (heater 2 kW, cooling 5 kW, gain 2 kW/K: within 0.1 K).
+# Tolerance: no independent statement of the scatter of bulk-temperature measurements or calculations could be read
+# (ISO/TS 6336-20/-21 and the FZG reports are not in the stored sources), so the ±30 % of the rise kept here is NOT
+# an argued tolerance; the test is a strict xfail, a record of the gap, not a validation.
+# History: 145.7 °C while both shafts shared one node; 138.6 °C with each shaft its own node, the gear body's
+# conduction from its formula and Blok's heat partition; 157.6 °C once the stretch of shaft from each gear's seat to
+# each bearing is a fin (Incropera Table 3.4 case B) instead of a conductor without resistance: a Ø30 mm steel shaft
+# conducts only k·A/L = 0.65 W/K over the 50 mm from the gear to a bearing, so the pinion's path to its shaft node
+# falls from 5.5 to 0.77 W/K and its heat must leave through the assumed gear–oil coefficient (200 W/(m² K)).
 FVA_54_7_BULK_C = 127.7
 
 
@@ -95,6 +96,9 @@ def test_fva_point_holds_the_oil_at_90_c(fva_point):
     assert fva_point.energy_balance_w < 1e-9
 
 
+@pytest.mark.xfail(strict=True, reason="known gap: the pinion's heat leaves mainly through the assumed gear–oil "
+                                       "coefficient once the shaft's own conduction limits the path to the bearings "
+                                       "(157.6 °C against 127.7 °C); no independently argued tolerance")
 def test_fva_54_7_pinion_bulk_temperature(fva_point):
     assert fva_point.pinion_c == pytest.approx(FVA_54_7_BULK_C, abs=0.3 * (FVA_54_7_BULK_C - 90.0))
 
@@ -103,6 +107,8 @@ def test_fva_54_7_pinion_bulk_temperature(fva_point):
 def test_energy_balance_with_every_friction_law(model, name):
     description = dataclasses.replace(model.description, friction=FRICTION_MODELS[name],
                                       friction_constant=0.05 if name == "constant" else None)
-    state = GearboxThermalModel(description).steady_state(GearboxOperatingPoint(FZG_PINION_RPM, 302.0, 20.0))
+    # K8: below the fold of the paper's law (near 285 N·m at 2175 rpm), so every law has a stable state there
+    state = GearboxThermalModel(description).steady_state(GearboxOperatingPoint(FZG_PINION_RPM,
+                                                                                FZG_LOAD_STAGE_TORQUE_NM[8], 20.0))
     assert state.energy_balance_w < 1e-9
     assert abs(float(np.sum(state.losses.node_sources)) - state.heat_out) < 1e-9

@@ -12,6 +12,7 @@ from thermogear.cli.app import app, console, error_console, print_json
 from thermogear.cli.console import print_warning
 from thermogear.cli.sweep_summary import load_held_summary, print_sweep_summary, response_summary
 from thermogear.errors import CaseError
+from thermogear.sweep.evaluation_methods import is_batched
 from thermogear.sweep.executor import check_scheduler_address
 
 
@@ -88,9 +89,10 @@ def sweep(
         if stored is not None:
             chosen_model = chosen_model or ("both" if len(stored["models"]) == 2 else stored["models"][0])
             chunks = chunks or stored["chunk_points"]
-        from thermogear.sweep.api import study_kind
+        from thermogear.case_pieces import call_with_pieces
+        from thermogear.sweep.api import StudySubject, study_kind
 
-        chosen = study_kind(loaded, method, kind)
+        chosen = study_kind(call_with_pieces(StudySubject.of, loaded), method, kind)
         study = Study.define(loaded, definition, model=chosen_model or chosen.default_model, chunk_points=chunks,
                              hold=hold or (stored or {}).get("hold", "torque"))
         warmup = None
@@ -129,7 +131,7 @@ def sweep(
             raise CaseError("--direction", direction, "up | down | both",
                             "a branch is followed from the lowest speed up, from the highest down, or both")
         _warn_inert_axes(study)
-        if mesh_law(loaded.dynamics.mesh).backlash and method == "batch":
+        if mesh_law(loaded.dynamics.mesh).backlash and is_batched(method):
             from thermogear.cli.sweep_branches import run_branch_sweep
 
             run_branch_sweep(study, out, direction or "both", overwrite, resume, plot, progress, as_json,
@@ -161,15 +163,11 @@ def sweep(
                           "does not vary speed_rpm (add --vary speed_rpm=..., or draw a map with "
                           "thermogear.sweep.plots.plot_map)", error_console)
         if plot is not None and "speed_rpm" in study.dims:
+            from thermogear.cli.sweep_drivetrain_branches import save_figure
             from thermogear.sweep.plots import plot_speed_response
 
-            figure = plot_speed_response(run.dataset)
-            try:
-                figure.savefig(plot, dpi=120)
-            except OSError as error:  # checked before the study; the disk may still refuse
-                raise CaseError("--plot", str(plot), "a writable figure file", f"the study is complete in {out}, but "
-                                f"its figure could not be written: {error.strerror or error}") from None
-            figure_path = str(plot)
+            # the path was checked before the study; the disk may still refuse
+            figure_path = save_figure(plot_speed_response(run.dataset), plot, out)
         summary = {
             "out": str(out),
             "dims": {name: int(size) for name, size in zip(study.dims, study.shape)},
@@ -200,7 +198,7 @@ def _run_drivetrain(study, out: Path, direction, multistart: int, method: str, s
     if multistart:
         raise CaseError("--multistart", multistart, "0 for a case with a [drivetrain]",
                         "the drivetrain study follows the orbit in speed; the state-plane search is the pair's")
-    if method != "batch":
+    if not is_batched(method):
         raise CaseError("--method", method, "batch (the default) for a case with a [drivetrain]",
                         "the drivetrain study solves each speed's periodic orbit on its modal reduction; there is "
                         "no one-Simulation-per-point reference for a drivetrain")

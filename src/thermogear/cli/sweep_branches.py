@@ -76,15 +76,11 @@ def run_branch_sweep(study, out: Path, direction: str, overwrite: bool, resume: 
         print_warning(f"no plot written to {plot}: the plot draws the responses against speed, and this study does "
                       "not vary speed_rpm (add --vary speed_rpm=...)", error_console)
     if plot is not None and "speed_rpm" in study.dims:
+        from thermogear.cli.sweep_drivetrain_branches import save_figure  # noqa: PLC0415
         from thermogear.sweep.branch_plots import plot_branches  # noqa: PLC0415
 
-        figure = plot_branches(dataset)
-        try:
-            figure.savefig(plot, dpi=120)
-        except OSError as error:  # checked before the study; the disk may still refuse
-            raise CaseError("--plot", str(plot), "a writable figure file", f"the study is complete in {target}, "
-                            f"but its figure could not be written: {error.strerror or error}") from None
-        figure_path = str(plot)
+        # the path was checked before the study; the disk may still refuse
+        figure_path = save_figure(plot_branches(dataset), plot, target)
     messages = distinct_warnings(str(item.message) for item in caught)
     summary = {"out": str(target), "mesh": "nonlinear", "directions": list(dataset["direction"].values),
                "dims": {name: int(size) for name, size in zip(study.dims, study.shape)},

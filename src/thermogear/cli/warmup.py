@@ -3,6 +3,7 @@ response per temperature), and with ``--rig-comparison`` the model beside Luo & 
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from pathlib import Path
 
 import typer
@@ -13,7 +14,19 @@ from thermogear.cli.app import app, console, result_payload
 from thermogear.errors import CaseError
 
 
-WARMUP_MODELS = ("first-order", "gearbox")
+@dataclass(frozen=True)
+class WarmupModel:
+    """A warm-up model of ``--model``: ``name``, and whether it integrates the case's gearbox thermal network
+    (``network``: the case is loaded as the network's commands load it, reported at any temperature it reaches;
+    else the first-order rise of ``--start-c`` to ``--final-c``)."""
+
+    name: str
+    network: bool
+
+
+#: The warm-up models of ``--model`` by name: the one place the names are compared.
+WARMUP_MODELS: dict[str, WarmupModel] = {model.name: model for model in (
+    WarmupModel("first-order", network=False), WarmupModel("gearbox", network=True))}
 
 
 @app.command()
@@ -60,7 +73,8 @@ def warmup(
     if rig_comparison:  # the comparison loads the case itself, one case per Table 3 state
         _rig_comparison(case, gear_model, as_json, plot)
         return
-    if model == "gearbox":  # the network is reported at any temperature it reaches (flags, not a refusal)
+    chosen = None if model is None else WARMUP_MODELS.get(model)
+    if chosen is not None and chosen.network:  # reported at any temperature it reaches (flags, not a refusal)
         from thermogear.gearbox.case_model import load_gearbox_case  # noqa: PLC0415
 
         base = load_gearbox_case(case)
@@ -73,9 +87,9 @@ def warmup(
                         "exactly one of --temperature-history FILE|luo2019:RPM or --model first-order",
                         "the warm-up needs one temperature source")
     if model is not None:
-        if model not in WARMUP_MODELS:
+        if chosen is None:
             raise CaseError("--model", model, " | ".join(WARMUP_MODELS), "unknown warm-up model")
-        if model == "gearbox":
+        if chosen.network:
             from thermogear.cli.gearbox_warmup import run_gearbox_warmup  # noqa: PLC0415
 
             conditioning = None

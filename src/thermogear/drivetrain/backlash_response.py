@@ -32,7 +32,7 @@ from typing import Any
 import numpy as np
 
 from thermogear.drivetrain.assembly import AssembledDrivetrain
-from thermogear.drivetrain.response import (MeshResponse, bearing_force_spectrum, bearing_forces,
+from thermogear.drivetrain.response import (BearingSpectra, MeshResponse, PeriodicMotion, bearing_forces,
                                             drivetrain_backlash_system)
 from thermogear.drivetrain.sampled_period import (SampledMotion, mesh_contacts, mesh_trajectory,  # noqa: F401
                                                   sampled_metrics, sampled_motion, train_mesh_responses)
@@ -58,7 +58,7 @@ SHOOTING_TOLERANCE = 1e-8
 
 
 @dataclass(frozen=True, eq=False)
-class DrivetrainBacklashResponse:
+class DrivetrainBacklashResponse(PeriodicMotion):
     """Periodic response with backlash over one mesh period (module docstring): ``time`` (S,) [s] (a switch
     instant twice, left side first); ``transmission_error`` δ = wᵀq [m] and its ``transmission_error_rate``
     [m/s]; ``mesh_force`` [N]; ``bearing_forces`` name → (S, 3) on the housing in x, y, z [N]; ``displacement``
@@ -69,12 +69,6 @@ class DrivetrainBacklashResponse:
     above the first mesh's and ``meshes`` each mesh's δ, force and metrics (contact loss of its own dead zone)
     by name."""
 
-    time: np.ndarray
-    transmission_error: np.ndarray
-    transmission_error_rate: np.ndarray
-    mesh_force: np.ndarray
-    bearing_forces: dict[str, np.ndarray]
-    displacement: np.ndarray
     region: np.ndarray
     multipliers: np.ndarray
     converged: bool
@@ -103,14 +97,9 @@ class DrivetrainBacklashResponse:
         """Dynamic factor Kv [-] (``metrics["kv"]``), None where the orbit was not found."""
         return self.metrics.get("kv") if self.converged else None
 
-    def bearing_spectrum(self, name: str, points: int = 1024) -> tuple[np.ndarray, np.ndarray]:
-        """(frequencies [Hz] of the mesh harmonics 0, f_m, 2f_m, …; amplitudes (3, harmonics) [N] in x, y, z) of
-        one bearing's force on its housing; harmonic 0 is the mean force."""
-        return bearing_force_spectrum(self.time, self.bearing_forces, name, self.period, points)
-
 
 @dataclass(frozen=True, eq=False)
-class PeriodForces:
+class PeriodForces(BearingSpectra):
     """The bearing forces of one mesh period: ``time`` (S,) [s] from 0 to ``period`` [s], ``bearing_forces``
     name → (S, 3) [N] (e.g. the last period of a motion from rest)."""
 
@@ -118,10 +107,6 @@ class PeriodForces:
     bearing_forces: dict[str, np.ndarray]
     period: float
     bearing_moments: dict[str, np.ndarray] = field(default_factory=dict)  # name → (S, 2) [N·m] about x, y
-
-    def bearing_spectrum(self, name: str, points: int = 1024) -> tuple[np.ndarray, np.ndarray]:
-        """As :meth:`DrivetrainBacklashResponse.bearing_spectrum`."""
-        return bearing_force_spectrum(self.time, self.bearing_forces, name, self.period, points)
 
 
 def one_blas_thread():
@@ -245,8 +230,9 @@ def drivetrain_backlash_response(assembled: AssembledDrivetrain, state: MeshStat
             f"{startup.run_in_periods} mesh periods, then shot) settles on the {branch} branch (Kv "
             f"{_shown(reached.kv)}, contact loss {reached.contact_loss_fraction:.3f}), which is reported; shot from "
             f"the linear solution the orbit is the {other_branch} branch (Kv {_shown(shot.kv)}, contact loss "
-            f"{shot.contact_loss_fraction:.3f}). The multi-start search (thermogear.drivetrain.backlash_orbits."
-            "drivetrain_stable_orbits) lists every stable orbit a grid of starts finds, with its basin share",)
+            f"{shot.contact_loss_fraction:.3f}). The multi-start search (`thermogear run CASE --multistart N`; in "
+            "Python thermogear.drivetrain.backlash_orbits.drivetrain_stable_orbits) lists every stable orbit a grid "
+            "of starts finds, with its basin share",)
     return replace(reached, notes=note)
 
 

@@ -27,6 +27,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from thermogear.case_pieces import call_with_pieces
 from thermogear.composition import DRIVETRAIN_HEAT, builtin
 from thermogear.dynamics.mesh_laws import mesh_law
 from thermogear.drivetrain.assembly import Drivetrain
@@ -279,7 +280,7 @@ def case_drivetrain(case, models: tuple[str, ...] = (ELASTIC, THERMAL)) -> CaseD
         # the temperatures the case's temperature model predicts for the drivetrain (its provider in
         # composition.DRIVETRAIN_HEAT), or None where that model predicts none
         provider = builtin(DRIVETRAIN_HEAT, case.temperature.model)
-        heat = None if provider is None else provider(case)
+        heat = None if provider is None else call_with_pieces(provider, case)  # the pieces it names
         temperatures, warm_state, note = shaft_temperatures(section, tooth_c, heat, thermoelastic is not None)
         notes += [note] if note else []
         stage_stiffness = tuple(_mean_state(model, points)[0] for model in stage_models[THERMAL])

@@ -34,7 +34,7 @@ from thermogear.dynamics.spectra import harmonic_spectrum
 from thermogear.errors import CaseError
 from thermogear.mesh.state import MeshState
 
-__all__ = ["DrivetrainResponse", "MeshResponse", "train_problems", "bearing_force_spectrum", "bearing_forces", "drivetrain_backlash_system", "drivetrain_periodic_system",
+__all__ = ["BearingSpectra", "DrivetrainResponse", "MeshResponse", "PeriodicMotion", "train_problems", "bearing_force_spectrum", "bearing_forces", "drivetrain_backlash_system", "drivetrain_periodic_system",
            "drivetrain_periodic_response", "drivetrain_speed_sweep"]
 
 
@@ -149,14 +149,22 @@ class MeshResponse:
     mesh_period: float
 
 
+class BearingSpectra:
+    """The bearing-force spectra of a response over one period: it holds ``time`` (S,) [s], ``bearing_forces``
+    name → (S, 3) [N] and ``period`` T [s]."""
+
+    def bearing_spectrum(self, name: str, points: int = 1024) -> tuple[np.ndarray, np.ndarray]:
+        """(frequencies [Hz] of the mesh harmonics 0, f_m, 2f_m, …; amplitudes (3, harmonics) [N] in x, y, z) of
+        one bearing's force on its housing; harmonic 0 is the mean (static) force."""
+        return bearing_force_spectrum(self.time, self.bearing_forces, name, self.period, points)
+
+
 @dataclass(frozen=True, eq=False)
-class DrivetrainResponse:
-    """Periodic response over one mesh period: ``time`` (S,) [s]; ``transmission_error`` δ = wᵀq [m] and its rate
-    [m/s]; ``mesh_force`` k(δ) − Σk_ie_i + c·δ̇ [N]; ``bearing_forces`` name → (S, 3) force on the housing in
-    x, y, z [N] (``bearing_moments`` name → (S, 2) its tilting moment about x, y [N·m]); ``displacement`` (S, DOFs) [SI]; Floquet ``multipliers``; ``metrics`` of the 1-DOF chain computed
-    from δ (kv, dte_rms, …; see :func:`thermogear.dynamics.metrics.compute_metrics`). ``period`` is the mesh period,
-    or a train's common period; ``meshes`` holds each mesh's δ, force and metrics by name (the fields above are the
-    first mesh's)."""
+class PeriodicMotion(BearingSpectra):
+    """The samples every periodic drivetrain response (linear or with backlash) holds: ``time`` (S,) [s],
+    ``transmission_error`` δ = wᵀq [m] and its ``transmission_error_rate`` [m/s], the ``mesh_force`` [N],
+    ``bearing_forces`` name → (S, 3) on the housing in x, y, z [N] and ``displacement`` (S, DOFs) [SI]; a
+    subclass adds the ``period`` and what its solver finds."""
 
     time: np.ndarray
     transmission_error: np.ndarray
@@ -164,6 +172,17 @@ class DrivetrainResponse:
     mesh_force: np.ndarray
     bearing_forces: dict[str, np.ndarray]
     displacement: np.ndarray
+
+
+@dataclass(frozen=True, eq=False)
+class DrivetrainResponse(PeriodicMotion):
+    """Periodic response over one mesh period: ``time`` (S,) [s]; ``transmission_error`` δ = wᵀq [m] and its rate
+    [m/s]; ``mesh_force`` k(δ) − Σk_ie_i + c·δ̇ [N]; ``bearing_forces`` name → (S, 3) force on the housing in
+    x, y, z [N] (``bearing_moments`` name → (S, 2) its tilting moment about x, y [N·m]); ``displacement`` (S, DOFs) [SI]; Floquet ``multipliers``; ``metrics`` of the 1-DOF chain computed
+    from δ (kv, dte_rms, …; see :func:`thermogear.dynamics.metrics.compute_metrics`). ``period`` is the mesh period,
+    or a train's common period; ``meshes`` holds each mesh's δ, force and metrics by name (the fields above are the
+    first mesh's)."""
+
     multipliers: np.ndarray
     metrics: dict[str, Any]
     period: float
@@ -174,11 +193,6 @@ class DrivetrainResponse:
     def kv(self) -> float | None:
         """Dynamic factor Kv [-] (max pair load over the static load, as the 1-DOF chain)."""
         return self.metrics["kv"]
-
-    def bearing_spectrum(self, name: str, points: int = 1024) -> tuple[np.ndarray, np.ndarray]:
-        """(frequencies [Hz] of the mesh harmonics 0, f_m, 2f_m, …; amplitudes (3, harmonics) [N] in x, y, z) of
-        one bearing's force on its housing; harmonic 0 is the mean (static) force."""
-        return bearing_force_spectrum(self.time, self.bearing_forces, name, self.period, points)
 
 
 def bearing_force_spectrum(time: np.ndarray, forces: dict[str, np.ndarray], name: str, period: float,

@@ -17,8 +17,9 @@ from thermogear.drivetrain.response import MeshResponse, bearing_forces, train_p
 from thermogear.drivetrain.train import MeshTrain
 from thermogear.dynamics.backlash_ndof import BACK_CONTACT, DRIVING_CONTACT, FREE_FLIGHT, BacklashSystem, MeshZone
 from thermogear.dynamics.backlash_trajectory import BacklashTrajectory
-from thermogear.dynamics.metrics import dynamic_factor, sampled_load
-from thermogear.dynamics.spectra import time_mean_and_rms
+from thermogear.dynamics.metrics import sampled_load
+from thermogear.dynamics.period_metrics import (contact_loss_summary, contact_time_metrics, dte_statistics, frequency_metrics, load_metrics,
+                                                multiplier_moduli, pair_load_maximum)
 
 __all__ = ["SampledMotion", "mesh_contacts", "mesh_trajectory",
            "sampled_metrics", "sampled_motion", "train_mesh_responses"]
@@ -111,42 +112,30 @@ def sampled_metrics(problem, trajectory: BacklashTrajectory, motion: SampledMoti
     delta, rate, elastic = motion.transmission_error, motion.transmission_error_rate, motion.elastic_force
     w0, period, piece = problem.static_load, problem.period, trajectory.piece
     driving = trajectory.region == DRIVING_CONTACT
-    pair = problem.pair_arrays()
+    pair, pair_loads, single_loads = problem.pair_arrays(), None, None
     if pair is not None:
         loads = sampled_load(pair[0], pair[1], problem.pair_offset, piece, delta, rate, False)
-        max_pair, basis = float(np.max(np.where(driving[None, :], loads, 0.0))), "pair_loads"
+        pair_loads = np.where(driving[None, :], loads, 0.0)
     elif np.any(problem.contact_count == 1):
-        single = problem.contact_count[piece] == 1
-        max_pair, basis = float(np.max(np.where(single & driving, elastic, 0.0))), "system_load_in_single_contact"
-    else:
-        max_pair, basis = None, "unavailable: no pair stiffness and no single-contact interval"
-    mean, rms = time_mean_and_rms(trajectory.time, delta)
-    moduli = np.sort(np.abs(np.asarray(multipliers)))[::-1]
+        single_loads = np.where((problem.contact_count[piece] == 1) & driving, elastic, 0.0)
+    max_pair, basis = pair_load_maximum(pair_loads, single_loads)
+    dte = dte_statistics(trajectory.time, delta)
+    moduli = multiplier_moduli(multipliers)
     stable = bool(converged and moduli.size and moduli[0] < 1.0)
     free = trajectory.region == FREE_FLIGHT
     starts, durations = _runs(trajectory.time, free)
     max_system = float(np.max(elastic))
     metrics: dict[str, Any] = {
-        "static_load": w0, "static_load_n_per_mm": w0 / problem.face_width / 1e3,
-        "kv": None if max_pair is None else dynamic_factor(max_pair, w0), "kv_basis": basis, "max_pair_load": max_pair,
-        "max_pair_load_n_per_mm": None if max_pair is None else max_pair / problem.face_width / 1e3,
-        "max_system_load": max_system, "max_system_load_n_per_mm": max_system / problem.face_width / 1e3,
-        "max_system_load_ratio": max_system / w0,
-        "dte_mean": mean, "dte_rms": rms, "dte_peak_to_peak": float(np.ptp(delta)),
-        "max_velocity": float(np.max(np.abs(rate))),
-        "natural_frequency_hz": problem.natural_frequency, "mesh_frequency_hz": problem.mesh_frequency,
-        "frequency_ratio": problem.frequency_ratio,
+        **load_metrics(w0, problem.face_width, max_pair, basis, max_system), **dte,
+        "max_velocity": float(np.max(np.abs(rate))), **frequency_metrics(problem),
         "floquet_multipliers_abs": [float(m) for m in moduli], "converged": bool(converged), "stable": stable,
-        "contact_loss": {"detected": bool(trajectory.free_flight_time > 0.0), "start_times": starts,
-                         "durations": durations,
-                         "total_duration": float(trajectory.free_flight_time / trajectory.periods),
-                         "min_force": float(np.min(elastic)), "min_force_ratio": float(np.min(elastic) / w0)},
-        "contact_loss_fraction": float(trajectory.free_flight_time / (period * trajectory.periods)),
-        "back_side_contact": bool(trajectory.back_contact_time > 0.0),
-        "back_contact_fraction": float(trajectory.back_contact_time / (period * trajectory.periods)),
-        "switches_per_period": float(trajectory.switches / trajectory.periods),
+        "contact_loss": contact_loss_summary(trajectory.free_flight_time > 0.0, starts, durations,
+                                             trajectory.free_flight_time / trajectory.periods, np.min(elastic), w0),
+        **contact_time_metrics(trajectory.free_flight_time, trajectory.back_contact_time, trajectory.switches,
+                               period * trajectory.periods, trajectory.periods, trajectory.back_contact_time > 0.0),
     }
-    finite = all(math.isfinite(value) for value in (mean, rms, max_system) + (() if max_pair is None else (max_pair,)))
+    finite = all(math.isfinite(value) for value in (dte["dte_mean"], dte["dte_rms"], max_system)
+                 + (() if max_pair is None else (max_pair,)))
     metrics["valid"] = bool(converged and stable and finite)
     return metrics
 

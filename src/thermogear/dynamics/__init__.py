@@ -11,16 +11,21 @@
 
 from __future__ import annotations
 
-from thermogear.dynamics.periodic import PeriodicOrbit, evaluate_orbit, floquet_multipliers, periodic_steady_state
-from thermogear.dynamics.periodic_batch import periodic_steady_state_batch
-from thermogear.dynamics.problem import MeshDynamicsProblem, region_name
-from thermogear.dynamics.reference import reference_solve_ivp
-from thermogear.dynamics.response import (DynamicResponse, compute_metrics, response_from_orbit,
-                                          response_from_transient)
-from thermogear.dynamics.transient import (TransientHistory, largest_safe_step, transient_from_rest,
-                                           transient_python)
+#: Public name -> the module that defines it, imported when first asked for (PEP 562): importing one solver module
+#: (e.g. the registry of solution methods the case schema reads) does not compile or load every kernel.
+_PUBLIC = {"PeriodicOrbit": "periodic", "evaluate_orbit": "periodic", "floquet_multipliers": "periodic",
+           "periodic_steady_state": "periodic", "periodic_steady_state_batch": "periodic_batch",
+           "MeshDynamicsProblem": "problem", "region_name": "problem", "reference_solve_ivp": "reference",
+           "DynamicResponse": "response", "compute_metrics": "response", "response_from_orbit": "response",
+           "response_from_transient": "response", "TransientHistory": "transient",
+           "largest_safe_step": "transient", "transient_from_rest": "transient", "transient_python": "transient"}
 
-__all__ = ["DynamicResponse", "MeshDynamicsProblem", "compute_metrics", "response_from_orbit",
-           "response_from_transient", "PeriodicOrbit", "TransientHistory", "evaluate_orbit", "floquet_multipliers",
-           "largest_safe_step", "periodic_steady_state", "periodic_steady_state_batch", "reference_solve_ivp",
-           "region_name", "transient_from_rest", "transient_python"]
+__all__ = sorted(_PUBLIC)
+
+
+def __getattr__(name: str):
+    if name not in _PUBLIC:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    import importlib
+
+    return getattr(importlib.import_module(f"{__name__}.{_PUBLIC[name]}"), name)

@@ -22,6 +22,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from thermogear.dynamics.backlash_ndof import BacklashSystem, backlash_flow_ndof, backlash_periodic_orbit
+from thermogear.dynamics.continuation_inputs import continuation_labels, continuation_order
 from thermogear.errors import ModelLimitError, ProblemError
 
 __all__ = ["BacklashBranchNDOF", "BranchStep", "branch_step", "follow_backlash_branch", "from_full", "to_full"]
@@ -127,14 +128,8 @@ def follow_backlash_branch(systems: Sequence[BacklashSystem], direction: str = "
     ``coordinates`` and ``metric`` for systems on different bases (module docstring); ``progress(1)`` is called
     after each point. ``measure_swing=False`` leaves ``peak_to_peak`` NaN (and :meth:`BacklashBranchNDOF.jumps`
     empty) and saves one recorded flow per point, for a caller that samples each orbit itself."""
-    if direction not in ("up", "down"):
-        raise ProblemError("direction", direction, "up | down", "sweep from the first system to the last or back")
     count = len(systems)
-    if count == 0:
-        raise ProblemError("systems", "empty", ">= 1 system", "nothing to follow")
-    labels = np.arange(count, dtype=float) if parameter is None else np.asarray(parameter, dtype=float)
-    if labels.shape != (count,):
-        raise ProblemError("parameter", f"shape {labels.shape}", f"({count},)", "one label per system")
+    labels = continuation_labels(direction, count, parameter, "system")
     sizes = [2 * system.linear.size for system in systems]
     size = max(sizes)
     if (coordinates is None and min(sizes) != size) or (coordinates is not None and (
@@ -146,7 +141,7 @@ def follow_backlash_branch(systems: Sequence[BacklashSystem], direction: str = "
     converged, stable, run_in = (np.zeros(count, dtype=bool) for _ in range(3))
     fraction, peak, states = np.full(count, np.nan), np.full(count, np.nan), np.full((count, size), np.nan)
     carried = None
-    for index in (range(count) if direction == "up" else range(count - 1, -1, -1)):
+    for index in continuation_order(direction, count):
         system = systems[index]
         step = branch_step(system, carried, None if coordinates is None else coordinates[index], metric, substeps,
                            run_in_periods, tolerance, max_iterations)

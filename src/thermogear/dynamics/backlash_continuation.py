@@ -20,7 +20,8 @@ from thermogear.dynamics.backlash_metrics import orbit_metrics
 from thermogear.dynamics.backlash_periodic import (BacklashOrbit, orbit_from_shot, periodic_response, shoot,
                                                    shot_is_stable)
 from thermogear.dynamics.backlash_problem import BacklashMeshProblem
-from thermogear.errors import ProblemError, ModelLimitError
+from thermogear.dynamics.continuation_inputs import continuation_labels, continuation_order
+from thermogear.errors import ModelLimitError
 
 __all__ = ["Branch", "BranchPoint", "branch_options", "branch_point", "follow_branch"]
 
@@ -109,14 +110,8 @@ def follow_branch(problems: Sequence[BacklashMeshProblem], direction: str = "up"
     ``samples_per_interval`` defaults to 1: the metrics stay exact at the maxima (switches, extrema and node
     limits are always recorded); only the DTE RMS and spectrum use the sampled curve.
     """
-    if direction not in ("up", "down"):
-        raise ProblemError("direction", direction, "up | down", "sweep from the first problem to the last or back")
     count = len(problems)
-    if count == 0:
-        raise ProblemError("problems", "empty", ">= 1 problem", "nothing to follow")
-    labels = np.arange(count, dtype=float) if parameter is None else np.asarray(parameter, dtype=float)
-    if labels.shape != (count,):
-        raise ProblemError("parameter", f"shape {labels.shape}", f"({count},)", "one label per problem")
+    labels = continuation_labels(direction, count, parameter, "problem")
     options = branch_options(max_period_count, tolerance, max_iterations, run_in_periods, classify_periods,
                              samples_per_interval)
     response = np.empty(count, dtype=object)
@@ -125,7 +120,7 @@ def follow_branch(problems: Sequence[BacklashMeshProblem], direction: str = "up"
     states = np.full((count, 2), np.nan)
     metrics = {name: np.full(count, np.nan) for name in _FLOAT_METRICS}
     metrics["back_side_contact"] = np.zeros(count, dtype=bool)
-    order = range(count) if direction == "up" else range(count - 1, -1, -1)
+    order = continuation_order(direction, count)
     state = None if initial_state is None else (float(initial_state[0]), float(initial_state[1]))
     for index in order:
         point = branch_point(problems[index], state, options, include_damping_force)

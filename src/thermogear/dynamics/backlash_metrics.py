@@ -1,6 +1,6 @@
 """Metrics of a backlash-model orbit: contact loss, back-side contact, mesh and pair forces, Kv, DTE statistics.
 
-Definitions (mirroring the linear metrics of :mod:`thermogear.dynamics.response`):
+Definitions (those of every response, :mod:`thermogear.dynamics.period_metrics`, where they mean the same):
 
 * mesh force F = Σ_s k_s⟨x − e_s⟩₊ − Σ_s k'_s⟨−x − j − e'_s⟩₊ [N] (back-flank contact counts negative);
   pair force of driving slot s: k_s⟨x − e_s⟩₊ [N]. With ``include_damping_force`` the damping force c_eff·ẋ is
@@ -22,10 +22,10 @@ from typing import Any
 
 import numpy as np
 
-from thermogear.dynamics.metrics import dynamic_factor
 from thermogear.dynamics.backlash_periodic import BacklashHistory, BacklashOrbit
 from thermogear.dynamics.backlash_problem import BacklashMeshProblem
-from thermogear.dynamics.spectra import harmonic_spectrum, time_mean_and_rms
+from thermogear.dynamics.period_metrics import contact_time_metrics, dte_statistics, dynamic_factor
+from thermogear.dynamics.spectra import harmonic_spectrum
 
 __all__ = ["dte_spectrum", "history_forces", "orbit_metrics"]
 
@@ -65,7 +65,6 @@ def orbit_metrics(orbit: BacklashOrbit, include_damping_force: bool = False, har
     total, pairs = history_forces(problem, history, include_damping_force)
     w0 = problem.static_load
     span = history.time[-1] - history.time[0]
-    mean, rms = time_mean_and_rms(history.time, history.displacement)
     max_pair = float(np.max(pairs))
     frequencies, amplitudes = dte_spectrum(orbit)
     mesh_lines = amplitudes[::orbit.period_count][: harmonics + 1]
@@ -76,18 +75,15 @@ def orbit_metrics(orbit: BacklashOrbit, include_damping_force: bool = False, har
         "residual": float(orbit.residual),
         "largest_multiplier": float(orbit.largest_multiplier),
         "static_load": w0,
-        "contact_loss_fraction": float(history.free_flight_time / span),
-        "back_side_contact": bool(history.back_contact_time > 0.0 or np.any(history.back_contacts > 0)),
-        "back_contact_fraction": float(history.back_contact_time / span),
-        "switches_per_period": float(history.switch_times.size / history.periods),
+        **contact_time_metrics(history.free_flight_time, history.back_contact_time, history.switch_times.size,
+                               span, history.periods,
+                               history.back_contact_time > 0.0 or np.any(history.back_contacts > 0)),
         "max_mesh_force": float(np.max(total)),
         "min_mesh_force": float(np.min(total)),
         "max_pair_force": max_pair,
         "kv": dynamic_factor(max_pair, w0),
         "max_mesh_force_ratio": float(np.max(total)) / w0,
-        "dte_mean": mean,
-        "dte_rms": rms,
-        "dte_peak_to_peak": float(np.ptp(history.displacement)),
+        **dte_statistics(history.time, history.displacement),
         "dte_mesh_harmonics": [float(a) for a in mesh_lines],
         "dte_spectrum_base_frequency": float(frequencies[1]) if frequencies.size > 1 else float("nan"),
     }

@@ -25,23 +25,20 @@ This module holds inputs and checks them; it has no solver logic.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 
-from thermogear.dynamics.mesh_period import MeshPeriod
-from thermogear.dynamics.problem import MeshDynamicsProblem, checked_array, checked_nodes
-from thermogear.dynamics.structure import MeshStructure, checked_structure
+from thermogear.dynamics.problem import STRUCTURE_FIELDS, MeshDynamicsProblem, MeshProblemBase, checked_array
 from thermogear.errors import ProblemError
 
 __all__ = ["DAMPING_MODES", "BacklashMeshProblem"]
 
 DAMPING_MODES = ("always", "in_contact")
-_STRUCTURE_FIELDS = ("mesh_vector", "structural_stiffness", "structural_damping", "structural_force")
 
 
 @dataclass(frozen=True)
-class BacklashMeshProblem(MeshPeriod):
+class BacklashMeshProblem(MeshProblemBase):
     """Torsional mesh model with contact loss and back-side contact over one mesh period.
 
     Parameters
@@ -82,21 +79,9 @@ class BacklashMeshProblem(MeshPeriod):
     force: float | np.ndarray
     damping_mode: str = "always"
     face_width: float = 1.0
-    mesh_vector: np.ndarray | None = None
-    structural_stiffness: np.ndarray | None = None
-    structural_damping: np.ndarray | None = None
-    structural_force: np.ndarray | None = None
-    structure: MeshStructure = field(init=False, repr=False, compare=False)
-    _force_array: np.ndarray = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
-        structure = checked_structure(self.mass, self.mesh_vector, self.structural_stiffness,
-                                      self.structural_damping, self.structural_force)
-        object.__setattr__(self, "structure", structure)
-        object.__setattr__(self, "mass", float(structure.mass[0, 0]) if structure.is_scalar_mesh else structure.mass)
-        nodes = checked_nodes(self.nodes)
-        object.__setattr__(self, "nodes", nodes)
-        n = nodes.size - 1
+        n = self._check_frame()
         stiffness = np.atleast_2d(np.array(self.pair_stiffness, dtype=float))
         shape = (stiffness.shape[0], n)
         per_pair = "one row per tooth-pair slot, one column per interval between nodes"
@@ -126,29 +111,12 @@ class BacklashMeshProblem(MeshPeriod):
             raise ProblemError("backlash", backlash, f"> −(e_s + e'_s) for every pair (local clearance {worst:.3g} m)",
                             "a pair whose deviations close the backlash would touch both flanks at once (jammed); "
                             "a pitch-type error shifts the flanks together (e' = −e), thinning adds to both")
-        damping = checked_array("damping", self.damping, (n,), "one damping value per interval")
-        if np.any(damping < 0.0):
-            raise ProblemError("damping", float(damping.min()), ">= 0 N·s/m", "negative damping injects energy")
-        object.__setattr__(self, "damping", damping)
-        force_value = np.array(self.force, dtype=float)
-        if force_value.ndim == 0:
-            force_array = np.full(n, float(force_value))
-            object.__setattr__(self, "force", float(force_value))
-        else:
-            force_array = checked_array("force", force_value, (n,), "one load per interval")
-            object.__setattr__(self, "force", force_array)
-        if not np.all(np.isfinite(force_array)) or np.any(force_array <= 0.0):
-            raise ProblemError("force", self.force, "finite, > 0 N", "the mesh is modelled under a positive load")
-        force_array = np.ascontiguousarray(force_array)
-        force_array.setflags(write=False)
-        object.__setattr__(self, "_force_array", force_array)
+        self._check_damping(n)
+        self._check_force(n, positive=True)
         if self.damping_mode not in DAMPING_MODES:
             raise ProblemError("damping_mode", self.damping_mode, " | ".join(DAMPING_MODES),
                             "damping acts always (default) or only in proportion to the pairs in contact")
-        face_width = float(self.face_width)
-        if not np.isfinite(face_width) or face_width <= 0.0:
-            raise ProblemError("face_width", self.face_width, "> 0 m", "used to express loads per unit face width")
-        object.__setattr__(self, "face_width", face_width)
+        self._check_face_width()
 
     # ---------------------------------------------------------------- derived quantities
     @property
@@ -195,15 +163,11 @@ class BacklashMeshProblem(MeshPeriod):
                                    force=load, contact_count=contact, pair_stiffness=self.pair_stiffness,
                                    face_width=self.face_width, **self.structure_fields())
 
-    def structure_fields(self) -> dict[str, object]:
-        """The structure's inputs (mesh vector, structural matrices and loads) as keyword arguments."""
-        return {name: getattr(self, name) for name in _STRUCTURE_FIELDS}
-
     def with_changes(self, **changes: object) -> BacklashMeshProblem:
         """A copy with some fields replaced (checked again)."""
         values = {name: getattr(self, name) for name in
                   ("mass", "nodes", "pair_stiffness", "pair_deviation", "back_pair_stiffness", "back_pair_deviation",
-                   "backlash", "damping", "force", "damping_mode", "face_width") + _STRUCTURE_FIELDS}
+                   "backlash", "damping", "force", "damping_mode", "face_width") + STRUCTURE_FIELDS}
         unknown = set(changes) - set(values)
         if unknown:
             raise ProblemError("with_changes", sorted(unknown), ", ".join(values), "unknown field")
@@ -235,4 +199,4 @@ class BacklashMeshProblem(MeshPeriod):
                    back_pair_stiffness=back_k, back_pair_deviation=back_e, backlash=backlash,
                    damping=problem.damping, force=problem.force, damping_mode=damping_mode,
                    face_width=problem.face_width,
-                   **{name: getattr(problem, name) for name in _STRUCTURE_FIELDS})
+                   **problem.structure_fields())

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from operator import attrgetter
+
 import numpy as np
 
 __all__ = ["MeshPeriod"]
@@ -15,15 +17,11 @@ class MeshPeriod:
     contact.
     """
 
-    @property
-    def degrees_of_freedom(self) -> int:
-        """Number of degrees of freedom n of the structure (1 for the 1-DOF mesh)."""
-        return self.structure.degrees_of_freedom
-
-    @property
-    def mesh_mass(self) -> float:
-        """Equivalent mass of the mesh deflection [kg]: me for the 1-DOF mesh, 1/(wᵀM⁻¹w) in a structure."""
-        return self.structure.mesh_mass
+    # the structure's, :class:`~thermogear.dynamics.structure.MeshStructure`
+    degrees_of_freedom = property(attrgetter("structure.degrees_of_freedom"),
+                                  doc="Number of degrees of freedom n of the structure (1 for the 1-DOF mesh).")
+    mesh_mass = property(attrgetter("structure.mesh_mass"), doc="Equivalent mass of the mesh deflection [kg]: me "
+                         "for the 1-DOF mesh, 1/(wᵀM⁻¹w) in a structure.")
 
     @property
     def interval_count(self) -> int:

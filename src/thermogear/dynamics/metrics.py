@@ -1,5 +1,7 @@
 """Metrics of one steady period of the linear mesh dynamics (Kv of Luo & Li (2020) Eq. 29, loads, equilibria,
-amplitudes, contact loss). The definitions are those of :mod:`thermogear.dynamics.response`."""
+amplitudes, contact loss). The definitions are those of :mod:`thermogear.dynamics.response`; the metrics every
+response shares (loads and Kv, DTE statistics, contact loss, frequencies) are defined once in
+:mod:`thermogear.dynamics.period_metrics`."""
 
 from __future__ import annotations
 
@@ -7,6 +9,9 @@ from typing import Any
 
 import numpy as np
 
+from thermogear.dynamics.period_metrics import (contact_loss_summary, dte_statistics, dynamic_factor,
+                                                frequency_metrics, load_metrics, multiplier_moduli,
+                                                pair_load_maximum)
 from thermogear.dynamics.problem import MeshDynamicsProblem, region_name
 from thermogear.errors import ModelLimitError
 
@@ -40,7 +45,6 @@ def _load_with_left_limits(stiffness: np.ndarray, damping: np.ndarray, offset: n
 def _contact_loss(time: np.ndarray, force: np.ndarray, minimum: float, static_load: float) -> dict[str, Any]:
     """Runs of negative mesh force: start times [s], durations [s], the minimum force [N]."""
     negative = force < 0.0
-    detected = bool(minimum < 0.0)
     starts: list[float] = []
     durations: list[float] = []
     if np.any(negative):
@@ -57,16 +61,7 @@ def _contact_loss(time: np.ndarray, force: np.ndarray, minimum: float, static_lo
                 t_end = time[b] + (time[b + 1] - time[b]) * force[b] / (force[b] - force[b + 1])
             starts.append(float(t_start))
             durations.append(float(t_end - t_start))
-    return {"detected": detected, "start_times": starts, "durations": durations,
-            "total_duration": float(sum(durations)), "min_force": float(minimum),
-            "min_force_ratio": float(minimum / static_load)}
-
-
-def dynamic_factor(max_pair_load, static_load):
-    """The dynamic load factor Kv = 1 + Δw/w0 = max pair load / w0 [-] (Luo & Li 2020 Eq. 29: Δw the largest
-    single-pair dynamic load above the static load w0), of floats or arrays [N]: the one definition every response
-    (1-DOF pair linear or backlash, drivetrain, sweep fast path) uses."""
-    return max_pair_load / static_load
+    return contact_loss_summary(minimum < 0.0, starts, durations, sum(durations), minimum, static_load)
 
 
 def compute_metrics(problem: MeshDynamicsProblem, time: np.ndarray, displacement: np.ndarray,
@@ -75,40 +70,26 @@ def compute_metrics(problem: MeshDynamicsProblem, time: np.ndarray, displacement
     """Metrics of one steady period (time from 0 to T, both ends sampled); see the module docstring."""
     x, v = displacement, velocity
     w0 = problem.static_load
-    period = problem.period
     system_offset = None if problem.pair_offset is None else problem.system_offset
     system = _load_with_left_limits(problem.stiffness, problem.damping, system_offset, interval, x, v,
                                     include_damping_force)
     system_right = system[: x.size]
-    max_system = float(np.max(system))
-    metrics: dict[str, Any] = {"static_load": w0, "static_load_n_per_mm": w0 / problem.face_width / 1e3}
-
     pair = problem.pair_arrays()
     if pair is not None:
         pair_loads = _load_with_left_limits(pair[0], pair[1], problem.pair_offset, interval, x, v,
                                             include_damping_force)
-        max_pair = float(np.max(pair_loads))
-        basis = "pair_loads"
+        single_loads = None
     else:
+        pair_loads = single_loads = None
         single = problem.contact_count == 1
         if np.any(single):
             # one pair in contact carries the whole mesh force: there the pair load is the system load
             in_single = single[interval]
             nodes = _left_limit_index(interval)
             in_single_left = single[interval[nodes - 1]]
-            mask = np.concatenate([in_single, in_single_left])
-            max_pair = float(np.max(system[mask]))
-            basis = "system_load_in_single_contact"
-        else:
-            max_pair = None
-            basis = "unavailable: no pair stiffness and no single-contact interval"
-    metrics["kv"] = None if max_pair is None else dynamic_factor(max_pair, w0)
-    metrics["kv_basis"] = basis
-    metrics["max_pair_load"] = max_pair
-    metrics["max_pair_load_n_per_mm"] = None if max_pair is None else max_pair / problem.face_width / 1e3
-    metrics["max_system_load"] = max_system
-    metrics["max_system_load_n_per_mm"] = max_system / problem.face_width / 1e3
-    metrics["max_system_load_ratio"] = max_system / w0
+            single_loads = system[np.concatenate([in_single, in_single_left])]
+    max_pair, basis = pair_load_maximum(pair_loads, single_loads)
+    metrics = load_metrics(w0, problem.face_width, max_pair, basis, float(np.max(system)))
 
     static_te = problem.static_transmission_error
     durations = problem.durations
@@ -130,15 +111,10 @@ def compute_metrics(problem: MeshDynamicsProblem, time: np.ndarray, displacement
     metrics["amplitude_per_region"] = amplitude
     metrics["deviation_per_region"] = deviation
 
-    mean_x = float(np.trapezoid(x, time) / period)
-    metrics["dte_mean"] = mean_x
-    metrics["dte_rms"] = float(np.sqrt(max(np.trapezoid((x - mean_x) ** 2, time) / period, 0.0)))
-    metrics["dte_peak_to_peak"] = float(np.max(x) - np.min(x))
+    metrics.update(dte_statistics(time, x, problem.period))  # time from 0 to T: over the mesh period T
     metrics["max_velocity"] = float(np.max(np.abs(v)))
-    metrics["natural_frequency_hz"] = problem.natural_frequency
-    metrics["mesh_frequency_hz"] = problem.mesh_frequency
-    metrics["frequency_ratio"] = problem.frequency_ratio
-    moduli = np.sort(np.abs(np.asarray(multipliers)))[::-1]
+    metrics.update(frequency_metrics(problem))
+    moduli = multiplier_moduli(multipliers)
     metrics["floquet_multipliers_abs"] = [float(m) for m in moduli]
     # undamped: det M = 1, so |μ|max >= 1 in exact arithmetic even where rounding puts it a hair below 1
     metrics["stable"] = bool(moduli[0] < 1.0 and np.any(problem.damping > 0.0))

@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import json
 from dataclasses import dataclass, field
+from operator import attrgetter
 from typing import Any
 
 import numpy as np
@@ -51,23 +52,11 @@ class NonlinearResponse:
     warnings: tuple[str, ...] = field(default=())
     flags: tuple[str, ...] = field(default=())  # checks of the model that produced it, in words
 
-    # ------------------------------------------------------------------ views
-    @property
-    def time(self) -> np.ndarray:
-        return self.orbit.history.time
-
-    @property
-    def displacement(self) -> np.ndarray:
-        """Dynamic transmission error x [m]."""
-        return self.orbit.history.displacement
-
-    @property
-    def velocity(self) -> np.ndarray:
-        return self.orbit.history.velocity
-
-    @property
-    def interval(self) -> np.ndarray:
-        return self.orbit.history.interval
+    # ------------------------------------------------------------------ views of the orbit's record
+    time = property(attrgetter("orbit.history.time"), doc="Time [s] from 0 over the orbit's N mesh periods.")
+    displacement = property(attrgetter("orbit.history.displacement"), doc="Dynamic transmission error x [m].")
+    velocity = property(attrgetter("orbit.history.velocity"), doc="Its rate ẋ [m/s].")
+    interval = property(attrgetter("orbit.history.interval"), doc="The interval of the mesh period of each record.")
 
     @property
     def valid(self) -> bool:
@@ -251,23 +240,13 @@ class NonlinearTransient:
     method: str = "nonlinear transient from rest"
     flags: tuple[str, ...] = field(default=())  # checks of the model that produced it, in words
 
-    @property
-    def metrics(self) -> dict[str, Any]:
-        """The metrics of the last mesh period, under the names of the steady response."""
-        return self.steady.metrics
-
-    @property
-    def warnings(self) -> tuple[str, ...]:
-        return self.steady.warnings
-
-    @property
-    def include_damping_force(self) -> bool:
-        return self.steady.include_damping_force
-
-    @property
-    def valid(self) -> bool:
-        """True when the motion from rest has settled on a one-period orbit by its last period."""
-        return self.steady.valid
+    # the last period's metrics, under the names of the steady response, and what they say
+    metrics = property(attrgetter("steady.metrics"), doc="The metrics of the last mesh period.")
+    warnings = property(attrgetter("steady.warnings"), doc="The last period's warnings, in words.")
+    include_damping_force = property(attrgetter("steady.include_damping_force"),
+                                     doc="Whether the pair loads include the damping force.")
+    valid = property(attrgetter("steady.valid"),
+                     doc="True when the motion from rest has settled on a one-period orbit by its last period.")
 
     def metrics_json(self) -> dict[str, Any]:
         return json_ready(self.metrics)
@@ -291,17 +270,10 @@ class NonlinearTransient:
     def plot_loads(self, other=None, ax: Any = None, periods: int | None = None):
         return self.steady.plot_loads(getattr(other, "steady", other), ax, periods)
 
-    @property
-    def time(self) -> np.ndarray:
-        return self.history.time
-
-    @property
-    def displacement(self) -> np.ndarray:
-        return self.history.displacement
-
-    @property
-    def velocity(self) -> np.ndarray:
-        return self.history.velocity
+    # the whole motion from rest
+    time = property(attrgetter("history.time"), doc="Time [s] from rest.")
+    displacement = property(attrgetter("history.displacement"), doc="Dynamic transmission error x [m].")
+    velocity = property(attrgetter("history.velocity"), doc="Its rate ẋ [m/s].")
 
 
     def to_xarray(self):

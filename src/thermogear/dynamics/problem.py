@@ -17,9 +17,13 @@ from thermogear.dynamics.mesh_period import MeshPeriod
 from thermogear.dynamics.structure import MeshStructure, checked_structure
 from thermogear.errors import ProblemError
 
-__all__ = ["MeshDynamicsProblem", "region_name"]
+__all__ = ["STRUCTURE_FIELDS", "MeshDynamicsProblem", "MeshProblemBase", "region_name"]
 
 _REGION_NAMES = {0: "no_contact", 1: "single", 2: "double", 3: "triple", 4: "quadruple"}
+
+
+#: The structure's inputs of a mesh problem (:class:`MeshProblemBase`), by name.
+STRUCTURE_FIELDS = ("mesh_vector", "structural_stiffness", "structural_damping", "structural_force")
 
 
 def region_name(contact_count: int) -> str:
@@ -63,7 +67,72 @@ def checked_nodes(value: object) -> np.ndarray:
 
 
 @dataclass(frozen=True)
-class MeshDynamicsProblem(MeshPeriod):
+class MeshProblemBase(MeshPeriod):
+    """What the linear and the backlash mesh problem share: the structure's inputs and the input checks.
+
+    The structure's inputs (keyword-only: a subclass's own fields come first in its ``__init__``) are w, K₀, C₀
+    and f₀ of :class:`~.structure.MeshStructure`; ``structure`` holds them checked. A subclass has ``mass``
+    (scalar or a mass matrix), ``nodes``, ``damping``, ``force`` and ``face_width``; each check below stores the
+    checked, read-only value in place of the input.
+    """
+
+    mesh_vector: np.ndarray | None = field(default=None, kw_only=True)
+    structural_stiffness: np.ndarray | None = field(default=None, kw_only=True)
+    structural_damping: np.ndarray | None = field(default=None, kw_only=True)
+    structural_force: np.ndarray | None = field(default=None, kw_only=True)
+    structure: MeshStructure = field(init=False, repr=False, compare=False)
+    _force_array: np.ndarray = field(init=False, repr=False, compare=False)
+
+    def structure_fields(self) -> dict[str, object]:
+        """The structure's inputs (mesh vector, structural matrices and loads) as keyword arguments."""
+        return {name: getattr(self, name) for name in STRUCTURE_FIELDS}
+
+    def _check_frame(self) -> int:
+        """Check and store the structure (:func:`~.structure.checked_structure`), the mass (a float for the 1-DOF
+        mesh) and the nodes; return the number of intervals n."""
+        structure = checked_structure(self.mass, self.mesh_vector, self.structural_stiffness,
+                                      self.structural_damping, self.structural_force)
+        object.__setattr__(self, "structure", structure)
+        object.__setattr__(self, "mass", float(structure.mass[0, 0]) if structure.is_scalar_mesh else structure.mass)
+        nodes = checked_nodes(self.nodes)
+        object.__setattr__(self, "nodes", nodes)
+        return nodes.size - 1
+
+    def _check_damping(self, n: int) -> None:
+        """``damping`` (n,) [N·s/m], >= 0 on every interval."""
+        damping = checked_array("damping", self.damping, (n,), "one damping value per interval")
+        if np.any(damping < 0.0):
+            raise ProblemError("damping", float(damping.min()), ">= 0 N·s/m", "negative damping injects energy")
+        object.__setattr__(self, "damping", damping)
+
+    def _check_force(self, n: int, positive: bool) -> None:
+        """``force`` kept a float where it is one (a constant load) or checked as (n,) [N]; its per-interval values
+        stored read-only as ``_force_array``; every value > 0 where ``positive``."""
+        force_value = np.array(self.force, dtype=float)
+        if force_value.ndim == 0:
+            force_array = np.full(n, float(force_value))
+            object.__setattr__(self, "force", float(force_value))
+        else:
+            force_array = checked_array("force", force_value, (n,), "one load per interval")
+            object.__setattr__(self, "force", force_array)
+        if not np.all(np.isfinite(force_array)):
+            raise ProblemError("force", self.force, "finite [N]", "the static load must be a number")
+        if positive and np.any(force_array <= 0.0):
+            raise ProblemError("force", float(force_array.min()), "> 0 N",
+                               "the mesh is modelled under a positive transmitted load")
+        force_array.setflags(write=False)
+        object.__setattr__(self, "_force_array", force_array)
+
+    def _check_face_width(self) -> None:
+        """``face_width`` b [m], finite and > 0."""
+        face_width = float(self.face_width)
+        if not np.isfinite(face_width) or face_width <= 0.0:
+            raise ProblemError("face_width", self.face_width, "> 0 m", "used to express loads per unit face width")
+        object.__setattr__(self, "face_width", face_width)
+
+
+@dataclass(frozen=True)
+class MeshDynamicsProblem(MeshProblemBase):
     """Linear time-periodic model of a gear mesh over one mesh period (Luo & Li Eqs. 5–6), alone or in a structure.
 
     The 1-DOF mesh me·ẍ + c(τ)·ẋ + k(τ)·x = w(τ) by default; with a mass matrix the mesh sits in a structure of n
@@ -110,42 +179,16 @@ class MeshDynamicsProblem(MeshPeriod):
     pair_damping: np.ndarray | None = None
     face_width: float = 1.0
     pair_deviation: np.ndarray | None = None
-    mesh_vector: np.ndarray | None = None
-    structural_stiffness: np.ndarray | None = None
-    structural_damping: np.ndarray | None = None
-    structural_force: np.ndarray | None = None
-    structure: MeshStructure = field(init=False, repr=False, compare=False)
-    _force_array: np.ndarray = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
-        structure = checked_structure(self.mass, self.mesh_vector, self.structural_stiffness,
-                                      self.structural_damping, self.structural_force)
-        object.__setattr__(self, "structure", structure)
-        object.__setattr__(self, "mass", float(structure.mass[0, 0]) if structure.is_scalar_mesh else structure.mass)
-        nodes = checked_nodes(self.nodes)
-        object.__setattr__(self, "nodes", nodes)
-        n = nodes.size - 1
+        n = self._check_frame()
         stiffness = checked_array("stiffness", self.stiffness, (n,))
         if np.any(stiffness <= 0.0):
             raise ProblemError("stiffness", float(stiffness.min()), "> 0 N/m on every interval",
                             "the linear mesh model needs at least one pair in contact; zero stiffness is contact "
                             "loss, which this linear model does not represent")
-        damping = checked_array("damping", self.damping, (n,))
-        if np.any(damping < 0.0):
-            raise ProblemError("damping", float(damping.min()), ">= 0 N·s/m", "negative damping injects energy")
-        force_value = np.array(self.force, dtype=float)
-        if force_value.ndim == 0:
-            force_array = np.full(n, float(force_value))
-            object.__setattr__(self, "force", float(force_value))
-        else:
-            force_array = checked_array("force", force_value, (n,))
-            object.__setattr__(self, "force", force_array)
-        if not np.all(np.isfinite(force_array)):
-            raise ProblemError("force", self.force, "finite [N]", "the static load must be a number")
-        if structure.is_scalar_mesh and np.any(force_array <= 0.0):
-            raise ProblemError("force", float(force_array.min()), "> 0 N",
-                            "the mesh is modelled under a positive transmitted load")
-        force_array.setflags(write=False)
+        self._check_damping(n)
+        self._check_force(n, positive=self.structure.is_scalar_mesh)
         contact = np.array(self.contact_count, copy=True)
         if contact.shape != (n,):
             raise ProblemError("contact_count", f"array of shape {contact.shape}", f"shape ({n},)",
@@ -156,9 +199,7 @@ class MeshDynamicsProblem(MeshPeriod):
         contact = contact.astype(np.int64)
         contact.setflags(write=False)
         object.__setattr__(self, "stiffness", stiffness)
-        object.__setattr__(self, "damping", damping)
         object.__setattr__(self, "contact_count", contact)
-        object.__setattr__(self, "_force_array", force_array)
         if self.pair_stiffness is not None:
             pair_k = np.atleast_2d(np.array(self.pair_stiffness, dtype=float))
             pair_k = checked_array("pair_stiffness", pair_k, (pair_k.shape[0], n))
@@ -187,10 +228,7 @@ class MeshDynamicsProblem(MeshPeriod):
             deviation = checked_array("pair_deviation", np.atleast_2d(np.array(self.pair_deviation, dtype=float)),
                                         self.pair_stiffness.shape)
             object.__setattr__(self, "pair_deviation", deviation)
-        face_width = float(self.face_width)
-        if not np.isfinite(face_width) or face_width <= 0.0:
-            raise ProblemError("face_width", self.face_width, "> 0 m", "used to express loads per unit face width")
-        object.__setattr__(self, "face_width", face_width)
+        self._check_face_width()
 
     # ---------------------------------------------------------------- derived quantities
     @property

@@ -44,6 +44,11 @@ __all__ = ["DynamicResponse", "compute_metrics", "response_from_orbit", "respons
 _QUANTITIES = ("displacement", "velocity", "system_load", "pair_load")
 
 
+def _at_samples(name: str, doc: str) -> property:
+    """A property of a :class:`DynamicResponse`: its problem's per-interval ``name`` at each sample."""
+    return property(lambda response: getattr(response.problem, name)[response.interval], doc=doc)
+
+
 @dataclass(frozen=True)
 class DynamicResponse:
     """Steady dynamic response over one mesh period, its metrics, and optionally the whole transient.
@@ -74,25 +79,12 @@ class DynamicResponse:
         """True when the linear model holds: stable and no contact loss."""
         return bool(self.metrics["valid"])
 
-    @property
-    def stiffness(self) -> np.ndarray:
-        """k at each sample [N/m] (right-continuous at nodes)."""
-        return self.problem.stiffness[self.interval]
-
-    @property
-    def damping(self) -> np.ndarray:
-        """c at each sample [N·s/m]."""
-        return self.problem.damping[self.interval]
-
-    @property
-    def contact_count(self) -> np.ndarray:
-        """Pairs in contact at each sample."""
-        return self.problem.contact_count[self.interval]
-
-    @property
-    def static_transmission_error(self) -> np.ndarray:
-        """w/k at each sample [m] (the equilibrium the response oscillates about)."""
-        return self.problem.static_transmission_error[self.interval]
+    # the problem's per-interval coefficients at each sample (right-continuous at nodes)
+    stiffness = _at_samples("stiffness", "k at each sample [N/m] (right-continuous at nodes).")
+    damping = _at_samples("damping", "c at each sample [N·s/m].")
+    contact_count = _at_samples("contact_count", "Pairs in contact at each sample.")
+    static_transmission_error = _at_samples("static_transmission_error", "w/k at each sample [m] (the equilibrium "
+                                            "the response oscillates about).")
 
     @property
     def _system_offset(self) -> np.ndarray | None:

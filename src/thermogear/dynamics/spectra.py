@@ -32,14 +32,16 @@ def right_continuous(time: np.ndarray, values: np.ndarray) -> tuple[np.ndarray, 
     return time[keep], values[..., keep]
 
 
-def time_mean_and_rms(time: np.ndarray, values: np.ndarray) -> tuple[float, float]:
-    """Time mean and RMS about it [unit of ``values``] of a signal sampled on increasing ``time`` [s].
+def time_mean_and_rms(time: np.ndarray, values: np.ndarray, span: float | None = None) -> tuple[float, float]:
+    """Time mean and RMS about it [unit of ``values``] of a signal sampled on increasing ``time`` [s], over ``span``
+    [s]: the record's, time[-1] − time[0], unless given (the nominal period of a record of one period).
 
     Trapezoidal rule on the samples as they are: a jump sampled twice at one time is a segment of zero width and
     carries no weight, so the integral of a piecewise-smooth signal converges as O(h²) whatever the jumps."""
     time = np.asarray(time, dtype=float)
     values = np.asarray(values, dtype=float)
-    span = time[-1] - time[0]
+    if span is None:
+        span = time[-1] - time[0]
     mean = float(np.trapezoid(values, time) / span)
     return mean, float(np.sqrt(max(np.trapezoid((values - mean) ** 2, time) / span, 0.0)))
 

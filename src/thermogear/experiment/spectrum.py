@@ -179,14 +179,22 @@ def spectrum(signal: Signal, method: str = "welch", segment_length: int | None =
     overlap:
         Fraction of a segment shared with the next, in [0, 1).
     """
-    values, rate = signal.values, signal.sampling_rate_hz
-    if method == "fft":
-        from scipy import signal as scipy_signal  # noqa: PLC0415
-        frequency, power = scipy_signal.periodogram(values, fs=rate, window=WINDOW, detrend="constant",
-                                                    scaling="spectrum")
-        return Spectrum(frequency, power, "fft", values.size, 1, rate)
-    if method != "welch":
+    estimate = SPECTRUM_METHODS.get(method)
+    if estimate is None:
         raise SignalError(f"spectrum method '{method}': allowed 'welch' or 'fft'")
+    return estimate(signal.values, signal.sampling_rate_hz, segment_length, overlap)
+
+
+def _periodogram(values: np.ndarray, rate: float, segment_length: int | None, overlap: float) -> Spectrum:
+    """One Hann-windowed FFT over the whole record (``"fft"``; the segment options do not apply)."""
+    from scipy import signal as scipy_signal  # noqa: PLC0415
+    frequency, power = scipy_signal.periodogram(values, fs=rate, window=WINDOW, detrend="constant",
+                                                scaling="spectrum")
+    return Spectrum(frequency, power, "fft", values.size, 1, rate)
+
+
+def _welch(values: np.ndarray, rate: float, segment_length: int | None, overlap: float) -> Spectrum:
+    """Welch's average of Hann-windowed segments (``"welch"``)."""
     length = max(16, values.size // 4) if segment_length is None else int(segment_length)
     if not 16 <= length <= values.size:
         raise SignalError(f"segment length {length}: allowed 16 … {values.size} samples (the record)")
@@ -198,6 +206,10 @@ def spectrum(signal: Signal, method: str = "welch", segment_length: int | None =
                                           noverlap=length - step, detrend="constant", scaling="spectrum")
     segments = 1 + (values.size - length) // step
     return Spectrum(frequency, power, "welch", length, segments, rate)
+
+
+#: The spectrum estimates by ``method`` name: the one place the names are compared.
+SPECTRUM_METHODS = {"welch": _welch, "fft": _periodogram}
 
 
 def mean_amplitude(values: np.ndarray) -> float:

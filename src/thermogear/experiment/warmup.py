@@ -168,6 +168,11 @@ class OperatingState:
                 "response": self.response}
 
 
+def _over_states(name: str, doc: str) -> property:
+    """A property of a :class:`WarmupResult`: the ``name`` of each of its states, in time order, as an array."""
+    return property(lambda result: np.array([getattr(state, name) for state in result.states]), doc=doc)
+
+
 @dataclass(frozen=True)
 class WarmupResult:
     """The operating states of a warm-up, in time order."""
@@ -179,21 +184,10 @@ class WarmupResult:
     face_width: float
     states: tuple[OperatingState, ...] = field(default=())
 
-    @property
-    def time_s(self) -> np.ndarray:
-        return np.array([state.time_s for state in self.states])
-
-    @property
-    def temperature_c(self) -> np.ndarray:
-        return np.array([state.temperature_c for state in self.states])
-
-    @property
-    def mesh_stiffness_mean(self) -> np.ndarray:
-        return np.array([state.mesh_stiffness_mean for state in self.states])
-
-    @property
-    def natural_frequency_hz(self) -> np.ndarray:
-        return np.array([state.natural_frequency_hz for state in self.states])
+    time_s = _over_states("time_s", "Time of each state [s].")
+    temperature_c = _over_states("temperature_c", "Temperature of each state [°C].")
+    mesh_stiffness_mean = _over_states("mesh_stiffness_mean", "Mean mesh stiffness of each state [N/m].")
+    natural_frequency_hz = _over_states("natural_frequency_hz", "Natural frequency of each state [Hz].")
 
     def as_dict(self) -> dict[str, Any]:
         return {"case": self.case_name, "model": self.model, "temperature_history": self.history_source,

@@ -10,6 +10,7 @@ stress); scikit-fem's ``skfem.models.elasticity``.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import Callable, Literal
 
 import numpy as np
@@ -21,20 +22,39 @@ from skfem.models.elasticity import lame_parameters, linear_elasticity, plane_st
 Plane = Literal["stress", "strain"]
 
 
+@dataclass(frozen=True)
+class PlaneAssumption:
+    """A 2-D elasticity assumption (``[fem] plane``, module docstring): ``lame(E, ν)`` → (λ*, μ) [Pa],
+    ``thermal_stress(E, ν)`` → c_th [Pa], and the ``other`` assumption (the FE check's comparison run)."""
+
+    name: str
+    lame: Callable[[float, float], tuple[float, float]]
+    thermal_stress: Callable[[float, float], float]
+    other: str
+
+
+#: The plane assumptions by name: the one place the names are compared.
+PLANE_ASSUMPTIONS: dict[str, PlaneAssumption] = {assumption.name: assumption for assumption in (
+    PlaneAssumption("stress", plane_stress, lambda youngs, poisson: youngs / (1.0 - poisson), "strain"),
+    PlaneAssumption("strain", lame_parameters, lambda youngs, poisson: youngs / (1.0 - 2.0 * poisson), "stress"))}
+
+
+def plane_assumption(plane: str) -> PlaneAssumption:
+    """The plane assumption called ``plane``; ValueError for any other name."""
+    assumption = PLANE_ASSUMPTIONS.get(plane)
+    if assumption is None:
+        raise ValueError(f"plane must be 'stress' or 'strain', not {plane!r}")
+    return assumption
+
+
 def plane_lame_parameters(youngs_modulus: float, poisson_ratio: float, plane: Plane) -> tuple[float, float]:
     """(λ*, μ) [Pa] of the 2-D constitutive law (module docstring)."""
-    if plane == "stress":
-        return plane_stress(youngs_modulus, poisson_ratio)
-    if plane == "strain":
-        return lame_parameters(youngs_modulus, poisson_ratio)
-    raise ValueError(f"plane must be 'stress' or 'strain', not {plane!r}")
+    return plane_assumption(plane).lame(youngs_modulus, poisson_ratio)
 
 
 def thermal_stress_factor(youngs_modulus: float, poisson_ratio: float, plane: Plane) -> float:
     """c_th [Pa]: isotropic in-plane thermal stress per unit α ΔT of a fully restrained 2-D body."""
-    if plane == "stress":
-        return youngs_modulus / (1.0 - poisson_ratio)
-    return youngs_modulus / (1.0 - 2.0 * poisson_ratio)
+    return plane_assumption(plane).thermal_stress(youngs_modulus, poisson_ratio)
 
 
 def vector_basis(mesh: skfem.Mesh, order: int = 2) -> skfem.Basis:
@@ -69,26 +89,26 @@ def thermal_load(basis: skfem.Basis, youngs_modulus: float, poisson_ratio: float
     return form.assemble(basis)
 
 
-def body_force_load(basis: skfem.Basis, force: Callable[[np.ndarray, np.ndarray], tuple]) -> np.ndarray:
-    """Load vector of a body force f(x, y) = (f_x, f_y) [N/m³]."""
+def _vector_load(basis: skfem.AbstractBasis, density: Callable[[np.ndarray, np.ndarray], tuple]) -> np.ndarray:
+    """Load vector ∫ (d_x v_x + d_y v_y) of a vector load density d(x, y) = (d_x, d_y) over the basis' cells (a
+    body force) or facets (a traction)."""
 
     @skfem.LinearForm
     def form(v, w):
-        fx, fy = force(w.x[0], w.x[1])
-        return fx * v[0] + fy * v[1]
+        dx, dy = density(w.x[0], w.x[1])
+        return dx * v[0] + dy * v[1]
 
     return form.assemble(basis)
 
 
+def body_force_load(basis: skfem.Basis, force: Callable[[np.ndarray, np.ndarray], tuple]) -> np.ndarray:
+    """Load vector of a body force f(x, y) = (f_x, f_y) [N/m³]."""
+    return _vector_load(basis, force)
+
+
 def traction_load(facet_basis: skfem.FacetBasis, traction: Callable[[np.ndarray, np.ndarray], tuple]) -> np.ndarray:
     """Load vector of a surface traction t(x, y) = (t_x, t_y) [N/m²] on the facet basis' facets."""
-
-    @skfem.LinearForm
-    def form(v, w):
-        tx, ty = traction(w.x[0], w.x[1])
-        return tx * v[0] + ty * v[1]
-
-    return form.assemble(facet_basis)
+    return _vector_load(facet_basis, traction)
 
 
 def solve_many(matrix, loads: np.ndarray, fixed_dofs: np.ndarray, fixed_values: np.ndarray | None = None) -> np.ndarray:
@@ -108,5 +128,5 @@ def solve_many(matrix, loads: np.ndarray, fixed_dofs: np.ndarray, fixed_values: 
     return solution[:, 0] if single else solution
 
 
-__all__ = ["body_force_load", "plane_lame_parameters", "solve_many", "stiffness_matrix", "thermal_load",
+__all__ = ["PLANE_ASSUMPTIONS", "PlaneAssumption", "body_force_load", "plane_assumption", "plane_lame_parameters", "solve_many", "stiffness_matrix", "thermal_load",
            "thermal_stress_factor", "traction_load", "vector_basis"]

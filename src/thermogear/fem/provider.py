@@ -3,8 +3,8 @@
 
 The thermal chain finds these two functions by name (:mod:`thermogear.composition`); importing this module
 registers nothing. Both answers come from one memoised :func:`thermogear.fem.verification.cached_analysis` per case
-document. They keep the whole case: the providers' protocol (``provider(case)``, shared with the gearbox thermal
-model's) hands them one, and each resolves it into the FE inputs (:func:`thermogear.fem.inputs.fem_inputs`).
+document. Each asks for the piece ``fem_inputs`` of the case (:mod:`thermogear.case_pieces`): the FE inputs its one
+resolver, :func:`thermogear.fem.inputs.fem_inputs`, makes of the case.
 """
 
 from __future__ import annotations
@@ -12,24 +12,22 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
-    from thermogear.case import Case
+    from thermogear.fem.inputs import FemInputs
     from thermogear.temperature_source import TemperatureField
 
 
-def fem_temperature_field(case: "Case") -> "TemperatureField":
+def fem_temperature_field(fem_inputs: "FemInputs") -> "TemperatureField":
     """The FE bulk temperature of both gears as a TemperatureField (flank along Γ, base circle, bore)."""
-    from thermogear.fem.inputs import fem_inputs  # noqa: PLC0415
     from thermogear.fem.verification import cached_analysis  # noqa: PLC0415
 
-    return cached_analysis(fem_inputs(case)).temperature_field
+    return cached_analysis(fem_inputs).temperature_field
 
 
-def fem_x_te(case: "Case") -> float:
+def fem_x_te(fem_inputs: "FemInputs") -> float:
     """X_te from the FE elastic and thermo-elastic runs, averaged along the path (verification module)."""
-    from thermogear.fem.inputs import fem_inputs  # noqa: PLC0415
     from thermogear.fem.verification import cached_analysis  # noqa: PLC0415
 
-    return cached_analysis(fem_inputs(case)).x_te
+    return cached_analysis(fem_inputs).x_te
 
 
 __all__ = ["fem_temperature_field", "fem_x_te"]

@@ -44,6 +44,20 @@ DEFAULT_OIL_SPECIFIC_HEAT = 2000.0  # [J/(kg K)] (Luo & Li Table 1)
 INWARD_OFFSET = 2e-6
 
 
+@dataclass(frozen=True)
+class BoreCondition:
+    """The thermal condition at the bore (``[fem] bore``): ``convective`` (a heat-transfer coefficient, given or the
+    end face's) or adiabatic (no flux)."""
+
+    name: str
+    convective: bool
+
+
+#: The bore conditions by name: the one place the names are compared.
+BORE_CONDITIONS: dict[str, BoreCondition] = {condition.name: condition for condition in (
+    BoreCondition("adiabatic", convective=False), BoreCondition("convective", convective=True))}
+
+
 def gear_of(gear_pair, which: str):
     """The ``which`` gear (``"pinion"`` or ``"wheel"``) of a gear pair."""
     if which not in ("pinion", "wheel"):
@@ -101,7 +115,7 @@ def convection_coefficients(gear_pair, oil: "Lubricant", section: "LubricantSect
         given = getattr(settings, f"{name}_h_w_per_m2_k")
         values[name] = float(correlation if given is None else given)
         sources[name] = label if given is None else "given"
-    if settings.bore == "convective":
+    if BORE_CONDITIONS[settings.bore].convective:
         given = settings.bore_h_w_per_m2_k
         values["bore"] = values["end_face"] if given is None else float(given)
         sources["bore"] = "end-face coefficient" if given is None else "given"

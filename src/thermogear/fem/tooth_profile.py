@@ -170,6 +170,28 @@ def tooth_half_profile(gear: Gear, flank_spacing: float, fillet_spacing: float, 
     return pieces
 
 
+def _checked_spacings(gear: Gear, bore_radius: float, body: str, flank_spacing: float | None,
+                      fillet_spacing: float | None, tip_spacing: float | None, rim_spacing: float | None
+                      ) -> tuple[float, float, float, float]:
+    """(flank, fillet, tip, rim) spacings [m], each the given one or its default m/20, m/20, m/10, m/2.5, after
+    checking the bore radius [m] of the FE ``body`` ("sector" or "gear") lies inside the root circle."""
+    if not 0.0 < bore_radius < gear.root_radius:
+        raise CaseError("bore_radius_mm", bore_radius * 1e3, f"(0, {gear.root_radius * 1e3:.3f})",
+                        f"the FE {body} runs from the bore to the tip; a solid gear needs a nominal bore")
+    module = gear.module
+    return (flank_spacing or module / 20.0, fillet_spacing or module / 20.0, tip_spacing or module / 10.0,
+            rim_spacing or module / 2.5)
+
+
+def _full_tooth_pieces(gear: Gear, flank_spacing: float, fillet_spacing: float, tip_spacing: float) -> list:
+    """One full tooth from the left space centre to the right one, oriented: the mirrored half (reversed) and the
+    half, in walking order left root (ψ = −π/z) → left fillet → left flank → left tip → right tip → right flank →
+    right fillet → right root (ψ = +π/z)."""
+    half = tooth_half_profile(gear, flank_spacing, fillet_spacing, tip_spacing)
+    left = [(-x, y, "passive_flank" if tag == "active_flank" else tag) for x, y, tag in half]
+    return _orient_pieces(left + [(x[::-1], y[::-1], tag) for x, y, tag in reversed(half)])
+
+
 def tooth_sector_outline(gear: Gear, bore_radius: float, teeth: int = 1, flank_spacing: float | None = None,
                          fillet_spacing: float | None = None, tip_spacing: float | None = None,
                          rim_spacing: float | None = None) -> ToothOutline:
@@ -180,21 +202,9 @@ def tooth_sector_outline(gear: Gear, bore_radius: float, teeth: int = 1, flank_s
     if teeth < 1 or teeth % 2 == 0 or teeth > gear.teeth:
         raise CaseError("fem.sector_teeth", teeth, f"an odd number in [1, {gear.teeth}]",
                         "the loaded tooth sits in the middle of the sector")
-    if not 0.0 < bore_radius < gear.root_radius:
-        raise CaseError("bore_radius_mm", bore_radius * 1e3, f"(0, {gear.root_radius * 1e3:.3f})",
-                        "the FE sector runs from the bore to the tip; a solid gear needs a nominal bore")
-    module = gear.module
-    flank_spacing = flank_spacing or module / 20.0
-    fillet_spacing = fillet_spacing or module / 20.0
-    tip_spacing = tip_spacing or module / 10.0
-    rim_spacing = rim_spacing or module / 2.5
-    half = tooth_half_profile(gear, flank_spacing, fillet_spacing, tip_spacing)
-    # one full tooth from the left space centre to the right space centre: mirrored half (reversed) + half
-    left = [(-x, y, "passive_flank" if tag == "active_flank" else tag) for x, y, tag in half]
-    # walking order: left root (ψ = −π/z) → left fillet → left flank → left tip → right tip → right flank →
-    # right fillet → right root (ψ = +π/z)
-    ordered = left + [(x[::-1], y[::-1], tag) for x, y, tag in reversed(half)]
-    ordered = _orient_pieces(ordered)
+    flank_spacing, fillet_spacing, tip_spacing, rim_spacing = _checked_spacings(
+        gear, bore_radius, "sector", flank_spacing, fillet_spacing, tip_spacing, rim_spacing)
+    ordered = _full_tooth_pieces(gear, flank_spacing, fillet_spacing, tip_spacing)
     points, tags = [], []
     centre_index = teeth // 2
     for index in range(teeth):
@@ -239,21 +249,11 @@ def full_gear_outline(gear: Gear, bore_radius: float, fine_teeth: int = 3, flank
     """Outline of the whole gear: all z teeth (outer loop) and the bore (inner loop, a hole). The ``fine_teeth``
     teeth around the loaded one (centred on +y) get the given spacings, the others ``coarse_factor`` times
     coarser. Tags as :func:`tooth_sector_outline` (no cut faces)."""
-    if not 0.0 < bore_radius < gear.root_radius:
-        raise CaseError("bore_radius_mm", bore_radius * 1e3, f"(0, {gear.root_radius * 1e3:.3f})",
-                        "the FE gear runs from the bore to the tip; a solid gear needs a nominal bore")
-    module = gear.module
-    flank_spacing = flank_spacing or module / 20.0
-    fillet_spacing = fillet_spacing or module / 20.0
-    tip_spacing = tip_spacing or module / 10.0
-    rim_spacing = rim_spacing or module / 2.5
-
-    def tooth_pieces(scale: float):
-        half = tooth_half_profile(gear, flank_spacing * scale, fillet_spacing * scale, tip_spacing * scale)
-        left = [(-x, y, "passive_flank" if tag == "active_flank" else tag) for x, y, tag in half]
-        return _orient_pieces(left + [(x[::-1], y[::-1], tag) for x, y, tag in reversed(half)])
-
-    fine, coarse = tooth_pieces(1.0), tooth_pieces(coarse_factor)
+    flank_spacing, fillet_spacing, tip_spacing, rim_spacing = _checked_spacings(
+        gear, bore_radius, "gear", flank_spacing, fillet_spacing, tip_spacing, rim_spacing)
+    fine = _full_tooth_pieces(gear, flank_spacing, fillet_spacing, tip_spacing)
+    coarse = _full_tooth_pieces(gear, flank_spacing * coarse_factor, fillet_spacing * coarse_factor,
+                                tip_spacing * coarse_factor)
     points, tags = [], []
     reach = fine_teeth // 2
     for index in range(gear.teeth):

@@ -24,6 +24,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from thermogear.errors import ModelAssumptionWarning
+from thermogear.fem.elasticity import plane_assumption
 from thermogear.fem.tooth_elastic import (ToothDeflection, contact_point_geometry, own_roll_of, tooth_deflection,
                                           tooth_model)
 from thermogear.fem.tooth_heat import ToothTemperature, tooth_temperature
@@ -188,7 +189,7 @@ class FemAnalysis:
             "compliance_fe_vs_pem_percent": {
                 "max_abs": float(np.max(np.abs(differences))), "mean_abs": float(np.mean(np.abs(differences))),
                 "pinion": pinion.difference_percent.tolist(), "wheel": wheel.difference_percent.tolist(),
-                "other_plane": {"plane": "strain" if self.settings.plane == "stress" else "stress",
+                "other_plane": {"plane": plane_assumption(self.settings.plane).other,
                                 "max_abs": float(np.max(np.abs(other))), "mean_abs": float(np.mean(np.abs(other)))}},
             "tooth_stiffness_n_per_mm_um": {
                 g: {"fe": (per_width / self.deflection[g].compliance).tolist(),
@@ -249,7 +250,7 @@ def fem_analysis(inputs: "FemInputs", refinement: float | None = None, settings:
     temperatures = {g: tooth_temperature(inputs, g, settings, refinement) for g in GEARS}
     field_ = temperature_field_from_fem(pair, inputs.reference_c, temperatures)
     timings["heat"] = time.perf_counter() - start
-    other_plane = "strain" if settings.plane == "stress" else "stress"
+    other_plane = plane_assumption(settings.plane).other
     deflection, deflection_other, thermal, expansion_fe, expansion_an, uniform_fe, uniform_an = ({} for _ in range(7))
     start = time.perf_counter()
     for gear in GEARS:

@@ -33,8 +33,21 @@ __all__ = ["BEARING_CONSTANTS", "BEARING_TYPES", "drivetrain_bearing_loads", "dr
 
 #: Built-in bearing constants by designation (SKF model, catalogue units).
 BEARING_CONSTANTS = {"NJ406": (RollingBearing.cylindrical_roller, NJ406_CONSTANTS)}
-BEARING_TYPES = {"cylindrical_roller": RollingBearing.cylindrical_roller,
-                 "deep_groove_ball": RollingBearing.deep_groove_ball}
+
+
+def _cylindrical_roller(sliding_constants, **constants) -> RollingBearing:
+    """A cylindrical roller bearing of an entry's constants: its two sliding constants (S1, S2)."""
+    return RollingBearing.cylindrical_roller(sliding_constants=tuple(sliding_constants), **constants)
+
+
+def _deep_groove_ball(sliding_constants, **constants) -> RollingBearing:
+    """A deep-groove ball bearing of an entry's constants: the first sliding constant S1 (no axial load)."""
+    return RollingBearing.deep_groove_ball(sliding_constant=sliding_constants[0], **constants)
+
+
+#: The bearing types of an entry's ``type`` by name, each ``factory(sliding_constants, **constants)``: the one place
+#: the names are compared.
+BEARING_TYPES = {"cylindrical_roller": _cylindrical_roller, "deep_groove_ball": _deep_groove_ball}
 
 
 def rolling_bearing(entry) -> RollingBearing:
@@ -43,13 +56,9 @@ def rolling_bearing(entry) -> RollingBearing:
     if entry.designation is not None:
         factory, constants = BEARING_CONSTANTS[entry.designation]
         return factory(**constants)
-    factory = BEARING_TYPES[entry.type]
-    constants = dict(bore_mm=entry.bore_mm, outside_mm=entry.outside_mm, width_mm=entry.width_mm,
-                     rolling_constant=entry.rolling_constant, geometry_constant=entry.geometry_constant,
-                     drag_variable=entry.drag_variable or 0.0)
-    if entry.type == "deep_groove_ball":
-        return factory(sliding_constant=entry.sliding_constants[0], **constants)
-    return factory(sliding_constants=tuple(entry.sliding_constants), **constants)
+    return BEARING_TYPES[entry.type](entry.sliding_constants, bore_mm=entry.bore_mm, outside_mm=entry.outside_mm,
+                                     width_mm=entry.width_mm, rolling_constant=entry.rolling_constant,
+                                     geometry_constant=entry.geometry_constant, drag_variable=entry.drag_variable or 0.0)
 
 
 def mounted_bearing_power(mounted: MountedBearing, pinion_rpm: float, wheel_rpm: float, viscosity_mm2_s: float,

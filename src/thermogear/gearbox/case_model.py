@@ -25,8 +25,10 @@ from thermogear import warning_scope
 from thermogear.case import cached_per_case
 from thermogear.errors import CaseError
 from thermogear.gearbox.bearing_entries import drivetrain_mounted_bearings, rolling_bearing
+from thermogear.gearbox.shaft_conduction import drivetrain_shaft_spans
 from thermogear.gearbox.injection import OilJet
 from thermogear.friction_models import friction_law
+from thermogear.lubrication_methods import lubrication_method
 from thermogear.gearbox.description import (GearboxDescription, GearboxOperatingPoint, Housing, LipSeal,
                                             MountedBearing, OilConditioning)
 from thermogear.gearbox.input_checks import check_gearbox_inputs, housing_box, oil_floor_and_level
@@ -57,13 +59,12 @@ def gearbox_section(section: "GearboxSection | None") -> "GearboxSection":
     return section
 
 
-def check_gearbox_section(case: "Case") -> None:
+def check_gearbox_section(gearbox_model: "GearboxThermalModel | None") -> None:
     """Load-time check of a ``[gearbox]`` section under any temperature model: the description builds.
 
-    Keeps the Case: it is a load-time check (``check(case)``, :data:`thermogear.composition.CASE_CHECKS`) that
-    resolves the case's description."""
-    if getattr(case, "gearbox", None) is not None:
-        gearbox_model_from_case(case)  # its description builds (memoised: every later stage asks for this one)
+    A load-time check (:data:`thermogear.composition.CASE_CHECKS`) whose work is done by asking for the piece
+    ``gearbox_model`` (:mod:`thermogear.case_pieces`): resolving it builds the case's description (memoised: every
+    later stage asks for this one), None for a case without ``[gearbox]``."""
 
 
 def housing_expansion(housing: "HousingSection", gearbox: "GearboxSection | None") -> float:
@@ -116,12 +117,12 @@ def gearbox_description(gearbox: "GearboxSection | None", pair: "GearPair", mate
     def disc_mass(gear) -> float:
         return material.density * math.pi * (gear.tip_radius**2 - gear.bore_radius**2) * gear.face_width
 
-    injection = section.oil.lubrication == "injection"
-    default_immersion = 0.0 if injection else pair.operating_pitch_radii[1]
+    lubrication = lubrication_method(section.oil.lubrication)
+    default_immersion = pair.operating_pitch_radii[1] if lubrication.wheel_dipped else 0.0
     wheel_immersion = (default_immersion if section.oil.wheel_immersion_mm is None
                        else section.oil.wheel_immersion_mm * 1e-3)
     jet = OilJet(section.oil.injection_flow_l_min / 60000.0, section.oil.jet_speed_m_s,
-                 at_outlet=section.oil.jet_position == "outlet") if injection else None
+                 at_outlet=section.oil.jet_position == "outlet") if lubrication.oil_jet else None
     for key, depth, gear in (("wheel_immersion_mm", wheel_immersion, pair.wheel),
                              ("pinion_immersion_mm", section.oil.pinion_immersion_mm * 1e-3, pair.pinion)):
         if depth > 2.0 * gear.tip_radius:
@@ -130,6 +131,7 @@ def gearbox_description(gearbox: "GearboxSection | None", pair: "GearPair", mate
     backlash_um = None if gears_input is None else gears_input.backlash_normal_um
     law = friction_law(section.friction_model)
     law.lubricant_factor(oil.base_oil, section.lubricant_factor)  # refuses a base oil the law has no X_L for
+    pinion_spans, wheel_spans = drivetrain_shaft_spans(drivetrain)
     conditioning = None if section.conditioning is None else OilConditioning(
         section.conditioning.setpoint_c, section.conditioning.heater_w, section.conditioning.cooling_w,
         section.conditioning.gain_w_per_k)
@@ -151,7 +153,7 @@ def gearbox_description(gearbox: "GearboxSection | None", pair: "GearPair", mate
         shaft_oil_conductance=section.internal.shaft_oil_w_per_k,
         shaft_housing_conductance=section.internal.shaft_housing_w_per_k,
         backlash=None if backlash_um is None else backlash_um * 1e-6, assembly_c=temperature.reference_c,
-        oil_jet=jet)
+        oil_jet=jet, pinion_shaft_spans=pinion_spans, wheel_shaft_spans=wheel_spans)
 
 
 def gearbox_operating_point(operating: "OperatingPoint", gearbox: "GearboxSection | None",
@@ -164,17 +166,18 @@ def gearbox_operating_point(operating: "OperatingPoint", gearbox: "GearboxSectio
 
 
 @cached_per_case
-def gearbox_model_from_case(case: "Case"):
-    """The :class:`~thermogear.gearbox.model.GearboxThermalModel` of a case with a ``[gearbox]`` section (memoised
-    per case; its ``description`` is the case's :class:`GearboxDescription`).
-
-    Keeps the Case: the resolver that turns the case's sections into the gearbox's description, once."""
+def gearbox_model_from_case(gearbox: "GearboxSection | None", gear_pair: "GearPair", material: "Material",
+                            oil: "Lubricant", temperature: "TemperatureSection", housing: "HousingSection",
+                            gears_input: "GearsSection | None", drivetrain: "DrivetrainSection | None",
+                            roughness_ra: float):
+    """The :class:`~thermogear.gearbox.model.GearboxThermalModel` of a case with a ``[gearbox]`` section, its
+    ``description`` the :class:`GearboxDescription` of these pieces of the case (:func:`gearbox_description`).
+    Called with the case (``gearbox_model_from_case(case)``), memoised per case
+    (:func:`thermogear.case.cached_per_case`)."""
     from thermogear.gearbox.model import GearboxThermalModel  # noqa: PLC0415
-    from thermogear.lubricant import lubricant_from_case  # noqa: PLC0415
 
-    return GearboxThermalModel(gearbox_description(case.gearbox, case.gear_pair, case.material,
-                                                   lubricant_from_case(case), case.temperature, case.housing,
-                                                   case.gears_input, case.drivetrain, case.roughness_ra))
+    return GearboxThermalModel(gearbox_description(gearbox, gear_pair, material, oil, temperature, housing,
+                                                   gears_input, drivetrain, roughness_ra))
 
 
 #: Steady states already solved, per thermal model (by identity: the model is built once per case and compares by

@@ -28,6 +28,7 @@ from thermogear.friction_models import DEFAULT_LOSS_FRICTION_MODEL, FRICTION_MOD
 from thermogear.gearbox.bearing_loss import RollingBearing
 from thermogear.gearbox.injection import OilJet
 from thermogear.gearbox.mesh_loss import rigid_pinion_heat_share
+from thermogear.gearbox.shaft_conduction import ShaftSpan, gear_shaft_paths
 from thermogear.geometry import GearPair
 from thermogear.lubricant import Lubricant
 
@@ -154,6 +155,8 @@ class GearboxDescription:
     friction: FrictionLaw = FRICTION_MODELS[DEFAULT_LOSS_FRICTION_MODEL]
     friction_constant: float | None = None
     conditioning: OilConditioning | None = None  # a rig's heater/cooler on the oil (None: none)
+    pinion_shaft_spans: tuple[ShaftSpan, ...] = ()  # the pinion's shaft from its seat to each bearing (fins)
+    wheel_shaft_spans: tuple[ShaftSpan, ...] = ()  # the wheel's likewise (() : seat and bearings one node)
     notes: tuple[str, ...] = field(default=(), compare=False)
 
     def __post_init__(self) -> None:
@@ -205,6 +208,14 @@ class GearboxDescription:
         if gear.bore_radius <= 0.0:
             return 8.0 * math.pi * conductivity * width
         return 2.0 * math.pi * conductivity * width / math.log(gear.root_radius / gear.bore_radius)
+
+    def shaft_paths(self, wheel: bool) -> tuple[float, float, float]:
+        """(gear–its shaft's node, gear–oil, shaft node–oil) [W/K] through the gear's body and the stretches of
+        shaft from its seat to its bearings (:func:`~thermogear.gearbox.shaft_conduction.gear_shaft_paths`: fins
+        wetted at the gear–oil coefficient, the seat eliminated); (body, 0, 0) without spans."""
+        spans = self.wheel_shaft_spans if wheel else self.pinion_shaft_spans
+        return gear_shaft_paths(self.gear_body_conductance(wheel), spans, self.steel_conductivity,
+                                self.gear_oil_coefficient)
 
     @property
     def shaft_housing_conductances(self) -> tuple[float, float]:

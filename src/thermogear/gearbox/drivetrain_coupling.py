@@ -30,13 +30,12 @@ from thermogear.drivetrain.bearing_clearance import estimated_outer_raceway_diam
 from thermogear.drivetrain.heat_source import BearingRings, DrivetrainHeat
 from thermogear.errors import CaseError
 from thermogear.gearbox.bearing_entries import mounted_bearing_power, rolling_bearing, shaft_sides
-from thermogear.gearbox.case_model import (gearbox_model_from_case, gearbox_operating_point, gearbox_section,
-                                           predicted_steady_state)
+from thermogear.gearbox.case_model import gearbox_operating_point, gearbox_section, predicted_steady_state
 from thermogear.gearbox.description import GearboxOperatingPoint
 from thermogear.gearbox.losses import NODES
 
 if TYPE_CHECKING:
-    from thermogear.case import Case
+    from thermogear.operating import OperatingPoint
     from thermogear.schema import DrivetrainSection, GearboxSection
     from thermogear.gearbox.model import GearboxSteadyState, GearboxThermalModel
 
@@ -126,11 +125,11 @@ def operating_point_temperatures(parts: CoupledThermalParts, speed_rpm: float,
     return OperatingTemperatures(operating.speed_rpm, operating.torque, state, heat, bearing_losses)
 
 
-def network_drivetrain_heat(case: "Case") -> DrivetrainHeat:
-    """The drivetrain's temperatures at the case's own operating point (the ``"gearbox"`` provider of
-    :data:`thermogear.composition.DRIVETRAIN_HEAT`).
-
-    Keeps the Case: it is a drivetrain temperature provider (``provider(case) -> DrivetrainHeat``)."""
-    operating = gearbox_operating_point(case.operating_point, case.gearbox)
-    parts = coupled_parts(gearbox_model_from_case(case), case.gearbox, case.drivetrain)
+def network_drivetrain_heat(gearbox_model: "GearboxThermalModel | None", gearbox: "GearboxSection | None",
+                            drivetrain: "DrivetrainSection | None", operating_point: "OperatingPoint") -> DrivetrainHeat:
+    """The drivetrain's temperatures at the case's own operating point: the steady state of the case's network
+    ``gearbox_model`` (the ``"gearbox"`` provider of :data:`thermogear.composition.DRIVETRAIN_HEAT`, which receives
+    these pieces of the case, :mod:`thermogear.case_pieces`)."""
+    operating = gearbox_operating_point(operating_point, gearbox)
+    parts = coupled_parts(gearbox_model, gearbox, drivetrain)
     return operating_point_temperatures(parts, operating.speed_rpm, operating.torque).heat

@@ -42,16 +42,19 @@ def housing_outer_conductance(housing: Housing, housing_c: float, ambient_c: flo
 
 def internal_conductances(description: GearboxDescription) -> np.ndarray:
     """Symmetric G [W/K] between the nodes of :data:`~thermogear.gearbox.losses.NODES` (constant): each gear to the
-    oil and to its own shaft, each shaft to the oil (half the shafts' path each) and to the housing (through its
-    bearings, :attr:`GearboxDescription.shaft_housing_conductances`), the oil to the housing."""
+    oil and to its own shaft (through its body and, where the description has them, the stretches of shaft to its
+    bearings as fins, :meth:`GearboxDescription.shaft_paths`), each shaft to the oil (half the shafts' path each,
+    plus its fins' surfaces) and to the housing (through its bearings,
+    :attr:`GearboxDescription.shaft_housing_conductances`), the oil to the housing."""
     matrix = np.zeros((len(NODES), len(NODES)))
     pinion_housing, wheel_housing = description.shaft_housing_conductances
     shaft_oil = 0.5 * description.shaft_oil_conductance
-    links = ((PINION, OIL, description.gear_oil_coefficient * description.gear_surface(False)),
-             (WHEEL, OIL, description.gear_oil_coefficient * description.gear_surface(True)),
-             (PINION, PINION_SHAFT, description.gear_body_conductance(False)),
-             (WHEEL, WHEEL_SHAFT, description.gear_body_conductance(True)),
-             (PINION_SHAFT, OIL, shaft_oil), (WHEEL_SHAFT, OIL, shaft_oil),
+    pinion_shaft, pinion_oil, pinion_shaft_oil = description.shaft_paths(False)
+    wheel_shaft, wheel_oil, wheel_shaft_oil = description.shaft_paths(True)
+    links = ((PINION, OIL, description.gear_oil_coefficient * description.gear_surface(False) + pinion_oil),
+             (WHEEL, OIL, description.gear_oil_coefficient * description.gear_surface(True) + wheel_oil),
+             (PINION, PINION_SHAFT, pinion_shaft), (WHEEL, WHEEL_SHAFT, wheel_shaft),
+             (PINION_SHAFT, OIL, shaft_oil + pinion_shaft_oil), (WHEEL_SHAFT, OIL, shaft_oil + wheel_shaft_oil),
              (PINION_SHAFT, HOUSING, pinion_housing), (WHEEL_SHAFT, HOUSING, wheel_housing),
              (OIL, HOUSING, description.oil_housing_coefficient * description.housing.oil_wetted_area))
     for first, second, value in links:

@@ -23,6 +23,7 @@ import warnings
 from typing import TYPE_CHECKING
 
 from thermogear.errors import CaseError, ModelAssumptionWarning
+from thermogear.lubrication_methods import lubrication_method
 from thermogear.temperature_kinds import temperature_source
 
 if TYPE_CHECKING:
@@ -73,7 +74,8 @@ def check_gearbox_inputs(section: "GearboxSection", pair: "GearPair", temperatur
         if level >= height:
             raise CaseError("gearbox.oil.level_mm", section.oil.level_mm, f"< the housing height {height * 1e3:.4g} mm",
                             "the oil would fill the housing")
-    wheel_depth = (pair.operating_pitch_radii[1] if section.oil.lubrication == "dip" else 0.0) \
+    dipped = lubrication_method(section.oil.lubrication).wheel_dipped
+    wheel_depth = (pair.operating_pitch_radii[1] if dipped else 0.0) \
         if section.oil.wheel_immersion_mm is None else section.oil.wheel_immersion_mm * 1e-3
     level_text = (f"the oil level {level * 1e3:.4g} mm ({volume_l:g} L over a floor of {floor:.4g} m²"
                   + ("" if section.oil.level_mm is not None else ": the housing's footprint; give "

@@ -34,6 +34,14 @@ from thermogear.gearbox.mesh_loss import mesh_power_loss, pair_gear_loss_factor
 #: shaft its own node), the oil sump and the housing.
 NODES = ("pinion", "wheel", "pinion_shaft", "wheel_shaft", "oil", "housing")
 PINION, WHEEL, PINION_SHAFT, WHEEL_SHAFT, OIL, HOUSING = range(len(NODES))
+
+
+def node_temperature(node: int, array: str) -> property:
+    """A property of a result holding one temperature per node of :data:`NODES` in its field ``array``: the
+    temperature of ``node`` [°C]."""
+    return property(lambda result: float(getattr(result, array)[node]),
+                    doc=f"Temperature of the {NODES[node].replace('_', ' ')} [°C].")
+
 REFERENCE_VISCOSITY = 0.01  # [Pa·s], where the friction coefficient is evaluated once (any value would do)
 
 

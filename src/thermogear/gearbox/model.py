@@ -23,7 +23,7 @@ from thermogear.gearbox.backlash import backlash_allowance, backlash_at_temperat
 from thermogear.gearbox.description import GearboxDescription, GearboxOperatingPoint
 from thermogear.gearbox.heat_paths import housing_outer_conductance, internal_conductances
 from thermogear.gearbox.losses import (HOUSING, NODES, OIL, PINION, PINION_SHAFT, WHEEL, WHEEL_SHAFT, LossModel,
-                                       PowerLosses)
+                                       PowerLosses, node_temperature)
 from thermogear.gearbox.network import (NoSteadyStateError, ThermalNetwork, continue_steady_states,
                                         integrate_transient, solve_steady_state, stability_eigenvalues,
                                         steady_state_at)
@@ -63,29 +63,12 @@ class GearboxState:
     losses: PowerLosses
     backlash: float  # normal backlash [m]
 
-    @property
-    def pinion_c(self) -> float:
-        return float(self.temperatures_c[PINION])
-
-    @property
-    def wheel_c(self) -> float:
-        return float(self.temperatures_c[WHEEL])
-
-    @property
-    def pinion_shaft_c(self) -> float:
-        return float(self.temperatures_c[PINION_SHAFT])
-
-    @property
-    def wheel_shaft_c(self) -> float:
-        return float(self.temperatures_c[WHEEL_SHAFT])
-
-    @property
-    def oil_c(self) -> float:
-        return float(self.temperatures_c[OIL])
-
-    @property
-    def housing_c(self) -> float:
-        return float(self.temperatures_c[HOUSING])
+    pinion_c = node_temperature(PINION, "temperatures_c")
+    wheel_c = node_temperature(WHEEL, "temperatures_c")
+    pinion_shaft_c = node_temperature(PINION_SHAFT, "temperatures_c")
+    wheel_shaft_c = node_temperature(WHEEL_SHAFT, "temperatures_c")
+    oil_c = node_temperature(OIL, "temperatures_c")
+    housing_c = node_temperature(HOUSING, "temperatures_c")
 
 
 @dataclass(frozen=True)

@@ -18,7 +18,7 @@ import numpy as np
 
 from thermogear.errors import CaseError
 from thermogear.gearbox.description import GearboxOperatingPoint, OilConditioning
-from thermogear.gearbox.losses import NODES, OIL, PINION
+from thermogear.gearbox.losses import NODES, OIL, PINION, node_temperature
 
 #: Duration of an FZG load stage [s] (ISO 14635-1, ASTM D5182 §10.2: 15 min).
 FZG_STAGE_DURATION_S = 900.0
@@ -40,13 +40,8 @@ class StageResult:
     flags: tuple[str, ...]
     energy_residual: float
 
-    @property
-    def oil_c(self) -> float:
-        return float(self.end_c[OIL])
-
-    @property
-    def pinion_c(self) -> float:
-        return float(self.end_c[PINION])
+    oil_c = node_temperature(OIL, "end_c")
+    pinion_c = node_temperature(PINION, "end_c")
 
     def node_c(self, name: str) -> float:
         """The end temperature of one node [°C] (a name of :data:`~thermogear.gearbox.losses.NODES`)."""

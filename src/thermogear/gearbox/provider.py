@@ -10,30 +10,35 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from thermogear.gearbox.case_model import gearbox_model_from_case, gearbox_operating_point, predicted_steady_state
+from thermogear.gearbox.case_model import gearbox_operating_point, gearbox_section, predicted_steady_state
 from thermogear.temperature_field import TemperatureField
 
 if TYPE_CHECKING:
-    from thermogear.case import Case
+    from thermogear.gearbox.model import GearboxThermalModel
+    from thermogear.operating import OperatingPoint
+    from thermogear.schema.gearbox import GearboxSection
+    from thermogear.schema.temperature import TemperatureSection
 
 #: The name of this source in ``[temperature].model``.
 MODEL_NAME = "gearbox"
 
 
-def gearbox_temperature_field(case: "Case") -> TemperatureField:
+def gearbox_temperature_field(gearbox_model: "GearboxThermalModel | None", gearbox: "GearboxSection | None",
+                              operating_point: "OperatingPoint", temperature: "TemperatureSection") -> TemperatureField:
     """Pinion flank, base circle and bore at the pinion node's temperature, the wheel's at the wheel node's
-    (``wheel_flank_offset_c`` = wheel − pinion) [°C], stress-free at ``temperature.reference_c``.
+    (``wheel_flank_offset_c`` = wheel − pinion) [°C], stress-free at ``temperature.reference_c``: the steady state
+    of the case's network ``gearbox_model`` at its ``operating_point`` in the ambient of its ``[gearbox]``.
 
-    Keeps the Case: it is a temperature provider (``provider(case) -> TemperatureField``,
-    :data:`thermogear.composition.TEMPERATURE_PROVIDERS`)."""
-    state = predicted_steady_state(gearbox_model_from_case(case),
-                                   gearbox_operating_point(case.operating_point, case.gearbox))
+    A temperature provider (:data:`thermogear.composition.TEMPERATURE_PROVIDERS`): it receives these pieces of the
+    case (:mod:`thermogear.case_pieces`)."""
+    gearbox_section(gearbox)  # a case without [gearbox] is refused, naming the section
+    state = predicted_steady_state(gearbox_model, gearbox_operating_point(operating_point, gearbox))
     pinion, wheel = round(state.pinion_c, 6), round(state.wheel_c, 6)
     losses = state.losses
     source = (f"gearbox (predicted steady state: oil {state.oil_c:.1f} °C, housing {state.housing_c:.1f} °C; "
               f"losses mesh {losses.mesh:.1f} W, bearings {losses.bearings:.1f} W, seals {losses.seals:.1f} W, "
               f"churning {losses.churning:.1f} W)")
-    return TemperatureField(reference_c=case.temperature.reference_c, pinion_base_c=pinion, pinion_bore_c=pinion,
+    return TemperatureField(reference_c=temperature.reference_c, pinion_base_c=pinion, pinion_bore_c=pinion,
                             wheel_base_c=wheel, wheel_bore_c=wheel, flank_coefficients=(pinion,),
                             wheel_flank_offset_c=wheel - pinion, source=source)
 

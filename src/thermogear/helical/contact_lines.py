@@ -25,7 +25,8 @@ import math
 
 import numpy as np
 
-__all__ = ["contact_line_length", "total_contact_length", "contact_length_extremes", "contact_line_segments"]
+__all__ = ["contact_line_length", "total_contact_length", "contact_length_extremes", "contact_line_segments",
+           "zone_line_entries"]
 
 
 def contact_line_length(entry, path_length: float, face_width: float, base_helix_angle: float) -> np.ndarray:
@@ -45,6 +46,24 @@ def line_entries(phase, path_length: float, advance: float, base_pitch: float) -
     first = -math.ceil((advance + base_pitch) / base_pitch)
     last = math.ceil(path_length / base_pitch) + 1
     return phase + base_pitch * np.arange(first, last + 1)
+
+
+def zone_line_entries(phase, path_length: float, advance: float, base_pitch: float) -> np.ndarray:
+    """Entry positions φ + k p_bt [m] of the lines that touch the zone at each phase, shape (..., lines): each row
+    from its own first line whose far end reaches A, as many lines as the row that needs most (a row needing fewer
+    ends with lines past E, which touch nothing). The same values as :func:`line_entries` for every line that
+    touches; it leaves out those that touch at no phase of its row (a fraction of them where ε_β is small: the
+    arrays of slices on lines are that much shorter). The test is widened by 1e-9 of g_α + g_β, so a line that
+    reaches the zone by rounding only is kept."""
+    entries = line_entries(phase, path_length, advance, base_pitch)
+    first_line = -math.ceil((advance + base_pitch) / base_pitch)  # line_entries' first k
+    margin = 1e-9 * (path_length + advance)
+    touching = (entries + advance >= -margin) & (entries <= path_length + margin)
+    first = np.argmax(touching, axis=-1)
+    last = touching.shape[-1] - 1 - np.argmax(touching[..., ::-1], axis=-1)
+    count = int(np.max(np.where(touching.any(axis=-1), last - first + 1, 1), initial=1))
+    lines = first_line + first[..., None] + np.arange(count)
+    return np.asarray(phase, dtype=float)[..., None] + base_pitch * lines
 
 
 def total_contact_length(phase, path_length: float, face_width: float, base_helix_angle: float,

@@ -29,13 +29,14 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["slice_loads", "SliceContacts", "FaceLoad", "face_load", "helix_slope_deviation", "lead_crowning", "end_relief",
+__all__ = ["slice_loads", "SliceContacts", "FaceLoad", "FaceStiffnessMoments", "face_load", "helix_slope_deviation", "lead_crowning", "end_relief",
            "thermal_lead_deviation", "iso_face_load_factor"]
 
 
 def slice_loads(stiffness: np.ndarray, gap: np.ndarray, load: float) -> tuple[float, np.ndarray]:
-    """(δ [m], the slices' loads [N]) of Σ k_i⟨δ − e_i⟩₊ = F (module docstring), solved exactly on the sorted
-    gaps: between consecutive gaps the left side is linear in δ."""
+    """(δ [m], the slices' loads [N]) of Σ k_i⟨δ − e_i⟩₊ = F (module docstring), solved exactly: the left side is
+    piecewise linear in δ, and Newton's method from full contact ends on the set of slices in contact
+    (:class:`SliceContacts`)."""
     stiffness = np.asarray(stiffness, dtype=float).ravel()
     approach, carried = SliceContacts.prepare(stiffness[None, :], np.asarray(gap, dtype=float).ravel()[None, :]) \
         .solve(load)
@@ -44,66 +45,127 @@ def slice_loads(stiffness: np.ndarray, gap: np.ndarray, load: float) -> tuple[fl
 
 @dataclass(frozen=True, eq=False)
 class SliceContacts:
-    """Slices at many mesh positions (rows) prepared for :func:`slice_loads` at any load: what does not depend on
-    the load — each row's touching slices sorted by gap, the running sums Σk and Σke over them — is computed once
-    (:meth:`prepare`), and :meth:`solve` or :meth:`totals` take every row at once.
+    """Slices at many mesh positions (rows) prepared for :func:`slice_loads` at any load, every row solved at once
+    (:meth:`solve`, :meth:`totals`).
 
-    ``stiffness`` k and ``gap`` e (rows, slices) [N/m, m]; ``order`` each row's slices that can touch (k > 0) by
-    ascending gap, padded to the most any row has (the padding: k = 0, e = +∞); ``sorted_stiffness`` and
-    ``sorted_gap`` k and e in that order, ``upper`` the next sorted gap (+∞ after the last);
-    ``cumulative_stiffness`` and ``cumulative_moment`` Σk and Σke over the first m + 1 of them."""
+    ``stiffness`` k ≥ 0 and ``gap`` e (rows, slices) [N/m, m], k = 0 for a slice that cannot touch; ``touching``
+    where k > 0; ``total_stiffness`` Σk and ``total_moment`` Σke of each row over its touching slices.
+
+    δ of a row is Newton's method on the piecewise-linear, convex and increasing g(δ) = Σ k⟨δ − e⟩₊ started on the
+    right, at the δ of every touching slice in contact: each step is δ = (F + Σ_A ke)/Σ_A k over the slices A
+    with e < δ of the step before. The steps fall monotonically onto the root (g lies above each step's line) and
+    A shrinks, so it ends, exactly, once A repeats: at once where every slice touches, in a few steps where the
+    contact is partial. Nothing is sorted (the cost of a first call is a few passes over the slices)."""
 
     stiffness: np.ndarray
     gap: np.ndarray
-    order: np.ndarray
-    sorted_stiffness: np.ndarray
-    sorted_gap: np.ndarray
-    upper: np.ndarray
-    cumulative_stiffness: np.ndarray
-    cumulative_moment: np.ndarray
+    touching: np.ndarray
+    total_stiffness: np.ndarray
+    total_moment: np.ndarray
 
     @classmethod
     def prepare(cls, stiffness: np.ndarray, gap: np.ndarray) -> "SliceContacts":
         stiffness = np.asarray(stiffness, dtype=float)
         gap = np.broadcast_to(np.asarray(gap, dtype=float), stiffness.shape)
+        if np.any(stiffness < 0.0):
+            raise ValueError("slice_loads: a slice's stiffness is negative (0 for a slice that cannot touch)")
         touching = stiffness > 0.0
-        counts = np.count_nonzero(touching, axis=-1)
-        if not np.all(counts > 0):
+        if not np.all(np.any(touching, axis=-1)):
             raise ValueError("slice_loads: a positive load needs at least one slice that can touch")
-        order = np.argsort(np.where(touching, gap, np.inf), axis=-1, kind="stable")[..., :int(counts.max())]
-        k = np.take_along_axis(stiffness, order, axis=-1)
-        inside = k > 0.0  # the padding (rows with fewer touching slices) has k = 0
-        e = np.where(inside, np.take_along_axis(gap, order, axis=-1), np.inf)
-        moment = np.where(inside, k * np.where(inside, e, 0.0), 0.0)
-        upper = np.concatenate([e[..., 1:], np.full(e.shape[:-1] + (1,), np.inf)], axis=-1)
-        return cls(stiffness, gap, order, k, e, upper, np.cumsum(k, axis=-1), np.cumsum(moment, axis=-1))
+        moment = np.multiply(stiffness, gap, out=np.zeros(stiffness.shape), where=touching)
+        return cls(stiffness, gap, touching, stiffness.sum(axis=-1), moment.sum(axis=-1))
 
     def approach(self, load: float) -> np.ndarray:
-        """δ [m] of each row at F = ``load`` [N]: with exactly the first m + 1 sorted slices touching,
-        δ = (F + Σke)/Σk, the m whose δ lies between its gap and the next one's."""
+        """δ [m] of each row at F = ``load`` [N] (class docstring): δ = (F + Σ_A ke)/Σ_A k over the slices A in
+        contact, e < δ."""
         if not load > 0.0:
             raise ValueError("slice_loads: a positive load needs at least one slice that can touch")
-        candidates = (load + self.cumulative_moment) / self.cumulative_stiffness
-        first = np.argmax((candidates >= self.sorted_gap) & (candidates <= self.upper), axis=-1)
-        return np.take_along_axis(candidates, first[..., None], axis=-1)[..., 0]
+        delta = (load + self.total_moment) / self.total_stiffness
+        flat_delta = delta.reshape(-1)
+        stiffness, gap, touching = (array.reshape(flat_delta.size, -1)
+                                    for array in (self.stiffness, self.gap, self.touching))
+        # the rows with a touching slice that the approach of all of them does not reach
+        pending = np.flatnonzero(np.any(touching & (gap >= flat_delta[:, None]), axis=-1))
+        active = touching[pending] & (gap[pending] < flat_delta[pending, None])
+        for _ in range(gap.shape[-1]):  # A shrinks at every step that does not end a row
+            if not pending.size:
+                break
+            row_stiffness, row_gap = stiffness[pending], gap[pending]
+            contact = np.where(active, row_stiffness, 0.0)
+            step = (load + np.sum(contact * np.where(active, row_gap, 0.0), axis=-1)) / np.sum(contact, axis=-1)
+            flat_delta[pending] = step
+            still = active & (row_gap < step[:, None])
+            moved = np.any(still != active, axis=-1)
+            pending, active = pending[moved], still[moved]
+        return delta
+
+    def carried(self, load: float) -> tuple[np.ndarray, np.ndarray]:
+        """(δ [m] of each row, the slices' loads k⟨δ − e⟩₊ [N], rows × slices) at F = ``load`` [N]."""
+        delta = self.approach(load)
+        return delta, np.where(self.touching, self.stiffness * np.clip(delta[..., None] - self.gap, 0.0, None), 0.0)
 
     def solve(self, load: float) -> tuple[np.ndarray, np.ndarray]:
         """(δ [m] of each row, the slices' loads k⟨δ − e⟩₊ [N], rows × slices) at F = ``load`` [N]."""
-        delta = self.approach(load)
-        touching = self.stiffness > 0.0
-        return delta, self.stiffness * np.clip(delta[..., None] - self.gap, 0.0, None) * touching
+        return self.carried(load)
 
     def totals(self, load: float, group: np.ndarray, groups: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """(δ [m], the stiffness of the slices that carry load [N/m], the load [N] of each group of slices,
-        rows × ``groups``) of each row at F = ``load`` [N], from the touching slices only; ``group`` the group
-        (0 … groups − 1) of each slice, e.g. its place across the face."""
-        delta = self.approach(load)
-        carried = self.sorted_stiffness * np.clip(delta[..., None] - self.sorted_gap, 0.0, None)
-        engaged = np.sum(np.where(carried > 0.0, self.sorted_stiffness, 0.0), axis=-1)
+        rows × ``groups``) of each row at F = ``load`` [N]; ``group`` the group (0 … groups − 1) of each slice,
+        e.g. its place across the face: one per column, or one per entry (rows × slices) where the rows hold
+        different slices."""
+        delta, carried = self.carried(load)
+        engaged = np.sum(np.where(carried > 0.0, self.stiffness, 0.0), axis=-1)
         rows = np.arange(carried.shape[0])[:, None] * groups
-        per_group = np.bincount((rows + np.asarray(group)[self.order]).ravel(), weights=carried.ravel(),
+        member = np.broadcast_to(np.asarray(group), carried.shape)
+        per_group = np.bincount((rows + member).ravel(), weights=carried.ravel(),
                                 minlength=carried.shape[0] * groups)
         return delta, engaged, per_group.reshape(carried.shape[0], groups)
+
+    def engaged_groups(self, load: float, group: np.ndarray, groups: int) -> np.ndarray:
+        """The stiffness [N/m] of the slices that carry load at F = ``load`` [N], summed per group (rows ×
+        ``groups``; ``group`` as for :meth:`totals`)."""
+        _, carried = self.carried(load)
+        rows = np.arange(carried.shape[0])[:, None] * groups
+        member = np.broadcast_to(np.asarray(group), carried.shape)
+        per_group = np.bincount((rows + member).ravel(), weights=np.where(carried > 0.0, self.stiffness, 0.0).ravel(),
+                                minlength=carried.shape[0] * groups)
+        return per_group.reshape(carried.shape[0], groups)
+
+
+@dataclass(frozen=True)
+class FaceStiffnessMoments:
+    """The moments across the face of the stiffness of the slices in contact, per mesh position φ: with z_j from
+    mid-face, k₀ = Σk_j [N/m], k₁ = Σk_j z_j [N], k₂ = Σk_j z_j² [N·m]. They are what the mesh element of the
+    drivetrain needs: Σ_j k_j w(z_j)w(z_j)ᵀ = k₀ w₀w₀ᵀ + k₁ (w₀w_zᵀ + w_zw₀ᵀ) + k₂ w_zw_zᵀ for w(z) = w₀ + z w_z
+    (:mod:`thermogear.drivetrain.mesh_contact`), i.e. k(φ) at the load centre z̄(φ) = k₁/k₀ plus the tilting
+    stiffness k(φ)ρ(φ)² = k₂ − k₁²/k₀ about it. The period means of k₀, k₁, k₂ give the mean matrix exactly: its load
+    centre ``mean_load_centre`` and radius of gyration ``mean_gyration``."""
+
+    phase: np.ndarray  # [m]
+    stiffness: np.ndarray  # k₀(φ) [N/m]
+    first_moment: np.ndarray  # k₁(φ) [N]
+    second_moment: np.ndarray  # k₂(φ) [N·m]
+
+    @property
+    def load_centre(self) -> np.ndarray:
+        """z̄(φ) = k₁/k₀ [m] from mid-face."""
+        return self.first_moment / self.stiffness
+
+    @property
+    def tilting_stiffness(self) -> np.ndarray:
+        """k(φ)ρ(φ)² = k₂ − k₁²/k₀ [N·m]: the stiffness of the relative tilt about the load centre."""
+        return self.second_moment - self.first_moment**2 / self.stiffness
+
+    @property
+    def mean_load_centre(self) -> float:
+        """z̄ of the period-mean matrix, mean k₁ / mean k₀ [m] from mid-face."""
+        return float(np.mean(self.first_moment) / np.mean(self.stiffness))
+
+    @property
+    def mean_gyration(self) -> float:
+        """ρ of the period-mean matrix, √(mean k₂ / mean k₀ − z̄²) [m]."""
+        centre = self.mean_load_centre
+        return float(math.sqrt(max(np.mean(self.second_moment) / np.mean(self.stiffness) - centre**2, 0.0)))
 
 
 @dataclass(frozen=True)
@@ -115,6 +177,18 @@ class FaceLoad:
     phase: np.ndarray
     line_load: np.ndarray  # (phases, slices)
     approach: np.ndarray  # (phases,)
+    engaged_stiffness: np.ndarray | None = None  # (phases, slices) [N/m]: the stiffness of the slices in contact
+
+    @property
+    def stiffness_moments(self) -> FaceStiffnessMoments:
+        """The moments across the face of the stiffness in contact at each mesh position (z from mid-face; needs
+        ``engaged_stiffness``)."""
+        if self.engaged_stiffness is None:
+            raise ValueError("stiffness_moments: the face load carries no engaged stiffness")
+        position = self.z - 0.5 * (self.z[0] + self.z[-1])
+        stiffness = self.engaged_stiffness
+        return FaceStiffnessMoments(self.phase, stiffness.sum(axis=-1), stiffness @ position,
+                                    stiffness @ position**2)
 
     @property
     def mean_line_load(self) -> np.ndarray:
@@ -133,6 +207,11 @@ class FaceLoad:
         return float(self.line_load.max() / self.line_load.mean())
 
     @property
+    def load_centres(self) -> np.ndarray:
+        """∫ z w dz / ∫ w dz [m] at each mesh position: where along the face the load acts over the period."""
+        return self.line_load @ self.z / self.line_load.sum(axis=-1)
+
+    @property
     def load_centre(self) -> float:
         """∫ z w̄ dz / ∫ w̄ dz [m]: where along the face the load acts on average."""
         mean = self.mean_line_load
@@ -149,8 +228,10 @@ def face_load(slice_stiffness: np.ndarray, z: np.ndarray, phase: np.ndarray, dev
     gaps = np.broadcast_to(np.asarray(deviation, dtype=float), stiffness.shape)
     rows = stiffness.shape[0]
     approach, carried = SliceContacts.prepare(stiffness.reshape(rows, -1), gaps.reshape(rows, -1)).solve(load)
-    loads = carried.reshape(stiffness.shape).sum(axis=1) / width
-    return FaceLoad(np.asarray(z, dtype=float), np.asarray(phase, dtype=float), loads, approach)
+    carried = carried.reshape(stiffness.shape)
+    loads = carried.sum(axis=1) / width
+    engaged = np.where(carried > 0.0, stiffness, 0.0).sum(axis=1)
+    return FaceLoad(np.asarray(z, dtype=float), np.asarray(phase, dtype=float), loads, approach, engaged)
 
 
 def helix_slope_deviation(z, face_width: float, amount: float) -> np.ndarray:

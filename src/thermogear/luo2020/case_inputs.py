@@ -8,7 +8,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from thermogear.errors import CaseError
+from thermogear.registry import registered
 from thermogear.geometry import GearPair
 from thermogear.materials import Material
 from thermogear.stiffness.table import pair_stiffness_at
@@ -46,14 +46,32 @@ class PaperThermalInputs:
         basis = self.load_basis if load_basis is None else load_basis
         roll = np.atleast_1d(np.asarray(roll, dtype=float))
         external = self.normal_load if external_load is None else float(external_load)
-        if basis == "external":
+        if not load_basis_of(basis).pair_share:
             return np.full(roll.shape, external)
-        if basis != "pair_share":
-            raise CaseError("thermal.load_basis", basis, "'external' or 'pair_share'", "unknown load basis")
         pair = self.gear_pair
         points = pair.path_points
         return pair_share_normal_load(external, roll, lambda other: pair_stiffness_at(pair, self.material, other),
                                       points["A"], points["E"], pair.base_pitch)
 
 
-__all__ = ["PaperThermalInputs"]
+@dataclass(frozen=True)
+class LoadBasis:
+    """The load F_n of Eqs. 13–18 (``[thermal] load_basis``): ``name``, and whether each pair takes its elastic
+    share of the external load (``pair_share``; else every pair the whole external load, the paper's reading, so
+    k_T depends on the load alone and is tabulated per load)."""
+
+    name: str
+    pair_share: bool
+
+
+#: The load bases by name: the one place the names are compared.
+LOAD_BASES: dict[str, LoadBasis] = {basis.name: basis for basis in (
+    LoadBasis("external", pair_share=False), LoadBasis("pair_share", pair_share=True))}
+
+
+def load_basis_of(name: str) -> LoadBasis:
+    """The load basis called ``name``; a CaseError naming ``thermal.load_basis`` for any other."""
+    return registered(LOAD_BASES, name, "thermal.load_basis", "unknown load basis", "'external' or 'pair_share'")
+
+
+__all__ = ["LOAD_BASES", "LoadBasis", "PaperThermalInputs", "load_basis_of"]

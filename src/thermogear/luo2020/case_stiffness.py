@@ -21,10 +21,11 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from thermogear import warning_scope
+from thermogear.case_pieces import call_with_pieces
 from thermogear.stiffness.potential_energy import pair_compliance
 from thermogear.stiffness.table import pair_compliance_table, tooth_compliance_at
 from thermogear.luo2020.calibration import Calibration, calibrate, section_x_te, x_te_provider
-from thermogear.luo2020.case_inputs import PaperThermalInputs
+from thermogear.luo2020.case_inputs import PaperThermalInputs, load_basis_of
 from thermogear.luo2020.stiffness import (CONTACT_TOLERANCE, ThermalStiffness, check_x_te, thermal_pair_stiffness)
 from thermogear.temperature_source import TemperatureField, temperature_field_from_case
 
@@ -117,7 +118,7 @@ class PaperThermalModel:
         load = self.inputs.normal_load if normal_load is None else float(normal_load)
         if np.any(inside):
             inner = np.clip(roll[inside], points["A"], points["E"])
-            if x_te is None and self.section.load_basis == "external":
+            if x_te is None and not load_basis_of(self.section.load_basis).pair_share:
                 result[inside] = self.spline(load)(inner)
             else:
                 result[inside] = self.pair_stiffness_direct(inner, x_te, load)
@@ -171,7 +172,7 @@ def paper_thermal_model(case: "Case") -> PaperThermalModel:
         return temperature_field_from_case(case)
 
     def provided_x_te() -> float:
-        return x_te_provider(section.x_te_source)(case)
+        return call_with_pieces(x_te_provider(section.x_te_source), case)  # the pieces it names
 
     key = id(case)
     entry = _MEMOS.get(key)

@@ -19,6 +19,7 @@ from typing import Literal
 import numpy as np
 
 from thermogear.errors import CaseError
+from thermogear.registry import registered
 
 
 def base_circle_radial_expansion(alpha_th, base_radius, bore_radius, base_rise, bore_rise):
@@ -51,6 +52,28 @@ def base_circle_radial_expansion(alpha_th, base_radius, bore_radius, base_rise, 
 Circumferential = Literal["paper", "consistent"]
 
 
+def _as_printed(half_thickness_growth, half_angle, radial):
+    """Eq. 9 as printed: the whole Δs_k/2 widens the tooth on top of the radial move."""
+    return half_thickness_growth
+
+
+def _less_radial_widening(half_thickness_growth, half_angle, radial):
+    """Eq. 9 less the widening φ_k Δr_k that the radial move at constant angle already gives."""
+    return half_thickness_growth - half_angle * radial
+
+
+#: The forms of Luo & Li Eq. 9 by name (``[thermal] expansion_model``), each the growth of the half thickness
+#: ``form(Δs_k/2, φ_k, Δr_k)`` [m] that turns the half angle (:func:`flank_point_displacement`): the one place the
+#: names are compared.
+EXPANSION_FORMS = {"paper": _as_printed, "consistent": _less_radial_widening}
+
+
+def expansion_form(name: str):
+    """The form of Eq. 9 called ``name``; a CaseError naming ``thermal.expansion_model`` for any other."""
+    return registered(EXPANSION_FORMS, name, "thermal.expansion_model", "unknown form of Eq. 9",
+                      "'paper' or 'consistent'")
+
+
 def flank_point_displacement(alpha_th, radius, half_angle, flank_rise, base_expansion, base_radius,
                              circumferential: Circumferential = "paper"):
     """In-plane displacement (Δx, Δy) [m] of the flank point at radius r_k and half angle φ_k (Eqs. 9–11).
@@ -74,12 +97,8 @@ def flank_point_displacement(alpha_th, radius, half_angle, flank_rise, base_expa
     half_angle = np.asarray(half_angle, dtype=float)
     flank_rise = np.asarray(flank_rise, dtype=float)
     radial = base_expansion + alpha_th * flank_rise * (radius - base_radius)
-    half_thickness_growth = alpha_th * flank_rise * radius * half_angle  # Δs_k = λ Δt_k s_k / 2
-    if circumferential == "consistent":
-        half_thickness_growth = half_thickness_growth - half_angle * radial
-    elif circumferential != "paper":
-        raise CaseError("thermal.expansion_model", circumferential, "'paper' or 'consistent'",
-                        "unknown form of Eq. 9")
+    half_thickness_growth = expansion_form(circumferential)(
+        alpha_th * flank_rise * radius * half_angle, half_angle, radial)  # Δs_k = λ Δt_k s_k / 2
     new_radius = radius + radial
     new_half_angle = half_angle + half_thickness_growth / new_radius
     delta_x = new_radius * np.sin(new_half_angle) - radius * np.sin(half_angle)

@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import warnings
 from dataclasses import dataclass, field
+from operator import attrgetter
 from typing import Any
 
 import numpy as np
@@ -196,34 +197,13 @@ class ThermalStiffness:
             self.elastic.pinion_total, self.elastic.wheel_total, self.expansion_pinion, self.expansion_wheel,
             self.normal_load, self.x_te, elastic_compliance=self.elastic.total))
 
-    @property
-    def stiffness(self) -> np.ndarray:
-        """k_T [N/m] (Eq. 22)."""
-        return self.result.stiffness
-
-    @property
-    def compliance(self) -> np.ndarray:
-        """δ_T [m/N] (Eq. 21)."""
-        return self.result.compliance
-
-    @property
-    def pinion_compliance(self) -> np.ndarray:
-        """δ_T1 of the driving tooth [m/N] (Eq. 23)."""
-        return self.result.pinion_compliance
-
-    @property
-    def wheel_compliance(self) -> np.ndarray:
-        """δ_T2 of the driven tooth [m/N] (Eq. 23)."""
-        return self.result.wheel_compliance
-
-    @property
-    def elastic_stiffness(self) -> np.ndarray:
-        """k_e [N/m]."""
-        return self.result.elastic_stiffness
-
-    @property
-    def elastic_compliance(self) -> np.ndarray:
-        return self.result.elastic_compliance
+    # the thermal pair stiffness of Eqs. 21–23 computed in __post_init__
+    stiffness = property(attrgetter("result.stiffness"), doc="k_T [N/m] (Eq. 22).")
+    compliance = property(attrgetter("result.compliance"), doc="δ_T [m/N] (Eq. 21).")
+    pinion_compliance = property(attrgetter("result.pinion_compliance"), doc="δ_T1 of the driving tooth [m/N] (Eq. 23).")
+    wheel_compliance = property(attrgetter("result.wheel_compliance"), doc="δ_T2 of the driven tooth [m/N] (Eq. 23).")
+    elastic_stiffness = property(attrgetter("result.elastic_stiffness"), doc="k_e [N/m].")
+    elastic_compliance = property(attrgetter("result.elastic_compliance"), doc="δ = δ1 + δ2 [m/N].")
 
     @property
     def drop_percent(self) -> np.ndarray:

@@ -31,7 +31,6 @@ approximation: a helical contact line spans the path, so μ is averaged along it
 
 from __future__ import annotations
 
-import math
 import threading
 import weakref
 from dataclasses import dataclass, replace
@@ -42,7 +41,7 @@ import numpy as np
 from thermogear import warning_scope
 from thermogear.helical.face_load import FaceLoad, SliceContacts, thermal_lead_deviation
 from thermogear.helical.geometry import HelicalPair
-from thermogear.helical.slices import DEFAULT_SLICES, contact_stiffness, helical_mesh_stiffness
+from thermogear.helical.slices import DEFAULT_SLICES, helical_mesh_stiffness, slice_positions, slice_stiffness_at
 from thermogear.mesh.state import MeshState, mesh_state_from_arrays
 
 #: ``mesh_model`` below is a :class:`thermogear.mesh.model.MeshModel` (not imported: it imports this module).
@@ -114,8 +113,9 @@ class _PeriodContacts:
     """What a model's period on given phases needs that changes with neither speed nor load (computed once per
     model: :func:`_cached`): the operating pair, the phases [m], the E(T) factor, and one of: the exact face
     integral K_t (``integral``); the slices' gaps (``z`` the slice centres, ``gap`` the deviation of every slice
-    on every contact line (phases, lines, slices), ``gap_free`` where none has one); the slices prepared for the
-    solve at any load (``contacts``: their stiffness ×scale and gap)."""
+    in the zone of action, in the order of :class:`_SliceLayout`, ``gap_free`` where none has one); the slices
+    prepared for the solve at any load (``contacts``: their stiffness ×scale and gap, a row per phase;
+    ``group`` the slice of each entry of a row)."""
 
     helical: HelicalPair
     phase: np.ndarray
@@ -125,6 +125,31 @@ class _PeriodContacts:
     gap: np.ndarray | None = None
     gap_free: bool = True
     contacts: SliceContacts | None = None
+    group: np.ndarray | None = None
+
+
+@dataclass(frozen=True, eq=False)
+class _SliceLayout:
+    """The slices in the zone of action over a period (once per operating pair, material, points and slices:
+    :func:`_slice_layout`), only those: a slice on a contact line is in the zone where its path position s lies
+    on A…E (where :func:`~thermogear.helical.slices.contact_stiffness` gives it stiffness); the others carry
+    nothing and are left out (of the (phases, lines, slices) array, about 1 − ε_α/lines of it). The entries are in
+    the order of that array (phase, then line, then slice): ``position`` s [m] from A, ``slice_index`` the slice,
+    ``stiffness`` [N/m] (E at 20 °C); ``filled`` (phases, longest row) where a row has an entry;
+    ``phase`` the period's phases [m], ``z`` the slice centres [m]."""
+
+    phase: np.ndarray
+    z: np.ndarray
+    position: np.ndarray
+    slice_index: np.ndarray
+    stiffness: np.ndarray
+    filled: np.ndarray
+
+    def padded(self, values: np.ndarray, fill=0.0) -> np.ndarray:
+        """``values`` of the entries as rows (phases, longest row), ``fill`` after a row's last entry."""
+        rows = np.full(self.filled.shape, fill, dtype=np.asarray(values).dtype)
+        rows[self.filled] = values
+        return rows
 
 
 _CACHE: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
@@ -165,55 +190,59 @@ def _integral_contacts(mesh_model: MeshModel, points: int) -> _PeriodContacts:
 
 
 def _slice_gaps(mesh_model: MeshModel, points: int, slices: int) -> _PeriodContacts:
-    """The gap of every slice on every contact line in the zone of action (where
-    :func:`~thermogear.helical.slices.contact_stiffness` gives it stiffness): the transverse section's profile
+    """The gap of every slice in the zone of action (:class:`_SliceLayout`): the transverse section's profile
     deviation at the slice's path position and the thermal lead distortion at its place across the face."""
     helical = operating_helical_pair(mesh_model)
-    transverse = helical.transverse
-    phase = _phases(helical, points)
-    z = (np.arange(slices) + 0.5) * (helical.face_width / slices)
-    lead = _lead_gap(mesh_model, helical, z)
-    entries_along_path = _slice_positions(helical, phase, z)
-    fraction = entries_along_path / transverse.path_length
-    inside = (fraction >= 0.0) & (fraction <= 1.0)
-    points_on_path = transverse.path_points
-    profile = np.zeros(entries_along_path.shape)
-    if inside.any():
-        roll = np.clip(points_on_path["A"] + entries_along_path[inside], points_on_path["A"], points_on_path["E"])
-        profile[inside] = mesh_model.pair_deviation_at(roll)
-    gap = _frozen(np.ascontiguousarray(np.broadcast_to(profile + lead, profile.shape)))
-    return _PeriodContacts(helical, phase, _stiffness_scale(mesh_model), z=_frozen(z), gap=gap,
-                           gap_free=not np.any(gap))
+    points_on_path = helical.transverse.path_points
+    layout = _slice_layout(helical, mesh_model.case.material, points, slices)
+    lead = _lead_gap(mesh_model, helical, layout.z)
+    roll = np.clip(points_on_path["A"] + layout.position, points_on_path["A"], points_on_path["E"])
+    gap = _frozen(mesh_model.pair_deviation_at(roll) + lead[layout.slice_index])
+    # a slice out of the zone has the lead's gap alone: gap-free as a whole only with neither
+    return _PeriodContacts(helical, layout.phase, _stiffness_scale(mesh_model), z=layout.z, gap=gap,
+                           gap_free=not (np.any(gap) or np.any(lead)))
 
 
 @lru_cache(maxsize=8)
-def _recorded_slice_stiffness(helical: HelicalPair, material, points: int, slices: int) -> tuple:
+def _recorded_slice_layout(helical: HelicalPair, material, points: int, slices: int) -> tuple:
     with warning_scope.recorded() as caught:
         phase = _phases(helical, points)
-        z, stiffness = contact_stiffness(helical, material, phase, slices)
-    return (_frozen(z), _frozen(stiffness)), warning_scope.kept(caught)
+        path_length = helical.transverse.path_length
+        z, positions = slice_positions(helical, phase, slices)
+        # contact_stiffness's test 0 ≤ s/g_α ≤ 1 without the quotient of every slice: s ≥ 0 is s/g_α ≥ 0 (g_α > 0,
+        # s a sum of lengths of order mm, never subnormal), and only an s past g_α by rounding needs it
+        inside = (positions >= 0.0) & (positions <= path_length)
+        near = (positions > path_length) & (positions <= path_length * (1.0 + 1e-12))
+        if near.any():
+            inside[near] = positions[near] / path_length <= 1.0
+        counts = np.count_nonzero(inside.reshape(points, -1), axis=-1)
+        position = positions[inside]
+        slice_index = np.broadcast_to(np.arange(slices, dtype=np.int32), positions.shape)[inside]
+        stiffness = slice_stiffness_at(helical, material, position, slices)
+        layout = _SliceLayout(phase, _frozen(z), _frozen(position), _frozen(slice_index), _frozen(stiffness),
+                              _frozen(np.arange(int(counts.max(initial=0))) < counts[:, None]))
+    return layout, warning_scope.kept(caught)
 
 
-def _slice_stiffness(helical: HelicalPair, material, points: int, slices: int) -> tuple[np.ndarray, np.ndarray]:
-    """:func:`~thermogear.helical.slices.contact_stiffness` at the period's phases, cached on its (frozen,
-    hashable) inputs as the spur pair's stiffness tables are: the mesh models of one pair at other speeds (the
-    points of a sweep, each its own case) share it. Its warnings are raised again on every call."""
-    value, kept = _recorded_slice_stiffness(helical, material, points, slices)
+def _slice_layout(helical: HelicalPair, material, points: int, slices: int) -> _SliceLayout:
+    """The :class:`_SliceLayout` at the period's phases, cached on its (frozen, hashable) inputs as the spur pair's
+    stiffness tables are: the mesh models of one pair at other speeds (the points of a sweep, each its own case)
+    share it. Its warnings (the stiffness table's) are raised again on every call."""
+    layout, kept = _recorded_slice_layout(helical, material, points, slices)
     warning_scope.raise_again(kept)
-    return value
+    return layout
 
 
 def clear_cache() -> None:
-    """Drop the cached slice stiffness (tests, benchmarks, memory); what one mesh model keeps goes with it."""
-    _recorded_slice_stiffness.cache_clear()
+    """Drop the cached slice layouts (tests, benchmarks, memory); what one mesh model keeps goes with it."""
+    _recorded_slice_layout.cache_clear()
 
 
 def _slice_contacts(mesh_model: MeshModel, points: int, slices: int) -> _PeriodContacts:
     gaps = _cached(mesh_model, ("gaps", points, slices), lambda: _slice_gaps(mesh_model, points, slices))
-    z, stiffness = _slice_stiffness(gaps.helical, mesh_model.case.material, points, slices)
-    stiffness = gaps.scale * stiffness
-    contacts = SliceContacts.prepare(stiffness.reshape(points, -1), gaps.gap.reshape(points, -1))
-    return replace(gaps, contacts=contacts)
+    layout = _slice_layout(gaps.helical, mesh_model.case.material, points, slices)
+    contacts = SliceContacts.prepare(layout.padded(gaps.scale * layout.stiffness), layout.padded(gaps.gap))
+    return replace(gaps, contacts=contacts, group=_frozen(layout.padded(layout.slice_index, 0)))
 
 
 def _integral_period(mesh_model: MeshModel, load: float, points: int) -> HelicalMeshPeriod:
@@ -224,14 +253,18 @@ def _integral_period(mesh_model: MeshModel, load: float, points: int) -> Helical
 
 
 def helical_mesh_period(mesh_model: MeshModel, load: float, points: int, slices: int = DEFAULT_SLICES,
-                        always_face: bool = False, deviations: bool = True) -> HelicalMeshPeriod:
+                        always_face: bool = False, deviations: bool = True,
+                        face_stiffness: bool = False) -> HelicalMeshPeriod:
     """The period of ``mesh_model``'s case at F_bt = ``load`` [N] on ``points`` intervals (each at its midpoint;
     module docstring). ``always_face`` solves the load along the face even without deviations (for the report);
-    ``deviations=False`` leaves the model's deviations out (the stiffness of the flanks as they are).
+    ``deviations=False`` leaves the model's deviations out (the stiffness of the flanks as they are);
+    ``face_stiffness`` keeps the stiffness of the slices in contact per place across the face
+    (``face.stiffness_moments``: the load centre and tilting stiffness over the period; implies ``always_face``).
 
-    What depends on neither speed nor load (the slices' gaps; their stiffness on every contact line, sorted for
-    the solve; the face integral) is computed once per model and number of points, the slices' stiffness only
-    where the face load is solved; a call solves every mesh position at once for its load."""
+    What depends on neither speed nor load (the slices in the zone of action with their stiffness, cached on the
+    pair; their gaps; the face integral) is computed once per model and number of points, the slices only where
+    the face load is solved; a call solves every mesh position at once for its load."""
+    always_face = always_face or face_stiffness
     if not deviations or (mesh_model.thermoelastic_mesh is None and not always_face):
         # no deviation at all: the profile's and the lead's come from the thermo-elastic component only
         # (MeshModel.pair_deviation_at, face_temperature_rise), which this model does not have
@@ -240,20 +273,11 @@ def helical_mesh_period(mesh_model: MeshModel, load: float, points: int, slices:
     if gaps.gap_free and not always_face:
         return _integral_period(mesh_model, load, points)
     contacts = _cached(mesh_model, ("slices", points, slices), lambda: _slice_contacts(mesh_model, points, slices))
-    lines = contacts.gap.shape[1]
-    approach, engaged, carried = contacts.contacts.totals(load, np.tile(np.arange(slices), lines), slices)
+    approach, engaged, carried = contacts.contacts.totals(load, contacts.group, slices)
     line_load = carried / (contacts.helical.face_width / slices)
-    face = FaceLoad(contacts.z, contacts.phase, line_load, approach)
+    face = FaceLoad(contacts.z, contacts.phase, line_load, approach,
+                    contacts.contacts.engaged_groups(load, contacts.group, slices) if face_stiffness else None)
     return HelicalMeshPeriod(contacts.helical, contacts.phase.copy(), load, engaged, approach, face, contacts.scale)
-
-
-def _slice_positions(helical: HelicalPair, phase: np.ndarray, z: np.ndarray) -> np.ndarray:
-    """Path position s [m] from A of each slice on each contact line, shape (phases, lines, slices)."""
-    from thermogear.helical.contact_lines import line_entries
-
-    transverse = helical.transverse
-    entries = line_entries(phase, transverse.path_length, helical.face_advance, transverse.base_pitch)
-    return entries[..., None] + z * math.tan(helical.base_helix_angle)
 
 
 def helical_model_state(mesh_model: MeshModel, transverse_state: MeshState, speed: float, load: float,

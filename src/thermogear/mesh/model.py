@@ -21,7 +21,6 @@ import numpy as np
 
 from thermogear.damping import (PairDamping, friction_damping_exponents,
                                 friction_pair_damping, mesh_circular_frequency, mesh_damping)
-from thermogear.composition import X_TE_PROVIDERS
 from thermogear.errors import CaseError
 from thermogear.friction_models import FrictionLaw, friction_law
 from thermogear.lubricant import Lubricant, lubricant_from_case
@@ -31,20 +30,21 @@ from thermogear.mesh.pair_models import PairModelBase, check_model, pair_model_f
 from thermogear.mesh.state import MeshState
 from thermogear.mesh.table_file import mesh_table_of
 from thermogear.mesh_cycle import MeshCycle, MeshGrid, load_share_at, load_shares
+from thermogear.temperature_kinds import temperature_source
 from thermogear.temperature_source import TemperatureField
+from thermogear.thermal_model_rules import x_te_source
 from thermogear.thermoelastic.load_sharing import loaded_transmission_error
 from thermogear.thermoelastic.mesh import ThermoelasticMesh
 
 if TYPE_CHECKING:
     from thermogear.case import Case
+    from thermogear.schema import DampingSection
 
 
-#: Temperature sources whose temperatures depend on the operating point (speed and load): the FE heat model and
-#: the gearbox thermal model. A sweep cannot reuse one mesh period across their speeds or loads.
-OPERATING_POINT_TEMPERATURE_MODELS = ("fem", "gearbox")
-#: Of those, the ones whose temperatures are predicted when the case is loaded, for the case's own speed and load
-#: only: the thermal mesh of such a case is refused at any other operating point.
-PREDICTED_AT_LOAD_TEMPERATURE_MODELS = ("gearbox",)
+# Temperature sources whose temperatures depend on the operating point (speed and load) are those a model computes
+# (temperature_source(name).computed: the FE heat model, the gearbox thermal model): a sweep cannot reuse one mesh
+# period across their speeds or loads. Of those, the ones predicted when the case is loaded (.predicted_at_load)
+# hold for the case's own speed and load only: the thermal mesh of such a case is refused at any other point.
 
 
 @dataclass(frozen=True, eq=False)
@@ -134,8 +134,8 @@ class MeshModel:
         None where the load shares move with the load, and the whole is None where the temperature input depends
         on the speed (the FE heat model; the gearbox model, whose predicted temperatures follow speed and load). Sweeps use it to reuse one mesh period (and do not where the pairs carry
         deviations: the excitation is not part of their batch kernel)."""
-        if (self.case.temperature.model in OPERATING_POINT_TEMPERATURE_MODELS
-                or getattr(self.case.thermal, "x_te_source", "") in X_TE_PROVIDERS):  # X_te by a model (FE)
+        if (temperature_source(self.case.temperature.model).computed
+                or x_te_source(self.case.thermal.x_te_source).provided):  # X_te by a model (FE)
             return None
         table = mesh_table_of(self.case)
         if table is not None and table.damping is not None:  # the table's c(τ) holds at every speed and load
@@ -260,7 +260,7 @@ class MeshModel:
     def _check_predicted_operating_point(self, speed: float, load: float) -> None:
         """The temperatures of a ``"gearbox"`` case are the steady state at its own speed and load: its thermal mesh
         at another operating point would mix the two (make a case at that point: ``Case.with_changes``)."""
-        if not (self.pair_model.thermal and self.case.temperature.model in PREDICTED_AT_LOAD_TEMPERATURE_MODELS):
+        if not (self.pair_model.thermal and temperature_source(self.case.temperature.model).predicted_at_load):
             return
         own_speed, own_load = self.speed_rpm, self.normal_load(self.speed_rpm)
         if not (math.isclose(speed, own_speed, rel_tol=1e-12) and math.isclose(load, own_load, rel_tol=1e-12)):
@@ -333,14 +333,14 @@ class MeshModel:
         return math.sqrt(state.mean_mesh_stiffness / state.mass) / (2.0 * math.pi)
 
 
-def check_damping_friction_law(case: "Case") -> None:
-    """Load-time check of ``[damping] friction_model``: the law has a lubricant factor X_L for the case's base oil
-    (or the case gives ``damping.lubricant_factor``); CaseError naming the key otherwise.
+def check_damping_friction_law(damping: "DampingSection", oil: "Lubricant") -> None:
+    """Load-time check of ``[damping] friction_model``: the law has a lubricant factor X_L for the base oil of the
+    case's ``oil`` (or the case gives ``damping.lubricant_factor``); CaseError naming the key otherwise.
 
-    Keeps the Case: it is a load-time check (``check(case)``, :data:`thermogear.composition.CASE_CHECKS`)."""
-    law = friction_law(case.damping.friction_model, key="damping.friction_model")
-    law.lubricant_factor(lubricant_from_case(case).base_oil, case.damping.lubricant_factor,
-                         key="damping.lubricant_factor")
+    A load-time check (:data:`thermogear.composition.CASE_CHECKS`): it receives these pieces of the case
+    (:mod:`thermogear.case_pieces`)."""
+    law = friction_law(damping.friction_model, key="damping.friction_model")
+    law.lubricant_factor(oil.base_oil, damping.lubricant_factor, key="damping.lubricant_factor")
 
 
 __all__ = ["MODELS", "MeshModel", "MeshState", "check_damping_friction_law"]

@@ -148,13 +148,15 @@ def read_mesh_table(name: str, directory: Path | None = None) -> MeshTable:
 
 
 @cached_per_case
-def mesh_table_of(case) -> MeshTable | None:
-    """The case's mesh table (read once per case), None where ``dynamics.mesh_table`` is not set.
+def mesh_table_of(dynamics, directory) -> MeshTable | None:
+    """The case's mesh table (read once per case: called with the case, ``mesh_table_of(case)``,
+    :func:`thermogear.case.cached_per_case`), None where its ``[dynamics] mesh_table`` is not set; a relative path
+    is read from the case file's ``directory``.
 
     It is also the load-time check of that table (:data:`thermogear.composition.CASE_CHECKS`: every command runs
     it, check = run): reading the file is what checks it, and the table read then is the one the mesh model uses."""
-    name = getattr(case.dynamics, "mesh_table", None)
-    return None if name is None else read_mesh_table(name, case.directory)
+    name = getattr(dynamics, "mesh_table", None)
+    return None if name is None else read_mesh_table(name, directory)
 
 
 #: The load-time check of the case's mesh table: the resolver itself (reading the table checks it).

@@ -41,6 +41,7 @@ from pydantic import Field, model_validator
 
 from thermogear.errors import CaseError
 from thermogear.schema.base import Section
+from thermogear.lubrication_methods import lubrication_method
 from thermogear.schema.friction_inputs import check_friction_inputs
 from thermogear.schema.bearing_loss import SkfBearingData
 
@@ -118,7 +119,7 @@ class GearboxOilSection(Section):
     @model_validator(mode="after")
     def _jet_with_injection(self):
         jet = {"injection_flow_l_min": self.injection_flow_l_min, "jet_speed_m_s": self.jet_speed_m_s}
-        if self.lubrication == "injection":
+        if lubrication_method(self.lubrication).oil_jet:
             for key, value in jet.items():
                 if value is None:
                     raise CaseError(f"gearbox.oil.{key}", None, "a number > 0",
@@ -181,7 +182,9 @@ class GearboxInternalSection(Section):
         None, description="each gear to its own shaft's node [W/K]; default conduction through the gear body from "
                           "its root circle to its bore, 2π k b/ln(r_f/r_bore)")
     shaft_oil_w_per_k: Annotated[float, Field(ge=0.0, le=1e5, allow_inf_nan=False)] = Field(
-        4.0, description="both shafts and their bearings to the oil [W/K], half each")
+        4.0, description="both shafts and their bearings to the oil [W/K], half each (with a [drivetrain], the stretches "
+                         "of shaft from each gear to its bearings add their own surfaces as fins: then the bearings' "
+                         "and the rest of the shafts')")
     shaft_housing_w_per_k: Annotated[float, Field(ge=0.0, le=1e5, allow_inf_nan=False)] = Field(
         8.0, description="both shafts to the housing through the bearing seats [W/K], shared in proportion to the "
                          "bearings on each shaft")

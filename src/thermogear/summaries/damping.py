@@ -8,8 +8,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from thermogear.damping import MODELS, RULES, contact_region_means, mesh_damping
-from thermogear.errors import CaseError
+from thermogear.damping import MODELS, contact_region_means, damping_rule, mesh_damping
 from thermogear.lubricant import Lubricant
 from thermogear.mesh.model import MeshModel
 from thermogear.schema.dynamics import DampingSection
@@ -64,8 +63,7 @@ def damping_summary(meshes: Mapping[str, MeshModel], section: DampingSection, na
     path and over the mesh cycle), from its mesh model of each model (``meshes``: model name → mesh model) and its
     ``[damping]`` section (the rule unless ``rule`` is given)."""
     rule = section.rule if rule is None else rule
-    if rule not in RULES:
-        raise CaseError("damping.rule", rule, " | ".join(RULES), "unknown mesh-damping rule")
+    damping_rule(rule)  # an unknown rule is refused before any model runs
     path, mesh, means, pitch, grids = {}, {}, {}, {}, {}
     oil = None
     for model in MODELS:

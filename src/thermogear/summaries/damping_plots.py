@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from thermogear.damping import MODELS
+from thermogear.damping import MODELS, damping_rule
 from thermogear.summaries.damping import DampingSummary
 
 
@@ -18,7 +18,7 @@ def plot_damping(summary: DampingSummary, periods: int = 3, axes=None, paper: di
         figure, axes = plt.subplots(1, 2, figsize=(11, 4.2), constrained_layout=True)
     else:
         figure = axes[0].figure
-    show_paper = paper is not None and summary.rule == "paper"  # the paper's means are of its own rule
+    show_paper = paper is not None and damping_rule(summary.rule).published  # the paper's means are of its rule
     styles = {"elastic": dict(color="tab:blue", label="elastic c_e (oil at reference temperature)"),
               "thermal": dict(color="tab:red", label="thermal c_r (oil at flank temperature)")}
     for model in MODELS:

@@ -12,25 +12,33 @@ vary={...}, out="study.zarr", scheduler=...)`` runs any kind of study and return
 import sys as _sys
 import types as _types
 
-from thermogear.sweep.branch_plots import plot_branches
-from thermogear.sweep.branches import branch_study, write_branch_store
-from thermogear.sweep.engine import StudyRun, run_study
-from thermogear.sweep.hysteresis import hysteresis_bands
-from thermogear.sweep.store import ResultStore, open_result
-from thermogear.sweep.study import ALIASES, Parameter, Study, load_study_case, parse_values
+#: Public name -> the module that defines it, imported when first asked for (PEP 562): a worker process that
+#: unpickles one task function (e.g. the gearbox grid's block) imports that module alone, not every study kind.
+_PUBLIC = {"plot_branches": "branch_plots", "branch_study": "branches", "write_branch_store": "branches",
+           "StudyRun": "engine", "run_study": "engine", "hysteresis_bands": "hysteresis", "ResultStore": "store",
+           "open_result": "store", "ALIASES": "study", "Parameter": "study", "Study": "study",
+           "load_study_case": "study", "parse_values": "study"}
 
-__all__ = ["ALIASES", "Parameter", "ResultStore", "Study", "StudyRun", "branch_study", "hysteresis_bands",
-           "load_study_case", "open_result", "parse_values", "plot_branches", "run_study", "write_branch_store"]
+__all__ = sorted(_PUBLIC)
+
+
+def __getattr__(name: str):
+    if name not in _PUBLIC:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    import importlib
+
+    return getattr(importlib.import_module(f"{__name__}.{_PUBLIC[name]}"), name)
 
 
 class _CallableModule(_types.ModuleType):
     """``thermogear.sweep(case, vary=..., out=...)``: the module called runs a study (:func:`~thermogear.sweep.api.
     study`)."""
 
-    def __call__(self, case, vary, out, **options):
+    def __call__(self, *arguments, **options):
+        """:func:`thermogear.sweep.api.study` (``case, vary, out, **options``), to which the call is forwarded."""
         from thermogear.sweep.api import study
 
-        return study(case, vary, out, **options)
+        return study(*arguments, **options)
 
 
 _sys.modules[__name__].__class__ = _CallableModule

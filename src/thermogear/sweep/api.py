@@ -15,15 +15,17 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from thermogear.case_pieces import call_with_pieces
 from thermogear.errors import CaseError
 from thermogear.dynamics.mesh_laws import mesh_law
+from thermogear.sweep.evaluation_methods import is_batched
 
-__all__ = ["STUDY_KINDS", "StudyKind", "StudySubject", "study", "study_kind"]
+__all__ = ["STUDY_KINDS", "StudyKind", "StudySubject", "register_study_kind", "study", "study_kind", "study_kinds"]
 
 
 @dataclass(frozen=True)
 class StudySubject:
-    """What picks a case's kind of study, resolved once from the case (:meth:`of`): whether it has a
+    """What picks a case's kind of study, resolved once from the case (:meth:`of` its sections): whether it has a
     ``[drivetrain]``, whether its mesh has the backlash dead zone, whether it has a ``[gearbox]``."""
 
     drivetrain: bool
@@ -31,8 +33,9 @@ class StudySubject:
     gearbox: bool
 
     @classmethod
-    def of(cls, case) -> "StudySubject":
-        return cls(case.drivetrain is not None, mesh_law(case.dynamics.mesh).backlash, case.gearbox is not None)
+    def of(cls, drivetrain, dynamics, gearbox) -> "StudySubject":
+        """The subject of a case with these sections (``call_with_pieces(StudySubject.of, case)``)."""
+        return cls(drivetrain is not None, mesh_law(dynamics.mesh).backlash, gearbox is not None)
 
 
 @dataclass(frozen=True)
@@ -101,27 +104,48 @@ def _refuse(options: dict, kind: str, **defaults) -> None:
 #: The kinds of study, tried in order (those picked by the case), or named.
 STUDY_KINDS: tuple[StudyKind, ...] = (
     StudyKind("drivetrain", lambda subject, method: subject.drivetrain, _run_drivetrain),
-    StudyKind("branches", lambda subject, method: subject.backlash and method == "batch", _run_branches),
+    StudyKind("branches", lambda subject, method: subject.backlash and is_batched(method), _run_branches),
     StudyKind("grid", lambda subject, method: True, _run_grid),
     StudyKind("warmup", lambda subject, method: subject.gearbox, _run_warmups, by_case=False,
               needs="a case with a [gearbox] (the thermal network the warm-up integrates)", default_model="thermal"),
 )
 
 
-def study_kind(case, method: str = "batch", name: str | None = None) -> StudyKind:
-    """The kind of study of ``case``: the first of :data:`STUDY_KINDS` picked by the case that accepts it, or the
-    kind ``name`` (refused where it does not accept the case, or where the case picks another kind of its own)."""
-    subject = StudySubject.of(case)
-    automatic = next(kind for kind in STUDY_KINDS if kind.by_case and kind.accepts(subject, method))
+#: Kinds of study added at run time (:func:`register_study_kind`), tried before the built-in ones.
+_REGISTERED: list[StudyKind] = []
+
+
+def register_study_kind(kind: StudyKind) -> StudyKind:
+    """Add a kind of study, named by ``sweep --kind`` and ``thermogear.sweep(kind=...)`` (``by_case=False``), or
+    picked from the case before the built-in kinds wherever its ``accepts`` does (``by_case=True``). Its
+    ``run(study, out, options)`` computes the study's points and writes them to ``out``; it returns the Dataset.
+    Returns the kind; ValueError for a name already taken."""
+    if kind.name in {known.name for known in (*_REGISTERED, *STUDY_KINDS)}:
+        raise ValueError(f"a kind of study named {kind.name!r} exists already")
+    _REGISTERED.append(kind)
+    return kind
+
+
+def study_kinds() -> tuple[StudyKind, ...]:
+    """Every kind of study, in the order they are tried: the registered ones, then :data:`STUDY_KINDS`."""
+    return (*_REGISTERED, *STUDY_KINDS)
+
+
+def study_kind(subject: StudySubject, method: str = "batch", name: str | None = None) -> StudyKind:
+    """The kind of study of a case (its ``subject``, :meth:`StudySubject.of`): the first of :func:`study_kinds`
+    picked by the case that accepts it, or the kind ``name`` (refused where it does not accept the case, or where
+    the case picks another kind of its own)."""
+    every = study_kinds()
+    automatic = next(kind for kind in every if kind.by_case and kind.accepts(subject, method))
     if name is None:
         return automatic
-    kinds = {kind.name: kind for kind in STUDY_KINDS}
+    kinds = {kind.name: kind for kind in every}
     if name not in kinds:
         raise CaseError("kind", name, " | ".join(kinds), "unknown kind of study")
     chosen = kinds[name]
     if chosen.by_case and chosen is not automatic:
         raise CaseError("kind", name, f"{automatic.name} (or a kind named only: "
-                        f"{', '.join(kind.name for kind in STUDY_KINDS if not kind.by_case)})",
+                        f"{', '.join(kind.name for kind in every if not kind.by_case)})",
                         f"this case's study is the {automatic.name} study")
     if not chosen.accepts(subject, method):
         raise CaseError("kind", name, chosen.needs or "a case this kind accepts", f"the {name} study needs it")
@@ -146,7 +170,7 @@ def study(case, vary: dict[str, Any] | list[str], out: str | Path, scheduler: st
 
     if isinstance(case, (str, Path)):
         case, _ = load_study_case(case)
-    chosen = study_kind(case, method, kind)
+    chosen = study_kind(call_with_pieces(StudySubject.of, case), method, kind)
     defined = Study.define(case, vary, model=model or chosen.default_model, chunk_points=chunk_points, hold=hold)
     options = {"scheduler": scheduler, "workers": workers, "resume": resume, "overwrite": overwrite,
                "chunk_points": chunk_points, "method": method, "direction": direction, "multistart": multistart,

@@ -42,8 +42,10 @@ from thermogear.dynamics.mesh_laws import mesh_law
 from thermogear import warning_scope
 from thermogear.errors import JammingError, ModelLimitError, ProblemError
 from thermogear.mesh.model import MeshModel
+from thermogear.sweep.evaluation_methods import evaluation_method
 from thermogear.dynamics.periodic_batch_metrics import periodic_metrics_batch
 from thermogear.warning_causes import warning_text
+from thermogear.sweep.metric_variables import DTE_VARIABLES
 
 __all__ = ["FLAG_VARIABLES", "MODEL_VARIABLES", "POINT_VARIABLES", "GroupTables", "empty_block_result", "evaluate_block",
            "evaluate_loads", "evaluate_point", "evaluate_speeds", "group_tables"]
@@ -53,9 +55,7 @@ MODEL_VARIABLES: dict[str, tuple[str, str]] = {
     "kv": ("1", "dynamic load factor Kv = max pair dynamic load / static load (Luo & Li Eq. 29)"),
     "max_pair_load": ("N", "largest single-pair dynamic load over the period"),
     "max_system_load_ratio": ("1", "largest system dynamic load / static load"),
-    "dte_mean": ("m", "mean dynamic transmission error"),
-    "dte_rms": ("m", "RMS of the dynamic transmission error about its mean"),
-    "dte_peak_to_peak": ("m", "peak-to-peak dynamic transmission error"),
+    **DTE_VARIABLES,
     "max_velocity": ("m/s", "largest |dx/dt| over the period"),
     "natural_frequency_hz": ("Hz", "natural frequency sqrt(mean k / me) / 2 pi"),
     "mean_mesh_stiffness": ("N/m", "time-mean mesh stiffness over one period"),
@@ -317,7 +317,7 @@ def _evaluate_model(study, method, shared, group_case, model, model_index, value
     from thermogear.orchestrator import Orchestrator  # noqa: PLC0415  (the model chain only where a point runs it)
 
     speed_axis, load_axes, members = layout
-    if method == "batch":
+    if evaluation_method(method).batched:
         mesh = MeshModel(group_case, model)
         key = (model, *(values[a] for a in range(len(values)) if a != speed_axis and a not in load_axes))
         if key not in shared:

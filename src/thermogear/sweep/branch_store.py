@@ -9,6 +9,7 @@ from typing import Any
 import numpy as np
 
 from thermogear.sweep.load_held import study_load_held
+from thermogear.sweep.metric_variables import DTE_VARIABLES
 
 __all__ = ["BRANCH_VARIABLES", "STATE_SIZE", "branch_layout", "branch_region", "orbit_arrays"]
 
@@ -17,9 +18,7 @@ BRANCH_VARIABLES: dict[str, tuple[str, str]] = {
     "kv": ("1", "dynamic load factor Kv = max pair force / static load (Luo & Li Eq. 29)"),
     "max_pair_load": ("N", "largest single-pair force over the orbit"),
     "max_system_load_ratio": ("1", "largest mesh force / static load"),
-    "dte_mean": ("m", "mean dynamic transmission error"),
-    "dte_rms": ("m", "RMS of the dynamic transmission error about its mean"),
-    "dte_peak_to_peak": ("m", "peak-to-peak dynamic transmission error"),
+    **DTE_VARIABLES,
     "contact_loss_fraction": ("1", "fraction of the period without driving-flank contact"),
     "back_side_contact": ("1", "1 where a back flank is struck"),
     "back_contact_fraction": ("1", "fraction of the period with a back flank in contact"),

@@ -29,7 +29,8 @@ import numpy as np
 from thermogear import warning_scope
 from thermogear.dynamics.backlash_continuation import branch_point
 from thermogear.errors import CaseError, JammingError
-from thermogear.mesh.model import PREDICTED_AT_LOAD_TEMPERATURE_MODELS, MeshModel
+from thermogear.mesh.model import MeshModel
+from thermogear.temperature_kinds import temperature_source
 from thermogear.sweep.branch_store import BRANCH_VARIABLES, branch_layout, branch_region, orbit_arrays
 from thermogear.sweep.hysteresis import hysteresis_bands
 from thermogear.sweep.load_held import study_load_held
@@ -101,7 +102,7 @@ def _point_problem(study, identity: str, rest: tuple[int, ...], group_case, mode
     operating point (the gearbox model) the point's case is the group's at this speed (its own steady
     temperatures, hot geometry, E(T) and oil); otherwise every speed is evaluated on the group's mesh model.
     JammingError where the gears jam."""
-    if group_case.temperature.model in PREDICTED_AT_LOAD_TEMPERATURE_MODELS:
+    if temperature_source(group_case.temperature.model).predicted_at_load:
         try:
             mesh = _cached(("mesh", identity, rest, model, speed), lambda: MeshModel(
                 group_case.with_changes(**{"operating.speed_rpm": float(speed)}), model))
@@ -118,7 +119,7 @@ def _point_problem(study, identity: str, rest: tuple[int, ...], group_case, mode
 def _static_load(study, identity: str, rest, group_case, speed: float, problem_load: float | None) -> float:
     """The stored static load of a point: the last model's whose problem is built there (a model whose gears jam
     gives way to the one before it; with the gearbox model the last model's, NaN where it jams)."""
-    if problem_load is not None or group_case.temperature.model in PREDICTED_AT_LOAD_TEMPERATURE_MODELS:
+    if problem_load is not None or temperature_source(group_case.temperature.model).predicted_at_load:
         return np.nan if problem_load is None else float(problem_load)
     for model in reversed(study.models[:-1]):
         try:

@@ -31,6 +31,7 @@ import numpy as np
 from thermogear.errors import CaseError, JammingError, ModelLimitError, ProblemError
 from thermogear.sweep.drivetrain_branches import DIRECTIONS
 from thermogear.sweep.drivetrain_store import STAGE_KEYS, TEMPERATURES
+from thermogear.temperature_kinds import temperature_source
 
 __all__ = ["DrivetrainPlan", "plan_drivetrain_study", "point_case", "run_task"]
 
@@ -124,8 +125,6 @@ def plan_drivetrain_study(study, built, chunk_points: int, directions: tuple[str
                           ) -> DrivetrainPlan:
     """Plan the study of a drivetrain case (``built``: its drivetrain, for the bearings and the state size;
     ``directions``: the branches of a backlash study)."""
-    from thermogear.mesh.model import PREDICTED_AT_LOAD_TEMPERATURE_MODELS
-
     unknown = [direction for direction in directions if direction not in DIRECTIONS]
     if unknown or not directions:
         raise CaseError("--direction", ", ".join(unknown) or "none", "up | down | both",
@@ -137,7 +136,7 @@ def plan_drivetrain_study(study, built, chunk_points: int, directions: tuple[str
                         "in order (a branch follows its neighbour)")
     others = [p.size for a, p in enumerate(study.parameters) if a != speed_axis]
     groups = list(np.ndindex(*others)) if others else [()]
-    per_point = study.case.temperature.model in PREDICTED_AT_LOAD_TEMPERATURE_MODELS
+    per_point = temperature_source(study.case.temperature.model).predicted_at_load
     models = tuple(study.models)
     first = models[0]
     bearings = tuple(bearing.name for bearing in built.drivetrains[first].bearings)

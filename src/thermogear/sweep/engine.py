@@ -34,12 +34,14 @@ from thermogear import warning_scope
 from thermogear.errors import CaseError
 from thermogear.mesh.model import MeshModel
 from thermogear.sweep.batch import evaluate_block, fast_path_applies
+from thermogear.sweep.evaluation_methods import EVALUATION_METHODS, evaluation_method, is_batched
 from thermogear.sweep.store import ResultStore
 from thermogear.warning_causes import WarningTally, warning_text
 
 __all__ = ["StudyRun", "compute_block", "local_scheduler", "run_study"]
 
-METHODS = ("batch", "simulation")
+#: The evaluation methods by name (:mod:`thermogear.sweep.evaluation_methods`).
+METHODS = tuple(EVALUATION_METHODS)
 
 
 def compute_block(shared: tuple, block):
@@ -102,8 +104,7 @@ def run_study(study, out: str | Path, scheduler: str | None = None, resume: bool
     """
     from thermogear.sweep.executor import execute
 
-    if method not in METHODS:
-        raise CaseError("method", method, " | ".join(METHODS), "unknown evaluation method")
+    evaluation_method(method)  # an unknown method is refused before anything is written
     kind = local_scheduler(study, method, dashboard) if scheduler in (None, "", "local") else scheduler
     if dashboard is not None and kind != "processes":  # refused before anything is written
         raise CaseError("--dashboard", dashboard, "only with the local Dask cluster (--scheduler processes)",
@@ -144,7 +145,7 @@ def local_scheduler(study, method: str, dashboard: str | None = None) -> str:
     """The local scheduler for a study: ``"threads"`` where every model of its case runs on the fast path (the
     numba kernel releases the GIL), ``"processes"`` otherwise (pure-Python points need processes to run in
     parallel) and wherever a dashboard is asked for (the Dask cluster serves it)."""
-    if dashboard is None and method == "batch" and fast_path_applies(MeshModel(study.case, model)
+    if dashboard is None and is_batched(method) and fast_path_applies(MeshModel(study.case, model)
                                                                       for model in study.models):
         return "threads"
     return "processes"

@@ -10,7 +10,10 @@ attributes, the command's summary and JSON, the plot and the CSV export all name
 from __future__ import annotations
 
 import math
-from typing import Any
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from thermogear.operating import OperatingPoint
 
 __all__ = ["HOLDS", "fixed_load_changes", "study_load_held"]
 
@@ -22,8 +25,10 @@ _POWER, _TORQUE, _STAGE, _SPEED = ("operating.power_kw", "operating.torque_nm", 
 HOLDS = ("torque", "power")
 
 
-def fixed_load_changes(case, parameters, hold: str = "torque") -> tuple[tuple[str, Any], ...]:
-    """Changes applied to every point: the load a speed sweep keeps. ``hold = "torque"`` (default): a case whose
+def fixed_load_changes(given: dict[str, Any], point: "OperatingPoint", parameters,
+                       hold: str = "torque") -> tuple[tuple[str, Any], ...]:
+    """Changes applied to every point: the load a speed sweep keeps, of a case whose ``[operating]`` table gives
+    ``given`` (the keys of its file) and makes the operating ``point``. ``hold = "torque"`` (default): a case whose
     load is a power is turned into the torque of that power at the case's speed; ``"power"``: a case whose load is
     a torque (or an FZG load stage) is turned into the power of that torque at the case's speed. Nothing changes
     where the study varies a load itself, or not the speed."""
@@ -31,11 +36,9 @@ def fixed_load_changes(case, parameters, hold: str = "torque") -> tuple[tuple[st
     load_keys = {"operating.torque_nm", "operating.power_kw", "operating.fzg_load_stage"}
     if "operating.speed_rpm" not in keys or keys & load_keys:
         return ()
-    operating = case.document.get("operating", {})
-    point = case.operating_point
-    if hold == "torque" and operating.get("power_kw") is not None:
+    if hold == "torque" and given.get("power_kw") is not None:
         return (("operating.power_kw", None), ("operating.torque_nm", float(point.torque)))
-    if hold == "power" and operating.get("power_kw") is None:
+    if hold == "power" and given.get("power_kw") is None:
         power_kw = float(point.torque) * 2.0 * math.pi * float(point.speed_rpm) / 60.0 / 1000.0
         return (("operating.fzg_load_stage", None), ("operating.torque_nm", None), ("operating.power_kw", power_kw))
     return ()

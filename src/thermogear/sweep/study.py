@@ -66,7 +66,9 @@ COMPANION_CHANGES: dict[str, dict[str, Any]] = {
 #: A derived parameter: a shift of every tabulated flank temperature (the case's flank table + offset).
 FLANK_OFFSET_KEY = "temperature.flank_offset_c"
 
-MODEL_CHOICES = ("elastic", "thermal", "both")
+#: The ``model`` choices of a study by name → the simulation models it runs: the one place they are compared.
+MODEL_CHOICES: dict[str, tuple[str, ...]] = {"elastic": ("elastic",), "thermal": ("thermal",),
+                                             "both": ("elastic", "thermal")}
 DEFAULT_CHUNK_POINTS = 4096  # points per task and zarr chunk: amortises the per-block cost (tables, writes)
 #: Large studies get larger chunks, about this many tasks, up to LARGEST_DEFAULT_CHUNK points: at 10⁶ points the
 #: per-task cost of 4096-point chunks kept two workers at 1.55× of serial; 20 000-point chunks give 1.68× (and
@@ -199,7 +201,7 @@ class Study:
             raise CaseError("--hold", hold, " | ".join(HOLDS), "the load a speed sweep keeps from speed to speed")
         if model not in MODEL_CHOICES:
             raise CaseError("model", model, " | ".join(MODEL_CHOICES), "unknown model choice")
-        models = ("elastic", "thermal") if model == "both" else (model,)
+        models = MODEL_CHOICES[model]
         if isinstance(vary, dict):
             items = list(vary.items())
         else:
@@ -238,7 +240,8 @@ class Study:
         if any(p.key == FLANK_OFFSET_KEY for p in parameters):
             flank = _flank_table_of(case.temperature)
         study = cls(case=case, parameters=tuple(parameters), models=models, chunk_points=chunk,
-                    fixed_changes=fixed_load_changes(case, parameters, hold), hold=hold, _flank_table=flank)
+                    fixed_changes=fixed_load_changes(case.document.get("operating", {}),
+                                                  case.operating_point, parameters, hold), hold=hold, _flank_table=flank)
         study.check_values()
         return study
 

@@ -11,7 +11,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from functools import cached_property
-from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -24,7 +23,7 @@ from thermogear.operating import OperatingPoint
 from thermogear.stiffness import scaled_compliance
 from thermogear.stiffness import table as stiffness_table
 from thermogear.stiffness.table import pair_stiffness_at
-from thermogear.temperature_source import TemperatureField, temperature_field_from_case
+from thermogear.temperature_source import TemperatureField
 from thermogear.thermoelastic.deviations import (base_pitch_deviation, equivalent_bulk_rise, flank_distortion,
                                                  tip_relief)
 from thermogear.thermoelastic.inputs import (GearInputs, HousingInputs, backlash_allowance, check_not_jammed,
@@ -32,9 +31,6 @@ from thermogear.thermoelastic.inputs import (GearInputs, HousingInputs, backlash
 from thermogear.thermoelastic.load_sharing import LoadedTransmissionError, loaded_transmission_error
 from thermogear.thermoelastic.materials import youngs_modulus_at
 from thermogear.thermoelastic.operating import BacklashAllowance, backlash_at, jamming_rise, operating_gear_pair
-
-if TYPE_CHECKING:
-    from thermogear.case import Case
 
 #: Contact positions Γ of the thermal flank-distortion table (A to E inclusive); linear interpolation between them
 #: is exact to < 1e-4 of the distortion for the smooth (polynomial) flank fields of thermogear.
@@ -89,12 +85,13 @@ class ThermoelasticMesh:
     # ---------------------------------------------------------------------------------------- construction
     @staticmethod
     @cached_per_case
-    def from_case(case: "Case") -> "ThermoelasticMesh":
-        """The component of a case, built once per case (raises CaseError when the gears jam): the one place the
-        case is read (its temperature field, gear pair, sections and operating point)."""
-        return thermoelastic_mesh(temperature_field_from_case(case), case.gear_pair, case.gears_input,
-                                  case.material_input, case.material, case.housing, case.lubricant,
-                                  case.operating_point)
+    def from_case(temperature_field: "TemperatureField", gear_pair: "GearPair", gears_input, material_input,
+                  material: "Material", housing, lubricant, operating_point: "OperatingPoint") -> "ThermoelasticMesh":
+        """The component of a case, built once per case (raises CaseError when the gears jam) from these pieces of
+        it: its temperature field, gear pair, sections and operating point. Called with the case
+        (``ThermoelasticMesh.from_case(case)``, memoised per case, :func:`thermogear.case.cached_per_case`)."""
+        return thermoelastic_mesh(temperature_field, gear_pair, gears_input, material_input, material, housing,
+                                  lubricant, operating_point)
 
     # ------------------------------------------------------------------------------------------- stiffness
     @property

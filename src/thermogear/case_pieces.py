@@ -1,0 +1,80 @@
+"""The pieces of a case a plug-in receives: its checks and providers name what they read, the case hands it over.
+
+The load-time checks, the temperature and X_te providers and the drivetrain's heat provider of
+:mod:`thermogear.composition` (and those a user registers) used to receive the whole :class:`~thermogear.case.Case`
+and each picked its sections out of it. Now a plug-in's parameters name the pieces it reads, and
+:func:`call_with_pieces` resolves each from the case (the dataflow style of Hamilton's functions or pytest's
+fixtures: a parameter's name is the input it asks for):
+
+* a part of the case as loaded: a field of the Case (``gear_pair``, ``operating_point``, ``material``, a section:
+  ``gearbox``, ``drivetrain``, ``temperature``, ``damping``, ...) or one of its properties (``directory``,
+  ``normal_load``, ``equivalent_mass``);
+* a derived piece, resolved once per case by its resolver named in
+  :data:`thermogear.composition.CASE_PIECES` (``oil``: the lubricant model; ``gearbox_model``: the gearbox thermal
+  network, None for a case without ``[gearbox]``; ``fem_inputs``: the finite-element model's inputs);
+* ``case``: the whole case, for a plug-in that resolves the case itself (a resolver, such as the gearbox's
+  temperature model, which writes a new case; and a provider written as ``provider(case)`` before the pieces).
+
+So a check or provider states its inputs in its signature, is tested with those inputs alone, and the case is read
+in one place. This module imports nothing of thermogear but :mod:`thermogear.composition` (which imports none), so
+every layer may read it.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import functools
+import inspect
+from collections.abc import Callable
+from typing import Any
+
+from thermogear.composition import CASE_PIECES, resolve
+
+__all__ = ["WHOLE_CASE", "call_with_pieces", "piece_names"]
+
+#: The name under which a plug-in asks for the whole case (module docstring).
+WHOLE_CASE = "case"
+
+
+@functools.lru_cache(maxsize=None)
+def piece_names(function: Callable) -> tuple[str, ...]:
+    """The pieces ``function`` asks for: the names of its parameters, each passed by keyword (TypeError for
+    ``*args``/``**kwargs``, which name no piece)."""
+    names = []
+    for parameter in inspect.signature(function, follow_wrapped=False).parameters.values():
+        if parameter.kind in (parameter.VAR_POSITIONAL, parameter.VAR_KEYWORD, parameter.POSITIONAL_ONLY):
+            raise TypeError(f"{getattr(function, '__qualname__', function)!s}: parameter '{parameter.name}' names no "
+                            "piece of a case (a check or provider takes the pieces it reads by name)")
+        names.append(parameter.name)
+    return tuple(names)
+
+
+@functools.lru_cache(maxsize=None)
+def _case_parts(kind: type) -> frozenset[str]:
+    """The names of the parts of a case as loaded (a ``kind`` of case): its fields and properties."""
+    fields = {field.name for field in dataclasses.fields(kind)} if dataclasses.is_dataclass(kind) else set()
+    return frozenset(fields | {name for name, value in vars(kind).items() if isinstance(value, property)})
+
+
+def call_with_pieces(function: Callable, case: Any) -> Any:
+    """``function`` called with the pieces of ``case`` its parameters name (module docstring); TypeError naming the
+    allowed pieces for a parameter that names none."""
+    arguments = {}
+    for name in piece_names(function):
+        derived = CASE_PIECES.get(name)
+        if name == WHOLE_CASE:
+            arguments[name] = case
+        elif derived is not None:
+            target, requires = derived
+            resolver = resolve(target)
+            if resolver is None:
+                raise TypeError(f"the piece '{name}' of a case is resolved by {target}, which is not installed")
+            absent = requires is not None and getattr(case, requires) is None
+            arguments[name] = None if absent else call_with_pieces(resolver, case)
+        elif name in _case_parts(type(case)):
+            arguments[name] = getattr(case, name)
+        else:
+            allowed = sorted(_case_parts(type(case)) | set(CASE_PIECES) | {WHOLE_CASE})
+            raise TypeError(f"{getattr(function, '__qualname__', function)!s}: '{name}' is not a piece of a case "
+                            f"(allowed: {', '.join(allowed)})")
+    return function(**arguments)

@@ -1,0 +1,52 @@
+"""Checks and providers receive the pieces of the case they name (issue 33: only resolvers and entry points take a
+whole Case): :func:`thermogear.case_pieces.call_with_pieces` hands each parameter its piece."""
+
+from __future__ import annotations
+
+import pytest
+
+from thermogear import composition
+from thermogear.case import Case, load_case
+from thermogear.case_pieces import WHOLE_CASE, call_with_pieces, piece_names
+
+PLUG_INS = [*composition.TEMPERATURE_PROVIDERS.values(), *composition.X_TE_PROVIDERS.values(),
+            *composition.DRIVETRAIN_HEAT.values(), *composition.CASE_CHECKS,
+            *(target for target, _ in composition.CASE_PIECES.values())]
+
+
+@pytest.mark.parametrize("target", PLUG_INS)
+def test_every_builtin_plug_in_names_pieces_of_a_case(target):
+    import dataclasses
+
+    parts = {field.name for field in dataclasses.fields(Case)} | {
+        name for name, value in vars(Case).items() if isinstance(value, property)}
+    allowed = parts | set(composition.CASE_PIECES) | {WHOLE_CASE}
+    assert set(piece_names(composition.resolve(target))) <= allowed
+
+
+def test_the_checks_and_providers_take_no_whole_case():
+    # only the resolvers (mesh table, the gearbox's temperature model, the piece resolvers) may ask for the case
+    takers = [target for target in [*composition.TEMPERATURE_PROVIDERS.values(), *composition.X_TE_PROVIDERS.values(),
+                                    *composition.DRIVETRAIN_HEAT.values(), *composition.CASE_CHECKS]
+              if WHOLE_CASE in piece_names(composition.resolve(target))]
+    assert takers == ["thermogear.mesh.table_file:check_mesh_table"]
+
+
+def test_each_parameter_receives_its_piece():
+    case = load_case("luo2019")
+    seen = call_with_pieces(lambda gear_pair, damping, normal_load, case: (gear_pair, damping, normal_load, case),
+                            case)
+    assert seen == (case.gear_pair, case.damping, case.normal_load, case)
+    # a derived piece comes from its resolver; an optional one is None where its section is absent
+    from thermogear.lubricant import lubricant_from_case
+
+    assert call_with_pieces(lambda oil: oil, case) is lubricant_from_case(case)
+    assert case.gearbox is None and call_with_pieces(lambda gearbox_model: gearbox_model, case) is None
+
+
+def test_a_parameter_that_names_no_piece_is_refused():
+    case = load_case("luo2019")
+    with pytest.raises(TypeError, match="'speed' is not a piece of a case"):
+        call_with_pieces(lambda speed: speed, case)
+    with pytest.raises(TypeError, match="names no piece"):
+        call_with_pieces(lambda *pieces: pieces, case)
