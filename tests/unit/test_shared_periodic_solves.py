@@ -54,7 +54,7 @@ def test_the_linear_response_takes_the_backlash_solvers_switch_free_solve(user_d
     built = user_drivetrain
     backlash = built.backlash_response("elastic")
     assert backlash.converged and backlash.contact_loss_fraction == 0.0  # switch-free: the linear orbit
-    kept = built.solves("elastic")
+    kept = built._solves  # the case drivetrain's kept solves
     assert len(kept) == 1
     import thermogear.drivetrain.response as response_module
     import thermogear.dynamics.periodic_solves as solves_module
@@ -76,3 +76,32 @@ def test_the_linear_response_takes_the_backlash_solvers_switch_free_solve(user_d
     assert np.abs(shared.multipliers - own.multipliers).max() < 1e-12
     # the backlash orbit (no switch) is that orbit: the same Kv to the shooting's resolution
     assert backlash.kv == pytest.approx(own.kv, rel=1e-8)
+
+
+@pytest.mark.parametrize("parted", [True, False])
+def test_the_chunked_solve_with_and_without_the_exponentials_parts(monkeypatch, parted):
+    # the chunked route keeps each sub-step as the parts of its rank-update exponential and multiplies the whole
+    # pieces through theirs; where the parts are refused (here: the rank route forced off, as for patterns of high
+    # rank) it forms the matrices, the sub-steps in a second pass. Both exact: 1e-10 of the orbit's size against the
+    # piece-by-piece reference (as test_periodic_ndof's chunked route), and the start-up projector fed either way
+    import thermogear.dynamics.periodic_ndof as periodic
+    from test_periodic_ndof import _many_pieces, _reference_orbit
+
+    from thermogear.dynamics.periodic_motion import MotionProjector, motion_projections
+
+    system = _many_pieces(None)
+    monkeypatch.setattr(periodic, "LEAN_ROUTE_BYTES", 0)
+    monkeypatch.setattr(periodic, "CHUNK_BYTES", 10 * 8 * (2 * system.size + 1) ** 2)
+    if not parted:
+        monkeypatch.setattr(periodic, "_RANK_ROUTE_RATIO", 10**9)
+    rows, where = periodic.grouped_pieces(system, 2)
+    first_steps = next(periodic.chunked_transitions(system, rows, where, 2, dense_steps=False))[2]
+    assert (first_steps is not None) == parted
+    projector = MotionProjector(system, 2, np.eye(2 * system.size)[:1])
+    response = periodic_response(system, samples_per_piece=2, observer=projector.add)
+    reference = _reference_orbit(system, 2)
+    assert np.abs(response.displacement - reference).max() < 1e-10 * np.abs(reference).max()
+    assert projector.complete
+    rest = np.zeros(2 * system.size)
+    assert np.array_equal(projector.projections(rest, 3), motion_projections(system, rest, 3, 2,
+                                                                             np.eye(2 * system.size)[:1]))

@@ -30,6 +30,7 @@ import numpy as np
 from thermogear.case_pieces import call_with_pieces
 from thermogear.composition import DRIVETRAIN_HEAT, builtin
 from thermogear.dynamics.mesh_laws import mesh_law
+from thermogear.dynamics.periodic_solves import PeriodicSolves
 from thermogear.drivetrain.assembly import Drivetrain
 from thermogear.drivetrain.case_layout import drivetrain_from_section
 from thermogear.drivetrain.heat import ModeShifts, WarmState, thermal_mode_shifts, warm_drivetrain
@@ -94,7 +95,7 @@ class CaseDrivetrain:
     train_phases: tuple[float, ...] = (0.0,)
     _assembled: dict = field(default_factory=dict, repr=False)
     warm_state: dict = field(default_factory=dict)
-    _solves: dict = field(default_factory=dict, repr=False)
+    _solves: PeriodicSolves = field(default_factory=PeriodicSolves, repr=False)  # the linear and switch-free solves
 
     @property
     def stages(self) -> tuple[tuple[str, float], ...]:
@@ -136,16 +137,6 @@ class CaseDrivetrain:
             self._assembled[model] = self.drivetrains[model].assemble()
         return self._assembled[model]
 
-    def solves(self, model: str):
-        """The :class:`~thermogear.dynamics.periodic_solves.PeriodicSolves` of one model: the linear response and
-        the backlash solver's switch-free orbit (every contact closed) share one periodic solve where their reduced
-        systems are equal bit for bit (tested on the arrays, never assumed)."""
-        if model not in self._solves:
-            from thermogear.dynamics.periodic_solves import PeriodicSolves
-
-            self._solves[model] = PeriodicSolves()
-        return self._solves[model]
-
     def modes(self, model: str) -> DrivetrainModes:
         """Lowest ``mode_count`` undamped modes at the model's mean mesh stiffness."""
         return drivetrain_modes(self.assembled(model), count=self.section.mode_count)
@@ -155,7 +146,7 @@ class CaseDrivetrain:
         """Exact periodic response to one mesh period of ``model`` at a pinion speed [rpm] (default the case's)."""
         state = self.mesh_states(model, speed_rpm, points_per_period)
         return drivetrain_periodic_response(self.assembled(model), state, samples_per_piece=SAMPLES_PER_PIECE,
-                                            cutoff_hz=self.section.response_cutoff_hz, solves=self.solves(model))
+                                            cutoff_hz=self.section.response_cutoff_hz, solves=self._solves)
 
     def cutoff_error(self, model: str, response: DrivetrainResponse | None = None):
         """The estimated error of the linear response of ``model`` on the section's ``response_cutoff_hz`` (default
@@ -183,8 +174,7 @@ class CaseDrivetrain:
                                             substeps=backlash_substeps(self._pieces(state)),
                                             samples_per_piece=SAMPLES_PER_PIECE,
                                             cutoff_hz=self.section.response_cutoff_hz,
-                                            startup_periods=self.dynamics.transient_periods,
-                                            solves=self.solves(model))
+                                            startup_periods=self.dynamics.transient_periods, solves=self._solves)
 
     def transient(self, model: str) -> DrivetrainTransient:
         """The motion from rest over the case's ``dynamics.transient_periods`` mesh periods (backlash mesh where the

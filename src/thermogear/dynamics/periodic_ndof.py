@@ -37,7 +37,7 @@ from thermogear.dynamics.piecewise_system import PiecewiseLinearSystem
 from thermogear.dynamics.sub_steps import DenseSteps, PartedSteps
 from thermogear.errors import ProblemError
 
-__all__ = ["RUN_ROUTE_SIZE", "PiecewiseLinearSystem", "PeriodicResponse", "chunked_exponentials", "chunked_transitions",
+__all__ = ["RUN_ROUTE_SIZE", "PiecewiseLinearSystem", "PeriodicResponse", "chunked_transitions",
            "grouped_pieces",
            "monodromy", "ordered_product", "periodic_response", "piece_steps"]
 
@@ -311,28 +311,14 @@ def periodic_response(system: PiecewiseLinearSystem, samples_per_piece: int = 16
     return _by_blocks(system, _exponentials(system, rows), where, samples)
 
 
-def chunked_exponentials(system: PiecewiseLinearSystem, rows: np.ndarray, where: np.ndarray, multiple: int = 1):
-    """Yield (first piece, (c, 2n+1, 2n+1) exponentials of the pieces first … first + c − 1 in order) over
-    consecutive chunks of about :data:`CHUNK_BYTES`: the grouped ``rows`` of :func:`grouped_pieces` (each distinct
-    piece of a chunk exponentiated once) over ``multiple`` times their width (the sub-step count: each piece's whole
-    transition e^{A_j h_j}, formed directly, not as a power of the sub-step one). No stack of all the pieces is held."""
-    chunk_pieces = max(1, CHUNK_BYTES // (8 * (2 * system.size + 1) ** 2))
-    operators = (_mass_inverse(system), _pattern_range(system))  # once for every chunk, not per chunk
-    for first in range(0, where.size, chunk_pieces):
-        unique, inverse = np.unique(where[first:first + chunk_pieces], return_inverse=True)
-        chunk = rows[unique]
-        chunk[:, 0] *= multiple
-        yield first, _exponentials(system, chunk, operators)[inverse.ravel()]
-
-
 def chunked_transitions(system: PiecewiseLinearSystem, rows: np.ndarray, where: np.ndarray, samples: int,
-                        dense_steps: bool = True):
+                        dense_steps: bool = True, wholes: bool = True):
     """Yield (first piece, the whole transitions e^{A_j h_j} of the pieces first … first + c − 1, their sub-step
     transitions e^{A_j h_j/s}, s = ``samples``) over consecutive chunks of about :data:`CHUNK_BYTES` of matrices,
     in one pass: each as the parts of its rank-update exponential where it has them without squarings
     (:class:`~thermogear.dynamics.sub_steps.PartedSteps`, O(q·m) numbers a piece, no (m, m) matrix per piece
-    formed), else as matrices (:class:`~thermogear.dynamics.sub_steps.DenseSteps`; sub-steps None with
-    ``dense_steps`` False: the caller then forms them in a pass of its own)."""
+    formed), else as matrices (:class:`~thermogear.dynamics.sub_steps.DenseSteps`); sub-steps None where not parted
+    with ``dense_steps`` False (the caller forms them in a pass of its own), the wholes None without ``wholes``."""
     chunk_pieces = max(1, CHUNK_BYTES // (8 * (2 * system.size + 1) ** 2))
     operators = (_mass_inverse(system), _pattern_range(system))
     for first in range(0, where.size, chunk_pieces):
@@ -341,7 +327,7 @@ def chunked_transitions(system: PiecewiseLinearSystem, rows: np.ndarray, where: 
         whole = chunk.copy()
         whole[:, 0] *= samples
         which = inverse.ravel()
-        yield (first, _transitions(system, whole, operators, which),
+        yield (first, _transitions(system, whole, operators, which) if wholes else None,
                _transitions(system, chunk, operators, which, dense_steps))
 
 
@@ -374,8 +360,8 @@ def _by_chunks(system: PiecewiseLinearSystem, rows: np.ndarray, where: np.ndarra
     n, pieces = system.size, where.size
     states = np.empty((pieces * samples + 1, 2 * n + 1))
     state = np.append(initial, 1.0)
-    if kept is None:
-        kept = ((first, DenseSteps(steps)) for first, steps in chunked_exponentials(system, rows, where))
+    if kept is None:  # a second pass: the sub-steps' matrices, chunk by chunk
+        kept = ((first, steps) for first, _, steps in chunked_transitions(system, rows, where, samples, wholes=False))
     for first, steps in kept:
         if observer is not None and first >= fed:
             observer(first, steps)
