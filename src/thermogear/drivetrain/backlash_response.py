@@ -38,7 +38,8 @@ from thermogear.drivetrain.sampled_period import (SampledMotion, mesh_contacts, 
                                                   sampled_metrics, sampled_motion, train_mesh_responses)
 from thermogear.drivetrain.static_state import bearing_moments
 from thermogear.drivetrain.train import MeshTrain
-from thermogear.dynamics.backlash_ndof import WATCH_STARTUP, BacklashSystem, backlash_periodic_orbit
+from thermogear.dynamics.backlash_ndof import (PERIODIC_SOLVES, WATCH_STARTUP, BacklashSystem,
+                                              backlash_periodic_orbit)
 from thermogear.dynamics.backlash_orbits_ndof import StartupOrbit, startup_orbit
 from thermogear.dynamics.backlash_trajectory import BacklashTrajectory, backlash_trajectory
 from thermogear.errors import CaseError, ModelLimitError, ProblemError
@@ -137,7 +138,7 @@ def drivetrain_backlash_response(assembled: AssembledDrivetrain, state: MeshStat
                                  initial_state: np.ndarray | None = None, substeps: int = 16,
                                  samples_per_piece: int = 8, cutoff_hz: float | None = None,
                                  tolerance: float = SHOOTING_TOLERANCE,
-                                 startup_periods: int | None = None) -> DrivetrainBacklashResponse:
+                                 startup_periods: int | None = None, solves=None) -> DrivetrainBacklashResponse:
     """The periodic orbit of the drivetrain with the backlash mesh (module docstring), shot from
     ``initial_state`` (in the solver's coordinates, e.g. a neighbouring speed's ``metrics["initial_state"]``) or
     from the linear periodic state; ``substeps`` per piece to find the switches; ``samples_per_piece`` samples per
@@ -149,7 +150,11 @@ def drivetrain_backlash_response(assembled: AssembledDrivetrain, state: MeshStat
     orbit than the one shot from the linear state, both coexist: the start-up's orbit is returned (what the gearbox
     shows after starting up) and the other is described in ``metrics["startup"]["coexisting"]``; ``metrics
     ["startup"]`` also says which start reached the orbit returned, its ``branch`` ("low" or "high" by the DTE
-    peak-to-peak, as the 1-DOF response; "unique" where one orbit was seen) and ``notes`` say so in words."""
+    peak-to-peak, as the 1-DOF response; "unique" where one orbit was seen) and ``notes`` say so in words.
+
+    ``solves``: a :class:`~thermogear.dynamics.periodic_solves.PeriodicSolves` that keeps the switch-free orbit's
+    periodic solve (the linear periodic state, every contact closed) for a later linear response of the same
+    reduced system, or hands it over where that system was solved before."""
     system, reduction = drivetrain_backlash_system(assembled, state)
     basis = None
     if cutoff_hz is not None:
@@ -160,6 +165,8 @@ def drivetrain_backlash_response(assembled: AssembledDrivetrain, state: MeshStat
         cache: dict = {}  # the pieces' exponentials, computed by the shooting and reused by the sampling
         if startup_periods is not None:  # the switch-free orbit's solve also prepares the start-up check's motion
             cache[WATCH_STARTUP] = True
+        if solves is not None:
+            cache[PERIODIC_SOLVES] = solves
         with one_blas_thread():
             orbit = backlash_periodic_orbit(system, initial_state, substeps, tolerance, cache=cache)
             startup = None

@@ -30,6 +30,7 @@ import numpy as np
 from thermogear.case_pieces import call_with_pieces
 from thermogear.composition import DRIVETRAIN_HEAT, builtin
 from thermogear.dynamics.mesh_laws import mesh_law
+from thermogear.dynamics.periodic_solves import PeriodicSolves
 from thermogear.drivetrain.assembly import Drivetrain
 from thermogear.drivetrain.case_layout import drivetrain_from_section
 from thermogear.drivetrain.heat import ModeShifts, WarmState, thermal_mode_shifts, warm_drivetrain
@@ -94,6 +95,7 @@ class CaseDrivetrain:
     train_phases: tuple[float, ...] = (0.0,)
     _assembled: dict = field(default_factory=dict, repr=False)
     warm_state: dict = field(default_factory=dict)
+    _solves: PeriodicSolves = field(default_factory=PeriodicSolves, repr=False)  # the linear and switch-free solves
 
     @property
     def stages(self) -> tuple[tuple[str, float], ...]:
@@ -144,7 +146,7 @@ class CaseDrivetrain:
         """Exact periodic response to one mesh period of ``model`` at a pinion speed [rpm] (default the case's)."""
         state = self.mesh_states(model, speed_rpm, points_per_period)
         return drivetrain_periodic_response(self.assembled(model), state, samples_per_piece=SAMPLES_PER_PIECE,
-                                            cutoff_hz=self.section.response_cutoff_hz)
+                                            cutoff_hz=self.section.response_cutoff_hz, solves=self._solves)
 
     def cutoff_error(self, model: str, response: DrivetrainResponse | None = None):
         """The estimated error of the linear response of ``model`` on the section's ``response_cutoff_hz`` (default
@@ -172,7 +174,7 @@ class CaseDrivetrain:
                                             substeps=backlash_substeps(self._pieces(state)),
                                             samples_per_piece=SAMPLES_PER_PIECE,
                                             cutoff_hz=self.section.response_cutoff_hz,
-                                            startup_periods=self.dynamics.transient_periods)
+                                            startup_periods=self.dynamics.transient_periods, solves=self._solves)
 
     def transient(self, model: str) -> DrivetrainTransient:
         """The motion from rest over the case's ``dynamics.transient_periods`` mesh periods (backlash mesh where the

@@ -215,19 +215,22 @@ def bearing_force_spectrum(time: np.ndarray, forces: dict[str, np.ndarray], name
 
 
 def drivetrain_periodic_response(assembled: AssembledDrivetrain, state: MeshState, samples_per_piece: int = 8,
-                                 cutoff_hz: float | None = None) -> DrivetrainResponse:
+                                 cutoff_hz: float | None = None, solves=None) -> DrivetrainResponse:
     """Exact periodic response of the drivetrain to one mesh period (see the module docstring).
 
     ``cutoff_hz`` [Hz]: solve on the modes of the mean system up to this frequency plus the static corrections of
     the mesh vector and the torque loads (:mod:`thermogear.dynamics.modal_reduction`: the mesh compliance stays
     exact, the dynamics of the modes above the cut-off are lost); None solves on every DOF. A cut-off a few times
-    the highest mesh harmonic of interest converges (see the tests).
+    the highest mesh harmonic of interest converges (see the tests). ``solves``: a
+    :class:`~thermogear.dynamics.periodic_solves.PeriodicSolves` whose response of the same reduced system (bit for
+    bit, e.g. the backlash solver's switch-free orbit) is taken instead of a solve of its own, and which keeps this one.
     """
-    return drivetrain_speed_sweep(assembled, (state,), samples_per_piece, cutoff_hz)[0]
+    return drivetrain_speed_sweep(assembled, (state,), samples_per_piece, cutoff_hz, solves)[0]
 
 
 def drivetrain_speed_sweep(assembled: AssembledDrivetrain, states: Sequence[MeshState | MeshTrain],
-                           samples_per_piece: int = 8, cutoff_hz: float | None = None) -> list[DrivetrainResponse]:
+                           samples_per_piece: int = 8, cutoff_hz: float | None = None,
+                           solves=None) -> list[DrivetrainResponse]:
     """:func:`drivetrain_periodic_response` at each mesh state (one per speed; a train of states per speed where
     the drivetrain has several meshes), sharing what no speed changes.
 
@@ -255,7 +258,8 @@ def drivetrain_speed_sweep(assembled: AssembledDrivetrain, states: Sequence[Mesh
             if basis is None:
                 basis = modal_basis(system, 2.0 * math.pi * cutoff_hz)
             system = basis.reduce(system)
-        responses.append(_response(assembled, train, problems, grid, system, reduction, basis, samples_per_piece))
+        responses.append(_response(assembled, train, problems, grid, system, reduction, basis, samples_per_piece,
+                                   solves))
     return responses
 
 
@@ -283,10 +287,10 @@ def _on_grid(problem, grid: TrainGrid, column: int):
 
 def _response(assembled: AssembledDrivetrain, train: MeshTrain, problems, grid: TrainGrid,
               system: PiecewiseLinearSystem, reduction: RigidBodyReduction, basis,
-              samples_per_piece: int) -> DrivetrainResponse:
+              samples_per_piece: int, solves=None) -> DrivetrainResponse:
     """The periodic orbit of the (reduced) system expanded to every DOF, with δ, the mesh and bearing forces and the
-    metrics of each mesh."""
-    response = periodic_response(system, samples_per_piece)
+    metrics of each mesh (the orbit from ``solves`` where it holds the same system's, else solved)."""
+    response = (periodic_response if solves is None else solves.response)(system, samples_per_piece)
     displacement, velocity = response.displacement.T, response.velocity.T
     if basis is not None:
         displacement, velocity = basis.expand(displacement), basis.expand(velocity)

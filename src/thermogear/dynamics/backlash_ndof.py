@@ -38,7 +38,7 @@ from thermogear.dynamics.backlash_switches import (DeadZone, MeshZone, count_cro
 from thermogear.dynamics.periodic_ndof import periodic_response
 from thermogear.errors import ModelLimitError, ProblemError
 
-__all__ = ["BACK_CONTACT", "DRIVING_CONTACT", "FREE_FLIGHT", "STARTUP_MOTION", "WATCH_STARTUP", "BacklashSystem",
+__all__ = ["BACK_CONTACT", "DRIVING_CONTACT", "FREE_FLIGHT", "PERIODIC_SOLVES", "STARTUP_MOTION", "WATCH_STARTUP", "BacklashSystem",
            "BacklashOrbitNDOF", "DeadZone", "MeshZone", "backlash_flow_ndof", "backlash_periodic_orbit", "odd_crossings",
            "piece_exponentials", "switch_free_record"]
 
@@ -178,6 +178,10 @@ MAX_SUBSTEPS = 64  # the odd-crossing guard refines the sub-steps up to this man
 #: (:class:`~thermogear.dynamics.periodic_motion.MotionProjector`, kept in the cache under ``STARTUP_MOTION``).
 WATCH_STARTUP = "watch the start-up"
 STARTUP_MOTION = "start-up motion"
+#: A ``cache`` entry holding a :class:`~thermogear.dynamics.periodic_solves.PeriodicSolves` shared with the caller:
+#: the switch-free orbit's periodic solve is kept there (and taken from there where the same system, bit for bit,
+#: was solved before), e.g. for the linear periodic response of the same operating point.
+PERIODIC_SOLVES = "periodic solves"
 
 
 def backlash_periodic_orbit(system: BacklashSystem, initial_state: np.ndarray | None = None, substeps: int = 16,
@@ -229,7 +233,8 @@ def _switch_free_orbit(system: BacklashSystem, substeps: int, tolerance: float, 
         from thermogear.dynamics.periodic_motion import MotionProjector
 
         projector = MotionProjector(system.linear, substeps, system.state_functionals())
-    response = periodic_response(system.linear, substeps, observer=None if projector is None else projector.add)
+    solve = cache[PERIODIC_SOLVES].response if PERIODIC_SOLVES in cache else periodic_response
+    response = solve(system.linear, substeps, observer=None if projector is None else projector.add)
     if projector is not None and projector.complete:
         cache[(STARTUP_MOTION, substeps)] = projector
     start = response.initial_state

@@ -39,6 +39,7 @@ from thermogear.dynamics.backlash_ndof import (DRIVING_CONTACT, STARTUP_MOTION, 
 from thermogear.dynamics.backlash_pieces import contact_state_system
 from thermogear.dynamics.periodic_motion import motion_projections
 from thermogear.dynamics.periodic_ndof import periodic_response
+from thermogear.dynamics.periodic_solves import same_system
 from thermogear.errors import ModelLimitError, ProblemError
 
 __all__ = ["OrbitCensusNDOF", "StartupOrbit", "StableOrbitNDOF", "orbit_distance", "settle", "start_states_ndof",
@@ -113,7 +114,7 @@ def _stays_in_contact(system: BacklashSystem, reference: BacklashOrbitNDOF, peri
         return False
     flow = contact_state_system(system, key)
     prepared = (cache or {}).get((STARTUP_MOTION, substeps))
-    if prepared is not None and _same_system(prepared.system, flow) \
+    if prepared is not None and same_system(prepared.system, flow) \
             and np.array_equal(prepared.rows, system.state_functionals()):
         values = prepared.projections(rest, periods)
     else:
@@ -124,13 +125,6 @@ def _stays_in_contact(system: BacklashSystem, reference: BacklashOrbitNDOF, peri
     starts = (rows[:-1] % (pieces * substeps)) // substeps  # and each piece's start on the new piece
     return (system.keeps_projected_state(values[1:], ends, key)
             and system.keeps_projected_state(values[1:-1], starts, key))
-
-
-def _same_system(first, second) -> bool:
-    """Whether two piecewise-linear systems hold the same matrices and pieces (bit for bit)."""
-    from dataclasses import fields
-
-    return all(np.array_equal(getattr(first, field.name), getattr(second, field.name)) for field in fields(first))
 
 
 def startup_orbit(system: BacklashSystem, reference: BacklashOrbitNDOF | None, run_in_periods: int = 60,

@@ -32,12 +32,13 @@ as above). Balancing uses the entrywise bound |X₀| + |U|·max_j|R_j| of every 
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 
 from thermogear.errors import ProblemError
 
-__all__ = ["batched_expm", "expm_of_rank_updates"]
+__all__ = ["RankUpdateExponentials", "batched_expm", "expm_of_rank_updates", "rank_update_parts"]
 
 _THETA = 0.5
 _COEFFICIENTS = np.array([1.0 / math.factorial(k) for k in range(13)])
@@ -105,6 +106,34 @@ def _rank_update_degree(beta: float) -> int:
     return degree
 
 
+@dataclass(frozen=True, eq=False)
+class RankUpdateExponentials:
+    """The exponentials of :func:`expm_of_rank_updates` held as their parts before squaring and unbalancing: piece j
+    is D⁻¹·(E_{which[j]} + L_j·R_j)^(2^squarings)·D, with ``exponentials`` E (k, m, m) the shared e^{t X₀} of the k
+    distinct scaled times (balanced), ``which`` (N,), ``left`` L (N, m, q), ``right`` R (N, q, m) the rank-q
+    update of each piece (module docstring) and ``scale`` the diagonal of D (m,). Without squarings a piece acts on
+    a vector at O(m² + q·m) without its matrix being formed (:mod:`~thermogear.dynamics.sub_steps`)."""
+
+    exponentials: np.ndarray
+    which: np.ndarray
+    left: np.ndarray
+    right: np.ndarray
+    scale: np.ndarray
+    squarings: int
+
+    def __len__(self) -> int:
+        return self.left.shape[0]
+
+    def matrices(self) -> np.ndarray:
+        """The (N, m, m) exponentials (what :func:`expm_of_rank_updates` returns)."""
+        result = self.left @ self.right  # Σ_ik t^i Y_i H_ik t^{k+1} Z_k
+        result += self.exponentials[0] if self.exponentials.shape[0] == 1 else self.exponentials[self.which]
+        for _ in range(self.squarings):
+            result = result @ result
+        result *= self.scale[None, :] / self.scale[:, None]
+        return result
+
+
 def expm_of_rank_updates(base: np.ndarray, left: np.ndarray, right: np.ndarray, times: np.ndarray,
                          rows: np.ndarray | None = None) -> np.ndarray:
     """e^{t_j·(X₀ + U R_j)} for every j: ``base`` X₀ (m, m), ``left`` U (m, r), ``right`` R (N, r, m), ``times``
@@ -112,6 +141,14 @@ def expm_of_rank_updates(base: np.ndarray, left: np.ndarray, right: np.ndarray, 
     and R_j = C_j V: when every R_j lies in a few fixed rows (a mesh: the stiffness, damping and excitation rows),
     the Krylov blocks Z_k = C_j (V X₀ᵏ) need products with q rows only. Exact to the unit roundoff of the truncated
     series (module docstring); worth it when r ≪ m and N is large."""
+    parts = rank_update_parts(base, left, right, times, rows)
+    return parts if isinstance(parts, np.ndarray) else parts.matrices()
+
+
+def rank_update_parts(base: np.ndarray, left: np.ndarray, right: np.ndarray, times: np.ndarray,
+                      rows: np.ndarray | None = None) -> RankUpdateExponentials | np.ndarray:
+    """:func:`expm_of_rank_updates` held as its parts (:class:`RankUpdateExponentials`; an (N, m, m) array where
+    there is nothing to hold: no pieces, or every time zero)."""
     base, left = np.asarray(base, dtype=float), np.asarray(left, dtype=float)
     right, times = np.asarray(right, dtype=float), np.asarray(times, dtype=float)
     size = base.shape[0]
@@ -169,11 +206,7 @@ def expm_of_rank_updates(base: np.ndarray, left: np.ndarray, right: np.ndarray, 
     right_blocks *= powers[:, 1:, None, None]
     weighted = (left_blocks.reshape(count * size, degree, rank).transpose(0, 2, 1).reshape(count * size * rank, degree)
                 @ hankel).reshape(count * size, rank, degree).transpose(0, 2, 1).reshape(count, size, degree * rank)
-    result = weighted @ right_blocks.reshape(count, degree * rank, size)  # Σ_ik t^i Y_i H_ik t^{k+1} Z_k
     distinct, where = np.unique(times, return_inverse=True)
-    exponentials = batched_expm(distinct[:, None, None] * base[None])
-    result += exponentials[0] if distinct.size == 1 else exponentials[where.ravel()]  # (equal widths: no copy)
-    for _ in range(squarings):
-        result = result @ result
-    result *= scale[None, :] / scale[:, None]
-    return result
+    exponentials = batched_expm(distinct[:, None, None] * base[None])  # (equal widths: one, added without a copy)
+    return RankUpdateExponentials(exponentials, where.ravel(), weighted, right_blocks.reshape(count, degree * rank, size),
+                                  scale, squarings)

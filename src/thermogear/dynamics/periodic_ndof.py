@@ -26,17 +26,20 @@ sum over patterns, ``K_j = K₀ + Σ_m k_jm·P_K,m`` and likewise for C and f: t
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
 
+from thermogear.dynamics.matrix_chains import block_products as _blocks, ordered_product, power as _power, \
+    states_at_nodes as _orbit_nodes
 from thermogear.dynamics.periodic_runs import by_runs, floquet, on_reached, reached_coordinates
 from thermogear.dynamics.piece_groups import PIECE_TOLERANCE, group_rows
 from thermogear.dynamics.piecewise_system import PiecewiseLinearSystem
+from thermogear.dynamics.sub_steps import DenseSteps, PartedSteps
 from thermogear.errors import ProblemError
 
-__all__ = ["RUN_ROUTE_SIZE", "PiecewiseLinearSystem", "PeriodicResponse", "chunked_exponentials", "grouped_pieces",
+__all__ = ["RUN_ROUTE_SIZE", "PiecewiseLinearSystem", "PeriodicResponse", "chunked_transitions",
+           "grouped_pieces",
            "monodromy", "ordered_product", "periodic_response", "piece_steps"]
 
 
@@ -103,35 +106,65 @@ def _exponentials(system: PiecewiseLinearSystem, distinct: np.ndarray,
     ``distinct`` (:func:`grouped_pieces`; the routes: :func:`_piece_steps`); ``operators`` (M⁻¹, the patterns' range)."""
     from thermogear.dynamics.batched_exponential import batched_expm, expm_of_rank_updates
 
-    n = system.size
+    route = _rank_route(system, distinct, operators)
+    if route is not None:
+        return expm_of_rank_updates(*route)
     inverse, full_range = operators or (_mass_inverse(system), None)
-    range_basis = np.zeros((n, 0)) if distinct.shape[0] < _RANK_ROUTE_PIECES \
-        else (_pattern_range(system) if full_range is None else full_range)
-    pattern_k, pattern_c, pattern_f = system.stacked()[:3]
+    units = _with_factors(system, distinct).augmented_stack(inverse)
+    if 2 * system.size + 1 >= _SINGLE_ROUTE_SIZE:  # a few large pieces: one Padé evaluation, or each by itself
+        return _large_pieces(system, units, distinct[:, 0], inverse, full_range)
+    return batched_expm(units * distinct[:, :1, None])
+
+
+def _rank_route(system: PiecewiseLinearSystem, distinct: np.ndarray,
+                operators: tuple[np.ndarray, np.ndarray] | None = None,
+                least_pieces: int | None = None) -> tuple | None:
+    """The arguments (X₀, U, C, t, V) of :func:`~thermogear.dynamics.batched_exponential.expm_of_rank_updates` for
+    the pieces ``distinct``, or None where they take the full exponentials (fewer than ``least_pieces`` pieces, or
+    patterns of high rank: :func:`_piece_steps`; default :data:`_RANK_ROUTE_PIECES`)."""
+    n = system.size
+    if distinct.shape[0] < max(1, _RANK_ROUTE_PIECES if least_pieces is None else least_pieces):
+        return None
+    inverse, full_range = operators or (_mass_inverse(system), None)
+    range_basis = _pattern_range(system) if full_range is None else full_range
     rank = range_basis.shape[1]
-    if distinct.shape[0] < _RANK_ROUTE_PIECES or rank == 0 or rank * _RANK_ROUTE_RATIO > 2 * n + 1:
-        units = _with_factors(system, distinct).augmented_stack(inverse)
-        if 2 * n + 1 >= _SINGLE_ROUTE_SIZE:  # a few large pieces: one Padé evaluation, or each by itself
-            steps = _large_pieces(system, units, distinct[:, 0], inverse, full_range)
-        else:
-            steps = batched_expm(units * distinct[:, :1, None])
-    else:
-        mean_factors = distinct[:, 1:].mean(axis=0)
-        mean = _with_factors(system, np.append(1.0, mean_factors)[None]).augmented_stack(inverse)[0]
-        left = np.zeros((2 * n + 1, range_basis.shape[1]))
-        left[n:2 * n] = inverse @ range_basis
-        shift = distinct[:, 1:] - mean_factors
-        meshes = pattern_k.shape[0]
-        rows = np.zeros((3 * meshes * rank, 2 * n + 1))  # the stiffness, damping and excitation rows, r per mesh
-        for mesh in range(meshes):
-            rows[mesh * rank:(mesh + 1) * rank, :n] = range_basis.T @ pattern_k[mesh]
-            rows[(meshes + mesh) * rank:(meshes + mesh + 1) * rank, n:2 * n] = range_basis.T @ pattern_c[mesh]
-            rows[(2 * meshes + mesh) * rank:(2 * meshes + mesh + 1) * rank, 2 * n] = range_basis.T @ pattern_f[mesh]
-        signs = (-1.0,) * (2 * meshes) + (1.0,) * meshes  # columns of shift: k per mesh, c per mesh, g per mesh
-        right = np.concatenate([np.eye(rank) * sign * shift[:, column, None, None]
-                                for column, sign in enumerate(signs)], axis=2)  # (D, r, 3Pr)
-        steps = expm_of_rank_updates(mean, left, right, distinct[:, 0], rows)
-    return steps
+    if rank == 0 or rank * _RANK_ROUTE_RATIO > 2 * n + 1:
+        return None
+    pattern_k, pattern_c, pattern_f = system.stacked()[:3]
+    mean_factors = distinct[:, 1:].mean(axis=0)
+    mean = _with_factors(system, np.append(1.0, mean_factors)[None]).augmented_stack(inverse)[0]
+    left = np.zeros((2 * n + 1, range_basis.shape[1]))
+    left[n:2 * n] = inverse @ range_basis
+    shift = distinct[:, 1:] - mean_factors
+    meshes = pattern_k.shape[0]
+    rows = np.zeros((3 * meshes * rank, 2 * n + 1))  # the stiffness, damping and excitation rows, r per mesh
+    for mesh in range(meshes):
+        rows[mesh * rank:(mesh + 1) * rank, :n] = range_basis.T @ pattern_k[mesh]
+        rows[(meshes + mesh) * rank:(meshes + mesh + 1) * rank, n:2 * n] = range_basis.T @ pattern_c[mesh]
+        rows[(2 * meshes + mesh) * rank:(2 * meshes + mesh + 1) * rank, 2 * n] = range_basis.T @ pattern_f[mesh]
+    signs = (-1.0,) * (2 * meshes) + (1.0,) * meshes  # columns of shift: k per mesh, c per mesh, g per mesh
+    right = np.concatenate([np.eye(rank) * sign * shift[:, column, None, None]
+                            for column, sign in enumerate(signs)], axis=2)  # (D, r, 3Pr)
+    return mean, left, right, distinct[:, 0], rows
+
+
+def _transitions(system: PiecewiseLinearSystem, distinct: np.ndarray, operators, which: np.ndarray,
+                 dense: bool = True) -> DenseSteps | PartedSteps | None:
+    """The exponentials of the pieces ``distinct`` (each piece of a chunk: ``which``) as their parts
+    (:class:`~thermogear.dynamics.sub_steps.PartedSteps`, O(q·m) numbers a piece) where the rank-update route takes
+    them without squarings (any number of pieces: the parts are what is kept, not the matrices' cost), else as
+    matrices (:class:`~thermogear.dynamics.sub_steps.DenseSteps`; None without ``dense``)."""
+    from thermogear.dynamics.batched_exponential import RankUpdateExponentials, rank_update_parts
+
+    route = _rank_route(system, distinct, operators, least_pieces=1)
+    parts = None if route is None else rank_update_parts(*route)
+    if isinstance(parts, RankUpdateExponentials) and not parts.squarings:
+        return PartedSteps(parts, which)
+    if not dense:
+        return None
+    if parts is None:
+        return DenseSteps(_exponentials(system, distinct, operators), which)
+    return DenseSteps(parts if isinstance(parts, np.ndarray) else parts.matrices(), which)
 
 
 def _large_pieces(system: PiecewiseLinearSystem, units: np.ndarray, durations: np.ndarray, inverse: np.ndarray,
@@ -213,56 +246,6 @@ def _pattern_range(system: PiecewiseLinearSystem) -> np.ndarray:
     return vectors[:, values > 1e-13 * values[0]]
 
 
-def _power(matrices: np.ndarray, count: int) -> np.ndarray:
-    return matrices if count == 1 else np.linalg.matrix_power(matrices, count)
-
-
-def ordered_product(matrices: np.ndarray) -> np.ndarray:
-    """X_{N−1}···X₁X₀ of a (…, N, m, m) stack (leading axes batched), by pairwise products level by level (log₂N
-    vectorised passes)."""
-    stack = np.asarray(matrices)
-    while stack.shape[-3] > 1:
-        count = stack.shape[-3]
-        even = count - count % 2
-        paired = stack[..., 1:even:2, :, :] @ stack[..., 0:even:2, :, :]
-        stack = np.concatenate([paired, stack[..., even:, :, :]], axis=-3) if even < count else paired
-    return stack[..., 0, :, :]
-
-
-def _blocks(distinct: np.ndarray, where: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """The steps ``distinct[where]`` in B ≈ √N consecutive blocks (padded with identities) and each block's ordered
-    product: the monodromy is the product of the B block products (the same N − 1 matrix products as one tree), and
-    the states at every node follow from B sequential products plus √N batched ones instead of N sequential ones.
-    Blocks made of the same sequence of distinct pieces share one product (exact: the same matrices multiplied in
-    the same order), so a k(τ) of a few levels — most blocks lie inside one level — costs a few block products:
-    the repeated-piece economy exp(A·h)ⁿ of equal pieces without any special case."""
-    count, size = where.size, distinct.shape[1]
-    block = max(1, int(round(math.sqrt(count))))
-    blocks = -(-count // block)
-    with_identity = np.concatenate([distinct, np.eye(size)[None]])
-    indices = np.concatenate([where, np.full(blocks * block - count, distinct.shape[0])]).reshape(blocks, block)
-    padded = with_identity[indices]
-    patterns, first, which = np.unique(indices, axis=0, return_index=True, return_inverse=True)
-    if patterns.shape[0] == blocks:  # every block differs: one tree over all of them
-        return padded, ordered_product(padded)
-    return padded, ordered_product(padded[first])[which.ravel()]
-
-
-def _orbit_nodes(padded: np.ndarray, products: np.ndarray, start: np.ndarray, count: int) -> np.ndarray:
-    """States at the N + 1 nodes from the state at the first: block starts in sequence, then all blocks at once."""
-    starts = np.empty((products.shape[0], start.size))
-    state = start
-    for index, product in enumerate(products):
-        starts[index] = state
-        state = product @ state
-    inside = np.empty((padded.shape[0], padded.shape[1], start.size))
-    current = starts
-    for index in range(padded.shape[1]):
-        inside[:, index] = current
-        current = (padded[:, index] @ current[:, :, None])[:, :, 0]
-    return np.vstack([inside.reshape(-1, start.size)[:count], state[None]])
-
-
 def monodromy(system: PiecewiseLinearSystem,
               piece_tolerance: float = PIECE_TOLERANCE) -> tuple[np.ndarray, np.ndarray]:
     """Monodromy Φ_T (2n, 2n) and the image p (2n,) of z = 0 after one period (``piece_tolerance``: see
@@ -278,8 +261,9 @@ def periodic_response(system: PiecewiseLinearSystem, samples_per_piece: int = 16
 
     ``piece_tolerance`` ε: pieces whose (h_j, k_j, c_j, g_j) agree within ε of each column's largest magnitude share
     one exponential (:mod:`~thermogear.dynamics.piece_groups` bounds the effect; 0: bit-identical pieces only).
-    ``observer``(first piece, sub-step exponentials): fed each chunk where the solve forms them chunk by chunk
-    (``_by_chunks``; :class:`~thermogear.dynamics.periodic_motion.MotionProjector`), else never called.
+    ``observer``(first piece, sub-step transitions[, whole transitions, transitions from the period's start to each
+    piece's start]): fed each chunk where the solve forms them chunk by chunk (``_by_chunks``; :class:`~thermogear.
+    dynamics.periodic_motion.MotionProjector`), else never called.
 
     Raises ModelLimitError when a Floquet multiplier has modulus >= 1 (parametric instability, an undamped mode or
     a rigid-body mode left in the system): there is then no attracting periodic orbit.
@@ -302,44 +286,63 @@ def periodic_response(system: PiecewiseLinearSystem, samples_per_piece: int = 16
     return _by_blocks(system, _exponentials(system, rows), where, samples)
 
 
-def chunked_exponentials(system: PiecewiseLinearSystem, rows: np.ndarray, where: np.ndarray, multiple: int = 1):
-    """Yield (first piece, (c, 2n+1, 2n+1) exponentials of the pieces first … first + c − 1 in order) over
-    consecutive chunks of about :data:`CHUNK_BYTES`: the grouped ``rows`` of :func:`grouped_pieces` (each distinct
-    piece of a chunk exponentiated once) over ``multiple`` times their width (the sub-step count: each piece's whole
-    transition e^{A_j h_j}, formed directly, not as a power of the sub-step one). No stack of all the pieces is held."""
+def chunked_transitions(system: PiecewiseLinearSystem, rows: np.ndarray, where: np.ndarray, samples: int,
+                        dense_steps: bool = True, wholes: bool = True):
+    """Yield (first piece, the whole transitions e^{A_j h_j} of the pieces first … first + c − 1, their sub-step
+    transitions e^{A_j h_j/s}, s = ``samples``) over consecutive chunks of about :data:`CHUNK_BYTES` of matrices,
+    in one pass: each as the parts of its rank-update exponential where it has them without squarings
+    (:class:`~thermogear.dynamics.sub_steps.PartedSteps`, O(q·m) numbers a piece, no (m, m) matrix per piece
+    formed), else as matrices (:class:`~thermogear.dynamics.sub_steps.DenseSteps`); sub-steps None where not parted
+    with ``dense_steps`` False (the caller forms them in a pass of its own), the wholes None without ``wholes``."""
     chunk_pieces = max(1, CHUNK_BYTES // (8 * (2 * system.size + 1) ** 2))
-    operators = (_mass_inverse(system), _pattern_range(system))  # once for every chunk, not per chunk
+    operators = (_mass_inverse(system), _pattern_range(system))
     for first in range(0, where.size, chunk_pieces):
         unique, inverse = np.unique(where[first:first + chunk_pieces], return_inverse=True)
         chunk = rows[unique]
-        chunk[:, 0] *= multiple
-        yield first, _exponentials(system, chunk, operators)[inverse.ravel()]
+        whole = chunk.copy()
+        whole[:, 0] *= samples
+        which = inverse.ravel()
+        yield (first, _transitions(system, whole, operators, which) if wholes else None,
+               _transitions(system, chunk, operators, which, dense_steps))
 
 
 def _by_chunks(system: PiecewiseLinearSystem, rows: np.ndarray, where: np.ndarray,
                samples: int, observer=None) -> PeriodicResponse:
     """:func:`periodic_response` where a stack of every distinct piece's matrix would be large (above
-    :data:`LEAN_ROUTE_BYTES`): the monodromy as the product of the chunks' ordered products of the whole pieces'
-    transitions (:func:`chunked_exponentials`: the same N − 1 products as the block route's tree), then the orbit's
-    state at every sub-step by stepping z₀ through the sub-step exponentials one after another (N·s products of a
-    matrix with a vector, O(m²) each). Exact as the block route (the whole transitions are e^{A_j h_j} itself
-    instead of the power of the sub-step's, and the products come in another order: both differ at the unit
-    roundoff), holding a chunk of matrices at a time instead of several stacks of all of them."""
-    total = np.eye(2 * system.size + 1)
-    for _, whole in chunked_exponentials(system, rows, where, samples):
-        total = ordered_product(whole) @ total
+    :data:`LEAN_ROUTE_BYTES`): the monodromy as the product of the whole pieces' transitions, one after another
+    (:func:`chunked_transitions`: the same N − 1 products as the block route's tree, each through the parts of the
+    piece's exponential where it has them; the observer takes the transition from the period's start to each
+    piece's start on the way, at no cost), then the orbit's state at every sub-step by stepping z₀ through the
+    sub-step transitions one after another (N·s products with a vector, O(m²) each). Exact as the block route (the
+    whole transitions are e^{A_j h_j} itself instead of the power of the sub-step's, and the products come in
+    another order: both differ at the unit roundoff), holding a chunk of matrices at a time at most. The sub-steps
+    held as their parts are formed in the first pass and kept; otherwise a second pass forms their matrices chunk by
+    chunk."""
+    size = 2 * system.size + 1
+    total = np.eye(size)
+    kept: list | None = []
+    fed = 0
+    for first, wholes, steps in chunked_transitions(system, rows, where, samples, dense_steps=False):
+        kept = None if kept is None or steps is None else [*kept, (first, steps)]
+        if kept is not None and observer is not None and fed == first:  # it takes each piece's start transition
+            starts = np.empty((len(wholes), size, size))
+            total = wholes.chain(total, starts)
+            observer(first, steps, starts, total)
+            fed = first + len(steps)
+        else:
+            total = wholes.chain(total)
     multipliers, initial = floquet(total)
     n, pieces = system.size, where.size
     states = np.empty((pieces * samples + 1, 2 * n + 1))
-    state, row = np.append(initial, 1.0), 0
-    for first, steps in chunked_exponentials(system, rows, where):
-        if observer is not None:
+    state = np.append(initial, 1.0)
+    if kept is None:  # a second pass: the sub-steps' matrices, chunk by chunk
+        kept = ((first, steps) for first, _, steps in chunked_transitions(system, rows, where, samples, wholes=False))
+    for first, steps in kept:
+        if observer is not None and first >= fed:
             observer(first, steps)
-        for step in steps:
-            for _ in range(samples):
-                states[row] = state
-                state = step @ state
-                row += 1
+        for offset in range(len(steps)):
+            row = (first + offset) * samples
+            state = steps.walk(offset, state, samples, states[row:row + samples])
     states[-1] = state
     offsets = np.arange(samples) / samples
     time = np.concatenate([(system.nodes[:-1, None] + np.diff(system.nodes)[:, None] * offsets).ravel(),
