@@ -59,3 +59,19 @@ def mesh_stiffness_of(pair, material, speed_rpm: float, count: int):
 def mesh_stiffness():
     return mesh_stiffness_of
 
+
+def load_script(path, name: str | None = None):
+    """A script outside the package (a benchmark, docs/generate.py, an example) imported as a module by its path."""
+    import importlib.util
+
+    spec = importlib.util.spec_from_file_location(name or path.stem, path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+@pytest.fixture(scope="session")
+def script_module():
+    """:func:`load_script`, for tests that drive a benchmark's or the docs' own functions."""
+    return load_script
+

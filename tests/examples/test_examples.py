@@ -3,7 +3,6 @@ writes the figure that docs/examples.md shows."""
 
 from __future__ import annotations
 
-import importlib.util
 import warnings
 from pathlib import Path
 
@@ -11,13 +10,6 @@ import pytest
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 SCRIPTS = sorted(EXAMPLES.glob("[0-9][0-9]_*.py"))
-
-
-def _load(path: Path):
-    spec = importlib.util.spec_from_file_location(f"thermogear_example_{path.stem}", path)
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
 
 
 def test_the_gallery_has_the_examples_the_docs_promise():
@@ -29,10 +21,10 @@ def test_the_gallery_has_the_examples_the_docs_promise():
 
 
 @pytest.mark.parametrize("script", SCRIPTS, ids=[path.stem for path in SCRIPTS])
-def test_example_runs_and_checks_its_numbers(script, tmp_path):
+def test_example_runs_and_checks_its_numbers(script, tmp_path, script_module):
     import matplotlib.pyplot as plt
 
-    module = _load(script)
+    module = script_module(script, f"thermogear_example_{script.stem}")
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # the examples show results; the model's warnings are tested elsewhere
         result = module.main(tmp_path / "out")

@@ -178,23 +178,13 @@ def test_an_example_run_without_a_folder_writes_outside_the_folder_it_is_run_fro
     assert Path(tempfile.gettempdir()) in given[0].parents and script.stem in given[0].parts
 
 
-def _held_out_fuzz_module():
-    import importlib.util
-
-    path = ROOT / "benchmarks" / "fuzz_drivetrain_gearbox.py"
-    spec = importlib.util.spec_from_file_location("fuzz_drivetrain_gearbox", path)
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
-
-
-def test_held_out_fuzz_cases_load_or_are_refused_by_name():
+def test_held_out_fuzz_cases_load_or_are_refused_by_name(script_module):
     # the suite's small version of `benchmarks/fuzz_drivetrain_gearbox.py` (seeded, 8 cases, load only: the
     # one set of checks every command runs): each random drivetrain or gearbox case is a case or a CaseError
     # naming a key — never another exception; and the draw reaches both outcomes' side of the checks
     from thermogear.errors import ThermogearError
 
-    module = _held_out_fuzz_module()
+    module = script_module(ROOT / "benchmarks" / "fuzz_drivetrain_gearbox.py")
     rng = np.random.default_rng(36)
     loaded = 0
     for index in range(8):

@@ -13,7 +13,6 @@
 
 from __future__ import annotations
 
-import importlib.util
 import json
 from pathlib import Path
 
@@ -178,18 +177,13 @@ def test_an_unwritable_plot_target_of_stiffness_is_refused(tmp_path):
 
 
 # ------------------------------------------------------------------------------------------------ random pairs
-def _random_pairs_module():
-    path = Path(__file__).resolve().parents[2] / "benchmarks" / "random_pairs.py"
-    spec = importlib.util.spec_from_file_location("random_pairs", path)
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
+RANDOM_PAIRS = Path(__file__).resolve().parents[2] / "benchmarks" / "random_pairs.py"
 
 
-def test_random_pairs_through_stiffness_and_both_meshes():
+def test_random_pairs_through_stiffness_and_both_meshes(script_module):
     # the suite's small version of `benchmarks/random_pairs.py --count 10000` (seed 0, 30 pairs, about 2 s): no
     # traceback, no NaN in a result called valid, every non-periodic point labelled, check = run
-    module = _random_pairs_module()
+    module = script_module(RANDOM_PAIRS)
     rng = np.random.default_rng(0)
     outcomes = [module.check_pair(module.draw_document(rng, index)) for index in range(30)]
     defects = [(index, result["defects"], result.get("message")) for index, result in enumerate(outcomes)
@@ -200,8 +194,8 @@ def test_random_pairs_through_stiffness_and_both_meshes():
     assert sum(sum(result["labels"].values()) for result in outcomes) >= 40  # models solved
 
 
-def test_the_random_pair_checks_find_every_non_finite_number():
-    module = _random_pairs_module()
+def test_the_random_pair_checks_find_every_non_finite_number(script_module):
+    module = script_module(RANDOM_PAIRS)
     assert module._non_finite({"a": [1.0, float("nan")], "b": {"c": np.array([np.inf])}}) == [".a[1]", ".b.c"]
     assert module._non_finite({"a": 1.0, "b": np.arange(3.0)}) == []
 

@@ -14,6 +14,7 @@ from __future__ import annotations
 import math
 import warnings
 from dataclasses import replace
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -256,15 +257,7 @@ def test_damping_ratio_holds_in_both_regions(values):
     assert abs(values["_steady_load_ratio"] - 1.0) < 0.02
 
 
-def _docs_generator():
-    import importlib.util
-    from pathlib import Path
-
-    path = Path(__file__).resolve().parents[2] / "docs" / "generate.py"
-    spec = importlib.util.spec_from_file_location("thermogear_docs_generate", path)
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
+DOCS_GENERATOR = Path(__file__).resolve().parents[2] / "docs" / "generate.py"
 
 
 @pytest.mark.parametrize("committed, generated, same", [
@@ -276,13 +269,13 @@ def _docs_generator():
     ("**within** 12 of 14", "**outside** 12 of 14", False),                         # a verdict is text
     ("a\nb", "a\nb\nc", False),
 ])
-def test_page_differences(committed, generated, same):
+def test_page_differences(committed, generated, same, script_module):
     """The generated-page check tolerates a value on a rounding boundary and nothing more."""
-    assert (not _docs_generator().page_differences(committed, generated)) is same
+    assert (not script_module(DOCS_GENERATOR, "thermogear_docs_generate").page_differences(committed, generated)) is same
 
 
-def test_generated_docs_are_up_to_date():
+def test_generated_docs_are_up_to_date(script_module):
     """docs/validation.md and docs/case-file-reference.md are generated from this table and the schema (numbers
     compared to one unit in their last printed digit, text exactly: see test_page_differences)."""
-    stale = _docs_generator().stale_pages()
+    stale = script_module(DOCS_GENERATOR, "thermogear_docs_generate").stale_pages()
     assert not stale, f"out of date: {stale}; run `python docs/generate.py` and commit the pages"
