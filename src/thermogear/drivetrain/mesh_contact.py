@@ -83,13 +83,14 @@ def mesh_contact(name: str, key: str = "drivetrain.helical_contact") -> MeshCont
 def face_contact_moments(helical: HelicalPair, material: Material, slices: int = 100,
                          points: int = 64) -> tuple[float, float]:
     """(z̄ [m] from mid-face, ρ [m]) of the slice model's stiffness averaged over one mesh period (``points``
-    phases, midpoints of equal steps; ``slices`` across the face; :func:`thermogear.helical.slices.contact_stiffness`)."""
+    phases, midpoints of equal steps; ``slices`` across the face; :func:`thermogear.helical.slices.contact_stiffness`),
+    by the moments of :class:`~thermogear.helical.face_load.FaceStiffnessMoments` (every line in contact)."""
+    from thermogear.helical.face_load import FaceStiffnessMoments
     from thermogear.helical.slices import contact_stiffness
 
     phases = (np.arange(points) + 0.5) / points * helical.transverse_base_pitch
     centres, stiffness = contact_stiffness(helical, material, phases, slices)
-    per_slice = stiffness.sum(axis=-2).mean(axis=0)  # (slices,) the period-mean of each slice over its lines
-    total = per_slice.sum()
+    per_slice = stiffness.sum(axis=-2)  # (phases, slices): each slice's stiffness over its lines
     position = centres - helical.face_width / 2.0
-    centre = float(per_slice @ position / total)
-    return centre, float(math.sqrt(per_slice @ (position - centre) ** 2 / total))
+    moments = FaceStiffnessMoments(phases, per_slice.sum(axis=-1), per_slice @ position, per_slice @ position**2)
+    return moments.mean_load_centre, moments.mean_gyration
