@@ -205,12 +205,12 @@ def state_case(case, temperature_c: float, speed_rpm: float | None = None):
     """The case at one warm-up state: uniform bulk and oil temperature ``temperature_c`` (and the speed).
 
     A resolver: it writes a new case from the case's own keys, so it takes the whole case."""
-    from thermogear.mesh.pair_models import pair_model_for  # noqa: PLC0415  (the mesh layer only where it is used)
+    from thermogear.mesh.pair_models import pair_model_class  # noqa: PLC0415  (the mesh layer only where it is used)
 
     # the whole [temperature] section is replaced: a uniform field takes no flank table, base or bore temperatures
     section = {"model": "uniform", "bulk_c": float(temperature_c), "reference_c": case.temperature.reference_c}
     changes: dict[str, Any] = {"temperature": section, "lubricant.operating_temperature_c": float(temperature_c)}
-    if pair_model_for(case, "thermal").uses_x_te and x_te_source(case.thermal.x_te_source).calibrated:
+    if pair_model_class("thermal", case.thermal.model).uses_x_te and x_te_source(case.thermal.x_te_source).calibrated:
         # the paper's X_te is calibrated once, at the case's own temperatures, and held through the warm-up: a
         # state near the assembly temperature has no thermal interference to calibrate against
         from thermogear.luo2020.case_stiffness import paper_thermal_model  # noqa: PLC0415

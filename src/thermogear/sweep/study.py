@@ -245,16 +245,6 @@ class Study:
         study.check_values()
         return study
 
-    @classmethod
-    def from_description(cls, case, description: dict[str, Any]) -> "Study":
-        """The study written in a store's attributes by :meth:`describe` (for ``--resume``)."""
-        vary = {p["name"]: list(p["values"]) for p in description["parameters"]}
-        models = tuple(description["models"])
-        model = "both" if len(models) == 2 else models[0]
-        study = cls.define(case, vary, model=model, chunk_points=description["chunk_points"],
-                           hold=description.get("hold", "torque"))
-        return study
-
     def check_values(self) -> None:
         """Build the case of each value of each parameter alone (others at the case's values); a bad one raises
         CaseError naming the parameter and value (except where the gears jam: the study marks those points
