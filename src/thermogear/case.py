@@ -165,6 +165,7 @@ def cached_per_case(function):
         return entry[1]
 
     cached.cache_clear = results.clear
+    cached.cases = lambda: frozenset(results)  # the identities of the cases it holds a result for (tests)
     # called with the case: its signature is (case); the resolver of the pieces stays ``cached.__wrapped__``
     cached.__signature__ = inspect.Signature([inspect.Parameter("case", inspect.Parameter.POSITIONAL_OR_KEYWORD)])
     return cached

@@ -49,7 +49,10 @@ SOURCE = Path(__file__).resolve().parents[2] / "src" / "thermogear"
 #: PredictedTemperatureError, which carries the unresolved case. The next step to 15: those resolvers onto pieces.
 #: 20 once Study.from_description, which nothing called, was removed (the store's --resume compares describe()),
 #: and the pair model is chosen from the two names it reads (pair_model_class(model, thermal_model)).
-MAXIMUM_CASE_READERS = 20
+#: 18 once the tooth temperature field and the paper's k_T model name their pieces (the provider a section chooses
+#: by name is a piece, thermogear.composition.CHOSEN_PIECES; a piece needed on some paths only is asked for later,
+#: ``temperature_field_of``; the paper's per-case memo is the piece paper_thermal_memo).
+MAXIMUM_CASE_READERS = 18
 
 
 def _takes_case(argument: ast.arg) -> bool:

@@ -215,9 +215,11 @@ def test_a_warm_up_state_of_the_papers_case_keeps_its_calibrated_x_te():
     # interference) keeps that X_te instead of failing to calibrate, and replaces the whole temperature section
     from thermogear.case import load_case
     from thermogear.experiment.warmup import state_case
+    from thermogear.case_pieces import call_with_pieces
     from thermogear.luo2020.case_stiffness import paper_thermal_model
 
     case = load_case("luo2019")
     cold = state_case(case, 20.0)
     assert cold.temperature.model == "uniform" and cold.temperature.flank_c is None
-    assert cold.thermal.x_te_source == "given" and cold.thermal.x_te == paper_thermal_model(case).resolve_x_te()[0]
+    calibrated = call_with_pieces(paper_thermal_model, case).resolve_x_te()[0]
+    assert cold.thermal.x_te_source == "given" and cold.thermal.x_te == calibrated

@@ -148,9 +148,10 @@ def state_case(case, temperatures_c):
         temperature=temperature, lubricant=case.lubricant.model_copy(update={"operating_temperature_c": oil}),
         housing=case.housing.model_copy(update=housing_update))
     if thermal_model_rules(case.thermal.model).reads_x_te and x_te_source(case.thermal.x_te_source).calibrated:
+        from thermogear.case_pieces import call_with_pieces  # noqa: PLC0415
         from thermogear.luo2020.case_stiffness import paper_thermal_model  # noqa: PLC0415
 
-        x_te = paper_thermal_model(case).resolve_x_te()[0]
+        x_te = call_with_pieces(paper_thermal_model, case).resolve_x_te()[0]
         changes["thermal"] = case.thermal.model_copy(update={"x_te": x_te, "x_te_source": "given",
                                                              "calibration_drop_percent": None})
     return replace(case, **changes)

@@ -213,9 +213,10 @@ def state_case(case, temperature_c: float, speed_rpm: float | None = None):
     if pair_model_class("thermal", case.thermal.model).uses_x_te and x_te_source(case.thermal.x_te_source).calibrated:
         # the paper's X_te is calibrated once, at the case's own temperatures, and held through the warm-up: a
         # state near the assembly temperature has no thermal interference to calibrate against
+        from thermogear.case_pieces import call_with_pieces  # noqa: PLC0415
         from thermogear.luo2020.case_stiffness import paper_thermal_model  # noqa: PLC0415
 
-        changes.update({"thermal.x_te": paper_thermal_model(case).resolve_x_te()[0], "thermal.x_te_source": "given",
+        changes.update({"thermal.x_te": call_with_pieces(paper_thermal_model, case).resolve_x_te()[0], "thermal.x_te_source": "given",
                         "thermal.calibration_drop_percent": None})
     if speed_rpm is not None:
         changes["operating.speed_rpm"] = float(speed_rpm)

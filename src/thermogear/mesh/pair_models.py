@@ -35,6 +35,7 @@ from thermogear.errors import CaseError
 from thermogear.mesh.model_names import MODELS, THERMAL
 from thermogear.mesh.secant_checks import secant_stiffness_drop_flag, secant_stiffness_in_nonlinear_mesh
 from thermogear.stiffness.table import pair_stiffness_at
+from thermogear.case_pieces import call_with_pieces
 from thermogear.luo2020.case_stiffness import paper_thermal_model
 from thermogear.temperature_source import TemperatureField, temperature_field_from_case
 from thermogear.thermal_model_rules import LUO2020_RULES, THERMOELASTIC_RULES, ThermalModelRules
@@ -227,9 +228,15 @@ class Luo2020Pair(PairModelBase):
         """Deviations of profile modifications, or k_T as the stiffness of the friction load share."""
         return self.thermoelastic_mesh is not None or self.damping_uses_pair_stiffness
 
+    @cached_property
+    def paper_model(self):
+        """The paper's k_T model of the case (:func:`~thermogear.luo2020.case_stiffness.paper_thermal_model`, built
+        from the pieces it names; what it computes once per case is kept in the case's memo)."""
+        return call_with_pieces(paper_thermal_model, self.case)
+
     def pair_stiffness_at(self, roll, normal_load: float) -> np.ndarray:
-        return np.asarray(paper_thermal_model(self.case).pair_stiffness_at(np.asarray(roll, dtype=float),
-                                                                           normal_load=normal_load), dtype=float)
+        return np.asarray(self.paper_model.pair_stiffness_at(np.asarray(roll, dtype=float), normal_load=normal_load),
+                          dtype=float)
 
     def damping_stiffness_at(self, roll, normal_load: float) -> np.ndarray:
         if self.damping_uses_pair_stiffness:
