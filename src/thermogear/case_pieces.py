@@ -18,8 +18,8 @@ fixtures: a parameter's name is the input it asks for):
 * any of these asked for later: a parameter named ``<piece>_of`` receives a function of no arguments that resolves
   ``<piece>`` when it is called (``temperature_field_of``: a resolver that needs the field only on some paths
   neither computes it nor raises its warnings on the others);
-* ``case``: the whole case, for a plug-in that resolves the case itself (a resolver, such as the gearbox's
-  temperature model, which writes a new case; and a provider written as ``provider(case)`` before the pieces).
+* ``case``: the whole case, for a plug-in that resolves the case itself (a resolver that writes a new case; and a
+  provider written as ``provider(case)`` before the pieces).
 
 So a check or provider states its inputs in its signature, is tested with those inputs alone, and the case is read
 in one place. This module imports nothing of thermogear but :mod:`thermogear.composition` (which imports none), so

@@ -54,9 +54,9 @@ X_TE_PROVIDERS: dict[str, str] = {
 }
 
 #: ``[temperature] model`` name → the model that predicts the case's oil and housing temperatures at load time,
-#: ``resolver(case) -> Case`` (a resolver: it writes a new case).
+#: ``resolver(pieces) -> {Case field: value}`` (the parts of the case it predicts, which the loader writes).
 TEMPERATURE_MODELS: dict[str, str] = {
-    "gearbox": "thermogear.gearbox.case_model:with_predicted_temperatures",
+    "gearbox": "thermogear.gearbox.case_model:predicted_temperatures",
 }
 
 #: ``[temperature] model`` name → the provider of the drivetrain's shaft and bearing-ring temperatures,

@@ -10,7 +10,7 @@ from thermogear.case import Case, load_case
 from thermogear.case_pieces import LATER, WHOLE_CASE, call_with_pieces, piece_names
 
 PLUG_INS = [*composition.TEMPERATURE_PROVIDERS.values(), *composition.X_TE_PROVIDERS.values(),
-            *composition.DRIVETRAIN_HEAT.values(), *composition.CASE_CHECKS,
+            *composition.DRIVETRAIN_HEAT.values(), *composition.CASE_CHECKS, *composition.TEMPERATURE_MODELS.values(),
             *(target for target, _ in composition.CASE_PIECES.values()), *composition.CHOSEN_PIECES.values()]
 
 

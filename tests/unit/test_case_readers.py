@@ -52,7 +52,10 @@ SOURCE = Path(__file__).resolve().parents[2] / "src" / "thermogear"
 #: 18 once the tooth temperature field and the paper's k_T model name their pieces (the provider a section chooses
 #: by name is a piece, thermogear.composition.CHOSEN_PIECES; a piece needed on some paths only is asked for later,
 #: ``temperature_field_of``; the paper's per-case memo is the piece paper_thermal_memo).
-MAXIMUM_CASE_READERS = 18
+#: 16 once the gearbox's temperature model returns the parts of the case it predicts (the loader writes them;
+#: predicted_temperatures names its pieces) and PredictedTemperatureError carries the steady state and the key it
+#: reports, not the unresolved case (the network's commands load with predict_temperatures=False).
+MAXIMUM_CASE_READERS = 16
 
 
 def _takes_case(argument: ast.arg) -> bool:

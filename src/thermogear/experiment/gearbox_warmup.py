@@ -231,8 +231,8 @@ def gearbox_warmup(case, duration_s: float = 1200.0, start_c: float | None = Non
                         "operating.power_kw": None})
     try:
         base = case.with_changes(**changes) if changes else case
-    except PredictedTemperatureError as error:  # its own steady state is above the material data: the warm-up
-        base = error.unresolved_case            # sets every state's temperatures itself (state_case)
+    except PredictedTemperatureError:  # its own steady state is above the material data: the warm-up sets every
+        base = case.with_changes(predict_temperatures=False, **changes)  # state's temperatures itself (state_case)
     orbit_start = None  # the previous state's orbit: where the next state's periodic solve starts
     for index in range(0, history.times.size, int(points_per_interval)):
         time, temperatures = float(history.times[index]), history.temperatures_c[:, index]
