@@ -55,7 +55,15 @@ SOURCE = Path(__file__).resolve().parents[2] / "src" / "thermogear"
 #: 16 once the gearbox's temperature model returns the parts of the case it predicts (the loader writes them;
 #: predicted_temperatures names its pieces) and PredictedTemperatureError carries the steady state and the key it
 #: reports, not the unresolved case (the network's commands load with predict_temperatures=False).
-MAXIMUM_CASE_READERS = 16
+#: 15 once a train's further stages are resolved from the pieces they read (stage_train: the [drivetrain] section,
+#: the built stages, the first pair and the operating point give each stage's changes, speed, repeats and phase)
+#: and the drivetrain's resolver writes the stages' cases. Left: the machinery (check_case, cached_per_case,
+#: call_with_pieces), the entry points (thermogear.run, evaluate_case, the report, thermogear.sweep's study,
+#: Study.define, the gearbox grid, the two warm-ups) and the resolvers that write new cases (case_drivetrain,
+#: fem_inputs, the two warm-ups' state_case: one at a measured temperature through the checked case file, one at
+#: the network's node temperatures through its sections, without re-reading the case: about 30-190 ms against
+#: the 20 ms of a state's periodic solve).
+MAXIMUM_CASE_READERS = 15
 
 
 def _takes_case(argument: ast.arg) -> bool:
