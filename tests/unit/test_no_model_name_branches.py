@@ -170,6 +170,7 @@ def _choice_registries() -> dict:
     from thermogear.gearbox.bearing_entries import BEARING_TYPES
     from thermogear.luo2020.case_inputs import LOAD_BASES
     from thermogear.sweep.evaluation_methods import EVALUATION_METHODS
+    from thermogear.sweep.load_held import HOLDS
 
     return {
         "lubrication method ([gearbox.oil] lubrication)": ("lubrication_methods.py", LUBRICATION_METHODS),
@@ -184,6 +185,7 @@ def _choice_registries() -> dict:
         "bore condition of the FE heat model ([fem] bore)": ("fem/tooth_heat.py", BORE_CONDITIONS),
         "bearing type of a loss entry (type)": ("gearbox/bearing_entries.py", BEARING_TYPES),
         "mesh damping in flight ([dynamics] damping_in_flight)": ("dynamics/damping_modes.py", DAMPING_MODES),
+        "load a speed sweep holds (sweep --hold)": ("sweep/load_held.py", HOLDS),
     }
 
 
@@ -192,7 +194,8 @@ CHOICES = ("lubrication method ([gearbox.oil] lubrication)", "warm-up model (war
            "form of Eq. 9 ([thermal] expansion_model)", "friction law (friction_model)",
            "load basis of the paper's k_T ([thermal] load_basis)", "spectrum estimate (vibration --method)",
            "plane assumption of the FE model ([fem] plane)", "bore condition of the FE heat model ([fem] bore)",
-           "bearing type of a loss entry (type)", "mesh damping in flight ([dynamics] damping_in_flight)")
+           "bearing type of a loss entry (type)", "mesh damping in flight ([dynamics] damping_in_flight)",
+           "load a speed sweep holds (sweep --hold)")
 
 
 @pytest.mark.parametrize("choice", CHOICES)
