@@ -29,6 +29,7 @@ CASE_PIECES: dict[str, tuple[str, str | None]] = {
     "fem_inputs": ("thermogear.fem.inputs:fem_inputs", None),
     "temperature_field": ("thermogear.temperature_source:temperature_field_from_case", None),
     "paper_thermal_memo": ("thermogear.luo2020.case_stiffness:paper_thermal_memo", None),
+    "paper_thermal_model": ("thermogear.luo2020.case_stiffness:paper_thermal_model", None),
 }
 
 #: The pieces of a case that a plug-in its section names provides (:mod:`thermogear.case_pieces`): name → the chooser,

@@ -62,7 +62,7 @@ SOURCE = Path(__file__).resolve().parents[2] / "src" / "thermogear"
 #: Study.define, the gearbox grid, the two warm-ups) and the resolvers that write new cases (case_drivetrain,
 #: fem_inputs, the two warm-ups' state_case: one at a measured temperature through the checked case file, one at
 #: the network's node temperatures through its sections, without re-reading the case: about 30-190 ms against
-#: the 20 ms of a state's periodic solve).
+#: the 20 ms of a state's periodic solve; both hold a calibrated X_te by one rule, held_x_te, which names its pieces).
 MAXIMUM_CASE_READERS = 15
 
 

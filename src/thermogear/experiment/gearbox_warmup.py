@@ -23,6 +23,7 @@ import math
 from dataclasses import dataclass, replace
 from typing import Any, Callable
 
+from thermogear.case_pieces import call_with_pieces
 from thermogear.dynamics.mesh_laws import mesh_law
 from thermogear.errors import CaseError
 from thermogear.gearbox.backlash import ColdStart, cold_start_backlash
@@ -31,9 +32,10 @@ from thermogear.gearbox.case_model import (PredictedTemperatureError, gearbox_mo
 from thermogear.gearbox.description import OilConditioning
 from thermogear.gearbox.losses import NODES
 from thermogear.gearbox.model import COLDEST_START_C, GearboxThermalModel, WarmUpHistory
+from thermogear.experiment.warmup import held_x_te
 from thermogear.schema.temperature import TemperatureSection
 from thermogear.temperature_limits import FLAG_MEANINGS, MATERIAL_MAXIMUM_C
-from thermogear.thermal_model_rules import thermal_model_rules, x_te_source
+from thermogear.thermal_model_rules import thermal_model_rules
 
 #: Longest warm-up accepted [s] (a day: the network's slowest time constants are hours at most).
 LONGEST_WARM_UP_S = 86400.0
@@ -147,13 +149,8 @@ def state_case(case, temperatures_c):
     changes: dict[str, Any] = dict(
         temperature=temperature, lubricant=case.lubricant.model_copy(update={"operating_temperature_c": oil}),
         housing=case.housing.model_copy(update=housing_update))
-    if thermal_model_rules(case.thermal.model).reads_x_te and x_te_source(case.thermal.x_te_source).calibrated:
-        from thermogear.case_pieces import call_with_pieces  # noqa: PLC0415
-        from thermogear.luo2020.case_stiffness import paper_thermal_model  # noqa: PLC0415
-
-        x_te = call_with_pieces(paper_thermal_model, case).resolve_x_te()[0]
-        changes["thermal"] = case.thermal.model_copy(update={"x_te": x_te, "x_te_source": "given",
-                                                             "calibration_drop_percent": None})
+    if held := call_with_pieces(held_x_te, case):  # its calibrated X_te, held as the measured warm-up holds it
+        changes["thermal"] = case.thermal.model_copy(update=held)
     return replace(case, **changes)
 
 
