@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import warnings
 
-from thermogear.dynamics.mesh_laws import mesh_law
+from thermogear.dynamics.problems.mesh_laws import mesh_law
 from thermogear.errors import IneffectiveKeyWarning
 from thermogear.thermal_model_rules import LUO2020_RULES, THERMAL_MODEL_RULES, thermal_model_rules, x_te_source
 

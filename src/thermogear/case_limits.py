@@ -22,7 +22,7 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING
 
-from thermogear.dynamics.mesh_laws import mesh_law
+from thermogear.dynamics.problems.mesh_laws import mesh_law
 from thermogear.errors import CaseError
 
 if TYPE_CHECKING:
