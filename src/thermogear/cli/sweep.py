@@ -90,7 +90,7 @@ def sweep(
         if stored is not None:
             chosen_model = chosen_model or ("both" if len(stored["models"]) == 2 else stored["models"][0])
             chunks = chunks or stored["chunk_points"]
-        from thermogear.case_pieces import call_with_pieces
+        from thermogear.case.pieces import call_with_pieces
         from thermogear.sweep.api import StudySubject, study_kind
 
         chosen = study_kind(call_with_pieces(StudySubject.of, loaded), method, kind)

@@ -27,7 +27,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from thermogear.case_pieces import call_with_pieces
+from thermogear.case.pieces import call_with_pieces
 from thermogear.composition import DRIVETRAIN_HEAT, builtin
 from thermogear.drivetrain.assembly import Drivetrain
 from thermogear.drivetrain.case_layout import drivetrain_from_section

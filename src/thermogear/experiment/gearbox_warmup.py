@@ -23,7 +23,7 @@ import math
 from dataclasses import dataclass, replace
 from typing import Any, Callable
 
-from thermogear.case_pieces import call_with_pieces
+from thermogear.case.pieces import call_with_pieces
 from thermogear.dynamics.problems.mesh_laws import mesh_law
 from thermogear.errors import CaseError
 from thermogear.gearbox.backlash import ColdStart, cold_start_backlash

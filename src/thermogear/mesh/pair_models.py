@@ -30,7 +30,7 @@ from typing import TYPE_CHECKING, Any, ClassVar, Protocol
 
 import numpy as np
 
-from thermogear.case_pieces import call_with_pieces
+from thermogear.case.pieces import call_with_pieces
 from thermogear.dynamics.problems.mesh_laws import mesh_law
 from thermogear.errors import CaseError
 from thermogear.luo2020.case_stiffness import paper_thermal_model

@@ -20,12 +20,12 @@ import pydantic
 
 from thermogear.temperature_kinds import temperature_source
 from thermogear import warning_scope
-from thermogear.case_errors import case_error_from_validation
-from thermogear.case_geometry import gear_pair_of, helical_pair_of
-from thermogear.case_helical import check_face_gradient, check_helical_case, transverse_gears_section
-from thermogear.case_keys import warn_keys_without_effect
-from thermogear.case_limits import check_model_limits
-from thermogear.case_pieces import call_with_pieces
+from thermogear.case.errors import case_error_from_validation
+from thermogear.case.gears import gear_pair_of, helical_pair_of
+from thermogear.case.helical import check_face_gradient, check_helical_case, transverse_gears_section
+from thermogear.case.keys import warn_keys_without_effect
+from thermogear.case.limits import check_model_limits
+from thermogear.case.pieces import call_with_pieces
 from thermogear.composition import CASE_CHECKS, TEMPERATURE_MODELS, builtin, resolve
 from thermogear.errors import CaseError, closest_key
 from thermogear.fzg import fzg_load_stage_torque
@@ -141,7 +141,7 @@ def _section_default(name: str) -> dict[str, Any]:
 
 def cached_per_case(function):
     """A resolver of a case, memoised on that Case instance: ``function``'s parameters name the pieces of the case it
-    reads (:mod:`thermogear.case_pieces`: ``lubricant``, ``gear_pair``, a derived piece such as ``oil``; ``case``
+    reads (:mod:`thermogear.case.pieces`: ``lubricant``, ``gear_pair``, a derived piece such as ``oil``; ``case``
     the whole case), and the memoised resolver is called with the case (``resolver(case)``), which it reads in one
     place: here.
 
@@ -215,13 +215,13 @@ def load_case(name_or_path: str | Path, predict_temperatures: bool = True) -> Ca
 
 
 # --------------------------------------------------------------------------------------------- load-time checks
-CaseCheck = Callable[..., None]  # its parameters name pieces of the case (thermogear.case_pieces)
+CaseCheck = Callable[..., None]  # its parameters name pieces of the case (thermogear.case.pieces)
 _CASE_CHECKS: list[CaseCheck] = []
 
 
 def register_case_check(check: CaseCheck) -> CaseCheck:
     """Add a check that every loaded case must pass (it raises CaseError). The check receives the pieces of the
-    case its parameters name (:mod:`thermogear.case_pieces`: ``check(gear_pair, operating_point)``; ``check(case)``
+    case its parameters name (:mod:`thermogear.case.pieces`: ``check(gear_pair, operating_point)``; ``check(case)``
     the whole case). Returns the check, so it can be used as a decorator. The built-in checks (temperatures, X_te, then those named in :mod:`thermogear.composition`) run
     first; registered ones after, in order."""
     if not callable(check):
@@ -246,7 +246,7 @@ def check_case(case: "Case") -> None:
                        case.dynamics.mesh, case.gears_input, case.document.get("operating", {}))
     builtin_checks = [check for check in map(resolve, CASE_CHECKS) if check is not None]
     for check in builtin_checks + [check for check in _CASE_CHECKS if check not in builtin_checks]:
-        call_with_pieces(check, case)  # each receives the pieces of the case it names (thermogear.case_pieces)
+        call_with_pieces(check, case)  # each receives the pieces of the case it names (thermogear.case.pieces)
 
 
 def _check_temperature_field(section: TemperatureSection, directory: Path | None, pair: GearPair,
@@ -369,7 +369,7 @@ def case_from_document(document: dict[str, Any], source: str = "<memory>", predi
 
 
 # --------------------------------------------------------------------------------------------- predicted temperatures
-#: ``resolver(pieces) -> {Case field: new value}``: its parameters name pieces (thermogear.case_pieces)
+#: ``resolver(pieces) -> {Case field: new value}``: its parameters name pieces (thermogear.case.pieces)
 CaseResolver = Callable[..., dict[str, Any]]
 _TEMPERATURE_MODELS: dict[str, CaseResolver] = {}
 
@@ -377,7 +377,7 @@ _TEMPERATURE_MODELS: dict[str, CaseResolver] = {}
 def register_temperature_model(name: str, resolver: CaseResolver) -> None:
     """Plug in a temperature model that predicts the case's temperatures at load time, selectable as
     ``[temperature].model = name``: ``resolver(pieces)`` receives the pieces of the case its parameters name
-    (:mod:`thermogear.case_pieces`) and returns the parts of the case it predicts, ``{field: value}`` (the
+    (:mod:`thermogear.case.pieces`) and returns the parts of the case it predicts, ``{field: value}`` (the
     ``lubricant`` and ``housing`` sections at the predicted oil and housing temperatures, say), which the loader
     writes into the case (the built-in ones, such as the gearbox thermal model's ``"gearbox"``, are named in
     :mod:`thermogear.composition`; one registered here takes precedence). Its gear temperatures come from the
