@@ -27,7 +27,7 @@ CASE_PIECES: dict[str, tuple[str, str | None]] = {
     "oil": ("thermogear.lubricant:lubricant_from_case", None),
     "gearbox_model": ("thermogear.gearbox.case_model:gearbox_model_from_case", "gearbox"),
     "fem_inputs": ("thermogear.fem.inputs:fem_inputs", None),
-    "temperature_field": ("thermogear.temperature_source:temperature_field_from_case", None),
+    "temperature_field": ("thermogear.temperature.source:temperature_field_from_case", None),
     "paper_thermal_memo": ("thermogear.luo2020.case_stiffness:paper_thermal_memo", None),
     "paper_thermal_model": ("thermogear.luo2020.case_stiffness:paper_thermal_model", None),
 }
@@ -36,7 +36,7 @@ CASE_PIECES: dict[str, tuple[str, str | None]] = {
 #: ``chooser(pieces) -> plug-in``, which picks the plug-in from the section's name; the plug-in is then called with
 #: the pieces it names, and its answer is the piece.
 CHOSEN_PIECES: dict[str, str] = {
-    "provided_temperature_field": "thermogear.temperature_source:temperature_provider",
+    "provided_temperature_field": "thermogear.temperature.source:temperature_provider",
     "provided_x_te": "thermogear.luo2020.calibration:chosen_x_te_provider",
 }
 

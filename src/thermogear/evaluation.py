@@ -202,7 +202,7 @@ def evaluate_case(case, method: str = "periodic", models: tuple[str, ...] = MODE
 
     def thermal():
         from thermogear.mesh.model import MeshModel
-        from thermogear.temperature_source import temperature_field_from_case
+        from thermogear.temperature.source import temperature_field_from_case
 
         evaluation.temperature_field = temperature_field_from_case(case)
         thermal_mesh = MeshModel(case, "thermal")

@@ -57,7 +57,7 @@ def test_a_parameter_that_names_no_piece_is_refused():
 
 def test_a_piece_asked_for_later_is_resolved_only_when_asked():
     from thermogear.errors import ThermogearError
-    from thermogear.temperature_source import temperature_field_from_case
+    from thermogear.temperature.source import temperature_field_from_case
 
     case = load_case("luo2019")  # a tabulated field: no provider is chosen, and asking for one is an error
     later = call_with_pieces(lambda provided_temperature_field_of: provided_temperature_field_of, case)
@@ -72,7 +72,7 @@ def test_a_chosen_piece_is_the_answer_of_the_plug_in_its_section_names(monkeypat
     import dataclasses
     import types
 
-    from thermogear import temperature_source
+    from thermogear.temperature import source as temperature_source
 
     @dataclasses.dataclass(frozen=True)
     class Pieces:

@@ -1,6 +1,6 @@
 """The contact law of the mesh (``[dynamics] mesh``) and the temperature source (``[temperature] model``) are
 resolved once (issue 33): outside their registries, :mod:`thermogear.dynamics.problems.mesh_laws` and
-:mod:`thermogear.temperature_kinds`, no code compares ``"linear"``/``"nonlinear"`` or ``"uniform"``/``"tabulated"``/
+:mod:`thermogear.temperature.kinds`, no code compares ``"linear"``/``"nonlinear"`` or ``"uniform"``/``"tabulated"``/
 ``"fem"``/``"gearbox"`` (it asks ``mesh_law(name).backlash``, ``temperature_source(name).uniform``). The scan is the
 model-name scan's (:mod:`test_no_model_name_branches`)."""
 
@@ -13,7 +13,7 @@ import pytest
 import thermogear
 from test_no_model_name_branches import model_name_branches
 from thermogear.dynamics.problems.mesh_laws import MESH_LAWS
-from thermogear.temperature_kinds import TEMPERATURE_SOURCES
+from thermogear.temperature.kinds import TEMPERATURE_SOURCES
 
 SOURCE = Path(thermogear.__file__).parent
 
@@ -21,7 +21,7 @@ SOURCE = Path(thermogear.__file__).parent
 SCANS = {
     "contact law": ("dynamics/problems/mesh_laws.py", frozenset(MESH_LAWS), {}),
     # (cli/warmup.py's `--model gearbox`, a warm-up model, is resolved from its own registry, WARMUP_MODELS)
-    "temperature source": ("temperature_kinds.py", frozenset(TEMPERATURE_SOURCES), {}),
+    "temperature source": ("temperature/kinds.py", frozenset(TEMPERATURE_SOURCES), {}),
 }
 
 

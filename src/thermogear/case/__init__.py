@@ -18,7 +18,7 @@ from typing import Any, Callable
 
 import pydantic
 
-from thermogear.temperature_kinds import temperature_source
+from thermogear.temperature.kinds import temperature_source
 from thermogear import warning_scope
 from thermogear.case.errors import case_error_from_validation
 from thermogear.case.gears import gear_pair_of, helical_pair_of
@@ -40,7 +40,7 @@ from thermogear.schema import (CaseFile, DampingSection, DrivetrainSection, Dyna
                                ThermalSection)
 from thermogear.schema.drivetrain import check_drivetrain_fits_gears
 from thermogear.schema.drivetrain_topology import check_drivetrain_train
-from thermogear.temperature_field import (check_temperatures, default_bulk_temperature,
+from thermogear.temperature.field import (check_temperatures, default_bulk_temperature,
                                          temperature_field_from_section)
 from thermogear.thermal_model_rules import thermal_model_rules, x_te_source
 from thermogear.text_files import is_existing_file, path_exists, read_user_text
@@ -236,7 +236,7 @@ def check_case(case: "Case") -> None:
 
     Section-local checks run in the schema (values, lubricant name and viscosity points, the flank table's
     values); here run the checks that need the gear pair or several sections: the temperature field over the path
-    of contact (:func:`~thermogear.temperature_field.check_temperatures`: table sorted and matched, fit degree,
+    of contact (:func:`~thermogear.temperature.field.check_temperatures`: table sorted and matched, fit degree,
     temperatures within what the case's thermal model evaluates) and the X_te the paper's thermal model needs.
     Warnings of these checks are left to the stage that uses the value (it issues them once, there)."""
     with warning_scope.ignored():

@@ -13,7 +13,7 @@ import math
 
 from thermogear.errors import CaseError
 from thermogear.helical.geometry import HelicalPair
-from thermogear.temperature_kinds import temperature_source
+from thermogear.temperature.kinds import temperature_source
 from thermogear.thermal_model_rules import thermal_model_rules
 
 __all__ = ["check_helical_case", "check_face_gradient", "transverse_gears_section"]

@@ -34,7 +34,7 @@ from thermogear.gearbox.description import OilConditioning
 from thermogear.gearbox.losses import NODES
 from thermogear.gearbox.model import COLDEST_START_C, GearboxThermalModel, WarmUpHistory
 from thermogear.schema.temperature import TemperatureSection
-from thermogear.temperature_limits import FLAG_MEANINGS, MATERIAL_MAXIMUM_C
+from thermogear.temperature.limits import FLAG_MEANINGS, MATERIAL_MAXIMUM_C
 from thermogear.thermal_model_rules import thermal_model_rules
 
 #: Longest warm-up accepted [s] (a day: the network's slowest time constants are hours at most).

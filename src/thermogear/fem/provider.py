@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
     from thermogear.fem.inputs import FemInputs
-    from thermogear.temperature_source import TemperatureField
+    from thermogear.temperature.source import TemperatureField
 
 
 def fem_temperature_field(fem_inputs: "FemInputs") -> "TemperatureField":

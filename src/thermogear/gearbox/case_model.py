@@ -32,7 +32,7 @@ from thermogear.gearbox.description import (GearboxDescription, GearboxOperating
                                             MountedBearing, OilConditioning)
 from thermogear.gearbox.input_checks import check_gearbox_inputs, housing_box, oil_floor_and_level
 from thermogear.gearbox.network import NoSteadyStateError
-from thermogear.temperature_limits import MATERIAL_MAXIMUM_C
+from thermogear.temperature.limits import MATERIAL_MAXIMUM_C
 from thermogear.thermoelastic.materials import HOUSING_EXPANSION_PER_K
 
 if TYPE_CHECKING:

@@ -11,7 +11,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from thermogear.gearbox.case_model import gearbox_operating_point, gearbox_section, predicted_steady_state
-from thermogear.temperature_field import TemperatureField
+from thermogear.temperature.field import TemperatureField
 
 if TYPE_CHECKING:
     from thermogear.gearbox.model import GearboxThermalModel

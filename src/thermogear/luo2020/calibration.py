@@ -22,7 +22,7 @@ from thermogear.errors import CaseError, ThermogearError
 from thermogear.stiffness.potential_energy import pair_compliance
 from thermogear.luo2020.case_inputs import PaperThermalInputs
 from thermogear.luo2020.stiffness import check_x_te
-from thermogear.temperature_source import TemperatureField
+from thermogear.temperature.source import TemperatureField
 from thermogear.thermal_model_rules import x_te_source
 
 if TYPE_CHECKING:

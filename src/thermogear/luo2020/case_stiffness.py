@@ -26,7 +26,7 @@ from thermogear.stiffness.table import pair_compliance_table, tooth_compliance_a
 from thermogear.luo2020.calibration import Calibration, calibrate, section_x_te
 from thermogear.luo2020.case_inputs import PaperThermalInputs, load_basis_of
 from thermogear.luo2020.stiffness import (CONTACT_TOLERANCE, ThermalStiffness, check_x_te, thermal_pair_stiffness)
-from thermogear.temperature_source import TemperatureField
+from thermogear.temperature.source import TemperatureField
 
 if TYPE_CHECKING:
     from thermogear.geometry import GearPair

@@ -30,8 +30,8 @@ from thermogear.mesh.pair_models import PairModelBase, check_model, pair_model_c
 from thermogear.mesh.state import MeshState
 from thermogear.mesh.table_file import mesh_table_of
 from thermogear.mesh_cycle import MeshCycle, MeshGrid, load_share_at, load_shares
-from thermogear.temperature_kinds import temperature_source
-from thermogear.temperature_source import TemperatureField
+from thermogear.temperature.kinds import temperature_source
+from thermogear.temperature.source import TemperatureField
 from thermogear.thermal_model_rules import x_te_source
 from thermogear.thermoelastic.load_sharing import loaded_transmission_error
 from thermogear.thermoelastic.mesh import ThermoelasticMesh

@@ -22,7 +22,7 @@ import numpy as np
 from thermogear.case.keys import LUO2020_KEYS, luo2020_complete
 from thermogear.errors import ExtrapolationWarning
 from thermogear.mesh.model import MeshModel
-from thermogear.temperature_source import TemperatureField
+from thermogear.temperature.source import TemperatureField
 from thermogear.thermoelastic.mesh import ThermoelasticMesh
 
 if TYPE_CHECKING:

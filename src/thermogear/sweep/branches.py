@@ -34,7 +34,7 @@ from thermogear.mesh.model import MeshModel
 from thermogear.sweep.branch_store import BRANCH_VARIABLES, branch_layout, branch_region, orbit_arrays
 from thermogear.sweep.hysteresis import hysteresis_bands
 from thermogear.sweep.load_held import study_load_held
-from thermogear.temperature_kinds import temperature_source
+from thermogear.temperature.kinds import temperature_source
 
 __all__ = ["DIRECTIONS", "BRANCH_VARIABLES", "branch_study", "hysteresis_bands", "write_branch_store"]
 

@@ -31,7 +31,7 @@ import numpy as np
 from thermogear.errors import CaseError, JammingError, ModelLimitError, ProblemError
 from thermogear.sweep.drivetrain_branches import DIRECTIONS
 from thermogear.sweep.drivetrain_store import STAGE_KEYS, TEMPERATURES
-from thermogear.temperature_kinds import temperature_source
+from thermogear.temperature.kinds import temperature_source
 
 __all__ = ["DrivetrainPlan", "plan_drivetrain_study", "point_case", "run_task"]
 

@@ -28,7 +28,7 @@ from typing import Any
 import numpy as np
 import pydantic
 
-from thermogear.temperature_kinds import temperature_source
+from thermogear.temperature.kinds import temperature_source
 from thermogear.errors import CaseError, JammingError, closest_key
 from thermogear.schema.values import MAX_POINTS, parse_values
 from thermogear.sweep.load_held import DEFAULT_HOLD, HOLDS, fixed_load_changes, held_load

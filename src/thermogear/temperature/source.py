@@ -19,15 +19,15 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import TYPE_CHECKING
 
-from thermogear.temperature_kinds import temperature_source
+from thermogear.temperature.kinds import temperature_source
 from thermogear import warning_scope
 from thermogear.case import cached_per_case
 from thermogear.composition import TEMPERATURE_PROVIDERS, builtin
 from thermogear.errors import ModelAssumptionWarning, ThermogearError
 from thermogear.thermal_model_rules import thermal_model_rules
-# The field, its checks and the fit need no case machinery: they live in thermogear.temperature_field so that the
+# The field, its checks and the fit need no case machinery: they live in thermogear.temperature.field so that the
 # case loader can run them at load time; re-exported here, where the rest of the thermal model looks for them.
-from thermogear.temperature_field import (DEFAULT_LUBRICANT_DATA_MAXIMUM_C, FIT_OVERSHOOT_ABSOLUTE_K,  # noqa: F401
+from thermogear.temperature.field import (DEFAULT_LUBRICANT_DATA_MAXIMUM_C, FIT_OVERSHOOT_ABSOLUTE_K,  # noqa: F401
                                           FIT_OVERSHOOT_RELATIVE, GAMMA_SPAN_TOLERANCE, MATERIAL_MAXIMUM_C,
                                           MATERIAL_MINIMUM_C, TemperatureLimits,
                                           TemperatureField, check_flank_table, check_temperatures,

@@ -3,7 +3,7 @@
 This module holds what needs nothing but the section and the gear pair's path of contact: the
 :class:`TemperatureField` component, the flank-table checks, the polynomial fit (Luo & Li 2020 §2.1.5) and the
 range checks of :func:`check_temperatures`. It imports no case machinery, so the case loader runs these checks
-at load time (``thermogear check`` refuses what ``run`` would refuse); :mod:`thermogear.temperature_source` wires
+at load time (``thermogear check`` refuses what ``run`` would refuse); :mod:`thermogear.temperature.source` wires
 it to a :class:`~thermogear.case.Case` (and to the finite-element provider) and re-exports it.
 
 Temperatures are °C here; the expansion uses the rises above ``reference_c`` (Luo & Li Eq. 10 holds for rises
@@ -22,14 +22,14 @@ from pathlib import Path
 
 import numpy as np
 
-from thermogear.temperature_kinds import temperature_source
+from thermogear.temperature.kinds import temperature_source
 from thermogear.errors import CaseError, ExtrapolationWarning, ModelAssumptionWarning, shown_value
 from thermogear.text_files import is_existing_file, read_user_text
 
 #: Highest tooth temperature the material data cover [°C] (room-temperature E, ν and a constant expansion
 #: coefficient; gear steels are tempered at about 150–200 °C and soften above). The one definition is
-#: :data:`thermogear.temperature_limits.MATERIAL_MAXIMUM_C`.
-from thermogear.temperature_limits import MATERIAL_MAXIMUM_C  # noqa: E402
+#: :data:`thermogear.temperature.limits.MATERIAL_MAXIMUM_C`.
+from thermogear.temperature.limits import MATERIAL_MAXIMUM_C  # noqa: E402
 
 #: Lowest tooth temperature the thermo-elastic model evaluates [°C]: the coldest start the housing range allows
 #: (schema.housing.HOUSING_TEMPERATURE_RANGE_C). Below the assembly temperature the gears contract uniformly by
@@ -315,7 +315,7 @@ def temperature_field_from_section(section, directory: Path | None = None) -> Te
     if temperature_source(section.model).tabulated:
         return _tabulated_field(section, directory)
     raise CaseError("temperature.model", section.model, "uniform | tabulated here",
-                    "this model's field comes from its provider (see thermogear.temperature_source)")
+                    "this model's field comes from its provider (see thermogear.temperature.source)")
 
 
 def _uniform_field(section) -> TemperatureField:

@@ -21,7 +21,7 @@ __all__ = ["TEMPERATURE_SOURCES", "TemperatureSourceKind", "temperature_source"]
 @dataclass(frozen=True)
 class TemperatureSourceKind:
     """What a ``[temperature] model`` is: ``given`` (the case's own numbers, read by
-    :func:`thermogear.temperature_field.temperature_field_from_section`), ``uniform`` (one bulk temperature),
+    :func:`thermogear.temperature.field.temperature_field_from_section`), ``uniform`` (one bulk temperature),
     ``tabulated`` (flank temperatures along the path), ``predicted_at_load`` (a model sets the case's temperatures
     when it is loaded), ``solved_per_state`` (each operating state runs a field solution: the FE model)."""
 
