@@ -165,7 +165,7 @@ def test_the_example_of_adding_a_bearing_model_runs(capsys, monkeypatch):
 
 
 def test_the_example_of_adding_a_loss_correlation_runs(capsys, monkeypatch):
-    from thermogear.friction_models import FRICTION_MODELS, friction_law
+    from thermogear.friction.models import FRICTION_MODELS, friction_law
 
     saved = dict(FRICTION_MODELS)
     try:

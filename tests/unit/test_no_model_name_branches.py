@@ -159,13 +159,13 @@ def _choice_registries() -> dict:
     """(registry module, the names it resolves) of every other choice of a model, method or law by name
     (issue 33): each name is compared in its registry only, every other module asks the resolved object."""
     from thermogear.cli.warmup import WARMUP_MODELS
-    from thermogear.damping import DAMPING_RULES
+    from thermogear.friction.damping import DAMPING_RULES
     from thermogear.drivetrain_choices import END_KINDS, ROTATIONS
     from thermogear.dynamics.problems.damping_modes import DAMPING_MODES
     from thermogear.experiment.spectrum import SPECTRUM_METHODS
     from thermogear.fem.elasticity import PLANE_ASSUMPTIONS
     from thermogear.fem.tooth_heat import BORE_CONDITIONS
-    from thermogear.friction_models import FRICTION_MODELS
+    from thermogear.friction.models import FRICTION_MODELS
     from thermogear.gearbox.bearing_entries import BEARING_TYPES
     from thermogear.lubrication_methods import LUBRICATION_METHODS
     from thermogear.luo2020.case_inputs import LOAD_BASES
@@ -177,9 +177,9 @@ def _choice_registries() -> dict:
         "lubrication method ([gearbox.oil] lubrication)": ("lubrication_methods.py", LUBRICATION_METHODS),
         "warm-up model (warmup --model)": ("cli/warmup.py", WARMUP_MODELS),
         "evaluation method of a study (sweep --method)": ("sweep/evaluation_methods.py", EVALUATION_METHODS),
-        "mesh-damping rule ([damping] rule)": ("damping.py", DAMPING_RULES),
+        "mesh-damping rule ([damping] rule)": ("friction/damping.py", DAMPING_RULES),
         "form of Eq. 9 ([thermal] expansion_model)": ("luo2020/expansion.py", EXPANSION_FORMS),
-        "friction law (friction_model)": ("friction_models.py", FRICTION_MODELS),
+        "friction law (friction_model)": ("friction/models.py", FRICTION_MODELS),
         "load basis of the paper's k_T ([thermal] load_basis)": ("luo2020/case_inputs.py", LOAD_BASES),
         "spectrum estimate (vibration --method)": ("experiment/spectrum.py", SPECTRUM_METHODS),
         "plane assumption of the FE model ([fem] plane)": ("fem/elasticity.py", PLANE_ASSUMPTIONS),
@@ -221,7 +221,7 @@ def test_every_choice_is_compared_only_in_its_registry(choice):
 
 #: Comparisons left on purpose, with their reason: the schema checks the keys of the ``"constant"`` friction law
 #: (its coefficient required, its lubricant factor refused) by name, because it sits below the friction laws' layer
-#: (:mod:`thermogear.friction_models` reads the lubricant model, which reads the case: the layers contract).
+#: (:mod:`thermogear.friction.models` reads the lubricant model, which reads the case: the layers contract).
 CHOICES_KNOWN = {"friction law (friction_model)": {"schema/friction_inputs.py": 3}}
 
 
@@ -239,7 +239,7 @@ def test_the_choice_scan_finds_the_forms_the_package_held():
 def test_the_schema_accepts_exactly_the_registered_choices():
     import typing
 
-    from thermogear.damping import DAMPING_RULES
+    from thermogear.friction.damping import DAMPING_RULES
     from thermogear.lubrication_methods import LUBRICATION_METHODS
     from thermogear.luo2020.expansion import EXPANSION_FORMS
     from thermogear.schema.dynamics import DampingSection

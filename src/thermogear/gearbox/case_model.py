@@ -26,7 +26,7 @@ from thermogear.errors import CaseError
 from thermogear.gearbox.bearing_entries import drivetrain_mounted_bearings, rolling_bearing
 from thermogear.gearbox.shaft_conduction import drivetrain_shaft_spans
 from thermogear.gearbox.injection import OilJet
-from thermogear.friction_models import friction_law
+from thermogear.friction.models import friction_law
 from thermogear.lubrication_methods import lubrication_method
 from thermogear.gearbox.description import (GearboxDescription, GearboxOperatingPoint, Housing, LipSeal,
                                             MountedBearing, OilConditioning)

@@ -19,10 +19,10 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from thermogear.damping import (PairDamping, friction_damping_exponents,
+from thermogear.friction.damping import (PairDamping, friction_damping_exponents,
                                 friction_pair_damping, mesh_circular_frequency, mesh_damping)
 from thermogear.errors import CaseError
-from thermogear.friction_models import FrictionLaw, friction_law
+from thermogear.friction.models import FrictionLaw, friction_law
 from thermogear.lubricant import Lubricant, lubricant_from_case
 from thermogear.mesh.helical_model import helical_model_state
 from thermogear.mesh.model_names import MODELS, Model
@@ -131,7 +131,7 @@ class MeshModel:
     def damping_scaling(self) -> tuple[float, float | None] | None:
         """(speed exponent, load exponent) of the mesh damping, c(n, w) = c(n0, w0)·(n/n0)^a·(w/w0)^b, where this
         model keeps the conditions under which the friction damping is such a power law (geometry, oil
-        temperature and load shares independent of speed and load; thermogear.damping); the load exponent is
+        temperature and load shares independent of speed and load; thermogear.friction.damping); the load exponent is
         None where the load shares move with the load, and the whole is None where the temperature input depends
         on the speed (the FE heat model; the gearbox model, whose predicted temperatures follow speed and load). Sweeps use it to reuse one mesh period (and do not where the pairs carry
         deviations: the excitation is not part of their batch kernel)."""

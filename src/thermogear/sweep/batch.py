@@ -12,7 +12,7 @@ pair stiffness — is asked once per group and load, at the group's reference sp
 * the normal load is the mesh model's at that speed (a case that gives a power keeps the power: w ∝ 1/n1);
 * the damping is the reference state's scaled by the mesh model's own ``damping_scaling`` — the friction damping
   of Eqs. 27–28 is a power law in speed and load when the geometry, the oil temperature and the load shares stay
-  as they are (``thermogear.damping``); where the load shares move with the load (the paper's secant k_T in the
+  as they are (``thermogear.friction.damping``); where the load shares move with the load (the paper's secant k_T in the
   load share) the group is split by load, and where the model cannot say (a temperature that depends on the
   speed, deviations that excite the mesh) the points go to the per-point path;
 * where the stiffness depends on the load (the paper's secant k_T), one state per distinct load;

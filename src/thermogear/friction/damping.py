@@ -1,7 +1,7 @@
 """Equivalent viscous damping of tooth friction (Luo & Li (2020) Eqs. 26–28; docs/damping.md).
 
 Chain: Coulomb friction F = μ·w of a tooth pair (Eq. 27, :mod:`thermogear.friction`; another law of
-:data:`thermogear.friction_models.FRICTION_MODELS` by ``[damping] friction_model``) dissipates 4·F·B per cycle of
+:data:`thermogear.friction.models.FRICTION_MODELS` by ``[damping] friction_model``) dissipates 4·F·B per cycle of
 harmonic motion of amplitude B; a viscous damper c dissipates π·c·ω·B². Equal energy gives c = 4F/(πωB) (Eq. 26).
 With the quasi-static amplitude B ≈ w/k (frequency ratio ≪ 1) the load cancels: c = 4·μ·k/(π·ω) (Eq. 28), ω the
 mesh circular frequency 2π·z1·n1/60 (the paper's constant 1.459 = 0.12·4·60/(π·2π) confirms it).
@@ -46,7 +46,7 @@ import numpy as np
 from thermogear.errors import CaseError
 from thermogear.registry import registered
 from thermogear.friction import friction_validity_warnings
-from thermogear.friction_models import DEFAULT_DAMPING_FRICTION_MODEL, FRICTION_MODELS, FrictionLaw, PitchContact
+from thermogear.friction.models import DEFAULT_DAMPING_FRICTION_MODEL, FRICTION_MODELS, FrictionLaw, PitchContact
 from thermogear.mesh.model_names import MODELS
 
 #: How the friction damping c = 4·μ·k/(π·ω_m) with μ = 0.12·X_L·(w_i·R_a/(η·v_Σ·ρ_red))^(1/4) (Eqs. 27–28) scales
