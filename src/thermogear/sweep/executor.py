@@ -31,7 +31,8 @@ from typing import Any
 
 from thermogear.errors import CaseError
 
-__all__ = ["LOCAL_SCHEDULERS", "QUIET_LOCAL_CLUSTER", "check_scheduler_address", "execute", "run_task", "run_task_on_worker", "worker_count"]
+__all__ = ["LOCAL_SCHEDULERS", "QUIET_LOCAL_CLUSTER", "check_scheduler_address", "execute", "run_task",
+           "run_task_on_worker", "worker_count"]
 
 #: The schedulers of this machine; any other value is the address of a ``dask.distributed`` scheduler.
 LOCAL_SCHEDULERS = ("serial", "threads", "processes")
