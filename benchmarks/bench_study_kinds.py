@@ -1,10 +1,16 @@
 """Benchmark: the study kinds of issue 34 on two local worker processes against serial, ratios in one run.
 
 Run: python benchmarks/bench_study_kinds.py [--quick] [--repeats=N] [--study=drivetrain|gearbox] [--dask-defaults]
-Prints a table and writes benchmarks/results/bench_study_kinds.json (--quick: tiny studies, once, nothing written:
-a check that it runs; --study: that study kind only, the file keeps the other kind's last rows; --dask-defaults: the
-gearbox grid also on two workers with Dask's default background settings, i.e. without the executor's
-``QUIET_LOCAL_CLUSTER``, in the same run). The gearbox grid's ratio alone, once, on an idle machine (about 4 min):
+[--grid-size=N]
+Prints a table and writes benchmarks/results/bench_study_kinds.json. Options:
+
+* ``--quick``: tiny studies, once, nothing written (a check that it runs);
+* ``--study``: that study kind only; the file keeps the other kind's last rows;
+* ``--dask-defaults``: the gearbox grid also on two workers with Dask's default background settings (without the
+  executor's ``QUIET_LOCAL_CLUSTER``), in the same run;
+* ``--grid-size=N``: a grid of N speeds × N torques instead of 100 × 100 (a smaller check; nothing written).
+
+The gearbox grid's ratio alone, once, on an idle machine (about 4 min):
 ``python benchmarks/bench_study_kinds.py --study=gearbox --repeats=1``.
 
 1. the drivetrain study over speed × one other key (the two-shaft rotor of tests/data at its own resolution, linear
@@ -118,7 +124,7 @@ def main() -> None:
         gearbox_case = load_case(str(DATA / "gearbox" / "fzg_gearbox.toml"))
         model = gearbox_model_from_case(gearbox_case)
         ambient = gearbox_operating_point(gearbox_case.operating_point, gearbox_case.gearbox).ambient_c
-        count = 20 if quick else 100
+        count = next((int(a.split("=")[1]) for a in sys.argv if a.startswith("--grid-size=")), 20 if quick else 100)
         grid_speeds, grid_torques = np.linspace(300.0, 3000.0, count), np.linspace(10.0, 200.0, count)
 
         def grid(scheduler: str, workers) -> None:
@@ -180,7 +186,7 @@ def main() -> None:
             print(f"  with Dask's default background settings: two workers "
                   f"{median['two_workers_dask_defaults_s']:.1f} s, {median['ratio_dask_defaults']:.2f}x, "
                   f"{median['extra_cpu_dask_defaults_s']:+.1f} s of CPU beyond serial")
-    if quick:  # a check that the benchmark runs: its numbers are not the study's
+    if quick or count != 100:  # a check that the benchmark runs, or a smaller grid: not the study's numbers
         return
     RESULTS.mkdir(exist_ok=True)
     path = RESULTS / "bench_study_kinds.json"
