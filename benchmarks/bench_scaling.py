@@ -90,7 +90,7 @@ def route_before_this_turn():
     import thermogear.dynamics.monodromy_range as monodromy_range
     import thermogear.dynamics.periodic_ndof as periodic_ndof
 
-    def separate(system, units, durations, inverse, full_range):
+    def separate(system, units, durations, inverse, full_range, powers=False):
         return np.stack([expm(matrix * duration) for matrix, duration in zip(units, durations)])
 
     saved = (monodromy_range.LARGEST_RANK_SHARE, periodic_ndof._large_pieces)

@@ -11,7 +11,7 @@ import functools
 import inspect
 import tomllib
 import weakref
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from importlib import resources
 from pathlib import Path
 from typing import Any, Callable
@@ -113,8 +113,9 @@ class Case:
         """External normal load w = F_bt = T1 / r_b1 [N], total over the face width."""
         return self.operating_point.normal_load(self.gear_pair.pinion.base_radius)
 
-    def with_changes(self, **changes: Any) -> "Case":
-        """A new case with dotted case-file keys replaced, re-validated (``{"operating.speed_rpm": 3000}``)."""
+    def with_changes(self, *, predict_temperatures: bool = True, **changes: Any) -> "Case":
+        """A new case with dotted case-file keys replaced, re-validated (``{"operating.speed_rpm": 3000}``);
+        ``predict_temperatures``: as :func:`case_from_document`."""
         document = _deep_copy(self.document)
         for dotted, value in changes.items():
             node = document
@@ -124,7 +125,7 @@ class Case:
             for part in parents:
                 node = node.setdefault(part, {})
             node[last] = value
-        return case_from_document(document, source=self.source)
+        return case_from_document(document, source=self.source, predict_temperatures=predict_temperatures)
 
 
 def _section_default(name: str) -> dict[str, Any]:
@@ -165,6 +166,7 @@ def cached_per_case(function):
         return entry[1]
 
     cached.cache_clear = results.clear
+    cached.cases = lambda: frozenset(results)  # the identities of the cases it holds a result for (tests)
     # called with the case: its signature is (case); the resolver of the pieces stays ``cached.__wrapped__``
     cached.__signature__ = inspect.Signature([inspect.Parameter("case", inspect.Parameter.POSITIONAL_OR_KEYWORD)])
     return cached
@@ -181,11 +183,12 @@ def parameter_set_path(name: str):
     return resources.files("thermogear.parameter_sets") / f"{name}.toml"
 
 
-def load_case(name_or_path: str | Path) -> Case:
+def load_case(name_or_path: str | Path, predict_temperatures: bool = True) -> Case:
     """Load a built-in parameter set by name (``"luo2019"``) or a TOML case file by path.
 
     Every check the model would make is made here (:func:`case_from_document`), so a case that loads is one that
-    runs; a file that is not UTF-8 text or not TOML is one CaseError, never a traceback."""
+    runs; a file that is not UTF-8 text or not TOML is one CaseError, never a traceback. ``predict_temperatures``:
+    as :func:`case_from_document`."""
     text_source = str(name_or_path)
     path = Path(name_or_path)
     if path.suffix == ".toml" or path_exists(path):
@@ -207,7 +210,8 @@ def load_case(name_or_path: str | Path) -> Case:
     except RecursionError:
         raise CaseError("case", text_source, "TOML nested a few levels deep",
                         "the file nests tables or arrays too deeply to be a case file") from None
-    return case_from_document(document, source=str(path if path_exists(path) else text_source))
+    return case_from_document(document, source=str(path if path_exists(path) else text_source),
+                              predict_temperatures=predict_temperatures)
 
 
 # --------------------------------------------------------------------------------------------- load-time checks
@@ -292,8 +296,12 @@ def _stage(section, model: CaseFile) -> GearStage:
                      roughness_ra=section.gears.roughness_ra_um * 1e-6)
 
 
-def case_from_document(document: dict[str, Any], source: str = "<memory>") -> Case:
-    """Validate a case document (the parsed TOML) and build the components."""
+def case_from_document(document: dict[str, Any], source: str = "<memory>", predict_temperatures: bool = True) -> Case:
+    """Validate a case document (the parsed TOML) and build the components.
+
+    A ``[temperature] model`` that predicts the case's temperatures when it is loaded (the gearbox network's) writes
+    them into the case unless ``predict_temperatures`` is False: the commands that report that model itself
+    (``gearbox``, ``warmup --model gearbox``) take the case before its prediction where the prediction refuses it."""
     try:
         model = CaseFile.model_validate(document)
     except pydantic.ValidationError as error:
@@ -348,30 +356,34 @@ def case_from_document(document: dict[str, Any], source: str = "<memory>") -> Ca
         dynamics=model.dynamics, fem=model.fem, source=source, document=document, housing=model.housing,
         gears_input=gears, material_input=material, notes=notes, gearbox=model.gearbox, drivetrain=model.drivetrain,
         stages=stages, helical_pair=helical if helical.helix_angle > 0.0 else None)
-    if temperature_source(case.temperature.model).predicted_at_load:  # the model's resolver (see below)
+    if predict_temperatures and temperature_source(case.temperature.model).predicted_at_load:  # its model (below)
         name = case.temperature.model
         resolver = _TEMPERATURE_MODELS.get(name) or builtin(TEMPERATURE_MODELS, name)
         if resolver is None:
             raise CaseError("temperature.model", name, "a registered model (its module is not installed)",
                             "this temperature model is predicted by a model that is not loaded")
-        case = call_with_pieces(resolver, case)
+        case = replace(case, **call_with_pieces(resolver, case))  # the parts of the case it predicts
     check_case(case)
     warn_keys_without_effect(case.thermal, case.dynamics)
     return case
 
 
 # --------------------------------------------------------------------------------------------- predicted temperatures
-CaseResolver = Callable[["Case"], "Case"]
+#: ``resolver(pieces) -> {Case field: new value}``: its parameters name pieces (thermogear.case_pieces)
+CaseResolver = Callable[..., dict[str, Any]]
 _TEMPERATURE_MODELS: dict[str, CaseResolver] = {}
 
 
 def register_temperature_model(name: str, resolver: CaseResolver) -> None:
     """Plug in a temperature model that predicts the case's temperatures at load time, selectable as
-    ``[temperature].model = name``: ``resolver(case)`` returns the case with the predicted oil and housing
-    temperatures (the built-in ones, such as the gearbox thermal model's ``"gearbox"``, are named in
-    :mod:`thermogear.composition`; one registered here takes precedence). Its gear temperatures come from the temperature provider of the same name."""
+    ``[temperature].model = name``: ``resolver(pieces)`` receives the pieces of the case its parameters name
+    (:mod:`thermogear.case_pieces`) and returns the parts of the case it predicts, ``{field: value}`` (the
+    ``lubricant`` and ``housing`` sections at the predicted oil and housing temperatures, say), which the loader
+    writes into the case (the built-in ones, such as the gearbox thermal model's ``"gearbox"``, are named in
+    :mod:`thermogear.composition`; one registered here takes precedence). Its gear temperatures come from the
+    temperature provider of the same name."""
     if not callable(resolver):
-        raise TypeError("a temperature model must be callable: resolver(case) -> Case")
+        raise TypeError("a temperature model must be callable: resolver(pieces) -> {field: value}")
     _TEMPERATURE_MODELS[name] = resolver
 
 

@@ -207,10 +207,11 @@ def evaluate_case(case, method: str = "periodic", models: tuple[str, ...] = MODE
         evaluation.temperature_field = temperature_field_from_case(case)
         thermal_mesh = MeshModel(case, "thermal")
         if uses_paper_thermal_stiffness(thermal_mesh):  # the paper's k_T curves (Fig. 4) belong to its model only
+            from thermogear.case_pieces import call_with_pieces
             from thermogear.luo2020.case_stiffness import paper_thermal_model
             from thermogear.summaries.thermal import thermal_curves, thermal_stiffness_summary
 
-            paper = paper_thermal_model(case)
+            paper = call_with_pieces(paper_thermal_model, case)
             evaluation.thermal_curves = thermal_curves(paper)
             evaluation.thermal_summary = thermal_stiffness_summary(paper, MeshModel(case, "elastic"), thermal_mesh)
             cite("timoshenko1951")

@@ -22,7 +22,6 @@ from typing import TYPE_CHECKING
 from thermogear.temperature_kinds import temperature_source
 from thermogear import warning_scope
 from thermogear.case import cached_per_case
-from thermogear.case_pieces import call_with_pieces
 from thermogear.composition import TEMPERATURE_PROVIDERS, builtin
 from thermogear.errors import ModelAssumptionWarning, ThermogearError
 from thermogear.thermal_model_rules import thermal_model_rules
@@ -36,7 +35,13 @@ from thermogear.temperature_field import (DEFAULT_LUBRICANT_DATA_MAXIMUM_C, FIT_
                                           temperature_field_from_section)
 
 if TYPE_CHECKING:
-    from thermogear.case import Case
+    from pathlib import Path
+
+    from thermogear.geometry import GearPair
+    from thermogear.lubricant import Lubricant
+    from thermogear.schema.lubricant import LubricantSection
+    from thermogear.schema.temperature import TemperatureSection
+    from thermogear.schema.thermal import ThermalSection
 
 # ------------------------------------------------------------------------------------------- case wiring
 TemperatureProvider = Callable[..., TemperatureField]  # its parameters name pieces (thermogear.case_pieces)
@@ -52,32 +57,42 @@ def register_temperature_provider(name: str, provider: TemperatureProvider) -> N
     _PROVIDERS[name] = provider
 
 
+def temperature_provider(temperature: "TemperatureSection") -> TemperatureProvider:
+    """The provider of the tooth temperatures a ``[temperature]`` section's model names (registered, else built in:
+    :data:`thermogear.composition.TEMPERATURE_PROVIDERS`); ThermogearError where none is installed. The chooser of
+    the piece ``provided_temperature_field`` (:data:`thermogear.composition.CHOSEN_PIECES`)."""
+    provider = _PROVIDERS.get(temperature.model) or builtin(TEMPERATURE_PROVIDERS, temperature.model)
+    if provider is None:
+        raise ThermogearError(f"temperature.model = '{temperature.model}': the finite-element bulk-temperature "
+                              "model is not registered (its module is not installed); use "
+                              "'uniform' or 'tabulated'")
+    return provider
+
+
 @cached_per_case
-def temperature_field_from_case(case: "Case") -> TemperatureField:
-    """Build and check the TemperatureField of a case (``[temperature]`` section). Raises CaseError for bad
-    input and ThermogearError when the ``fem`` model is asked for but not available."""
-    section = case.temperature
-    points = case.gear_pair.path_points
-    gamma_start, gamma_end = (float(case.gear_pair.gamma(points["A"])), float(case.gear_pair.gamma(points["E"])))
+def temperature_field_from_case(temperature: "TemperatureSection", gear_pair: "GearPair", directory: "Path | None",
+                                lubricant: "LubricantSection", thermal: "ThermalSection",
+                                provided_temperature_field_of: Callable[[], TemperatureField],
+                                oil_of: Callable[[], "Lubricant"]) -> TemperatureField:
+    """Build and check the TemperatureField of a case: its ``[temperature]`` section as given (files relative to
+    the case's ``directory``), else the field its model's provider gives (asked for only then). Raises CaseError
+    for bad input and ThermogearError when the ``fem`` model is asked for but not available. Called with the case
+    (``temperature_field_from_case(case)``), memoised per case (:func:`thermogear.case.cached_per_case`)."""
+    section = temperature
+    points = gear_pair.path_points
+    gamma_start, gamma_end = (float(gear_pair.gamma(points["A"])), float(gear_pair.gamma(points["E"])))
     if temperature_source(section.model).given:
-        field = temperature_field_from_section(section, case.directory)
+        field = temperature_field_from_section(section, directory)
     else:
-        provider = _PROVIDERS.get(section.model) or builtin(TEMPERATURE_PROVIDERS, section.model)
-        if provider is None:
-            raise ThermogearError(f"temperature.model = '{section.model}': the finite-element bulk-temperature "
-                                  "model is not registered (its module is not installed); use "
-                                  "'uniform' or 'tabulated'")
-        field = call_with_pieces(provider, case)  # the pieces of the case it names (thermogear.case_pieces)
+        field = provided_temperature_field_of()  # the provider, with the pieces it names (thermogear.case_pieces)
     # the highest temperature of the lubricant's viscosity data [°C]: the case's viscosity points, else the fitted
     # range of the case's oil (a built-in oil's data)
-    data_maximum_c = _viscosity_data_maximum_c(case.lubricant.viscosity_points)
+    data_maximum_c = _viscosity_data_maximum_c(lubricant.viscosity_points)
     if data_maximum_c is None:
-        from thermogear.lubricant import lubricant_from_case  # noqa: PLC0415
-
         with warning_scope.ignored(ModelAssumptionWarning):  # the lubricant model reports its own assumptions
-            data_maximum_c = float(lubricant_from_case(case).fitted_range_c[1])
+            data_maximum_c = float(oil_of().fitted_range_c[1])
     check_temperatures(field, gamma_start, gamma_end, data_maximum_c,
-                       limits=thermal_model_rules(case.thermal.model).temperature_limits)
+                       limits=thermal_model_rules(thermal.model).temperature_limits)
     return field
 
 

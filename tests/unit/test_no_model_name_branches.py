@@ -160,6 +160,7 @@ def _choice_registries() -> dict:
     (issue 33): each name is compared in its registry only, every other module asks the resolved object."""
     from thermogear.cli.warmup import WARMUP_MODELS
     from thermogear.damping import DAMPING_RULES
+    from thermogear.dynamics.damping_modes import DAMPING_MODES
     from thermogear.friction_models import FRICTION_MODELS
     from thermogear.lubrication_methods import LUBRICATION_METHODS
     from thermogear.luo2020.expansion import EXPANSION_FORMS
@@ -169,6 +170,8 @@ def _choice_registries() -> dict:
     from thermogear.gearbox.bearing_entries import BEARING_TYPES
     from thermogear.luo2020.case_inputs import LOAD_BASES
     from thermogear.sweep.evaluation_methods import EVALUATION_METHODS
+    from thermogear.sweep.load_held import HOLDS
+    from thermogear.drivetrain_choices import END_KINDS, ROTATIONS
 
     return {
         "lubrication method ([gearbox.oil] lubrication)": ("lubrication_methods.py", LUBRICATION_METHODS),
@@ -182,6 +185,10 @@ def _choice_registries() -> dict:
         "plane assumption of the FE model ([fem] plane)": ("fem/elasticity.py", PLANE_ASSUMPTIONS),
         "bore condition of the FE heat model ([fem] bore)": ("fem/tooth_heat.py", BORE_CONDITIONS),
         "bearing type of a loss entry (type)": ("gearbox/bearing_entries.py", BEARING_TYPES),
+        "mesh damping in flight ([dynamics] damping_in_flight)": ("dynamics/damping_modes.py", DAMPING_MODES),
+        "load a speed sweep holds (sweep --hold)": ("sweep/load_held.py", HOLDS),
+        "kind of a train's end ([drivetrain.driving] kind)": ("drivetrain_choices.py", END_KINDS),
+        "pinion's turning sense ([drivetrain] pinion_rotation)": ("drivetrain_choices.py", ROTATIONS),
     }
 
 
@@ -190,7 +197,9 @@ CHOICES = ("lubrication method ([gearbox.oil] lubrication)", "warm-up model (war
            "form of Eq. 9 ([thermal] expansion_model)", "friction law (friction_model)",
            "load basis of the paper's k_T ([thermal] load_basis)", "spectrum estimate (vibration --method)",
            "plane assumption of the FE model ([fem] plane)", "bore condition of the FE heat model ([fem] bore)",
-           "bearing type of a loss entry (type)")
+           "bearing type of a loss entry (type)", "mesh damping in flight ([dynamics] damping_in_flight)",
+           "load a speed sweep holds (sweep --hold)", "kind of a train's end ([drivetrain.driving] kind)",
+           "pinion's turning sense ([drivetrain] pinion_rotation)")
 
 
 @pytest.mark.parametrize("choice", CHOICES)
@@ -248,6 +257,15 @@ def test_the_schema_accepts_exactly_the_registered_choices():
     assert set(typing.get_args(ThermalSection.model_fields["load_basis"].annotation)) == set(LOAD_BASES)
     assert set(typing.get_args(FemSection.model_fields["plane"].annotation)) == set(PLANE_ASSUMPTIONS)
     assert set(typing.get_args(FemSection.model_fields["bore"].annotation)) == set(BORE_CONDITIONS)
+    from thermogear.dynamics.damping_modes import DAMPING_MODES
+    from thermogear.schema.dynamics import DynamicsSection
+
+    assert typing.get_args(DynamicsSection.model_fields["damping_in_flight"].annotation) == tuple(DAMPING_MODES)
+    from thermogear.drivetrain_choices import END_KINDS, ROTATIONS
+    from thermogear.schema.drivetrain import DrivetrainSection, EndSection
+
+    assert typing.get_args(EndSection.model_fields["kind"].annotation) == tuple(END_KINDS)
+    assert typing.get_args(DrivetrainSection.model_fields["pinion_rotation"].annotation) == tuple(ROTATIONS)
 
 
 def test_a_bearing_entry_of_each_type_is_that_type():

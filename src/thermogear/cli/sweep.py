@@ -62,6 +62,7 @@ def sweep(
     speeds (linear or backlash mesh) over any other keys, and, named with --kind warmup, a gearbox case's warm-up at
     every point; a speed sweep holds the torque (--hold power: the power)."""
     from thermogear.sweep import Study, load_study_case, run_study
+    from thermogear.sweep.load_held import DEFAULT_HOLD
     from thermogear.sweep.store import study_description
 
     from thermogear.ownership import check_figure_file, check_output_folder, exclusive_writer
@@ -94,7 +95,7 @@ def sweep(
 
         chosen = study_kind(call_with_pieces(StudySubject.of, loaded), method, kind)
         study = Study.define(loaded, definition, model=chosen_model or chosen.default_model, chunk_points=chunks,
-                             hold=hold or (stored or {}).get("hold", "torque"))
+                             hold=hold or (stored or {}).get("hold", DEFAULT_HOLD))
         warmup = None
         if (duration_s, interval_s, start_c) != (None, None, None):
             from thermogear.sweep.warmup_study import WarmupSettings

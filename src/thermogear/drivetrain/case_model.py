@@ -236,18 +236,18 @@ def _helix(helical) -> tuple[float, int]:
 
 def case_drivetrain(case, models: tuple[str, ...] = (ELASTIC, THERMAL)) -> CaseDrivetrain:
     """Build the case's drivetrain for its elastic (cold) and thermal (hot) mesh models (module docstring)."""
-    section = case.drivetrain
-    if section is None:
+    if (section := case.drivetrain) is None:
         raise CaseError("drivetrain", None, "a [drivetrain] section", "this case is the pair on rigid supports")
     points = case.dynamics.points_per_period
     mesh_models = {name: MeshModel(case, name) for name in (ELASTIC, THERMAL)}  # the simulation models
     stiffness, damping = _mean_state(mesh_models[ELASTIC], points)
-    train = stage_train(case)
-    stage_models = {name: tuple(MeshModel(stage_case, name) for stage_case in train.cases) for name in (ELASTIC, THERMAL)}
+    train = call_with_pieces(stage_train, case)  # each stage's own case below: the case with the stage's changes
+    stage_cases = tuple(replace(case, **changes) for changes in train.case_changes)
+    stage_models = {name: tuple(MeshModel(stage_case, name) for stage_case in stage_cases) for name in (ELASTIC, THERMAL)}
     cold_stages = tuple((stage.gear_pair, *_mean_state(model, points))
                         for stage, model in zip(case.stages, stage_models[ELASTIC]))
     cold = drivetrain_from_section(section, case.gear_pair, case.material, stiffness, damping, case.inertias,
-                                   cold_stages, tuple(_helix(item.helical_pair) for item in (case, *train.cases)))
+                                   cold_stages, tuple(_helix(item.helical_pair) for item in (case, *stage_cases)))
     drivetrains = {ELASTIC: cold}
     notes: list[str] = []
     warm_moduli, warm_state = None, {}

@@ -41,7 +41,7 @@ def history_forces(problem: BacklashMeshProblem, history: BacklashHistory, inclu
     total = driving.sum(axis=0) - back.sum(axis=0)
     if include_damping_force:
         damping = problem.damping[i].copy()
-        if problem.damping_mode == "in_contact":
+        if problem.damping_contact_only:
             present = np.maximum(np.sum(stiffness > 0.0, axis=0), 1)
             touching = history.driving_contacts + history.back_contacts
             damping = damping * np.minimum(1.0, touching / present)

@@ -97,7 +97,7 @@ def _kernel_arrays(problem: BacklashMeshProblem) -> tuple:
     problem.structure.require_scalar_mesh("the backlash shooting solver")
     return (problem.mass, np.ascontiguousarray(problem.nodes), problem.pair_stiffness, problem.pair_deviation,
             problem.back_pair_stiffness, problem.back_pair_deviation, problem.backlash, problem.damping,
-            problem.force_per_interval, 0 if problem.damping_mode == "always" else 1)
+            problem.force_per_interval, int(problem.damping_contact_only))
 
 
 _EMPTY_F = np.empty(0)

@@ -29,12 +29,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from thermogear.dynamics.damping_modes import DAMPING_MODES
 from thermogear.dynamics.problem import STRUCTURE_FIELDS, MeshDynamicsProblem, MeshProblemBase, checked_array
 from thermogear.errors import ProblemError
 
 __all__ = ["DAMPING_MODES", "BacklashMeshProblem"]
-
-DAMPING_MODES = ("always", "in_contact")
 
 
 @dataclass(frozen=True)
@@ -119,6 +118,12 @@ class BacklashMeshProblem(MeshProblemBase):
         self._check_face_width()
 
     # ---------------------------------------------------------------- derived quantities
+    @property
+    def damping_contact_only(self) -> bool:
+        """True where the damping acts only in proportion to the pairs in contact (its ``damping_mode``, resolved
+        by :data:`~thermogear.dynamics.damping_modes.DAMPING_MODES`)."""
+        return DAMPING_MODES[self.damping_mode].contact_only
+
     @property
     def slot_count(self) -> int:
         """Number of tooth-pair slots."""

@@ -42,7 +42,7 @@ def reference_backlash_solve_ivp(problem: BacklashMeshProblem, periods: int, ini
             k, e = problem.pair_stiffness[:, i], problem.pair_deviation[:, i]
             kb, eb = problem.back_pair_stiffness[:, i], problem.back_pair_deviation[:, i]
             c, w = problem.damping[i], problem.force_per_interval[i]
-            in_contact = problem.damping_mode == "in_contact"
+            in_contact = problem.damping_contact_only
 
             def rhs(_t, y, k=k, e=e, kb=kb, eb=eb, c=c, w=w, i=i):
                 driving = np.maximum(y[0] - e, 0.0)

@@ -101,9 +101,12 @@ def grouped_pieces(system: PiecewiseLinearSystem, samples: int,
 
 
 def _exponentials(system: PiecewiseLinearSystem, distinct: np.ndarray,
-                  operators: tuple[np.ndarray, np.ndarray] | None = None) -> np.ndarray:
+                  operators: tuple[np.ndarray, np.ndarray] | None = None, powers: bool = False):
     """(D, 2n+1, 2n+1) exponentials e^{A_j h_j} of the augmented pieces whose rows (h_j, k_j, c_j, g_j) are
-    ``distinct`` (:func:`grouped_pieces`; the routes: :func:`_piece_steps`); ``operators`` (M⁻¹, the patterns' range)."""
+    ``distinct`` (:func:`grouped_pieces`; the routes: :func:`_piece_steps`); ``operators`` (M⁻¹, the patterns' range).
+    ``powers``: for a few large pieces over commensurate durations, the powers of their common step instead
+    (:class:`~thermogear.dynamics.shared_pade.SharedPowers`, which the run route continues: no sub-step exponential
+    and its squarings formed apart)."""
     from thermogear.dynamics.batched_exponential import batched_expm, expm_of_rank_updates
 
     route = _rank_route(system, distinct, operators)
@@ -112,7 +115,7 @@ def _exponentials(system: PiecewiseLinearSystem, distinct: np.ndarray,
     inverse, full_range = operators or (_mass_inverse(system), None)
     units = _with_factors(system, distinct).augmented_stack(inverse)
     if 2 * system.size + 1 >= _SINGLE_ROUTE_SIZE:  # a few large pieces: one Padé evaluation, or each by itself
-        return _large_pieces(system, units, distinct[:, 0], inverse, full_range)
+        return _large_pieces(system, units, distinct[:, 0], inverse, full_range, powers)
     return batched_expm(units * distinct[:, :1, None])
 
 
@@ -168,13 +171,25 @@ def _transitions(system: PiecewiseLinearSystem, distinct: np.ndarray, operators,
 
 
 def _large_pieces(system: PiecewiseLinearSystem, units: np.ndarray, durations: np.ndarray, inverse: np.ndarray,
-                  full_range: np.ndarray | None) -> np.ndarray:
+                  full_range: np.ndarray | None, powers: bool = False):
     """e^{A_j τ_j} of a few large pieces (unit-width augmented ``units``, ``durations`` τ_j): over commensurate
     durations from one Padé evaluation and rank updates through the patterns' range (:mod:`~thermogear.dynamics.
-    shared_pade`), otherwise each by itself with scipy's Padé-13 scaling and squaring (Al-Mohy & Higham 2009)."""
+    shared_pade`; with ``powers`` as their :class:`~thermogear.dynamics.shared_pade.SharedPowers`), otherwise each
+    by itself with scipy's Padé-13 scaling and squaring (Al-Mohy & Higham 2009)."""
     from scipy.linalg import expm
 
-    from thermogear.dynamics.shared_pade import low_rank_piece_exponentials
+    shared = _shared_powers(system, units, durations, inverse, full_range)
+    if shared is not None:
+        return shared if powers else shared.sub_steps()
+    return np.stack([expm(matrix * duration) for matrix, duration in zip(units, durations)])
+
+
+def _shared_powers(system: PiecewiseLinearSystem, units: np.ndarray, durations: np.ndarray, inverse: np.ndarray,
+                   full_range: np.ndarray | None):
+    """The pieces' powers from one Padé evaluation (:func:`~thermogear.dynamics.shared_pade.shared_piece_powers`)
+    through the force patterns' span or, where the differences do not lie in it, the range of every pattern; None
+    where the pieces are not commensurate rank updates of each other (or there is one piece)."""
+    from thermogear.dynamics.shared_pade import shared_piece_powers
 
     n = system.size
     # the force patterns' span first (a mesh: P_K = P_C = w wᵀ, P_f = w; the differences are checked to lie in
@@ -187,10 +202,10 @@ def _large_pieces(system: PiecewiseLinearSystem, units: np.ndarray, durations: n
         left[n:2 * n] = inverse @ basis
         left_inverse = np.zeros((basis.shape[1], 2 * n + 1))
         left_inverse[:, n:2 * n] = basis.T @ system.mass
-        steps = low_rank_piece_exponentials(units, left, left_inverse, durations)
-        if steps is not None:
-            return steps
-    return np.stack([expm(matrix * duration) for matrix, duration in zip(units, durations)])
+        shared = shared_piece_powers(units, left, left_inverse, durations)
+        if shared is not None:
+            return shared
+    return None
 
 
 def piece_steps(system: PiecewiseLinearSystem, samples: int) -> tuple[np.ndarray, np.ndarray]:
@@ -280,7 +295,7 @@ def periodic_response(system: PiecewiseLinearSystem, samples_per_piece: int = 16
     starts = np.flatnonzero(np.diff(where, prepend=-1))  # runs of equal pieces
     size = 2 * system.size + 1
     if 4 * starts.size <= where.size or size > RUN_ROUTE_SIZE:
-        return PeriodicResponse(*by_runs(system, _exponentials(system, rows), where, starts, samples))
+        return PeriodicResponse(*by_runs(system, _exponentials(system, rows, powers=True), where, starts, samples))
     if rows.shape[0] * size**2 * 8 > LEAN_ROUTE_BYTES:
         return _by_chunks(system, rows, where, samples, observer)
     return _by_blocks(system, _exponentials(system, rows), where, samples)

@@ -14,65 +14,70 @@ from thermogear.errors import ModelLimitError
 __all__ = ["by_runs", "floquet", "on_reached", "reached_coordinates"]
 
 
-def by_runs(system, steps: np.ndarray, where: np.ndarray, starts: np.ndarray,
+def by_runs(system, steps, where: np.ndarray, starts: np.ndarray,
             samples: int) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """:func:`periodic_response` on runs of equal pieces (a k(τ) of a few levels on many intervals; every large
-    system). A run of L equal pieces of sub-step exponential S is S^(L·s) over its s·L sub-steps: its powers
-    S, S², S⁴, … are formed once per distinct piece by squaring (log₂(L·s) products instead of L·s − 1), the
-    monodromy is the product of one such power per run, and the sampled states of a run follow by doubling,
-    [z, Sz] → [z, Sz, S²z, S³z] → …, each step one matrix product with all states found so far (Moler & Van Loan,
-    SIAM Review 45 (2003) 3–49, §3, for the powers). Exact: only the order of the floating-point products differs
-    from the block route. The multipliers and the periodic state come from the run maps as factors
-    (:func:`~thermogear.dynamics.monodromy_range.floquet_of_maps`: on a large system from the range of the
-    monodromy, never formed)."""
+    system). ``steps``: the distinct pieces' sub-step exponentials (D, m, m), or their powers
+    (:mod:`~thermogear.dynamics.piece_powers`: each sub-step S_j = B_j^(n_j) of a common step). A run of L equal
+    pieces of s sub-steps each is B_j^(n_j·L·s): the binary powers B, B², B⁴, … are formed once per distinct piece
+    by squaring (log₂(n_j·L·s) products instead of L·s − 1), the monodromy is the product of one such power per
+    run, and the sampled states of a run follow by doubling, [z, Sz] → [z, Sz, S²z, S³z] → …, each step one matrix
+    product (n_j = 1) with all states found so far (Moler & Van Loan, SIAM Review 45 (2003) 3–49, §3, for the
+    powers). Exact: only the order of the floating-point products differs from the block route. The multipliers
+    and the periodic state come from the run maps as factors (:func:`~thermogear.dynamics.monodromy_range.
+    floquet_of_maps`: on a large system from the range of the monodromy, never formed)."""
+    from thermogear.dynamics.piece_powers import DensePowers, power_factors
+
+    powers = DensePowers(steps) if isinstance(steps, np.ndarray) else steps
     lengths = np.diff(np.append(starts, where.size)) * samples
     pieces = where[starts]
+    size = powers.power(0, 0).shape[0]
     # the range route multiplies the maps only into blocks of columns: there the highest power is left out and
     # applied twice (or three times), which costs less than its squaring (half a product against a full one)
-    lean = uses_range(steps.shape[1] - 1)
-    powers: dict[int, list[np.ndarray]] = {}
-    for piece in np.unique(pieces):
-        longest, chain = int(lengths[pieces == piece].max()), [steps[piece]]
-        while 2 ** len(chain) <= (longest // 2 if lean else longest):
-            chain.append(chain[-1] @ chain[-1])
-        powers[int(piece)] = chain
+    lean = uses_range(size - 1)
+    tops = {}
+    for piece in np.unique(pieces).tolist():
+        longest = int(powers.multiples[piece]) * int(lengths[pieces == piece].max())
+        tops[piece] = max((longest // 2 if lean else longest).bit_length() - 1, 0)
 
-    def run_factors(piece: int, count: int) -> list[np.ndarray]:
-        """Powers of the piece's step whose product (in list order, each applied after the one before) is its
-        ``count``-th power."""
-        chain = powers[piece]
-        top = len(chain) - 1
-        factors = [power for bit, power in enumerate(chain[:top]) if (count % 2 ** top) >> bit & 1]
-        return factors + [chain[top]] * (count >> top)
-
-    def run_power(piece: int, count: int) -> np.ndarray:
-        result = None
-        for bit, power in enumerate(powers[piece]):
-            if count >> bit & 1:
-                result = power if result is None else power @ result
-        return result
+    def run_map(piece: int, count: int) -> list[np.ndarray]:
+        """The run's map as factors (each applied after the one before): several on the range route, one matrix
+        otherwise."""
+        factors = power_factors(powers, piece, int(powers.multiples[piece]) * count, tops[piece])
+        if lean:
+            return factors
+        total = factors[0]
+        for factor in factors[1:]:
+            total = factor @ total
+        return [total]
 
     run_maps, cache = [], {}
     for piece, count in zip(pieces.tolist(), lengths.tolist()):
         if (piece, count) not in cache:
-            cache[(piece, count)] = run_factors(piece, count) if lean else [run_power(piece, count)]
+            cache[(piece, count)] = run_map(piece, count)
         run_maps.append(cache[(piece, count)])
     multipliers, initial = floquet_of_maps([factor for factors in run_maps for factor in factors])
-    n, size = system.size, steps.shape[1]
+    n = system.size
     states = np.empty((where.size * samples + 1, size))
     state, row = np.append(initial, 1.0), 0
     for piece, count, factors in zip(pieces.tolist(), lengths.tolist(), run_maps):
         found = state[None]
-        chain = powers[piece]
+        multiple = int(powers.multiples[piece])
         while found.shape[0] < count:  # doubling with S, S², S⁴, …, then strides of the highest power
-            level = min(int(found.shape[0]).bit_length() - 1, len(chain) - 1)
+            level = min(int(found.shape[0]).bit_length() - 1, max(tops[piece] - multiple.bit_length() + 1, 0))
             stride, first = 2 ** level, found.shape[0] - 2 ** level
-            found = np.vstack([found, found[first:first + min(stride, count - found.shape[0])] @ chain[level].T])
+            block = found[first:first + min(stride, count - found.shape[0])]
+            for factor in power_factors(powers, piece, multiple << level, tops[piece]):
+                block = block @ factor.T
+            found = np.vstack([found, block])
         states[row:row + count] = found[:count]
         row += count
         for factor in factors:
             state = factor @ state
     states[-1] = state
+    if powers.scale is not None:  # the powers' balanced coordinates: z = D z_b
+        states = states * powers.scale
+        initial = initial * powers.scale[:-1]
     offsets = np.arange(samples) / samples
     time = np.concatenate([(system.nodes[:-1, None] + np.diff(system.nodes)[:, None] * offsets).ravel(),
                            [system.period]])

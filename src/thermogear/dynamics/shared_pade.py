@@ -34,7 +34,7 @@ import math
 
 import numpy as np
 
-__all__ = ["commensurate_steps", "low_rank_piece_exponentials"]
+__all__ = ["SharedPowers", "commensurate_steps", "low_rank_piece_exponentials", "shared_piece_powers"]
 
 _THETA_13 = 5.371920351148152
 _PADE_13 = (64764752532480000.0, 32382376266240000.0, 7771770303897600.0, 1187353796428800.0, 129060195264000.0,
@@ -160,6 +160,14 @@ def low_rank_piece_exponentials(units: np.ndarray, left: np.ndarray, left_invers
     A_j − A₀ = U R_j with U = ``left`` (m, r) and R_j = ``left_inverse`` (r, m) @ (A_j − A₀) (left_inverse @ U = I);
     None where the durations are not commensurate (:func:`commensurate_steps`) or a difference does not lie in U's
     range to 1e-12 of its size (the caller then takes separate exponentials). See the module docstring."""
+    powers = shared_piece_powers(units, left, left_inverse, durations)
+    return None if powers is None else powers.sub_steps()
+
+
+def shared_piece_powers(units: np.ndarray, left: np.ndarray, left_inverse: np.ndarray,
+                        durations: np.ndarray) -> "SharedPowers | None":
+    """The powers of the pieces' common-step maps (:class:`SharedPowers`, τ_j = n_j·δ) for the arguments of
+    :func:`low_rank_piece_exponentials`, or None where it declines them."""
     from scipy.linalg import lu_factor, lu_solve, matrix_balance
 
     found = commensurate_steps(durations)
@@ -235,32 +243,58 @@ def low_rank_piece_exponentials(units: np.ndarray, left: np.ndarray, left_invers
         correction = np.linalg.solve(capacitance, projected)
         updates.append(_compressed(_Updated(np.hstack([solved_p, -solved_q]),
                                             np.vstack([numerator.right, correction])), approximant))
-    # squarings r^(2ˢ), then the squares F^(2^k) the pieces' multiples n_j need: the first piece's dense, the others
-    # as rank updates of them while their rank stays low ((B + LR)² = B² + (BL + L·RL)R + L·(RB))
-    levels = max(int(count_j).bit_length() for count_j in counts) - 1
-    current = approximant
-    squares: list[list] = [[] for _ in range(count)]
-    for level in range(squarings + levels + 1):
-        if level >= squarings:
-            for index in range(count):
-                squares[index].append(current if index == 0 else updates[index])
-        if level == squarings + levels:
-            break
-        following = current @ current
-        for index in range(1, count):
-            update = updates[index]
-            if isinstance(update, np.ndarray):
-                updates[index] = update @ update
-            else:
-                updates[index] = _compressed(update.times(update, current, current), following)
-        current = following
-    results = np.empty((count, size, size))
-    for index in range(count):
-        power = None
-        for level, square in enumerate(squares[index]):
-            if int(counts[index]) >> level & 1:
-                if isinstance(square, _Updated):
-                    square = squares[0][level] + square.left @ square.right
-                power = square if power is None else square @ power
-        results[index] = power * (scale[:, None] / scale[None, :])
-    return results
+    return SharedPowers(approximant, updates[1:], squarings, counts, scale)
+
+
+class SharedPowers:
+    """The powers B_j^(2^k) of the pieces' common-step maps B_j = e^{A_j δ} (:mod:`~thermogear.dynamics.piece_powers`),
+    in the balanced coordinates of the Padé evaluation: the first piece's dense, the others' rank updates of them
+    while their rank stays low ((B + LR)² = B² + (BL + L·RL)R + L·(RB), cut back after each squaring as the Padé
+    updates are), formed densely on request. Built from the approximants r_j of e^{A_j δ/2ˢ} by s squarings."""
+
+    def __init__(self, approximant: np.ndarray, updates: list, squarings: int, counts: np.ndarray,
+                 scale: np.ndarray):
+        self.multiples = np.asarray(counts, dtype=int)
+        self._ratio = scale[:, None] / scale[None, :]  # X = D X_b D⁻¹ (the raw LAPACK scale, powers of 2)
+        self.scale = scale / scale[-1]  # the augmented state's last entry unscaled
+        self._current, self._updates = approximant, list(updates)
+        for _ in range(squarings):
+            self._square()
+        self._dense = [self._current]
+        self._chains = [[update] for update in self._updates]
+        self._formed: dict[tuple[int, int], np.ndarray] = {}
+
+    def _square(self) -> None:
+        following = self._current @ self._current
+        for index, update in enumerate(self._updates):
+            self._updates[index] = (update @ update if isinstance(update, np.ndarray) else
+                                    _compressed(update.times(update, self._current, self._current), following))
+        self._current = following
+
+    def power(self, piece: int, level: int) -> np.ndarray:
+        """B_j^(2^level) (m, m), balanced, squared from the level below on first request."""
+        while len(self._dense) <= level:
+            self._square()
+            self._dense.append(self._current)
+            for chain, update in zip(self._chains, self._updates):
+                chain.append(update)
+        if piece == 0:
+            return self._dense[level]
+        update = self._chains[piece - 1][level]
+        if isinstance(update, np.ndarray):
+            return update
+        if (piece, level) not in self._formed:
+            self._formed[(piece, level)] = self._dense[level] + update.left @ update.right
+        return self._formed[(piece, level)]
+
+    def sub_steps(self) -> np.ndarray:
+        """S_j = B_j^(n_j) (D, m, m) in the original coordinates."""
+        results = np.empty((self.multiples.size, *self._current.shape))
+        for index, count in enumerate(self.multiples.tolist()):
+            power = None
+            for level in range(int(count).bit_length()):
+                if count >> level & 1:
+                    square = self.power(index, level)
+                    power = square if power is None else square @ power
+            results[index] = power * self._ratio
+        return results

@@ -110,6 +110,12 @@ def x_te_provider(name: str) -> XteProvider:
     return provider
 
 
+def chosen_x_te_provider(thermal: "ThermalSection") -> XteProvider:
+    """The X_te provider a ``[thermal]`` section's ``x_te_source`` names: the chooser of the piece ``provided_x_te``
+    (:data:`thermogear.composition.CHOSEN_PIECES`)."""
+    return x_te_provider(thermal.x_te_source)
+
+
 def section_x_te(section: "ThermalSection", inputs: PaperThermalInputs, temperature: Callable[[], TemperatureField],
                  provided: Callable[[], float], load_basis: str | None = None,
                  normal_load: float | None = None) -> tuple[float, str]:

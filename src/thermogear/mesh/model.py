@@ -26,7 +26,7 @@ from thermogear.friction_models import FrictionLaw, friction_law
 from thermogear.lubricant import Lubricant, lubricant_from_case
 from thermogear.mesh.helical_model import helical_model_state
 from thermogear.mesh.model_names import MODELS, Model
-from thermogear.mesh.pair_models import PairModelBase, check_model, pair_model_for
+from thermogear.mesh.pair_models import PairModelBase, check_model, pair_model_class
 from thermogear.mesh.state import MeshState
 from thermogear.mesh.table_file import mesh_table_of
 from thermogear.mesh_cycle import MeshCycle, MeshGrid, load_share_at, load_shares
@@ -73,8 +73,9 @@ class MeshModel:
     # ------------------------------------------------------------------------------------ what it is
     @cached_property
     def pair_model(self) -> PairModelBase:
-        """The pair model answering for this model (chosen once: :func:`~thermogear.mesh.pair_models.pair_model_for`)."""
-        return pair_model_for(self.case, self.model)
+        """The pair model answering for this model (chosen once, by name:
+        :func:`~thermogear.mesh.pair_models.pair_model_class`), built on the case."""
+        return pair_model_class(self.model, self.case.thermal.model)(self.case)
 
     @property
     def thermal(self) -> bool:
