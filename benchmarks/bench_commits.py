@@ -80,13 +80,14 @@ def _luo2019_thermal_problem():
 
 
 def measure_periodic_solve(quick: bool) -> dict:
-    from thermogear.dynamics.periodic import periodic_initial_state
+    from thermogear.dynamics.periodic_orbits.periodic import periodic_initial_state
 
     _, problem = _luo2019_thermal_problem()
     for _ in range(20):
         periodic_initial_state(problem)  # numba's cache, the caches of the problem
     wall, cpu = _median_times(lambda: periodic_initial_state(problem), 200 if quick else 2000)
-    return {"call": "thermogear.dynamics.periodic.periodic_initial_state(Simulation(case, 'thermal').problem)",
+    return {"call": "thermogear.dynamics.periodic_orbits.periodic.periodic_initial_state("
+                    "Simulation(case, 'thermal').problem)",
             "value": wall * 1e6, "cpu": cpu * 1e6}
 
 
@@ -112,7 +113,7 @@ def _backlash_problems(count: int):
     import numpy as np
 
     from thermogear.case import load_case
-    from thermogear.dynamics.backlash_problem import BacklashMeshProblem
+    from thermogear.dynamics.problems.backlash_problem import BacklashMeshProblem
     from thermogear.simulation import Simulation
 
     speed_rpm, backlash = 13000.0, 100e-6
@@ -123,7 +124,7 @@ def _backlash_problems(count: int):
 
 
 def measure_continuation(quick: bool) -> dict:
-    from thermogear.dynamics.backlash_continuation import follow_branch
+    from thermogear.dynamics.backlash.backlash_continuation import follow_branch
 
     count = 200 if quick else 1000
     warm_speeds, warm_problems = _backlash_problems(8)
@@ -136,7 +137,8 @@ def measure_continuation(quick: bool) -> dict:
         follow_branch(problems, "down", speeds)
 
     wall, cpu = _median_times(both_ways, 1)
-    return {"call": "thermogear.dynamics.backlash_continuation.follow_branch(problems, 'up'/'down', speeds) on "
+    return {"call": "thermogear.dynamics.backlash.backlash_continuation.follow_branch(problems, 'up'/'down', speeds) "
+                    "on "
                     "BacklashMeshProblem.from_linear(Simulation(case, 'elastic').problem, backlash)",
             "value": wall * 1000 / count, "cpu": cpu * 1000 / count, "speeds_timed": count}
 

@@ -20,7 +20,7 @@ from __future__ import annotations
 import importlib
 from collections.abc import Callable
 
-#: The derived pieces of a case a check or provider may ask for by name (:mod:`thermogear.case_pieces`): name →
+#: The derived pieces of a case a check or provider may ask for by name (:mod:`thermogear.case.pieces`): name →
 #: (its resolver, the Case field it needs: None where that section is absent, or None where every case has it).
 #: A resolver's own parameters are pieces too.
 CASE_PIECES: dict[str, tuple[str, str | None]] = {
@@ -32,7 +32,7 @@ CASE_PIECES: dict[str, tuple[str, str | None]] = {
     "paper_thermal_model": ("thermogear.luo2020.case_stiffness:paper_thermal_model", None),
 }
 
-#: The pieces of a case that a plug-in its section names provides (:mod:`thermogear.case_pieces`): name → the chooser,
+#: The pieces of a case that a plug-in its section names provides (:mod:`thermogear.case.pieces`): name → the chooser,
 #: ``chooser(pieces) -> plug-in``, which picks the plug-in from the section's name; the plug-in is then called with
 #: the pieces it names, and its answer is the piece.
 CHOSEN_PIECES: dict[str, str] = {
@@ -41,7 +41,7 @@ CHOSEN_PIECES: dict[str, str] = {
 }
 
 #: Every check and provider below receives the pieces of the case its parameters name
-#: (:func:`thermogear.case_pieces.call_with_pieces`): ``provider(fem_inputs)``, ``check(damping, oil)``.
+#: (:func:`thermogear.case.pieces.call_with_pieces`): ``provider(fem_inputs)``, ``check(damping, oil)``.
 
 #: ``[temperature] model`` name → the provider of its tooth temperature field, ``provider(pieces) -> TemperatureField``.
 TEMPERATURE_PROVIDERS: dict[str, str] = {

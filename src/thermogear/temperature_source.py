@@ -44,14 +44,14 @@ if TYPE_CHECKING:
     from thermogear.schema.thermal import ThermalSection
 
 # ------------------------------------------------------------------------------------------- case wiring
-TemperatureProvider = Callable[..., TemperatureField]  # its parameters name pieces (thermogear.case_pieces)
+TemperatureProvider = Callable[..., TemperatureField]  # its parameters name pieces (thermogear.case.pieces)
 _PROVIDERS: dict[str, TemperatureProvider] = {}
 
 
 def register_temperature_provider(name: str, provider: TemperatureProvider) -> None:
     """Plug in a temperature source selectable as ``[temperature].model = name`` (the finite-element bulk
     temperature model registers ``"fem"``). The provider receives the pieces of the case its parameters name
-    (:mod:`thermogear.case_pieces`; ``provider(case)``: the whole case) and returns a TemperatureField."""
+    (:mod:`thermogear.case.pieces`; ``provider(case)``: the whole case) and returns a TemperatureField."""
     if not callable(provider):
         raise TypeError("provider must be callable: provider(case) -> TemperatureField")
     _PROVIDERS[name] = provider
@@ -84,7 +84,7 @@ def temperature_field_from_case(temperature: "TemperatureSection", gear_pair: "G
     if temperature_source(section.model).given:
         field = temperature_field_from_section(section, directory)
     else:
-        field = provided_temperature_field_of()  # the provider, with the pieces it names (thermogear.case_pieces)
+        field = provided_temperature_field_of()  # the provider, with the pieces it names (thermogear.case.pieces)
     # the highest temperature of the lubricant's viscosity data [°C]: the case's viscosity points, else the fitted
     # range of the case's oil (a built-in oil's data)
     data_maximum_c = _viscosity_data_maximum_c(lubricant.viscosity_points)

@@ -1,5 +1,5 @@
 """Checks and providers receive the pieces of the case they name (issue 33: only resolvers and entry points take a
-whole Case): :func:`thermogear.case_pieces.call_with_pieces` hands each parameter its piece."""
+whole Case): :func:`thermogear.case.pieces.call_with_pieces` hands each parameter its piece."""
 
 from __future__ import annotations
 
@@ -7,7 +7,7 @@ import pytest
 
 from thermogear import composition
 from thermogear.case import Case, load_case
-from thermogear.case_pieces import LATER, WHOLE_CASE, call_with_pieces, piece_names
+from thermogear.case.pieces import LATER, WHOLE_CASE, call_with_pieces, piece_names
 
 PLUG_INS = [*composition.TEMPERATURE_PROVIDERS.values(), *composition.X_TE_PROVIDERS.values(),
             *composition.DRIVETRAIN_HEAT.values(), *composition.CASE_CHECKS, *composition.TEMPERATURE_MODELS.values(),

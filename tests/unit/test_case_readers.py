@@ -35,7 +35,7 @@ SOURCE = Path(__file__).resolve().parents[2] / "src" / "thermogear"
 #: are looked up by their one resolver, and preflight is asked through the Orchestrator. 35 once main's study kinds
 #: (the warm-up kind and study_kind, merged at 38) pick a case's kind from its StudySubject, resolved once. 28 once
 #: the checks and providers of thermogear.composition receive the pieces of the case they name
-#: (thermogear.case_pieces.call_with_pieces: the FE and gearbox temperature providers, the FE X_te, the network's
+#: (thermogear.case.pieces.call_with_pieces: the FE and gearbox temperature providers, the FE X_te, the network's
 #: drivetrain heat, the gearbox and damping-law checks; +1 for call_with_pieces itself), study_kind takes the
 #: StudySubject and the held load of a sweep the case's [operating] keys and operating point. 27 once the callable
 #: module thermogear.sweep forwards its arguments to thermogear.sweep.api.study (the entry point) unread. 22 once the

@@ -120,14 +120,14 @@ def test_the_scan_passes_what_the_seam_writes():
 
 #: Where the solution methods (``[dynamics] method``) and the sources of X_te (``[thermal] x_te_source``) are resolved
 #: from their names (issue 33: no method chosen by comparing a string outside one registry).
-METHOD_REGISTRIES = ("dynamics/solution_methods.py", "thermal_model_rules.py")
+METHOD_REGISTRIES = ("dynamics/problems/solution_methods.py", "thermal_model_rules.py")
 #: Comparisons with those names left on purpose: a response's kind (``metrics["response"]``: "periodic",
 #: "subharmonic", "non-periodic", "not settled") shares the word "periodic" with the method and is not a method.
 METHOD_KNOWN = {"report/evaluate.py": 1}
 
 
 def test_solution_methods_and_x_te_sources_are_compared_only_in_their_registries():
-    from thermogear.dynamics.solution_methods import SOLUTION_METHODS
+    from thermogear.dynamics.problems.solution_methods import SOLUTION_METHODS
     from thermogear.thermal_model_rules import X_TE_SOURCES
 
     names = frozenset(SOLUTION_METHODS) | frozenset(X_TE_SOURCES)
@@ -146,7 +146,7 @@ def test_solution_methods_and_x_te_sources_are_compared_only_in_their_registries
 def test_the_schema_accepts_exactly_the_registered_methods_and_x_te_sources():
     import typing
 
-    from thermogear.dynamics.solution_methods import SOLUTION_METHODS
+    from thermogear.dynamics.problems.solution_methods import SOLUTION_METHODS
     from thermogear.schema.dynamics import DynamicsSection
     from thermogear.schema.thermal import ThermalSection
     from thermogear.thermal_model_rules import X_TE_SOURCES
@@ -160,18 +160,18 @@ def _choice_registries() -> dict:
     (issue 33): each name is compared in its registry only, every other module asks the resolved object."""
     from thermogear.cli.warmup import WARMUP_MODELS
     from thermogear.damping import DAMPING_RULES
-    from thermogear.dynamics.damping_modes import DAMPING_MODES
-    from thermogear.friction_models import FRICTION_MODELS
-    from thermogear.lubrication_methods import LUBRICATION_METHODS
-    from thermogear.luo2020.expansion import EXPANSION_FORMS
+    from thermogear.drivetrain_choices import END_KINDS, ROTATIONS
+    from thermogear.dynamics.problems.damping_modes import DAMPING_MODES
     from thermogear.experiment.spectrum import SPECTRUM_METHODS
     from thermogear.fem.elasticity import PLANE_ASSUMPTIONS
     from thermogear.fem.tooth_heat import BORE_CONDITIONS
+    from thermogear.friction_models import FRICTION_MODELS
     from thermogear.gearbox.bearing_entries import BEARING_TYPES
+    from thermogear.lubrication_methods import LUBRICATION_METHODS
     from thermogear.luo2020.case_inputs import LOAD_BASES
+    from thermogear.luo2020.expansion import EXPANSION_FORMS
     from thermogear.sweep.evaluation_methods import EVALUATION_METHODS
     from thermogear.sweep.load_held import HOLDS
-    from thermogear.drivetrain_choices import END_KINDS, ROTATIONS
 
     return {
         "lubrication method ([gearbox.oil] lubrication)": ("lubrication_methods.py", LUBRICATION_METHODS),
@@ -185,7 +185,7 @@ def _choice_registries() -> dict:
         "plane assumption of the FE model ([fem] plane)": ("fem/elasticity.py", PLANE_ASSUMPTIONS),
         "bore condition of the FE heat model ([fem] bore)": ("fem/tooth_heat.py", BORE_CONDITIONS),
         "bearing type of a loss entry (type)": ("gearbox/bearing_entries.py", BEARING_TYPES),
-        "mesh damping in flight ([dynamics] damping_in_flight)": ("dynamics/damping_modes.py", DAMPING_MODES),
+        "mesh damping in flight ([dynamics] damping_in_flight)": ("dynamics/problems/damping_modes.py", DAMPING_MODES),
         "load a speed sweep holds (sweep --hold)": ("sweep/load_held.py", HOLDS),
         "kind of a train's end ([drivetrain.driving] kind)": ("drivetrain_choices.py", END_KINDS),
         "pinion's turning sense ([drivetrain] pinion_rotation)": ("drivetrain_choices.py", ROTATIONS),
@@ -257,7 +257,7 @@ def test_the_schema_accepts_exactly_the_registered_choices():
     assert set(typing.get_args(ThermalSection.model_fields["load_basis"].annotation)) == set(LOAD_BASES)
     assert set(typing.get_args(FemSection.model_fields["plane"].annotation)) == set(PLANE_ASSUMPTIONS)
     assert set(typing.get_args(FemSection.model_fields["bore"].annotation)) == set(BORE_CONDITIONS)
-    from thermogear.dynamics.damping_modes import DAMPING_MODES
+    from thermogear.dynamics.problems.damping_modes import DAMPING_MODES
     from thermogear.schema.dynamics import DynamicsSection
 
     assert typing.get_args(DynamicsSection.model_fields["damping_in_flight"].annotation) == tuple(DAMPING_MODES)

@@ -1,16 +1,17 @@
 """The periodic response of a large system (state of 401 and more): the shared Padé evaluation of its pieces and
 the range of its monodromy against the route that exponentiates each piece by itself and takes the dense monodromy
-and its eigenvalues (dynamics/periodic_ndof.py, shared_pade.py, monodromy_range.py, periodic_runs.py)."""
+and its eigenvalues (dynamics/periodic_orbits/periodic_ndof.py, shared_pade.py, monodromy_range.py,
+periodic_runs.py)."""
 
 from __future__ import annotations
 
 import numpy as np
 import pytest
 
-import thermogear.dynamics.monodromy_range as monodromy_range
-import thermogear.dynamics.periodic_runs as periodic_runs
-import thermogear.dynamics.shared_pade as shared_pade
-from thermogear.dynamics.periodic_ndof import PiecewiseLinearSystem, periodic_response
+import thermogear.dynamics.linear_algebra.monodromy_range as monodromy_range
+import thermogear.dynamics.periodic_orbits.periodic_runs as periodic_runs
+import thermogear.dynamics.linear_algebra.shared_pade as shared_pade
+from thermogear.dynamics.periodic_orbits.periodic_ndof import PiecewiseLinearSystem, periodic_response
 
 
 def _stiff_chain(size: int = 200, period: float = 1e-3, intervals: int = 2) -> PiecewiseLinearSystem:

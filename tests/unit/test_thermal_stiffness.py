@@ -8,7 +8,7 @@ import types
 import numpy as np
 import pytest
 
-from thermogear.case_pieces import call_with_pieces
+from thermogear.case.pieces import call_with_pieces
 from thermogear.errors import CaseError, ModelAssumptionWarning, ThermogearError
 from thermogear.luo2020 import calibration as calibration_module
 from thermogear.luo2020.calibration import x_te_for_drop

@@ -10,7 +10,7 @@ import warnings
 import pytest
 
 from thermogear.case import case_from_document, load_case
-from thermogear.case_pieces import call_with_pieces
+from thermogear.case.pieces import call_with_pieces
 from thermogear.luo2020.case_stiffness import paper_thermal_model
 from thermogear.mesh.model import MeshModel
 from thermogear.thermoelastic.mesh import ThermoelasticMesh

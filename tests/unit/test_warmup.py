@@ -215,7 +215,7 @@ def test_a_warm_up_state_of_the_papers_case_keeps_its_calibrated_x_te():
     # interference) keeps that X_te instead of failing to calibrate, and replaces the whole temperature section
     from thermogear.case import load_case
     from thermogear.experiment.warmup import state_case
-    from thermogear.case_pieces import call_with_pieces
+    from thermogear.case.pieces import call_with_pieces
     from thermogear.luo2020.case_stiffness import paper_thermal_model
 
     case = load_case("luo2019")
@@ -229,7 +229,7 @@ def test_both_warm_ups_hold_a_calibrated_x_te_one_way():
     # the measured and the predicted warm-up write their states each their own way (through the case file's keys,
     # through the sections) but hold the case's calibrated X_te by one rule: held_x_te
     from thermogear.case import load_case
-    from thermogear.case_pieces import call_with_pieces
+    from thermogear.case.pieces import call_with_pieces
     from thermogear.experiment.warmup import held_x_te, state_case
     from thermogear.luo2020.case_stiffness import paper_thermal_model
 

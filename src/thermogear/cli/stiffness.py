@@ -145,7 +145,7 @@ def stiffness(
         summary["helical_thermal"] = helical_stiffness_summary(MeshModel(loaded, "thermal"))
         thermal_module = None
     if thermal_module is not None:
-        from thermogear.case_pieces import call_with_pieces  # noqa: PLC0415
+        from thermogear.case.pieces import call_with_pieces  # noqa: PLC0415
         from thermogear.luo2020.case_stiffness import paper_thermal_model  # noqa: PLC0415
         from thermogear.thermoelastic.mesh import ThermoelasticMesh  # noqa: PLC0415
 

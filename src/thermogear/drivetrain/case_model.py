@@ -27,26 +27,26 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from thermogear.case_pieces import call_with_pieces
+from thermogear.case.pieces import call_with_pieces
 from thermogear.composition import DRIVETRAIN_HEAT, builtin
-from thermogear.dynamics.mesh_laws import mesh_law
-from thermogear.dynamics.periodic_solves import PeriodicSolves
 from thermogear.drivetrain.assembly import Drivetrain
 from thermogear.drivetrain.case_layout import drivetrain_from_section
 from thermogear.drivetrain.heat import ModeShifts, WarmState, thermal_mode_shifts, warm_drivetrain
-from thermogear.drivetrain.stages import stage_train
-from thermogear.drivetrain.warm_state import operating_clearances, shaft_temperatures, with_clearances
 from thermogear.drivetrain.modes import DrivetrainModes, drivetrain_modes
 from thermogear.drivetrain.response import DrivetrainResponse, drivetrain_periodic_response, drivetrain_speed_sweep
+from thermogear.drivetrain.stages import stage_train
+from thermogear.drivetrain.warm_state import operating_clearances, shaft_temperatures, with_clearances
+from thermogear.dynamics.periodic_orbits.periodic_solves import PeriodicSolves
+from thermogear.dynamics.problems.mesh_laws import mesh_law
 from thermogear.drivetrain.result_tables import (SPECTRUM_POINTS, bearing_force_summary, heat_table,  # noqa: F401
                                                  mode_table, resonance_speeds, stage_summary)
 from thermogear.drivetrain.results import (MESH_COUPLED_SHARE, MESH_DOMINATED_SHARE, DrivetrainBacklashResult,
                                            DrivetrainLinearResult, DrivetrainResults, DrivetrainTransientResult,
                                            ModeRow, bearing_forces_of, heat_rows, mode_rows, resonances_of,
                                            stage_results, unknown_bearing_forces)
-from thermogear.mesh.model_names import ELASTIC, THERMAL
 from thermogear.errors import CaseError
 from thermogear.mesh.model import MeshModel
+from thermogear.mesh.model_names import ELASTIC, THERMAL
 from thermogear.thermoelastic.materials import MODULUS_REFERENCE_C, MODULUS_TEMPERATURE_COEFFICIENTS_PER_K
 
 if TYPE_CHECKING:

@@ -3,7 +3,7 @@ estimate computed per run, and the speed-independent reduced matrices shared acr
 
 The cut-off. The response to the mesh harmonics j·f_m, j ≤ H, is carried by the modes up to the highest of them
 resonantly and by the others quasi-statically; the static corrections of the basis
-(:mod:`thermogear.dynamics.modal_reduction`) keep every interval's quasi-static response exact, so what a cut-off
+(:mod:`thermogear.dynamics.modes.modal_reduction`) keep every interval's quasi-static response exact, so what a cut-off
 f_c loses is the dynamic part of the modes above it, a mode at f_i answering a harmonic at f with the dynamic
 amplification 1/(1 − (f/f_i)²) of an undamped oscillator, i.e. (f/f_i)² beyond its static response (Craig & Kurdila,
 Fundamentals of Structural Dynamics, 2nd ed. 2006, §14.6, the mode-acceleration method). With f_c =
@@ -36,7 +36,7 @@ import numpy as np
 from thermogear.drivetrain.assembly import AssembledDrivetrain
 from thermogear.drivetrain.response import DrivetrainResponse, _as_train, _grid, _periodic_system, _response
 from thermogear.drivetrain.static_state import mesh_torque_forces
-from thermogear.dynamics.periodic_ndof import PiecewiseLinearSystem
+from thermogear.dynamics.periodic_orbits.periodic_ndof import PiecewiseLinearSystem
 from thermogear.errors import CaseError
 from thermogear.mesh.state import MeshState
 
@@ -114,7 +114,7 @@ class _SharedReduction:
 
     @classmethod
     def build(cls, assembled: AssembledDrivetrain, system: PiecewiseLinearSystem, reduction, cutoff: float):
-        from thermogear.dynamics.modal_reduction import modal_basis
+        from thermogear.dynamics.modes.modal_reduction import modal_basis
 
         basis = modal_basis(system, 2.0 * math.pi * cutoff)
         transform = reduction.basis @ basis.basis

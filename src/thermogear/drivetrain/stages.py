@@ -14,7 +14,7 @@ from dataclasses import dataclass, replace
 from fractions import Fraction
 from typing import TYPE_CHECKING, Any
 
-from thermogear.case_geometry import helical_pair_of
+from thermogear.case.gears import helical_pair_of
 from thermogear.drivetrain.train import common_period_repeats
 from thermogear.schema.drivetrain_topology import shaft_speed_ratios
 

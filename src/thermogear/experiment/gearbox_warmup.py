@@ -23,16 +23,16 @@ import math
 from dataclasses import dataclass, replace
 from typing import Any, Callable
 
-from thermogear.case_pieces import call_with_pieces
-from thermogear.dynamics.mesh_laws import mesh_law
+from thermogear.case.pieces import call_with_pieces
+from thermogear.dynamics.problems.mesh_laws import mesh_law
 from thermogear.errors import CaseError
 from thermogear.gearbox.backlash import ColdStart, cold_start_backlash
 from thermogear.gearbox.case_model import (PredictedTemperatureError, gearbox_model_from_case,
                                           gearbox_operating_point, gearbox_section)
+from thermogear.experiment.warmup import held_x_te
 from thermogear.gearbox.description import OilConditioning
 from thermogear.gearbox.losses import NODES
 from thermogear.gearbox.model import COLDEST_START_C, GearboxThermalModel, WarmUpHistory
-from thermogear.experiment.warmup import held_x_te
 from thermogear.schema.temperature import TemperatureSection
 from thermogear.temperature_limits import FLAG_MEANINGS, MATERIAL_MAXIMUM_C
 from thermogear.thermal_model_rules import thermal_model_rules
@@ -165,8 +165,8 @@ def _periodic_kv(sim, previous: tuple[float, float] | None) -> tuple[float, tupl
     dynamics = sim.case.dynamics
     if not mesh_law(dynamics.mesh).backlash:
         return float(sim.solve(method="periodic").metrics["kv"]), None
-    from thermogear.dynamics.backlash_metrics import orbit_metrics  # noqa: PLC0415
-    from thermogear.dynamics.backlash_periodic import periodic_response  # noqa: PLC0415
+    from thermogear.dynamics.backlash.backlash_metrics import orbit_metrics  # noqa: PLC0415
+    from thermogear.dynamics.backlash.backlash_periodic import periodic_response  # noqa: PLC0415
 
     orbit = periodic_response(sim.state.backlash_problem(dynamics.damping_in_flight), initial_state=previous,
                               samples_per_interval=dynamics.samples_per_interval)

@@ -206,7 +206,7 @@ class WarmupResult:
 
 def held_x_te(thermal: "ThermalSection", paper_thermal_model_of: Callable[[], Any]) -> dict[str, Any]:
     """The ``[thermal]`` keys that hold a case's calibrated X_te through a warm-up (the pieces of the case it reads,
-    :mod:`thermogear.case_pieces`): the paper's X_te is calibrated once, at the case's own temperatures, and held,
+    :mod:`thermogear.case.pieces`): the paper's X_te is calibrated once, at the case's own temperatures, and held,
     since a state near the assembly temperature has no thermal interference to calibrate against. None (``{}``)
     where the case's thermal model reads no X_te or its X_te is not calibrated. Both warm-ups' states hold it so."""
     if not (thermal_model_rules(thermal.model).reads_x_te and x_te_source(thermal.x_te_source).calibrated):
@@ -220,7 +220,7 @@ def state_case(case, temperature_c: float, speed_rpm: float | None = None):
     through the case file's keys, so checked as a loaded case is, with its calibrated X_te held (:func:`held_x_te`).
 
     A resolver: it writes a new case from the case's own keys, so it takes the whole case."""
-    from thermogear.case_pieces import call_with_pieces  # noqa: PLC0415
+    from thermogear.case.pieces import call_with_pieces  # noqa: PLC0415
 
     # the whole [temperature] section is replaced: a uniform field takes no flank table, base or bore temperatures
     section = {"model": "uniform", "bulk_c": float(temperature_c), "reference_c": case.temperature.reference_c}

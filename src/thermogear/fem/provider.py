@@ -3,7 +3,7 @@
 
 The thermal chain finds these two functions by name (:mod:`thermogear.composition`); importing this module
 registers nothing. Both answers come from one memoised :func:`thermogear.fem.verification.cached_analysis` per case
-document. Each asks for the piece ``fem_inputs`` of the case (:mod:`thermogear.case_pieces`): the FE inputs its one
+document. Each asks for the piece ``fem_inputs`` of the case (:mod:`thermogear.case.pieces`): the FE inputs its one
 resolver, :func:`thermogear.fem.inputs.fem_inputs`, makes of the case.
 """
 

@@ -64,7 +64,7 @@ def check_gearbox_section(gearbox_model: "GearboxThermalModel | None") -> None:
     """Load-time check of a ``[gearbox]`` section under any temperature model: the description builds.
 
     A load-time check (:data:`thermogear.composition.CASE_CHECKS`) whose work is done by asking for the piece
-    ``gearbox_model`` (:mod:`thermogear.case_pieces`): resolving it builds the case's description (memoised: every
+    ``gearbox_model`` (:mod:`thermogear.case.pieces`): resolving it builds the case's description (memoised: every
     later stage asks for this one), None for a case without ``[gearbox]``."""
 
 

@@ -29,14 +29,14 @@ if TYPE_CHECKING:
     from thermogear.case import Case
     from thermogear.schema.thermal import ThermalSection
 
-XteProvider = Callable[..., float]  # its parameters name pieces of the case (thermogear.case_pieces)
+XteProvider = Callable[..., float]  # its parameters name pieces of the case (thermogear.case.pieces)
 _PROVIDERS: dict[str, XteProvider] = {}
 
 
 def register_x_te_provider(name: str, provider: XteProvider) -> None:
     """Plug in an X_te source selectable as ``[thermal].x_te_source = name`` (the FE thermo-elastic analysis
     registers ``"fem"``). The provider receives the pieces of the case its parameters name
-    (:mod:`thermogear.case_pieces`; ``provider(case)``: the whole case) and returns X_te ≥ 0."""
+    (:mod:`thermogear.case.pieces`; ``provider(case)``: the whole case) and returns X_te ≥ 0."""
     if not callable(provider):
         raise TypeError("provider must be callable: provider(case) -> float")
     _PROVIDERS[name] = provider

@@ -166,7 +166,7 @@ def paper_thermal_memo() -> dict:
 def paper_thermal_model(gear_pair: "GearPair", material: "Material", thermal: "ThermalSection", normal_load: float,
                         temperature_field_of: Callable[[], TemperatureField], provided_x_te_of: Callable[[], float],
                         paper_thermal_memo: dict) -> PaperThermalModel:
-    """The paper's k_T model of a case, from the pieces it reads (:mod:`thermogear.case_pieces`; called with the
+    """The paper's k_T model of a case, from the pieces it reads (:mod:`thermogear.case.pieces`; called with the
     case as ``call_with_pieces(paper_thermal_model, case)``): the gear pair, material, ``[thermal]`` section and
     normal load [N], the temperature field and the provider's X_te, each asked for when first needed, and the
     case's memo of what is computed once per case (a model is cheap to build, its memo is shared)."""

@@ -339,7 +339,7 @@ def check_damping_friction_law(damping: "DampingSection", oil: "Lubricant") -> N
     case's ``oil`` (or the case gives ``damping.lubricant_factor``); CaseError naming the key otherwise.
 
     A load-time check (:data:`thermogear.composition.CASE_CHECKS`): it receives these pieces of the case
-    (:mod:`thermogear.case_pieces`)."""
+    (:mod:`thermogear.case.pieces`)."""
     law = friction_law(damping.friction_model, key="damping.friction_model")
     law.lubricant_factor(oil.base_oil, damping.lubricant_factor, key="damping.lubricant_factor")
 

@@ -30,13 +30,13 @@ from typing import TYPE_CHECKING, Any, ClassVar, Protocol
 
 import numpy as np
 
-from thermogear.dynamics.mesh_laws import mesh_law
+from thermogear.case.pieces import call_with_pieces
+from thermogear.dynamics.problems.mesh_laws import mesh_law
 from thermogear.errors import CaseError
+from thermogear.luo2020.case_stiffness import paper_thermal_model
 from thermogear.mesh.model_names import MODELS, THERMAL
 from thermogear.mesh.secant_checks import secant_stiffness_drop_flag, secant_stiffness_in_nonlinear_mesh
 from thermogear.stiffness.table import pair_stiffness_at
-from thermogear.case_pieces import call_with_pieces
-from thermogear.luo2020.case_stiffness import paper_thermal_model
 from thermogear.temperature_source import TemperatureField, temperature_field_from_case
 from thermogear.thermal_model_rules import LUO2020_RULES, THERMOELASTIC_RULES, ThermalModelRules
 from thermogear.thermoelastic.mesh import ThermoelasticMesh

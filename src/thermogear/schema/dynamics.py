@@ -6,7 +6,7 @@ from typing import Annotated, Literal
 
 from pydantic import Field, model_validator
 
-from thermogear.dynamics.solution_methods import solution_method
+from thermogear.dynamics.problems.solution_methods import solution_method
 from thermogear.errors import CaseError
 
 from thermogear.schema.base import Section

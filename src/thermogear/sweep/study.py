@@ -371,7 +371,7 @@ def load_study_case(name_or_path: str | Path):
     except RecursionError:
         raise CaseError("case", str(path), "TOML nested a few levels deep",
                         "the file nests tables or arrays too deeply to be a case file") from None
-    from thermogear.case_errors import case_error_from_validation
+    from thermogear.case.errors import case_error_from_validation
     from thermogear.schema import CaseFile
 
     try:  # the whole file as `check` validates it: a bad [sweep] table gets check's message (check = sweep)
