@@ -46,7 +46,7 @@ def thread_cpu() -> dict[str, float]:
         except OSError:  # the thread ended meanwhile
             continue
         name = names.get(int(task), "other")
-        if name.startswith(("Dask-Default-Threads", "0-Dask", "1-Dask")) or "Dask-Default-Threads" in name:
+        if "Dask-Default-Threads" in name:  # the worker's task thread
             name = "tasks"
         result[name] = result.get(name, 0.0) + (int(fields[11]) + int(fields[12])) / ticks  # utime + stime
     return result
@@ -87,8 +87,9 @@ def main() -> None:
     ambient = gearbox_operating_point(case.operating_point, case.gearbox).ambient_c
     speeds, torques = np.linspace(300.0, 3000.0, size), np.linspace(10.0, 200.0, size)
     blocks = _blocks((size, size), chunk_points)
+    settings = "quiet" if executor.QUIET_LOCAL_CLUSTER else "defaults"
     print(f"gearbox grid {size} x {size} = {size * size} points, {len(blocks)} tasks of up to {chunk_points} points, "
-          f"load {os.getloadavg()[0]:.1f}, Dask settings: {'defaults' if not executor.QUIET_LOCAL_CLUSTER else 'quiet'}")
+          f"load {os.getloadavg()[0]:.1f}, Dask settings: {settings}")
     solve_grid(model, speeds[:1], torques[:1], ambient)  # the serial run's imports, as in the benchmark
     cpu = time.process_time()
     solve_grid(model, speeds, torques, ambient)
