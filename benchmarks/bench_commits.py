@@ -94,7 +94,7 @@ def _imported(name: str, *modules: str):
 
 def measure_periodic_solve(quick: bool) -> dict:
     periodic_initial_state = _imported("periodic_initial_state", "thermogear.dynamics.periodic_orbits.periodic",
-                                       "thermogear.dynamics.periodic")
+                                       "thermogear.dynamics.periodic_orbits.periodic")
 
     _, problem = _luo2019_thermal_problem()
     for _ in range(20):
@@ -130,7 +130,7 @@ def _backlash_problems(count: int):
     from thermogear.simulation import Simulation
 
     BacklashMeshProblem = _imported("BacklashMeshProblem", "thermogear.dynamics.problems.backlash_problem",
-                                    "thermogear.dynamics.backlash_problem")
+                                    "thermogear.dynamics.problems.backlash_problem")
 
     speed_rpm, backlash = 13000.0, 100e-6
     case = load_case("luo2019").with_changes(**{"operating.speed_rpm": speed_rpm})
@@ -141,7 +141,7 @@ def _backlash_problems(count: int):
 
 def measure_continuation(quick: bool) -> dict:
     follow_branch = _imported("follow_branch", "thermogear.dynamics.backlash.backlash_continuation",
-                              "thermogear.dynamics.backlash_continuation")
+                              "thermogear.dynamics.backlash.backlash_continuation")
 
     count = 200 if quick else 1000
     warm_speeds, warm_problems = _backlash_problems(8)

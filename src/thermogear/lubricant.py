@@ -11,15 +11,14 @@ ISO/TR 13989-1 (recalled, not checked against the standard's text).
 
 from __future__ import annotations
 
+import threading
 import warnings
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Sequence
 
 import numpy as np
 
-from thermogear.case import cached_per_case
 from thermogear.errors import CaseError, ExtrapolationWarning, ModelAssumptionWarning, closest_key
-from thermogear.schema.lubricant import check_viscosity_points
 
 if TYPE_CHECKING:  # pragma: no cover
     from thermogear.schema.lubricant import LubricantSection
@@ -52,6 +51,8 @@ def walther_constants(points_c_cst: Sequence[Sequence[float]], key: str = "lubri
     Raises CaseError (naming ``key``) for fewer than two points, repeated temperatures, viscosities below the
     law's range, or a viscosity that does not fall as the temperature rises.
     """
+    from thermogear.schema.lubricant import check_viscosity_points  # noqa: PLC0415  (the schema: pydantic)
+
     temperature_c, viscosity = check_viscosity_points(points_c_cst, key)
     x = np.log10(temperature_c + KELVIN)
     y = np.log10(np.log10(viscosity + WALTHER_OFFSET_CST))
@@ -205,8 +206,7 @@ def builtin_lubricant(name: str) -> Lubricant:
                                  key=f"lubricants/oils.toml:{name}.viscosity_points")
 
 
-@cached_per_case
-def lubricant_from_case(lubricant: "LubricantSection", source: str) -> Lubricant:
+def _lubricant_from_pieces(lubricant: "LubricantSection", source: str) -> Lubricant:
     """The oil a case selects (its ``[lubricant]`` section; ``source``: the case file or parameter set, named in the
     oil's source): a built-in one (optionally with the case's density or
     base oil), or its own ``viscosity_points``. Called with the case (``lubricant_from_case(case)``, memoised per
@@ -236,6 +236,26 @@ def lubricant_from_case(lubricant: "LubricantSection", source: str) -> Lubricant
                                  density_coefficient=section.density_coefficient_per_k,
                                  base_oil=section.base_oil or "mineral",
                                  source=f"case file {source} [lubricant]")
+
+
+_RESOLVER_LOCK = threading.Lock()
+
+
+def __getattr__(name: str):
+    """``lubricant_from_case`` (:func:`_lubricant_from_pieces` memoised per case by
+    :func:`thermogear.case.cached_per_case`), made when first asked for: thermogear.case imports the case schema
+    (pydantic), 0.5 s of CPU that a study's worker process, which only evaluates the oil it was sent in a model,
+    need not pay."""
+    if name != "lubricant_from_case":
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    with _RESOLVER_LOCK:
+        if name not in globals():
+            from thermogear.case import cached_per_case  # noqa: PLC0415
+
+            resolver = cached_per_case(_lubricant_from_pieces)
+            resolver.__name__ = resolver.__qualname__ = name
+            globals()[name] = resolver
+    return globals()[name]
 
 
 __all__ = ["BASE_OIL_DENSITY", "LUBRICANT_FACTORS", "Lubricant", "builtin_lubricant", "builtin_lubricant_names",

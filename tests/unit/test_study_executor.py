@@ -43,3 +43,29 @@ def test_options_a_scheduler_cannot_act_on_are_refused():
         execute(_step, 1, [1], lambda index, result: None, "serial", workers=2)
     with pytest.raises(CaseError, match="no scheduler answers"):
         check_scheduler_address("tcp://127.0.0.1:1", timeout=2.0)
+
+
+def _settings(names: tuple[str, ...]) -> list:
+    import dask
+
+    return [dask.config.get(name) for name in names]
+
+
+def test_a_study_s_local_cluster_runs_dask_s_background_work_less_often_in_every_process_and_only_there():
+    """Without a dashboard, the quiet settings reach the worker processes (their nannies hand over the settings
+    of their creation) and the scheduler in this process, and the settings of this process are back afterwards."""
+    import dask
+    import distributed  # noqa: F401  (its settings join Dask's on import)
+
+    from thermogear.sweep.executor import QUIET_LOCAL_CLUSTER, _client
+
+    names = tuple(QUIET_LOCAL_CLUSTER)
+    before = _settings(names)
+    assert before != list(QUIET_LOCAL_CLUSTER.values())  # Dask's defaults differ, else the test shows nothing
+    with _client("processes", 1, None) as client:
+        assert list(client.run(_settings, names).values()) == [list(QUIET_LOCAL_CLUSTER.values())]
+        scheduler = client.cluster.scheduler
+        assert scheduler.periodic_callbacks["monitor"].callback_time == 5000  # [ms]
+        assert scheduler.periodic_callbacks["tick"].callback_time == 1000  # [ms]
+    assert _settings(names) == before
+    assert dask.config.get("distributed.worker.profile.enabled") is True

@@ -19,7 +19,6 @@ import numpy as np
 from thermogear.gearbox.losses import NODES
 from thermogear.gearbox.sweep import OUTPUTS, check_grid, grid_result, solve_grid, warn_oil_range
 from thermogear.temperature.limits import FLAG_MEANINGS
-from thermogear.sweep.study import _chunk_shape
 
 __all__ = ["DEFAULT_GRID_CHUNK_POINTS", "GridRun", "gearbox_grid_layout", "run_gearbox_grid"]
 
@@ -50,6 +49,10 @@ class GridRun:
 
 
 def _blocks(shape: tuple[int, int], chunk_points: int) -> list[tuple[slice, slice]]:
+    # the driver's planning: thermogear.sweep.study imports the case schema, which a worker running solve_block
+    # (it imports this module) need not load
+    from thermogear.sweep.study import _chunk_shape
+
     chunk = _chunk_shape(shape, chunk_points)
     return [(slice(i, min(i + chunk[0], shape[0])), slice(j, min(j + chunk[1], shape[1])))
             for i in range(0, shape[0], chunk[0]) for j in range(0, shape[1], chunk[1])]
@@ -74,7 +77,7 @@ def gearbox_grid_layout(model, speeds: np.ndarray, torques: np.ndarray, ambient_
     torque of a runaway point and the plausibility flags."""
     import json
 
-    from thermogear.sweep.study import case_fingerprint
+    from thermogear.sweep.study import _chunk_shape, case_fingerprint
     from thermogear.sweep.task_store import StoreLayout, StoreVariable
 
     variables = [StoreVariable(f"temperature_{name}", _DIMS, "float", "degC", f"steady temperature of the {name}")
