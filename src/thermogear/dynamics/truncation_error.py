@@ -136,18 +136,34 @@ def truncation_error(system: PiecewiseLinearSystem, basis: ModalBasis, modes: Me
 
 def _piecewise_linear_transform(time: np.ndarray, start: np.ndarray, end: np.ndarray, omega: np.ndarray,
                                 scale: float) -> np.ndarray:
-    """scale·∫ x(t) e^{−iωt} dt (H, P) of x linear on each segment [t_s, t_s+1] from ``start`` to ``end`` (S − 1, P)
-    (Filon's rule of degree one: each segment's integral exact; a segment of zero width adds nothing)."""
+    """scale·∫ x(t) e^{−iωt} dt (H, P) over one period of x linear on each segment [t_s, t_s+1] from ``start`` to
+    ``end`` (S − 1, P), ``omega`` the harmonics h·ω₁ of the period (Filon's rule of degree one: each segment's
+    integral exact; a segment of zero width adds nothing). Integrated by parts over the periodic x, only its jumps
+    J_k and its slope's changes β_k at the samples remain: ∫ = Σ_k e^{−iωt_k} (J_k/(iω) + β_k/ω²) for ω > 0, the
+    powers e^{−ihω₁t_k} formed by repeated products (no exponential per harmonic)."""
     width = np.diff(time)
+    end = np.where(width[:, None] > 0.0, end, start)  # a segment of zero width: no jump inside it
     result = np.zeros((omega.size, start.shape[1]), dtype=complex)
     result[0] = scale * (0.5 * width) @ (start + end)
+    if omega.size == 1:
+        return result
     slope = np.divide(end - start, width[:, None], out=np.zeros_like(start), where=width[:, None] > 0.0)
-    for first in range(1, omega.size, _HARMONICS_PER_BLOCK):  # blocks of harmonics: (block, S − 1) arrays
-        frequency = omega[first:first + _HARMONICS_PER_BLOCK, None]
-        left, right = np.exp(-1j * frequency * time[None, :-1]), np.exp(-1j * frequency * time[None, 1:])
-        constant = (left - right) / (1j * frequency)  # ∫ e^{−iωt} over each segment
-        linear = -width * right / (1j * frequency) + (right - left) / frequency**2  # ∫ (t − t_s) e^{−iωt}
-        result[first:first + _HARMONICS_PER_BLOCK] = scale * (constant @ start + linear @ slope)
+    count = start.shape[1]
+    jumps = np.hstack([start - np.roll(end, 1, axis=0),  # at t_k (k = 0: the period's end folded onto its start)
+                       np.roll(slope, 1, axis=0) - slope]).astype(complex)  # (S − 1, 2P): J_k, β_k
+    step = np.exp(-1j * omega[1] * time[:-1])  # e^{−iω₁t_k}
+    powers = np.empty((_HARMONICS_PER_BLOCK, step.size), dtype=complex)
+    powers[-1] = 1.0
+    for first in range(1, omega.size, _HARMONICS_PER_BLOCK):
+        rows = min(_HARMONICS_PER_BLOCK, omega.size - first)
+        np.multiply(powers[-1], step, out=powers[0])
+        for row in range(1, rows):  # e^{−ihω₁t_k} = e^{−i(h−1)ω₁t_k}·e^{−iω₁t_k}
+            np.multiply(powers[row - 1], step, out=powers[row])
+        if rows < _HARMONICS_PER_BLOCK:
+            powers = powers[:rows]
+        sums = powers @ jumps
+        frequency = omega[first:first + rows, None]
+        result[first:first + rows] = scale * (sums[:, :count] / (1j * frequency) + sums[:, count:] / frequency**2)
     return result
 
 
