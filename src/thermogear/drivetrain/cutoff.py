@@ -19,7 +19,7 @@ Dynamics, 2nd ed. 2006, §14.6 mode acceleration; §10.2 modal frequency respons
 feedback (through the mesh's variation and the damping coupling into the modes below f_c, which a resonance there
 amplifies) completes it. Its largest DTE and bearing-force deviation over the period, relative to the DTE's
 peak-to-peak and the largest bearing-force peak-to-peak, is the :class:`CutoffError`. Against the true error (the
-response on every mode, tests/unit/test_cutoff_truncation_estimate.py) it is within 0.85–1.15× on the test cases;
+response on every mode, tests/unit/test_cutoff_truncation_estimate.py) it is within 0.81–1.12× on the test cases;
 without the damping coupling it was 2.5× low on ``fzg_rig_type_c``. An estimate, not a bound: it is first order in
 the error and takes each mode's own damping as modal.
 
