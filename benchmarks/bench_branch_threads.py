@@ -52,7 +52,7 @@ def _pairs(serial, threaded, repeat: int) -> dict:
 def main(quick: bool = False) -> dict:
     warnings.simplefilter("ignore")
     from thermogear.case import load_case
-    from thermogear.dynamics.backlash_periodic import backlash_flow
+    from thermogear.dynamics.backlash.backlash_periodic import backlash_flow
     from thermogear.mesh.model import MeshModel
     from thermogear.sweep import Study, branch_study
 

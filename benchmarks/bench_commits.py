@@ -79,14 +79,29 @@ def _luo2019_thermal_problem():
     return case, Simulation(case, "thermal").problem
 
 
+def _imported(name: str, *modules: str):
+    """``name`` from the first of ``modules`` this tree has (a module that moved between the trees: issue 33 split
+    thermogear.dynamics into subpackages)."""
+    import importlib
+
+    for module in modules:
+        try:
+            return getattr(importlib.import_module(module), name)
+        except ImportError:
+            continue
+    raise ImportError(f"{name} in none of {modules}")
+
+
 def measure_periodic_solve(quick: bool) -> dict:
-    from thermogear.dynamics.periodic import periodic_initial_state
+    periodic_initial_state = _imported("periodic_initial_state", "thermogear.dynamics.periodic_orbits.periodic",
+                                       "thermogear.dynamics.periodic")
 
     _, problem = _luo2019_thermal_problem()
     for _ in range(20):
         periodic_initial_state(problem)  # numba's cache, the caches of the problem
     wall, cpu = _median_times(lambda: periodic_initial_state(problem), 200 if quick else 2000)
-    return {"call": "thermogear.dynamics.periodic.periodic_initial_state(Simulation(case, 'thermal').problem)",
+    return {"call": "thermogear.dynamics.periodic_orbits.periodic.periodic_initial_state("
+                    "Simulation(case, 'thermal').problem)",
             "value": wall * 1e6, "cpu": cpu * 1e6}
 
 
@@ -112,8 +127,10 @@ def _backlash_problems(count: int):
     import numpy as np
 
     from thermogear.case import load_case
-    from thermogear.dynamics.backlash_problem import BacklashMeshProblem
     from thermogear.simulation import Simulation
+
+    BacklashMeshProblem = _imported("BacklashMeshProblem", "thermogear.dynamics.problems.backlash_problem",
+                                    "thermogear.dynamics.backlash_problem")
 
     speed_rpm, backlash = 13000.0, 100e-6
     case = load_case("luo2019").with_changes(**{"operating.speed_rpm": speed_rpm})
@@ -123,7 +140,8 @@ def _backlash_problems(count: int):
 
 
 def measure_continuation(quick: bool) -> dict:
-    from thermogear.dynamics.backlash_continuation import follow_branch
+    follow_branch = _imported("follow_branch", "thermogear.dynamics.backlash.backlash_continuation",
+                              "thermogear.dynamics.backlash_continuation")
 
     count = 200 if quick else 1000
     warm_speeds, warm_problems = _backlash_problems(8)
@@ -136,7 +154,8 @@ def measure_continuation(quick: bool) -> dict:
         follow_branch(problems, "down", speeds)
 
     wall, cpu = _median_times(both_ways, 1)
-    return {"call": "thermogear.dynamics.backlash_continuation.follow_branch(problems, 'up'/'down', speeds) on "
+    return {"call": "thermogear.dynamics.backlash.backlash_continuation.follow_branch(problems, 'up'/'down', speeds) "
+                    "on "
                     "BacklashMeshProblem.from_linear(Simulation(case, 'elastic').problem, backlash)",
             "value": wall * 1000 / count, "cpu": cpu * 1000 / count, "speeds_timed": count}
 

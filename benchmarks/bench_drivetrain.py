@@ -13,8 +13,8 @@ Figures:
    augmented expm, 8 samples per piece, bearing forces, metrics) in ms per speed, against ``solve_ivp`` (DOP853,
    restarted at every node) run from rest on the same reduced system for as many periods as it needs to agree with
    the periodic state to 1e-6 relative (the count is measured).
-   The Newmark average-acceleration reference (``dynamics/newmark.py``, 64 steps per piece) run from rest to a
-   steady state (period ends agreeing to 1e-6) on the same system is a second baseline; its distance to the exact
+   The Newmark average-acceleration reference (``dynamics/transients/newmark.py``, 64 steps per piece) run from rest to
+   a steady state (period ends agreeing to 1e-6) on the same system is a second baseline; its distance to the exact
    orbit is printed.
 3. the same drivetrain fed by the luo2019 thermal mesh state (1024 grid intervals, as many pieces, 1024 distinct
    stiffnesses: the thermal k(τ) varies along the path): ms per speed on every DOF, and reduced to the excited modes
@@ -62,7 +62,7 @@ SWEEP_SAMPLE = 40
 def old_route():
     """Every piece's exponential by the full Taylor polynomial, as before the rank-update exponentials (the
     dispatch threshold raised past any piece count)."""
-    import thermogear.dynamics.periodic_ndof as periodic_ndof
+    import thermogear.dynamics.periodic_orbits.periodic_ndof as periodic_ndof
 
     saved = periodic_ndof._RANK_ROUTE_PIECES
     periodic_ndof._RANK_ROUTE_PIECES = sys.maxsize
@@ -173,8 +173,8 @@ def main(quick: bool = False) -> dict:
 
     from thermogear.drivetrain.modes import drivetrain_modes
     from thermogear.drivetrain.response import drivetrain_periodic_response, drivetrain_periodic_system
-    from thermogear.dynamics.periodic import periodic_steady_state
-    from thermogear.dynamics.periodic_ndof import periodic_response
+    from thermogear.dynamics.periodic_orbits.periodic import periodic_steady_state
+    from thermogear.dynamics.periodic_orbits.periodic_ndof import periodic_response
 
     figures = []
     # ---------------------------------------------------------------- 1. modes of ~100 DOF
@@ -200,7 +200,7 @@ def main(quick: bool = False) -> dict:
                             f"rest to 1e-6 ({periods} periods)",
                     "value": response_ms, "baseline": ivp_s * 1e3, "unit": "ms per speed",
                     "ratio": ivp_s * 1e3 / response_ms})
-    from thermogear.dynamics.newmark import newmark_steady_state
+    from thermogear.dynamics.transients.newmark import newmark_steady_state
 
     start = time.perf_counter()
     newmark = newmark_steady_state(system, steps_per_piece=64, tolerance=TOLERANCE)

@@ -49,7 +49,7 @@ def _periods_to_converge(problem, orbit, history) -> int:
 
 def _stage_times(case, repeat: int) -> dict[str, float]:
     """Median time [s] of each stage of one operating point, caches of the chain warm (as in a loop)."""
-    from thermogear.dynamics.periodic import periodic_steady_state
+    from thermogear.dynamics.periodic_orbits.periodic import periodic_steady_state
     from thermogear.dynamics.response import response_from_orbit
     from thermogear.simulation import Simulation
 
@@ -87,9 +87,9 @@ def main(quick: bool = False) -> dict:
     from thermogear.case import load_case
     from thermogear.dynamics import (periodic_steady_state, reference_solve_ivp, transient_from_rest,
                                      transient_python)
-    from thermogear.dynamics.periodic import periodic_initial_state
-    from thermogear.simulation import Simulation
+    from thermogear.dynamics.periodic_orbits.periodic import periodic_initial_state
     from thermogear.mesh.model import MeshModel
+    from thermogear.simulation import Simulation
     from thermogear.sweep.batch import evaluate_speeds, group_tables
 
     case = load_case("luo2019")

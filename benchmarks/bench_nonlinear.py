@@ -52,7 +52,7 @@ def _times(function, repeat: int) -> np.ndarray:
 
 def _periods_to_settle(problem, orbit, limit: int = 5000) -> int:
     """Mesh periods from rest until the state at τ = 0 is within TOLERANCE (scaled) of the orbit's."""
-    from thermogear.dynamics.backlash_periodic import backlash_flow
+    from thermogear.dynamics.backlash.backlash_periodic import backlash_flow
 
     target = np.array(orbit.initial_state)
     scale = np.array([problem.displacement_scale, problem.velocity_scale])
@@ -67,11 +67,11 @@ def _periods_to_settle(problem, orbit, limit: int = 5000) -> int:
 def main(quick: bool = False) -> dict:
     warnings.simplefilter("ignore")
     from thermogear.case import load_case
-    from thermogear.dynamics.backlash_continuation import follow_branch
-    from thermogear.dynamics.backlash_metrics import orbit_metrics
-    from thermogear.dynamics.backlash_periodic import periodic_response
-    from thermogear.dynamics.backlash_problem import BacklashMeshProblem
-    from thermogear.dynamics.backlash_reference import reference_backlash_solve_ivp
+    from thermogear.dynamics.backlash.backlash_continuation import follow_branch
+    from thermogear.dynamics.backlash.backlash_metrics import orbit_metrics
+    from thermogear.dynamics.backlash.backlash_periodic import periodic_response
+    from thermogear.dynamics.problems.backlash_problem import BacklashMeshProblem
+    from thermogear.dynamics.transients.backlash_reference import reference_backlash_solve_ivp
     from thermogear.simulation import Simulation
 
     case = load_case("luo2019").with_changes(**{"operating.speed_rpm": SPEED_RPM})

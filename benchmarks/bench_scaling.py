@@ -18,7 +18,8 @@ and 2004 DOF. Per size:
 3. the linear periodic response on every DOF (60 and 492 DOF; 2004 with ``--full``: about 30 exponentials of
    6700-square matrices), and on 492 DOF the route before issue 38 (every coordinate, blocks of pieces, the
    batched Taylor exponentials) in the same run;
-4. Newmark (average acceleration, 32 steps per piece, ``dynamics/newmark.py``) from rest to a 1 % steady state
+4. Newmark (average acceleration, 32 steps per piece, ``dynamics/transients/newmark.py``) from rest to a 1 % steady
+state
    (two period ends within 1 %) on the same system with every DOF, and its distance from the exact orbit (the
    exact every-DOF orbit where it was computed, else the cut-off solution); on 492 DOF also Newmark on the
    cut-off's own reduced system, its steady-state tolerance and then its steps per piece tightened
@@ -70,7 +71,7 @@ def cpu(function, repeat: int = 1):
 @contextlib.contextmanager
 def route_before_issue_38():
     """Every coordinate, √N blocks of pieces and the batched Taylor exponentials, as before issue 38."""
-    import thermogear.dynamics.periodic_ndof as periodic_ndof
+    import thermogear.dynamics.periodic_orbits.periodic_ndof as periodic_ndof
 
     saved = (periodic_ndof.RUN_ROUTE_SIZE, periodic_ndof._SINGLE_ROUTE_SIZE, periodic_ndof.reached_coordinates)
     periodic_ndof.RUN_ROUTE_SIZE = periodic_ndof._SINGLE_ROUTE_SIZE = sys.maxsize
@@ -87,10 +88,10 @@ def route_before_this_turn():
     exponential by itself (scipy's Padé 13), the monodromy formed and its eigenvalues taken densely."""
     from scipy.linalg import expm
 
-    import thermogear.dynamics.monodromy_range as monodromy_range
-    import thermogear.dynamics.periodic_ndof as periodic_ndof
+    import thermogear.dynamics.linear_algebra.monodromy_range as monodromy_range
+    import thermogear.dynamics.periodic_orbits.periodic_ndof as periodic_ndof
 
-    def separate(system, units, durations, inverse, full_range):
+    def separate(system, units, durations, inverse, full_range, powers=False):
         return np.stack([expm(matrix * duration) for matrix, duration in zip(units, durations)])
 
     saved = (monodromy_range.LARGEST_RANK_SHARE, periodic_ndof._large_pieces)
@@ -157,7 +158,7 @@ def _distance(response_dte: np.ndarray, reference_dte: np.ndarray) -> float:
 def newmark_run(assembled, state, reference) -> dict:
     """Newmark from rest to a 1 % steady state on the every-DOF system; its DTE at the exact orbit's samples."""
     from thermogear.drivetrain.response import drivetrain_periodic_system
-    from thermogear.dynamics.newmark import newmark_steady_state
+    from thermogear.dynamics.transients.newmark import newmark_steady_state
 
     system, reduction = drivetrain_periodic_system(assembled, state)
     seconds, run = cpu(lambda: newmark_steady_state(system, NEWMARK_STEPS, tolerance=1e-2))
@@ -179,9 +180,9 @@ def newmark_to_accuracy(assembled, state, cutoff: float) -> dict:
     (sampled at the same steps): the seconds of the first run that does (each run from rest, so its time is what
     Newmark needs with that stopping rule), or of the last one tried with its distance."""
     from thermogear.drivetrain.response import drivetrain_periodic_system
-    from thermogear.dynamics.modal_reduction import modal_basis
-    from thermogear.dynamics.newmark import newmark_steady_state
-    from thermogear.dynamics.periodic_ndof import periodic_response
+    from thermogear.dynamics.modes.modal_reduction import modal_basis
+    from thermogear.dynamics.periodic_orbits.periodic_ndof import periodic_response
+    from thermogear.dynamics.transients.newmark import newmark_steady_state
 
     system, reduction = drivetrain_periodic_system(assembled, state)
     basis = modal_basis(system, 2.0 * np.pi * cutoff)

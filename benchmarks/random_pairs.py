@@ -115,7 +115,7 @@ STEADY = ("periodic", "subharmonic")
 def _model_defects(response) -> list[str]:
     """The defect classes of one model's response (empty: a clean result, valid or labelled)."""
     from thermogear.cli.run import model_json, response_status
-    from thermogear.dynamics.metric_results import typed_metrics
+    from thermogear.dynamics.results.metric_results import typed_metrics
 
     metrics = response.metrics
     kind = metrics.get("response", "periodic")
@@ -146,11 +146,11 @@ def check_pair(document: dict, method: str = "periodic") -> dict:
     Returns ``{"outcome": "refused" | "computed" | "defect", "stage": …, "key"/"defects": …, "seconds": …}``."""
     from thermogear.case import case_from_document
     from thermogear.errors import CaseError, ModelLimitError
+    from thermogear.evaluation import uses_paper_thermal_stiffness
     from thermogear.mesh.model import MeshModel
     from thermogear.orchestrator import Orchestrator
-    from thermogear.simulation import MODELS, Simulation
-    from thermogear.evaluation import uses_paper_thermal_stiffness
     from thermogear.serialization import json_ready
+    from thermogear.simulation import MODELS, Simulation
     from thermogear.summaries.stiffness import stiffness_summary
     from thermogear.summaries.thermoelastic import thermoelastic_summary
 

@@ -30,8 +30,8 @@ from thermogear.drivetrain import (Bearing, CrossSection, Drivetrain, GearMesh, 
                                    RigidDisk, Shaft, ShaftSegment)
 from thermogear.drivetrain.modes import drivetrain_modes  # noqa: E402
 from thermogear.drivetrain.response import drivetrain_periodic_response  # noqa: E402
-from thermogear.dynamics.metrics import compute_metrics  # noqa: E402
-from thermogear.dynamics.periodic import periodic_steady_state  # noqa: E402
+from thermogear.dynamics.periodic_orbits.periodic import periodic_steady_state  # noqa: E402
+from thermogear.dynamics.results.metrics import compute_metrics  # noqa: E402
 from thermogear.errors import ModelLimitError  # noqa: E402
 from thermogear.mesh.model import MeshModel  # noqa: E402
 

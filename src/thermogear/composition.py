@@ -20,18 +20,28 @@ from __future__ import annotations
 import importlib
 from collections.abc import Callable
 
-#: The derived pieces of a case a check or provider may ask for by name (:mod:`thermogear.case_pieces`): name →
+#: The derived pieces of a case a check or provider may ask for by name (:mod:`thermogear.case.pieces`): name →
 #: (its resolver, the Case field it needs: None where that section is absent, or None where every case has it).
 #: A resolver's own parameters are pieces too.
 CASE_PIECES: dict[str, tuple[str, str | None]] = {
     "oil": ("thermogear.lubricant:lubricant_from_case", None),
     "gearbox_model": ("thermogear.gearbox.case_model:gearbox_model_from_case", "gearbox"),
     "fem_inputs": ("thermogear.fem.inputs:fem_inputs", None),
-    "temperature_field": ("thermogear.temperature_source:temperature_field_from_case", None),
+    "temperature_field": ("thermogear.temperature.source:temperature_field_from_case", None),
+    "paper_thermal_memo": ("thermogear.luo2020.case_stiffness:paper_thermal_memo", None),
+    "paper_thermal_model": ("thermogear.luo2020.case_stiffness:paper_thermal_model", None),
+}
+
+#: The pieces of a case that a plug-in its section names provides (:mod:`thermogear.case.pieces`): name → the chooser,
+#: ``chooser(pieces) -> plug-in``, which picks the plug-in from the section's name; the plug-in is then called with
+#: the pieces it names, and its answer is the piece.
+CHOSEN_PIECES: dict[str, str] = {
+    "provided_temperature_field": "thermogear.temperature.source:temperature_provider",
+    "provided_x_te": "thermogear.luo2020.calibration:chosen_x_te_provider",
 }
 
 #: Every check and provider below receives the pieces of the case its parameters name
-#: (:func:`thermogear.case_pieces.call_with_pieces`): ``provider(fem_inputs)``, ``check(damping, oil)``.
+#: (:func:`thermogear.case.pieces.call_with_pieces`): ``provider(fem_inputs)``, ``check(damping, oil)``.
 
 #: ``[temperature] model`` name → the provider of its tooth temperature field, ``provider(pieces) -> TemperatureField``.
 TEMPERATURE_PROVIDERS: dict[str, str] = {
@@ -45,9 +55,9 @@ X_TE_PROVIDERS: dict[str, str] = {
 }
 
 #: ``[temperature] model`` name → the model that predicts the case's oil and housing temperatures at load time,
-#: ``resolver(case) -> Case`` (a resolver: it writes a new case).
+#: ``resolver(pieces) -> {Case field: value}`` (the parts of the case it predicts, which the loader writes).
 TEMPERATURE_MODELS: dict[str, str] = {
-    "gearbox": "thermogear.gearbox.case_model:with_predicted_temperatures",
+    "gearbox": "thermogear.gearbox.case_model:predicted_temperatures",
 }
 
 #: ``[temperature] model`` name → the provider of the drivetrain's shaft and bearing-ring temperatures,

@@ -19,7 +19,7 @@ import numpy as np
 
 from thermogear import forked
 from thermogear.citations import cite, cited_in
-from thermogear.dynamics.solution_methods import solution_method
+from thermogear.dynamics.problems.solution_methods import solution_method
 from thermogear.mesh.model_names import ELASTIC, MODELS, THERMAL
 from thermogear.thermal_model_rules import LUO2020_RULES, THERMOELASTIC_RULES
 from thermogear.warning_causes import warning_text
@@ -202,15 +202,16 @@ def evaluate_case(case, method: str = "periodic", models: tuple[str, ...] = MODE
 
     def thermal():
         from thermogear.mesh.model import MeshModel
-        from thermogear.temperature_source import temperature_field_from_case
+        from thermogear.temperature.source import temperature_field_from_case
 
         evaluation.temperature_field = temperature_field_from_case(case)
         thermal_mesh = MeshModel(case, "thermal")
         if uses_paper_thermal_stiffness(thermal_mesh):  # the paper's k_T curves (Fig. 4) belong to its model only
+            from thermogear.case.pieces import call_with_pieces
             from thermogear.luo2020.case_stiffness import paper_thermal_model
             from thermogear.summaries.thermal import thermal_curves, thermal_stiffness_summary
 
-            paper = paper_thermal_model(case)
+            paper = call_with_pieces(paper_thermal_model, case)
             evaluation.thermal_curves = thermal_curves(paper)
             evaluation.thermal_summary = thermal_stiffness_summary(paper, MeshModel(case, "elastic"), thermal_mesh)
             cite("timoshenko1951")

@@ -27,15 +27,15 @@ from typing import TYPE_CHECKING, Any
 
 from thermogear import warning_scope
 from thermogear.composition import TEMPERATURE_MODELS
-from thermogear.dynamics.solution_methods import SOLUTION_METHODS, solution_method
+from thermogear.dynamics.problems.solution_methods import SOLUTION_METHODS, solution_method
 from thermogear.errors import CaseError, ModelLimitError
 from thermogear.mesh.model_names import MODELS, THERMAL
 from thermogear.warning_causes import warning_text
 
 if TYPE_CHECKING:
     from thermogear.drivetrain.results import DrivetrainResults
-    from thermogear.dynamics.metric_results import LinearMetrics, NonlinearMetrics
     from thermogear.dynamics.response import DynamicResponse
+    from thermogear.dynamics.results.metric_results import LinearMetrics, NonlinearMetrics
 
 __all__ = ["METHODS", "Orchestrator", "PairResult", "RunResults", "SYSTEMS", "drivetrain_failure", "run",
            "with_separation_note"]
@@ -52,7 +52,7 @@ METHODS = tuple(SOLUTION_METHODS)
 class PairResult:
     """The 1-DOF pair's response under one model: ``response`` (the solver's
     :class:`~thermogear.dynamics.response.DynamicResponse`, arrays over one mesh period) and its ``metrics`` typed
-    (:class:`~thermogear.dynamics.metric_results.LinearMetrics` or ``NonlinearMetrics``); ``damping_ratio`` the
+    (:class:`~thermogear.dynamics.results.metric_results.LinearMetrics` or ``NonlinearMetrics``); ``damping_ratio`` the
     mean mesh damping ratio [-]."""
 
     model: str
@@ -204,7 +204,7 @@ class Orchestrator:
 
     def pair(self, model: str) -> PairResult:
         """The 1-DOF pair under ``model``, solved (raises ModelLimitError where the model cannot give a result)."""
-        from thermogear.dynamics.metric_results import typed_metrics  # noqa: PLC0415
+        from thermogear.dynamics.results.metric_results import typed_metrics  # noqa: PLC0415
 
         simulation = self.simulation(model)
         response = simulation.run()

@@ -14,9 +14,9 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Any
 
-from thermogear.dynamics.mesh_laws import mesh_law
-from thermogear.dynamics.solution_methods import solution_method
 from thermogear import warning_scope
+from thermogear.dynamics.problems.mesh_laws import mesh_law
+from thermogear.dynamics.problems.solution_methods import solution_method
 from thermogear.errors import CaseError, ProblemError
 
 #: The case-file key a solver quantity comes from and the factor from the solver's SI value to the key's unit.
@@ -57,11 +57,11 @@ def _build(simulation, dynamics, method: str) -> None:
 
 def check_transient_length(problem, periods: int, speed_rpm: float) -> None:
     """Refuse a motion from rest of the linear mesh whose history would exceed what the RK4 transient stores
-    (:data:`~thermogear.dynamics.transient.MAX_STORED_SAMPLES`): its steps per interval keep |λ|·h <= 0.05
-    (:func:`~thermogear.dynamics.transient.default_steps_per_interval`), so at a low speed a mesh period holds
-    many natural oscillations and needs many steps. ``run`` refused such a case with the solver's own words
+    (:data:`~thermogear.dynamics.transients.transient.MAX_STORED_SAMPLES`): its steps per interval keep |λ|·h <= 0.05
+    (:func:`~thermogear.dynamics.transients.transient.default_steps_per_interval`), so at a low speed a mesh period
+    holds many natural oscillations and needs many steps. ``run`` refused such a case with the solver's own words
     after ``check`` had accepted it (issue 25, found by the random-pair check)."""
-    from thermogear.dynamics.transient import MAX_STORED_SAMPLES, default_steps_per_interval
+    from thermogear.dynamics.transients.transient import MAX_STORED_SAMPLES, default_steps_per_interval
 
     per_period = problem.interval_count * default_steps_per_interval(problem)
     if periods * per_period + 1 <= MAX_STORED_SAMPLES:

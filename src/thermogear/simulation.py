@@ -17,7 +17,7 @@ from typing import Callable, Literal
 import numpy as np
 
 from thermogear.case import Case
-from thermogear.dynamics.solution_methods import SOLUTION_METHODS, solution_method
+from thermogear.dynamics.problems.solution_methods import SOLUTION_METHODS, solution_method
 from thermogear.dynamics.solvers import (BacklashShootingSolver, BacklashTransientSolver, PeriodicSolver, Solver,
                                          TransientSolver)
 from thermogear.mesh.model import MeshModel

@@ -17,7 +17,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from thermogear.errors import CaseError
-from thermogear.temperature_field import LUO2020_LIMITS, THERMOELASTIC_LIMITS, TemperatureLimits
+from thermogear.temperature.field import LUO2020_LIMITS, THERMOELASTIC_LIMITS, TemperatureLimits
 
 
 @dataclass(frozen=True)

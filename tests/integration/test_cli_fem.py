@@ -47,13 +47,14 @@ def test_fem_temperature_and_x_te_drive_the_chain():
     from thermogear.fem.inputs import fem_inputs
     from thermogear.fem.verification import cached_analysis
     from thermogear.simulation import Simulation
+    from thermogear.case.pieces import call_with_pieces
     from thermogear.luo2020.case_stiffness import paper_thermal_model
 
     case = load_case("luo2019").with_changes(**{
         "temperature": {"model": "fem", "reference_c": 20.0},
         "thermal": {"model": "luo2020", "x_te_source": "fem", "load_basis": "external"}})
     points = case.gear_pair.path_points
-    result = paper_thermal_model(case).thermal_stiffness(np.array([points[name] for name in "ACE"]))
+    result = call_with_pieces(paper_thermal_model, case).thermal_stiffness(np.array([points[name] for name in "ACE"]))
     analysis = cached_analysis(fem_inputs(case))
     assert result.x_te == pytest.approx(analysis.x_te)
     assert result.temperature.source == "fem"

@@ -135,7 +135,7 @@ def test_an_orbit_sampled_beyond_memory_is_refused_at_load():
     ("gearbox (predicted steady state: oil 91.0 °C)", "temperature.flank_c", "temperature.model = 'gearbox'"),
 ])
 def test_a_temperature_is_named_by_the_key_it_came_from(source, key, named):
-    from thermogear.temperature_field import case_key_of
+    from thermogear.temperature.field import case_key_of
 
     assert case_key_of(source, key) == named
 

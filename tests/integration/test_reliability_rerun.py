@@ -281,7 +281,7 @@ def test_a_transient_too_long_to_store_is_refused_by_check_and_run_alike(tmp_pat
 
 def test_the_transient_length_check_draws_the_line_where_the_solver_does(tmp_path):
     from thermogear.case import load_case
-    from thermogear.dynamics.transient import transient_from_rest
+    from thermogear.dynamics.transients.transient import transient_from_rest
     from thermogear.errors import ProblemError
     from thermogear.preflight import check_transient_length
     from thermogear.simulation import Simulation

@@ -164,7 +164,7 @@ def test_run_gives_what_the_thermoelastic_model_is_for():
     # the numbers are the summary's (summaries.thermoelastic), not recomputed by the command
     from thermogear.case import load_case
     from thermogear.summaries.thermoelastic import thermoelastic_summary
-    from thermogear.temperature_source import temperature_field_from_case
+    from thermogear.temperature.source import temperature_field_from_case
     from thermogear.thermoelastic.mesh import ThermoelasticMesh
 
     result = _run(str(USER_PAIR), "--json")

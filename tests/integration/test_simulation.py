@@ -6,9 +6,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from thermogear.dynamics.periodic import periodic_steady_state
-from thermogear.dynamics.reference import reference_solve_ivp
-from thermogear.dynamics.transient import transient_from_rest
+from thermogear.dynamics.periodic_orbits.periodic import periodic_steady_state
+from thermogear.dynamics.transients.reference import reference_solve_ivp
+from thermogear.dynamics.transients.transient import transient_from_rest
 from thermogear.errors import CaseError
 from thermogear.simulation import Simulation, compare
 

@@ -112,7 +112,7 @@ def test_the_store_keeps_the_back_contact_fraction():
 
 def test_the_backlash_integrator_releases_the_gil():
     # the branch study's threads compute in parallel only if the compiled integrator releases Python's GIL
-    from thermogear.dynamics.backlash_kernel import integrate_periods
+    from thermogear.dynamics.backlash.backlash_kernel import integrate_periods
 
     assert integrate_periods.targetoptions.get("nogil") is True
 

@@ -17,7 +17,7 @@ import numpy as np
 import pytest
 
 from thermogear.case import load_case
-from thermogear.dynamics.backlash_orbits import stable_orbits
+from thermogear.dynamics.backlash.backlash_orbits import stable_orbits
 from thermogear.mesh.model import MeshModel
 from thermogear.sweep import Study
 from thermogear.sweep.branches import branch_study
@@ -65,7 +65,7 @@ def test_a_subharmonic_found_at_each_of_its_phases_is_one_orbit(luo131):
     problem = _quiet(lambda: MeshModel(case, "elastic").state().backlash_problem(case.dynamics.damping_in_flight))
     census = _quiet(stable_orbits, problem, starts=64)
     orbit = next(item.orbit for item in census.orbits if item.period_count == 3)
-    from thermogear.dynamics.backlash_orbits import _phases
+    from thermogear.dynamics.backlash.backlash_orbits import _phases
 
     phases = _phases(problem, np.array(orbit.initial_state), 3)
     again = _quiet(stable_orbits, problem, start_states=phases)

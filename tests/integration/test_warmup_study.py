@@ -52,7 +52,7 @@ def test_each_point_is_the_warmup_of_its_case_and_progress_counts_warmups(tmp_pa
 
 def test_the_kind_is_named_and_refused_where_it_cannot_run(tmp_path):
     import thermogear
-    from thermogear.case_pieces import call_with_pieces
+    from thermogear.case.pieces import call_with_pieces
     from thermogear.sweep.api import StudySubject, study_kind
     from thermogear.case import load_case
 

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from thermogear.dynamics.backlash_problem import BacklashMeshProblem
+from thermogear.dynamics.problems.backlash_problem import BacklashMeshProblem
 
 MASS, K0, FORCE = 1.0, 1e8, 1e3
 X_STATIC = FORCE / K0

@@ -18,9 +18,11 @@ ROOT = Path(__file__).resolve().parents[2]
 PAGE = ROOT / "docs" / "architecture.md"
 
 
-def _contract_layers() -> list[str]:
+def _contract_layers(container: str | None = None) -> list[str]:
+    """The layers of the package's contract (``container`` None) or of the contract inside one subpackage."""
     config = tomllib.loads((ROOT / "pyproject.toml").read_text(encoding="utf-8"))
-    contracts = [contract for contract in config["tool"]["importlinter"]["contracts"] if contract["type"] == "layers"]
+    contracts = [contract for contract in config["tool"]["importlinter"]["contracts"] if contract["type"] == "layers"
+                 and contract.get("containers", [None]) == [container]]
     assert len(contracts) == 1
     return list(contracts[0]["layers"])
 
@@ -41,6 +43,13 @@ def test_the_page_lists_the_contract_layers_in_order():
     assert len(layers) >= 10 and layers[0] == "thermogear.cli" and layers[-1] == "thermogear.dynamics"
     assert _page_layers() == layers
     assert _numbers() == list(range(1, len(layers) + 1))
+
+
+def test_the_page_lists_the_dynamics_layers_in_order():
+    """The bullets after "split by what it solves" name the dynamics contract's layers, siblings on one line."""
+    text = PAGE.read_text(encoding="utf-8").split("is split by what it solves", 1)[1].split("\n\n", 2)[1]
+    bullets = [re.findall(r"`(\w+)`", line.split(" — ")[0]) for line in text.splitlines() if line.startswith("- ")]
+    assert [" | ".join(names) for names in bullets] == _contract_layers("thermogear.dynamics")
 
 
 def _example() -> str:
@@ -156,7 +165,7 @@ def test_the_example_of_adding_a_bearing_model_runs(capsys, monkeypatch):
 
 
 def test_the_example_of_adding_a_loss_correlation_runs(capsys, monkeypatch):
-    from thermogear.friction_models import FRICTION_MODELS, friction_law
+    from thermogear.friction.models import FRICTION_MODELS, friction_law
 
     saved = dict(FRICTION_MODELS)
     try:

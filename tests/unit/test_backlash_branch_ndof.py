@@ -1,5 +1,5 @@
 """Speed continuation of the n-DOF backlash orbit: on a 1-DOF system it jumps where the existing 1-DOF continuation
-(``thermogear.dynamics.backlash_continuation``) jumps, up and down, and follows the same orbits."""
+(``thermogear.dynamics.backlash.backlash_continuation``) jumps, up and down, and follows the same orbits."""
 
 from __future__ import annotations
 
@@ -7,10 +7,10 @@ import numpy as np
 import pytest
 from backlash_textbook import FORCE, X_STATIC, textbook_problem
 
-from thermogear.dynamics.backlash_branch_ndof import follow_backlash_branch
-from thermogear.dynamics.backlash_continuation import follow_branch
-from thermogear.dynamics.backlash_ndof import BacklashSystem
-from thermogear.dynamics.periodic_ndof import PiecewiseLinearSystem
+from thermogear.dynamics.backlash.backlash_branch_ndof import follow_backlash_branch
+from thermogear.dynamics.backlash.backlash_continuation import follow_branch
+from thermogear.dynamics.backlash.backlash_ndof import BacklashSystem
+from thermogear.dynamics.periodic_orbits.periodic_ndof import PiecewiseLinearSystem
 from thermogear.errors import ProblemError
 
 RATIOS = np.round(np.arange(0.80, 1.1001, 0.01), 6)

@@ -10,8 +10,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from thermogear.dynamics.backlash_continuation import follow_branch
 from thermogear.dynamics import periodic_steady_state
+from thermogear.dynamics.backlash.backlash_continuation import follow_branch
 from thermogear.errors import ProblemError
 
 from backlash_textbook import X_STATIC, textbook_problem

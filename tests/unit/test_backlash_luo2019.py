@@ -12,9 +12,9 @@ import numpy as np
 import pytest
 
 from thermogear.dynamics import periodic_steady_state
-from thermogear.dynamics.backlash_metrics import orbit_metrics
-from thermogear.dynamics.backlash_periodic import backlash_transient, periodic_response
-from thermogear.dynamics.backlash_problem import BacklashMeshProblem
+from thermogear.dynamics.backlash.backlash_metrics import orbit_metrics
+from thermogear.dynamics.backlash.backlash_periodic import backlash_transient, periodic_response
+from thermogear.dynamics.problems.backlash_problem import BacklashMeshProblem
 from thermogear.dynamics.response import compute_metrics
 from thermogear.errors import ModelLimitError
 

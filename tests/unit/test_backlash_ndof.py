@@ -7,11 +7,11 @@ import numpy as np
 import pytest
 from backlash_textbook import FORCE, textbook_problem
 
-from thermogear.dynamics.backlash_ndof import (BACK_CONTACT, FREE_FLIGHT, BacklashSystem, backlash_flow_ndof,
+from thermogear.dynamics.backlash.backlash_ndof import (BACK_CONTACT, FREE_FLIGHT, BacklashSystem, backlash_flow_ndof,
                                                backlash_periodic_orbit, odd_crossings)
-from thermogear.dynamics.backlash_trajectory import backlash_trajectory
-from thermogear.dynamics.backlash_periodic import periodic_response as one_dof_backlash_response
-from thermogear.dynamics.periodic_ndof import PiecewiseLinearSystem, periodic_response
+from thermogear.dynamics.backlash.backlash_periodic import periodic_response as one_dof_backlash_response
+from thermogear.dynamics.backlash.backlash_trajectory import backlash_trajectory
+from thermogear.dynamics.periodic_orbits.periodic_ndof import PiecewiseLinearSystem, periodic_response
 from thermogear.errors import ProblemError
 
 
@@ -132,7 +132,7 @@ def test_trajectory_samples_are_the_flow_s_exact_states():
 def test_an_odd_crossing_count_refines_the_substeps_or_fails(monkeypatch, odd_below, substeps, converged):
     # the flow made to report one extra crossing of g = 0 below ``odd_below`` sub-steps: the guard shoots again
     # with 8 (and finds the orbit, even again) or, still odd at 64, says not converged and why
-    import thermogear.dynamics.backlash_ndof as module
+    import thermogear.dynamics.backlash.backlash_ndof as module
 
     flow = module.backlash_flow_ndof
 
@@ -153,9 +153,9 @@ def test_an_odd_crossing_count_refines_the_substeps_or_fails(monkeypatch, odd_be
 def test_the_start_up_check_takes_the_motion_prepared_on_the_orbit_s_pass(monkeypatch):
     # the switch-free orbit's solve (chunked route) prepares the start-up check's motion when asked: the check then
     # runs no pass of its own and decides as with its own pass (the motion from rest stays in driving contact)
-    import thermogear.dynamics.backlash_orbits_ndof as orbits
-    import thermogear.dynamics.periodic_ndof as periodic
-    from thermogear.dynamics.backlash_ndof import STARTUP_MOTION, WATCH_STARTUP
+    import thermogear.dynamics.backlash.backlash_orbits_ndof as orbits
+    import thermogear.dynamics.periodic_orbits.periodic_ndof as periodic
+    from thermogear.dynamics.backlash.backlash_ndof import STARTUP_MOTION, WATCH_STARTUP
 
     linear = _chain()
     system = BacklashSystem(linear, linear.force_pattern, np.zeros(2), backlash=1e-5)

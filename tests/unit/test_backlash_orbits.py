@@ -5,9 +5,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from thermogear.dynamics.backlash_continuation import follow_branch
-from thermogear.dynamics.backlash_orbits import start_grid, stable_orbits
-from thermogear.dynamics.backlash_periodic import periodic_response
+from thermogear.dynamics.backlash.backlash_continuation import follow_branch
+from thermogear.dynamics.backlash.backlash_orbits import start_grid, stable_orbits
+from thermogear.dynamics.backlash.backlash_periodic import periodic_response
 from thermogear.errors import ProblemError
 
 from backlash_textbook import X_STATIC, textbook_problem
@@ -63,7 +63,7 @@ def test_the_start_grid_spans_both_flanks_and_refuses_bad_counts():
 def test_the_coexistence_note_never_implies_at_most_two_orbits(monkeypatch):
     # the linear start and the start from rest settling on different orbits show that several coexist, never
     # how many: the note says "at least two" and points to the search (it said "two stable orbits coexist")
-    from thermogear.dynamics import nonlinear_response as module
+    from thermogear.dynamics.backlash import nonlinear_response as module
 
     problem = textbook_problem(0.9, ZETA)
     low, high = sorted((item.orbit for item in stable_orbits(problem, starts=36).orbits),

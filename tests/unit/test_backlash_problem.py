@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from thermogear.dynamics import MeshDynamicsProblem
-from thermogear.dynamics.backlash_problem import BacklashMeshProblem
+from thermogear.dynamics.problems.backlash_problem import BacklashMeshProblem
 from thermogear.errors import ProblemError
 
 STIFFNESS = 1e8  # [N/m]

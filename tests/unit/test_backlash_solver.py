@@ -14,14 +14,14 @@ import numpy as np
 import pytest
 
 from thermogear.dynamics import MeshDynamicsProblem, periodic_steady_state
-from thermogear.dynamics.backlash_metrics import history_forces, orbit_metrics
-from thermogear.dynamics.backlash_periodic import (backlash_flow, backlash_transient, periodic_response,
+from thermogear.dynamics.backlash.backlash_metrics import history_forces, orbit_metrics
+from thermogear.dynamics.backlash.backlash_periodic import (backlash_flow, backlash_transient, periodic_response,
                                                    shoot)
-from thermogear.dynamics.backlash_problem import BacklashMeshProblem
-from thermogear.dynamics.backlash_reference import reference_backlash_solve_ivp
-from thermogear.dynamics.periodic_batch import periodic_steady_state_batch
+from thermogear.dynamics.periodic_orbits.periodic_batch import periodic_steady_state_batch
+from thermogear.dynamics.problems.backlash_problem import BacklashMeshProblem
 from thermogear.dynamics.response import compute_metrics
-from thermogear.dynamics.spectra import harmonic_spectrum
+from thermogear.dynamics.results.spectra import harmonic_spectrum
+from thermogear.dynamics.transients.backlash_reference import reference_backlash_solve_ivp
 from thermogear.errors import ModelLimitError
 
 from backlash_textbook import FORCE, K0, MASS, X_STATIC, textbook_problem

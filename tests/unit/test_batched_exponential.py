@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from thermogear.dynamics.batched_exponential import batched_expm
+from thermogear.dynamics.linear_algebra.batched_exponential import batched_expm
 from thermogear.errors import ProblemError
 
 
@@ -45,7 +45,7 @@ def test_single_matrix_and_bad_input():
 def test_rank_updates_equal_scipy_expm(scale, rank):
     from scipy.linalg import expm
 
-    from thermogear.dynamics.batched_exponential import expm_of_rank_updates
+    from thermogear.dynamics.linear_algebra.batched_exponential import expm_of_rank_updates
 
     rng = np.random.default_rng(11)
     base, left = rng.normal(size=(9, 9)) * scale, rng.normal(size=(9, rank))
@@ -68,7 +68,7 @@ def test_rank_updates_equal_scipy_expm(scale, rank):
 
 
 def test_rank_updates_refuse_bad_shapes():
-    from thermogear.dynamics.batched_exponential import expm_of_rank_updates
+    from thermogear.dynamics.linear_algebra.batched_exponential import expm_of_rank_updates
 
     with pytest.raises(ProblemError, match="matrices"):
         expm_of_rank_updates(np.eye(3), np.ones((3, 1)), np.ones((2, 1, 4)), np.ones(2))

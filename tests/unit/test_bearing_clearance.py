@@ -11,8 +11,9 @@ import pytest
 from test_backlash_ndof import _chain
 
 from thermogear.drivetrain import Bearing, NodeLocation
-from thermogear.dynamics.backlash_ndof import BacklashSystem, DeadZone, backlash_flow_ndof, backlash_periodic_orbit
-from thermogear.dynamics.periodic_ndof import periodic_response
+from thermogear.dynamics.backlash.backlash_ndof import (BacklashSystem, DeadZone, backlash_flow_ndof,
+                                                        backlash_periodic_orbit)
+from thermogear.dynamics.periodic_orbits.periodic_ndof import periodic_response
 from thermogear.errors import CaseError, ProblemError
 
 SUPPORT, SUPPORT_DAMPING, DOF = 1e8, 400.0, 5

@@ -14,7 +14,7 @@ import pytest
 from thermogear.case import load_case, register_case_check
 from thermogear.errors import CaseError
 from thermogear.schema.temperature import CASE_MAXIMUM_C
-from thermogear.temperature_field import MATERIAL_MAXIMUM_C
+from thermogear.temperature.field import MATERIAL_MAXIMUM_C
 
 BAD_CASES = Path(__file__).parents[1] / "data" / "bad_cases"
 

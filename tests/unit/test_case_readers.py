@@ -35,7 +35,7 @@ SOURCE = Path(__file__).resolve().parents[2] / "src" / "thermogear"
 #: are looked up by their one resolver, and preflight is asked through the Orchestrator. 35 once main's study kinds
 #: (the warm-up kind and study_kind, merged at 38) pick a case's kind from its StudySubject, resolved once. 28 once
 #: the checks and providers of thermogear.composition receive the pieces of the case they name
-#: (thermogear.case_pieces.call_with_pieces: the FE and gearbox temperature providers, the FE X_te, the network's
+#: (thermogear.case.pieces.call_with_pieces: the FE and gearbox temperature providers, the FE X_te, the network's
 #: drivetrain heat, the gearbox and damping-law checks; +1 for call_with_pieces itself), study_kind takes the
 #: StudySubject and the held load of a sweep the case's [operating] keys and operating point. 27 once the callable
 #: module thermogear.sweep forwards its arguments to thermogear.sweep.api.study (the entry point) unread. 22 once the
@@ -47,7 +47,23 @@ SOURCE = Path(__file__).resolve().parents[2] / "src" / "thermogear"
 #: write a new case or hand the case on lazily (the warm-up states, fem_inputs, the gearbox's predicted
 #: temperatures, the stages' cases, the drivetrain, the paper's k_T, the pair model, the temperature field) and
 #: PredictedTemperatureError, which carries the unresolved case. The next step to 15: those resolvers onto pieces.
-MAXIMUM_CASE_READERS = 22
+#: 20 once Study.from_description, which nothing called, was removed (the store's --resume compares describe()),
+#: and the pair model is chosen from the two names it reads (pair_model_class(model, thermal_model)).
+#: 18 once the tooth temperature field and the paper's k_T model name their pieces (the provider a section chooses
+#: by name is a piece, thermogear.composition.CHOSEN_PIECES; a piece needed on some paths only is asked for later,
+#: ``temperature_field_of``; the paper's per-case memo is the piece paper_thermal_memo).
+#: 16 once the gearbox's temperature model returns the parts of the case it predicts (the loader writes them;
+#: predicted_temperatures names its pieces) and PredictedTemperatureError carries the steady state and the key it
+#: reports, not the unresolved case (the network's commands load with predict_temperatures=False).
+#: 15 once a train's further stages are resolved from the pieces they read (stage_train: the [drivetrain] section,
+#: the built stages, the first pair and the operating point give each stage's changes, speed, repeats and phase)
+#: and the drivetrain's resolver writes the stages' cases. Left: the machinery (check_case, cached_per_case,
+#: call_with_pieces), the entry points (thermogear.run, evaluate_case, the report, thermogear.sweep's study,
+#: Study.define, the gearbox grid, the two warm-ups) and the resolvers that write new cases (case_drivetrain,
+#: fem_inputs, the two warm-ups' state_case: one at a measured temperature through the checked case file, one at
+#: the network's node temperatures through its sections, without re-reading the case: about 30-190 ms against
+#: the 20 ms of a state's periodic solve; both hold a calibrated X_te by one rule, held_x_te, which names its pieces).
+MAXIMUM_CASE_READERS = 15
 
 
 def _takes_case(argument: ast.arg) -> bool:

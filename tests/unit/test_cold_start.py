@@ -88,6 +88,6 @@ def test_the_coldest_gear_is_the_coldest_start_elsewhere():
     """One cold limit: the gears' (temperature_field), the housing's (schema) and the gearbox warm-up's start."""
     from thermogear.gearbox.model import COLDEST_START_C
     from thermogear.schema.housing import HOUSING_TEMPERATURE_RANGE_C
-    from thermogear.temperature_field import MATERIAL_MINIMUM_C, THERMOELASTIC_LIMITS
+    from thermogear.temperature.field import MATERIAL_MINIMUM_C, THERMOELASTIC_LIMITS
 
     assert MATERIAL_MINIMUM_C == HOUSING_TEMPERATURE_RANGE_C[0] == COLDEST_START_C == THERMOELASTIC_LIMITS.lowest_c

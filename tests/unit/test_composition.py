@@ -38,7 +38,7 @@ def test_models_that_live_above_the_thermal_chain_need_no_prior_import():
         import sys, warnings
         warnings.simplefilter("ignore")
         import thermogear.fem.provider, thermogear.gearbox.provider
-        import thermogear.temperature_source as temperature
+        import thermogear.temperature.source as temperature
         assert temperature._PROVIDERS == {}, "importing a provider module registered something"
         from thermogear.case import load_case
         from thermogear.mesh.model import MeshModel

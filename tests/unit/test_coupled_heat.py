@@ -187,7 +187,7 @@ def test_each_operating_point_has_its_own_temperatures(coupled):
 
 def test_the_network_sets_the_drivetrain_shafts_and_the_run_output_says_so(coupled):
     from thermogear.drivetrain.case_model import case_drivetrain
-    from thermogear.case_pieces import call_with_pieces
+    from thermogear.case.pieces import call_with_pieces
     from thermogear.gearbox.drivetrain_coupling import network_drivetrain_heat
     from thermogear.mesh.model_names import ELASTIC, THERMAL
     from thermogear.thermoelastic.materials import youngs_modulus_at
@@ -215,7 +215,7 @@ def test_the_network_sets_the_drivetrain_shafts_and_the_run_output_says_so(coupl
 
 def test_the_backlash_drivetrain_takes_the_hot_clearance():
     from thermogear.drivetrain.case_model import case_drivetrain
-    from thermogear.case_pieces import call_with_pieces
+    from thermogear.case.pieces import call_with_pieces
     from thermogear.gearbox.drivetrain_coupling import network_drivetrain_heat
     from thermogear.mesh.model_names import ELASTIC, THERMAL
 
@@ -237,7 +237,7 @@ def test_the_backlash_drivetrain_takes_the_hot_clearance():
 
 
 def test_a_changed_operating_point_predicts_its_own_drivetrain_temperatures(coupled):
-    from thermogear.case_pieces import call_with_pieces
+    from thermogear.case.pieces import call_with_pieces
     from thermogear.gearbox.drivetrain_coupling import (coupled_parts, network_drivetrain_heat,
                                                         operating_point_temperatures)
 

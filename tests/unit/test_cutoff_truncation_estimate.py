@@ -1,4 +1,4 @@
-"""Issue 36: the cut-off's error estimate without a second periodic solve (thermogear.dynamics.truncation_error,
+"""Issue 36: the cut-off's error estimate without a second periodic solve (thermogear.dynamics.modes.truncation_error,
 drivetrain.cutoff.cutoff_error_estimate) against the true error, the response on every DOF.
 
 The factor. The estimate is the modes above the cut-off driven by the cut-off solution's own loads, less what the
@@ -51,9 +51,9 @@ def _assert_estimate_within_factor(assembled, state, cutoff: float, samples: int
 def test_the_estimate_is_the_true_error_of_a_time_invariant_system_with_modal_damping(script_module):
     """Identity: constant mesh stiffness and damping and a damping diagonal in the modes leave nothing out but the
     sampling: the estimate is the error of the cut-off solution (1 %)."""
-    from thermogear.dynamics.modal_reduction import mean_modes, modal_basis
-    from thermogear.dynamics.periodic_ndof import periodic_response
-    from thermogear.dynamics.truncation_error import truncation_error
+    from thermogear.dynamics.modes.modal_reduction import mean_modes, modal_basis
+    from thermogear.dynamics.periodic_orbits.periodic_ndof import periodic_response
+    from thermogear.dynamics.modes.truncation_error import truncation_error
 
     rotor = script_module(ROTOR)
     assembled = rotor.rotor(12).assemble()

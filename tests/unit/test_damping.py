@@ -13,7 +13,7 @@ import warnings
 import numpy as np
 import pytest
 
-from thermogear.damping import (contact_region_means, coulomb_equivalent_damping, friction_damping,
+from thermogear.friction.damping import (contact_region_means, coulomb_equivalent_damping, friction_damping,
                                 mesh_circular_frequency, mesh_damping)
 from thermogear.errors import CaseError, ExtrapolationWarning
 from thermogear.lubricant import lubricant_from_case

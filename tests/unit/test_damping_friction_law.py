@@ -10,10 +10,10 @@ import numpy as np
 import pytest
 
 from thermogear.case import load_case
-from thermogear.damping import friction_damping, friction_damping_exponents, friction_pair_damping
+from thermogear.friction.damping import friction_damping, friction_damping_exponents, friction_pair_damping
 from thermogear.errors import CaseError
 from thermogear.friction import mean_friction_coefficient
-from thermogear.friction_models import FRICTION_MODELS, SCHLENK_LUBRICANT_FACTORS, PitchContact, friction_law
+from thermogear.friction.models import FRICTION_MODELS, SCHLENK_LUBRICANT_FACTORS, PitchContact, friction_law
 from thermogear.lubricant import lubricant_from_case
 from thermogear.mesh.model import MeshModel
 

@@ -1,5 +1,5 @@
 """The drivetrain's backlash orbit continued in speed: on (nearly) rigid shafts and bearings it jumps where the 1-DOF
-pair's continuation (``thermogear.dynamics.backlash_continuation``) jumps, sweeping up and down."""
+pair's continuation (``thermogear.dynamics.backlash.backlash_continuation``) jumps, sweeping up and down."""
 
 from __future__ import annotations
 
@@ -13,7 +13,7 @@ from test_drivetrain_response import J_1, J_2, R_B1, R_B2, _mesh_state
 
 from thermogear.drivetrain import Material
 from thermogear.drivetrain.backlash_sweep import drivetrain_backlash_branch
-from thermogear.dynamics.backlash_continuation import follow_branch
+from thermogear.dynamics.backlash.backlash_continuation import follow_branch
 from thermogear.errors import CaseError
 
 MASS = J_1 * J_2 / (J_1 * R_B2**2 + J_2 * R_B1**2)

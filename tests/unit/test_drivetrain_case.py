@@ -173,8 +173,8 @@ def _stiff(document: dict, stiffness: float) -> dict:
 def _one_dof_reference(built):
     """The 1-DOF periodic response of the same mesh state with the polar inertias of the drivetrain's two trains
     (gear body plus its shaft: rᵀMr of each shaft's rigid rotation)."""
-    from thermogear.dynamics.metrics import compute_metrics
-    from thermogear.dynamics.periodic import periodic_steady_state
+    from thermogear.dynamics.periodic_orbits.periodic import periodic_steady_state
+    from thermogear.dynamics.results.metrics import compute_metrics
 
     assembled = built.assembled("elastic")
     inertias = []

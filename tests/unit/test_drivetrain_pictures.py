@@ -171,7 +171,7 @@ def test_the_modal_terms_of_a_bearing_force_add_up_to_the_direct_solution():
     force K_b u_b with (K − ω²M) u = w solved directly on the elastic coordinates (w does not move the free rigid
     rotation of the train, which the modes leave out)."""
     from thermogear.drivetrain.participation import bearing_force_modal_terms, bearing_force_terms
-    from thermogear.dynamics.rigid_body import rigid_body_reduction
+    from thermogear.dynamics.modes.rigid_body import rigid_body_reduction
 
     assembled = geared_pair(elements=4).assemble()  # no damping anywhere
     modes = drivetrain_modes(assembled)  # every elastic mode

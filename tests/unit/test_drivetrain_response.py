@@ -11,7 +11,7 @@ from drivetrain_builders import geared_pair
 
 from thermogear.drivetrain import Material
 from thermogear.drivetrain.response import drivetrain_periodic_response
-from thermogear.dynamics.periodic import periodic_steady_state
+from thermogear.dynamics.periodic_orbits.periodic import periodic_steady_state
 from thermogear.mesh.state import MeshState
 from thermogear.mesh_cycle import MeshGrid
 
@@ -51,7 +51,7 @@ def _limit(stiff: float, stiffer: float) -> float:
 
 @pytest.mark.slow
 def test_rigid_supports_reproduce_the_one_dof_periodic_result():
-    from thermogear.dynamics.metrics import compute_metrics
+    from thermogear.dynamics.results.metrics import compute_metrics
 
     mass = J_1 * J_2 / (J_1 * R_B2**2 + J_2 * R_B1**2)
     state = _mesh_state(mass, deviation=3e-6)
@@ -117,8 +117,8 @@ def test_backlash_drivetrain_in_permanent_contact_equals_the_linear_drivetrain()
     from dataclasses import replace
 
     from thermogear.drivetrain.response import drivetrain_backlash_system, drivetrain_periodic_system
-    from thermogear.dynamics.backlash_ndof import backlash_periodic_orbit
-    from thermogear.dynamics.periodic_ndof import periodic_response
+    from thermogear.dynamics.backlash.backlash_ndof import backlash_periodic_orbit
+    from thermogear.dynamics.periodic_orbits.periodic_ndof import periodic_response
 
     drivetrain = geared_pair(bearing_damping=2e3, material_damping=1e-6, elements=2)
     state = replace(_mesh_state(0.5, speed_rpm=600.0), backlash=50e-6)
@@ -165,7 +165,7 @@ def _near_resonance_backlash_state():
     """The rigid-support backlash case near resonance (1.05 × the mesh mode) and its 1-DOF orbit (two switches)."""
     from dataclasses import replace
 
-    from thermogear.dynamics.backlash_periodic import linear_initial_state, shoot
+    from thermogear.dynamics.backlash.backlash_periodic import linear_initial_state, shoot
 
     mass = J_1 * J_2 / (J_1 * R_B2**2 + J_2 * R_B1**2)
     natural = math.sqrt(3.6e7 / mass) / (2 * math.pi)  # the square wave's mean stiffness is 3.6e7 N/m
@@ -184,7 +184,7 @@ def test_a_missed_switch_is_refined_or_reported_never_converged():
     # orbit; on one thread 4 sub-steps find that orbit at once. Either way: never a one-switch "converged" orbit
     # (the guard's refinement itself is tested deterministically in test_backlash_ndof.py)
     from thermogear.drivetrain.response import drivetrain_backlash_system
-    from thermogear.dynamics.backlash_ndof import backlash_flow_ndof, backlash_periodic_orbit, odd_crossings
+    from thermogear.dynamics.backlash.backlash_ndof import backlash_flow_ndof, backlash_periodic_orbit, odd_crossings
 
     state, _, shot = _near_resonance_backlash_state()
     system, _ = drivetrain_backlash_system(_stiffened_pair(1e4).assemble(), state)
@@ -208,9 +208,9 @@ def test_rigid_supports_reproduce_the_one_dof_backlash_orbit():
     # finds the drivetrain's own
     from thermogear.drivetrain.backlash_response import drivetrain_backlash_response
     from thermogear.drivetrain.response import drivetrain_backlash_system
-    from thermogear.dynamics.backlash_metrics import orbit_metrics
-    from thermogear.dynamics.backlash_ndof import backlash_periodic_orbit
-    from thermogear.dynamics.backlash_periodic import backlash_flow, orbit_from_shot
+    from thermogear.dynamics.backlash.backlash_metrics import orbit_metrics
+    from thermogear.dynamics.backlash.backlash_ndof import backlash_periodic_orbit
+    from thermogear.dynamics.backlash.backlash_periodic import backlash_flow, orbit_from_shot
 
     state, problem, shot = _near_resonance_backlash_state()
     _, _, contact = backlash_flow(problem, shot["state"])

@@ -10,9 +10,9 @@ from test_drivetrain_backlash_sweep import _state
 
 from thermogear.drivetrain.backlash_response import drivetrain_backlash_response
 from thermogear.drivetrain.response import drivetrain_backlash_system
-from thermogear.dynamics.backlash_ndof import backlash_periodic_orbit
-from thermogear.dynamics.backlash_orbits_ndof import stable_orbits_ndof
-from thermogear.dynamics.backlash_trajectory import backlash_trajectory
+from thermogear.dynamics.backlash.backlash_ndof import backlash_periodic_orbit
+from thermogear.dynamics.backlash.backlash_orbits_ndof import stable_orbits_ndof
+from thermogear.dynamics.backlash.backlash_trajectory import backlash_trajectory
 
 SPEED_RPM = 1450.0  # in the softening resonance's band where the no-impact and an impacting orbit coexist
 

@@ -25,8 +25,8 @@ from thermogear.drivetrain.elements import StructureElement, zero_matrix
 from thermogear.drivetrain.modes import drivetrain_modes
 from thermogear.drivetrain.response import drivetrain_periodic_response, drivetrain_periodic_system
 from thermogear.drivetrain.train import MeshTrain, common_period_repeats, train_grid
-from thermogear.dynamics.modal_reduction import modal_basis
-from thermogear.dynamics.periodic_ndof import PiecewiseLinearSystem, monodromy, periodic_response
+from thermogear.dynamics.modes.modal_reduction import modal_basis
+from thermogear.dynamics.periodic_orbits.periodic_ndof import PiecewiseLinearSystem, monodromy, periodic_response
 from thermogear.errors import CaseError
 
 TWO_SHAFTS = Path(__file__).resolve().parents[1] / "data" / "two_shaft_drivetrain.toml"
@@ -358,9 +358,9 @@ def test_the_rigid_pair_as_a_drivetrain_equals_the_compiled_one_degree_of_freedo
     """Two rigid gears on rigid supports through the drivetrain's route (M, w, torque pair, rigid rotation removed,
     the n-DOF exact periodic solver) give the 1-DOF pair's orbit from its compiled closed-form kernels."""
     from thermogear.drivetrain.rigid_pair import RigidPair
-    from thermogear.dynamics.periodic import periodic_steady_state
-    from thermogear.mesh.model import MeshModel
+    from thermogear.dynamics.periodic_orbits.periodic import periodic_steady_state
     from thermogear.involute import disc_polar_inertia
+    from thermogear.mesh.model import MeshModel
 
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")

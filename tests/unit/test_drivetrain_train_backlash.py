@@ -20,9 +20,9 @@ from thermogear.case import case_from_document, load_case
 from thermogear.drivetrain.backlash_response import reduced_backlash_system
 from thermogear.drivetrain.case_model import case_drivetrain
 from thermogear.drivetrain.response import drivetrain_backlash_system
-from thermogear.dynamics.backlash_ndof import (BacklashSystem, MeshZone, backlash_flow_ndof,
+from thermogear.dynamics.backlash.backlash_ndof import (BacklashSystem, MeshZone, backlash_flow_ndof,
                                                backlash_periodic_orbit)
-from thermogear.dynamics.periodic_ndof import PiecewiseLinearSystem, periodic_response
+from thermogear.dynamics.periodic_orbits.periodic_ndof import PiecewiseLinearSystem, periodic_response
 from thermogear.errors import ProblemError
 
 

@@ -14,7 +14,7 @@ from scipy.linalg import expm
 
 from thermogear.dynamics import (MeshDynamicsProblem, evaluate_orbit, floquet_multipliers, periodic_steady_state,
                                  periodic_steady_state_batch, reference_solve_ivp)
-from thermogear.dynamics.periodic import monodromy, periodic_initial_state
+from thermogear.dynamics.periodic_orbits.periodic import monodromy, periodic_initial_state
 from thermogear.errors import ProblemError, ModelLimitError
 
 MASS = 1.0  # [kg]

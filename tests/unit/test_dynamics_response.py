@@ -15,7 +15,7 @@ from hypothesis import strategies as st
 from thermogear.dynamics import (MeshDynamicsProblem, evaluate_orbit, periodic_steady_state, region_name,
                                  transient_from_rest)
 from thermogear.dynamics.response import compute_metrics, response_from_orbit, response_from_transient
-from thermogear.dynamics.spectra import harmonic_spectrum, signal_spectrum
+from thermogear.dynamics.results.spectra import harmonic_spectrum, signal_spectrum
 from thermogear.errors import CaseError, ProblemError, ModelAssumptionWarning, ModelLimitError
 
 MASS = 1.0

@@ -12,14 +12,14 @@ import numpy as np
 import pytest
 
 from thermogear.dynamics import MeshDynamicsProblem, floquet_multipliers, periodic_steady_state
-from thermogear.dynamics.backlash_periodic import periodic_response as backlash_periodic_response
-from thermogear.dynamics.backlash_problem import BacklashMeshProblem
-from thermogear.dynamics.backlash_reference import reference_backlash_solve_ivp
-from thermogear.dynamics.periodic import evaluate_orbit, periodic_initial_state
-from thermogear.dynamics.reference import reference_solve_ivp
-from thermogear.dynamics.transient import transient_from_rest
-from thermogear.dynamics.periodic_ndof import periodic_response
-from thermogear.dynamics.periodic_structure import piecewise_system
+from thermogear.dynamics.backlash.backlash_periodic import periodic_response as backlash_periodic_response
+from thermogear.dynamics.periodic_orbits.periodic import evaluate_orbit, periodic_initial_state
+from thermogear.dynamics.periodic_orbits.periodic_ndof import periodic_response
+from thermogear.dynamics.periodic_orbits.periodic_structure import piecewise_system
+from thermogear.dynamics.problems.backlash_problem import BacklashMeshProblem
+from thermogear.dynamics.transients.backlash_reference import reference_backlash_solve_ivp
+from thermogear.dynamics.transients.reference import reference_solve_ivp
+from thermogear.dynamics.transients.transient import transient_from_rest
 from thermogear.errors import ProblemError
 
 MASS = 1.0  # [kg]

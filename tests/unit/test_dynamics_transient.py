@@ -10,7 +10,7 @@ import pytest
 
 from thermogear.dynamics import (MeshDynamicsProblem, largest_safe_step, periodic_steady_state, reference_solve_ivp,
                                  transient_from_rest, transient_python)
-from thermogear.dynamics.transient import DEFAULT_OMEGA_STEP, default_steps_per_interval
+from thermogear.dynamics.transients.transient import DEFAULT_OMEGA_STEP, default_steps_per_interval
 from thermogear.errors import ProblemError
 
 MASS = 1.0

@@ -1,4 +1,4 @@
-"""Mean tooth friction laws as a choice (thermogear.friction_models): each law against a hand calculation in its
+"""Mean tooth friction laws as a choice (thermogear.friction.models): each law against a hand calculation in its
 source's units, its power-law identities, the lubricant factors, the registry and the validity warnings."""
 
 from __future__ import annotations
@@ -9,7 +9,7 @@ import warnings
 import pytest
 
 from thermogear.errors import CaseError, ExtrapolationWarning
-from thermogear.friction_models import (FRICTION_MODELS, SCHLENK_LUBRICANT_FACTORS, PitchContact, friction_law)
+from thermogear.friction.models import (FRICTION_MODELS, SCHLENK_LUBRICANT_FACTORS, PitchContact, friction_law)
 
 # FZG type C at T1 = 265 N·m, 2250 rpm (the FVA 54/7 point): F_bt = T1/r_b1 = 265/0.033829 = 7834 N over b = 14 mm,
 # v_ΣC = 2·v_t·sin α_wt = 6.58 m/s, ρ_C = 8.38 mm; R_a 0.6 μm, η 20 mPa·s (SI below)

@@ -16,7 +16,7 @@ from thermogear.errors import CaseError
 from thermogear.gearbox.description import GearboxOperatingPoint
 from thermogear.gearbox.case_model import (gearbox_model_from_case,
                                            gearbox_operating_point, predicted_steady_state)
-from thermogear.temperature_source import temperature_field_from_case
+from thermogear.temperature.source import temperature_field_from_case
 
 CASE = Path(__file__).parents[1] / "data" / "gearbox" / "fzg_gearbox.toml"
 

@@ -83,7 +83,7 @@ def test_a_hot_stable_state_is_a_flagged_result_with_its_energy_balance():
     # the paper's friction law at 260 N·m: a stable state far above every limit (pinion 507 °C), never a refusal (at
     # K9, 302 N·m, until the stretches of shaft between gears and bearings were fins: that branch now folds near
     # 285 N·m)
-    from thermogear.friction_models import FRICTION_MODELS
+    from thermogear.friction.models import FRICTION_MODELS
 
     model = GearboxThermalModel(dataclasses.replace(illustrative_fzg_gearbox(), friction=FRICTION_MODELS["paper"]))
     state = model.steady_state(GearboxOperatingPoint(2175.0, 260.0, 20.0))

@@ -15,7 +15,7 @@ from thermogear.experiment.gearbox_warmup import gearbox_warmup, state_case
 from thermogear.gearbox.backlash import backlash_change_estimate
 from thermogear.gearbox.case_model import gearbox_model_from_case, gearbox_operating_point, predicted_steady_state
 from thermogear.simulation import Simulation
-from thermogear.temperature_source import temperature_field_from_case
+from thermogear.temperature.source import temperature_field_from_case
 
 CASE = Path(__file__).parents[1] / "data" / "gearbox" / "fzg_gearbox.toml"
 pytestmark = pytest.mark.filterwarnings("ignore::UserWarning")

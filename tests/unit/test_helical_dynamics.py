@@ -9,7 +9,7 @@ import warnings
 import numpy as np
 import pytest
 
-from thermogear.dynamics.periodic import periodic_steady_state
+from thermogear.dynamics.periodic_orbits.periodic import periodic_steady_state
 from thermogear.errors import ExtrapolationWarning, ModelAssumptionWarning
 from thermogear.helical.geometry import HelicalPair
 from thermogear.materials import Material

@@ -9,7 +9,7 @@ import warnings
 import numpy as np
 import pytest
 
-from thermogear.dynamics.spectra import harmonic_spectrum, right_continuous, time_mean_and_rms
+from thermogear.dynamics.results.spectra import harmonic_spectrum, right_continuous, time_mean_and_rms
 
 
 def _square_wave(samples_per_half: int):

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from thermogear.case import load_case
-from thermogear.dynamics.periodic import periodic_steady_state
+from thermogear.dynamics.periodic_orbits.periodic import periodic_steady_state
 from thermogear.errors import CaseError
 from thermogear.mesh.model import MeshModel
 from thermogear.simulation import Simulation

@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from thermogear.dynamics.problem import MeshDynamicsProblem
+from thermogear.dynamics.problems.problem import MeshDynamicsProblem
 
 
 def _problem(single_damping: float, double_damping: float, contact_ratio: float = 1.6, mass: float = 0.5):

@@ -36,7 +36,7 @@ def _square_wave(speed_rpm: float, intervals: int, noise: float = 0.0, seed: int
 
 # ------------------------------------------------------------------------------------------- mesh state from arrays
 def test_arrays_give_the_state_every_solver_takes():
-    from thermogear.dynamics.periodic import periodic_steady_state
+    from thermogear.dynamics.periodic_orbits.periodic import periodic_steady_state
     from thermogear.mesh.state import mesh_state_from_arrays
 
     j1, j2, r1, r2 = 4e-3, 9e-3, 0.0381, 0.0493
@@ -147,7 +147,7 @@ def test_a_table_in_a_case_runs_and_sweeps_as_the_same_arrays_in_python(tmp_path
 
 # ------------------------------------------------------------------------------------------- pieces within a tolerance
 def test_grouping_is_exact_at_zero_and_merges_only_within_the_tolerance():
-    from thermogear.dynamics.piece_groups import group_rows
+    from thermogear.dynamics.linear_algebra.piece_groups import group_rows
 
     rows = np.array([[1.0, 2.0], [1.0, 2.0 + 1e-12], [1.0, 3.0], [1.0, 2.0]])
     distinct, where = group_rows(rows, 0.0)
@@ -163,8 +163,8 @@ def test_grouping_is_exact_at_zero_and_merges_only_within_the_tolerance():
 
 def test_a_scattered_table_gives_the_clean_result_within_the_bound():
     from thermogear.drivetrain.response import drivetrain_periodic_system
-    from thermogear.dynamics.periodic_ndof import _piece_steps, periodic_response
-    from thermogear.dynamics.piece_groups import grouping_bound
+    from thermogear.dynamics.linear_algebra.piece_groups import grouping_bound
+    from thermogear.dynamics.periodic_orbits.periodic_ndof import _piece_steps, periodic_response
 
     assembled = geared_pair(bearing_damping=2e3, material_damping=1e-6, elements=2).assemble()
     mesh = assembled.mesh_vectors
@@ -191,8 +191,8 @@ def test_a_scattered_table_gives_the_clean_result_within_the_bound():
 
 def test_the_run_route_and_the_reached_coordinates_are_exact():
     from thermogear.drivetrain.response import drivetrain_periodic_system
-    from thermogear.dynamics import periodic_ndof
-    from thermogear.dynamics.periodic_runs import by_runs, reached_coordinates
+    from thermogear.dynamics.periodic_orbits import periodic_ndof
+    from thermogear.dynamics.periodic_orbits.periodic_runs import by_runs, reached_coordinates
 
     assembled = geared_pair(bearing_damping=2e3, material_damping=1e-6, elements=2).assemble()
     system, _ = drivetrain_periodic_system(assembled, _square_wave(3000.0, 40))

@@ -13,8 +13,8 @@ import pytest
 from backlash_textbook import textbook_problem
 
 from thermogear.dynamics import MeshDynamicsProblem, periodic_steady_state, response_from_orbit
-from thermogear.dynamics.metric_results import LinearMetrics, NonlinearMetrics
-from thermogear.dynamics.nonlinear_response import nonlinear_response
+from thermogear.dynamics.backlash.nonlinear_response import nonlinear_response
+from thermogear.dynamics.results.metric_results import LinearMetrics, NonlinearMetrics
 from thermogear.errors import ProblemError
 
 OMEGA = 2.0 * np.pi * 100.0  # [rad/s], 1 kg: a 100 Hz mesh mode
@@ -65,7 +65,7 @@ def test_a_dict_with_a_missing_or_unknown_key_is_refused():
 
 
 def test_typed_metrics_picks_the_kind_and_leaves_the_extra_keys_in_the_dict():
-    from thermogear.dynamics.metric_results import EXTRA_KEYS, typed_metrics
+    from thermogear.dynamics.results.metric_results import EXTRA_KEYS, typed_metrics
 
     problem = _square_wave(0.3, 0.05)
     metrics = response_from_orbit(problem, periodic_steady_state(problem)).metrics

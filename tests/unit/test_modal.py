@@ -6,9 +6,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from thermogear.dynamics.modal import (damped_modes, kinetic_energy_fractions, strain_energy_shares,
+from thermogear.dynamics.modes.modal import (damped_modes, kinetic_energy_fractions, strain_energy_shares,
                                        undamped_modes)
-from thermogear.dynamics.rigid_body import rigid_body_modes, rigid_body_reduction
+from thermogear.dynamics.modes.rigid_body import rigid_body_modes, rigid_body_reduction
 from thermogear.errors import ProblemError
 
 

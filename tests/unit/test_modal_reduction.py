@@ -9,9 +9,9 @@ from drivetrain_builders import geared_pair
 from test_drivetrain_response import _mesh_state
 
 from thermogear.drivetrain.response import drivetrain_periodic_response, drivetrain_periodic_system
-from thermogear.dynamics.modal_reduction import modal_basis
-from thermogear.dynamics.newmark import newmark_steady_state
-from thermogear.dynamics.periodic_ndof import periodic_response
+from thermogear.dynamics.modes.modal_reduction import modal_basis
+from thermogear.dynamics.periodic_orbits.periodic_ndof import periodic_response
+from thermogear.dynamics.transients.newmark import newmark_steady_state
 from thermogear.errors import CaseError, ProblemError
 
 

@@ -1,13 +1,14 @@
-"""Floquet multipliers and the periodic state from the range of the monodromy (dynamics/monodromy_range.py):
-against the dense product, its eigenvalues and its solve, on maps of a known low numerical rank."""
+"""Floquet multipliers and the periodic state from the range of the monodromy
+(dynamics/linear_algebra/monodromy_range.py): against the dense product, its eigenvalues and its solve, on maps of
+a known low numerical rank."""
 
 from __future__ import annotations
 
 import numpy as np
 import pytest
 
-from thermogear.dynamics.monodromy_range import floquet_of_maps
-from thermogear.dynamics.periodic_runs import floquet
+from thermogear.dynamics.linear_algebra.monodromy_range import floquet_of_maps
+from thermogear.dynamics.periodic_orbits.periodic_runs import floquet
 from thermogear.errors import ModelLimitError
 
 

@@ -1,6 +1,6 @@
 """The contact law of the mesh (``[dynamics] mesh``) and the temperature source (``[temperature] model``) are
-resolved once (issue 33): outside their registries, :mod:`thermogear.dynamics.mesh_laws` and
-:mod:`thermogear.temperature_kinds`, no code compares ``"linear"``/``"nonlinear"`` or ``"uniform"``/``"tabulated"``/
+resolved once (issue 33): outside their registries, :mod:`thermogear.dynamics.problems.mesh_laws` and
+:mod:`thermogear.temperature.kinds`, no code compares ``"linear"``/``"nonlinear"`` or ``"uniform"``/``"tabulated"``/
 ``"fem"``/``"gearbox"`` (it asks ``mesh_law(name).backlash``, ``temperature_source(name).uniform``). The scan is the
 model-name scan's (:mod:`test_no_model_name_branches`)."""
 
@@ -12,16 +12,16 @@ import pytest
 
 import thermogear
 from test_no_model_name_branches import model_name_branches
-from thermogear.dynamics.mesh_laws import MESH_LAWS
-from thermogear.temperature_kinds import TEMPERATURE_SOURCES
+from thermogear.dynamics.problems.mesh_laws import MESH_LAWS
+from thermogear.temperature.kinds import TEMPERATURE_SOURCES
 
 SOURCE = Path(thermogear.__file__).parent
 
 #: (registry module, the names it resolves, comparisons left on purpose with their reason: module -> count)
 SCANS = {
-    "contact law": ("dynamics/mesh_laws.py", frozenset(MESH_LAWS), {}),
+    "contact law": ("dynamics/problems/mesh_laws.py", frozenset(MESH_LAWS), {}),
     # (cli/warmup.py's `--model gearbox`, a warm-up model, is resolved from its own registry, WARMUP_MODELS)
-    "temperature source": ("temperature_kinds.py", frozenset(TEMPERATURE_SOURCES), {}),
+    "temperature source": ("temperature/kinds.py", frozenset(TEMPERATURE_SOURCES), {}),
 }
 
 

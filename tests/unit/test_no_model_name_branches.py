@@ -120,14 +120,14 @@ def test_the_scan_passes_what_the_seam_writes():
 
 #: Where the solution methods (``[dynamics] method``) and the sources of X_te (``[thermal] x_te_source``) are resolved
 #: from their names (issue 33: no method chosen by comparing a string outside one registry).
-METHOD_REGISTRIES = ("dynamics/solution_methods.py", "thermal_model_rules.py")
+METHOD_REGISTRIES = ("dynamics/problems/solution_methods.py", "thermal_model_rules.py")
 #: Comparisons with those names left on purpose: a response's kind (``metrics["response"]``: "periodic",
 #: "subharmonic", "non-periodic", "not settled") shares the word "periodic" with the method and is not a method.
 METHOD_KNOWN = {"report/evaluate.py": 1}
 
 
 def test_solution_methods_and_x_te_sources_are_compared_only_in_their_registries():
-    from thermogear.dynamics.solution_methods import SOLUTION_METHODS
+    from thermogear.dynamics.problems.solution_methods import SOLUTION_METHODS
     from thermogear.thermal_model_rules import X_TE_SOURCES
 
     names = frozenset(SOLUTION_METHODS) | frozenset(X_TE_SOURCES)
@@ -146,7 +146,7 @@ def test_solution_methods_and_x_te_sources_are_compared_only_in_their_registries
 def test_the_schema_accepts_exactly_the_registered_methods_and_x_te_sources():
     import typing
 
-    from thermogear.dynamics.solution_methods import SOLUTION_METHODS
+    from thermogear.dynamics.problems.solution_methods import SOLUTION_METHODS
     from thermogear.schema.dynamics import DynamicsSection
     from thermogear.schema.thermal import ThermalSection
     from thermogear.thermal_model_rules import X_TE_SOURCES
@@ -159,29 +159,36 @@ def _choice_registries() -> dict:
     """(registry module, the names it resolves) of every other choice of a model, method or law by name
     (issue 33): each name is compared in its registry only, every other module asks the resolved object."""
     from thermogear.cli.warmup import WARMUP_MODELS
-    from thermogear.damping import DAMPING_RULES
-    from thermogear.friction_models import FRICTION_MODELS
-    from thermogear.lubrication_methods import LUBRICATION_METHODS
-    from thermogear.luo2020.expansion import EXPANSION_FORMS
+    from thermogear.friction.damping import DAMPING_RULES
+    from thermogear.drivetrain_choices import END_KINDS, ROTATIONS
+    from thermogear.dynamics.problems.damping_modes import DAMPING_MODES
     from thermogear.experiment.spectrum import SPECTRUM_METHODS
     from thermogear.fem.elasticity import PLANE_ASSUMPTIONS
     from thermogear.fem.tooth_heat import BORE_CONDITIONS
+    from thermogear.friction.models import FRICTION_MODELS
     from thermogear.gearbox.bearing_entries import BEARING_TYPES
+    from thermogear.lubrication_methods import LUBRICATION_METHODS
     from thermogear.luo2020.case_inputs import LOAD_BASES
+    from thermogear.luo2020.expansion import EXPANSION_FORMS
     from thermogear.sweep.evaluation_methods import EVALUATION_METHODS
+    from thermogear.sweep.load_held import HOLDS
 
     return {
         "lubrication method ([gearbox.oil] lubrication)": ("lubrication_methods.py", LUBRICATION_METHODS),
         "warm-up model (warmup --model)": ("cli/warmup.py", WARMUP_MODELS),
         "evaluation method of a study (sweep --method)": ("sweep/evaluation_methods.py", EVALUATION_METHODS),
-        "mesh-damping rule ([damping] rule)": ("damping.py", DAMPING_RULES),
+        "mesh-damping rule ([damping] rule)": ("friction/damping.py", DAMPING_RULES),
         "form of Eq. 9 ([thermal] expansion_model)": ("luo2020/expansion.py", EXPANSION_FORMS),
-        "friction law (friction_model)": ("friction_models.py", FRICTION_MODELS),
+        "friction law (friction_model)": ("friction/models.py", FRICTION_MODELS),
         "load basis of the paper's k_T ([thermal] load_basis)": ("luo2020/case_inputs.py", LOAD_BASES),
         "spectrum estimate (vibration --method)": ("experiment/spectrum.py", SPECTRUM_METHODS),
         "plane assumption of the FE model ([fem] plane)": ("fem/elasticity.py", PLANE_ASSUMPTIONS),
         "bore condition of the FE heat model ([fem] bore)": ("fem/tooth_heat.py", BORE_CONDITIONS),
         "bearing type of a loss entry (type)": ("gearbox/bearing_entries.py", BEARING_TYPES),
+        "mesh damping in flight ([dynamics] damping_in_flight)": ("dynamics/problems/damping_modes.py", DAMPING_MODES),
+        "load a speed sweep holds (sweep --hold)": ("sweep/load_held.py", HOLDS),
+        "kind of a train's end ([drivetrain.driving] kind)": ("drivetrain_choices.py", END_KINDS),
+        "pinion's turning sense ([drivetrain] pinion_rotation)": ("drivetrain_choices.py", ROTATIONS),
     }
 
 
@@ -190,7 +197,9 @@ CHOICES = ("lubrication method ([gearbox.oil] lubrication)", "warm-up model (war
            "form of Eq. 9 ([thermal] expansion_model)", "friction law (friction_model)",
            "load basis of the paper's k_T ([thermal] load_basis)", "spectrum estimate (vibration --method)",
            "plane assumption of the FE model ([fem] plane)", "bore condition of the FE heat model ([fem] bore)",
-           "bearing type of a loss entry (type)")
+           "bearing type of a loss entry (type)", "mesh damping in flight ([dynamics] damping_in_flight)",
+           "load a speed sweep holds (sweep --hold)", "kind of a train's end ([drivetrain.driving] kind)",
+           "pinion's turning sense ([drivetrain] pinion_rotation)")
 
 
 @pytest.mark.parametrize("choice", CHOICES)
@@ -212,7 +221,7 @@ def test_every_choice_is_compared_only_in_its_registry(choice):
 
 #: Comparisons left on purpose, with their reason: the schema checks the keys of the ``"constant"`` friction law
 #: (its coefficient required, its lubricant factor refused) by name, because it sits below the friction laws' layer
-#: (:mod:`thermogear.friction_models` reads the lubricant model, which reads the case: the layers contract).
+#: (:mod:`thermogear.friction.models` reads the lubricant model, which reads the case: the layers contract).
 CHOICES_KNOWN = {"friction law (friction_model)": {"schema/friction_inputs.py": 3}}
 
 
@@ -230,7 +239,7 @@ def test_the_choice_scan_finds_the_forms_the_package_held():
 def test_the_schema_accepts_exactly_the_registered_choices():
     import typing
 
-    from thermogear.damping import DAMPING_RULES
+    from thermogear.friction.damping import DAMPING_RULES
     from thermogear.lubrication_methods import LUBRICATION_METHODS
     from thermogear.luo2020.expansion import EXPANSION_FORMS
     from thermogear.schema.dynamics import DampingSection
@@ -248,6 +257,15 @@ def test_the_schema_accepts_exactly_the_registered_choices():
     assert set(typing.get_args(ThermalSection.model_fields["load_basis"].annotation)) == set(LOAD_BASES)
     assert set(typing.get_args(FemSection.model_fields["plane"].annotation)) == set(PLANE_ASSUMPTIONS)
     assert set(typing.get_args(FemSection.model_fields["bore"].annotation)) == set(BORE_CONDITIONS)
+    from thermogear.dynamics.problems.damping_modes import DAMPING_MODES
+    from thermogear.schema.dynamics import DynamicsSection
+
+    assert typing.get_args(DynamicsSection.model_fields["damping_in_flight"].annotation) == tuple(DAMPING_MODES)
+    from thermogear.drivetrain_choices import END_KINDS, ROTATIONS
+    from thermogear.schema.drivetrain import DrivetrainSection, EndSection
+
+    assert typing.get_args(EndSection.model_fields["kind"].annotation) == tuple(END_KINDS)
+    assert typing.get_args(DrivetrainSection.model_fields["pinion_rotation"].annotation) == tuple(ROTATIONS)
 
 
 def test_a_bearing_entry_of_each_type_is_that_type():

@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from thermogear.cli.run import _print_table, model_json
-from thermogear.dynamics.nonlinear_response import nonlinear_response
+from thermogear.dynamics.backlash.nonlinear_response import nonlinear_response
 
 from backlash_textbook import textbook_problem
 
@@ -39,7 +39,7 @@ def test_non_periodic_response_is_not_valid_and_its_json_carries_null_and_a_stat
 def test_the_table_says_not_found_for_a_non_periodic_response(response):
     from rich.console import Console
 
-    from thermogear.dynamics.metric_results import typed_metrics
+    from thermogear.dynamics.results.metric_results import typed_metrics
     from thermogear.orchestrator import PairResult
 
     console = Console(record=True, width=140, color_system=None)

@@ -6,7 +6,7 @@ import re
 from pathlib import Path
 
 import thermogear
-from thermogear import temperature_field
+from thermogear.temperature import field as temperature_field
 from thermogear.thermoelastic import inputs
 
 SOURCE = Path(thermogear.__file__).parent
@@ -21,7 +21,7 @@ def definitions(name: str, root: Path = SOURCE) -> list[str]:
 
 def test_material_maximum_is_defined_once():
     # defined with the other temperature limits (issue 35: one set of limits for every command)
-    assert definitions("MATERIAL_MAXIMUM_C") == ["temperature_limits.py"]
+    assert definitions("MATERIAL_MAXIMUM_C") == ["temperature/limits.py"]
     assert inputs.MATERIAL_MAXIMUM_C is temperature_field.MATERIAL_MAXIMUM_C
 
 

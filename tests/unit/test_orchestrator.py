@@ -11,7 +11,7 @@ import pytest
 
 import thermogear
 from thermogear.case import load_case
-from thermogear.dynamics.mesh_laws import MESH_LAWS, mesh_law
+from thermogear.dynamics.problems.mesh_laws import MESH_LAWS, mesh_law
 from thermogear.errors import CaseError
 from thermogear.orchestrator import Orchestrator, RunResults
 from thermogear.simulation import Simulation
@@ -120,7 +120,7 @@ def test_each_result_has_a_table_and_a_dataset(two_shafts):
 
 
 def test_the_backlash_pair_runs_through_the_orchestrator_as_the_simulation():
-    from thermogear.dynamics.metric_results import NonlinearMetrics
+    from thermogear.dynamics.results.metric_results import NonlinearMetrics
 
     case = load_case("luo2019").with_changes(**{"dynamics.mesh": "nonlinear"})
     results = thermogear.run(case, models=("elastic",))

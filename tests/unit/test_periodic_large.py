@@ -1,16 +1,17 @@
 """The periodic response of a large system (state of 401 and more): the shared Padé evaluation of its pieces and
 the range of its monodromy against the route that exponentiates each piece by itself and takes the dense monodromy
-and its eigenvalues (dynamics/periodic_ndof.py, shared_pade.py, monodromy_range.py, periodic_runs.py)."""
+and its eigenvalues (dynamics/periodic_orbits/periodic_ndof.py, shared_pade.py, monodromy_range.py,
+periodic_runs.py)."""
 
 from __future__ import annotations
 
 import numpy as np
 import pytest
 
-import thermogear.dynamics.monodromy_range as monodromy_range
-import thermogear.dynamics.periodic_runs as periodic_runs
-import thermogear.dynamics.shared_pade as shared_pade
-from thermogear.dynamics.periodic_ndof import PiecewiseLinearSystem, periodic_response
+import thermogear.dynamics.linear_algebra.monodromy_range as monodromy_range
+import thermogear.dynamics.periodic_orbits.periodic_runs as periodic_runs
+import thermogear.dynamics.linear_algebra.shared_pade as shared_pade
+from thermogear.dynamics.periodic_orbits.periodic_ndof import PiecewiseLinearSystem, periodic_response
 
 
 def _stiff_chain(size: int = 200, period: float = 1e-3, intervals: int = 2) -> PiecewiseLinearSystem:
@@ -35,7 +36,7 @@ def _stiff_chain(size: int = 200, period: float = 1e-3, intervals: int = 2) -> P
 
 def _route_before(monkeypatch):
     monkeypatch.setattr(monodromy_range, "LARGEST_RANK_SHARE", 0.0)
-    monkeypatch.setattr(shared_pade, "low_rank_piece_exponentials", lambda *arguments: None)
+    monkeypatch.setattr(shared_pade, "shared_piece_powers", lambda *arguments: None)
 
 
 @pytest.mark.parametrize("intervals", [2, 40])
@@ -50,8 +51,16 @@ def test_large_system_equals_the_route_of_separate_exponentials_and_dense_monodr
         return multipliers, state
 
     monkeypatch.setattr(periodic_runs, "floquet_of_maps", watched)
+    shared = []
+    original_powers = shared_pade.shared_piece_powers
+    monkeypatch.setattr(shared_pade, "shared_piece_powers", lambda *arguments: shared.append(
+        original_powers(*arguments)) or shared[-1])
     response = periodic_response(system, samples_per_piece=8 if intervals == 2 else 2)
     assert used and used[0] > 0
+    # the runs continue the powers of the pieces' common step (two pieces of 0.6 and 0.4 of the period: n = 3, 2;
+    # 40 equal intervals: n = 1)
+    assert shared and shared[0] is not None
+    assert sorted(shared[0].multiples.tolist()) == ([2, 3] if intervals == 2 else [1, 1])
     with monkeypatch.context() as patch:
         _route_before(patch)
         reference = periodic_response(system, samples_per_piece=8 if intervals == 2 else 2)

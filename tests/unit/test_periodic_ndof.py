@@ -6,10 +6,10 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from thermogear.dynamics.modal import damped_modes
-from thermogear.dynamics.periodic import periodic_steady_state
-from thermogear.dynamics.periodic_ndof import PiecewiseLinearSystem, monodromy, periodic_response
-from thermogear.dynamics.problem import MeshDynamicsProblem
+from thermogear.dynamics.modes.modal import damped_modes
+from thermogear.dynamics.periodic_orbits.periodic import periodic_steady_state
+from thermogear.dynamics.periodic_orbits.periodic_ndof import PiecewiseLinearSystem, monodromy, periodic_response
+from thermogear.dynamics.problems.problem import MeshDynamicsProblem
 from thermogear.errors import ModelLimitError, ProblemError
 
 
@@ -172,7 +172,7 @@ def test_chunked_route_equals_the_piece_by_piece_reference(monkeypatch, levels, 
     # stacks) forced on the small chain, in chunks of 10 pieces so that several chunks and a partial last one occur:
     # the whole pieces' transitions formed directly (not as powers of the sub-steps) and the states stepped one
     # sub-step at a time are exact as the block route, so the same 1e-10 of the orbit's size as above
-    import thermogear.dynamics.periodic_ndof as periodic
+    import thermogear.dynamics.periodic_orbits.periodic_ndof as periodic
 
     system = _many_pieces(levels)
     monkeypatch.setattr(periodic, "LEAN_ROUTE_BYTES", 0)
@@ -189,8 +189,8 @@ def test_chunked_route_equals_the_piece_by_piece_reference(monkeypatch, levels, 
 def test_motion_projections_from_the_orbit_stay_on_it(monkeypatch):
     # the motion from the periodic state is the orbit itself, period after period: the functionals watched by the
     # chunked pass (chunks of 7 pieces) equal the orbit's own sampled displacement at every sub-step of 3 periods
-    import thermogear.dynamics.periodic_ndof as periodic
-    from thermogear.dynamics.periodic_motion import motion_projections
+    import thermogear.dynamics.periodic_orbits.periodic_ndof as periodic
+    from thermogear.dynamics.periodic_orbits.periodic_motion import motion_projections
 
     system = _many_pieces(None)
     samples = 2
@@ -211,8 +211,8 @@ def test_motion_prepared_on_the_orbits_pass_equals_its_own_pass(monkeypatch):
     # the start-up check's motion prepared on the periodic solve's pass of sub-step exponentials (its observer, on
     # the chunked route) is the motion of motion_projections' own pass bit for bit (the same chunks, the same
     # transitions in the same order); on a route that forms no chunks the projector is fed nothing and says so
-    import thermogear.dynamics.periodic_ndof as periodic
-    from thermogear.dynamics.periodic_motion import MotionProjector, motion_projections
+    import thermogear.dynamics.periodic_orbits.periodic_ndof as periodic
+    from thermogear.dynamics.periodic_orbits.periodic_motion import MotionProjector, motion_projections
 
     system = _many_pieces(None)
     samples = 2

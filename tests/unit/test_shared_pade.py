@@ -1,5 +1,5 @@
 """Exponentials of pieces that differ by a low-rank term over commensurate durations from one Padé evaluation
-(dynamics/shared_pade.py): against scipy's expm of each piece, and the cases it must decline."""
+(dynamics/linear_algebra/shared_pade.py): against scipy's expm of each piece, and the cases it must decline."""
 
 from __future__ import annotations
 
@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 from scipy.linalg import expm
 
-from thermogear.dynamics.shared_pade import commensurate_steps, low_rank_piece_exponentials
+from thermogear.dynamics.linear_algebra.shared_pade import commensurate_steps, low_rank_piece_exponentials
 
 
 def _pieces(size: int = 60, levels=(2.6e8, 1.6e8), seed: int = 5):
@@ -54,7 +54,7 @@ def test_shared_pade_equals_each_piece_s_own_exponential(durations):
 def test_large_pieces_square_as_rank_updates_of_the_first(monkeypatch):
     """Above 4·61 coordinates the other pieces' Padé results, squarings and powers stay rank updates of the first
     piece's (the dense fallback is not taken): still each piece's own exponential."""
-    import thermogear.dynamics.shared_pade as shared_pade
+    import thermogear.dynamics.linear_algebra.shared_pade as shared_pade
 
     units, left, left_inverse = _pieces(size=250)
     dense = []
@@ -77,7 +77,7 @@ def test_large_pieces_square_as_rank_updates_of_the_first(monkeypatch):
 def test_an_update_grown_past_its_share_continues_dense(monkeypatch):
     """Where an update's rank passes its limit (forced here by a zero limit after the Padé step) the piece goes on
     with dense products: the same exponentials."""
-    import thermogear.dynamics.shared_pade as shared_pade
+    import thermogear.dynamics.linear_algebra.shared_pade as shared_pade
 
     units, left, left_inverse = _pieces(size=250)
     original = shared_pade._compressed

@@ -16,8 +16,8 @@ from test_backlash_ndof import _chain
 from thermogear.case import case_from_document
 from thermogear.drivetrain.case_model import SAMPLES_PER_PIECE, case_drivetrain
 from thermogear.drivetrain.response import drivetrain_periodic_response
-from thermogear.dynamics.periodic_ndof import periodic_response
-from thermogear.dynamics.periodic_solves import PeriodicSolves, same_system
+from thermogear.dynamics.periodic_orbits.periodic_ndof import periodic_response
+from thermogear.dynamics.periodic_orbits.periodic_solves import PeriodicSolves, same_system
 
 USER_DRIVETRAIN = Path(__file__).resolve().parents[1] / "data" / "user_drivetrain.toml"
 
@@ -57,7 +57,7 @@ def test_the_linear_response_takes_the_backlash_solvers_switch_free_solve(user_d
     kept = built._solves  # the case drivetrain's kept solves
     assert len(kept) == 1
     import thermogear.drivetrain.response as response_module
-    import thermogear.dynamics.periodic_solves as solves_module
+    import thermogear.dynamics.periodic_orbits.periodic_solves as solves_module
 
     for module in (response_module, solves_module):
         monkeypatch.setattr(module, "periodic_response", lambda *arguments, **keywords: pytest.fail(
@@ -84,10 +84,10 @@ def test_the_chunked_solve_with_and_without_the_exponentials_parts(monkeypatch, 
     # pieces through theirs; where the parts are refused (here: the rank route forced off, as for patterns of high
     # rank) it forms the matrices, the sub-steps in a second pass. Both exact: 1e-10 of the orbit's size against the
     # piece-by-piece reference (as test_periodic_ndof's chunked route), and the start-up projector fed either way
-    import thermogear.dynamics.periodic_ndof as periodic
+    import thermogear.dynamics.periodic_orbits.periodic_ndof as periodic
     from test_periodic_ndof import _many_pieces, _reference_orbit
 
-    from thermogear.dynamics.periodic_motion import MotionProjector, motion_projections
+    from thermogear.dynamics.periodic_orbits.periodic_motion import MotionProjector, motion_projections
 
     system = _many_pieces(None)
     monkeypatch.setattr(periodic, "LEAN_ROUTE_BYTES", 0)

@@ -9,8 +9,8 @@ from typing import ClassVar
 import pytest
 
 from thermogear.case import load_case
-from thermogear.dynamics.backlash_problem import BacklashMeshProblem
-from thermogear.dynamics.problem import MeshDynamicsProblem
+from thermogear.dynamics.problems.backlash_problem import BacklashMeshProblem
+from thermogear.dynamics.problems.problem import MeshDynamicsProblem
 from thermogear.dynamics.solvers import (BacklashShootingSolver, BacklashTransientSolver, PeriodicSolver,
                                          TransientSolver)
 from thermogear.errors import CaseError

@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 from thermogear.case import case_from_document, parameter_set_path
-from thermogear.case_limits import FREQUENCY_RATIO_RANGE, estimated_frequency_ratio
+from thermogear.case.limits import FREQUENCY_RATIO_RANGE, estimated_frequency_ratio
 from thermogear.errors import CaseError
 
 

@@ -8,8 +8,8 @@ import numpy as np
 import pytest
 
 from thermogear.case import load_case
-from thermogear.dynamics.periodic_batch_metrics import _SERIES_DECAY, _SERIES_U, _step_transitions
-from thermogear.dynamics.transition_2x2 import transition_2x2
+from thermogear.dynamics.linear_algebra.transition_2x2 import transition_2x2
+from thermogear.dynamics.periodic_orbits.periodic_batch_metrics import _SERIES_DECAY, _SERIES_U, _step_transitions
 from thermogear.sweep.study import Study
 
 from sweep_paths import assert_fast_path_equals_simulation

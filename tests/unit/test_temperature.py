@@ -11,9 +11,9 @@ import numpy as np
 import pytest
 
 from thermogear.errors import CaseError, ExtrapolationWarning, ModelAssumptionWarning, ThermogearError
-import thermogear.temperature_source as temperature_module
-from thermogear.temperature_field import LUO2020_LIMITS, MATERIAL_MINIMUM_C, THERMOELASTIC_LIMITS
-from thermogear.temperature_source import (MATERIAL_MAXIMUM_C, TemperatureField, check_flank_table,
+import thermogear.temperature.source as temperature_module
+from thermogear.temperature.field import LUO2020_LIMITS, MATERIAL_MINIMUM_C, THERMOELASTIC_LIMITS
+from thermogear.temperature.source import (MATERIAL_MAXIMUM_C, TemperatureField, check_flank_table,
                                             check_temperatures, temperature_field_from_case)
 
 BODY = dict(pinion_base_c=70.0, pinion_bore_c=65.0, wheel_base_c=70.0, wheel_bore_c=65.0)
@@ -40,7 +40,7 @@ def test_fit_reproduces_a_polynomial_of_its_own_degree():
 def test_rank_deficient_fit_is_refused_with_its_key():
     # four distinct positions, three of them 1e-13 apart on a unit span: the scaled Vandermonde matrix of degree 3
     # is singular to double precision, so the fit cannot determine the polynomial (NumPy reports rank 2 or 3 < 4)
-    from thermogear.temperature_field import fit_flank_polynomial
+    from thermogear.temperature.field import fit_flank_polynomial
 
     with pytest.raises(CaseError) as raised:
         fit_flank_polynomial([0.0, 1e-13, 2e-13, 1.0], [60.0, 61.0, 62.0, 70.0], 3)

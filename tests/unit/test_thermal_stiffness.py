@@ -8,6 +8,7 @@ import types
 import numpy as np
 import pytest
 
+from thermogear.case.pieces import call_with_pieces
 from thermogear.errors import CaseError, ModelAssumptionWarning, ThermogearError
 from thermogear.luo2020 import calibration as calibration_module
 from thermogear.luo2020.calibration import x_te_for_drop
@@ -119,7 +120,7 @@ def test_case_with_zero_x_te_equals_the_elastic_pair(luo2019):
     from thermogear.stiffness.potential_energy import pair_compliance
 
     roll = luo2019.gear_pair.roll_grid(21)
-    result = paper_thermal_model(luo2019).thermal_stiffness(roll, x_te=0.0)
+    result = call_with_pieces(paper_thermal_model, luo2019).thermal_stiffness(roll, x_te=0.0)
     np.testing.assert_array_equal(result.stiffness, pair_compliance(luo2019.gear_pair, luo2019.material,
                                                                     roll).stiffness)
 
@@ -127,7 +128,7 @@ def test_case_with_zero_x_te_equals_the_elastic_pair(luo2019):
 def test_dynamics_entry_matches_the_direct_evaluation(luo2019):
     pair = luo2019.gear_pair
     roll = np.linspace(pair.path_points["A"], pair.path_points["E"], 17)
-    model = paper_thermal_model(luo2019)
+    model = call_with_pieces(paper_thermal_model, luo2019)
     direct = model.thermal_stiffness(roll).stiffness
     # The dynamics entry interpolates the cached PEM table (cubic spline, < 1e-6 relative).
     np.testing.assert_allclose(model.pair_stiffness_at(roll), direct, rtol=1e-5)
@@ -137,18 +138,19 @@ def test_dynamics_entry_matches_the_direct_evaluation(luo2019):
 
 def test_resolve_given(luo2019):
     case = luo2019.with_changes(thermal={"x_te_source": "given", "x_te": 0.3})
-    assert paper_thermal_model(case).resolve_x_te() == (0.3, "given")
+    assert call_with_pieces(paper_thermal_model, case).resolve_x_te() == (0.3, "given")
     with pytest.raises(CaseError, match="needs thermal.x_te"):
-        paper_thermal_model(luo2019.with_changes(thermal={"x_te_source": "given"})).resolve_x_te()
+        call_with_pieces(paper_thermal_model, luo2019.with_changes(thermal={"x_te_source": "given"})).resolve_x_te()
 
 
 def test_resolve_calibrated_is_labelled_as_a_calibration(luo2019):
-    model = paper_thermal_model(luo2019)
+    model = call_with_pieces(paper_thermal_model, luo2019)
     value, label = model.resolve_x_te()
     assert label.startswith("calibrated: X_te=") and "14.52 % drop at C" in label
     assert value == pytest.approx(model.calibrate_x_te().x_te, rel=1e-15)
     with pytest.raises(CaseError, match="either given or calibrated"):
-        paper_thermal_model(luo2019.with_changes(thermal=dict(luo2019.document["thermal"], x_te=0.2))).resolve_x_te()
+        both = luo2019.with_changes(thermal=dict(luo2019.document["thermal"], x_te=0.2))
+        call_with_pieces(paper_thermal_model, both).resolve_x_te()
 
 
 def test_resolve_fem_without_provider(luo2019, monkeypatch):
@@ -156,16 +158,17 @@ def test_resolve_fem_without_provider(luo2019, monkeypatch):
     monkeypatch.setattr(calibration_module, "_PROVIDERS", {})
     monkeypatch.setitem(sys.modules, "thermogear.fem.provider", types.ModuleType("thermogear.fem.provider"))
     with pytest.raises(ThermogearError, match="not registered"):
-        paper_thermal_model(luo2019.with_changes(thermal={"x_te_source": "fem"})).resolve_x_te()
+        call_with_pieces(paper_thermal_model, luo2019.with_changes(thermal={"x_te_source": "fem"})).resolve_x_te()
     calibration_module.register_x_te_provider("fem", lambda case: 0.4)
-    assert paper_thermal_model(luo2019.with_changes(thermal={"x_te_source": "fem"})).resolve_x_te() == (0.4, "fem")
+    fem = luo2019.with_changes(thermal={"x_te_source": "fem"})
+    assert call_with_pieces(paper_thermal_model, fem).resolve_x_te() == (0.4, "fem")
     calibration_module.register_x_te_provider("fem", lambda case: -0.4)
     with pytest.raises(CaseError, match=">= 0"):
-        paper_thermal_model(luo2019.with_changes(thermal={"x_te_source": "fem"})).resolve_x_te()
+        call_with_pieces(paper_thermal_model, luo2019.with_changes(thermal={"x_te_source": "fem"})).resolve_x_te()
 
 
 def test_calibration_at_another_point(luo2019):
-    model = paper_thermal_model(luo2019)
+    model = call_with_pieces(paper_thermal_model, luo2019)
     calibration = model.calibrate_x_te(drop_percent=10.0, point="A")
     result = model.thermal_stiffness(np.array([luo2019.gear_pair.path_points["A"]]), x_te=calibration.x_te)
     assert float(result.drop_percent[0]) == pytest.approx(10.0, rel=1e-9)
@@ -182,7 +185,7 @@ def test_a_calibrated_x_te_makes_k_t_the_same_at_every_load(luo2019, basis):
     case = luo2019.with_changes(thermal=dict(luo2019.document["thermal"], load_basis=basis))
     pair = case.gear_pair
     roll = np.linspace(pair.path_points["A"], pair.path_points["E"], 23)
-    model = paper_thermal_model(case)
+    model = call_with_pieces(paper_thermal_model, case)
     light, heavy = (model.pair_stiffness_at(roll, normal_load=load) for load in (1.0e3, 8.0e3))
     # equal to rounding: X_te is one multiplication and one division by the load away from the other's
     np.testing.assert_allclose(light, heavy, rtol=1e-13, atol=0.0)
@@ -199,9 +202,9 @@ def test_a_given_x_te_makes_the_secant_k_t_depend_on_the_load(luo2019):
     # k_T = F_n·k_e/(F_n + X_te·k_e·ΣΔ_t) (Eq. 17): the drop shrinks as the load grows
     # the X_te that luo2019's calibration gives at its own load, now given
     case = luo2019.with_changes(thermal={"x_te_source": "given",
-                                         "x_te": paper_thermal_model(luo2019).resolve_x_te()[0]})
+                                         "x_te": call_with_pieces(paper_thermal_model, luo2019).resolve_x_te()[0]})
     roll = np.array([case.gear_pair.path_points["C"]])
-    model = paper_thermal_model(case)
+    model = call_with_pieces(paper_thermal_model, case)
     elastic = model.thermal_stiffness(roll, x_te=0.0).stiffness
     drops = [float(1.0 - model.pair_stiffness_at(roll, normal_load=load)[0] / elastic[0])
              for load in (1.0e3, 8.0e3)]
@@ -210,27 +213,26 @@ def test_a_given_x_te_makes_the_secant_k_t_depend_on_the_load(luo2019):
 
 @pytest.mark.filterwarnings("ignore::thermogear.errors.ModelAssumptionWarning")
 def test_the_resolved_model_keeps_no_case_alive(luo2019):
-    # what paper_thermal_model computes once per case (splines, the own X_te) is memoised per case without a
-    # reference back to it: a case asked for its k_T is freed with its memo (a sweep makes thousands of cases)
+    # what paper_thermal_model computes once per case (splines, the own X_te) is memoised per case (the piece
+    # paper_thermal_memo) without a reference back to it: a case asked for its k_T is freed with its memo (a sweep makes thousands of cases)
     import gc
     import weakref
 
-    from thermogear.luo2020 import case_stiffness
-    from thermogear.luo2020.case_stiffness import paper_thermal_model
+    from thermogear.luo2020.case_stiffness import paper_thermal_memo
 
     case = luo2019.with_changes(**{"operating.speed_rpm": 1500.0})
     key = id(case)
     roll = np.array([case.gear_pair.path_points["C"]])
-    first = paper_thermal_model(case)
+    first = call_with_pieces(paper_thermal_model, case)
     value = first.pair_stiffness_at(roll)
     # the memo is the case's: a second resolution reuses the spline and the X_te of the first
-    assert paper_thermal_model(case).memo is first.memo and first.memo["splines"]
-    np.testing.assert_array_equal(paper_thermal_model(case).pair_stiffness_at(roll), value)
+    assert call_with_pieces(paper_thermal_model, case).memo is first.memo and first.memo["splines"]
+    np.testing.assert_array_equal(call_with_pieces(paper_thermal_model, case).pair_stiffness_at(roll), value)
     alive = weakref.ref(case)
     del case, first
     gc.collect()
     assert alive() is None
-    assert key not in case_stiffness._MEMOS  # the memo went with its case: the table does not grow over a sweep
+    assert key not in paper_thermal_memo.cases()  # the memo went with its case: the table does not grow over a sweep
 
 
 def test_only_the_papers_pair_model_uses_x_te():

@@ -10,6 +10,7 @@ import warnings
 import pytest
 
 from thermogear.case import case_from_document, load_case
+from thermogear.case.pieces import call_with_pieces
 from thermogear.luo2020.case_stiffness import paper_thermal_model
 from thermogear.mesh.model import MeshModel
 from thermogear.thermoelastic.mesh import ThermoelasticMesh
@@ -22,7 +23,7 @@ GEOMETRY_KEYS = {"centre_distance_mm", "pressure_angle_deg", "contact_ratio", "b
 
 def _block(case):
     # resolved as the stiffness command resolves the case
-    models = ThermalModels(paper=paper_thermal_model(case), elastic=MeshModel(case, "elastic"),
+    models = ThermalModels(paper=call_with_pieces(paper_thermal_model, case), elastic=MeshModel(case, "elastic"),
                            thermal=MeshModel(case, "thermal"), component_of=lambda: ThermoelasticMesh.from_case(case),
                            name=case.name)
     with warnings.catch_warnings():

@@ -215,9 +215,28 @@ def test_a_warm_up_state_of_the_papers_case_keeps_its_calibrated_x_te():
     # interference) keeps that X_te instead of failing to calibrate, and replaces the whole temperature section
     from thermogear.case import load_case
     from thermogear.experiment.warmup import state_case
+    from thermogear.case.pieces import call_with_pieces
     from thermogear.luo2020.case_stiffness import paper_thermal_model
 
     case = load_case("luo2019")
     cold = state_case(case, 20.0)
     assert cold.temperature.model == "uniform" and cold.temperature.flank_c is None
-    assert cold.thermal.x_te_source == "given" and cold.thermal.x_te == paper_thermal_model(case).resolve_x_te()[0]
+    calibrated = call_with_pieces(paper_thermal_model, case).resolve_x_te()[0]
+    assert cold.thermal.x_te_source == "given" and cold.thermal.x_te == calibrated
+
+
+def test_both_warm_ups_hold_a_calibrated_x_te_one_way():
+    # the measured and the predicted warm-up write their states each their own way (through the case file's keys,
+    # through the sections) but hold the case's calibrated X_te by one rule: held_x_te
+    from thermogear.case import load_case
+    from thermogear.case.pieces import call_with_pieces
+    from thermogear.experiment.warmup import held_x_te, state_case
+    from thermogear.luo2020.case_stiffness import paper_thermal_model
+
+    paper = load_case("luo2019")
+    held = call_with_pieces(held_x_te, paper)
+    assert held == {"x_te": call_with_pieces(paper_thermal_model, paper).resolve_x_te()[0], "x_te_source": "given",
+                    "calibration_drop_percent": None}
+    warm = state_case(paper, 60.0)
+    assert {key: getattr(warm.thermal, key) for key in held} == held
+    assert call_with_pieces(held_x_te, load_case("fzg_type_c")) == {}  # the thermo-elastic model reads no X_te

@@ -11,7 +11,7 @@ import dataclasses
 import numpy as np
 import pytest
 
-from thermogear.friction_models import FRICTION_MODELS
+from thermogear.friction.models import FRICTION_MODELS
 from thermogear.fzg import FZG_LOAD_STAGE_TORQUE_NM
 from thermogear.gearbox.description import GearboxOperatingPoint, OilConditioning
 from thermogear.gearbox.fzg_example import illustrative_fzg_gearbox

@@ -19,7 +19,7 @@ import math
 
 import pytest
 
-from thermogear.friction_models import PitchContact, friction_law
+from thermogear.friction.models import PitchContact, friction_law
 
 T1C, T2C = 67.447e-3, 266.979e-3  # [m]
 BASE_HELIX = math.radians(9.391)

@@ -15,6 +15,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from thermogear.case.pieces import call_with_pieces
 from thermogear.luo2020.case_stiffness import paper_thermal_model
 from thermogear.mesh.model import MeshModel
 from thermogear.summaries.thermal import thermal_curves, thermal_stiffness_summary
@@ -22,13 +23,14 @@ from thermogear.summaries.thermal import thermal_curves, thermal_stiffness_summa
 
 @pytest.fixture(scope="module")
 def summary(luo2019):
-    return thermal_stiffness_summary(paper_thermal_model(luo2019), MeshModel(luo2019, "elastic"),
+    return thermal_stiffness_summary(call_with_pieces(paper_thermal_model, luo2019), MeshModel(luo2019, "elastic"),
                                      MeshModel(luo2019, "thermal"))
 
 
 @pytest.fixture(scope="module")
 def pair_share_curves(luo2019):
-    return thermal_curves(paper_thermal_model(luo2019.with_changes(**{"thermal.load_basis": "pair_share"})))
+    pair_share = luo2019.with_changes(**{"thermal.load_basis": "pair_share"})
+    return thermal_curves(call_with_pieces(paper_thermal_model, pair_share))
 
 
 def test_calibration_is_reported_and_reproduces_its_target(summary):
@@ -59,7 +61,7 @@ def test_largest_drop_at_the_pitch_point(summary):
 
 def test_thermal_below_elastic_along_the_whole_path(summary, luo2019):
     assert summary["thermal_below_elastic_everywhere"] is True
-    curves = thermal_curves(paper_thermal_model(luo2019))
+    curves = thermal_curves(call_with_pieces(paper_thermal_model, luo2019))
     assert np.all(curves.curve.stiffness < curves.curve.elastic_stiffness)
 
 

@@ -117,7 +117,7 @@ def _steady_table(case_name: str, speeds: str | None, torques: str | None, as_js
                           f"{result.seal_loss[i, j]:.1f}", f"{no_load[i, j]:.1f}",
                           f"{result.efficiency[i, j] * 100:.2f}", f"{result.backlash[i, j] * 1e6:.1f}")
     console.print(table)
-    from thermogear.temperature_limits import FLAG_MEANINGS  # noqa: PLC0415
+    from thermogear.temperature.limits import FLAG_MEANINGS  # noqa: PLC0415
 
     for flag, meaning in FLAG_MEANINGS.items():
         marked = result.flagged(flag)

@@ -70,7 +70,7 @@ def run_gearbox_stages(base, stages: str, duration_s: float, start_c: float | No
     from thermogear.gearbox.case_model import gearbox_model_from_case, gearbox_operating_point  # noqa: PLC0415
     from thermogear.gearbox.losses import NODES  # noqa: PLC0415
     from thermogear.gearbox.procedure import FZG_START_C, fzg_load_stages, run_load_stages  # noqa: PLC0415
-    from thermogear.temperature_limits import FLAG_MEANINGS  # noqa: PLC0415
+    from thermogear.temperature.limits import FLAG_MEANINGS  # noqa: PLC0415
 
     first, _, last = stages.partition(":")
     try:

@@ -7,14 +7,14 @@ from typing import TYPE_CHECKING
 
 import typer
 
-from thermogear.dynamics.mesh_laws import mesh_law
 from thermogear.cli.app import app, console, error_console, print_json
-from thermogear.report.terminal import interruptible
+from thermogear.dynamics.problems.mesh_laws import mesh_law
 from thermogear.errors import CaseError
 from thermogear.gearbox.case_model import describe_prediction
+from thermogear.report.terminal import interruptible
 
 if TYPE_CHECKING:
-    from thermogear.dynamics.metric_results import LinearMetrics, NonlinearMetrics
+    from thermogear.dynamics.results.metric_results import LinearMetrics, NonlinearMetrics
 
 _MODELS = {"elastic": ("elastic",), "thermal": ("thermal",), "both": ("elastic", "thermal")}
 
@@ -23,7 +23,7 @@ def model_json(response) -> dict:
     """The JSON object of one model (issue 5): loads per unit width, displacements in μm, stability, messages."""
     from thermogear.report.evaluate import model_messages
 
-    from thermogear.dynamics.metric_results import typed_metrics
+    from thermogear.dynamics.results.metric_results import typed_metrics
     from thermogear.serialization import json_ready
 
     metrics = typed_metrics(response.metrics)
@@ -88,13 +88,13 @@ def run(
     """Run the dynamics of a case and report Kv, loads, transmission error per region, frequencies and stability.
     Contact loss and instability are said in words (when, how long, how deep)."""
     from thermogear.case import load_case
-    from thermogear.dynamics.solution_methods import solution_method
-    from thermogear.orchestrator import Orchestrator
-    from thermogear.report.evaluate import model_messages
     from thermogear.cli.check import shown_warnings
     from thermogear.cli.console import print_notes, step_progress
     from thermogear.cli.run_drivetrain import print_drivetrain
+    from thermogear.dynamics.problems.solution_methods import solution_method
+    from thermogear.orchestrator import Orchestrator
     from thermogear.report.drivetrain_section import drivetrain_json
+    from thermogear.report.evaluate import model_messages
     from thermogear.report.evaluate import DYNAMIC_FACTORS_NOTE
     from thermogear.report.terminal import print_messages, print_summary
 

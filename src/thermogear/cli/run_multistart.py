@@ -23,8 +23,8 @@ def check_multistart(drivetrain, dynamics, starts: int, method: str, out) -> Non
     0 (the option not given)."""
     if not starts:
         return
-    from thermogear.dynamics.mesh_laws import mesh_law
-    from thermogear.dynamics.solution_methods import solution_method
+    from thermogear.dynamics.problems.mesh_laws import mesh_law
+    from thermogear.dynamics.problems.solution_methods import solution_method
 
     if drivetrain is None:
         raise CaseError("--multistart", starts, "a case with a [drivetrain]",

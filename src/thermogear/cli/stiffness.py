@@ -145,11 +145,12 @@ def stiffness(
         summary["helical_thermal"] = helical_stiffness_summary(MeshModel(loaded, "thermal"))
         thermal_module = None
     if thermal_module is not None:
+        from thermogear.case.pieces import call_with_pieces  # noqa: PLC0415
         from thermogear.luo2020.case_stiffness import paper_thermal_model  # noqa: PLC0415
         from thermogear.thermoelastic.mesh import ThermoelasticMesh  # noqa: PLC0415
 
         thermal_models = thermal_module.ThermalModels(
-            paper=paper_thermal_model(loaded), elastic=MeshModel(loaded, "elastic"),
+            paper=call_with_pieces(paper_thermal_model, loaded), elastic=MeshModel(loaded, "elastic"),
             thermal=MeshModel(loaded, "thermal"), component_of=lambda: ThermoelasticMesh.from_case(loaded),
             name=loaded.name)
         summary["thermal"] = thermal_module.thermal_stiffness_summary(thermal_models)

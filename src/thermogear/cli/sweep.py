@@ -7,10 +7,10 @@ from pathlib import Path
 
 import typer
 
-from thermogear.dynamics.mesh_laws import mesh_law
 from thermogear.cli.app import app, console, error_console, print_json
 from thermogear.cli.console import print_warning
 from thermogear.cli.sweep_summary import load_held_summary, print_sweep_summary, response_summary
+from thermogear.dynamics.problems.mesh_laws import mesh_law
 from thermogear.errors import CaseError
 from thermogear.sweep.evaluation_methods import is_batched
 from thermogear.sweep.executor import check_scheduler_address
@@ -62,10 +62,11 @@ def sweep(
     speeds (linear or backlash mesh) over any other keys, and, named with --kind warmup, a gearbox case's warm-up at
     every point; a speed sweep holds the torque (--hold power: the power)."""
     from thermogear.sweep import Study, load_study_case, run_study
+    from thermogear.sweep.load_held import DEFAULT_HOLD
     from thermogear.sweep.store import study_description
 
-    from thermogear.ownership import check_figure_file, check_output_folder, exclusive_writer
     from thermogear.orchestrator import Orchestrator
+    from thermogear.ownership import check_figure_file, check_output_folder, exclusive_writer
 
     check_output_folder(out, "--out")  # every output path before any work
     if plot is not None:
@@ -89,12 +90,12 @@ def sweep(
         if stored is not None:
             chosen_model = chosen_model or ("both" if len(stored["models"]) == 2 else stored["models"][0])
             chunks = chunks or stored["chunk_points"]
-        from thermogear.case_pieces import call_with_pieces
+        from thermogear.case.pieces import call_with_pieces
         from thermogear.sweep.api import StudySubject, study_kind
 
         chosen = study_kind(call_with_pieces(StudySubject.of, loaded), method, kind)
         study = Study.define(loaded, definition, model=chosen_model or chosen.default_model, chunk_points=chunks,
-                             hold=hold or (stored or {}).get("hold", "torque"))
+                             hold=hold or (stored or {}).get("hold", DEFAULT_HOLD))
         warmup = None
         if (duration_s, interval_s, start_c) != (None, None, None):
             from thermogear.sweep.warmup_study import WarmupSettings

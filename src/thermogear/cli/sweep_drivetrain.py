@@ -10,8 +10,8 @@ from types import SimpleNamespace
 
 import numpy as np
 
+from thermogear.dynamics.problems.mesh_laws import mesh_law
 from thermogear.errors import CaseError
-from thermogear.dynamics.mesh_laws import mesh_law
 
 __all__ = ["drivetrain_models", "run_drivetrain_sweep"]
 

@@ -22,7 +22,7 @@ from thermogear.drivetrain.point_elements import Bearing, Coupling, NodeLocation
 from thermogear.errors import CaseError
 
 if TYPE_CHECKING:
-    from thermogear.dynamics.backlash_ndof import DeadZone
+    from thermogear.dynamics.backlash.backlash_ndof import DeadZone
 
 __all__ = ["Drivetrain", "AssembledDrivetrain", "DOF_NAMES"]
 

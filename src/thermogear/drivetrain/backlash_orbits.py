@@ -1,7 +1,7 @@
 """Every stable orbit of the backlash drivetrain that a multi-start search finds, each with its basin share.
 
 The drivetrain's backlash system (:func:`~thermogear.drivetrain.response.drivetrain_backlash_system`, on the modal
-cut-off as ``run`` solves it) goes to the solver's search (:func:`~thermogear.dynamics.backlash_orbits_ndof.
+cut-off as ``run`` solves it) goes to the solver's search (:func:`~thermogear.dynamics.backlash.backlash_orbits_ndof.
 stable_orbits_ndof`: the state at rest and a grid over the mesh coordinate and its rate lifted onto the mesh's
 static shape, each run in and shot); each distinct stable orbit is sampled and described as ``run`` describes its
 orbit (:class:`~thermogear.drivetrain.backlash_response.DrivetrainBacklashResponse`: Kv, DTE, contact loss, bearing
@@ -18,8 +18,8 @@ from thermogear.drivetrain.assembly import AssembledDrivetrain
 from thermogear.drivetrain.backlash_response import (SHOOTING_TOLERANCE, DrivetrainBacklashResponse, _response,
                                                     one_blas_thread, reduced_backlash_system)
 from thermogear.drivetrain.response import drivetrain_backlash_system
-from thermogear.dynamics.backlash_orbits_ndof import stable_orbits_ndof
-from thermogear.dynamics.backlash_trajectory import backlash_trajectory
+from thermogear.dynamics.backlash.backlash_orbits_ndof import stable_orbits_ndof
+from thermogear.dynamics.backlash.backlash_trajectory import backlash_trajectory
 from thermogear.mesh.state import MeshState
 
 __all__ = ["DrivetrainOrbitCensus", "DrivetrainStableOrbit", "case_stable_orbits", "census_summary",

@@ -2,12 +2,14 @@
 
 The system is :func:`~thermogear.drivetrain.response.drivetrain_backlash_system` (the mesh coordinate
 g = wᵀq − ē_j with the dead zone of the normal backlash b; a bearing with a radial clearance adds a dead zone in x and
-one in y). Its periodic orbit is found by shooting (:func:`~thermogear.dynamics.backlash_ndof.backlash_periodic_orbit`)
-and sampled exactly (:func:`~thermogear.dynamics.backlash_trajectory.backlash_trajectory`). Forces:
+one in y). Its periodic orbit is found by shooting
+(:func:`~thermogear.dynamics.backlash.backlash_ndof.backlash_periodic_orbit`) and sampled exactly
+(:func:`~thermogear.dynamics.backlash.backlash_trajectory.backlash_trajectory`). Forces:
 
 * mesh force F = k_j·φ(g) + c_j·ġ [N] with φ(g) = g in driving contact, 0 in free flight and g + b on the back
   flanks (Kahraman & Singh, J. Sound Vib. 142 (1990) 49). The mesh damping c_j acts in free flight too, as in the
-  :class:`~thermogear.dynamics.backlash_ndof.BacklashSystem` (its vector field is continuous at a contact switch);
+  :class:`~thermogear.dynamics.backlash.backlash_ndof.BacklashSystem` (its vector field is continuous at a contact
+  switch);
 * bearing force on the housing per direction: K·u + C·u̇ without clearance; with a radial clearance δ, in x and in y
   each, 0 for |u| <= δ and k(u ∓ δ) + c·u̇ beyond ±δ (a square dead zone, the stated approximation of a circular
   clearance: see :class:`~thermogear.drivetrain.point_elements.Bearing`).
@@ -38,10 +40,10 @@ from thermogear.drivetrain.sampled_period import (SampledMotion, mesh_contacts, 
                                                   sampled_metrics, sampled_motion, train_mesh_responses)
 from thermogear.drivetrain.static_state import bearing_moments
 from thermogear.drivetrain.train import MeshTrain
-from thermogear.dynamics.backlash_ndof import (PERIODIC_SOLVES, WATCH_STARTUP, BacklashSystem,
+from thermogear.dynamics.backlash.backlash_ndof import (PERIODIC_SOLVES, WATCH_STARTUP, BacklashSystem,
                                               backlash_periodic_orbit)
-from thermogear.dynamics.backlash_orbits_ndof import StartupOrbit, startup_orbit
-from thermogear.dynamics.backlash_trajectory import BacklashTrajectory, backlash_trajectory
+from thermogear.dynamics.backlash.backlash_orbits_ndof import StartupOrbit, startup_orbit
+from thermogear.dynamics.backlash.backlash_trajectory import BacklashTrajectory, backlash_trajectory
 from thermogear.errors import CaseError, ModelLimitError, ProblemError
 from thermogear.mesh.state import MeshState
 
@@ -121,9 +123,9 @@ def one_blas_thread():
 def reduced_backlash_system(system: BacklashSystem, cutoff_hz: float):
     """(the system on a modal basis, the basis): the modes of the mean system up to ``cutoff_hz`` [Hz] and the
     static corrections of the mesh vector, the torque loads and every dead zone's vector
-    (:func:`thermogear.dynamics.modal_reduction.modal_basis`), so that each contact state's quasi-static response
+    (:func:`thermogear.dynamics.modes.modal_reduction.modal_basis`), so that each contact state's quasi-static response
     stays in the basis."""
-    from thermogear.dynamics.modal_reduction import modal_basis
+    from thermogear.dynamics.modes.modal_reduction import modal_basis
 
     if not math.isfinite(cutoff_hz) or cutoff_hz <= 0.0:
         raise CaseError("cutoff_hz", cutoff_hz, "> 0 Hz, finite", "the highest mode frequency kept")
@@ -146,14 +148,15 @@ def drivetrain_backlash_response(assembled: AssembledDrivetrain, state: MeshStat
     ``tolerance`` the shooting's relative residual.
 
     ``startup_periods``: also start from rest and run in over this many mesh periods before shooting
-    (:func:`~thermogear.dynamics.backlash_orbits_ndof.startup_orbit`). Where the start-up settles on another stable
-    orbit than the one shot from the linear state, both coexist: the start-up's orbit is returned (what the gearbox
-    shows after starting up) and the other is described in ``metrics["startup"]["coexisting"]``; ``metrics
+    (:func:`~thermogear.dynamics.backlash.backlash_orbits_ndof.startup_orbit`). Where the start-up settles on another
+    stable orbit than the one shot from the linear state, both coexist: the start-up's orbit is returned (what the
+    gearbox shows after starting up) and the other is described in ``metrics["startup"]["coexisting"]``; ``metrics
     ["startup"]`` also says which start reached the orbit returned, its ``branch`` ("low" or "high" by the DTE
     peak-to-peak, as the 1-DOF response; "unique" where one orbit was seen) and ``notes`` say so in words.
 
-    ``solves``: a :class:`~thermogear.dynamics.periodic_solves.PeriodicSolves` that keeps the switch-free orbit's
-    periodic solve (the linear periodic state, every contact closed) for a later linear response of the same
+    ``solves``: a :class:`~thermogear.dynamics.periodic_orbits.periodic_solves.PeriodicSolves` that keeps the
+    switch-free orbit's periodic solve (the linear periodic state, every contact closed) for a later linear response of
+    the same
     reduced system, or hands it over where that system was solved before."""
     system, reduction = drivetrain_backlash_system(assembled, state)
     basis = None

@@ -1,7 +1,7 @@
 """The drivetrain's backlash orbit followed up and down in speed: one mesh state per speed (each with its backlash),
 the n-DOF backlash system of each (:func:`~thermogear.drivetrain.response.drivetrain_backlash_system`) and the
-continuation of :mod:`thermogear.dynamics.backlash_branch_ndof`, which shows the jumps of the softening mesh
-resonance (the drivetrain counterpart of :mod:`thermogear.dynamics.backlash_continuation` for the 1-DOF pair).
+continuation of :mod:`thermogear.dynamics.backlash.backlash_branch_ndof`, which shows the jumps of the softening mesh
+resonance (the drivetrain counterpart of :mod:`thermogear.dynamics.backlash.backlash_continuation` for the 1-DOF pair).
 
 With a modal cut-off each speed is solved on its own modal basis
 (:func:`~thermogear.drivetrain.backlash_response.reduced_backlash_system`, the very system
@@ -17,7 +17,7 @@ import numpy as np
 
 from thermogear.drivetrain.assembly import AssembledDrivetrain
 from thermogear.drivetrain.response import drivetrain_backlash_system
-from thermogear.dynamics.backlash_branch_ndof import BacklashBranchNDOF, follow_backlash_branch
+from thermogear.dynamics.backlash.backlash_branch_ndof import BacklashBranchNDOF, follow_backlash_branch
 from thermogear.errors import CaseError
 from thermogear.mesh.state import MeshState
 
@@ -35,7 +35,7 @@ def drivetrain_backlash_branch(assembled: AssembledDrivetrain, states: Sequence[
     through the full coordinates (each speed's rigid-body reduction, and modal basis, may differ by a rotation of the
     same subspace: the gyroscopic damping enters the reduction).
     ``cutoff_hz`` [Hz]: solve each speed on its modes up to it (module docstring); ``progress(1)`` after each
-    point; ``measure_swing`` as :func:`~thermogear.dynamics.backlash_branch_ndof.follow_backlash_branch`."""
+    point; ``measure_swing`` as :func:`~thermogear.dynamics.backlash.backlash_branch_ndof.follow_backlash_branch`."""
     speeds = np.array([state.speed_rpm for state in states], dtype=float)
     if speeds.size == 0 or np.any(np.diff(speeds) <= 0.0):
         raise CaseError("states", list(speeds), "mesh states at increasing pinion speeds", "a sweep in speed")

@@ -40,8 +40,8 @@ import numpy as np
 from thermogear.drivetrain.assembly import AssembledDrivetrain, Drivetrain
 from thermogear.drivetrain.backlash_response import one_blas_thread
 from thermogear.drivetrain.modes import mode_labels
-from thermogear.dynamics.modal import undamped_modes
-from thermogear.dynamics.rigid_body import rigid_body_reduction
+from thermogear.dynamics.modes.modal import undamped_modes
+from thermogear.dynamics.modes.rigid_body import rigid_body_reduction
 from thermogear.errors import CaseError
 
 __all__ = ["BASIS_FACTOR", "Crossing", "CampbellDiagram", "as_assembled", "campbell_diagram"]

@@ -20,6 +20,7 @@ from thermogear.drivetrain.mesh_contact import mesh_contact
 from thermogear.drivetrain.mesh_element import GearMesh
 from thermogear.drivetrain.point_elements import Bearing, Coupling, NodeLocation, RigidDisk, TorsionalSupport
 from thermogear.drivetrain.section import CrossSection, Material
+from thermogear.drivetrain_choices import END_KINDS, ROTATIONS
 from thermogear.schema.drivetrain_topology import shaft_speed_ratios
 
 __all__ = ["drivetrain_from_section", "MESH_NAME"]
@@ -92,7 +93,7 @@ def drivetrain_from_section(section, pair, material, mesh_stiffness: float, mesh
         bodies.append(_gear_body(name, point, gear, pitch, seat, material.density,
                                  None if inertias is None else inertias[index]))
     speeds = shaft_speed_ratios(section, (pair.pinion.teeth, pair.wheel.teeth)) if stages else {}
-    sense = 1 if section.pinion_rotation == "counter-clockwise" else -1
+    sense = ROTATIONS[section.pinion_rotation].sense
     stage_meshes = []
     for number, (stage_section, (stage_pair, stiffness, damping)) in enumerate(zip(section.stages, stages)):
         pitch_1, pitch_2 = stage_pair.operating_pitch_radii
@@ -123,11 +124,11 @@ def drivetrain_from_section(section, pair, material, mesh_stiffness: float, mesh
     supports = [TorsionalSupport(f"{end_name} motor", NodeLocation(end.shaft, end.position_mm * _MM),
                                  end.stiffness_n_m_per_rad, end.damping_n_m_s_per_rad)
                 for end_name, end in (("driving", section.driving), ("driven", section.driven))
-                if end.kind == "speed"]
+                if END_KINDS[end.kind].held_at_speed]
     mesh = GearMesh(MESH_NAME, NodeLocation(section.pinion.shaft, section.pinion.position_mm * _MM),
                     NodeLocation(section.wheel.shaft, section.wheel.position_mm * _MM), pair.pinion.base_radius,
                     pair.wheel.base_radius, pair.operating_pressure_angle, mesh_stiffness, mesh_damping,
                     math.radians(section.centre_line_angle_deg),
-                    1 if section.pinion_rotation == "counter-clockwise" else -1, **helical(0, pair))
+                    ROTATIONS[section.pinion_rotation].sense, **helical(0, pair))
     return Drivetrain(tuple(shafts), (*bodies, *disks), tuple(bearings), tuple(couplings), (mesh, *stage_meshes),
                       tuple(supports))

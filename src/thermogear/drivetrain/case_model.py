@@ -27,26 +27,26 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from thermogear.case_pieces import call_with_pieces
+from thermogear.case.pieces import call_with_pieces
 from thermogear.composition import DRIVETRAIN_HEAT, builtin
-from thermogear.dynamics.mesh_laws import mesh_law
-from thermogear.dynamics.periodic_solves import PeriodicSolves
 from thermogear.drivetrain.assembly import Drivetrain
 from thermogear.drivetrain.case_layout import drivetrain_from_section
 from thermogear.drivetrain.heat import ModeShifts, WarmState, thermal_mode_shifts, warm_drivetrain
-from thermogear.drivetrain.stages import stage_train
-from thermogear.drivetrain.warm_state import operating_clearances, shaft_temperatures, with_clearances
 from thermogear.drivetrain.modes import DrivetrainModes, drivetrain_modes
 from thermogear.drivetrain.response import DrivetrainResponse, drivetrain_periodic_response, drivetrain_speed_sweep
+from thermogear.drivetrain.stages import stage_train
+from thermogear.drivetrain.warm_state import operating_clearances, shaft_temperatures, with_clearances
+from thermogear.dynamics.periodic_orbits.periodic_solves import PeriodicSolves
+from thermogear.dynamics.problems.mesh_laws import mesh_law
 from thermogear.drivetrain.result_tables import (SPECTRUM_POINTS, bearing_force_summary, heat_table,  # noqa: F401
                                                  mode_table, resonance_speeds, stage_summary)
 from thermogear.drivetrain.results import (MESH_COUPLED_SHARE, MESH_DOMINATED_SHARE, DrivetrainBacklashResult,
                                            DrivetrainLinearResult, DrivetrainResults, DrivetrainTransientResult,
                                            ModeRow, bearing_forces_of, heat_rows, mode_rows, resonances_of,
                                            stage_results, unknown_bearing_forces)
-from thermogear.mesh.model_names import ELASTIC, THERMAL
 from thermogear.errors import CaseError
 from thermogear.mesh.model import MeshModel
+from thermogear.mesh.model_names import ELASTIC, THERMAL
 from thermogear.thermoelastic.materials import MODULUS_REFERENCE_C, MODULUS_TEMPERATURE_COEFFICIENTS_PER_K
 
 if TYPE_CHECKING:
@@ -234,18 +234,18 @@ def _helix(helical) -> tuple[float, int]:
 
 def case_drivetrain(case, models: tuple[str, ...] = (ELASTIC, THERMAL)) -> CaseDrivetrain:
     """Build the case's drivetrain for its elastic (cold) and thermal (hot) mesh models (module docstring)."""
-    section = case.drivetrain
-    if section is None:
+    if (section := case.drivetrain) is None:
         raise CaseError("drivetrain", None, "a [drivetrain] section", "this case is the pair on rigid supports")
     points = case.dynamics.points_per_period
     mesh_models = {name: MeshModel(case, name) for name in (ELASTIC, THERMAL)}  # the simulation models
     stiffness, damping = _mean_state(mesh_models[ELASTIC], points)
-    train = stage_train(case)
-    stage_models = {name: tuple(MeshModel(stage_case, name) for stage_case in train.cases) for name in (ELASTIC, THERMAL)}
+    train = call_with_pieces(stage_train, case)  # each stage's own case below: the case with the stage's changes
+    stage_cases = tuple(replace(case, **changes) for changes in train.case_changes)
+    stage_models = {name: tuple(MeshModel(stage_case, name) for stage_case in stage_cases) for name in (ELASTIC, THERMAL)}
     cold_stages = tuple((stage.gear_pair, *_mean_state(model, points))
                         for stage, model in zip(case.stages, stage_models[ELASTIC]))
     cold = drivetrain_from_section(section, case.gear_pair, case.material, stiffness, damping, case.inertias,
-                                   cold_stages, tuple(_helix(item.helical_pair) for item in (case, *train.cases)))
+                                   cold_stages, tuple(_helix(item.helical_pair) for item in (case, *stage_cases)))
     drivetrains = {ELASTIC: cold}
     notes: list[str] = []
     warm_moduli, warm_state = None, {}

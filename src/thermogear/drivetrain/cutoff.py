@@ -3,7 +3,7 @@ estimate computed per run, and the speed-independent reduced matrices shared acr
 
 The cut-off. The response to the mesh harmonics j·f_m, j ≤ H, is carried by the modes up to the highest of them
 resonantly and by the others quasi-statically; the static corrections of the basis
-(:mod:`thermogear.dynamics.modal_reduction`) keep every interval's quasi-static response exact, so what a cut-off
+(:mod:`thermogear.dynamics.modes.modal_reduction`) keep every interval's quasi-static response exact, so what a cut-off
 f_c loses is the dynamic part of the modes above it, a mode at f_i answering a harmonic at f with the dynamic
 amplification 1/(1 − (f/f_i)²) of an undamped oscillator, i.e. (f/f_i)² beyond its static response (Craig & Kurdila,
 Fundamentals of Structural Dynamics, 2nd ed. 2006, §14.6, the mode-acceleration method). With f_c =
@@ -11,7 +11,7 @@ Fundamentals of Structural Dynamics, 2nd ed. 2006, §14.6, the mode-acceleration
 share; :func:`cutoff_for_harmonics` gives it.
 
 The estimate. What the cut-off drops is computed from the cut-off solution itself, without a second periodic solve
-(:mod:`thermogear.dynamics.truncation_error`): the response's own loads on the mean structure — the mesh's
+(:mod:`thermogear.dynamics.modes.truncation_error`): the response's own loads on the mean structure — the mesh's
 time-varying stiffness and damping force along the mesh vector, and the damping forces that couple the modes (the
 bearings' dampers are not modal) — drive the modes above f_c, each with its dynamic part H_i(jω) − 1/ω_i², less
 what the static-correction columns' own dynamics already carry (Craig & Kurdila, Fundamentals of Structural
@@ -49,7 +49,7 @@ from thermogear.drivetrain.response import (DrivetrainResponse, _as_train, _grid
                                             drivetrain_periodic_response)
 from thermogear.drivetrain.train import MeshTrain
 from thermogear.drivetrain.static_state import mesh_torque_forces
-from thermogear.dynamics.periodic_ndof import PiecewiseLinearSystem
+from thermogear.dynamics.periodic_orbits.periodic_ndof import PiecewiseLinearSystem
 from thermogear.errors import CaseError
 from thermogear.mesh.state import MeshState
 
@@ -132,7 +132,7 @@ class _SharedReduction:
     @classmethod
     def build(cls, assembled: AssembledDrivetrain, system: PiecewiseLinearSystem, reduction, cutoff: float,
               modes=None):
-        from thermogear.dynamics.modal_reduction import modal_basis
+        from thermogear.dynamics.modes.modal_reduction import modal_basis
 
         basis = modal_basis(system, 2.0 * math.pi * cutoff, modes=modes)
         transform = reduction.basis @ basis.basis
@@ -193,11 +193,11 @@ def cutoff_error_estimate(assembled: AssembledDrivetrain, state: MeshState | Mes
                           cutoff_hz: float, shared: tuple | None = None) -> CutoffError:
     """The :class:`CutoffError` of ``response``, the state's periodic response on ``cutoff_hz`` [Hz], from the
     modes above the cut-off driven by the response's own mesh loads (module docstring;
-    :func:`~thermogear.dynamics.truncation_error.truncation_error`): no second periodic solve. ``shared``: (the
+    :func:`~thermogear.dynamics.modes.truncation_error.truncation_error`): no second periodic solve. ``shared``: (the
     rigid-body reduction, the modal basis, the dropped modes) of a sweep's first state, whose basis solved
     ``response`` (default: built here from this state, as :func:`~thermogear.drivetrain.response.
     drivetrain_periodic_response` builds them)."""
-    from thermogear.dynamics.truncation_error import truncation_error
+    from thermogear.dynamics.modes.truncation_error import truncation_error
 
     train = _as_train(assembled, state)
     problems = tuple(item.problem() for item in train.states)
@@ -229,7 +229,7 @@ def cutoff_error_estimate(assembled: AssembledDrivetrain, state: MeshState | Mes
 
 def _dropped(system: PiecewiseLinearSystem, reduction, cutoff_hz: float) -> tuple:
     """(reduction, the modal basis on ``cutoff_hz`` [Hz], the modes above it) of a mean system."""
-    from thermogear.dynamics.modal_reduction import mean_modes, modal_basis
+    from thermogear.dynamics.modes.modal_reduction import mean_modes, modal_basis
 
     cutoff = 2.0 * math.pi * cutoff_hz
     modes = mean_modes(system, cutoff)
@@ -246,7 +246,7 @@ def drivetrain_cutoff_sweep(assembled: AssembledDrivetrain, states: Sequence[Mes
     speed gets its :class:`CutoffError`: from the modes above the cut-off (:func:`cutoff_error_estimate`), or with
     ``second_solve`` from the speed solved again on twice the cut-off (:func:`cutoff_error_against`, about twice
     the cost)."""
-    from thermogear.dynamics.modal_reduction import mean_modes
+    from thermogear.dynamics.modes.modal_reduction import mean_modes
 
     states = list(states)
     if not states:

@@ -7,7 +7,7 @@ one or more shaft nodes (``locations``, 6 DOF each: x, y, z, α, β, θ) and giv
   speed of its shaft (``spin_shaft``; multiplied by that shaft's speed ratio × Ω in the assembly, Friswell, Penny,
   Garvey & Lees, Dynamics of Rotating Machines, CUP 2010, Eq. 5.88: M q̈ + (C + ΩG) q̇ + K q = f);
 - ``dead_zones()``: its state-dependent law where it has one, as dead zones on its local DOFs
-  (:class:`~thermogear.dynamics.backlash_ndof.DeadZone`: a bearing's radial clearance, one per direction x, y);
+  (:class:`~thermogear.dynamics.backlash.backlash_ndof.DeadZone`: a bearing's radial clearance, one per direction x, y);
 - ``mesh_vector()``: the vector w of a time-varying (mesh) stiffness k(τ)·w wᵀ on its DOFs, None for a constant
   element; a mesh's stiffness, damping, excitation and backlash come from its mesh state, so its constant matrices
   hold only what no state changes (a helical spread contact's tilting stiffness and damping) and its dead zone (the backlash) is built with the state's width;
@@ -28,7 +28,7 @@ import numpy as np
 from thermogear.drivetrain.shaft_element import ShaftElement
 
 if TYPE_CHECKING:
-    from thermogear.dynamics.backlash_ndof import DeadZone
+    from thermogear.dynamics.backlash.backlash_ndof import DeadZone
 
 __all__ = ["PlacedShaftElement", "StructureElement", "zero_matrix"]
 

@@ -9,9 +9,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from thermogear.drivetrain.assembly import AssembledDrivetrain
-from thermogear.dynamics.modal import (damped_modes, kinetic_energy_fractions, strain_energy_shares,
+from thermogear.dynamics.modes.modal import (damped_modes, kinetic_energy_fractions, strain_energy_shares,
                                        undamped_modes)
-from thermogear.dynamics.rigid_body import rigid_body_reduction
+from thermogear.dynamics.modes.rigid_body import rigid_body_reduction
 
 __all__ = ["DrivetrainModes", "drivetrain_modes", "mode_labels"]
 

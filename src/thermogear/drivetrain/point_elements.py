@@ -21,7 +21,7 @@ from thermogear.drivetrain.elements import zero_matrix
 from thermogear.errors import CaseError
 
 if TYPE_CHECKING:
-    from thermogear.dynamics.backlash_ndof import DeadZone
+    from thermogear.dynamics.backlash.backlash_ndof import DeadZone
 
 __all__ = ["NodeLocation", "OneNodeElement", "RigidDisk", "Bearing", "Coupling", "TorsionalSupport"]
 
@@ -196,7 +196,7 @@ class Bearing(OneNodeElement):
     def dead_zones(self) -> tuple[DeadZone, ...]:
         """The radial clearance δ as one dead zone in x and one in y on the node's DOFs (none without a
         clearance): the bearing's spring and dashpot of that direction act beyond ±δ."""
-        from thermogear.dynamics.backlash_ndof import DeadZone
+        from thermogear.dynamics.backlash.backlash_ndof import DeadZone
 
         if self.radial_clearance <= 0.0:
             return ()

@@ -9,9 +9,9 @@ T the torque pair s·r_b1·W, s·r_b2·W on the two gears, Ω the pinion speed (
 J. Mech. Des. 114 (1992) 507; Velex & Maatar, J. Sound Vib. 191 (1996) 629 for the time-varying mesh). In the limit of
 rigid shafts and bearings δ = wᵀq obeys the 1-DOF equation me·δ̈ + c·δ̇ + k·(δ) = W + Σk_i e_i of the mesh state with
 me = J₁J₂/(J₁r_b2² + J₂r_b1²). The free torsional rotation is removed (rigid_body_reduction); the orbit is the exact
-periodic state (:mod:`thermogear.dynamics.periodic_ndof`). Outputs: dynamic transmission error δ(t) = wᵀq, the mesh
-force and the metrics of the 1-DOF chain (Kv, …) computed from δ, and the force of each bearing on its housing
-F_b = K_b·u + C_b·u̇ with its spectrum in mesh harmonics.
+periodic state (:mod:`thermogear.dynamics.periodic_orbits.periodic_ndof`). Outputs: dynamic transmission error δ(t) =
+wᵀq, the mesh force and the metrics of the 1-DOF chain (Kv, …) computed from δ, and the force of each bearing on its
+housing F_b = K_b·u + C_b·u̇ with its spectrum in mesh harmonics.
 """
 
 from __future__ import annotations
@@ -26,11 +26,11 @@ import numpy as np
 from thermogear.drivetrain.assembly import AssembledDrivetrain
 from thermogear.drivetrain.static_state import bearing_moments, mesh_torque_forces
 from thermogear.drivetrain.train import MeshTrain, TrainGrid, train_grid
-from thermogear.dynamics.backlash_ndof import BacklashSystem, MeshZone
-from thermogear.dynamics.metrics import compute_metrics
-from thermogear.dynamics.periodic_ndof import PiecewiseLinearSystem, periodic_response
-from thermogear.dynamics.rigid_body import RigidBodyReduction, rigid_body_reduction
-from thermogear.dynamics.spectra import harmonic_spectrum
+from thermogear.dynamics.backlash.backlash_ndof import BacklashSystem, MeshZone
+from thermogear.dynamics.modes.rigid_body import RigidBodyReduction, rigid_body_reduction
+from thermogear.dynamics.periodic_orbits.periodic_ndof import PiecewiseLinearSystem, periodic_response
+from thermogear.dynamics.results.metrics import compute_metrics
+from thermogear.dynamics.results.spectra import harmonic_spectrum
 from thermogear.errors import CaseError
 from thermogear.mesh.state import MeshState
 
@@ -113,16 +113,17 @@ def _periodic_system(assembled: AssembledDrivetrain, train: MeshTrain, problems,
 def drivetrain_backlash_system(assembled: AssembledDrivetrain,
                                state: MeshState | MeshTrain) -> tuple[BacklashSystem, RigidBodyReduction]:
     """The drivetrain with the backlash mesh: one dead-zone coordinate g = wᵀq − ē_j of the normal backlash of the
-    state (solve with :func:`thermogear.dynamics.backlash_ndof.backlash_periodic_orbit`).
+    state (solve with :func:`thermogear.dynamics.backlash.backlash_ndof.backlash_periodic_orbit`).
 
     The pairs' deviations enter as their load-weighted mean on each interval, ē_j = Σk_i·e_i / Σk_i, so the whole
     mesh separates at once (unlike the 1-DOF backlash model, where each pair leaves contact on its own); the back
     flanks take the driving flanks' stiffness. Without deviations the two descriptions coincide. A bearing with a
-    ``radial_clearance`` adds a dead zone in x and one in y (:class:`~thermogear.dynamics.backlash_ndof.DeadZone`).
+    ``radial_clearance`` adds a dead zone in x and one in y
+    (:class:`~thermogear.dynamics.backlash.backlash_ndof.DeadZone`).
 
     A train (:class:`~thermogear.drivetrain.train.MeshTrain`): every mesh has its own dead zone of its own normal
     backlash, deviation and stiffness factor on the pieces of the common period; the first mesh is the system's own,
-    each further one a :class:`~thermogear.dynamics.backlash_ndof.MeshZone` of its column (listed before the
+    each further one a :class:`~thermogear.dynamics.backlash.backlash_ndof.MeshZone` of its column (listed before the
     bearings' clearances).
     """
     states = state.states if isinstance(state, MeshTrain) else (state,)
@@ -185,8 +186,9 @@ class DrivetrainResponse(PeriodicMotion):
     """Periodic response over one mesh period: ``time`` (S,) [s]; ``transmission_error`` δ = wᵀq [m] and its rate
     [m/s]; ``mesh_force`` k(δ) − Σk_ie_i + c·δ̇ [N]; ``bearing_forces`` name → (S, 3) force on the housing in
     x, y, z [N] (``bearing_moments`` name → (S, 2) its tilting moment about x, y [N·m]); ``displacement`` (S, DOFs) [SI]; Floquet ``multipliers``; ``metrics`` of the 1-DOF chain computed
-    from δ (kv, dte_rms, …; see :func:`thermogear.dynamics.metrics.compute_metrics`). ``period`` is the mesh period,
-    or a train's common period; ``meshes`` holds each mesh's δ, force and metrics by name (the fields above are the
+    from δ (kv, dte_rms, …; see :func:`thermogear.dynamics.results.metrics.compute_metrics`). ``period`` is the mesh
+    period, or a train's common period; ``meshes`` holds each mesh's δ, force and metrics by name (the fields above are
+    the
     first mesh's)."""
 
     multipliers: np.ndarray
@@ -220,11 +222,12 @@ def drivetrain_periodic_response(assembled: AssembledDrivetrain, state: MeshStat
     """Exact periodic response of the drivetrain to one mesh period (see the module docstring).
 
     ``cutoff_hz`` [Hz]: solve on the modes of the mean system up to this frequency plus the static corrections of
-    the mesh vector and the torque loads (:mod:`thermogear.dynamics.modal_reduction`: the mesh compliance stays
+    the mesh vector and the torque loads (:mod:`thermogear.dynamics.modes.modal_reduction`: the mesh compliance stays
     exact, the dynamics of the modes above the cut-off are lost); None solves on every DOF. A cut-off a few times
     the highest mesh harmonic of interest converges (see the tests). ``solves``: a
-    :class:`~thermogear.dynamics.periodic_solves.PeriodicSolves` whose response of the same reduced system (bit for
-    bit, e.g. the backlash solver's switch-free orbit) is taken instead of a solve of its own, and which keeps this one.
+    :class:`~thermogear.dynamics.periodic_orbits.periodic_solves.PeriodicSolves` whose response of the same reduced
+    system (bit for bit, e.g. the backlash solver's switch-free orbit) is taken instead of a solve of its own, and which
+    keeps this one.
     """
     return drivetrain_speed_sweep(assembled, (state,), samples_per_piece, cutoff_hz, solves)[0]
 
@@ -254,7 +257,7 @@ def drivetrain_speed_sweep(assembled: AssembledDrivetrain, states: Sequence[Mesh
         grid = _grid(train, problems)
         system, reduction = _periodic_system(assembled, train, problems, grid, reduction, projected)
         if cutoff_hz is not None:
-            from thermogear.dynamics.modal_reduction import modal_basis
+            from thermogear.dynamics.modes.modal_reduction import modal_basis
 
             if basis is None:
                 basis = modal_basis(system, 2.0 * math.pi * cutoff_hz)
@@ -275,7 +278,7 @@ def train_problems(train: MeshTrain) -> tuple[tuple, tuple, TrainGrid]:
 def _on_grid(problem, grid: TrainGrid, column: int):
     """A mesh's problem with its per-interval arrays taken on the train's pieces (the same mesh over the common
     period), for its metrics."""
-    from thermogear.dynamics.problem import MeshDynamicsProblem
+    from thermogear.dynamics.problems.problem import MeshDynamicsProblem
 
     index = grid.pieces[:, column]
     force = problem.force_per_interval[index]

@@ -3,7 +3,7 @@
 With rigid shafts and bearings each gear keeps only its rotation θ_i about +z, and the drivetrain's matrices become
 M = diag(J₁, J₂), K₀ = C₀ = 0 and the mesh vector w = s·(r_b1, r_b2) of the spur mesh element
 (:mod:`thermogear.drivetrain.mesh_element`), loaded by the torque pair s·r_b1·W, s·r_b2·W. The free rotation
-r = (r_b2, −r_b1) (wᵀr = 0) is removed as in any drivetrain (:mod:`thermogear.dynamics.rigid_body`), and what is
+r = (r_b2, −r_b1) (wᵀr = 0) is removed as in any drivetrain (:mod:`thermogear.dynamics.modes.rigid_body`), and what is
 left is the one mesh coordinate δ = wᵀq with the mass 1/(wᵀM⁻¹w) = J₁J₂/(J₁r_b2² + J₂r_b1²) = m_e of Luo & Li
 (2020) Eq. 5: the 1-DOF pair. :class:`RigidPair` gives both forms — the general one (:meth:`periodic_system`, the
 matrices every drivetrain solver takes) and the scalar one (:meth:`mesh_structure`, which sends the 1-DOF solvers to
@@ -17,9 +17,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from thermogear.dynamics.periodic_ndof import PiecewiseLinearSystem
-from thermogear.dynamics.rigid_body import RigidBodyReduction, rigid_body_reduction
-from thermogear.dynamics.structure import MeshStructure
+from thermogear.dynamics.modes.rigid_body import RigidBodyReduction, rigid_body_reduction
+from thermogear.dynamics.periodic_orbits.periodic_ndof import PiecewiseLinearSystem
+from thermogear.dynamics.problems.structure import MeshStructure
 from thermogear.errors import CaseError
 
 __all__ = ["RigidPair"]

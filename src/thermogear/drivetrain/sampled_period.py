@@ -15,11 +15,13 @@ import numpy as np
 from thermogear.drivetrain.assembly import AssembledDrivetrain
 from thermogear.drivetrain.response import MeshResponse, bearing_forces, train_problems
 from thermogear.drivetrain.train import MeshTrain
-from thermogear.dynamics.backlash_ndof import BACK_CONTACT, DRIVING_CONTACT, FREE_FLIGHT, BacklashSystem, MeshZone
-from thermogear.dynamics.backlash_trajectory import BacklashTrajectory
-from thermogear.dynamics.metrics import sampled_load
-from thermogear.dynamics.period_metrics import (contact_loss_summary, contact_time_metrics, dte_statistics, frequency_metrics, load_metrics,
-                                                multiplier_moduli, pair_load_maximum)
+from thermogear.dynamics.backlash.backlash_ndof import (BACK_CONTACT, DRIVING_CONTACT, FREE_FLIGHT, BacklashSystem,
+                                                        MeshZone)
+from thermogear.dynamics.backlash.backlash_trajectory import BacklashTrajectory
+from thermogear.dynamics.results.metrics import sampled_load
+from thermogear.dynamics.results.period_metrics import (contact_loss_summary, contact_time_metrics, dte_statistics,
+                                                        frequency_metrics, load_metrics, multiplier_moduli,
+                                                        pair_load_maximum)
 
 __all__ = ["SampledMotion", "mesh_contacts", "mesh_trajectory",
            "sampled_metrics", "sampled_motion", "train_mesh_responses"]
@@ -34,10 +36,11 @@ def _expanded(reduction, basis, values: np.ndarray) -> np.ndarray:
 
 
 def mesh_trajectory(trajectory: BacklashTrajectory, zone: int) -> BacklashTrajectory:
-    """The trajectory as a further mesh of a train sees it (its :class:`~thermogear.dynamics.backlash_ndof.MeshZone`
-    is dead zone ``zone``): its region from the zone's side (+1 driving, 0 free flight, −1 back flanks), its time
-    without contact and on the back flanks summed over the samples (every switch of every dead zone is sampled on
-    both sides and every node, so between two samples of different instants the region holds: exact), its switches
+    """The trajectory as a further mesh of a train sees it (its
+    :class:`~thermogear.dynamics.backlash.backlash_ndof.MeshZone` is dead zone ``zone``): its region from the zone's
+    side (+1 driving, 0 free flight, −1 back flanks), its time without contact and on the back flanks summed over the
+    samples (every switch of every dead zone is sampled on both sides and every node, so between two samples of
+    different instants the region holds: exact), its switches
     the changes of region between samples."""
     sides = trajectory.sides[:, zone]
     region = np.where(sides > 0, DRIVING_CONTACT, np.where(sides < 0, BACK_CONTACT, FREE_FLIGHT))
@@ -49,7 +52,8 @@ def mesh_trajectory(trajectory: BacklashTrajectory, zone: int) -> BacklashTrajec
 
 def mesh_contacts(system: BacklashSystem, trajectory: BacklashTrajectory) -> list[tuple]:
     """Per mesh of a train's backlash system (the system's own first, then each
-    :class:`~thermogear.dynamics.backlash_ndof.MeshZone` by its column): (the trajectory as that mesh sees it, its
+    :class:`~thermogear.dynamics.backlash.backlash_ndof.MeshZone` by its column): (the trajectory as that mesh sees it,
+    its
     deviation per piece [m], its backlash [m]), for :func:`train_mesh_responses`."""
     zones = sorted((zone.column, index) for index, zone in enumerate(system.dead_zones) if isinstance(zone, MeshZone))
     return [(trajectory, system.deviation, system.backlash)] + [

@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from thermogear.drivetrain.assembly import AssembledDrivetrain
-from thermogear.dynamics.rigid_body import rigid_body_reduction
+from thermogear.dynamics.modes.rigid_body import rigid_body_reduction
 from thermogear.errors import CaseError
 
 __all__ = ["StaticState", "bearing_moments", "mesh_torque_forces", "static_state"]

@@ -1,6 +1,6 @@
 """The drivetrain's motion from rest: q = q̇ = 0 (in the coordinates without the free rotation) when the torque and
 the mesh act at τ = 0, over N mesh periods, by the exact flow of the piecewise-linear system with (backlash mesh)
-or without (mesh in permanent contact) its switches (:mod:`thermogear.dynamics.backlash_trajectory`): no
+or without (mesh in permanent contact) its switches (:mod:`thermogear.dynamics.backlash.backlash_trajectory`): no
 integration error beyond the exponentials. The samples and forces are those of
 :mod:`thermogear.drivetrain.backlash_response`; the metrics are those of the last period, which approaches the
 periodic orbit as the slowest Floquet multiplier's modulus to the power N.
@@ -20,7 +20,7 @@ from thermogear.drivetrain.backlash_response import (PeriodForces, SampledMotion
 from thermogear.drivetrain.response import drivetrain_backlash_system, drivetrain_periodic_system, train_problems
 from thermogear.drivetrain.static_state import bearing_moments
 from thermogear.drivetrain.train import MeshTrain
-from thermogear.dynamics.backlash_trajectory import backlash_trajectory, linear_trajectory
+from thermogear.dynamics.backlash.backlash_trajectory import backlash_trajectory, linear_trajectory
 from thermogear.errors import CaseError
 from thermogear.mesh.state import MeshState
 
@@ -83,7 +83,7 @@ def drivetrain_transient(assembled: AssembledDrivetrain, state: MeshState | Mesh
     else:
         linear, reduction = drivetrain_periodic_system(assembled, state)
         if cutoff_hz is not None:
-            from thermogear.dynamics.modal_reduction import modal_basis
+            from thermogear.dynamics.modes.modal_reduction import modal_basis
 
             basis = modal_basis(linear, 2.0 * np.pi * cutoff_hz)
             linear = basis.reduce(linear)

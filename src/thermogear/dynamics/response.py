@@ -30,12 +30,12 @@ from typing import Any
 
 import numpy as np
 
-from thermogear.dynamics.metrics import sampled_load, compute_metrics
-from thermogear.dynamics.periodic import PeriodicOrbit, evaluate_orbit, floquet_multipliers
-from thermogear.dynamics.problem import MeshDynamicsProblem
-from thermogear.dynamics.spectra import (harmonic_spectrum, one_sided_amplitudes, right_continuous,
+from thermogear.dynamics.periodic_orbits.periodic import PeriodicOrbit, evaluate_orbit, floquet_multipliers
+from thermogear.dynamics.problems.problem import MeshDynamicsProblem
+from thermogear.dynamics.results.metrics import sampled_load, compute_metrics
+from thermogear.dynamics.results.spectra import (harmonic_spectrum, one_sided_amplitudes, right_continuous,
                                          uniform_period_grid)
-from thermogear.dynamics.transient import TransientHistory
+from thermogear.dynamics.transients.transient import TransientHistory
 from thermogear.errors import ModelAssumptionWarning, ProblemError
 from thermogear.serialization import json_ready
 
@@ -144,31 +144,31 @@ class DynamicResponse:
     # ------------------------------------------------------------------ plots (Luo & Li Figs. 9–12)
     def plot_displacement(self, other: DynamicResponse | None = None, ax: Any = None, periods: int | None = None):
         """Fig. 9: transmission error x(τ) with the static levels; returns the figure."""
-        from thermogear.dynamics.plots import plot_displacement
+        from thermogear.dynamics.results.plots import plot_displacement
 
         return plot_displacement(self, other=other, ax=ax, periods=periods)
 
     def plot_phase(self, other: DynamicResponse | None = None, ax: Any = None, periods: int | None = None):
         """Fig. 10: phase portrait ẋ against x; returns the figure."""
-        from thermogear.dynamics.plots import plot_phase
+        from thermogear.dynamics.results.plots import plot_phase
 
         return plot_phase(self, other=other, ax=ax, periods=periods)
 
     def plot_velocity(self, other: DynamicResponse | None = None, ax: Any = None, periods: int | None = None):
         """Fig. 11: velocity ẋ(τ); returns the figure."""
-        from thermogear.dynamics.plots import plot_velocity
+        from thermogear.dynamics.results.plots import plot_velocity
 
         return plot_velocity(self, other=other, ax=ax, periods=periods)
 
     def plot_loads(self, other: DynamicResponse | None = None, ax: Any = None, periods: int | None = None):
         """Fig. 12: pair and system dynamic loads per unit face width [N/mm]; returns the figure."""
-        from thermogear.dynamics.plots import plot_loads
+        from thermogear.dynamics.results.plots import plot_loads
 
         return plot_loads(self, other=other, ax=ax, periods=periods)
 
     def plot_spectrum(self, quantity: str = "displacement", ax: Any = None, harmonics: int = 20):
         """Bar chart of the harmonic amplitudes of ``quantity``; returns the figure."""
-        from thermogear.dynamics.plots import plot_spectrum
+        from thermogear.dynamics.results.plots import plot_spectrum
 
         return plot_spectrum(self, quantity=quantity, ax=ax, harmonics=harmonics)
 

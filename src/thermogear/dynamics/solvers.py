@@ -9,9 +9,10 @@ Its options (samples per interval, number of periods) are fields, set where the 
   event-driven integrator, with its branch.
 * :class:`BacklashTransientSolver` — the backlash motion from rest over a number of mesh periods.
 
-``backlash`` says which problem a solver takes: the linear one (:class:`~thermogear.dynamics.problem.
-MeshDynamicsProblem`) or the one with backlash (:class:`~thermogear.dynamics.backlash_problem.BacklashMeshProblem`);
-the caller builds that problem. Solver modules are imported when a solver runs (start-up stays light).
+``backlash`` says which problem a solver takes: the linear one (:class:`~thermogear.dynamics.problems.problem.
+MeshDynamicsProblem`) or the one with backlash
+(:class:`~thermogear.dynamics.problems.backlash_problem.BacklashMeshProblem`); the caller builds that problem. Solver
+modules are imported when a solver runs (start-up stays light).
 """
 
 from __future__ import annotations
@@ -32,14 +33,14 @@ class Solver(Protocol):
 @dataclass(frozen=True)
 class PeriodicSolver:
     """Exact periodic steady state of the linear problem; ``samples_per_interval`` samples of the orbit per grid
-    interval (:func:`thermogear.dynamics.periodic.periodic_steady_state`)."""
+    interval (:func:`thermogear.dynamics.periodic_orbits.periodic.periodic_steady_state`)."""
 
     samples_per_interval: int = 64
     backlash: ClassVar[bool] = False
     method: ClassVar[str] = "periodic"
 
     def solve(self, problem, *, include_damping_force: bool = False, label: str = ""):
-        from thermogear.dynamics.periodic import periodic_steady_state
+        from thermogear.dynamics.periodic_orbits.periodic import periodic_steady_state
         from thermogear.dynamics.response import response_from_orbit
 
         orbit = periodic_steady_state(problem, self.samples_per_interval)
@@ -48,7 +49,7 @@ class PeriodicSolver:
 
 @dataclass(frozen=True)
 class TransientSolver:
-    """Linear motion from rest over ``periods`` mesh periods (:func:`thermogear.dynamics.transient.
+    """Linear motion from rest over ``periods`` mesh periods (:func:`thermogear.dynamics.transients.transient.
     transient_from_rest`)."""
 
     periods: int = 60
@@ -57,7 +58,7 @@ class TransientSolver:
 
     def solve(self, problem, *, include_damping_force: bool = False, label: str = ""):
         from thermogear.dynamics.response import response_from_transient
-        from thermogear.dynamics.transient import transient_from_rest
+        from thermogear.dynamics.transients.transient import transient_from_rest
 
         history = transient_from_rest(problem, periods=self.periods)
         return response_from_transient(problem, history, include_damping_force=include_damping_force, label=label)
@@ -66,14 +67,14 @@ class TransientSolver:
 @dataclass(frozen=True)
 class BacklashShootingSolver:
     """Steady response of the backlash problem by shooting, with its branch
-    (:func:`thermogear.dynamics.nonlinear_response.nonlinear_response`)."""
+    (:func:`thermogear.dynamics.backlash.nonlinear_response.nonlinear_response`)."""
 
     samples_per_interval: int = 4
     backlash: ClassVar[bool] = True
     method: ClassVar[str] = "periodic"
 
     def solve(self, problem, *, include_damping_force: bool = False, label: str = ""):
-        from thermogear.dynamics.nonlinear_response import nonlinear_response
+        from thermogear.dynamics.backlash.nonlinear_response import nonlinear_response
 
         return nonlinear_response(problem, include_damping_force=include_damping_force, label=label,
                                   samples_per_interval=self.samples_per_interval)
@@ -82,7 +83,7 @@ class BacklashShootingSolver:
 @dataclass(frozen=True)
 class BacklashTransientSolver:
     """Backlash motion from rest over ``periods`` mesh periods
-    (:func:`thermogear.dynamics.nonlinear_response.nonlinear_transient`)."""
+    (:func:`thermogear.dynamics.backlash.nonlinear_response.nonlinear_transient`)."""
 
     periods: int = 60
     samples_per_interval: int = 4
@@ -90,7 +91,7 @@ class BacklashTransientSolver:
     method: ClassVar[str] = "transient"
 
     def solve(self, problem, *, include_damping_force: bool = False, label: str = ""):
-        from thermogear.dynamics.nonlinear_response import nonlinear_transient
+        from thermogear.dynamics.backlash.nonlinear_response import nonlinear_transient
 
         return nonlinear_transient(problem, self.periods, self.samples_per_interval, label=label,
                                    include_damping_force=include_damping_force)

@@ -24,7 +24,7 @@ from typing import Any, Callable
 
 import numpy as np
 
-from thermogear.dynamics.spectra import right_continuous, time_mean_and_rms
+from thermogear.dynamics.results.spectra import right_continuous, time_mean_and_rms
 from thermogear.errors import CaseError
 from thermogear.experiment.rig_data import (CITATION, measured_resonance_shift, measurements_at, rig_speeds_rpm)
 from thermogear.experiment.signals import Signal

@@ -23,17 +23,19 @@ import math
 from dataclasses import dataclass, replace
 from typing import Any, Callable
 
-from thermogear.dynamics.mesh_laws import mesh_law
+from thermogear.case.pieces import call_with_pieces
+from thermogear.dynamics.problems.mesh_laws import mesh_law
 from thermogear.errors import CaseError
 from thermogear.gearbox.backlash import ColdStart, cold_start_backlash
 from thermogear.gearbox.case_model import (PredictedTemperatureError, gearbox_model_from_case,
                                           gearbox_operating_point, gearbox_section)
+from thermogear.experiment.warmup import held_x_te
 from thermogear.gearbox.description import OilConditioning
 from thermogear.gearbox.losses import NODES
 from thermogear.gearbox.model import COLDEST_START_C, GearboxThermalModel, WarmUpHistory
 from thermogear.schema.temperature import TemperatureSection
-from thermogear.temperature_limits import FLAG_MEANINGS, MATERIAL_MAXIMUM_C
-from thermogear.thermal_model_rules import thermal_model_rules, x_te_source
+from thermogear.temperature.limits import FLAG_MEANINGS, MATERIAL_MAXIMUM_C
+from thermogear.thermal_model_rules import thermal_model_rules
 
 #: Longest warm-up accepted [s] (a day: the network's slowest time constants are hours at most).
 LONGEST_WARM_UP_S = 86400.0
@@ -147,12 +149,8 @@ def state_case(case, temperatures_c):
     changes: dict[str, Any] = dict(
         temperature=temperature, lubricant=case.lubricant.model_copy(update={"operating_temperature_c": oil}),
         housing=case.housing.model_copy(update=housing_update))
-    if thermal_model_rules(case.thermal.model).reads_x_te and x_te_source(case.thermal.x_te_source).calibrated:
-        from thermogear.luo2020.case_stiffness import paper_thermal_model  # noqa: PLC0415
-
-        x_te = paper_thermal_model(case).resolve_x_te()[0]
-        changes["thermal"] = case.thermal.model_copy(update={"x_te": x_te, "x_te_source": "given",
-                                                             "calibration_drop_percent": None})
+    if held := call_with_pieces(held_x_te, case):  # its calibrated X_te, held as the measured warm-up holds it
+        changes["thermal"] = case.thermal.model_copy(update=held)
     return replace(case, **changes)
 
 
@@ -167,8 +165,8 @@ def _periodic_kv(sim, previous: tuple[float, float] | None) -> tuple[float, tupl
     dynamics = sim.case.dynamics
     if not mesh_law(dynamics.mesh).backlash:
         return float(sim.solve(method="periodic").metrics["kv"]), None
-    from thermogear.dynamics.backlash_metrics import orbit_metrics  # noqa: PLC0415
-    from thermogear.dynamics.backlash_periodic import periodic_response  # noqa: PLC0415
+    from thermogear.dynamics.backlash.backlash_metrics import orbit_metrics  # noqa: PLC0415
+    from thermogear.dynamics.backlash.backlash_periodic import periodic_response  # noqa: PLC0415
 
     orbit = periodic_response(sim.state.backlash_problem(dynamics.damping_in_flight), initial_state=previous,
                               samples_per_interval=dynamics.samples_per_interval)
@@ -230,8 +228,8 @@ def gearbox_warmup(case, duration_s: float = 1200.0, start_c: float | None = Non
                         "operating.power_kw": None})
     try:
         base = case.with_changes(**changes) if changes else case
-    except PredictedTemperatureError as error:  # its own steady state is above the material data: the warm-up
-        base = error.unresolved_case            # sets every state's temperatures itself (state_case)
+    except PredictedTemperatureError:  # its own steady state is above the material data: the warm-up sets every
+        base = case.with_changes(predict_temperatures=False, **changes)  # state's temperatures itself (state_case)
     orbit_start = None  # the previous state's orbit: where the next state's periodic solve starts
     for index in range(0, history.times.size, int(points_per_interval)):
         time, temperatures = float(history.times[index]), history.temperatures_c[:, index]

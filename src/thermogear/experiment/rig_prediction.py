@@ -64,7 +64,7 @@ class RigPrediction:
 
 def rig_gearbox_description():
     """The gearbox description of the assumptions (module docstring)."""
-    from thermogear.friction_models import FRICTION_MODELS  # noqa: PLC0415
+    from thermogear.friction.models import FRICTION_MODELS  # noqa: PLC0415
     from thermogear.gearbox.fzg_example import illustrative_fzg_gearbox  # noqa: PLC0415
 
     # the paper's friction law (Luo & Li Eq. 27) for its tooth loss too: the reproduction of the paper keeps one

@@ -20,13 +20,16 @@ import csv
 import math
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Callable
+from typing import TYPE_CHECKING, Any, Callable
 
 import numpy as np
 
 from thermogear.errors import CaseError
 from thermogear.schema.temperature import CASE_MAXIMUM_C, CASE_MINIMUM_C
-from thermogear.thermal_model_rules import x_te_source
+from thermogear.thermal_model_rules import thermal_model_rules, x_te_source
+
+if TYPE_CHECKING:
+    from thermogear.schema.thermal import ThermalSection
 
 TIME_COLUMNS = {"time_s": 1.0, "time": 1.0, "t_s": 1.0, "time_min": 60.0, "minute": 60.0, "minutes": 60.0}
 TEMPERATURE_COLUMNS = ("temperature_c", "temperature", "temp_c")
@@ -201,22 +204,28 @@ class WarmupResult:
         return plot_warmup(self, ax=ax)
 
 
+def held_x_te(thermal: "ThermalSection", paper_thermal_model_of: Callable[[], Any]) -> dict[str, Any]:
+    """The ``[thermal]`` keys that hold a case's calibrated X_te through a warm-up (the pieces of the case it reads,
+    :mod:`thermogear.case.pieces`): the paper's X_te is calibrated once, at the case's own temperatures, and held,
+    since a state near the assembly temperature has no thermal interference to calibrate against. None (``{}``)
+    where the case's thermal model reads no X_te or its X_te is not calibrated. Both warm-ups' states hold it so."""
+    if not (thermal_model_rules(thermal.model).reads_x_te and x_te_source(thermal.x_te_source).calibrated):
+        return {}
+    return {"x_te": paper_thermal_model_of().resolve_x_te()[0], "x_te_source": "given",
+            "calibration_drop_percent": None}
+
+
 def state_case(case, temperature_c: float, speed_rpm: float | None = None):
-    """The case at one warm-up state: uniform bulk and oil temperature ``temperature_c`` (and the speed).
+    """The case at one warm-up state: uniform bulk and oil temperature ``temperature_c`` (and the speed), written
+    through the case file's keys, so checked as a loaded case is, with its calibrated X_te held (:func:`held_x_te`).
 
     A resolver: it writes a new case from the case's own keys, so it takes the whole case."""
-    from thermogear.mesh.pair_models import pair_model_for  # noqa: PLC0415  (the mesh layer only where it is used)
+    from thermogear.case.pieces import call_with_pieces  # noqa: PLC0415
 
     # the whole [temperature] section is replaced: a uniform field takes no flank table, base or bore temperatures
     section = {"model": "uniform", "bulk_c": float(temperature_c), "reference_c": case.temperature.reference_c}
     changes: dict[str, Any] = {"temperature": section, "lubricant.operating_temperature_c": float(temperature_c)}
-    if pair_model_for(case, "thermal").uses_x_te and x_te_source(case.thermal.x_te_source).calibrated:
-        # the paper's X_te is calibrated once, at the case's own temperatures, and held through the warm-up: a
-        # state near the assembly temperature has no thermal interference to calibrate against
-        from thermogear.luo2020.case_stiffness import paper_thermal_model  # noqa: PLC0415
-
-        changes.update({"thermal.x_te": paper_thermal_model(case).resolve_x_te()[0], "thermal.x_te_source": "given",
-                        "thermal.calibration_drop_percent": None})
+    changes.update({f"thermal.{key}": value for key, value in call_with_pieces(held_x_te, case).items()})
     if speed_rpm is not None:
         changes["operating.speed_rpm"] = float(speed_rpm)
     return case.with_changes(**changes)

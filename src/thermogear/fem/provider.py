@@ -3,7 +3,7 @@
 
 The thermal chain finds these two functions by name (:mod:`thermogear.composition`); importing this module
 registers nothing. Both answers come from one memoised :func:`thermogear.fem.verification.cached_analysis` per case
-document. Each asks for the piece ``fem_inputs`` of the case (:mod:`thermogear.case_pieces`): the FE inputs its one
+document. Each asks for the piece ``fem_inputs`` of the case (:mod:`thermogear.case.pieces`): the FE inputs its one
 resolver, :func:`thermogear.fem.inputs.fem_inputs`, makes of the case.
 """
 
@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
     from thermogear.fem.inputs import FemInputs
-    from thermogear.temperature_source import TemperatureField
+    from thermogear.temperature.source import TemperatureField
 
 
 def fem_temperature_field(fem_inputs: "FemInputs") -> "TemperatureField":

@@ -51,7 +51,7 @@ def temperature_field_from_fem(pair: "GearPair", reference_c: float, temperature
     pinion flank table along the path fitted in Γ, the wheel flank as the pinion's plus its mean offset along the
     path (the field holds one constant offset), base-circle and bore means; ``reference_c`` the stress-free
     temperature [°C]."""
-    from thermogear.temperature_source import TemperatureField  # noqa: PLC0415
+    from thermogear.temperature.source import TemperatureField  # noqa: PLC0415
 
     roll = pair.roll_grid(FLANK_TABLE_POINTS)
     gamma = np.asarray(pair.gamma(roll), dtype=float)

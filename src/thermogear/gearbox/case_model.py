@@ -18,8 +18,7 @@ from __future__ import annotations
 
 import math
 import weakref
-from dataclasses import replace
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from thermogear import warning_scope
 from thermogear.case import cached_per_case
@@ -27,16 +26,18 @@ from thermogear.errors import CaseError
 from thermogear.gearbox.bearing_entries import drivetrain_mounted_bearings, rolling_bearing
 from thermogear.gearbox.shaft_conduction import drivetrain_shaft_spans
 from thermogear.gearbox.injection import OilJet
-from thermogear.friction_models import friction_law
+from thermogear.friction.models import friction_law
 from thermogear.lubrication_methods import lubrication_method
 from thermogear.gearbox.description import (GearboxDescription, GearboxOperatingPoint, Housing, LipSeal,
                                             MountedBearing, OilConditioning)
 from thermogear.gearbox.input_checks import check_gearbox_inputs, housing_box, oil_floor_and_level
 from thermogear.gearbox.network import NoSteadyStateError
-from thermogear.temperature_limits import MATERIAL_MAXIMUM_C
+from thermogear.temperature.limits import MATERIAL_MAXIMUM_C
 from thermogear.thermoelastic.materials import HOUSING_EXPANSION_PER_K
 
 if TYPE_CHECKING:
+    from collections.abc import Callable
+
     from thermogear.case import Case
     from thermogear.geometry import GearPair
     from thermogear.lubricant import Lubricant
@@ -63,7 +64,7 @@ def check_gearbox_section(gearbox_model: "GearboxThermalModel | None") -> None:
     """Load-time check of a ``[gearbox]`` section under any temperature model: the description builds.
 
     A load-time check (:data:`thermogear.composition.CASE_CHECKS`) whose work is done by asking for the piece
-    ``gearbox_model`` (:mod:`thermogear.case_pieces`): resolving it builds the case's description (memoised: every
+    ``gearbox_model`` (:mod:`thermogear.case.pieces`): resolving it builds the case's description (memoised: every
     later stage asks for this one), None for a case without ``[gearbox]``."""
 
 
@@ -213,13 +214,13 @@ def describe_prediction(state: "GearboxSteadyState") -> str:
 class PredictedTemperatureError(CaseError):
     """The gearbox network's stable steady state at the case's operating point lies above the material data: the
     mesh cannot be evaluated there, so commands that evaluate it (``check``, ``run``, ``sweep``) refuse the case.
-    ``unresolved_case`` is the case before its temperatures were predicted (its gearbox network complete), which the
-    commands that report the network itself (``gearbox``, ``warmup --model gearbox``) go on with; ``state`` the
-    steady state, flags included (None where the network has no stable steady state there: thermal runaway)."""
+    It carries what it reports: the key, value, allowed range and reason of a CaseError, and ``state`` the steady
+    state, flags included (None where the network has no stable steady state there: thermal runaway). The commands
+    that report the network itself (``gearbox``, ``warmup --model gearbox``) go on with the case before its
+    temperatures were predicted (``load_case(..., predict_temperatures=False)``, :func:`load_gearbox_case`)."""
 
-    def __init__(self, unresolved_case: "Case", state: "GearboxSteadyState", *arguments) -> None:
-        super().__init__(*arguments)
-        self.unresolved_case = unresolved_case
+    def __init__(self, state: "GearboxSteadyState | None", key: str, value, allowed: str, reason: str) -> None:
+        super().__init__(key, value, allowed, reason)
         self.state = state
 
 
@@ -246,34 +247,37 @@ def load_gearbox_case(name_or_path) -> "Case":
 
     try:
         return load_case(name_or_path)
-    except PredictedTemperatureError as error:
-        return error.unresolved_case
+    except PredictedTemperatureError:
+        return load_case(name_or_path, predict_temperatures=False)
 
 
-def with_predicted_temperatures(case: "Case") -> "Case":
-    """The case as every command sees it under ``temperature.model = "gearbox"``: the predicted oil temperature
-    as ``lubricant.operating_temperature_c`` (viscosity, damping), the housing node's as ``housing.temperature_c``
-    (centre distance, backlash) and the prediction added to the assumptions. The gear temperatures come from the
-    ``"gearbox"`` temperature provider (:mod:`thermogear.gearbox.provider`).
-
-    Keeps the Case: it is the ``"gearbox"`` temperature model's resolver (``resolver(case) -> Case``,
-    :data:`thermogear.composition.TEMPERATURE_MODELS`), which writes the predicted temperatures into the case."""
-    gearbox_section(case.gearbox)
-    if case.housing.temperature_c is not None:
-        raise CaseError("housing.temperature_c", case.housing.temperature_c, "absent with temperature.model = "
+def predicted_temperatures(gearbox: "GearboxSection | None", housing: "HousingSection",
+                           lubricant: "LubricantSection", operating_point: "OperatingPoint",
+                           gearbox_model_of: "Callable[[], GearboxThermalModel]", document: dict,
+                           assumptions: tuple[str, ...]) -> dict[str, Any]:
+    """What the case's parts are under ``temperature.model = "gearbox"``, as every command sees them: the predicted
+    oil temperature as ``lubricant.operating_temperature_c`` (viscosity, damping), the housing node's as
+    ``housing.temperature_c`` (centre distance, backlash) and the prediction added to the ``assumptions``; the
+    loader writes them into the case. The gear temperatures come from the ``"gearbox"`` temperature provider
+    (:mod:`thermogear.gearbox.provider`). The ``"gearbox"`` temperature model's resolver
+    (:data:`thermogear.composition.TEMPERATURE_MODELS`): its parameters name the pieces of the case it reads
+    (``document``: the case file as loaded, for the load key a refusal names)."""
+    gearbox_section(gearbox)
+    if housing.temperature_c is not None:
+        raise CaseError("housing.temperature_c", housing.temperature_c, "absent with temperature.model = "
                         "'gearbox'", "the gearbox model predicts the housing temperature")
-    if "operating_temperature_c" in case.lubricant.model_fields_set:
-        raise CaseError("lubricant.operating_temperature_c", case.lubricant.operating_temperature_c,
+    if "operating_temperature_c" in lubricant.model_fields_set:
+        raise CaseError("lubricant.operating_temperature_c", lubricant.operating_temperature_c,
                         "absent with temperature.model = 'gearbox'", "the gearbox model predicts the oil temperature")
-    operating = gearbox_operating_point(case.operating_point, case.gearbox)
+    operating = gearbox_operating_point(operating_point, gearbox)
     try:
-        state = predicted_steady_state(gearbox_model_from_case(case), operating)
+        state = predicted_steady_state(gearbox_model_of(), operating)  # its network, once the sections are checked
     except NoSteadyStateError as error:  # a case the commands cannot evaluate: refused at load, naming the key
-        raise PredictedTemperatureError(case, None, *_no_steady_state(case.document.get("operating", {}), operating,
-                                                                      error)) from error
+        raise PredictedTemperatureError(None, *_no_steady_state(document.get("operating", {}), operating,
+                                                                error)) from error
     hottest = max(state.pinion_c, state.wheel_c, state.oil_c, state.housing_c)
     if hottest > MATERIAL_MAXIMUM_C:
-        raise PredictedTemperatureError(case, state, "temperature.model", "gearbox",
+        raise PredictedTemperatureError(state, "temperature.model", "gearbox",
                         f"predicted temperatures <= {MATERIAL_MAXIMUM_C:g} °C",
                         f"the gearbox network's stable steady state at {operating.speed_rpm:g} rpm, "
                         f"{operating.torque:g} N·m has pinion {state.pinion_c:.1f} °C, wheel {state.wheel_c:.1f} °C, "
@@ -281,9 +285,8 @@ def with_predicted_temperatures(case: "Case") -> "Case":
                         f"{MATERIAL_MAXIMUM_C:g} °C the material data cover, so the mesh cannot be evaluated there "
                         "(`thermogear gearbox CASE` reports the steady state itself)")
     housing_update = {"temperature_c": round(state.housing_c, 6)}
-    if "material" not in case.housing.model_fields_set:
-        housing_update["material"] = gearbox_section(case.gearbox).housing.material
-    return replace(case,
-                   lubricant=case.lubricant.model_copy(update={"operating_temperature_c": round(state.oil_c, 6)}),
-                   housing=case.housing.model_copy(update=housing_update),
-                   assumptions=case.assumptions + (describe_prediction(state),))
+    if "material" not in housing.model_fields_set:
+        housing_update["material"] = gearbox_section(gearbox).housing.material
+    return {"lubricant": lubricant.model_copy(update={"operating_temperature_c": round(state.oil_c, 6)}),
+            "housing": housing.model_copy(update=housing_update),
+            "assumptions": assumptions + (describe_prediction(state),)}

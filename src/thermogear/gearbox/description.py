@@ -24,7 +24,7 @@ from dataclasses import dataclass, field
 from functools import cached_property
 
 from thermogear.errors import CaseError
-from thermogear.friction_models import DEFAULT_LOSS_FRICTION_MODEL, FRICTION_MODELS, FrictionLaw
+from thermogear.friction.models import DEFAULT_LOSS_FRICTION_MODEL, FRICTION_MODELS, FrictionLaw
 from thermogear.gearbox.bearing_loss import RollingBearing
 from thermogear.gearbox.injection import OilJet
 from thermogear.gearbox.mesh_loss import rigid_pinion_heat_share
@@ -119,7 +119,7 @@ class GearboxDescription:
     Ohlendorf's H_V of the pair; give the mesh model's H_VL to use its load sharing), the cold normal backlash
     [m] (None: the AGMA 2002 minimum) and the assembly temperature [°C] at which it holds; ``oil_jet``: the
     into-mesh jet of injection lubrication (its impulse loss; the gears then usually dip nowhere: immersions 0).
-    ``friction``: the mean friction law of the tooth loss (:data:`thermogear.friction_models.FRICTION_MODELS`,
+    ``friction``: the mean friction law of the tooth loss (:data:`thermogear.friction.models.FRICTION_MODELS`,
     default Schlenk's), ``friction_constant`` its value for the ``"constant"`` law; ``lubricant_factor`` X_L of
     that law (None: the law's value for the oil's base oil). ``conditioning``: a test rig's thermostat-driven
     heater and cooler on the oil (:class:`OilConditioning`).

@@ -129,7 +129,7 @@ def network_drivetrain_heat(gearbox_model: "GearboxThermalModel | None", gearbox
                             drivetrain: "DrivetrainSection | None", operating_point: "OperatingPoint") -> DrivetrainHeat:
     """The drivetrain's temperatures at the case's own operating point: the steady state of the case's network
     ``gearbox_model`` (the ``"gearbox"`` provider of :data:`thermogear.composition.DRIVETRAIN_HEAT`, which receives
-    these pieces of the case, :mod:`thermogear.case_pieces`)."""
+    these pieces of the case, :mod:`thermogear.case.pieces`)."""
     operating = gearbox_operating_point(operating_point, gearbox)
     parts = coupled_parts(gearbox_model, gearbox, drivetrain)
     return operating_point_temperatures(parts, operating.speed_rpm, operating.torque).heat

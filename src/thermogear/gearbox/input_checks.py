@@ -24,7 +24,7 @@ from typing import TYPE_CHECKING
 
 from thermogear.errors import CaseError, ModelAssumptionWarning
 from thermogear.lubrication_methods import lubrication_method
-from thermogear.temperature_kinds import temperature_source
+from thermogear.temperature.kinds import temperature_source
 
 if TYPE_CHECKING:
     from thermogear.geometry import GearPair

@@ -1,7 +1,7 @@
 """Power losses of the gearbox at node temperatures, each source on its own, and the efficiency.
 
 Tooth friction P_VZP = P_in·μ_m·H_V (Niemann & Winter §21.6) with the description's mean friction law
-(:mod:`thermogear.friction_models`: Schlenk's by default, the paper's DIN 3990-4 law, ISO/TR 13989-1 or a
+(:mod:`thermogear.friction.models`: Schlenk's by default, the paper's DIN 3990-4 law, ISO/TR 13989-1 or a
 constant) at the oil temperature, evaluated at the pitch point (sum of rolling speeds 2·v_t·sin α_w, relative
 radius of curvature at C, unit load F_bt/b); bearings by the SKF model at the viscosity of the oil at the shaft
 node's temperature, radial load a fraction of the tooth normal force (for a drivetrain bearing its static force per
@@ -22,7 +22,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from thermogear.errors import ExtrapolationWarning
-from thermogear.friction_models import PitchContact
+from thermogear.friction.models import PitchContact
 from thermogear.gearbox.bearing_entries import mounted_bearing_power
 from thermogear.gearbox.bearing_loss import seal_power_loss
 from thermogear.gearbox.churning import DippedGear, churning_power_loss, churning_validity

@@ -5,7 +5,7 @@ bearings, oil, housing; the ambient air is the boundary (:mod:`~thermogear.gearb
 (:mod:`~thermogear.gearbox.losses`) follow the oil and shaft temperatures through the viscosity (tooth friction, bearings, churning); the housing's outer conductance follows
 the housing and air temperatures (natural convection, radiation). :meth:`GearboxThermalModel.steady_state` gives
 the predicted gear and oil temperatures of an operating point — the stable steady state, with its plausibility
-flags (:mod:`thermogear.temperature_limits`), or :class:`ThermalRunawayError` where the stable branch followed in
+flags (:mod:`thermogear.temperature.limits`), or :class:`ThermalRunawayError` where the stable branch followed in
 torque ends below the torque asked for; :meth:`GearboxThermalModel.warm_up` the history of temperatures, losses
 and backlash from a cold start (with a rig's oil conditioning where the description has one).
 """
@@ -27,12 +27,12 @@ from thermogear.gearbox.losses import (HOUSING, NODES, OIL, PINION, PINION_SHAFT
 from thermogear.gearbox.network import (NoSteadyStateError, ThermalNetwork, continue_steady_states,
                                         integrate_transient, solve_steady_state, stability_eigenvalues,
                                         steady_state_at)
-from thermogear.temperature_limits import FLAG_MEANINGS, NETWORK_EVALUATION_RANGE_C, state_flags
+from thermogear.temperature.limits import FLAG_MEANINGS, NETWORK_EVALUATION_RANGE_C, state_flags
 
 #: Coldest start the model accepts [°C] (the brief's −40 °C; the oil's fit is extrapolated there, with a warning).
 COLDEST_START_C = -40.0
 #: The property laws are evaluated with temperatures clipped to this range [°C]; a steady state is a result only
-#: inside it, HOTTEST_STEADY_C being its upper end less a margin (thermogear.temperature_limits).
+#: inside it, HOTTEST_STEADY_C being its upper end less a margin (thermogear.temperature.limits).
 EVALUATION_RANGE_C = NETWORK_EVALUATION_RANGE_C
 HOTTEST_STEADY_C = NETWORK_EVALUATION_RANGE_C[1] - 10.0
 
@@ -79,7 +79,7 @@ class GearboxSteadyState(GearboxState):
     energy_residual: float
     time_constants: np.ndarray
     largest_eigenvalue: float = float("nan")  # largest real part of the stability eigenvalues [1/s] (< 0: stable)
-    flags: tuple[str, ...] = ()  # plausibility flags (thermogear.temperature_limits.FLAG_MEANINGS)
+    flags: tuple[str, ...] = ()  # plausibility flags (thermogear.temperature.limits.FLAG_MEANINGS)
 
     @property
     def energy_balance_w(self) -> float:
@@ -236,7 +236,7 @@ class GearboxThermalModel:
                           stacklevel=3)
 
     def flags(self, temperatures_c) -> tuple[str, ...]:
-        """Plausibility flags of a state (:func:`thermogear.temperature_limits.state_flags`)."""
+        """Plausibility flags of a state (:func:`thermogear.temperature.limits.state_flags`)."""
         values = np.asarray(temperatures_c, dtype=float)
         oil = self.description.lubricant
         return state_flags(float(max(values[PINION], values[WHEEL])), float(values[OIL]), oil.base_oil,

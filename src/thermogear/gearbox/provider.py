@@ -11,7 +11,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from thermogear.gearbox.case_model import gearbox_operating_point, gearbox_section, predicted_steady_state
-from thermogear.temperature_field import TemperatureField
+from thermogear.temperature.field import TemperatureField
 
 if TYPE_CHECKING:
     from thermogear.gearbox.model import GearboxThermalModel
@@ -30,7 +30,7 @@ def gearbox_temperature_field(gearbox_model: "GearboxThermalModel | None", gearb
     of the case's network ``gearbox_model`` at its ``operating_point`` in the ambient of its ``[gearbox]``.
 
     A temperature provider (:data:`thermogear.composition.TEMPERATURE_PROVIDERS`): it receives these pieces of the
-    case (:mod:`thermogear.case_pieces`)."""
+    case (:mod:`thermogear.case.pieces`)."""
     gearbox_section(gearbox)  # a case without [gearbox] is refused, naming the section
     state = predicted_steady_state(gearbox_model, gearbox_operating_point(operating_point, gearbox))
     pinion, wheel = round(state.pinion_c, 6), round(state.wheel_c, 6)

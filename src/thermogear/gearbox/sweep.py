@@ -5,7 +5,7 @@ module solves a block of points in a loop (:func:`solve_grid`); :func:`steady_sw
 and :mod:`thermogear.sweep.gearbox_grid` a grid cut into blocks on the study executor (worker processes, a
 scheduler), written to a zarr store as the blocks finish. A point without a stable steady state (thermal runaway)
 is masked, never a number, and carries the torque of the fold where the stable branch ended; a stable point carries
-its plausibility flags (:mod:`thermogear.temperature_limits`): a hot stable state is a result, flagged.
+its plausibility flags (:mod:`thermogear.temperature.limits`): a hot stable state is a result, flagged.
 """
 
 from __future__ import annotations
@@ -19,7 +19,7 @@ from thermogear.errors import CaseError, ExtrapolationWarning
 from thermogear.gearbox.description import GearboxOperatingPoint
 from thermogear.gearbox.losses import NODES
 from thermogear.gearbox.network import NoSteadyStateError
-from thermogear.temperature_limits import FLAG_MEANINGS
+from thermogear.temperature.limits import FLAG_MEANINGS
 
 #: Largest grid accepted (each point is one nonlinear solve).
 MOST_POINTS = 10_000
@@ -51,7 +51,7 @@ class SteadySweep:
         return np.ma.getmaskarray(self.mesh_loss)
 
     def flagged(self, flag: str) -> np.ndarray:
-        """True where a steady state carries ``flag`` (m, k) (thermogear.temperature_limits.FLAG_MEANINGS)."""
+        """True where a steady state carries ``flag`` (m, k) (thermogear.temperature.limits.FLAG_MEANINGS)."""
         shape = self.runaway.shape
         if self.flags is None:
             return np.zeros(shape, dtype=bool)
@@ -60,7 +60,7 @@ class SteadySweep:
     @property
     def valid(self) -> np.ndarray:
         """True where a stable steady state exists with every gear within the material data (m, k): the one
-        limit that ``check``/``run``/``sweep`` apply (thermogear.temperature_limits)."""
+        limit that ``check``/``run``/``sweep`` apply (thermogear.temperature.limits)."""
         return ~self.runaway & ~self.flagged("above_material_data")
 
     @property
@@ -109,7 +109,7 @@ def solve_grid(model, speeds_rpm, torques, ambient_c: float) -> dict[str, np.nda
     """The steady states of ``model`` at every speed [rpm] × torque [N·m] (a block of a grid), in a loop: arrays
     ``temperatures`` (nodes, m, k) [°C] and one (m, k) per name of :data:`OUTPUTS`, NaN where the network has no stable
     steady state, ``runaway`` (m, k) bool, ``fold`` (m, k) the torque [N·m] where the stable branch ended (NaN
-    elsewhere) and ``flag_<name>`` (m, k) bool per plausibility flag (:data:`~thermogear.temperature_limits.
+    elsewhere) and ``flag_<name>`` (m, k) bool per plausibility flag (:data:`~thermogear.temperature.limits.
     FLAG_MEANINGS`). Each point is a pure function of the model and the point, so a block gives
     the same bits wherever and in whatever order it is solved. The viscosity-range warning of each point is not
     raised here (:func:`warn_oil_range` says it once for a whole grid)."""

@@ -2,7 +2,7 @@
 the secant meshing thermal stiffness k_T with the thermal-elastic ratio X_te (Eqs. 7–23).
 
 It is the ``"luo2020"`` pair model (``[thermal] model = "luo2020"``); thermogear's predictive model is
-:mod:`thermogear.thermoelastic`. The tooth temperatures both read come from :mod:`thermogear.temperature_source`.
+:mod:`thermogear.thermoelastic`. The tooth temperatures both read come from :mod:`thermogear.temperature.source`.
 
 - :mod:`~thermogear.luo2020.expansion`: flank expansion along the line of action (Eqs. 8–12);
 - :mod:`~thermogear.luo2020.stiffness`: k_T, k_Ti, δ_T, δ_Ti, δ_Tp (Eqs. 13–23);

@@ -22,21 +22,21 @@ from thermogear.errors import CaseError, ThermogearError
 from thermogear.stiffness.potential_energy import pair_compliance
 from thermogear.luo2020.case_inputs import PaperThermalInputs
 from thermogear.luo2020.stiffness import check_x_te
-from thermogear.temperature_source import TemperatureField
+from thermogear.temperature.source import TemperatureField
 from thermogear.thermal_model_rules import x_te_source
 
 if TYPE_CHECKING:
     from thermogear.case import Case
     from thermogear.schema.thermal import ThermalSection
 
-XteProvider = Callable[..., float]  # its parameters name pieces of the case (thermogear.case_pieces)
+XteProvider = Callable[..., float]  # its parameters name pieces of the case (thermogear.case.pieces)
 _PROVIDERS: dict[str, XteProvider] = {}
 
 
 def register_x_te_provider(name: str, provider: XteProvider) -> None:
     """Plug in an X_te source selectable as ``[thermal].x_te_source = name`` (the FE thermo-elastic analysis
     registers ``"fem"``). The provider receives the pieces of the case its parameters name
-    (:mod:`thermogear.case_pieces`; ``provider(case)``: the whole case) and returns X_te ≥ 0."""
+    (:mod:`thermogear.case.pieces`; ``provider(case)``: the whole case) and returns X_te ≥ 0."""
     if not callable(provider):
         raise TypeError("provider must be callable: provider(case) -> float")
     _PROVIDERS[name] = provider
@@ -108,6 +108,12 @@ def x_te_provider(name: str) -> XteProvider:
                               "analysis is not registered (its module is not installed); use "
                               "'given' or 'calibrated'")
     return provider
+
+
+def chosen_x_te_provider(thermal: "ThermalSection") -> XteProvider:
+    """The X_te provider a ``[thermal]`` section's ``x_te_source`` names: the chooser of the piece ``provided_x_te``
+    (:data:`thermogear.composition.CHOSEN_PIECES`)."""
+    return x_te_provider(thermal.x_te_source)
 
 
 def section_x_te(section: "ThermalSection", inputs: PaperThermalInputs, temperature: Callable[[], TemperatureField],

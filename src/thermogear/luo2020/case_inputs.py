@@ -14,7 +14,7 @@ from thermogear.materials import Material
 from thermogear.stiffness.table import pair_stiffness_at
 from thermogear.luo2020.expansion import pair_flank_expansion
 from thermogear.luo2020.stiffness import pair_share_normal_load
-from thermogear.temperature_source import TemperatureField
+from thermogear.temperature.source import TemperatureField
 
 
 @dataclass(frozen=True, eq=False)

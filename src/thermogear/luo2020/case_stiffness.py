@@ -13,7 +13,6 @@ its memo when nothing else holds it.
 
 from __future__ import annotations
 
-import weakref
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
@@ -21,16 +20,17 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from thermogear import warning_scope
-from thermogear.case_pieces import call_with_pieces
+from thermogear.case import cached_per_case
 from thermogear.stiffness.potential_energy import pair_compliance
 from thermogear.stiffness.table import pair_compliance_table, tooth_compliance_at
-from thermogear.luo2020.calibration import Calibration, calibrate, section_x_te, x_te_provider
+from thermogear.luo2020.calibration import Calibration, calibrate, section_x_te
 from thermogear.luo2020.case_inputs import PaperThermalInputs, load_basis_of
 from thermogear.luo2020.stiffness import (CONTACT_TOLERANCE, ThermalStiffness, check_x_te, thermal_pair_stiffness)
-from thermogear.temperature_source import TemperatureField, temperature_field_from_case
+from thermogear.temperature.source import TemperatureField
 
 if TYPE_CHECKING:
-    from thermogear.case import Case
+    from thermogear.geometry import GearPair
+    from thermogear.materials import Material
     from thermogear.schema.thermal import ThermalSection
 
 #: Splines kept per case (one per distinct normal load) before the oldest is dropped.
@@ -154,35 +154,26 @@ class PaperThermalModel:
 
 
 # ------------------------------------------------------------------------------------ the case's resolver
-#: The memo of each case's model (splines by load, the case's own X_te), keyed by the case's identity and dropped with
-#: the case. Identity, deliberately: what the memo holds depends on the temperature field and the X_te provider,
-#: which are functions of the whole case (a provider such as the FE model reads more than the ``[thermal]`` section),
-#: so no smaller key determines it; and a Case holds lists, so it is not hashable. The entry holds a weak reference
-#: to the case only, so a case is freed with its memo when nothing else holds it.
-_MEMOS: dict[int, tuple[weakref.ref, dict]] = {}
+@cached_per_case
+def paper_thermal_memo() -> dict:
+    """The memo of a case's model (splines by load, the case's own X_te): one per case, dropped with the case
+    (:func:`thermogear.case.cached_per_case`, the piece ``paper_thermal_memo``). Per case, deliberately: what the
+    memo holds depends on the temperature field and the X_te provider, which are functions of the whole case (a
+    provider such as the FE model reads more than the ``[thermal]`` section), so no smaller key determines it."""
+    return {}
 
 
-def paper_thermal_model(case: "Case") -> PaperThermalModel:
-    """The paper's k_T model of a case: the resolver, the one place the paper's model reads the case (so it keeps
-    the Case); what the model computes once per case is kept in the case's memo (``_MEMOS``), which holds no reference
-    to the case (a model is cheap to build, its memo is shared)."""
-    section = case.thermal
-
-    def field_of() -> TemperatureField:
-        return temperature_field_from_case(case)
-
-    def provided_x_te() -> float:
-        return call_with_pieces(x_te_provider(section.x_te_source), case)  # the pieces it names
-
-    key = id(case)
-    entry = _MEMOS.get(key)
-    if entry is None or entry[0]() is not case:  # a new case, or a freed one's identity reused
-        entry = _MEMOS[key] = (weakref.ref(case, lambda _, key=key: _MEMOS.pop(key, None)), {})
-    inputs = PaperThermalInputs(gear_pair=case.gear_pair, material=case.material,
-                                expansion_model=section.expansion_model, load_basis=section.load_basis,
-                                normal_load=case.normal_load)
-    return PaperThermalModel(inputs=inputs, section=section, field_of=field_of, provided_x_te=provided_x_te,
-                             memo=entry[1])
+def paper_thermal_model(gear_pair: "GearPair", material: "Material", thermal: "ThermalSection", normal_load: float,
+                        temperature_field_of: Callable[[], TemperatureField], provided_x_te_of: Callable[[], float],
+                        paper_thermal_memo: dict) -> PaperThermalModel:
+    """The paper's k_T model of a case, from the pieces it reads (:mod:`thermogear.case.pieces`; called with the
+    case as ``call_with_pieces(paper_thermal_model, case)``): the gear pair, material, ``[thermal]`` section and
+    normal load [N], the temperature field and the provider's X_te, each asked for when first needed, and the
+    case's memo of what is computed once per case (a model is cheap to build, its memo is shared)."""
+    inputs = PaperThermalInputs(gear_pair=gear_pair, material=material, expansion_model=thermal.expansion_model,
+                                load_basis=thermal.load_basis, normal_load=normal_load)
+    return PaperThermalModel(inputs=inputs, section=thermal, field_of=temperature_field_of,
+                             provided_x_te=provided_x_te_of, memo=paper_thermal_memo)
 
 
-__all__ = ["PaperThermalModel", "paper_thermal_model"]
+__all__ = ["PaperThermalModel", "paper_thermal_memo", "paper_thermal_model"]

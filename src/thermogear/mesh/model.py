@@ -19,19 +19,19 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from thermogear.damping import (PairDamping, friction_damping_exponents,
+from thermogear.friction.damping import (PairDamping, friction_damping_exponents,
                                 friction_pair_damping, mesh_circular_frequency, mesh_damping)
 from thermogear.errors import CaseError
-from thermogear.friction_models import FrictionLaw, friction_law
+from thermogear.friction.models import FrictionLaw, friction_law
 from thermogear.lubricant import Lubricant, lubricant_from_case
 from thermogear.mesh.helical_model import helical_model_state
 from thermogear.mesh.model_names import MODELS, Model
-from thermogear.mesh.pair_models import PairModelBase, check_model, pair_model_for
+from thermogear.mesh.pair_models import PairModelBase, check_model, pair_model_class
 from thermogear.mesh.state import MeshState
 from thermogear.mesh.table_file import mesh_table_of
 from thermogear.mesh_cycle import MeshCycle, MeshGrid, load_share_at, load_shares
-from thermogear.temperature_kinds import temperature_source
-from thermogear.temperature_source import TemperatureField
+from thermogear.temperature.kinds import temperature_source
+from thermogear.temperature.source import TemperatureField
 from thermogear.thermal_model_rules import x_te_source
 from thermogear.thermoelastic.load_sharing import loaded_transmission_error
 from thermogear.thermoelastic.mesh import ThermoelasticMesh
@@ -73,8 +73,9 @@ class MeshModel:
     # ------------------------------------------------------------------------------------ what it is
     @cached_property
     def pair_model(self) -> PairModelBase:
-        """The pair model answering for this model (chosen once: :func:`~thermogear.mesh.pair_models.pair_model_for`)."""
-        return pair_model_for(self.case, self.model)
+        """The pair model answering for this model (chosen once, by name:
+        :func:`~thermogear.mesh.pair_models.pair_model_class`), built on the case."""
+        return pair_model_class(self.model, self.case.thermal.model)(self.case)
 
     @property
     def thermal(self) -> bool:
@@ -130,7 +131,7 @@ class MeshModel:
     def damping_scaling(self) -> tuple[float, float | None] | None:
         """(speed exponent, load exponent) of the mesh damping, c(n, w) = c(n0, w0)·(n/n0)^a·(w/w0)^b, where this
         model keeps the conditions under which the friction damping is such a power law (geometry, oil
-        temperature and load shares independent of speed and load; thermogear.damping); the load exponent is
+        temperature and load shares independent of speed and load; thermogear.friction.damping); the load exponent is
         None where the load shares move with the load, and the whole is None where the temperature input depends
         on the speed (the FE heat model; the gearbox model, whose predicted temperatures follow speed and load). Sweeps use it to reuse one mesh period (and do not where the pairs carry
         deviations: the excitation is not part of their batch kernel)."""
@@ -338,7 +339,7 @@ def check_damping_friction_law(damping: "DampingSection", oil: "Lubricant") -> N
     case's ``oil`` (or the case gives ``damping.lubricant_factor``); CaseError naming the key otherwise.
 
     A load-time check (:data:`thermogear.composition.CASE_CHECKS`): it receives these pieces of the case
-    (:mod:`thermogear.case_pieces`)."""
+    (:mod:`thermogear.case.pieces`)."""
     law = friction_law(damping.friction_model, key="damping.friction_model")
     law.lubricant_factor(oil.base_oil, damping.lubricant_factor, key="damping.lubricant_factor")
 

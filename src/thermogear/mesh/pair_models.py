@@ -6,7 +6,7 @@ the gear pair as it meshes, the oil temperature of the friction formula and the 
 whether stiffness or load shares depend on the load. :class:`~thermogear.mesh.model.MeshModel` builds one mesh period
 from them and knows nothing of which model answers.
 
-Three models (``PAIR_MODELS``, resolved once by :func:`pair_model_for`):
+Three models (``PAIR_MODELS``, resolved once by :func:`pair_model_class`):
 
 * ``"elastic"`` — :class:`ElasticPair`: k_e of the gear pair as built, oil at the lubricant's reference temperature
   (Eq. 5).
@@ -30,13 +30,14 @@ from typing import TYPE_CHECKING, Any, ClassVar, Protocol
 
 import numpy as np
 
-from thermogear.dynamics.mesh_laws import mesh_law
+from thermogear.case.pieces import call_with_pieces
+from thermogear.dynamics.problems.mesh_laws import mesh_law
 from thermogear.errors import CaseError
+from thermogear.luo2020.case_stiffness import paper_thermal_model
 from thermogear.mesh.model_names import MODELS, THERMAL
 from thermogear.mesh.secant_checks import secant_stiffness_drop_flag, secant_stiffness_in_nonlinear_mesh
 from thermogear.stiffness.table import pair_stiffness_at
-from thermogear.luo2020.case_stiffness import paper_thermal_model
-from thermogear.temperature_source import TemperatureField, temperature_field_from_case
+from thermogear.temperature.source import TemperatureField, temperature_field_from_case
 from thermogear.thermal_model_rules import LUO2020_RULES, THERMOELASTIC_RULES, ThermalModelRules
 from thermogear.thermoelastic.mesh import ThermoelasticMesh
 
@@ -227,9 +228,15 @@ class Luo2020Pair(PairModelBase):
         """Deviations of profile modifications, or k_T as the stiffness of the friction load share."""
         return self.thermoelastic_mesh is not None or self.damping_uses_pair_stiffness
 
+    @cached_property
+    def paper_model(self):
+        """The paper's k_T model of the case (:func:`~thermogear.luo2020.case_stiffness.paper_thermal_model`, built
+        from the pieces it names; what it computes once per case is kept in the case's memo)."""
+        return call_with_pieces(paper_thermal_model, self.case)
+
     def pair_stiffness_at(self, roll, normal_load: float) -> np.ndarray:
-        return np.asarray(paper_thermal_model(self.case).pair_stiffness_at(np.asarray(roll, dtype=float),
-                                                                           normal_load=normal_load), dtype=float)
+        return np.asarray(self.paper_model.pair_stiffness_at(np.asarray(roll, dtype=float), normal_load=normal_load),
+                          dtype=float)
 
     def damping_stiffness_at(self, roll, normal_load: float) -> np.ndarray:
         if self.damping_uses_pair_stiffness:
@@ -326,23 +333,24 @@ def check_model(model: str) -> None:
         raise CaseError("model", model, allowed, "unknown model")
 
 
-def pair_model_for(case: "Case", model: str) -> PairModelBase:
+def pair_model_class(model: str, thermal_model: str) -> type[PairModelBase]:
     """The one place a model name becomes a pair model (``model``: ``"elastic"``, ``"thermal"`` for the case's
-    ``[thermal] model``, or a registered pair model's name).
+    ``[thermal] model`` ``thermal_model``, or a registered pair model's name): its class, which is built on the case
+    (``pair_model_class(model, case.thermal.model)(case)``). The choice reads the two names only.
 
     A model with input rules (one a case file chooses by name) runs only on a case of that ``[thermal] model``:
     its rules (temperature limits, X_te) were checked when that case was loaded, and would not have been otherwise."""
     check_model(model)
-    name = pair_model_name(model, case.thermal.model)
+    name = pair_model_name(model, thermal_model)
     if name not in PAIR_MODELS:
         raise CaseError("thermal.model", name, " | ".join(PAIR_MODELS), "no pair model of this name")
     chosen = PAIR_MODELS[name]
-    if chosen.rules is not None and chosen.rules.name != case.thermal.model:
-        raise CaseError("thermal.model", case.thermal.model, chosen.rules.name,
+    if chosen.rules is not None and chosen.rules.name != thermal_model:
+        raise CaseError("thermal.model", thermal_model, chosen.rules.name,
                         f"the pair model '{name}' checks its input when the case is loaded: set thermal.model = "
                         f"'{chosen.rules.name}' in the case and run the \"{THERMAL}\" model")
-    return chosen(case)
+    return chosen
 
 
 __all__ = ["ElasticPair", "Luo2020Pair", "PAIR_MODELS", "PairModel", "PairModelBase", "ThermoelasticPair",
-           "check_model", "pair_model_for", "pair_model_name"]
+           "check_model", "pair_model_class", "pair_model_name"]

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from thermogear.temperature_field import TemperatureField
+from thermogear.temperature.field import TemperatureField
 from thermogear.thermoelastic.materials import MODULUS_TEMPERATURE_COEFFICIENTS_PER_K
 
 #: Slack on the stiffness change that E(T) explains before a thermal model's change is flagged [–]: the operating

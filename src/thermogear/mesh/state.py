@@ -7,8 +7,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from thermogear.dynamics.backlash_problem import BacklashMeshProblem
-from thermogear.dynamics.problem import MeshDynamicsProblem
+from thermogear.dynamics.problems.backlash_problem import BacklashMeshProblem
+from thermogear.dynamics.problems.problem import MeshDynamicsProblem
 from thermogear.errors import CaseError
 from thermogear.mesh_cycle import MeshCycle, MeshGrid
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from thermogear.dynamics.mesh_laws import mesh_law
+from thermogear.dynamics.problems.mesh_laws import mesh_law
 from thermogear.evaluation import MODELS, STEPS, Evaluation, evaluate_case, is_paper_case
 from thermogear.mesh.model_names import THERMAL
 from thermogear.report.paper_table import PAPER_ROWS, Verdict, judge

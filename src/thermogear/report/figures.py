@@ -230,7 +230,7 @@ def _start_up(ax, evaluation, quantity: str, periods: int = 6) -> None:
 
 
 def _model_style(number: int) -> dict:
-    from thermogear.dynamics.plots import MODEL_STYLES  # noqa: PLC0415
+    from thermogear.dynamics.results.plots import MODEL_STYLES  # noqa: PLC0415
 
     return MODEL_STYLES[number % 2]
 

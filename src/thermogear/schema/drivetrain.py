@@ -31,6 +31,7 @@ from typing import Annotated, Literal
 
 from pydantic import Field, model_validator
 
+from thermogear.drivetrain_choices import END_KINDS
 from thermogear.errors import CaseError
 from thermogear.schema.base import Section
 from thermogear.schema.bearing_loss import BearingLossSection, check_loss_data
@@ -335,7 +336,7 @@ def check_drivetrain_section(section: DrivetrainSection) -> None:
                                 "with fewer the shaft could tilt or move sideways freely: no static state")
     for end_key, end in (("driving", section.driving), ("driven", section.driven)):
         key = f"drivetrain.{end_key}"
-        if end.kind == "speed":
+        if END_KINDS[end.kind].held_at_speed:
             if end.shaft is None or end.position_mm is None or end.stiffness_n_m_per_rad is None:
                 raise CaseError(f"{key}.stiffness_n_m_per_rad", end.stiffness_n_m_per_rad,
                                 "shaft, position_mm and stiffness_n_m_per_rad > 0 with kind = 'speed'",

@@ -6,7 +6,7 @@ from typing import Annotated, Literal
 
 from pydantic import Field, model_validator
 
-from thermogear.dynamics.solution_methods import solution_method
+from thermogear.dynamics.problems.solution_methods import solution_method
 from thermogear.errors import CaseError
 
 from thermogear.schema.base import Section
@@ -37,7 +37,7 @@ class DampingSection(Section):
     thermal model: ``"elastic"`` k_e (the paper: c_r differs from c_e by the viscosity only) or ``"thermal"``
     k_T. The elastic model always uses k_e.
     ``friction_model``: the mean friction law μ of Eq. 28, from the registry of the loss model
-    (:data:`thermogear.friction_models.FRICTION_MODELS`), applied locally along the path like the paper's:
+    (:data:`thermogear.friction.models.FRICTION_MODELS`), applied locally along the path like the paper's:
     ``"paper"`` (Luo & Li Eq. 27, the default: the reproduction keeps every number), ``"schlenk"``,
     ``"iso_tr_13989_2"`` or ``"constant"`` (then ``friction_coefficient``).
     """

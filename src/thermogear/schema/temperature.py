@@ -7,7 +7,7 @@ from typing import Annotated, Literal
 from pydantic import Field
 
 from thermogear.schema.base import Section
-from thermogear.temperature_limits import MATERIAL_MAXIMUM_C
+from thermogear.temperature.limits import MATERIAL_MAXIMUM_C
 
 #: Absolute zero [°C]: no temperature of a case may reach it.
 ABSOLUTE_ZERO_C = -273.15
@@ -17,7 +17,7 @@ ABSOLUTE_ZERO_C = -273.15
 #: longer hold; −273 °C passed as an assembly temperature before (issue 25). An assumption of this project.
 CASE_MINIMUM_C = -60.0
 #: Highest temperature any case temperature may have [°C]: the one limit of the material data
-#: (:data:`thermogear.temperature_limits.MATERIAL_MAXIMUM_C`; room-temperature constants, gear steels temper at
+#: (:data:`thermogear.temperature.limits.MATERIAL_MAXIMUM_C`; room-temperature constants, gear steels temper at
 #: 150–200 °C).
 CASE_MAXIMUM_C = MATERIAL_MAXIMUM_C
 

@@ -8,7 +8,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from thermogear.damping import MODELS, contact_region_means, damping_rule, mesh_damping
+from thermogear.friction.damping import MODELS, contact_region_means, damping_rule, mesh_damping
 from thermogear.lubricant import Lubricant
 from thermogear.mesh.model import MeshModel
 from thermogear.schema.dynamics import DampingSection

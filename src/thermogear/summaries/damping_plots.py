@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from thermogear.damping import MODELS, damping_rule
+from thermogear.friction.damping import MODELS, damping_rule
 from thermogear.summaries.damping import DampingSummary
 
 

@@ -19,10 +19,10 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from thermogear.case_keys import LUO2020_KEYS, luo2020_complete
+from thermogear.case.keys import LUO2020_KEYS, luo2020_complete
 from thermogear.errors import ExtrapolationWarning
 from thermogear.mesh.model import MeshModel
-from thermogear.temperature_source import TemperatureField
+from thermogear.temperature.source import TemperatureField
 from thermogear.thermoelastic.mesh import ThermoelasticMesh
 
 if TYPE_CHECKING:
@@ -124,7 +124,7 @@ def thermoelastic_summary(component: ThermoelasticMesh, thermal_model: str, temp
 
 def _luo2020_configured(section) -> bool:
     """The ``[thermal]`` section sets the paper's keys and they define X_te completely (else they are named as
-    having no effect when the case loads, :mod:`thermogear.case_keys`)."""
+    having no effect when the case loads, :mod:`thermogear.case.keys`)."""
     return bool(set(LUO2020_KEYS) & section.model_fields_set) and luo2020_complete(section)
 
 

@@ -15,9 +15,9 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from thermogear.case_pieces import call_with_pieces
+from thermogear.case.pieces import call_with_pieces
+from thermogear.dynamics.problems.mesh_laws import mesh_law
 from thermogear.errors import CaseError
-from thermogear.dynamics.mesh_laws import mesh_law
 from thermogear.sweep.evaluation_methods import is_batched
 
 __all__ = ["STUDY_KINDS", "StudyKind", "StudySubject", "register_study_kind", "study", "study_kind", "study_kinds"]

@@ -12,13 +12,14 @@ pair stiffness — is asked once per group and load, at the group's reference sp
 * the normal load is the mesh model's at that speed (a case that gives a power keeps the power: w ∝ 1/n1);
 * the damping is the reference state's scaled by the mesh model's own ``damping_scaling`` — the friction damping
   of Eqs. 27–28 is a power law in speed and load when the geometry, the oil temperature and the load shares stay
-  as they are (``thermogear.damping``); where the load shares move with the load (the paper's secant k_T in the
+  as they are (``thermogear.friction.damping``); where the load shares move with the load (the paper's secant k_T in the
   load share) the group is split by load, and where the model cannot say (a temperature that depends on the
   speed, deviations that excite the mesh) the points go to the per-point path;
 * where the stiffness depends on the load (the paper's secant k_T), one state per distinct load;
 * me·ẍ + c·ẋ + k·x = w on the nodes t_s = t_ref/r (r = n1/n1,ref) is, in the reference time t_ref = r·t,
   (me·r²)·x'' + (c·r)·x' + k·x = w on the reference nodes: the periodic solver runs all speeds on one node grid;
-* the metrics come from a compiled kernel (:mod:`thermogear.dynamics.periodic_batch_metrics`) that samples the
+* the metrics come from a compiled kernel (:mod:`thermogear.dynamics.periodic_orbits.periodic_batch_metrics`) that
+samples the
   exact orbit as :func:`~thermogear.dynamics.response.compute_metrics` does.
 
 The regression test runs both paths over grids of every sweepable key and both models and asks for a relative
@@ -37,15 +38,15 @@ from typing import Any
 
 import numpy as np
 
-from thermogear.dynamics.metrics import dynamic_factor
-from thermogear.dynamics.mesh_laws import mesh_law
 from thermogear import warning_scope
+from thermogear.dynamics.periodic_orbits.periodic_batch_metrics import periodic_metrics_batch
+from thermogear.dynamics.problems.mesh_laws import mesh_law
+from thermogear.dynamics.results.metrics import dynamic_factor
 from thermogear.errors import JammingError, ModelLimitError, ProblemError
 from thermogear.mesh.model import MeshModel
 from thermogear.sweep.evaluation_methods import evaluation_method
-from thermogear.dynamics.periodic_batch_metrics import periodic_metrics_batch
-from thermogear.warning_causes import warning_text
 from thermogear.sweep.metric_variables import DTE_VARIABLES
+from thermogear.warning_causes import warning_text
 
 __all__ = ["FLAG_VARIABLES", "MODEL_VARIABLES", "POINT_VARIABLES", "GroupTables", "empty_block_result", "evaluate_block",
            "evaluate_loads", "evaluate_point", "evaluate_speeds", "group_tables"]
@@ -227,7 +228,7 @@ def evaluate_group(mesh: MeshModel, speeds_rpm, reference: GroupTables | None = 
 def evaluate_point(simulation) -> dict[str, float]:
     """Metrics of one point from its :class:`~thermogear.simulation.Simulation` (one case under one model, the
     reference path): ``simulation.run("periodic")``, and its dynamics problem where the solution is refused."""
-    from thermogear.dynamics.periodic import floquet_multipliers
+    from thermogear.dynamics.periodic_orbits.periodic import floquet_multipliers
 
     problem = simulation.problem
     result = {name: math.nan for name in MODEL_VARIABLES}

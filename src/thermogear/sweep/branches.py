@@ -5,8 +5,9 @@ a speed run-up stays on the high-amplitude branch beyond the linear peak and dro
 run-down jumps up later — the hysteresis of a backlash oscillator (Kahraman & Singh 1990). A grid point therefore
 has one result per sweep direction. For every combination of the other parameters (a group), model and direction,
 the points of the branch are solved in order, each from its neighbour's orbit
-(:func:`~thermogear.dynamics.backlash_continuation.branch_point`, the step of
-:func:`~thermogear.dynamics.backlash_continuation.follow_branch`), ``up`` (lowest speed first), ``down`` or both.
+(:func:`~thermogear.dynamics.backlash.backlash_continuation.branch_point`, the step of
+:func:`~thermogear.dynamics.backlash.backlash_continuation.follow_branch`), ``up`` (lowest speed first), ``down`` or
+both.
 
 Each branch point is one task of the one executor (:mod:`thermogear.sweep.executor`) that follows the task of its
 neighbour speed; the branches run in parallel (threads: the backlash integrator releases Python's global
@@ -27,13 +28,13 @@ from typing import Any
 import numpy as np
 
 from thermogear import warning_scope
-from thermogear.dynamics.backlash_continuation import branch_point
+from thermogear.dynamics.backlash.backlash_continuation import branch_point
 from thermogear.errors import CaseError, JammingError
 from thermogear.mesh.model import MeshModel
-from thermogear.temperature_kinds import temperature_source
 from thermogear.sweep.branch_store import BRANCH_VARIABLES, branch_layout, branch_region, orbit_arrays
 from thermogear.sweep.hysteresis import hysteresis_bands
 from thermogear.sweep.load_held import study_load_held
+from thermogear.temperature.kinds import temperature_source
 
 __all__ = ["DIRECTIONS", "BRANCH_VARIABLES", "branch_study", "hysteresis_bands", "write_branch_store"]
 
@@ -231,9 +232,9 @@ def branch_study(study, direction: str = "both", progress=None, workers: int | N
     Each point of each branch (group × model × direction × speed; a group is one combination of the parameters
     other than the speed; without a speed axis one point at the case's speed) is one task, which follows the task
     of its neighbour speed and starts Newton from the orbit state that task carried
-    (:func:`~thermogear.dynamics.backlash_continuation.branch_point`, as
-    :func:`~thermogear.dynamics.backlash_continuation.follow_branch` solves each point). The tasks run on the one
-    executor (:func:`thermogear.sweep.executor.execute`; ``scheduler`` default threads, serial where ``workers``
+    (:func:`~thermogear.dynamics.backlash.backlash_continuation.branch_point`, as
+    :func:`~thermogear.dynamics.backlash.backlash_continuation.follow_branch` solves each point). The tasks run on the
+    one executor (:func:`thermogear.sweep.executor.execute`; ``scheduler`` default threads, serial where ``workers``
     is 1: the backlash integrator releases Python's global interpreter lock); the numbers do not depend on where
     they run. Warnings raised by the tasks are raised again in the calling thread, once each.
     ``progress(total, completed)``: a context manager yielding ``advance(points)``, advanced by one as each branch
@@ -244,7 +245,7 @@ def branch_study(study, direction: str = "both", progress=None, workers: int | N
     (its ``orbit`` dimension as long as the starts).
 
     ``multistart`` N > 0: at every point and model also the multi-start search of
-    :func:`~thermogear.dynamics.backlash_orbits.stable_orbits` from N starts (about 0.1 s per start and point):
+    :func:`~thermogear.dynamics.backlash.backlash_orbits.stable_orbits` from N starts (about 0.1 s per start and point):
     the variables of :data:`thermogear.sweep.multistart.ORBIT_VARIABLES` with an extra ``orbit`` dimension (the
     largest basin share first), ``stable_orbit_count`` and ``unsettled_start_share``.
     """

@@ -12,9 +12,9 @@ point are decided; the neighbour's orbit only seeds Newton, its temperatures nev
   and the modal basis (:meth:`~thermogear.drivetrain.case_model.CaseDrivetrain.speed_responses`); the slices depend
   only on the study, never on the workers.
 * Backlash mesh: a task is one point of one branch (group × model × direction); it follows the task of its
-  neighbour speed and starts from the full state that task carried (:func:`~thermogear.dynamics.backlash_branch_ndof.
-  branch_step`). The carried state is stored with the point, so ``--resume`` continues each branch from its last
-  completed point, exactly as the uninterrupted run would.
+  neighbour speed and starts from the full state that task carried
+  (:func:`~thermogear.dynamics.backlash.backlash_branch_ndof. branch_step`). The carried state is stored with the point,
+  so ``--resume`` continues each branch from its last completed point, exactly as the uninterrupted run would.
 """
 
 from __future__ import annotations
@@ -31,7 +31,7 @@ import numpy as np
 from thermogear.errors import CaseError, JammingError, ModelLimitError, ProblemError
 from thermogear.sweep.drivetrain_branches import DIRECTIONS
 from thermogear.sweep.drivetrain_store import STAGE_KEYS, TEMPERATURES
-from thermogear.temperature_kinds import temperature_source
+from thermogear.temperature.kinds import temperature_source
 
 __all__ = ["DrivetrainPlan", "plan_drivetrain_study", "point_case", "run_task"]
 
@@ -269,7 +269,7 @@ def backlash_task(plan: DrivetrainPlan, task, previous: dict | None = None) -> d
     from thermogear.drivetrain.backlash_response import (SHOOTING_TOLERANCE, drivetrain_backlash_response,
                                                          reduced_backlash_system)
     from thermogear.drivetrain.response import drivetrain_backlash_system
-    from thermogear.dynamics.backlash_branch_ndof import branch_step
+    from thermogear.dynamics.backlash.backlash_branch_ndof import branch_step
     from thermogear.sweep.drivetrain_branches import SAMPLES_PER_PIECE, SUBSTEPS
 
     group, model_index, direction_index, speed_index, *stored = task

@@ -18,7 +18,7 @@ import numpy as np
 
 from thermogear.gearbox.losses import NODES
 from thermogear.gearbox.sweep import OUTPUTS, check_grid, grid_result, solve_grid, warn_oil_range
-from thermogear.temperature_limits import FLAG_MEANINGS
+from thermogear.temperature.limits import FLAG_MEANINGS
 from thermogear.sweep.study import _chunk_shape
 
 __all__ = ["DEFAULT_GRID_CHUNK_POINTS", "GridRun", "gearbox_grid_layout", "run_gearbox_grid"]
@@ -86,7 +86,7 @@ def gearbox_grid_layout(model, speeds: np.ndarray, torques: np.ndarray, ambient_
                   StoreVariable("runaway", _DIMS, "int8", "1", "1 where the network has no steady state (thermal "
                                 "runaway); the values there are NaN"),
                   StoreVariable("valid", _DIMS, "int8", "1", "1 where the point has a stable steady state with every "
-                                "gear within the material data (thermogear.temperature_limits)"),
+                                "gear within the material data (thermogear.temperature.limits)"),
                   StoreVariable("fold_torque", _DIMS, "float", "N m", "where the point has no stable steady state: the "
                                 "torque at which the stable branch ended (NaN elsewhere)")]
     variables += [StoreVariable(f"flag_{flag}", _DIMS, "int8", "1", f"1 where the steady state has {meaning}")

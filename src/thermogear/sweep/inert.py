@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from thermogear.temperature_kinds import temperature_source
+from thermogear.temperature.kinds import temperature_source
 from thermogear.errors import JammingError
 from thermogear.mesh.model import MeshModel
 

@@ -10,23 +10,44 @@ attributes, the command's summary and JSON, the plot and the CSV export all name
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
+
+from thermogear.registry import registered
 
 if TYPE_CHECKING:
     from thermogear.operating import OperatingPoint
 
-__all__ = ["HOLDS", "fixed_load_changes", "study_load_held"]
+__all__ = ["DEFAULT_HOLD", "HOLDS", "HeldLoad", "fixed_load_changes", "held_load", "study_load_held"]
 
 _POWER, _TORQUE, _STAGE, _SPEED = ("operating.power_kw", "operating.torque_nm", "operating.fzg_load_stage",
                                    "operating.speed_rpm")
 
 
-#: The loads a speed sweep can keep from speed to speed: the pinion torque (default) or the power.
-HOLDS = ("torque", "power")
+@dataclass(frozen=True)
+class HeldLoad:
+    """A load a speed sweep keeps from speed to speed: ``name`` (the ``--hold`` value) and whether it is the power
+    (``power``: the torque P/ω1 falls with speed), else the pinion torque."""
+
+    name: str
+    power: bool
+
+
+#: The loads a speed sweep can keep from speed to speed, by name (the first the default): the pinion torque or the
+#: power. The one place the names are compared.
+HOLDS: dict[str, HeldLoad] = {held.name: held for held in (HeldLoad("torque", power=False),
+                                                           HeldLoad("power", power=True))}
+#: The load a speed sweep keeps unless told (a study's description names any other).
+DEFAULT_HOLD = next(iter(HOLDS))
+
+
+def held_load(name: str) -> HeldLoad:
+    """The held load called ``name``; a CaseError naming ``--hold`` for any other."""
+    return registered(HOLDS, name, "--hold", "the load a speed sweep keeps from speed to speed")
 
 
 def fixed_load_changes(given: dict[str, Any], point: "OperatingPoint", parameters,
-                       hold: str = "torque") -> tuple[tuple[str, Any], ...]:
+                       hold: str = DEFAULT_HOLD) -> tuple[tuple[str, Any], ...]:
     """Changes applied to every point: the load a speed sweep keeps, of a case whose ``[operating]`` table gives
     ``given`` (the keys of its file) and makes the operating ``point``. ``hold = "torque"`` (default): a case whose
     load is a power is turned into the torque of that power at the case's speed; ``"power"``: a case whose load is
@@ -36,9 +57,10 @@ def fixed_load_changes(given: dict[str, Any], point: "OperatingPoint", parameter
     load_keys = {"operating.torque_nm", "operating.power_kw", "operating.fzg_load_stage"}
     if "operating.speed_rpm" not in keys or keys & load_keys:
         return ()
-    if hold == "torque" and given.get("power_kw") is not None:
+    power = held_load(hold).power
+    if not power and given.get("power_kw") is not None:
         return (("operating.power_kw", None), ("operating.torque_nm", float(point.torque)))
-    if hold == "power" and given.get("power_kw") is None:
+    if power and given.get("power_kw") is None:
         power_kw = float(point.torque) * 2.0 * math.pi * float(point.speed_rpm) / 60.0 / 1000.0
         return (("operating.fzg_load_stage", None), ("operating.torque_nm", None), ("operating.power_kw", power_kw))
     return ()
@@ -60,7 +82,7 @@ def study_load_held(study) -> tuple[str, str]:
     torque = float(operating.torque_at(operating.speed_rpm))
     power_kw = torque * operating.speed_rpm * 3.141592653589793 / 30.0 / 1000.0
     if _SPEED in keys:
-        if getattr(study, "hold", "torque") == "power":
+        if held_load(getattr(study, "hold", DEFAULT_HOLD)).power:
             return "constant power", (f"--hold power: every speed runs at the case's power at {operating.speed_rpm:g} "
                                       f"rpm, {power_kw:.4g} kW (the torque P/ω1 falls with speed)")
         if operating.constant_power:

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 __all__ = ["DTE_VARIABLES"]
 
-#: The DTE statistics of :func:`thermogear.dynamics.period_metrics.dte_statistics`.
+#: The DTE statistics of :func:`thermogear.dynamics.results.period_metrics.dte_statistics`.
 DTE_VARIABLES: dict[str, tuple[str, str]] = {
     "dte_mean": ("m", "mean dynamic transmission error"),
     "dte_rms": ("m", "RMS of the dynamic transmission error about its mean"),

@@ -14,8 +14,8 @@ from typing import Any
 
 import numpy as np
 
-from thermogear.dynamics.backlash_metrics import orbit_metrics
-from thermogear.dynamics.backlash_orbits import stable_orbits
+from thermogear.dynamics.backlash.backlash_metrics import orbit_metrics
+from thermogear.dynamics.backlash.backlash_orbits import stable_orbits
 
 __all__ = ["ORBIT_VARIABLES", "orbit_dataset_variables", "point_orbits"]
 

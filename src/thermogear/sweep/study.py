@@ -28,10 +28,10 @@ from typing import Any
 import numpy as np
 import pydantic
 
-from thermogear.temperature_kinds import temperature_source
+from thermogear.temperature.kinds import temperature_source
 from thermogear.errors import CaseError, JammingError, closest_key
 from thermogear.schema.values import MAX_POINTS, parse_values
-from thermogear.sweep.load_held import HOLDS, fixed_load_changes
+from thermogear.sweep.load_held import DEFAULT_HOLD, HOLDS, fixed_load_changes, held_load
 
 __all__ = ["ALIASES", "HOLDS", "Block", "Parameter", "Study", "load_study_case", "parse_values", "resolve_key"]
 
@@ -197,8 +197,7 @@ class Study:
         """A checked study. ``vary``: ``{"speed_rpm": "500:12000:240", ...}`` or ``["speed_rpm=500:12000:240"]``
         (the command-line form). ``model``: ``"elastic"``, ``"thermal"`` or ``"both"``. ``hold``: the load a speed
         sweep keeps, ``"torque"`` (default) or ``"power"`` (:data:`HOLDS`)."""
-        if hold not in HOLDS:
-            raise CaseError("--hold", hold, " | ".join(HOLDS), "the load a speed sweep keeps from speed to speed")
+        held_load(hold)  # a CaseError naming --hold for a load no speed sweep keeps
         if model not in MODEL_CHOICES:
             raise CaseError("model", model, " | ".join(MODEL_CHOICES), "unknown model choice")
         models = MODEL_CHOICES[model]
@@ -243,16 +242,6 @@ class Study:
                     fixed_changes=fixed_load_changes(case.document.get("operating", {}),
                                                   case.operating_point, parameters, hold), hold=hold, _flank_table=flank)
         study.check_values()
-        return study
-
-    @classmethod
-    def from_description(cls, case, description: dict[str, Any]) -> "Study":
-        """The study written in a store's attributes by :meth:`describe` (for ``--resume``)."""
-        vary = {p["name"]: list(p["values"]) for p in description["parameters"]}
-        models = tuple(description["models"])
-        model = "both" if len(models) == 2 else models[0]
-        study = cls.define(case, vary, model=model, chunk_points=description["chunk_points"],
-                           hold=description.get("hold", "torque"))
         return study
 
     def check_values(self) -> None:
@@ -340,7 +329,7 @@ class Study:
             "models": list(self.models),
             "chunk_points": self.chunk_points,
             "fixed_changes": {key: value for key, value in self.fixed_changes},
-            **({"hold": self.hold} if self.hold != "torque" else {}),
+            **({"hold": self.hold} if self.hold != DEFAULT_HOLD else {}),
             "case_document_sha256": case_fingerprint(self.case.document),
         }
 
@@ -382,7 +371,7 @@ def load_study_case(name_or_path: str | Path):
     except RecursionError:
         raise CaseError("case", str(path), "TOML nested a few levels deep",
                         "the file nests tables or arrays too deeply to be a case file") from None
-    from thermogear.case_errors import case_error_from_validation
+    from thermogear.case.errors import case_error_from_validation
     from thermogear.schema import CaseFile
 
     try:  # the whole file as `check` validates it: a bad [sweep] table gets check's message (check = sweep)

@@ -119,8 +119,8 @@ def _point(study, settings: WarmupSettings, values: tuple, times: int) -> dict[s
             warnings.simplefilter("ignore")  # the case's warnings were printed by the study's checks
             try:
                 case = study.case_at(values)
-            except PredictedTemperatureError as error:  # the warm-up reports the network at any temperature
-                case = error.unresolved_case
+            except PredictedTemperatureError:  # the warm-up reports the network at any temperature
+                case = study.case.with_changes(predict_temperatures=False, **study.changes(values))
             result = gearbox_warmup(case, duration_s=settings.duration_s, start_c=settings.start_c,
                                     interval_s=settings.interval_s, gear_model=study.models[0],
                                     dynamics=settings.dynamics)

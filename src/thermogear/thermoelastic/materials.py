@@ -15,7 +15,7 @@ between 21 °C and 204 °C:
 | nickel steel, Ni 2–9 % | 191.7 / 186.8 / 184.1 / 180.0 | −3.34e-4 |
 
 The table is linear to within 0.2 GPa over 21–204 °C, which is also the range the gear temperatures are allowed
-(:data:`thermogear.temperature_field.MATERIAL_MAXIMUM_C` = 200 °C).
+(:data:`thermogear.temperature.field.MATERIAL_MAXIMUM_C` = 200 °C).
 
 Housing expansion coefficients (room temperature, ASM International data as tabulated in Callister's *Materials
 Science and Engineering*, App. B Table B.6): steel A36/1020 11.7e-6, grey cast iron G1800–G4000 11.4e-6, cast

@@ -14,7 +14,7 @@ from functools import cached_property
 
 import numpy as np
 
-from thermogear.temperature_kinds import temperature_source
+from thermogear.temperature.kinds import temperature_source
 from thermogear.case import cached_per_case
 from thermogear.geometry import GearPair
 from thermogear.materials import Material
@@ -23,7 +23,7 @@ from thermogear.operating import OperatingPoint
 from thermogear.stiffness import scaled_compliance
 from thermogear.stiffness import table as stiffness_table
 from thermogear.stiffness.table import pair_stiffness_at
-from thermogear.temperature_source import TemperatureField
+from thermogear.temperature.source import TemperatureField
 from thermogear.thermoelastic.deviations import (base_pitch_deviation, equivalent_bulk_rise, flank_distortion,
                                                  tip_relief)
 from thermogear.thermoelastic.inputs import (GearInputs, HousingInputs, backlash_allowance, check_not_jammed,
