@@ -12,8 +12,8 @@ and 2004 DOF. Per size:
 
 1. the linear periodic response on the automatic cut-off (harmonics up to 5: f_c = 20 kHz), per speed in a sweep
    of ``SPEEDS`` speeds (2000–4000 rpm) that shares the modal basis and the reduced matrices
-   (``drivetrain_cutoff_sweep``), without and with the per-run error estimate (the solve on 2·f_c), and the
-   estimate itself;
+   (``drivetrain_cutoff_sweep``), without and with the per-run error estimate (issue 36: the modes above f_c
+   driven by the response's own loads; before, a second solve on 2·f_c), and the estimate itself;
 2. the backlash orbit (normal backlash 100 um) on the same cut-off, per speed (``drivetrain_backlash_response``);
 3. the linear periodic response on every DOF (60 and 492 DOF; 2004 with ``--full``: about 30 exponentials of
    6700-square matrices), and on 492 DOF the route before issue 38 (every coordinate, blocks of pieces, the

@@ -38,9 +38,11 @@ def test_run_json_holds_the_drivetrain_modes_bearing_forces_and_heat():
     force = elastic["bearing_forces"]["wheel bearing A"]
     assert force["dynamic_rms_n"] > 0.0 and len(force["harmonic_amplitude_n"]) == 3
     assert elastic["kv"] > 1.0 and elastic["stable"]
-    # issue 38: the response states its cut-off's estimated error (solved again on twice the cut-off)
+    # issue 38: the response states its cut-off's estimated error (issue 36: from the modes above the cut-off,
+    # the highest of them its check_cutoff_hz, without a second solve)
     cutoff = elastic["cutoff_error"]
-    assert cutoff["check_cutoff_hz"] == 2.0 * cutoff["cutoff_hz"] == 2.0 * drivetrain["response_cutoff_hz"]
+    assert cutoff["check_cutoff_hz"] > cutoff["cutoff_hz"] == drivetrain["response_cutoff_hz"]
+    assert "modes above it" in cutoff["estimated_from"] and cutoff["check_coordinates"] > cutoff["coordinates"]
     assert 0.0 < cutoff["dte_relative"] < 0.01 and 0.0 < cutoff["bearing_force_relative"] < 0.1
     assert len(drivetrain["heat"]) == 12 and "dominant_cause" in drivetrain["heat"][0]
     # the pair's own results are still there, beside the drivetrain's

@@ -1,5 +1,6 @@
-"""Issue 38: every drivetrain response that `run` gives states the error of its modal cut-off, estimated from the
-same state solved on twice the cut-off, and that estimate has the size of the true error against every DOF."""
+"""Issue 38: every drivetrain response that `run` gives states the error of its modal cut-off; the exact check (the
+same state solved on twice the cut-off, callable as ``second_solve``) has the size of the true error against every
+DOF. The default estimate, without a second solve: tests/unit/test_cutoff_truncation_estimate.py."""
 
 from __future__ import annotations
 
@@ -36,5 +37,6 @@ def test_the_estimate_has_the_size_of_the_true_error_against_every_dof():
     assert estimate.as_json() == {"cutoff_hz": cutoff, "check_cutoff_hz": 2.0 * cutoff,
                                   "dte_relative": estimate.transmission_error,
                                   "bearing_force_relative": estimate.bearing_force,
-                                  "coordinates": estimate.coordinates, "check_coordinates": estimate.check_coordinates}
+                                  "coordinates": estimate.coordinates, "check_coordinates": estimate.check_coordinates,
+                                  "estimated_from": estimate.estimated_from}
     assert "estimated error" in estimate.describe() and f"{cutoff:.0f} Hz" in estimate.describe()

@@ -148,18 +148,16 @@ class CaseDrivetrain:
         return drivetrain_periodic_response(self.assembled(model), state, samples_per_piece=SAMPLES_PER_PIECE,
                                             cutoff_hz=self.section.response_cutoff_hz, solves=self._solves)
 
-    def cutoff_error(self, model: str, response: DrivetrainResponse | None = None):
-        """The estimated error of the linear response of ``model`` on the section's ``response_cutoff_hz`` (default
-        computed here), from the same state solved on twice the cut-off
-        (:func:`~thermogear.drivetrain.cutoff.cutoff_error_against`). The backlash orbit and the motion from rest
-        are solved on the same modes, so this is also the estimate of the truncation their modes carry."""
-        from thermogear.drivetrain.cutoff import cutoff_error_against
+    def cutoff_error(self, model: str, response: DrivetrainResponse | None = None, second_solve: bool = False):
+        """The estimated error of the linear response of ``model`` (default computed here) on the section's
+        ``response_cutoff_hz`` (:func:`~thermogear.drivetrain.cutoff.cutoff_error_of`: from the modes above the
+        cut-off, or with ``second_solve`` from a second solve on twice it). The backlash orbit and the motion from
+        rest are solved on the same modes, so this is also the estimate of the truncation their modes carry."""
+        from thermogear.drivetrain.cutoff import cutoff_error_of
 
-        cutoff = self.section.response_cutoff_hz
         response = self.response(model) if response is None else response
-        check = drivetrain_periodic_response(self.assembled(model), self.mesh_states(model),
-                                             samples_per_piece=SAMPLES_PER_PIECE, cutoff_hz=2.0 * cutoff)
-        return cutoff_error_against(response, check, cutoff)
+        return cutoff_error_of(self.assembled(model), self.mesh_states(model), response,
+                               self.section.response_cutoff_hz, SAMPLES_PER_PIECE, second_solve)
 
     def backlash_response(self, model: str, speed_rpm: float | None = None,
                           initial_state: np.ndarray | None = None) -> DrivetrainBacklashResponse:

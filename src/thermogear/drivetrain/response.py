@@ -196,6 +196,7 @@ class DrivetrainResponse(PeriodicMotion):
     period: float
     meshes: dict[str, MeshResponse] = field(default_factory=dict)
     bearing_moments: dict[str, np.ndarray] = field(default_factory=dict)  # name → (S, 2) [N·m] about x, y
+    velocity: np.ndarray | None = None  # (S, DOFs) [SI/s], the displacement's rate (None where not kept)
 
     @property
     def kv(self) -> float | None:
@@ -319,7 +320,7 @@ def _response(assembled: AssembledDrivetrain, train: MeshTrain, problems, grid: 
     first = next(iter(meshes.values()))
     return DrivetrainResponse(response.time, first.transmission_error, first.transmission_error_rate,
                               first.mesh_force, forces, displacement, response.multipliers, first.metrics,
-                              grid.period, meshes, bearing_moments(assembled, displacement))
+                              grid.period, meshes, bearing_moments(assembled, displacement), velocity)
 
 
 def bearing_forces(assembled: AssembledDrivetrain, displacement: np.ndarray, velocity: np.ndarray,

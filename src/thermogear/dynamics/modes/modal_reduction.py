@@ -22,7 +22,7 @@ import numpy as np
 from thermogear.dynamics.periodic_orbits.periodic_ndof import PiecewiseLinearSystem
 from thermogear.errors import ProblemError
 
-__all__ = ["ModalBasis", "modal_basis"]
+__all__ = ["MeanModes", "ModalBasis", "factor_means", "mean_modes", "mean_stiffness", "modal_basis"]
 
 
 @dataclass(frozen=True, eq=False)
@@ -57,23 +57,69 @@ class ModalBasis:
         return self.basis @ reduced
 
 
-def modal_basis(system: PiecewiseLinearSystem, cutoff: float, loads: Sequence[np.ndarray] = ()) -> ModalBasis:
+def factor_means(factors: np.ndarray, system: PiecewiseLinearSystem) -> np.ndarray:
+    """The time means (P,) of per-piece factors (N, P) of ``system`` over its period (weights the piece widths)."""
+    widths = np.diff(system.nodes)
+    return np.array([float(np.dot(factors[:, mesh], widths) / system.period) for mesh in range(factors.shape[1])])
+
+
+def mean_stiffness(system: PiecewiseLinearSystem) -> np.ndarray:
+    """K̄ = K₀ + Σ_m k̄_m P_K,m, the stiffness of the mean system (k̄_m the time mean of pattern m's factor)."""
+    pattern_k, factor_k = system.stacked()[0], system.stacked()[3]
+    mean = system.stiffness
+    for mesh, value in enumerate(factor_means(factor_k, system)):
+        mean = mean + value * pattern_k[mesh]
+    return mean
+
+
+@dataclass(frozen=True, eq=False)
+class MeanModes:
+    """Every undamped mode of a mean system: eigenvalues ``values`` ω_i² (n,) [rad²/s²] increasing and ``shapes``
+    (n, n) M-orthonormal, of the mean stiffness whose pattern factors have the means ``stiffness_means`` (P,); those
+    above ``cutoff`` ω_c [rad/s] are the ones :func:`modal_basis` on that cut-off leaves out."""
+
+    cutoff: float
+    values: np.ndarray
+    shapes: np.ndarray
+    stiffness_means: np.ndarray
+
+    @property
+    def frequencies(self) -> np.ndarray:
+        """ω_i [rad/s] (a tiny negative eigenvalue of rounding read as 0)."""
+        return np.sqrt(np.clip(self.values, 0.0, None))
+
+    @property
+    def dropped(self) -> np.ndarray:
+        """Mask of the modes above the cut-off."""
+        return ~(self.values <= self.cutoff**2)
+
+
+def mean_modes(system: PiecewiseLinearSystem, cutoff: float) -> MeanModes:
+    """Every mode of the mean system K̄ = :func:`mean_stiffness`, M of ``system``, split at ``cutoff`` ω_c [rad/s]."""
+    from scipy.linalg import eigh
+
+    if not np.isfinite(cutoff) or cutoff <= 0.0:
+        raise ProblemError("cutoff", cutoff, "> 0 rad/s, finite", "the highest mode frequency kept")
+    values, shapes = eigh(mean_stiffness(system), system.mass)
+    return MeanModes(float(cutoff), values, shapes, factor_means(system.stacked()[3], system))
+
+
+def modal_basis(system: PiecewiseLinearSystem, cutoff: float, loads: Sequence[np.ndarray] = (),
+                modes: MeanModes | None = None) -> ModalBasis:
     """The modes of the mean system up to ``cutoff`` ω_c [rad/s] plus the static corrections (see the module
     docstring). ``cutoff`` above the highest mode keeps every mode: the reduction is then exact. ``loads``: further
     load vectors (n,) whose static corrections join the basis and which count as forcing the system (e.g. the
     vector of a dead zone, whose force switches on and off: its static response must lie in the basis as the mesh
-    vector's does)."""
-    from scipy.linalg import eigh, solve
+    vector's does). ``modes``: the :func:`mean_modes` of this system, where the caller has them (else solved here)."""
+    from scipy.linalg import solve
 
     if not np.isfinite(cutoff) or cutoff <= 0.0:
         raise ProblemError("cutoff", cutoff, "> 0 rad/s, finite", "the highest mode frequency kept")
-    widths = np.diff(system.nodes)
-    pattern_k, _, pattern_f, factor_k = system.stacked()[:4]
-    mean = system.stiffness
-    for mesh in range(pattern_k.shape[0]):  # K̄ = K₀ + Σ_m k̄_m P_K,m
-        mean = mean + float(np.dot(factor_k[:, mesh], widths) / system.period) * pattern_k[mesh]
+    pattern_k, _, pattern_f = system.stacked()[:3]
+    modes = mean_modes(system, cutoff) if modes is None else modes
+    mean = mean_stiffness(system)
     mass = system.mass
-    values, modes = eigh(mean, mass)
+    values, modes = modes.values, modes.shapes
     keep = values <= cutoff**2
     modes, frequencies = modes[:, keep], np.sqrt(np.clip(values[keep], 0.0, None))
     extra = tuple(loads)
