@@ -53,9 +53,9 @@ from thermogear.dynamics.periodic_orbits.periodic_ndof import PiecewiseLinearSys
 from thermogear.errors import CaseError
 from thermogear.mesh.state import MeshState
 
-__all__ = ["CUTOFF_FACTOR", "CUTOFF_HARMONICS", "CutoffError", "CutoffResponse", "cutoff_error_against", "cutoff_error_estimate",
-           "cutoff_error_of",
-           "cutoff_for_harmonics", "drivetrain_cutoff_response", "drivetrain_cutoff_sweep"]
+__all__ = ["CUTOFF_FACTOR", "CUTOFF_HARMONICS", "CutoffError", "CutoffResponse", "cutoff_error_against",
+           "cutoff_error_estimate", "cutoff_error_of", "cutoff_for_harmonics", "drivetrain_cutoff_response",
+           "drivetrain_cutoff_sweep"]
 
 #: Mesh harmonics of interest by default (the spectra reported, and most of a square wave's energy).
 CUTOFF_HARMONICS = 5
