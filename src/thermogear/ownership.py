@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import json
 import os
+import re
 import socket
 from collections.abc import Iterator
 from contextlib import contextmanager
@@ -24,9 +25,8 @@ from pathlib import Path
 from thermogear.errors import CaseError
 
 __all__ = ["FIGURE_SUFFIXES", "MARKER", "check_figure_file", "check_output_folder", "exclusive_writer",
-           "foreign_store_entries",
-           "is_owned", "marker_process_alive", "read_marker", "require_no_foreign_entries", "require_owned",
-           "resolve_output", "write_marker", "written_files"]
+           "foreign_store_entries", "is_owned", "marker_process_alive", "read_marker", "remove_interrupted_writes",
+           "require_no_foreign_entries", "require_owned", "resolve_output", "write_marker", "written_files"]
 
 #: File types a figure option (--plot) writes.
 FIGURE_SUFFIXES = (".png", ".svg", ".pdf")
@@ -82,6 +82,31 @@ def _is_zarr_node(entry: Path) -> bool:
                                                              for name in _ZARR_NODE_METADATA)
 
 
+#: A file zarr was writing when its process was killed: zarr's local store writes each file as
+#: NAME.<32 hex digits>.partial and renames it once complete (zarr.storage.LocalStore's atomic write), so such a file
+#: is zarr's own and never holds a finished chunk.
+_INTERRUPTED_WRITE = re.compile(r"\.[0-9a-f]{32}\.partial$")
+
+
+def _is_interrupted_write(entry: Path) -> bool:
+    return entry.is_file() and not entry.is_symlink() and _INTERRUPTED_WRITE.search(entry.name) is not None
+
+
+def remove_interrupted_writes(folder: Path | str) -> list[Path]:
+    """Delete the files zarr left half-written in an owned store when its writer was killed (``_INTERRUPTED_WRITE``),
+    at any depth; return them. Call only after :func:`require_owned`: the task that was writing them is not marked
+    done, so a resumed study writes its chunks again."""
+    removed = []
+    for directory, folders, files in os.walk(folder):
+        folders[:] = [name for name in folders if not (Path(directory) / name).is_symlink()]
+        for name in files:
+            entry = Path(directory) / name
+            if _is_interrupted_write(entry):
+                entry.unlink()
+                removed.append(entry)
+    return removed
+
+
 def _is_chunk_name(name: str) -> bool:
     """A zarr chunk key part: ``0``, ``12`` (v3 ``c/0/12``) or ``0.12`` (v2)."""
     return all(part.isdigit() for part in name.split("."))
@@ -92,6 +117,8 @@ def _foreign_in_chunks(folder: Path, prefix: str) -> list[str]:
     foreign = []
     for entry in sorted(folder.iterdir()):
         name = f"{prefix}/{entry.name}"
+        if _is_interrupted_write(entry):
+            continue
         if entry.is_symlink() or not _is_chunk_name(entry.name):
             foreign.append(name)
         elif entry.is_dir():
@@ -109,7 +136,7 @@ def _foreign_in_node(folder: Path, prefix: str) -> list[str]:
         name = f"{prefix}{entry.name}"
         if entry.is_symlink():
             foreign.append(name)
-        elif entry.name in _ZARR_NODE_METADATA and entry.is_file():
+        elif (entry.name in _ZARR_NODE_METADATA and entry.is_file()) or _is_interrupted_write(entry):
             continue
         elif entry.is_dir() and entry.name == "c":
             foreign.extend(_foreign_in_chunks(entry, name))

@@ -59,6 +59,28 @@ def test_overwrite_never_deletes_a_users_file_at_any_depth(tmp_path, where):
     assert TaskStore.open(path, _layout(), overwrite=True).done_tasks() == set()
 
 
+_PARTIAL = "0.86d00ddec2f04c3ea427331abd24774a.partial"  # zarr's name for a chunk it is still writing
+
+
+@pytest.mark.parametrize("where", [f"kv/c/0/{_PARTIAL}", "status/zarr.0123456789abcdef0123456789abcdef.partial"])
+def test_a_killed_writers_half_written_chunk_is_zarrs_own_and_goes_on_resume(tmp_path, where):
+    """A writer killed during a chunk leaves zarr's temporary NAME.<32 hex>.partial (its atomic write renames it once
+    complete): not a user's file, and removed when the study resumes (the task was never marked done, so its chunks
+    are written again); a file named like it without zarr's 32 hex digits stays foreign."""
+    path = tmp_path / "s.zarr"
+    _filled(path, tasks=(1,))
+    left = path / where
+    left.write_bytes(b"half a chunk")
+    assert foreign_store_entries(path) == []
+    assert TaskStore.open(path, _layout(), resume=True).done_tasks() == {1}
+    assert not left.exists()
+    user = path / "kv" / "c" / "0" / "0.notes.partial"
+    user.write_text("keep", encoding="utf-8")
+    assert foreign_store_entries(path) == ["kv/c/0/0.notes.partial"]
+    TaskStore.open(path, _layout(), resume=True)
+    assert user.read_text(encoding="utf-8") == "keep"
+
+
 def test_export_says_a_store_is_incomplete(tmp_path):
     path = tmp_path / "s.zarr"
     _filled(path, tasks=(0,))

@@ -37,8 +37,8 @@ from typing import Any
 import numpy as np
 
 from thermogear.errors import CaseError
-from thermogear.ownership import (is_owned, require_no_foreign_entries, require_owned, resolve_output,
-                                  write_marker)
+from thermogear.ownership import (is_owned, remove_interrupted_writes, require_no_foreign_entries, require_owned,
+                                  resolve_output, write_marker)
 from thermogear.sweep.batch import FLAG_VARIABLES, MODEL_VARIABLES, POINT_VARIABLES
 
 __all__ = ["ResultStore", "open_result", "study_description"]
@@ -127,6 +127,7 @@ class ResultStore:
         if not target.exists():
             return cls.create(target, study)
         require_owned(target, _KIND, "--out", "resumed or deleted")
+        remove_interrupted_writes(target)  # a killed writer's half-written chunks
         try:
             with _quiet_zarr():
                 group = zarr.open_group(str(target), mode="r")

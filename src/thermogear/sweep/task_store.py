@@ -22,7 +22,7 @@ from typing import Any
 import numpy as np
 
 from thermogear.errors import CaseError
-from thermogear.ownership import require_owned, resolve_output
+from thermogear.ownership import remove_interrupted_writes, require_owned, resolve_output
 
 __all__ = ["DONE", "MemoryStore", "StoreLayout", "StoreVariable", "TaskStore", "store_is_complete"]
 
@@ -98,6 +98,7 @@ class TaskStore:
         target = resolve_output(path)
         if resume and target.exists():
             require_owned(target, _KIND, "--out", "resumed or deleted")
+            remove_interrupted_writes(target)  # a killed writer's half-written chunks
             attrs = _read_attributes(target)
             if attrs.get(_INITIALIZED):
                 stored = attrs.get("study_definition")
