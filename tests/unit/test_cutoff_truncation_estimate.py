@@ -79,7 +79,7 @@ def test_the_estimate_is_the_true_error_of_a_time_invariant_system_with_modal_da
     estimated, _ = error.observed(vector)
     true = np.interp(error.time, exact.time, (exact.displacement - displacement) @ vector)
     assert 0 < modes.dropped.sum() < system.size and np.abs(true).max() > 1e-4 * np.ptp(displacement @ vector)
-    # measured 0.3 %: the trapezoidal transform of the sampled period (second order in the 512 samples)
+    # measured 0.3 %: what is left is the sampling (the Hermite reading of 512 samples and the transform)
     assert np.abs(estimated[:, 0] - true).max() <= 0.01 * np.abs(true).max()
 
 
@@ -98,7 +98,9 @@ def test_the_default_estimate_of_run_has_the_size_of_the_true_error_on_the_rig()
     assert checked.check_cutoff_hz == 2.0 * cutoff and "difference" in checked.estimated_from
     for new, old in ((on_case.transmission_error, checked.transmission_error),
                      (on_case.bearing_force, checked.bearing_force)):
-        assert old / 3.0 <= new <= 3.0 * old  # both have the size of the true error (the check within 3x)
+        # both have the size of the true error: the estimate lies within 1.5x of it (FACTOR) and the two-solve check
+        # read 1.2-1.36x of it, so they differ by at most about 2x; 3x leaves room for neither drifting further
+        assert old / 3.0 <= new <= 3.0 * old
 
 
 @pytest.mark.slow

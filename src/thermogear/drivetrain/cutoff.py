@@ -242,7 +242,7 @@ def drivetrain_cutoff_sweep(assembled: AssembledDrivetrain, states: Sequence[Mes
                             estimate: bool = True, second_solve: bool = False) -> list[CutoffResponse]:
     """The periodic response at each mesh state (one per speed) on the modes up to ``cutoff_hz`` [Hz] plus the
     static corrections (module docstring); ``cutoff_hz`` None chooses it from the mesh harmonics up to
-    ``harmonics`` at the highest mode frequency of the states (:func:`cutoff_for_harmonics`). With ``estimate`` each
+    ``harmonics`` at the highest mesh frequency of the states (:func:`cutoff_for_harmonics`). With ``estimate`` each
     speed gets its :class:`CutoffError`: from the modes above the cut-off (:func:`cutoff_error_estimate`), or with
     ``second_solve`` from the speed solved again on twice the cut-off (:func:`cutoff_error_against`, about twice
     the cost)."""
