@@ -55,3 +55,12 @@ def test_the_mean_friction_coefficient_as_printed(viscosity_mpa_s):
 def test_the_load_includes_the_helical_load_factor():
     # without K_Bγ the law gives 0.0283, which would print 0.028: the printout used w_Bt·K_Bγ, as the law does
     assert _friction(LOAD_WITHOUT, 30.09) < 0.0295
+
+
+def test_the_helical_load_factor_as_a_field_of_the_contact():
+    # the contact's K_Bγ = 1.274 (printed) multiplies w_Bt inside the law: the same μ as w_Bt·K_Bγ given at once
+    contact = PitchContact(LOAD_WITHOUT, ROUGHNESS, 30.09e-3, SUM_VELOCITY, RELATIVE_RADIUS, 1.0, 1.274)
+    law = friction_law("iso_tr_13989_2")
+    assert law.coefficient(contact, warn=False) == pytest.approx(_friction(LOAD_WITHOUT * 1.274, 30.09), rel=1e-14)
+    assert friction_law("schlenk").coefficient(contact, warn=False) == friction_law("schlenk").coefficient(
+        PitchContact(LOAD_WITHOUT, ROUGHNESS, 30.09e-3, SUM_VELOCITY, RELATIVE_RADIUS, 1.0), warn=False)

@@ -11,10 +11,10 @@ Every law is a power law in the contact's state at the pitch point C, evaluated 
   μ = 0.12·(w_Bt·R_a/(η·v_ΣC·ρ_redC))^0.25·X_L (:mod:`thermogear.friction`; X_L of
   :data:`thermogear.lubricant.LUBRICANT_FACTORS`). Kept for the paper's damping and its reproduction.
 * ``"iso_tr_13989_2"`` — the mean coefficient of the integral-temperature method of ISO/TR 13989:2000 (Part 2):
-  μ_mC = 0.045·(w_Bt·K_Bγ/(v_ΣC·ρ_redC))^0.2·η^−0.05·X_R·X_L with X_R = 2.2·(R_a/ρ_redC)^0.25 and K_Bγ = 1 for
-  spur gears (ε_γ = ε_α ≤ 2); X_L of the same table (mineral oil 1). The standard itself was not read (no copy
-  was found); the form, its constants and its part were checked against a commercial calculation's printout: the
-  KISSsoft report of the NREL 5 MW gearbox's third stage ("Calculation method according to ISO TR 13989:2000",
+  μ_mC = 0.045·(w_Bt·K_Bγ/(v_ΣC·ρ_redC))^0.2·η^−0.05·X_R·X_L with X_R = 2.2·(R_a/ρ_redC)^0.25 and the helical
+  load factor K_Bγ (:func:`helical_load_factor`; 1 for spur gears, ε_γ = ε_α ≤ 2); X_L of the same table (mineral
+  oil 1). The standard itself was not read (no copy was found); the form, its constants and its part were checked
+  against a commercial calculation's printout: the KISSsoft report of the NREL 5 MW gearbox's third stage ("Calculation method according to ISO TR 13989:2000",
   repository gfsReboucas/Drivetrain, ``@NREL_5MW/stage_03.rtf``) prints, under its **integral**-temperature
   criteria, μ_m = 0.030 with X_L = 1.000, η = 30.09 mPa·s, w_Bt·K_Bγ = 1425.897 N/mm, and X_R = 0.712 for
   R_a = 0.6 μm; its geometry (T1C 67.447 mm, T2C 266.979 mm, β_b 9.391°, v(d_w) 21.20 m/s, α_wt 22.856°) gives
@@ -73,7 +73,9 @@ LARGEST_CONSTANT_FRICTION = 0.3
 class PitchContact:
     """The contact at the pitch point of a gear pair: unit load w_Bt = F_bt/b [N/m], composite roughness
     R_a [m], dynamic viscosity η [Pa·s], sum of rolling speeds v_ΣC [m/s], relative radius of curvature
-    ρ_redC [m] and the lubricant factor X_L of the chosen law [–]."""
+    ρ_redC [m] (of the normal section for a helical pair: ρ_t/cos β_b) and the lubricant factor X_L of the chosen
+    law [–]; ``helical_load_factor`` K_Bγ [–] (:func:`helical_load_factor`; 1 for a spur pair), which only the
+    ISO/TR 13989 law takes."""
 
     unit_load: float
     roughness: float
@@ -81,6 +83,21 @@ class PitchContact:
     sum_velocity: float
     relative_radius: float
     lubricant_factor: float
+    helical_load_factor: float = 1.0
+
+
+def helical_load_factor(total_contact_ratio: float) -> float:
+    """K_Bγ [–], the helical load factor of ISO/TR 13989 by the total contact ratio ε_γ: 1 for ε_γ ≤ 2,
+    1 + 0.2·√((ε_γ − 2)(5 − ε_γ)) for 2 < ε_γ < 3.5, 1.3 from 3.5 (continuous at both ends). The form is recalled
+    [R]; its middle branch reproduces a KISSsoft printout of an ISO/TR 13989 calculation, K_Bγ = 1.274 at
+    ε_γ = 2.884 (tests/validation/test_helical_kisssoft_printout.py)."""
+    if not math.isfinite(total_contact_ratio) or total_contact_ratio <= 0.0:
+        raise CaseError("total_contact_ratio", total_contact_ratio, "> 0", "a pair in mesh")
+    if total_contact_ratio <= 2.0:
+        return 1.0
+    if total_contact_ratio >= 3.5:
+        return 1.3
+    return 1.0 + 0.2 * math.sqrt((total_contact_ratio - 2.0) * (5.0 - total_contact_ratio))
 
 
 def _smallest(value) -> float:
@@ -116,6 +133,7 @@ def _iso_tr_13989_2(contact: PitchContact, constant: float | None) -> float:
     load, speed = contact.unit_load * 1e-3, contact.sum_velocity  # N/mm, m/s
     radius, roughness, viscosity = contact.relative_radius * 1e3, contact.roughness * 1e6, contact.viscosity * 1e3
     roughness_factor = 2.2 * (roughness / radius)**0.25
+    load = load * contact.helical_load_factor
     return 0.045 * (load / (speed * radius))**0.2 * viscosity**-0.05 * roughness_factor * contact.lubricant_factor
 
 
@@ -215,4 +233,5 @@ def friction_law(name: str, key: str = "gearbox.friction_model") -> FrictionLaw:
 
 
 __all__ = ["DEFAULT_DAMPING_FRICTION_MODEL", "DEFAULT_LOSS_FRICTION_MODEL", "FRICTION_MODELS", "FrictionLaw", "LARGEST_CONSTANT_FRICTION",
-           "PitchContact", "SCHLENK_LUBRICANT_FACTORS", "friction_law", "validity_warnings"]
+           "PitchContact", "SCHLENK_LUBRICANT_FACTORS", "friction_law", "helical_load_factor",
+           "validity_warnings"]
