@@ -15,8 +15,8 @@ Every law is a power law in the contact's state at the pitch point C, evaluated 
   load factor K_Bγ (:func:`helical_load_factor`; 1 for spur gears, ε_γ = ε_α ≤ 2); X_L of the same table (mineral
   oil 1). The standard itself was not read (no copy was found); the form, its constants and its part were checked
   against a commercial calculation's printout: the KISSsoft report of the NREL 5 MW gearbox's third stage
-  ("Calculation method according to ISO TR 13989:2000", repository gfsReboucas/Drivetrain, ``@NREL_5MW/stage_03.rtf``) prints, under its **integral**-temperature
-  criteria, μ_m = 0.030 with X_L = 1.000, η = 30.09 mPa·s, w_Bt·K_Bγ = 1425.897 N/mm, and X_R = 0.712 for
+  ("Calculation method according to ISO TR 13989:2000", repository gfsReboucas/Drivetrain,
+  ``@NREL_5MW/stage_03.rtf``) prints, under its **integral**-temperature criteria, μ_m = 0.030 with X_L = 1.000, η = 30.09 mPa·s, w_Bt·K_Bγ = 1425.897 N/mm, and X_R = 0.712 for
   R_a = 0.6 μm; its geometry (T1C 67.447 mm, T2C 266.979 mm, β_b 9.391°, v(d_w) 21.20 m/s, α_wt 22.856°) gives
   ρ_redC = 54.57 mm and v_ΣC = 16.47 m/s, from which this form gives X_R = 0.7124 and μ_mC = 0.0297 (0.0283
   without K_Bγ): both printed values reproduced (tests/validation/test_iso_tr_13989_friction.py). The same
@@ -232,6 +232,6 @@ def friction_law(name: str, key: str = "gearbox.friction_model") -> FrictionLaw:
     return law
 
 
-__all__ = ["DEFAULT_DAMPING_FRICTION_MODEL", "DEFAULT_LOSS_FRICTION_MODEL", "FRICTION_MODELS", "FrictionLaw", "LARGEST_CONSTANT_FRICTION",
-           "PitchContact", "SCHLENK_LUBRICANT_FACTORS", "friction_law", "helical_load_factor",
+__all__ = ["DEFAULT_DAMPING_FRICTION_MODEL", "DEFAULT_LOSS_FRICTION_MODEL", "FRICTION_MODELS", "FrictionLaw",
+           "LARGEST_CONSTANT_FRICTION", "PitchContact", "SCHLENK_LUBRICANT_FACTORS", "friction_law", "helical_load_factor",
            "validity_warnings"]
