@@ -10,18 +10,18 @@ Every law is a power law in the contact's state at the pitch point C, evaluated 
   belongs to was not checked in the standard):
   μ = 0.12·(w_Bt·R_a/(η·v_ΣC·ρ_redC))^0.25·X_L (:mod:`thermogear.friction`; X_L of
   :data:`thermogear.lubricant.LUBRICANT_FACTORS`). Kept for the paper's damping and its reproduction.
-* ``"iso_tr_13989_2"`` — the mean coefficient of the integral-temperature method of ISO/TR 13989:2000 (Part 2):
-  μ_mC = 0.045·(w_Bt·K_Bγ/(v_ΣC·ρ_redC))^0.2·η^−0.05·X_R·X_L with X_R = 2.2·(R_a/ρ_redC)^0.25 and the helical
-  load factor K_Bγ (:func:`helical_load_factor`; 1 for spur gears, ε_γ = ε_α ≤ 2); X_L of the same table (mineral
-  oil 1). The standard itself was not read (no copy was found); the form, its constants and its part were checked
-  against a commercial calculation's printout: the KISSsoft report of the NREL 5 MW gearbox's third stage
-  ("Calculation method according to ISO TR 13989:2000", repository gfsReboucas/Drivetrain,
-  ``@NREL_5MW/stage_03.rtf``) prints, under its **integral**-temperature criteria, μ_m = 0.030 with X_L = 1.000, η = 30.09 mPa·s, w_Bt·K_Bγ = 1425.897 N/mm, and X_R = 0.712 for
-  R_a = 0.6 μm; its geometry (T1C 67.447 mm, T2C 266.979 mm, β_b 9.391°, v(d_w) 21.20 m/s, α_wt 22.856°) gives
-  ρ_redC = 54.57 mm and v_ΣC = 16.47 m/s, from which this form gives X_R = 0.7124 and μ_mC = 0.0297 (0.0283
-  without K_Bγ): both printed values reproduced (tests/validation/test_iso_tr_13989_friction.py). The same
-  report's **flash**-temperature criteria print another μ (0.041 with X_L = 0.843): the 0.045 form is the
-  integral method's, not Part 1's, whence the name (it was filed as ``"iso_tr_13989_1"`` before).
+* ``"iso_tr_13989_2"`` — the mean coefficient of the integral-temperature method of ISO/TR 13989:2000 (Part 2): μ_mC =
+  0.045·(w_Bt·K_Bγ/(v_ΣC·ρ_redC))^0.2·η^−0.05·X_R·X_L with X_R = 2.2·(R_a/ρ_redC)^0.25 and the helical load factor K_Bγ
+  (:func:`helical_load_factor`; 1 for spur gears, ε_γ = ε_α ≤ 2); X_L of the same table (mineral oil 1). The standard
+  itself was not read (no copy was found); the form, its constants and its part were checked against a commercial
+  calculation's printout: the KISSsoft report of the NREL 5 MW gearbox's third stage ("Calculation method according to
+  ISO TR 13989:2000", repository gfsReboucas/Drivetrain, ``@NREL_5MW/stage_03.rtf``) prints, under its
+  **integral**-temperature criteria, μ_m = 0.030 with X_L = 1.000, η = 30.09 mPa·s, w_Bt·K_Bγ = 1425.897 N/mm, and X_R =
+  0.712 for R_a = 0.6 μm; its geometry (T1C 67.447 mm, T2C 266.979 mm, β_b 9.391°, v(d_w) 21.20 m/s, α_wt 22.856°) gives
+  ρ_redC = 54.57 mm and v_ΣC = 16.47 m/s, from which this form gives X_R = 0.7124 and μ_mC = 0.0297 (0.0283 without
+  K_Bγ): both printed values reproduced (tests/validation/test_iso_tr_13989_friction.py). The same report's
+  **flash**-temperature criteria print another μ (0.041 with X_L = 0.843): the 0.045 form is the integral method's, not
+  Part 1's, whence the name (it was filed as ``"iso_tr_13989_1"`` before).
 * ``"schlenk"`` — Schlenk's mean coefficient from FZG power-loss measurements (L. Schlenk, Untersuchungen zur
   Fresstragfähigkeit von Großzahnrädern, Dissertation TU München, 1994), in the form that FZG power-loss work
   uses it (Fernandes, Marques, Martins & Seabra (2015), Gearbox power loss. Part II: Friction losses in gears,
@@ -233,5 +233,5 @@ def friction_law(name: str, key: str = "gearbox.friction_model") -> FrictionLaw:
 
 
 __all__ = ["DEFAULT_DAMPING_FRICTION_MODEL", "DEFAULT_LOSS_FRICTION_MODEL", "FRICTION_MODELS", "FrictionLaw",
-           "LARGEST_CONSTANT_FRICTION", "PitchContact", "SCHLENK_LUBRICANT_FACTORS", "friction_law", "helical_load_factor",
-           "validity_warnings"]
+           "LARGEST_CONSTANT_FRICTION", "PitchContact", "SCHLENK_LUBRICANT_FACTORS", "friction_law",
+           "helical_load_factor", "validity_warnings"]
