@@ -13,7 +13,7 @@ import math
 
 from thermogear.errors import CaseError
 from thermogear.helical.geometry import HelicalPair
-from thermogear.temperature.kinds import temperature_source
+from thermogear.temperature.kinds import TEMPERATURE_SOURCES, temperature_source
 from thermogear.thermal_model_rules import thermal_model_rules
 
 __all__ = ["check_helical_case", "check_face_gradient", "transverse_gears_section"]
@@ -29,9 +29,10 @@ def transverse_gears_section(gears, helical: HelicalPair):
 
 
 def check_helical_case(model) -> None:
-    """Refuse, for a helical pair (``[gears] helix_angle_deg`` > 0; before its geometry is built), what the models do not build for one: a thermal model that is spur-only
-    (the paper's ``luo2020``) and the temperature models whose heat input is the spur pair's (a ``[drivetrain]``
-    takes the helical pair through its helical mesh element, :mod:`thermogear.drivetrain.mesh_element`)."""
+    """Refuse, for a helical pair (``[gears] helix_angle_deg`` > 0; before its geometry is built), what the models
+    do not build for one: a thermal model that is spur-only (the paper's ``luo2020``) and a temperature model whose
+    heat input is the spur pair's (the FE model; a ``[drivetrain]`` takes the helical pair through its helical mesh
+    element, :mod:`thermogear.drivetrain.mesh_element`, and the gearbox network its helical losses)."""
     if model.gears.helix_angle_deg == 0.0:
         return
     rules = thermal_model_rules(model.thermal.model)
@@ -39,11 +40,11 @@ def check_helical_case(model) -> None:
         raise CaseError("thermal.model", model.thermal.model, "'thermoelastic' with gears.helix_angle_deg > 0",
                         "the paper's thermal stiffness (Luo & Li 2020, Eqs. 13–23, X_te fitted on a spur pair) is "
                         "spur-only; the thermo-elastic model takes a helical pair")
-    if not temperature_source(model.temperature.model).given:
-        raise CaseError("temperature.model", model.temperature.model,
-                        "'uniform' or 'tabulated' with gears.helix_angle_deg > 0",
-                        "the FE and gearbox temperature models compute the spur pair's heat input; a helical pair "
-                        "takes given temperatures (and temperature.face_gradient_k across the face)")
+    if not temperature_source(model.temperature.model).takes_helical:
+        allowed = " | ".join(name for name, kind in TEMPERATURE_SOURCES.items() if kind.takes_helical)
+        raise CaseError("temperature.model", model.temperature.model, f"{allowed} with gears.helix_angle_deg > 0",
+                        "the FE temperature model computes the spur pair's heat input; a helical pair takes given "
+                        "temperatures (and temperature.face_gradient_k across the face) or the gearbox network's")
 
 
 def check_face_gradient(model, helical: HelicalPair) -> None:

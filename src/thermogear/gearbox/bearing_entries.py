@@ -25,6 +25,7 @@ from thermogear.gearbox.description import MountedBearing
 
 if TYPE_CHECKING:
     from thermogear.geometry import GearPair
+    from thermogear.helical.geometry import HelicalPair
     from thermogear.materials import Material
     from thermogear.schema import DrivetrainSection
 
@@ -84,10 +85,13 @@ def shaft_sides(section) -> dict[str, bool]:
     return sides
 
 
-def drivetrain_bearing_loads(section: "DrivetrainSection", pair: "GearPair", material: "Material") -> dict[str, float]:
+def drivetrain_bearing_loads(section: "DrivetrainSection", pair: "GearPair", material: "Material",
+                             helical_pair: "HelicalPair | None" = None) -> dict[str, float]:
     """Radial force of each bearing of the ``[drivetrain]`` ``section`` per newton of tooth normal load [N/N] in the
-    static state (module docstring), the gears being the cold ``pair`` of ``material``: |(F_x, F_y)| of the
-    bearing's force on the housing at W = 1 N."""
+    static state (module docstring), the gears being the cold ``pair`` of ``material`` (the transverse section of
+    ``helical_pair`` where one is given: its mesh then carries the helix, whose axial force tilts the shafts and
+    loads the bearings radially too): |(F_x, F_y)| of the bearing's force on the housing at W = 1 N, W the
+    mesh's load of torque r_b·W (F_bt of a helical pair)."""
     from thermogear.drivetrain.case_layout import drivetrain_from_section  # noqa: PLC0415
     from thermogear.drivetrain.static_state import static_state  # noqa: PLC0415
     from thermogear.stiffness.iso6336 import iso6336_mesh_stiffness, iso6336_single_stiffness  # noqa: PLC0415
@@ -97,20 +101,21 @@ def drivetrain_bearing_loads(section: "DrivetrainSection", pair: "GearPair", mat
                                       material.youngs_modulus, material.youngs_modulus, pinion.dedendum_coefficient,
                                       pinion.pressure_angle, warn=False)
     stiffness = iso6336_mesh_stiffness(single, pair.contact_ratio) * pair.face_width
-    drivetrain = drivetrain_from_section(section, pair, material, stiffness)
+    helices = () if helical_pair is None else ((helical_pair.base_helix_angle, helical_pair.pinion_hand),)
+    drivetrain = drivetrain_from_section(section, pair, material, stiffness, helices=helices)
     forces = static_state(drivetrain.assemble(), 1.0).bearing_forces
     return {name: float(np.hypot(force[0], force[1])) for name, force in forces.items()}
 
 
-def drivetrain_mounted_bearings(section: "DrivetrainSection | None", pair: "GearPair",
-                                material: "Material") -> tuple[MountedBearing, ...]:
+def drivetrain_mounted_bearings(section: "DrivetrainSection | None", pair: "GearPair", material: "Material",
+                                helical_pair: "HelicalPair | None" = None) -> tuple[MountedBearing, ...]:
     """The bearings of the ``[drivetrain]`` ``section`` with loss data as bearings of the loss model (module
     docstring), by name, under the cold ``pair`` of ``material``; () for no section (None) or no loss data on its
     bearings."""
     if section is None or not any(bearing.loss is not None for bearing in section.bearings):
         return ()
     sides = shaft_sides(section)
-    loads = drivetrain_bearing_loads(section, pair, material)
+    loads = drivetrain_bearing_loads(section, pair, material, helical_pair)
     mounted = []
     for bearing in section.bearings:
         if bearing.loss is None:

@@ -40,6 +40,7 @@ if TYPE_CHECKING:
 
     from thermogear.case import Case
     from thermogear.geometry import GearPair
+    from thermogear.helical.geometry import HelicalPair
     from thermogear.lubricant import Lubricant
     from thermogear.materials import Material
     from thermogear.schema import DrivetrainSection, GearsSection, TemperatureSection
@@ -107,10 +108,11 @@ def _bearings(section) -> tuple[MountedBearing, ...]:
 def gearbox_description(gearbox: "GearboxSection | None", pair: "GearPair", material: "Material",
                         oil: "Lubricant", temperature: "TemperatureSection", housing: "HousingSection",
                         gears_input: "GearsSection | None", drivetrain: "DrivetrainSection | None",
-                        roughness_ra: float) -> GearboxDescription:
+                        roughness_ra: float, helical_pair: "HelicalPair | None" = None) -> GearboxDescription:
     """The :class:`GearboxDescription` (module docstring) of a ``[gearbox]`` section around the cold ``pair`` of
     ``material``, lubricated by ``oil``, with the case's ``[temperature]`` (its assembly temperature), ``[housing]``,
-    ``[gears]`` (backlash), ``[drivetrain]`` (bearings with loss data) and composite roughness Ra [m]: the pieces
+    ``[gears]`` (backlash), ``[drivetrain]`` (bearings with loss data), composite roughness Ra [m] and, for a
+    helical pair, the ``helical_pair`` whose transverse section ``pair`` is: the pieces
     :func:`gearbox_model_from_case` resolves a case into."""
     section = gearbox_section(gearbox)
     check_gearbox_inputs(section, pair, temperature)
@@ -141,7 +143,7 @@ def gearbox_description(gearbox: "GearboxSection | None", pair: "GearPair", mate
         oil_volume=section.oil.volume_l * 1e-3,
         pinion_mass=disc_mass(pair.pinion), wheel_mass=disc_mass(pair.wheel), shaft_mass=section.shaft_mass_kg,
         wheel_immersion=wheel_immersion, pinion_immersion=section.oil.pinion_immersion_mm * 1e-3,
-        bearings=_bearings(section) + drivetrain_mounted_bearings(drivetrain, pair, material),
+        bearings=_bearings(section) + drivetrain_mounted_bearings(drivetrain, pair, material, helical_pair),
         seals=tuple(LipSeal(seal.diameter_mm, seal.shaft == "wheel") for seal in section.seals),
         roughness=roughness_ra, lubricant_factor=section.lubricant_factor, friction=law,
         friction_constant=section.friction_coefficient, conditioning=conditioning,
@@ -154,7 +156,7 @@ def gearbox_description(gearbox: "GearboxSection | None", pair: "GearPair", mate
         shaft_oil_conductance=section.internal.shaft_oil_w_per_k,
         shaft_housing_conductance=section.internal.shaft_housing_w_per_k,
         backlash=None if backlash_um is None else backlash_um * 1e-6, assembly_c=temperature.reference_c,
-        oil_jet=jet, pinion_shaft_spans=pinion_spans, wheel_shaft_spans=wheel_spans)
+        oil_jet=jet, pinion_shaft_spans=pinion_spans, wheel_shaft_spans=wheel_spans, helical_pair=helical_pair)
 
 
 def gearbox_operating_point(operating: "OperatingPoint", gearbox: "GearboxSection | None",
@@ -170,7 +172,7 @@ def gearbox_operating_point(operating: "OperatingPoint", gearbox: "GearboxSectio
 def gearbox_model_from_case(gearbox: "GearboxSection | None", gear_pair: "GearPair", material: "Material",
                             oil: "Lubricant", temperature: "TemperatureSection", housing: "HousingSection",
                             gears_input: "GearsSection | None", drivetrain: "DrivetrainSection | None",
-                            roughness_ra: float):
+                            roughness_ra: float, helical_pair: "HelicalPair | None"):
     """The :class:`~thermogear.gearbox.model.GearboxThermalModel` of a case with a ``[gearbox]`` section, its
     ``description`` the :class:`GearboxDescription` of these pieces of the case (:func:`gearbox_description`).
     Called with the case (``gearbox_model_from_case(case)``), memoised per case
@@ -178,7 +180,7 @@ def gearbox_model_from_case(gearbox: "GearboxSection | None", gear_pair: "GearPa
     from thermogear.gearbox.model import GearboxThermalModel  # noqa: PLC0415
 
     return GearboxThermalModel(gearbox_description(gearbox, gear_pair, material, oil, temperature, housing,
-                                                   gears_input, drivetrain, roughness_ra))
+                                                   gears_input, drivetrain, roughness_ra, helical_pair))
 
 
 #: Steady states already solved, per thermal model (by identity: the model is built once per case and compares by

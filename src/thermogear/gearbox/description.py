@@ -30,6 +30,7 @@ from thermogear.gearbox.injection import OilJet
 from thermogear.gearbox.mesh_loss import rigid_pinion_heat_share
 from thermogear.gearbox.shaft_conduction import ShaftSpan, gear_shaft_paths
 from thermogear.geometry import GearPair
+from thermogear.helical.geometry import HelicalPair
 from thermogear.lubricant import Lubricant
 
 
@@ -110,7 +111,8 @@ class Housing:
 
 @dataclass(frozen=True)
 class GearboxDescription:
-    """One spur gear stage in a dip-lubricated housing (see the module docstring for the internal coefficients).
+    """One gear stage in a dip-lubricated housing (see the module docstring for the internal coefficients): a
+    spur pair, or a helical pair (``helical_pair``; ``gear_pair`` is then its transverse section).
 
     Masses [kg] of the pinion, wheel and of both shafts with their bearings (half each), oil volume [m³],
     immersion depths [m] of the wheel and pinion (0: above the oil), composite roughness R_a [m], the friction
@@ -122,7 +124,8 @@ class GearboxDescription:
     ``friction``: the mean friction law of the tooth loss (:data:`thermogear.friction.models.FRICTION_MODELS`,
     default Schlenk's), ``friction_constant`` its value for the ``"constant"`` law; ``lubricant_factor`` X_L of
     that law (None: the law's value for the oil's base oil). ``conditioning``: a test rig's thermostat-driven
-    heater and cooler on the oil (:class:`OilConditioning`).
+    heater and cooler on the oil (:class:`OilConditioning`). ``helical_pair``: the helical pair whose transverse
+    section ``gear_pair`` is (None: a spur pair); its helix enters the losses (:mod:`~thermogear.gearbox.losses`).
     """
 
     gear_pair: GearPair
@@ -157,6 +160,7 @@ class GearboxDescription:
     conditioning: OilConditioning | None = None  # a rig's heater/cooler on the oil (None: none)
     pinion_shaft_spans: tuple[ShaftSpan, ...] = ()  # the pinion's shaft from its seat to each bearing (fins)
     wheel_shaft_spans: tuple[ShaftSpan, ...] = ()  # the wheel's likewise (() : seat and bearings one node)
+    helical_pair: HelicalPair | None = None
     notes: tuple[str, ...] = field(default=(), compare=False)
 
     def __post_init__(self) -> None:
@@ -178,6 +182,25 @@ class GearboxDescription:
                                  ("pinion_immersion", self.pinion_immersion, self.gear_pair.pinion)):
             if depth > 2.0 * gear.tip_radius:
                 raise CaseError(key, depth, f"[0, {2.0 * gear.tip_radius:.4g}] m", "at most the tip diameter")
+        if self.helical_pair is not None and self.helical_pair.transverse != self.gear_pair:
+            raise CaseError("helical_pair", "another pair's helix", "the helix of gear_pair (its transverse section)",
+                            "the losses take the helix of the pair the network is built around")
+
+    @property
+    def helix_angle(self) -> float:
+        """β on the reference cylinder [rad] (0: spur)."""
+        return 0.0 if self.helical_pair is None else self.helical_pair.helix_angle
+
+    @property
+    def base_helix_angle(self) -> float:
+        """β_b [rad] (0: spur)."""
+        return 0.0 if self.helical_pair is None else self.helical_pair.base_helix_angle
+
+    @property
+    def total_contact_ratio(self) -> float:
+        """ε_γ = ε_α + ε_β [–] (ε_α for a spur pair)."""
+        return (self.gear_pair.contact_ratio if self.helical_pair is None
+                else self.helical_pair.total_contact_ratio)
 
     def gear_surface(self, wheel: bool) -> float:
         """Outer surface of a gear body [m²]: two faces (tip circle less the bore) and the rim (tip cylinder)."""

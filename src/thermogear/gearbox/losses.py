@@ -3,7 +3,11 @@
 Tooth friction P_VZP = P_in·μ_m·H_V (Niemann & Winter §21.6) with the description's mean friction law
 (:mod:`thermogear.friction.models`: Schlenk's by default, the paper's DIN 3990-4 law, ISO/TR 13989-1 or a
 constant) at the oil temperature, evaluated at the pitch point (sum of rolling speeds 2·v_t·sin α_w, relative
-radius of curvature at C, unit load F_bt/b); bearings by the SKF model at the viscosity of the oil at the shaft
+radius of curvature at C, unit load F_bt/b). A helical pair runs as its transverse section with its helix: H_V
+with Ohlendorf's 1/cos β_b, the relative radius of curvature of the normal section ρ_t/cos β_b, the helical load
+factor K_Bγ(ε_γ) in the ISO/TR 13989 law (all three as in ISO/TR 13989 and checked against a KISSsoft printout of
+a helical pair, tests/validation), the churning of its teeth with their helix (:mod:`~thermogear.gearbox.churning`);
+the unit load stays F_bt/b (the transverse base tangential force, T1/r_b1, as the laws define it); bearings by the SKF model at the viscosity of the oil at the shaft
 node's temperature, radial load a fraction of the tooth normal force (for a drivetrain bearing its static force per
 newton of tooth load, :mod:`~thermogear.gearbox.bearing_entries`); lip seals; churning
 of the dipped gears at the oil temperature (:mod:`~thermogear.gearbox.churning`); the impulse loss of an
@@ -22,7 +26,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from thermogear.errors import ExtrapolationWarning
-from thermogear.friction.models import PitchContact
+from thermogear.friction.models import PitchContact, helical_load_factor
 from thermogear.gearbox.bearing_entries import mounted_bearing_power
 from thermogear.gearbox.bearing_loss import seal_power_loss
 from thermogear.gearbox.churning import DippedGear, churning_power_loss, churning_validity
@@ -87,7 +91,7 @@ def _dipped(description: GearboxDescription, wheel: bool) -> DippedGear | None:
     pitch_radius = pair.operating_pitch_radii[1 if wheel else 0]
     height = (gear.addendum_coefficient + gear.dedendum_coefficient) * gear.module
     return DippedGear(pitch_radius, gear.face_width, gear.module, gear.teeth, height, min(depth, 2 * pitch_radius),
-                      description.oil_volume, gear.pressure_angle)
+                      description.oil_volume, gear.pressure_angle, description.helix_angle)
 
 
 @dataclass(frozen=True, eq=False)
@@ -100,8 +104,8 @@ class LossModel:
     def __post_init__(self) -> None:
         pair = self.description.gear_pair
         loss_factor = self.description.loss_factor
-        object.__setattr__(self, "_loss_factor",
-                           pair_gear_loss_factor(pair) if loss_factor is None else float(loss_factor))
+        object.__setattr__(self, "_loss_factor", pair_gear_loss_factor(pair, self.description.base_helix_angle)
+                           if loss_factor is None else float(loss_factor))
         object.__setattr__(self, "_dipped", (_dipped(self.description, False), _dipped(self.description, True)))
         object.__setattr__(self, "_reference_friction", self._friction_at_viscosity(REFERENCE_VISCOSITY))
         object.__setattr__(self, "_heat_share", self.description.heat_share)
@@ -125,9 +129,12 @@ class LossModel:
             return 0.0
         pitch = pair.path_points["C"]
         rolling_1, rolling_2 = pair.rolling_speeds(pitch, self.operating.speed_rpm)
+        normal_section = math.cos(description.base_helix_angle)  # ρ_n = ρ_t/cos β_b (module docstring)
         contact = PitchContact(self.normal_force / pair.face_width, description.roughness, viscosity,
-                               float(rolling_1 + rolling_2), float(pair.relative_radius_of_curvature(pitch)),
-                               description.friction_lubricant_factor)
+                               float(rolling_1 + rolling_2),
+                               float(pair.relative_radius_of_curvature(pitch)) / normal_section,
+                               description.friction_lubricant_factor,
+                               helical_load_factor(description.total_contact_ratio))
         return description.friction.coefficient(contact, description.friction_constant)
 
     @property
@@ -137,7 +144,8 @@ class LossModel:
 
     @property
     def normal_force(self) -> float:
-        """Tooth normal force F_bn = T1/r_b1 [N]."""
+        """Tooth force along the transverse line of action F_bt = T1/r_b1 [N] (the normal force of a spur pair;
+        a helical pair's is F_bt/cos β_b): the unit load's and the bearing loads' reference."""
         return self.operating.torque / self.description.gear_pair.pinion.base_radius
 
     def friction_coefficient(self, oil_c: float) -> float:

@@ -54,9 +54,10 @@ def gear_loss_factor(pinion_teeth: int, gear_ratio: float, pinion_addendum_ratio
             * (1.0 - total + pinion_addendum_ratio**2 + wheel_addendum_ratio**2))
 
 
-def pair_gear_loss_factor(pair: GearPair) -> float:
-    """H_V [–] of a spur pair from its own path points."""
-    return gear_loss_factor(pair.pinion.teeth, pair.gear_ratio, *addendum_contact_ratios(pair))
+def pair_gear_loss_factor(pair: GearPair, base_helix_angle: float = 0.0) -> float:
+    """H_V [–] of a pair from its own path points: a spur pair, or the transverse section of a helical pair of base
+    helix angle β_b [rad] (Ohlendorf's 1/cos β_b)."""
+    return gear_loss_factor(pair.pinion.teeth, pair.gear_ratio, *addendum_contact_ratios(pair), base_helix_angle)
 
 
 def rigid_load_share(pair: GearPair, roll) -> np.ndarray:

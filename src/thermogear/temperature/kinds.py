@@ -23,7 +23,9 @@ class TemperatureSourceKind:
     """What a ``[temperature] model`` is: ``given`` (the case's own numbers, read by
     :func:`thermogear.temperature.field.temperature_field_from_section`), ``uniform`` (one bulk temperature),
     ``tabulated`` (flank temperatures along the path), ``predicted_at_load`` (a model sets the case's temperatures
-    when it is loaded), ``solved_per_state`` (each operating state runs a field solution: the FE model)."""
+    when it is loaded), ``solved_per_state`` (each operating state runs a field solution: the FE model),
+    ``takes_helical`` (a helical pair may use it: the given temperatures, and the gearbox network, whose losses take
+    the helix; the FE model's heat input is the spur pair's)."""
 
     name: str
     given: bool
@@ -31,6 +33,7 @@ class TemperatureSourceKind:
     tabulated: bool = False
     predicted_at_load: bool = False
     solved_per_state: bool = False
+    takes_helical: bool = False
 
     @property
     def computed(self) -> bool:
@@ -40,10 +43,10 @@ class TemperatureSourceKind:
 
 #: Every built-in temperature source by name: the one place the names are compared.
 TEMPERATURE_SOURCES: dict[str, TemperatureSourceKind] = {kind.name: kind for kind in (
-    TemperatureSourceKind("uniform", given=True, uniform=True),
-    TemperatureSourceKind("tabulated", given=True, tabulated=True),
+    TemperatureSourceKind("uniform", given=True, uniform=True, takes_helical=True),
+    TemperatureSourceKind("tabulated", given=True, tabulated=True, takes_helical=True),
     TemperatureSourceKind("fem", given=False, solved_per_state=True),
-    TemperatureSourceKind("gearbox", given=False, predicted_at_load=True),
+    TemperatureSourceKind("gearbox", given=False, predicted_at_load=True, takes_helical=True),
 )}
 
 
