@@ -10,8 +10,8 @@ a helical pair, tests/validation), the churning of its teeth with their helix (:
 the unit load stays F_bt/b (the transverse base tangential force, T1/r_b1, as the laws define it). Bearings by the
 SKF model at the viscosity of the oil at the shaft node's temperature, radial load a fraction of the tooth normal
 force (for a drivetrain bearing its static force per newton of tooth load,
-:mod:`~thermogear.gearbox.bearing_entries`); lip seals; churning of the dipped gears at the oil temperature (:mod:`~thermogear.gearbox.churning`); the impulse loss of an
-into-mesh oil jet where the description has one (injection lubrication, :mod:`~thermogear.gearbox.injection`).
+:mod:`~thermogear.gearbox.bearing_entries`); lip seals; churning of the dipped gears at the oil temperature
+(:mod:`~thermogear.gearbox.churning`); the impulse loss of an into-mesh oil jet where the description has one (injection lubrication, :mod:`~thermogear.gearbox.injection`).
 Heat goes to the nodes as: tooth friction to pinion and wheel by the description's share (Blok's partition over
 the path unless given), each bearing and seal to the node of the shaft it sits on (each bearing at the oil viscosity
 of its own shaft's temperature), churning and the jet's impulse loss to the oil.
