@@ -1,20 +1,20 @@
 """Power losses of the gearbox at node temperatures, each source on its own, and the efficiency.
 
 Tooth friction P_VZP = P_in·μ_m·H_V (Niemann & Winter §21.6) with the description's mean friction law
-(:mod:`thermogear.friction.models`: Schlenk's by default, the paper's DIN 3990-4 law, ISO/TR 13989-1 or a
-constant) at the oil temperature, evaluated at the pitch point (sum of rolling speeds 2·v_t·sin α_w, relative
-radius of curvature at C, unit load F_bt/b). A helical pair runs as its transverse section with its helix: H_V
-with Ohlendorf's 1/cos β_b, the relative radius of curvature of the normal section ρ_t/cos β_b, the helical load
-factor K_Bγ(ε_γ) in the ISO/TR 13989 law (all three as in ISO/TR 13989 and checked against a KISSsoft printout of
-a helical pair, tests/validation), the churning of its teeth with their helix (:mod:`~thermogear.gearbox.churning`);
-the unit load stays F_bt/b (the transverse base tangential force, T1/r_b1, as the laws define it). Bearings by the
-SKF model at the viscosity of the oil at the shaft node's temperature, radial load a fraction of the tooth normal
-force (for a drivetrain bearing its static force per newton of tooth load,
-:mod:`~thermogear.gearbox.bearing_entries`); lip seals; churning of the dipped gears at the oil temperature
-(:mod:`~thermogear.gearbox.churning`); the impulse loss of an into-mesh oil jet where the description has one (injection lubrication, :mod:`~thermogear.gearbox.injection`).
-Heat goes to the nodes as: tooth friction to pinion and wheel by the description's share (Blok's partition over
-the path unless given), each bearing and seal to the node of the shaft it sits on (each bearing at the oil viscosity
-of its own shaft's temperature), churning and the jet's impulse loss to the oil.
+(:mod:`thermogear.friction.models`: Schlenk's by default, the paper's DIN 3990-4 law, ISO/TR 13989-2 or a constant) at
+the oil temperature, evaluated at the pitch point (sum of rolling speeds 2·v_t·sin α_w, relative radius of curvature at
+C, unit load F_bt/b). A helical pair runs as its transverse section with its helix: H_V with Ohlendorf's 1/cos β_b, the
+relative radius of curvature of the normal section ρ_t/cos β_b, the helical load factor K_Bγ(ε_γ) in the ISO/TR 13989
+law (all three as in ISO/TR 13989 and checked against a KISSsoft printout of a helical pair, tests/validation), the
+churning of its teeth with their helix (:mod:`~thermogear.gearbox.churning`); the unit load stays F_bt/b (the transverse
+base tangential force, T1/r_b1, as the laws define it). Bearings by the SKF model at the viscosity of the oil at the
+shaft node's temperature, radial load a fraction of the tooth normal force (for a drivetrain bearing its static force
+per newton of tooth load, :mod:`~thermogear.gearbox.bearing_entries`); lip seals; churning of the dipped gears at the
+oil temperature (:mod:`~thermogear.gearbox.churning`); the impulse loss of an into-mesh oil jet where the description
+has one (injection lubrication, :mod:`~thermogear.gearbox.injection`). Heat goes to the nodes as: tooth friction to
+pinion and wheel by the description's share (Blok's partition over the path unless given), each bearing and seal to the
+node of the shaft it sits on (each bearing at the oil viscosity of its own shaft's temperature), churning and the jet's
+impulse loss to the oil.
 """
 
 from __future__ import annotations
