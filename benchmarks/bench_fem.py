@@ -40,7 +40,7 @@ def main(case_name: str = "luo2019", repeats: int = 3) -> dict:
     from thermogear.fem.inputs import fem_inputs
     from thermogear.fem.verification import fem_analysis, refinement_change_percent
     from thermogear.stiffness.potential_energy import pair_compliance
-    from thermogear.luo2020.case_inputs import expansion_for_case
+    from thermogear.luo2020.thermal.case_inputs import expansion_for_case
 
     case = load_case(case_name)
     full, analytical = [], []

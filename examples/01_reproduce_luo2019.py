@@ -22,7 +22,7 @@ import numpy as np  # noqa: E402
 
 from thermogear import load_case  # noqa: E402
 from thermogear.report.evaluate import evaluate_case, paper_verdicts  # noqa: E402
-from thermogear.report.paper_table import Absolute, Relative, known_gaps, table_counts  # noqa: E402
+from thermogear.luo2020.report.table import Absolute, Relative, known_gaps, table_counts  # noqa: E402
 
 
 def main(out: Path) -> dict:

@@ -22,8 +22,8 @@ matplotlib.use("Agg")  # a script that only writes files: no window
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-from thermogear.experiment import (measurements_at, mesh_orders, read_csv_signal, spectrum,  # noqa: E402
-                                   window_table)
+from thermogear.experiment import mesh_orders, read_csv_signal, spectrum, window_table  # noqa: E402
+from thermogear.luo2020.rig.data import measurements_at  # noqa: E402
 
 RATE_HZ = 2000.0
 WINDOW_S = 10.0

@@ -28,8 +28,8 @@ CASE_PIECES: dict[str, tuple[str, str | None]] = {
     "gearbox_model": ("thermogear.gearbox.case_model:gearbox_model_from_case", "gearbox"),
     "fem_inputs": ("thermogear.fem.inputs:fem_inputs", None),
     "temperature_field": ("thermogear.temperature.source:temperature_field_from_case", None),
-    "paper_thermal_memo": ("thermogear.luo2020.case_stiffness:paper_thermal_memo", None),
-    "paper_thermal_model": ("thermogear.luo2020.case_stiffness:paper_thermal_model", None),
+    "paper_thermal_memo": ("thermogear.luo2020.thermal.case_stiffness:paper_thermal_memo", None),
+    "paper_thermal_model": ("thermogear.luo2020.thermal.case_stiffness:paper_thermal_model", None),
 }
 
 #: The pieces of a case that a plug-in its section names provides (:mod:`thermogear.case.pieces`): name → the chooser,
@@ -37,7 +37,7 @@ CASE_PIECES: dict[str, tuple[str, str | None]] = {
 #: the pieces it names, and its answer is the piece.
 CHOSEN_PIECES: dict[str, str] = {
     "provided_temperature_field": "thermogear.temperature.source:temperature_provider",
-    "provided_x_te": "thermogear.luo2020.calibration:chosen_x_te_provider",
+    "provided_x_te": "thermogear.luo2020.thermal.calibration:chosen_x_te_provider",
 }
 
 #: Every check and provider below receives the pieces of the case its parameters name

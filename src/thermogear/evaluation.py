@@ -208,7 +208,7 @@ def evaluate_case(case, method: str = "periodic", models: tuple[str, ...] = MODE
         thermal_mesh = MeshModel(case, "thermal")
         if uses_paper_thermal_stiffness(thermal_mesh):  # the paper's k_T curves (Fig. 4) belong to its model only
             from thermogear.case.pieces import call_with_pieces
-            from thermogear.luo2020.case_stiffness import paper_thermal_model
+            from thermogear.luo2020.thermal.case_stiffness import paper_thermal_model
             from thermogear.summaries.thermal import thermal_curves, thermal_stiffness_summary
 
             paper = call_with_pieces(paper_thermal_model, case)
@@ -299,9 +299,9 @@ def fem_verification(inputs):
 
 def _predicted_rig_runs() -> dict:
     """The rig's temperatures of Table 3 predicted by the gearbox model, cold start and runs chained, with the
-    warnings of the prediction (:func:`thermogear.experiment.rig_prediction.predicted_runs`)."""
+    warnings of the prediction (:func:`thermogear.luo2020.rig.prediction.predicted_runs`)."""
     from thermogear import warning_scope
-    from thermogear.experiment.rig_prediction import predicted_runs
+    from thermogear.luo2020.rig.prediction import predicted_runs
 
     with warning_scope.recorded() as caught:  # the viscosity fit extrapolated below 40 °C: said in the section
         cold, chained = predicted_runs()
@@ -318,7 +318,7 @@ def _rig_trend() -> dict:
     """Fig. 18 trend: natural frequency of the FZG type C pair (thermal model) at the bulk temperatures of the
     paper's 900 rpm run (first and last reading)."""
     from thermogear.case import load_case
-    from thermogear.experiment.rig_data import measured_resonance_shift
+    from thermogear.luo2020.rig.data import measured_resonance_shift
     from thermogear.simulation import Simulation
 
     measured = measured_resonance_shift()

@@ -48,7 +48,7 @@ def test_fem_temperature_and_x_te_drive_the_chain():
     from thermogear.fem.verification import cached_analysis
     from thermogear.simulation import Simulation
     from thermogear.case.pieces import call_with_pieces
-    from thermogear.luo2020.case_stiffness import paper_thermal_model
+    from thermogear.luo2020.thermal.case_stiffness import paper_thermal_model
 
     case = load_case("luo2019").with_changes(**{
         "temperature": {"model": "fem", "reference_c": 20.0},

@@ -12,7 +12,7 @@ import pytest
 import inprocess_cli
 
 import thermogear
-from thermogear.report.paper_table import row
+from thermogear.luo2020.report.table import row
 
 USER_PAIR = Path(__file__).resolve().parents[1] / "data" / "user_pair.toml"
 

@@ -16,7 +16,7 @@ import pytest
 import inprocess_cli
 
 import thermogear
-from thermogear.report.paper_table import PAPER_ROWS
+from thermogear.luo2020.report.table import PAPER_ROWS
 
 FIGURES = ("fig3c", "fig4", "fig6", "fig7", "fig8", "fig9", "fig10", "fig11", "fig12", "fig15")
 FIELDS = ("quantity", "paper", "thermogear", "unit", "deviation", "tolerance", "within", "note", "status", "reason")
@@ -54,7 +54,7 @@ def test_summary_has_one_row_per_paper_number(default_run):
     assert summary["thermogear_version"] == thermogear.__version__
     keys = [row["key"] for row in summary["table"]]
     # none missing, none added, same order: the paper's rows, then the rig's temperatures predicted (one per
-    # Table 3 temperature; thermogear.report.rig_section)
+    # Table 3 temperature; thermogear.luo2020.report.rig_section)
     rig = [key for key in keys if key.startswith("rig.")]
     assert keys == [row.key for row in PAPER_ROWS] + rig and len(rig) == 9
     for row in summary["table"]:

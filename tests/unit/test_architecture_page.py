@@ -28,9 +28,11 @@ def _contract_layers(container: str | None = None) -> list[str]:
 
 
 def _page_layers() -> list[str]:
-    # the numbered list of the "Layers" section: "1. `thermogear.cli` — ..."
+    # the numbered list of the "Layers" section: "1. `thermogear.cli` — ...", siblings that may import each other
+    # as the contract writes them: "2. `thermogear.report` : `thermogear.luo2020.report` — ..."
     section = PAGE.read_text(encoding="utf-8").split("## Layers", 1)[1].split("\n## ", 1)[0]
-    return re.findall(r"^\d+\. `(thermogear(?:\.\w+)*)`", section, flags=re.MULTILINE)
+    heads = re.findall(r"^\d+\. (`thermogear[^—]*?) —", section, flags=re.MULTILINE)
+    return [" : ".join(re.findall(r"`(thermogear(?:\.\w+)*)`", head)) for head in heads]
 
 
 def _numbers() -> list[int]:

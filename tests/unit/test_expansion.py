@@ -9,8 +9,8 @@ import pytest
 from scipy.integrate import quad
 
 from thermogear.errors import CaseError
-from thermogear.luo2020.expansion import (base_circle_radial_expansion, flank_expansion_along_line_of_action,
-                                          flank_point_displacement, pair_flank_expansion)
+from thermogear.luo2020.thermal.expansion import (base_circle_radial_expansion, flank_expansion_along_line_of_action,
+                                                  flank_point_displacement, pair_flank_expansion)
 
 ALPHA = 11.5e-6
 

@@ -10,7 +10,7 @@ import pytest
 
 from thermogear.errors import CaseError
 from thermogear.geometry import Gear
-from thermogear.luo2020.expansion import flank_expansion_along_line_of_action
+from thermogear.luo2020.thermal.expansion import flank_expansion_along_line_of_action
 
 ALPHA_TH = 11.5e-6
 RISE = 50.0

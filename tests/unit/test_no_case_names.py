@@ -65,7 +65,7 @@ def test_a_renamed_copy_of_the_paper_case_is_the_paper_case(tmp_path):
     """The content decides: the paper's parameter set under another name keeps the paper's comparison; the same
     file without the paper's citation, under the paper's own name, does not get it."""
     from thermogear.evaluation import is_paper_case
-    from thermogear.report.paper_table import paper_reference
+    from thermogear.luo2020.report.table import paper_reference
 
     text = (SOURCE / "parameter_sets" / "luo2019.toml").read_text(encoding="utf-8")
     renamed = tmp_path / "my_copy.toml"

@@ -168,8 +168,8 @@ def _choice_registries() -> dict:
     from thermogear.friction.models import FRICTION_MODELS
     from thermogear.gearbox.bearing_entries import BEARING_TYPES
     from thermogear.lubrication_methods import LUBRICATION_METHODS
-    from thermogear.luo2020.case_inputs import LOAD_BASES
-    from thermogear.luo2020.expansion import EXPANSION_FORMS
+    from thermogear.luo2020.thermal.case_inputs import LOAD_BASES
+    from thermogear.luo2020.thermal.expansion import EXPANSION_FORMS
     from thermogear.sweep.evaluation_methods import EVALUATION_METHODS
     from thermogear.sweep.load_held import HOLDS
 
@@ -178,9 +178,9 @@ def _choice_registries() -> dict:
         "warm-up model (warmup --model)": ("cli/warmup.py", WARMUP_MODELS),
         "evaluation method of a study (sweep --method)": ("sweep/evaluation_methods.py", EVALUATION_METHODS),
         "mesh-damping rule ([damping] rule)": ("friction/damping.py", DAMPING_RULES),
-        "form of Eq. 9 ([thermal] expansion_model)": ("luo2020/expansion.py", EXPANSION_FORMS),
+        "form of Eq. 9 ([thermal] expansion_model)": ("luo2020/thermal/expansion.py", EXPANSION_FORMS),
         "friction law (friction_model)": ("friction/models.py", FRICTION_MODELS),
-        "load basis of the paper's k_T ([thermal] load_basis)": ("luo2020/case_inputs.py", LOAD_BASES),
+        "load basis of the paper's k_T ([thermal] load_basis)": ("luo2020/thermal/case_inputs.py", LOAD_BASES),
         "spectrum estimate (vibration --method)": ("experiment/spectrum.py", SPECTRUM_METHODS),
         "plane assumption of the FE model ([fem] plane)": ("fem/elasticity.py", PLANE_ASSUMPTIONS),
         "bore condition of the FE heat model ([fem] bore)": ("fem/tooth_heat.py", BORE_CONDITIONS),
@@ -241,7 +241,7 @@ def test_the_schema_accepts_exactly_the_registered_choices():
 
     from thermogear.friction.damping import DAMPING_RULES
     from thermogear.lubrication_methods import LUBRICATION_METHODS
-    from thermogear.luo2020.expansion import EXPANSION_FORMS
+    from thermogear.luo2020.thermal.expansion import EXPANSION_FORMS
     from thermogear.schema.dynamics import DampingSection
     from thermogear.schema.gearbox import GearboxOilSection
     from thermogear.schema.thermal import ThermalSection
@@ -251,7 +251,7 @@ def test_the_schema_accepts_exactly_the_registered_choices():
     assert set(typing.get_args(ThermalSection.model_fields["expansion_model"].annotation)) == set(EXPANSION_FORMS)
     from thermogear.fem.elasticity import PLANE_ASSUMPTIONS
     from thermogear.fem.tooth_heat import BORE_CONDITIONS
-    from thermogear.luo2020.case_inputs import LOAD_BASES
+    from thermogear.luo2020.thermal.case_inputs import LOAD_BASES
     from thermogear.schema.fem import FemSection
 
     assert set(typing.get_args(ThermalSection.model_fields["load_basis"].annotation)) == set(LOAD_BASES)

@@ -13,8 +13,8 @@ import pytest
 
 from thermogear import load_case
 from thermogear.evaluation import evaluate_case
-from thermogear.report.paper_table import PAPER_ROWS
-from thermogear.report.paper_values import paper_values
+from thermogear.luo2020.report.table import PAPER_ROWS
+from thermogear.luo2020.report.values import paper_values
 
 
 @pytest.fixture(scope="module")
@@ -41,7 +41,7 @@ def test_the_reasons_name_what_is_missing(values):
 
 def test_a_programming_error_is_not_swallowed(monkeypatch):
     """Only the named exceptions become reasons: a TypeError inside a row's reading propagates."""
-    from thermogear.report import paper_values as module
+    from thermogear.luo2020.report import values as module
 
     class Broken:
         case = load_case("fzg_type_c")

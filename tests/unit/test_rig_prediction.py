@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import pytest
 
-from thermogear.experiment.rig_prediction import RIG_ASSUMPTIONS, predict_table3, table3_markdown
+from thermogear.luo2020.rig.prediction import RIG_ASSUMPTIONS, predict_table3, table3_markdown
 
 pytestmark = pytest.mark.filterwarnings("ignore::UserWarning")
 

@@ -1,15 +1,15 @@
-"""The paper's rig predicted in the luo2019 report (thermogear.report.rig_section): one prediction row per Table 3
-temperature, counted in the headline, with the rig's assumptions stated."""
+"""The paper's rig predicted in the luo2019 report (thermogear.luo2020.report.rig_section): one prediction row per
+Table 3 temperature, counted in the headline, with the rig's assumptions stated."""
 
 from __future__ import annotations
 
 import pytest
 
 from thermogear import forked
-from thermogear.experiment.rig_prediction import RIG_AMBIENT_C, predicted_runs
-from thermogear.report.paper_checks import known_gaps, table_counts
-from thermogear.report.rig_section import (FIXED_K, GAP_SPEEDS_RPM, RISE_SHARE, rig_rows, rig_section, rig_verdicts,
-                                           start_rig_prediction, with_rig_section)
+from thermogear.luo2020.rig.prediction import RIG_AMBIENT_C, predicted_runs
+from thermogear.luo2020.report.checks import known_gaps, table_counts
+from thermogear.luo2020.report.rig_section import (FIXED_K, GAP_SPEEDS_RPM, RISE_SHARE, rig_rows, rig_section,
+                                                   rig_verdicts, start_rig_prediction, with_rig_section)
 
 pytestmark = pytest.mark.filterwarnings("ignore::UserWarning")
 

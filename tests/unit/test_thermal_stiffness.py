@@ -10,11 +10,11 @@ import pytest
 
 from thermogear.case.pieces import call_with_pieces
 from thermogear.errors import CaseError, ModelAssumptionWarning, ThermogearError
-from thermogear.luo2020 import calibration as calibration_module
-from thermogear.luo2020.calibration import x_te_for_drop
-from thermogear.luo2020.case_stiffness import paper_thermal_model
-from thermogear.luo2020.stiffness import (pair_share_normal_load, thermal_pair_stiffness, thermal_stiffness_of_pair,
-                                          thermal_stiffness_of_tooth)
+from thermogear.luo2020.thermal import calibration as calibration_module
+from thermogear.luo2020.thermal.calibration import x_te_for_drop
+from thermogear.luo2020.thermal.case_stiffness import paper_thermal_model
+from thermogear.luo2020.thermal.stiffness import (pair_share_normal_load, thermal_pair_stiffness,
+                                                  thermal_stiffness_of_pair, thermal_stiffness_of_tooth)
 from thermogear.summaries.thermal import crossing_gammas
 
 # Synthetic per-tooth compliances of a pair along the path (totals, m/N) and expansions (m): orders of magnitude
@@ -214,11 +214,12 @@ def test_a_given_x_te_makes_the_secant_k_t_depend_on_the_load(luo2019):
 @pytest.mark.filterwarnings("ignore::thermogear.errors.ModelAssumptionWarning")
 def test_the_resolved_model_keeps_no_case_alive(luo2019):
     # what paper_thermal_model computes once per case (splines, the own X_te) is memoised per case (the piece
-    # paper_thermal_memo) without a reference back to it: a case asked for its k_T is freed with its memo (a sweep makes thousands of cases)
+    # paper_thermal_memo) without a reference back to it: a case asked for its k_T is freed with its memo (a sweep
+    # makes thousands of cases)
     import gc
     import weakref
 
-    from thermogear.luo2020.case_stiffness import paper_thermal_memo
+    from thermogear.luo2020.thermal.case_stiffness import paper_thermal_memo
 
     case = luo2019.with_changes(**{"operating.speed_rpm": 1500.0})
     key = id(case)

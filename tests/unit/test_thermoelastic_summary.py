@@ -11,7 +11,7 @@ import pytest
 
 from thermogear.case import case_from_document, load_case
 from thermogear.case.pieces import call_with_pieces
-from thermogear.luo2020.case_stiffness import paper_thermal_model
+from thermogear.luo2020.thermal.case_stiffness import paper_thermal_model
 from thermogear.mesh.model import MeshModel
 from thermogear.thermoelastic.mesh import ThermoelasticMesh
 from thermogear.summaries.thermoelastic import ThermalModels, thermal_block

@@ -216,7 +216,7 @@ def test_a_warm_up_state_of_the_papers_case_keeps_its_calibrated_x_te():
     from thermogear.case import load_case
     from thermogear.experiment.warmup import state_case
     from thermogear.case.pieces import call_with_pieces
-    from thermogear.luo2020.case_stiffness import paper_thermal_model
+    from thermogear.luo2020.thermal.case_stiffness import paper_thermal_model
 
     case = load_case("luo2019")
     cold = state_case(case, 20.0)
@@ -231,7 +231,7 @@ def test_both_warm_ups_hold_a_calibrated_x_te_one_way():
     from thermogear.case import load_case
     from thermogear.case.pieces import call_with_pieces
     from thermogear.experiment.warmup import held_x_te, state_case
-    from thermogear.luo2020.case_stiffness import paper_thermal_model
+    from thermogear.luo2020.thermal.case_stiffness import paper_thermal_model
 
     paper = load_case("luo2019")
     held = call_with_pieces(held_x_te, paper)

@@ -10,7 +10,7 @@ from thermogear.case import load_case
 from thermogear.fem.inputs import fem_inputs
 from thermogear.fem.verification import (UNIFORM_RISE, cached_analysis, fem_analysis, refinement_change_percent,
                                          stiffness_along_path)
-from thermogear.luo2020.expansion import flank_expansion_along_line_of_action
+from thermogear.luo2020.thermal.expansion import flank_expansion_along_line_of_action
 
 GEARS = ("pinion", "wheel")
 

@@ -9,7 +9,7 @@ import pytest
 from scipy.optimize import brentq
 
 from thermogear import load_case
-from thermogear.report.paper_table import paper_reference
+from thermogear.luo2020.report.table import paper_reference
 from thermogear.summaries.damping import damping_summary
 from thermogear.errors import ExtrapolationWarning
 from thermogear.lubricant import builtin_lubricant

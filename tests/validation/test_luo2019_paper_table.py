@@ -1,4 +1,4 @@
-"""Every number of Luo & Li (2020) as one test, from the ONE table of thermogear.report.paper_table (each tolerance
+"""Every number of Luo & Li (2020) as one test, from the ONE table of thermogear.luo2020.report.table (each tolerance
 is argued there, in the row's ``argument``; each known gap carries its cause in the row's ``gap``).
 
 * A row that is not computed fails — optional or not — unless the paper's quantity is one thermogear cannot
@@ -21,8 +21,8 @@ import pytest
 
 from thermogear.case import load_case
 from thermogear.report.evaluate import evaluate_case, paper_values, paper_verdicts
-from thermogear.report.paper_table import (KINDS, PAPER_ROWS, Absolute, Bounds, Check, Relative, judge, known_gaps,
-                                           known_gaps_text, row, table_counts)
+from thermogear.luo2020.report.table import (KINDS, PAPER_ROWS, Absolute, Bounds, Check, Relative, judge, known_gaps,
+                                             known_gaps_text, row, table_counts)
 
 #: rows whose quantity thermogear cannot compute by nature (not a failure of a stage)
 NOT_COMPUTABLE = {"sec5.run_duration": "a test procedure; the bundled rig data hold only minutes 3, 5 and 10"}

@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 
 from thermogear.case.pieces import call_with_pieces
-from thermogear.luo2020.case_stiffness import paper_thermal_model
+from thermogear.luo2020.thermal.case_stiffness import paper_thermal_model
 from thermogear.mesh.model import MeshModel
 from thermogear.summaries.thermal import thermal_curves, thermal_stiffness_summary
 

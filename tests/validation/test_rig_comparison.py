@@ -17,7 +17,7 @@ from thermogear.case import load_case
 from thermogear.errors import ExtrapolationWarning
 from thermogear.experiment.comparison import (SdofTransferPath, compare_with_rig, periodic_force_harmonics,
                                               simulate_rig_signal)
-from thermogear.experiment.rig_data import measured_resonance_shift, rig_measurements
+from thermogear.luo2020.rig.data import measured_resonance_shift, rig_measurements
 from thermogear.experiment.spectrum import max_amplitude, mean_amplitude, mesh_orders, spectrum
 from thermogear.experiment.warmup import state_case
 

@@ -87,7 +87,7 @@ def damping(case: str = typer.Argument(..., metavar="CASE",
 def _paper_means(citation: str | None) -> dict | None:
     """The paper's mean dampings {model: {region: N·s/m}} for a parameter set of the paper (its ``citation``, from
     the paper table), else None."""
-    from thermogear.report.paper_table import paper_reference
+    from thermogear.luo2020.report.table import paper_reference
 
     reference = paper_reference(citation)
     return None if reference is None else reference.mean_damping_n_s_per_m

@@ -23,7 +23,7 @@ def fem_summary(case_name: str, refine: bool = True, progress=None) -> tuple[dic
     from thermogear.fem.inputs import fem_inputs  # noqa: PLC0415
     from thermogear.fem.interpretation import fem_interpretation  # noqa: PLC0415
     from thermogear.fem.verification import cached_analysis, fem_analysis, refinement_change_percent  # noqa: PLC0415
-    from thermogear.report.paper_table import paper_reference  # noqa: PLC0415
+    from thermogear.luo2020.report.table import paper_reference  # noqa: PLC0415
 
     advance = progress or (lambda name: None)
     start = time.perf_counter()

@@ -309,6 +309,6 @@ def _print_table(case_name: str, responses, console, thermoelastic: dict | None 
 
 def _shown(value, scale: float = 1.0) -> str:
     """A table cell: a number, or "not found" where the model gave none (JSON null)."""
-    from thermogear.report.paper_table import format_value
+    from thermogear.luo2020.report.table import format_value
 
     return "not found" if value is None else format_value(scale * value)

@@ -146,7 +146,7 @@ def stiffness(
         thermal_module = None
     if thermal_module is not None:
         from thermogear.case.pieces import call_with_pieces  # noqa: PLC0415
-        from thermogear.luo2020.case_stiffness import paper_thermal_model  # noqa: PLC0415
+        from thermogear.luo2020.thermal.case_stiffness import paper_thermal_model  # noqa: PLC0415
         from thermogear.thermoelastic.mesh import ThermoelasticMesh  # noqa: PLC0415
 
         thermal_models = thermal_module.ThermalModels(

@@ -26,7 +26,7 @@ import numpy as np
 
 from thermogear.dynamics.results.spectra import right_continuous, time_mean_and_rms
 from thermogear.errors import CaseError
-from thermogear.experiment.rig_data import (CITATION, measured_resonance_shift, measurements_at, rig_speeds_rpm)
+from thermogear.luo2020.rig.data import (CITATION, measured_resonance_shift, measurements_at, rig_speeds_rpm)
 from thermogear.experiment.signals import Signal
 from thermogear.experiment.warmup import state_case, time_mean
 

@@ -137,7 +137,7 @@ def history_speed_rpm(text: str) -> float:
 
 def table3_history(speed_rpm: float) -> TemperatureHistory:
     """The temperatures of Luo & Li (2020) Table 3 at the 3rd/5th/10th minute of the run at ``speed_rpm``."""
-    from thermogear.experiment.rig_data import measurements_at, rig_speeds_rpm
+    from thermogear.luo2020.rig.data import measurements_at, rig_speeds_rpm
 
     rows = measurements_at(speed_rpm)
     if not rows:

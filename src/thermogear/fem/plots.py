@@ -32,7 +32,7 @@ def plot_temperature_field(analysis, ax=None, which: str = "pinion"):
 def plot_flank_temperature(analysis, ax=None, paper_band: tuple[float, float] | None = None):
     """Fig. 3(c): meshing-flank temperature along the path, FE points and the fitted polynomial; ``paper_band``
     (lowest, highest) [°C]: the paper's range, shaded (the caller passes it for a parameter set of the paper:
-    :func:`thermogear.report.paper_table.paper_reference`)."""
+    :func:`thermogear.luo2020.report.table.paper_reference`)."""
     figure, ax = _axes(ax)
     pair = analysis.gear_pair
     roll = pair.roll_grid(81)

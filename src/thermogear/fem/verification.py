@@ -126,7 +126,7 @@ class FemAnalysis:
     def thermal_result(self, x_te: float | None = None):
         """ThermalPairStiffness (Eqs. 13–23) with the FE tooth compliances, Eqs. 8–12 expansions of the FE field,
         the external normal load and the FE X_te."""
-        from thermogear.luo2020.stiffness import thermal_pair_stiffness  # noqa: PLC0415
+        from thermogear.luo2020.thermal.stiffness import thermal_pair_stiffness  # noqa: PLC0415
 
         half = 0.5 * self.hertz
         with warnings.catch_warnings():
@@ -217,7 +217,7 @@ class FemAnalysis:
 
 def _expansion_analytical(pair, material, expansion_model: str, which: str, roll, field) -> np.ndarray:
     """Flank expansion of Luo & Li (2020) Eqs. 8–12 of the ``which`` gear of ``pair`` [m] in a temperature field."""
-    from thermogear.luo2020.expansion import flank_expansion_along_line_of_action  # noqa: PLC0415
+    from thermogear.luo2020.thermal.expansion import flank_expansion_along_line_of_action  # noqa: PLC0415
 
     gear = getattr(pair, which)
     gamma = pair.gamma(roll)
@@ -238,7 +238,7 @@ def fem_analysis(inputs: "FemInputs", refinement: float | None = None, settings:
     one of the two thermal ones) are left out, and :meth:`FemAnalysis.summary` refuses the analysis."""
     import time  # noqa: PLC0415
 
-    from thermogear.luo2020.expansion import flank_expansion_along_line_of_action  # noqa: PLC0415
+    from thermogear.luo2020.thermal.expansion import flank_expansion_along_line_of_action  # noqa: PLC0415
 
     settings = settings or inputs.settings
     refinement = settings.mesh_refinement if refinement is None else float(refinement)

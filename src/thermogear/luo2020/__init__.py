@@ -1,24 +1,13 @@
-"""The thermal stiffness model of Luo & Li (2020), kept to reproduce the paper: the flanks' thermal expansion and
-the secant meshing thermal stiffness k_T with the thermal-elastic ratio X_te (Eqs. 7–23).
+"""The reproduction of Luo & Li (2020) in one place, each part at its own layer of the package (the layers contract
+in ``pyproject.toml``; this module imports nothing, so importing one part does not import the others):
 
-It is the ``"luo2020"`` pair model (``[thermal] model = "luo2020"``); thermogear's predictive model is
-:mod:`thermogear.thermoelastic`. The tooth temperatures both read come from :mod:`thermogear.temperature.source`.
+- :mod:`thermogear.luo2020.thermal` — the paper's thermal stiffness model k_T and X_te (Eqs. 7–23), the
+  ``"luo2020"`` pair model (physics);
+- :mod:`thermogear.luo2020.rig` — the paper's FZG rig: its measured data (Table 3, §5.2) and the prediction of
+  its temperatures by the gearbox network (beside the test-rig workflow of :mod:`thermogear.experiment`);
+- :mod:`thermogear.luo2020.report` — every number of the paper beside thermogear's (the table, its values, rows
+  and checks) and the report's rig section (beside :mod:`thermogear.report`).
 
-- :mod:`~thermogear.luo2020.expansion`: flank expansion along the line of action (Eqs. 8–12);
-- :mod:`~thermogear.luo2020.stiffness`: k_T, k_Ti, δ_T, δ_Ti, δ_Tp (Eqs. 13–23);
-- :mod:`~thermogear.luo2020.case_stiffness`: k_T of a case at a given normal load and X_te of a case, from the
-  :class:`~thermogear.luo2020.case_stiffness.PaperThermalModel` the case resolves into once
-  (:func:`~thermogear.luo2020.case_stiffness.paper_thermal_model`);
-- :mod:`~thermogear.luo2020.calibration`: X_te given, calibrated or from the FE model;
-(The CLI's JSON object and Fig. 4 are in :mod:`thermogear.summaries`.)
+Reference: Luo & Li (2020), Investigation on the influence of heat on the dynamic characteristics of a gear
+transmission system, Engineering Failure Analysis 108, 104724 (``docs/validation.md``: what is reproduced).
 """
-
-from thermogear.luo2020.calibration import Calibration, register_x_te_provider
-from thermogear.luo2020.expansion import (base_circle_radial_expansion, flank_expansion_along_line_of_action,
-                                          pair_flank_expansion)
-from thermogear.luo2020.case_stiffness import PaperThermalModel, paper_thermal_model
-from thermogear.luo2020.stiffness import ThermalPairStiffness, ThermalStiffness, thermal_pair_stiffness
-
-__all__ = ["Calibration", "PaperThermalModel", "ThermalPairStiffness", "ThermalStiffness", "base_circle_radial_expansion",
-           "flank_expansion_along_line_of_action", "pair_flank_expansion", "paper_thermal_model",
-           "register_x_te_provider", "thermal_pair_stiffness"]

@@ -33,7 +33,7 @@ import numpy as np
 from thermogear.case.pieces import call_with_pieces
 from thermogear.dynamics.problems.mesh_laws import mesh_law
 from thermogear.errors import CaseError
-from thermogear.luo2020.case_stiffness import paper_thermal_model
+from thermogear.luo2020.thermal.case_stiffness import paper_thermal_model
 from thermogear.mesh.model_names import MODELS, THERMAL
 from thermogear.mesh.secant_checks import secant_stiffness_drop_flag, secant_stiffness_in_nonlinear_mesh
 from thermogear.stiffness.table import pair_stiffness_at
@@ -230,8 +230,8 @@ class Luo2020Pair(PairModelBase):
 
     @cached_property
     def paper_model(self):
-        """The paper's k_T model of the case (:func:`~thermogear.luo2020.case_stiffness.paper_thermal_model`, built
-        from the pieces it names; what it computes once per case is kept in the case's memo)."""
+        """The paper's k_T model of the case (:func:`~thermogear.luo2020.thermal.case_stiffness.paper_thermal_model`,
+        built from the pieces it names; what it computes once per case is kept in the case's memo)."""
         return call_with_pieces(paper_thermal_model, self.case)
 
     def pair_stiffness_at(self, roll, normal_load: float) -> np.ndarray:

@@ -16,7 +16,7 @@ from typing import Callable
 from thermogear.citations import citations_used, clear_citations
 from thermogear.report.evaluate import (Evaluation, evaluate_case, is_paper_case, key_results, model_messages,
                                         paper_verdicts)
-from thermogear.report.rig_section import rig_section, rig_verdicts, with_rig_section
+from thermogear.luo2020.report.rig_section import rig_section, rig_verdicts, with_rig_section
 from thermogear.report.steps import steps_of_report
 from thermogear.report.writer import OutputFolder
 

@@ -8,8 +8,8 @@ import numpy as np
 from thermogear.dynamics.problems.mesh_laws import mesh_law
 from thermogear.evaluation import MODELS, STEPS, Evaluation, evaluate_case, is_paper_case
 from thermogear.mesh.model_names import THERMAL
-from thermogear.report.paper_table import PAPER_ROWS, Verdict, judge
-from thermogear.report.paper_values import paper_values
+from thermogear.luo2020.report.table import PAPER_ROWS, Verdict, judge
+from thermogear.luo2020.report.values import paper_values
 
 __all__ = ["DYNAMIC_FACTORS_NOTE", "Evaluation", "evaluate_case", "paper_values", "paper_verdicts", "key_results",
            "model_messages",

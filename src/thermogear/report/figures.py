@@ -157,7 +157,7 @@ def fig6(evaluation):
 
 def _damping_figure(evaluation, model: str):
     plt = _pyplot()
-    from thermogear.report.paper_table import paper_reference
+    from thermogear.luo2020.report.table import paper_reference
 
     summary = evaluation.damping
     figure, (left, right) = plt.subplots(1, 2, figsize=(11, 4.0), constrained_layout=True)

@@ -7,7 +7,7 @@ import html
 from datetime import datetime, timezone
 
 from thermogear.report.figures import FIGURES
-from thermogear.report.paper_checks import format_value
+from thermogear.luo2020.report.checks import format_value
 from thermogear.report.drivetrain_section import drivetrain_section
 from thermogear.report.helical_section import helical_section
 from thermogear.report.thermoelastic_section import thermoelastic_section
@@ -130,7 +130,7 @@ def fe_versus_analytical_text(numbers: dict) -> str:
 
 def _headline_section(evaluation, verdicts, pngs: dict[str, bytes]) -> str:
     """The first screen: the case in one line, the headline comparison and the key figures."""
-    from thermogear.report.paper_table import known_gaps, known_gaps_text, table_counts
+    from thermogear.luo2020.report.table import known_gaps, known_gaps_text, table_counts
 
     case = evaluation.case
     pair, op = case.gear_pair, case.operating_point
@@ -190,7 +190,7 @@ def _headline_numbers(evaluation) -> str:
 
 
 def _paper_section(verdicts) -> str:
-    from thermogear.report.paper_table import KIND_MEANING
+    from thermogear.luo2020.report.table import KIND_MEANING
 
     head = ("<h2 id='paper'>Every number of the paper beside thermogear's</h2>"
             "<p class='small'>Deviation = (thermogear − paper)/|paper|, or 'inside the range' where the paper gives "

@@ -127,7 +127,7 @@ def summary_document(evaluation, verdicts, results, messages, figures, missing_f
 
     case = evaluation.case
     from thermogear.report.html import fe_versus_analytical
-    from thermogear.report.paper_table import known_gaps, table_counts
+    from thermogear.luo2020.report.table import known_gaps, table_counts
 
     table = [verdict.as_dict() for verdict in verdicts]
     counts = table_counts(verdicts) if verdicts else {}

@@ -9,7 +9,7 @@ from rich.console import Console
 from rich.table import Table
 from rich.text import Text
 
-from thermogear.report.paper_table import format_value
+from thermogear.luo2020.report.table import format_value
 
 __all__ = ["interruptible", "print_summary", "print_messages"]
 
@@ -60,7 +60,7 @@ def print_summary(outcome, console: Console) -> None:
             table.add_row(row.quantity, row.paper_text, format_value(verdict.value), row.unit, verdict.deviation_text,
                           style[verdict.status] + ("" if not row.gap else " (known gap)"))
         console.print(table)
-        from thermogear.report.paper_table import known_gaps_text, table_counts
+        from thermogear.luo2020.report.table import known_gaps_text, table_counts
 
         counts = table_counts(outcome.verdicts)
         for kind, label in (("input", "inputs and rig data transcribed (not counted)"),

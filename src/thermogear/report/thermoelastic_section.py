@@ -25,7 +25,7 @@ def thermoelastic_section(data: dict | None) -> str:
     """HTML of the comparison (empty when the stage did not run)."""
     if not data:
         return ""
-    from thermogear.report.paper_table import row  # the paper's number, from the paper table only
+    from thermogear.luo2020.report.table import row  # the paper's number, from the paper table only
     rows = "".join(
         f"<tr><td>{html.escape(label)}</td><td>{html.escape(unit)}</td>"
         + "".join(f"<td class='num'>{html.escape(_cell(data[name], key, pattern))}</td>"

@@ -34,7 +34,7 @@ class DampingSummary:
 
     def to_dict(self) -> dict:
         """The JSON summary of ``thermogear damping`` (the command adds the paper's means for a parameter set of
-        the paper: they are the paper table's, :func:`thermogear.report.paper_table.paper_reference`)."""
+        the paper: they are the paper table's, :func:`thermogear.luo2020.report.table.paper_reference`)."""
         oil, pitch = self.lubricant, self.pitch
         flank_viscosity = float(np.mean(self.path["thermal"].viscosity))
         result = {

@@ -9,8 +9,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 import numpy as np
 
-from thermogear.luo2020.case_stiffness import PaperThermalModel
-from thermogear.luo2020.stiffness import ThermalStiffness
+from thermogear.luo2020.thermal.case_stiffness import PaperThermalModel
+from thermogear.luo2020.thermal.stiffness import ThermalStiffness
 from thermogear.mesh.model import MeshModel
 
 #: Roll positions of the curves along the path (A to E inclusive) used for crossings, extremes and the plot.

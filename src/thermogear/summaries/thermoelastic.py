@@ -26,7 +26,7 @@ from thermogear.temperature.source import TemperatureField
 from thermogear.thermoelastic.mesh import ThermoelasticMesh
 
 if TYPE_CHECKING:
-    from thermogear.luo2020.case_stiffness import PaperThermalModel
+    from thermogear.luo2020.thermal.case_stiffness import PaperThermalModel
 
 #: N/m per metre of face width → N/(mm·μm)
 PER_WIDTH_TO_N_PER_MM_UM = 1e-9

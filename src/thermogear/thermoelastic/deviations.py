@@ -11,7 +11,7 @@ Three parts (docs/thermal.md):
   linearly along each pair's roll, zero at the pitch point C, with slope (p_b2 − p_b1)/p_b1, so that two pairs one
   pinion base pitch apart differ by exactly p_b1 − p_b2; the same function serves every pair slot;
 - thermal flank distortion: the flank expansion of the non-uniform part of the temperature field, i.e. the
-  consistent form of Luo & Li (2020) Eqs. 8–12 (:func:`thermogear.luo2020.expansion.flank_expansion_along_line_of_action`)
+  consistent form of Luo & Li (2020) Eqs. 8–12 (:func:`thermogear.luo2020.thermal.expansion.flank_expansion_along_line_of_action`)
   minus the homogeneous expansion of the gear's equivalent bulk rise, which is already in the operating geometry.
 """
 
@@ -20,7 +20,7 @@ from __future__ import annotations
 import numpy as np
 
 from thermogear.geometry import Gear
-from thermogear.luo2020.expansion import base_circle_radial_expansion, flank_expansion_along_line_of_action
+from thermogear.luo2020.thermal.expansion import base_circle_radial_expansion, flank_expansion_along_line_of_action
 
 RELIEF_EXPONENTS = {"linear": 1.0, "parabolic": 2.0}
 

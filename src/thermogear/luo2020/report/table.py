@@ -5,8 +5,8 @@ how thermogear's value is compared with it (:class:`Check`), the argument for th
 thermogear does not reproduce — the known cause (``gap``). The same table feeds the report, ``summary.json``
 (``table_counts`` per kind), the validation tests (one test per row) and ``docs/validation.md``.
 
-The comparison machinery is in :mod:`thermogear.report.paper_checks`, the rows in
-:mod:`thermogear.report.paper_rows`. :func:`paper_reference` hands the commands (``fem``, ``damping``) and the
+The comparison machinery is in :mod:`thermogear.luo2020.report.checks`, the rows in
+:mod:`thermogear.luo2020.report.rows`. :func:`paper_reference` hands the commands (``fem``, ``damping``) and the
 report's figures the paper's numbers they show beside a case's own, read from the rows: no paper number is
 written anywhere else.
 """
@@ -15,10 +15,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from thermogear.report.paper_checks import (KIND_MEANING, KINDS, Absolute, Bounds, Check, Claim, Exact, PaperRow,
-                                            Range, Relative, Verdict, format_value, judge, known_gaps, known_gaps_text,
-                                            table_counts)
-from thermogear.report.paper_rows import paper_rows
+from thermogear.luo2020.report.checks import (KIND_MEANING, KINDS, Absolute, Bounds, Check, Claim, Exact, PaperRow,
+                                              Range, Relative, Verdict, format_value, judge, known_gaps,
+                                              known_gaps_text, table_counts)
+from thermogear.luo2020.report.rows import paper_rows
 
 __all__ = ["Check", "Relative", "Absolute", "Bounds", "Range", "Claim", "Exact", "PaperRow", "PAPER_ROWS", "row",
            "PaperReference", "paper_reference",

@@ -25,7 +25,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from thermogear.experiment.rig_data import CITATION, STATED_TORQUE_NM, measurements_at, rig_speeds_rpm
+from thermogear.luo2020.rig.data import CITATION, STATED_TORQUE_NM, measurements_at, rig_speeds_rpm
 
 RIG_AMBIENT_C = 20.0
 RUN_DURATION_S = 1200.0

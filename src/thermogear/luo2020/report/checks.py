@@ -1,6 +1,6 @@
 """How one row of the paper table is compared and counted: checks, :class:`PaperRow`, :class:`Verdict`, counts.
 
-The rows themselves are in :mod:`thermogear.report.paper_rows`; :mod:`thermogear.report.paper_table` gathers both.
+The rows themselves are in :mod:`thermogear.luo2020.report.rows`; :mod:`thermogear.luo2020.report.table` gathers both.
 
 Every row has one *kind* (:data:`KINDS`):
 

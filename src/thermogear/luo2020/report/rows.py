@@ -11,7 +11,7 @@ Loads and stiffness are per millimetre of face width (N/mm, N/(mm·μm)); the pa
 
 from __future__ import annotations
 
-from thermogear.report.paper_checks import Absolute, Bounds, Claim, Exact, PaperRow, Range, Relative
+from thermogear.luo2020.report.checks import Absolute, Bounds, Claim, Exact, PaperRow, Range, Relative
 
 __all__ = ["paper_rows"]
 

@@ -20,8 +20,8 @@ import numpy as np
 from thermogear.composition import X_TE_PROVIDERS, builtin
 from thermogear.errors import CaseError, ThermogearError
 from thermogear.stiffness.potential_energy import pair_compliance
-from thermogear.luo2020.case_inputs import PaperThermalInputs
-from thermogear.luo2020.stiffness import check_x_te
+from thermogear.luo2020.thermal.case_inputs import PaperThermalInputs
+from thermogear.luo2020.thermal.stiffness import check_x_te
 from thermogear.temperature.source import TemperatureField
 from thermogear.thermal_model_rules import x_te_source
 

@@ -23,9 +23,9 @@ from thermogear import warning_scope
 from thermogear.case import cached_per_case
 from thermogear.stiffness.potential_energy import pair_compliance
 from thermogear.stiffness.table import pair_compliance_table, tooth_compliance_at
-from thermogear.luo2020.calibration import Calibration, calibrate, section_x_te
-from thermogear.luo2020.case_inputs import PaperThermalInputs, load_basis_of
-from thermogear.luo2020.stiffness import (CONTACT_TOLERANCE, ThermalStiffness, check_x_te, thermal_pair_stiffness)
+from thermogear.luo2020.thermal.calibration import Calibration, calibrate, section_x_te
+from thermogear.luo2020.thermal.case_inputs import PaperThermalInputs, load_basis_of
+from thermogear.luo2020.thermal.stiffness import (CONTACT_TOLERANCE, ThermalStiffness, check_x_te, thermal_pair_stiffness)
 from thermogear.temperature.source import TemperatureField
 
 if TYPE_CHECKING:
@@ -64,7 +64,7 @@ class PaperThermalModel:
 
     def resolve_x_te(self, load_basis: str | None = None, temperature: TemperatureField | None = None,
                      normal_load: float | None = None) -> tuple[float, str]:
-        """(X_te, source label) from ``[thermal]`` (:func:`~thermogear.luo2020.calibration.section_x_te`). A
+        """(X_te, source label) from ``[thermal]`` (:func:`~thermogear.luo2020.thermal.calibration.section_x_te`). A
         calibration is solved at ``normal_load`` [N] (default: the operating point's), so a case asked for another
         load keeps its calibration target, exactly as the same case file at that load would. With the model's own
         settings (no option given) the answer is computed once."""

@@ -16,7 +16,7 @@ import numpy as np
 
 from thermogear.errors import ThermogearError
 from thermogear.evaluation import MODELS, Evaluation
-from thermogear.report.paper_table import PAPER_ROWS
+from thermogear.luo2020.report.table import PAPER_ROWS
 
 __all__ = ["ValueUnavailable", "paper_values"]
 
@@ -313,7 +313,7 @@ def paper_values(evaluation: Evaluation) -> dict[str, Any]:
 
     # ---------------------------------------------------------------- experiment (§5.2)
     def experiment():
-        from thermogear.experiment.rig_data import rig_measurements
+        from thermogear.luo2020.rig.data import rig_measurements
         from thermogear.fzg import fzg_load_stage_torque
 
         out = {}

@@ -12,8 +12,8 @@ from thermogear.registry import registered
 from thermogear.geometry import GearPair
 from thermogear.materials import Material
 from thermogear.stiffness.table import pair_stiffness_at
-from thermogear.luo2020.expansion import pair_flank_expansion
-from thermogear.luo2020.stiffness import pair_share_normal_load
+from thermogear.luo2020.thermal.expansion import pair_flank_expansion
+from thermogear.luo2020.thermal.stiffness import pair_share_normal_load
 from thermogear.temperature.source import TemperatureField
 
 

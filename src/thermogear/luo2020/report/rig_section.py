@@ -2,12 +2,12 @@
 paper's case: one *prediction* row per measured temperature (counted in the headline like every other prediction)
 and a section with the rig's assumptions, both starts and the pinion temperature.
 
-The predictions do not depend on the case (the rig's assumptions are fixed: :mod:`thermogear.experiment.
-rig_prediction`), so :func:`start_rig_prediction` runs them in a forked child (:mod:`thermogear.forked`) while the
+The predictions do not depend on the case (the rig's assumptions are fixed: :mod:`thermogear.luo2020.rig.
+prediction`), so :func:`start_rig_prediction` runs them in a forked child (:mod:`thermogear.forked`) while the
 report evaluates the case; :func:`rig_verdicts` and :func:`rig_section` read the child's result.
 
 Which start is counted: the cold start (every run from the ambient) is the assumption stated before any comparison
-(:data:`thermogear.experiment.rig_prediction.RIG_ASSUMPTIONS`); the runs chained in the paper's order are shown
+(:data:`thermogear.luo2020.rig.prediction.RIG_ASSUMPTIONS`); the runs chained in the paper's order are shown
 beside it but not counted, so that the better of two starts is never picked after the fact.
 """
 
@@ -18,7 +18,7 @@ from dataclasses import replace
 
 from thermogear import forked
 from thermogear.evaluation import start_rig_prediction  # noqa: F401  (where the report found it before)
-from thermogear.report.paper_checks import Absolute, PaperRow, Verdict, judge
+from thermogear.luo2020.report.checks import Absolute, PaperRow, Verdict, judge
 
 __all__ = ["RIG_SECTION", "rig_rows", "rig_section", "rig_verdicts", "start_rig_prediction", "with_rig_section"]
 
@@ -58,7 +58,7 @@ def _result(rig: forked.Background) -> tuple[dict | None, str]:
 
 def rig_rows(cold) -> list[PaperRow]:
     """One prediction row per measured temperature of Table 3, the cold-start prediction as thermogear's value."""
-    from thermogear.experiment.rig_prediction import RIG_AMBIENT_C  # noqa: PLC0415
+    from thermogear.luo2020.rig.prediction import RIG_AMBIENT_C  # noqa: PLC0415
 
     rows = []
     for row in cold:
@@ -79,8 +79,8 @@ def rig_verdicts(rig: forked.Background) -> list[Verdict]:
     """The rows of :func:`rig_rows` judged (each 'not computed', with the reason, if the prediction failed)."""
     result, reason = _result(rig)
     if result is None:
-        from thermogear.experiment.rig_data import rig_measurements  # noqa: PLC0415
-        from thermogear.experiment.rig_prediction import RigPrediction  # noqa: PLC0415
+        from thermogear.luo2020.rig.data import rig_measurements  # noqa: PLC0415
+        from thermogear.luo2020.rig.prediction import RigPrediction  # noqa: PLC0415
 
         nan = float("nan")
         placeholders = [RigPrediction(m.speed_rpm, m.minute, "cold", m.temperature_c, nan, nan, nan, nan)
@@ -94,8 +94,8 @@ def rig_verdicts(rig: forked.Background) -> list[Verdict]:
 
 def rig_section(rig: forked.Background) -> str:
     """HTML of the section: assumptions, every run with both starts, the pinion temperature, the warnings."""
-    from thermogear.experiment.rig_data import CITATION  # noqa: PLC0415
-    from thermogear.experiment.rig_prediction import RIG_ASSUMPTIONS  # noqa: PLC0415
+    from thermogear.luo2020.rig.data import CITATION  # noqa: PLC0415
+    from thermogear.luo2020.rig.prediction import RIG_ASSUMPTIONS  # noqa: PLC0415
 
     result, reason = _result(rig)
     head = "<h2 id='rig'>The paper's rig predicted: temperatures of Table 3</h2>"

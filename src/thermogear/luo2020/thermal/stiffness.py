@@ -1,7 +1,7 @@
 """Meshing thermal stiffness of a tooth pair and of single teeth (Luo & Li 2020 Eqs. 13–23).
 
 Pure functions (one equation each) and :class:`ThermalStiffness`; a case's k_T is assembled in
-:mod:`thermogear.luo2020.case_stiffness`.
+:mod:`thermogear.luo2020.thermal.case_stiffness`.
 
 Units: thermogear works in totals over the face width b (stiffness N/m, compliance m/N, load N); the paper
 writes everything per unit face width. Every relation here is homogeneous in b: with k = b·k′ and F_n = b·F_n′,
