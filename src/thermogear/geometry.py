@@ -28,7 +28,8 @@ MINIMUM_TIP_THICKNESS_MODULES = 0.2
 MAXIMUM_BACKLASH_SHARE_OF_BASE_PITCH = 0.1
 
 
-from thermogear.involute import (disc_polar_inertia, equivalent_mass, gamma_from_roll,  # noqa: E402,F401
+from thermogear.dynamics.problems.rigid_pair import RigidPair  # noqa: E402
+from thermogear.involute import (disc_polar_inertia, gamma_from_roll,  # noqa: E402,F401
                                  half_tooth_angle, involute, inverse_involute,
                                  operating_pressure_angle_from_shifts, reference_tooth_thickness,
                                  roll_from_gamma, tooth_thickness_at_radius)
@@ -299,14 +300,19 @@ class GearPair:
         wheel_roll = self.line_of_action_length - np.asarray(roll, dtype=float)
         return wheel_roll / self.wheel.base_radius - self.wheel.half_tooth_angle_at_base
 
-    def equivalent_mass(self, density: float, inertias: tuple[float, float] | None = None) -> float:
-        """Equivalent mass me of Eq. 5 [kg], from the given inertias or from solid discs of the operating
-        pitch radius with the bores, over each gear's face width."""
+    def rigid_pair(self, density: float, inertias: tuple[float, float] | None = None) -> RigidPair:
+        """The pair as two rigid gears on rigid supports (:class:`~thermogear.dynamics.problems.rigid_pair.
+        RigidPair`, the 1-DOF pair's structure): the given polar inertias [kg·m²] or those of solid discs of the
+        operating pitch radius with the bores, over each gear's face width, and the base radii."""
         if inertias is None:
             pitch_1, pitch_2 = self.operating_pitch_radii
             inertias = (disc_polar_inertia(density, pitch_1, self.pinion.bore_radius, self.pinion.face_width),
                         disc_polar_inertia(density, pitch_2, self.wheel.bore_radius, self.wheel.face_width))
-        return equivalent_mass(inertias[0], inertias[1], self.pinion.base_radius, self.wheel.base_radius)
+        return RigidPair(inertias[0], inertias[1], self.pinion.base_radius, self.wheel.base_radius)
+
+    def equivalent_mass(self, density: float, inertias: tuple[float, float] | None = None) -> float:
+        """Equivalent mass me of Eq. 5 [kg]: the mesh mass of :meth:`rigid_pair`."""
+        return self.rigid_pair(density, inertias).mesh_mass
 
     # -------------------------------------------------------------------------------------------- checks
     def check(self) -> None:

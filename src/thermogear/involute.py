@@ -79,9 +79,4 @@ def disc_polar_inertia(density: float, outer_radius: float, bore_radius: float, 
     return density * math.pi * width * (outer_radius**4 - bore_radius**4) / 2.0
 
 
-def equivalent_mass(inertia_1: float, inertia_2: float, base_radius_1: float, base_radius_2: float) -> float:
-    """Equivalent mass of the torsional mesh model me = J1 J2 / (J1 rb2² + J2 rb1²) [kg] (Luo & Li Eq. 5)."""
-    return inertia_1 * inertia_2 / (inertia_1 * base_radius_2**2 + inertia_2 * base_radius_1**2)
-
-
-__all__ = ["involute", "inverse_involute", "reference_tooth_thickness", "half_tooth_angle", "tooth_thickness_at_radius", "operating_pressure_angle_from_shifts", "gamma_from_roll", "roll_from_gamma", "disc_polar_inertia", "equivalent_mass"]
+__all__ = ["involute", "inverse_involute", "reference_tooth_thickness", "half_tooth_angle", "tooth_thickness_at_radius", "operating_pressure_angle_from_shifts", "gamma_from_roll", "roll_from_gamma", "disc_polar_inertia"]

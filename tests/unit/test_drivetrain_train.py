@@ -357,24 +357,21 @@ def test_a_wrong_stage_is_refused_at_load(change, key, words):
 def test_the_rigid_pair_as_a_drivetrain_equals_the_compiled_one_degree_of_freedom_solver(name):
     """Two rigid gears on rigid supports through the drivetrain's route (M, w, torque pair, rigid rotation removed,
     the n-DOF exact periodic solver) give the 1-DOF pair's orbit from its compiled closed-form kernels."""
-    from thermogear.drivetrain.rigid_pair import RigidPair
+    from thermogear.drivetrain.rigid_pair import rigid_pair_system
     from thermogear.dynamics.periodic_orbits.periodic import periodic_steady_state
-    from thermogear.involute import disc_polar_inertia
     from thermogear.mesh.model import MeshModel
 
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         case = load_case(name)
         state = MeshModel(case, "elastic").state(points_per_period=64)
-    pair = case.gear_pair
-    inertias = case.inertias or tuple(
-        disc_polar_inertia(case.material.density, radius, gear.bore_radius, gear.face_width)
-        for gear, radius in zip((pair.pinion, pair.wheel), pair.operating_pitch_radii))
-    rigid = RigidPair(*inertias, pair.pinion.base_radius, pair.wheel.base_radius)
-    assert rigid.mesh_mass == pytest.approx(state.mass, rel=1e-12)  # m_e of Eq. 5 from the matrices
+    rigid = case.gear_pair.rigid_pair(case.material.density, case.inertias)  # the structure the 1-DOF pair is
+    assert rigid.mesh_mass == state.mass  # the scalar problem's m_e is the structure's, exactly
+    w = rigid.mesh_vector()
+    assert 1.0 / (w @ np.linalg.solve(rigid.mass_matrix(), w)) == pytest.approx(state.mass, rel=1e-14)
     assert rigid.mesh_structure().is_scalar_mesh  # the compiled route
     problem = state.problem()
-    system, reduction = rigid.periodic_system(problem, state.normal_load)
+    system, reduction = rigid_pair_system(rigid, problem, state.normal_load)
     general = periodic_response(system, 4)
     delta = reduction.expand(general.displacement.T).T @ rigid.mesh_vector()
     compiled = periodic_steady_state(problem, samples_per_interval=4)

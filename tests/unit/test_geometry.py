@@ -10,7 +10,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from thermogear.errors import CaseError
-from thermogear.geometry import (Gear, GearPair, disc_polar_inertia, equivalent_mass, involute, inverse_involute,
+from thermogear.geometry import (Gear, GearPair, RigidPair, disc_polar_inertia, involute, inverse_involute,
                                  operating_pressure_angle_from_shifts)
 
 ALPHA = math.radians(20.0)
@@ -79,8 +79,11 @@ def test_tooth_thickness_on_reference_circle():
 def test_equivalent_mass_of_equal_discs():
     inertia = disc_polar_inertia(7850.0, 0.05, 0.0, 0.02)
     assert inertia == pytest.approx(7850 * math.pi * 0.02 * 0.05**4 / 2)
-    # identical gears: me = J / (2 rb²)
-    assert equivalent_mass(inertia, inertia, 0.04, 0.04) == pytest.approx(inertia / (2 * 0.04**2))
+    # identical gears: me = J / (2 rb²); and 1/(wᵀM⁻¹w) of the pair's matrices for unequal ones
+    assert RigidPair(inertia, inertia, 0.04, 0.04).mesh_mass == pytest.approx(inertia / (2 * 0.04**2), rel=1e-15)
+    rigid = RigidPair(inertia, 3.0 * inertia, 0.04, 0.07)
+    w = rigid.mesh_vector()
+    assert rigid.mesh_mass == pytest.approx(1.0 / (w @ np.linalg.solve(rigid.mass_matrix(), w)), rel=1e-14)
 
 
 def test_one_to_one_pair_is_symmetric_about_pitch_point():
