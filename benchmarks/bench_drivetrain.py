@@ -101,8 +101,8 @@ def _figure(name: str, timed: dict, unit_scale: float, unit: str) -> dict:
 
 def _drivetrain(elements: int, pinion_radius: float = 0.0381, wheel_radius: float = 0.0493):
     """Two 0.2 m steel shafts (d = 40 mm), gear at mid-span, two bearings each (2e8 N/m, 2 kN·s/m)."""
-    from thermogear.drivetrain import (Bearing, CrossSection, Drivetrain, GearMesh, Material, NodeLocation,
-                                       RigidDisk, Shaft, ShaftSegment)
+    from thermogear.drivetrain import (Bearing, CrossSection, Drivetrain, GearMesh, Material, NodeLocation, RigidDisk,
+                                       Shaft, ShaftSegment)
 
     steel = Material(youngs_modulus=206e9, density=7850.0, poisson_ratio=0.3)
     shafts = tuple(Shaft(name, (ShaftSegment(0.2, CrossSection(0.04), steel),), 0.2 / elements * (1 + 1e-12),
@@ -120,7 +120,7 @@ def _square_wave_state(speed_rpm: float, intervals: int = 3):
     """A two-pair square-wave mesh period (contact ratio 1.6 on 3 pieces; on ``intervals`` equal intervals the
     second pair is in contact over the first 60 %), as a mesh model would hand it over."""
     from thermogear.mesh.state import MeshState
-    from thermogear.mesh_cycle import MeshGrid
+    from thermogear.geometry.mesh_cycle import MeshGrid
 
     period = 60.0 / (20 * speed_rpm)
     if intervals == 3:

@@ -35,7 +35,7 @@ from thermogear.helical.geometry import HelicalPair
 from thermogear.helical.slices import helical_mesh_stiffness
 from thermogear.materials import Material
 from thermogear.mesh import helical_model
-from thermogear.mesh_cycle import MeshCycle
+from thermogear.geometry.mesh_cycle import MeshCycle
 from thermogear.stiffness import scaled_compliance, table
 from thermogear.stiffness.table import pair_stiffness_at
 from timing import wall_times

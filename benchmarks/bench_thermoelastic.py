@@ -41,7 +41,7 @@ def _median_time(function, repeat: int) -> float:
 
 def main(case_name: str = "fzg_type_c", repeat: int = 200) -> dict:
     from thermogear.case import load_case
-    from thermogear.mesh_cycle import MeshCycle
+    from thermogear.geometry.mesh_cycle import MeshCycle
     from thermogear.stiffness.table import pair_stiffness_at
     from thermogear.thermoelastic.load_sharing import loaded_transmission_error
     from thermogear.thermoelastic.mesh import ThermoelasticMesh

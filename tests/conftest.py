@@ -45,7 +45,7 @@ def mesh_stiffness_of(pair, material, speed_rpm: float, count: int):
     for the stiffness tests of pairs that exist only as GearPair objects."""
     import numpy as np
 
-    from thermogear.mesh_cycle import MeshCycle
+    from thermogear.geometry.mesh_cycle import MeshCycle
     from thermogear.stiffness.table import pair_stiffness_at
 
     grid = MeshCycle(pair, speed_rpm).grid(count)

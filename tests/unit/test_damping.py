@@ -14,11 +14,11 @@ import numpy as np
 import pytest
 
 from thermogear.friction.damping import (contact_region_means, coulomb_equivalent_damping, friction_damping,
-                                mesh_circular_frequency, mesh_damping)
+                                         mesh_circular_frequency, mesh_damping)
 from thermogear.errors import CaseError, ExtrapolationWarning
 from thermogear.lubricant import lubricant_from_case
 from thermogear.mesh.model import MeshModel
-from thermogear.mesh_cycle import load_shares
+from thermogear.geometry.mesh_cycle import load_shares
 
 
 def pair_damping(case, roll, model):

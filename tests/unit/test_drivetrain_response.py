@@ -13,7 +13,7 @@ from thermogear.drivetrain import Material
 from thermogear.drivetrain.response import drivetrain_periodic_response
 from thermogear.dynamics.periodic_orbits.periodic import periodic_steady_state
 from thermogear.mesh.state import MeshState
-from thermogear.mesh_cycle import MeshGrid
+from thermogear.geometry.mesh_cycle import MeshGrid
 
 R_B1, R_B2 = 0.0381, 0.0493
 SHAFT_POLAR = 7810.0 * math.pi * 0.04**4 / 32 * 0.2  # ρ J_p L of one 0.2 m, d = 40 mm shaft [kg·m²]

@@ -138,7 +138,7 @@ def test_the_drivetrain_system_is_a_mesh_problem_in_a_structure():
 
     from thermogear.drivetrain.response import drivetrain_periodic_system
     from thermogear.mesh.state import MeshState
-    from thermogear.mesh_cycle import MeshGrid
+    from thermogear.geometry.mesh_cycle import MeshGrid
 
     period = 60.0 / (20 * 1500.0)
     nodes = np.array([0.0, 0.6 * period, period])

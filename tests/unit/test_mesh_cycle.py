@@ -10,7 +10,7 @@ import pytest
 
 from thermogear.geometry import Gear, GearPair
 from thermogear.materials import Material
-from thermogear.mesh_cycle import MeshCycle, load_shares
+from thermogear.geometry.mesh_cycle import MeshCycle, load_shares
 
 
 def high_contact_ratio_pair() -> GearPair:

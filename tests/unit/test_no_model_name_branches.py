@@ -167,14 +167,14 @@ def _choice_registries() -> dict:
     from thermogear.fem.tooth_heat import BORE_CONDITIONS
     from thermogear.friction.models import FRICTION_MODELS
     from thermogear.gearbox.bearing_entries import BEARING_TYPES
-    from thermogear.lubrication_methods import LUBRICATION_METHODS
+    from thermogear.lubricant.methods import LUBRICATION_METHODS
     from thermogear.luo2020.thermal.case_inputs import LOAD_BASES
     from thermogear.luo2020.thermal.expansion import EXPANSION_FORMS
     from thermogear.sweep.evaluation_methods import EVALUATION_METHODS
     from thermogear.sweep.load_held import HOLDS
 
     return {
-        "lubrication method ([gearbox.oil] lubrication)": ("lubrication_methods.py", LUBRICATION_METHODS),
+        "lubrication method ([gearbox.oil] lubrication)": ("lubricant/methods.py", LUBRICATION_METHODS),
         "warm-up model (warmup --model)": ("cli/warmup.py", WARMUP_MODELS),
         "evaluation method of a study (sweep --method)": ("sweep/evaluation_methods.py", EVALUATION_METHODS),
         "mesh-damping rule ([damping] rule)": ("friction/damping.py", DAMPING_RULES),
@@ -240,7 +240,7 @@ def test_the_schema_accepts_exactly_the_registered_choices():
     import typing
 
     from thermogear.friction.damping import DAMPING_RULES
-    from thermogear.lubrication_methods import LUBRICATION_METHODS
+    from thermogear.lubricant.methods import LUBRICATION_METHODS
     from thermogear.luo2020.thermal.expansion import EXPANSION_FORMS
     from thermogear.schema.dynamics import DampingSection
     from thermogear.schema.gearbox import GearboxOilSection
@@ -288,7 +288,7 @@ def test_a_bearing_entry_of_each_type_is_that_type():
 
 def test_a_name_outside_a_registry_is_refused_naming_the_key_and_the_registered_names():
     from thermogear.errors import CaseError
-    from thermogear.lubrication_methods import lubrication_method
+    from thermogear.lubricant.methods import lubrication_method
 
     assert lubrication_method("injection").oil_jet and lubrication_method("dip").wheel_dipped
     with pytest.raises(CaseError) as caught:

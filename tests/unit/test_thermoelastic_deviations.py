@@ -10,7 +10,7 @@ import pytest
 
 from thermogear.case import case_from_document, load_case
 from thermogear.geometry import Gear, GearPair
-from thermogear.mesh_cycle import load_shares
+from thermogear.geometry.mesh_cycle import load_shares
 from thermogear.thermoelastic.deviations import base_pitch_deviation, flank_distortion, tip_relief
 from thermogear.thermoelastic.load_sharing import loaded_transmission_error
 from thermogear.thermoelastic.mesh import ThermoelasticMesh

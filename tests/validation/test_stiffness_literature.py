@@ -24,7 +24,7 @@ import pytest
 
 from thermogear.geometry import Gear, GearPair
 from thermogear.materials import Material
-from thermogear.mesh_cycle import MeshCycle
+from thermogear.geometry.mesh_cycle import MeshCycle
 from thermogear.stiffness.iso6336 import iso6336_stiffness
 from thermogear.stiffness.potential_energy import pair_compliance
 

@@ -35,17 +35,15 @@ from thermogear.materials import Material
 from thermogear.operating import OperatingPoint
 from thermogear.schema.base import StrictTypeError
 from thermogear.schema import (CaseFile, DampingSection, DrivetrainSection, DynamicsSection, FemSection, GearboxSection,
-                               GearsSection, HousingSection, LubricantSection, MaterialSection,
-                               TemperatureSection,
+                               GearsSection, HousingSection, LubricantSection, MaterialSection, TemperatureSection,
                                ThermalSection)
 from thermogear.schema.drivetrain import check_drivetrain_fits_gears
 from thermogear.schema.drivetrain_topology import check_drivetrain_train
-from thermogear.temperature.field import (check_temperatures, default_bulk_temperature,
-                                         temperature_field_from_section)
+from thermogear.temperature.field import (check_temperatures, default_bulk_temperature, temperature_field_from_section)
 from thermogear.thermal_model_rules import thermal_model_rules, x_te_source
 from thermogear.text_files import is_existing_file, path_exists, read_user_text
 from thermogear.thermoelastic.inputs import check_thermoelastic_inputs
-from thermogear.involute import disc_polar_inertia
+from thermogear.geometry.involute import disc_polar_inertia
 
 
 @dataclass(frozen=True)

@@ -27,9 +27,9 @@ from thermogear.gearbox.bearing_entries import drivetrain_mounted_bearings, roll
 from thermogear.gearbox.shaft_conduction import drivetrain_shaft_spans
 from thermogear.gearbox.injection import OilJet
 from thermogear.friction.models import friction_law
-from thermogear.lubrication_methods import lubrication_method
-from thermogear.gearbox.description import (GearboxDescription, GearboxOperatingPoint, Housing, LipSeal,
-                                            MountedBearing, OilConditioning)
+from thermogear.lubricant.methods import lubrication_method
+from thermogear.gearbox.description import (GearboxDescription, GearboxOperatingPoint, Housing, LipSeal, MountedBearing,
+                                            OilConditioning)
 from thermogear.gearbox.input_checks import check_gearbox_inputs, housing_box, oil_floor_and_level
 from thermogear.gearbox.network import NoSteadyStateError
 from thermogear.temperature.limits import MATERIAL_MAXIMUM_C

@@ -23,7 +23,7 @@ import warnings
 from typing import TYPE_CHECKING
 
 from thermogear.errors import CaseError, ModelAssumptionWarning
-from thermogear.lubrication_methods import lubrication_method
+from thermogear.lubricant.methods import lubrication_method
 from thermogear.temperature.kinds import temperature_source
 
 if TYPE_CHECKING:

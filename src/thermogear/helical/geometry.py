@@ -21,7 +21,7 @@ from dataclasses import dataclass, replace
 
 from thermogear.errors import CaseError
 from thermogear.geometry import Gear, GearPair
-from thermogear.involute import operating_pressure_angle_from_shifts
+from thermogear.geometry.involute import operating_pressure_angle_from_shifts
 
 __all__ = ["HelicalPair", "RIGHT_HAND", "LEFT_HAND", "transverse_pressure_angle", "base_helix_angle"]
 

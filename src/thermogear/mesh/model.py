@@ -19,8 +19,8 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from thermogear.friction.damping import (PairDamping, friction_damping_exponents,
-                                friction_pair_damping, mesh_circular_frequency, mesh_damping)
+from thermogear.friction.damping import (PairDamping, friction_damping_exponents, friction_pair_damping,
+                                         mesh_circular_frequency, mesh_damping)
 from thermogear.errors import CaseError
 from thermogear.friction.models import FrictionLaw, friction_law
 from thermogear.lubricant import Lubricant, lubricant_from_case
@@ -29,7 +29,7 @@ from thermogear.mesh.model_names import MODELS, Model
 from thermogear.mesh.pair_models import PairModelBase, check_model, pair_model_class
 from thermogear.mesh.state import MeshState
 from thermogear.mesh.table_file import mesh_table_of
-from thermogear.mesh_cycle import MeshCycle, MeshGrid, load_share_at, load_shares
+from thermogear.geometry.mesh_cycle import MeshCycle, MeshGrid, load_share_at, load_shares
 from thermogear.temperature.kinds import temperature_source
 from thermogear.temperature.source import TemperatureField
 from thermogear.thermal_model_rules import x_te_source

@@ -10,7 +10,7 @@ import numpy as np
 from thermogear.dynamics.problems.backlash_problem import BacklashMeshProblem
 from thermogear.dynamics.problems.problem import MeshDynamicsProblem
 from thermogear.errors import CaseError
-from thermogear.mesh_cycle import MeshCycle, MeshGrid
+from thermogear.geometry.mesh_cycle import MeshCycle, MeshGrid
 
 
 @dataclass(frozen=True, eq=False)

@@ -41,7 +41,7 @@ from pydantic import Field, model_validator
 
 from thermogear.errors import CaseError
 from thermogear.schema.base import Section
-from thermogear.lubrication_methods import lubrication_method
+from thermogear.lubricant.methods import lubrication_method
 from thermogear.schema.friction_inputs import check_friction_inputs
 from thermogear.schema.bearing_loss import SkfBearingData
 

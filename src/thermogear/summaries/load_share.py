@@ -2,7 +2,7 @@
 
 Pairs in mesh together act as springs in parallel (Luo & Li (2020) Sect. 2.3; ISO 6336-1 load sharing of an
 unmodified mesh): a pair's share of the static load is its stiffness over the sum of the stiffnesses of the pairs
-in mesh with it (:func:`thermogear.mesh_cycle.load_share_at`), with each model's own pair stiffness
+in mesh with it (:func:`thermogear.geometry.mesh_cycle.load_share_at`), with each model's own pair stiffness
 (:meth:`thermogear.mesh.model.MeshModel.pair_stiffness_at`).
 """
 
@@ -11,7 +11,7 @@ from __future__ import annotations
 import numpy as np
 
 from thermogear.mesh.model import MeshModel
-from thermogear.mesh_cycle import load_share_at
+from thermogear.geometry.mesh_cycle import load_share_at
 
 __all__ = ["pair_load_share_at_points"]
 

@@ -18,7 +18,7 @@ from thermogear.temperature.kinds import temperature_source
 from thermogear.case import cached_per_case
 from thermogear.geometry import GearPair
 from thermogear.materials import Material
-from thermogear.mesh_cycle import MeshCycle, MeshGrid
+from thermogear.geometry.mesh_cycle import MeshCycle, MeshGrid
 from thermogear.operating import OperatingPoint
 from thermogear.stiffness import scaled_compliance
 from thermogear.stiffness import table as stiffness_table

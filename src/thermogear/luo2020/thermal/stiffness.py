@@ -23,7 +23,7 @@ from typing import Any
 import numpy as np
 
 from thermogear.errors import CaseError, ModelAssumptionWarning, ModelLimitError
-from thermogear.mesh_cycle import load_share_at
+from thermogear.geometry.mesh_cycle import load_share_at
 
 #: Tolerance on roll distances when deciding that a neighbouring pair is inside [A, E] [m].
 CONTACT_TOLERANCE = 1e-12
@@ -166,7 +166,7 @@ def pair_share_normal_load(external_load, roll, stiffness_at, path_start, path_e
     """Normal load F_n [N] of the pair at roll distance ``roll`` [m] when the pairs in contact share the external
     load ``external_load`` [N] in proportion to their elastic stiffness (pairs in parallel, equal deflection):
     F_n = w·k_e(roll)/Σ_j k_e(roll + j·p_b), over the pairs j with roll + j·p_b in [A, E]
-    (:func:`thermogear.mesh_cycle.load_share_at`). ``stiffness_at(roll) -> k_e`` [N/m] along the path."""
+    (:func:`thermogear.geometry.mesh_cycle.load_share_at`). ``stiffness_at(roll) -> k_e`` [N/m] along the path."""
     share, _ = load_share_at(roll, stiffness_at, path_start, path_end, base_pitch)
     return external_load * share
 

@@ -5,7 +5,7 @@ circle (ISO 21771). Point lettering A–E is ISO 6336 usage: A start of contact 
 single contact on the pinion, C pitch point, D highest point of single contact, E end of contact (pinion tip).
 
 Sources: ISO 21771 (gear geometry), Luo & Li (2020) Eqs. 8, 24, 25; the involute relations themselves are in
-:mod:`thermogear.involute`.
+:mod:`thermogear.geometry.involute`.
 """
 
 from __future__ import annotations
@@ -29,10 +29,10 @@ MAXIMUM_BACKLASH_SHARE_OF_BASE_PITCH = 0.1
 
 
 from thermogear.dynamics.problems.rigid_pair import RigidPair  # noqa: E402
-from thermogear.involute import (disc_polar_inertia, gamma_from_roll,  # noqa: E402,F401
-                                 half_tooth_angle, involute, inverse_involute,
-                                 operating_pressure_angle_from_shifts, reference_tooth_thickness,
-                                 roll_from_gamma, tooth_thickness_at_radius)
+from thermogear.geometry.involute import (disc_polar_inertia, gamma_from_roll,  # noqa: E402,F401
+                                          half_tooth_angle, involute, inverse_involute,
+                                          operating_pressure_angle_from_shifts, reference_tooth_thickness,
+                                          roll_from_gamma, tooth_thickness_at_radius)
 
 
 # --------------------------------------------------------------------------------------------- components
