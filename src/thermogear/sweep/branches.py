@@ -32,7 +32,8 @@ from thermogear.dynamics.backlash.backlash_continuation import branch_point
 from thermogear.dynamics.problems.continuation_directions import STUDY_DIRECTIONS, direction_named, study_directions
 from thermogear.errors import CaseError, JammingError
 from thermogear.mesh.model import MeshModel
-from thermogear.sweep.branch_store import BRANCH_VARIABLES, branch_layout, branch_region, orbit_arrays
+from thermogear.sweep.branch_store import (BRANCH_POINT, BRANCH_VARIABLES, ORBIT_SEARCH, TASK_KINDS, branch_layout,
+                                           branch_region, orbit_arrays)
 from thermogear.sweep.hysteresis import hysteresis_bands
 from thermogear.sweep.load_held import study_load_held
 from thermogear.sweep.schedulers import SERIAL, THREADS, Scheduler
@@ -190,7 +191,7 @@ def execute_recorded(shared: tuple, task, *previous) -> tuple[Any, list]:
     multi-start search (:func:`_search_point`), with its warnings recorded (in the thread's own scope on a thread)
     as ``(text, category, file, line)``."""
     with warning_scope.recorded() as caught:
-        if task[0] == "point":
+        if TASK_KINDS[task[0]].follows_branch:
             result = _branch_point(shared, task, previous[0][0] if previous else None)
         else:
             result = _search_point(shared, task)
@@ -212,14 +213,14 @@ def plan_branches(study, directions: tuple[str, ...], multistart: int) -> tuple[
             for direction_index, way in enumerate(directions):
                 previous = None
                 for speed_index in direction_named(way).order(count):
-                    tasks.append(("point", rest, model_index, direction_index, speed_index))
+                    tasks.append((BRANCH_POINT.name, rest, model_index, direction_index, speed_index))
                     follows.append(previous)
                     previous = len(tasks) - 1
     if multistart:  # one task per point and model: a few speeds searched on every worker
         for rest in groups:
             for model_index in range(len(study.models)):
                 for speed_index in range(count):
-                    tasks.append(("orbits", rest, model_index, speed_index))
+                    tasks.append((ORBIT_SEARCH.name, rest, model_index, speed_index))
                     follows.append(None)
     return tasks, follows
 
@@ -286,7 +287,7 @@ def branch_study(study, direction: str = "both", progress=None, workers: int | N
         result, messages = outcome
         caught.extend(messages)
         region = branch_region(study, task, speed_axis)
-        if task[0] == "orbits":
+        if not TASK_KINDS[task[0]].follows_branch:  # a point's orbit search
             censuses[task] = result
             store.write(number, region, orbit_arrays(result, int(multistart)))
         else:
