@@ -39,11 +39,13 @@ def catch_warnings_in_workers(monkeypatch):
 
 
 def test_local_default_is_threads_on_the_fast_path_and_processes_otherwise(study, luo2019):
-    assert engine.local_scheduler(study, "batch") == "threads"
-    assert engine.local_scheduler(study, "simulation") == "processes"  # pure Python per point: processes
-    assert engine.local_scheduler(study, "batch", dashboard=":0") == "processes"  # the Dask cluster serves it
+    from thermogear.sweep.schedulers import PROCESSES, THREADS
+
+    assert engine.local_scheduler(study, "batch") is THREADS
+    assert engine.local_scheduler(study, "simulation") is PROCESSES  # pure Python per point: processes
+    assert engine.local_scheduler(study, "batch", dashboard=":0") is PROCESSES  # the Dask cluster serves it
     nonlinear = Study.define(luo2019.with_changes(**{"dynamics.mesh": "nonlinear"}), GRID, chunk_points=20)
-    assert engine.local_scheduler(nonlinear, "batch") == "processes"  # no fast path: one point at a time
+    assert engine.local_scheduler(nonlinear, "batch") is PROCESSES  # no fast path: one point at a time
 
 
 def test_threads_give_the_serial_dataset_and_its_warnings(study, tmp_path, catch_warnings_in_workers):

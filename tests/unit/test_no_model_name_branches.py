@@ -172,6 +172,8 @@ def _choice_registries() -> dict:
     from thermogear.luo2020.thermal.expansion import EXPANSION_FORMS
     from thermogear.sweep.evaluation_methods import EVALUATION_METHODS
     from thermogear.sweep.load_held import HOLDS
+    from thermogear.sweep.schedulers import LOCAL_DEFAULT_NAMES, SCHEDULERS
+    from thermogear.dynamics.problems.continuation_directions import DIRECTIONS, STUDY_DIRECTIONS
 
     return {
         "lubrication method ([gearbox.oil] lubrication)": ("lubricant/methods.py", LUBRICATION_METHODS),
@@ -189,6 +191,10 @@ def _choice_registries() -> dict:
         "load a speed sweep holds (sweep --hold)": ("sweep/load_held.py", HOLDS),
         "kind of a train's end ([drivetrain.driving] kind)": ("drivetrain_choices.py", END_KINDS),
         "pinion's turning sense ([drivetrain] pinion_rotation)": ("drivetrain_choices.py", ROTATIONS),
+        "scheduler of a study (--scheduler)": ("sweep/schedulers.py",
+                                               (*SCHEDULERS, *(name for name in LOCAL_DEFAULT_NAMES if name))),
+        "direction of a branch (--direction)": ("dynamics/problems/continuation_directions.py",
+                                                (*DIRECTIONS, *STUDY_DIRECTIONS)),
     }
 
 
@@ -199,7 +205,8 @@ CHOICES = ("lubrication method ([gearbox.oil] lubrication)", "warm-up model (war
            "plane assumption of the FE model ([fem] plane)", "bore condition of the FE heat model ([fem] bore)",
            "bearing type of a loss entry (type)", "mesh damping in flight ([dynamics] damping_in_flight)",
            "load a speed sweep holds (sweep --hold)", "kind of a train's end ([drivetrain.driving] kind)",
-           "pinion's turning sense ([drivetrain] pinion_rotation)")
+           "pinion's turning sense ([drivetrain] pinion_rotation)", "scheduler of a study (--scheduler)",
+           "direction of a branch (--direction)")
 
 
 @pytest.mark.parametrize("choice", CHOICES)
@@ -219,10 +226,9 @@ def test_every_choice_is_compared_only_in_its_registry(choice):
     assert {path: len(found) for path, found in hits.items()} == CHOICES_KNOWN.get(choice, {}), hits
 
 
-#: Comparisons left on purpose, with their reason: the schema checks the keys of the ``"constant"`` friction law
-#: (its coefficient required, its lubricant factor refused) by name, because it sits below the friction laws' layer
-#: (:mod:`thermogear.friction.models` reads the lubricant model, which reads the case: the layers contract).
-CHOICES_KNOWN = {"friction law (friction_model)": {"schema/friction_inputs.py": 3}}
+#: Comparisons left on purpose, with their reason. None now: the schema checks the keys of a friction law by what
+#: the law declares in :mod:`thermogear.friction_choices` (below the schema), not by its name.
+CHOICES_KNOWN: dict[str, dict[str, int]] = {}
 
 
 def test_the_choice_scan_finds_the_forms_the_package_held():
@@ -230,7 +236,7 @@ def test_the_choice_scan_finds_the_forms_the_package_held():
               'if model == "gearbox":\n    pass\n'
               'flag = subject.backlash and method == "batch"\n'
               'show = summary.rule == "paper"\n'
-              'if model != "constant":\n    pass\n'  # the schema's, left with its reason (CHOICES_KNOWN)
+              'if model != "constant":\n    pass\n'  # the schema's before issue 33's friction declaration
               'jet = lubrication_method(section.oil.lubrication).oil_jet\n')
     names = frozenset().union(*(frozenset(names) for _, names in _choice_registries().values()))
     assert sorted(int(hit.split(":")[0]) for hit in model_name_branches(source, names, frozenset())) == [1, 2, 4, 5, 6]
@@ -294,3 +300,65 @@ def test_a_name_outside_a_registry_is_refused_naming_the_key_and_the_registered_
     with pytest.raises(CaseError) as caught:
         lubrication_method("mist")
     assert caught.value.key == "gearbox.oil.lubrication" and "dip | injection" in str(caught.value)
+
+
+def test_the_command_line_offers_exactly_the_registered_schedulers_and_directions():
+    # the --scheduler and --direction help texts are written from the registries, so they list every name and no
+    # other (a name in the help that the registry does not resolve would be a promise the command breaks)
+    import inspect
+    import re
+
+    from thermogear.cli.gearbox import gearbox
+    from thermogear.cli.sweep import sweep
+    from thermogear.dynamics.problems.continuation_directions import STUDY_DIRECTIONS
+    from thermogear.sweep.schedulers import SCHEDULERS
+
+    def help_of(command, name: str) -> str:
+        return inspect.signature(command).parameters[name].default.help
+
+    for command in (sweep, gearbox):
+        listed = re.match(r"([a-z]+(?: \| [a-z]+)*), or ", help_of(command, "scheduler")).group(1)
+        assert listed.split(" | ") == list(SCHEDULERS), command
+    listed = re.search(r"speed ([a-z]+(?: \| [a-z]+)*) \(default", help_of(sweep, "direction")).group(1)
+    assert listed.split(" | ") == list(STUDY_DIRECTIONS)
+
+
+def test_the_friction_declaration_names_every_law_and_says_what_each_law_does():
+    # the schema reads FRICTION_INPUTS (below it), the laws FRICTION_MODELS (above it): the same names, in order, and
+    # each declared fact is what the law does with the key
+    import typing
+
+    from thermogear.friction.models import FRICTION_MODELS, PitchContact
+    from thermogear.friction_choices import FRICTION_INPUTS
+    from thermogear.schema.dynamics import DampingSection
+    from thermogear.schema.gearbox import GearboxSection
+
+    assert tuple(FRICTION_INPUTS) == tuple(FRICTION_MODELS)
+    for section in (GearboxSection, DampingSection):
+        assert set(typing.get_args(section.model_fields["friction_model"].annotation)) == set(FRICTION_INPUTS)
+    contact = dict(unit_load=300e3, roughness=0.5e-6, viscosity=0.02, sum_velocity=10.0, relative_radius=0.01)
+    for name, law in FRICTION_MODELS.items():
+        assert law.inputs is FRICTION_INPUTS[name]
+        plain, doubled = (law.coefficient(PitchContact(**contact, lubricant_factor=factor), 0.05, warn=False)
+                          for factor in (1.0, 2.0))
+        assert (doubled != plain) == law.inputs.takes_lubricant_factor, name  # X_L acts exactly where declared
+        given = law.coefficient(PitchContact(**contact, lubricant_factor=1.0), 0.07, warn=False)
+        assert (given == 0.07) == law.inputs.takes_coefficient, name  # the given μ is the result exactly there
+        if law.inputs.takes_coefficient:
+            with pytest.raises(Exception):
+                law.coefficient(PitchContact(**contact, lubricant_factor=1.0), None, warn=False)
+
+
+@pytest.mark.parametrize("section", ["gearbox", "damping"])
+def test_the_friction_keys_are_checked_by_what_the_law_declares(section):
+    from thermogear.errors import CaseError
+    from thermogear.schema.friction_inputs import check_friction_inputs
+
+    check_friction_inputs(section, "constant", 0.05, None)
+    check_friction_inputs(section, "schlenk", None, 0.8)
+    for model, coefficient, factor, key in (("constant", None, None, "friction_coefficient"),
+                                            ("paper", 0.05, None, "friction_coefficient"),
+                                            ("constant", 0.05, 0.8, "lubricant_factor")):
+        with pytest.raises(CaseError) as caught:
+            check_friction_inputs(section, model, coefficient, factor)
+        assert caught.value.key == f"{section}.{key}"

@@ -58,3 +58,23 @@ def test_very_low_and_high_speeds_equal_one_simulation_per_point():
     study = Study.define(load_case("luo2019"), ["speed_rpm=20,300,20000"], model="both", chunk_points=64)
     fast = assert_fast_path_equals_simulation(study)
     assert np.all(fast["stable"] == 1), "unstable points would leave the comparison to NaN"
+
+
+def test_the_kernel_compiles_the_metric_formulas_the_python_path_calls():
+    # one definition (issue 33): the kernel's load and DTE statistics are the functions of metric_formulas, compiled
+    from thermogear.dynamics.periodic_orbits import periodic_batch_metrics as kernel
+    from thermogear.dynamics.results import metric_formulas
+    from thermogear.dynamics.results.spectra import time_mean_and_rms
+
+    assert kernel._mesh_load.py_func is metric_formulas.mesh_load
+    assert kernel._mean_and_rms.py_func is metric_formulas.mean_and_rms
+    # the kernel's one pass (moments about the first sample) and the Python path's two passes (about the mean) give
+    # one mean and RMS; a signal far from zero checks that the shift keeps the cancellation small
+    time = np.linspace(0.0, 1e-3, 801)
+    signal = 3e-5 + 2e-6 * np.sin(2e3 * np.pi * time) + 5e-7 * np.cos(6e3 * np.pi * time)
+    shifted = signal - signal[0]
+    one_pass = kernel._mean_and_rms(signal[0], np.trapezoid(shifted, time), np.trapezoid(shifted**2, time), 1e-3)
+    two_pass = time_mean_and_rms(time, signal)
+    assert one_pass == pytest.approx(two_pass, rel=1e-12)
+    assert two_pass[1] == pytest.approx(np.sqrt((2e-6**2 + 5e-7**2) / 2.0), rel=1e-6)  # the analytic RMS
+    assert kernel._mesh_load(2.0, 3.0, 0.5, -4.0) == metric_formulas.mesh_load(2.0, 3.0, 0.5, -4.0) == 4.0

@@ -10,6 +10,7 @@ from rich.table import Table
 
 from thermogear.cli.app import app, console, error_console, print_json
 from thermogear.errors import CaseError
+from thermogear.sweep.schedulers import scheduler_help
 
 
 @app.command()
@@ -26,7 +27,7 @@ def gearbox(case: str = typer.Argument(..., metavar="CASE", help="built-in param
                                                                       "thermogear wrote"),
             workers: int | None = typer.Option(None, "--workers", min=1, help="local worker processes that solve "
                                                                               "the points (default: serial)"),
-            scheduler: str | None = typer.Option(None, "--scheduler", help="serial | threads | processes, or a "
+            scheduler: str | None = typer.Option(None, "--scheduler", help=f"{scheduler_help()}, or a "
                                                  "dask.distributed scheduler address (default: serial, processes "
                                                  "with --workers)"),
             resume: bool = typer.Option(False, "--resume", help="continue an interrupted grid stored at --out"),
@@ -64,11 +65,11 @@ def gearbox(case: str = typer.Argument(..., metavar="CASE", help="built-in param
                         f"{run.kept} kept)", highlight=False)
 
 
-def _scheduler(scheduler: str | None, workers: int | None) -> str:
+def _scheduler(named: str | None, workers: int | None):
     """The grid's scheduler: the one named, else local worker processes where --workers is given, else serial."""
-    if scheduler not in (None, "", "local"):
-        return scheduler
-    return "processes" if workers is not None else "serial"
+    from thermogear.sweep.schedulers import PROCESSES, SERIAL, scheduler  # noqa: PLC0415
+
+    return scheduler(named, default=PROCESSES if workers is not None else SERIAL)
 
 
 def _steady_table(case_name: str, speeds: str | None, torques: str | None, as_json: bool, options: dict):

@@ -256,7 +256,7 @@ def headline_line(results) -> str:
 def _load_held_line(operating_point) -> str:
     """``load held: constant torque|power`` with where it comes from (the same words as the sweep's)."""
     held = operating_point.load_held
-    source = "the case gives power_kw" if held == "constant power" else "the case gives the torque"
+    source = "the case gives power_kw" if operating_point.constant_power else "the case gives the torque"
     return f"load held: {held} ({source})"
 
 

@@ -10,10 +10,14 @@ import typer
 from thermogear.cli.app import app, console, error_console, print_json
 from thermogear.cli.console import print_warning
 from thermogear.cli.sweep_summary import load_held_summary, print_sweep_summary, response_summary
+from thermogear.dynamics.problems.continuation_directions import (DEFAULT_STUDY_DIRECTION, STUDY_DIRECTIONS,
+                                                                   study_directions)
 from thermogear.dynamics.problems.mesh_laws import mesh_law
 from thermogear.errors import CaseError
 from thermogear.sweep.evaluation_methods import is_batched
 from thermogear.sweep.executor import check_scheduler_address
+from thermogear.sweep.schedulers import PROCESSES, check_dashboard, scheduler_help
+from thermogear.sweep.schedulers import scheduler as scheduler_named
 
 
 @app.command()
@@ -24,7 +28,7 @@ def sweep(
                                    "or a dotted case key; repeat for a grid (the case's [sweep] table otherwise)"),
     out: Path = typer.Option(..., "--out", help="zarr store of the results (a directory, e.g. study.zarr)"),
     model: str = typer.Option(None, "--model", help="elastic | thermal | both (default: both, or [sweep].model)"),
-    scheduler: str = typer.Option(None, "--scheduler", help="threads | processes | serial, or a dask.distributed "
+    scheduler: str = typer.Option(None, "--scheduler", help=f"{scheduler_help()}, or a dask.distributed "
                                   "scheduler address (tcp://host:port); default: threads on the fast path and for "
                                   "branches, a local Dask cluster of processes otherwise (drivetrain studies)"),
     workers: int = typer.Option(None, "--workers", min=1, help="threads or processes of the local scheduler "
@@ -40,7 +44,8 @@ def sweep(
     progress: bool = typer.Option(True, "--progress/--no-progress", help="progress bar on stderr"),
     as_json: bool = typer.Option(False, "--json", help="one JSON summary on stdout"),
     direction: str = typer.Option(None, "--direction", help="nonlinear mesh: follow the solution branch in speed "
-                                  "up | down | both (default both); the store gets a direction dimension"),
+                                  f"{' | '.join(STUDY_DIRECTIONS)} (default {DEFAULT_STUDY_DIRECTION}); the store gets "
+                                  "a direction dimension"),
     multistart: int = typer.Option(0, "--multistart", min=0, help="nonlinear mesh: at every point also search "
                                    "the state plane from N starts and list every stable orbit found with its basin "
                                    "share (about 0.1 s per start, point and model; default 0: branches only)"),
@@ -128,9 +133,7 @@ def sweep(
             return
         # the case itself passes what check and run check; a study solves periodic steady states only
         Orchestrator(loaded, tuple(study.models), "periodic").preflight()
-        if direction is not None and direction not in ("up", "down", "both"):
-            raise CaseError("--direction", direction, "up | down | both",
-                            "a branch is followed from the lowest speed up, from the highest down, or both")
+        study_directions(direction)  # an unknown direction is refused before anything is computed
         _warn_inert_axes(study)
         if mesh_law(loaded.dynamics.mesh).backlash and is_batched(method):
             from thermogear.cli.sweep_branches import run_branch_sweep
@@ -154,8 +157,9 @@ def sweep(
                             progress=_progress_bar if progress and not as_json else None)
         except (OSError, TimeoutError) as error:  # the scheduler went away, or the disk refused a write
             _remove_empty_store(out, existed)
-            raise CaseError("--scheduler" if scheduler not in (None, "serial") else "--out",
-                            scheduler if scheduler not in (None, "serial") else str(out), "a reachable scheduler and a "
+            named = scheduler_named(scheduler)  # None: the disk (the serial loop reaches no scheduler either)
+            raise CaseError("--out" if named.calling_thread else "--scheduler",
+                            str(out) if named.calling_thread else scheduler, "a reachable scheduler and a "
                             "writable --out", f"the study could not run: {error}") from None
         elapsed = time.perf_counter() - start
         figure_path = None
@@ -208,10 +212,8 @@ def _run_drivetrain(study, out: Path, direction, multistart: int, method: str, s
         raise CaseError("--chunk-points", chunk_points, "absent with the backlash mesh",
                         "each point of a branch is its own task (it starts from its neighbour's orbit), so a "
                         "branch is written and resumed point by point")
-    kind = "processes" if scheduler in (None, "", "local") else scheduler
-    if dashboard is not None and kind != "processes":
-        raise CaseError("--dashboard", dashboard, "only with the local Dask cluster (--scheduler processes)",
-                        f"the {kind} scheduler serves no dashboard of its own")
+    kind = scheduler_named(scheduler, default=PROCESSES)
+    check_dashboard(kind, dashboard)
     options = {"scheduler": kind, "workers": workers, "resume": resume, "overwrite": overwrite,
                "chunk_points": chunk_points, "dashboard": dashboard}
     run_drivetrain_sweep(study, out, direction, options, plot, as_json, console,

@@ -11,6 +11,8 @@ from thermogear.cli.app import console, error_console, print_json
 from thermogear.cli.console import print_warning
 from thermogear.cli.sweep_summary import load_held_line, load_held_summary
 from thermogear.errors import CaseError
+from thermogear.sweep.schedulers import PROCESSES, check_dashboard
+from thermogear.sweep.schedulers import scheduler as scheduler_named
 from thermogear.warning_causes import distinct_warnings
 
 
@@ -55,14 +57,13 @@ def run_branch_sweep(study, out: Path, direction: str, overwrite: bool, resume: 
         raise CaseError("--chunk-points", chunk_points, "absent with the nonlinear mesh",
                         "a branch study's task is one point of one branch (each speed followed from its neighbour's "
                         "orbit), written and resumed point by point")
-    kind = scheduler if scheduler not in (None, "", "local") else ("processes" if dashboard else None)
-    if dashboard is not None and kind != "processes":
-        raise CaseError("--dashboard", dashboard, "only with the local Dask cluster (--scheduler processes)",
-                        f"the {kind} scheduler serves no dashboard of its own")
+    if dashboard is not None:  # the local choice with a dashboard: the Dask cluster, which serves it
+        scheduler = scheduler_named(scheduler, default=PROCESSES)
+        check_dashboard(scheduler, dashboard)
     start = time.perf_counter()
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
-        dataset = branch_study(study, direction, workers=workers, multistart=multistart, scheduler=kind, out=out,
+        dataset = branch_study(study, direction, workers=workers, multistart=multistart, scheduler=scheduler, out=out,
                                resume=resume, overwrite=overwrite,
                                progress=lambda total, completed: point_progress(
                                    "branches", total=total, completed=completed, unit="points",

@@ -10,6 +10,7 @@ from types import SimpleNamespace
 
 import numpy as np
 
+from thermogear.dynamics.problems.continuation_directions import study_directions
 from thermogear.dynamics.problems.mesh_laws import mesh_law
 from thermogear.errors import CaseError
 
@@ -47,10 +48,7 @@ def run_drivetrain_sweep(study, out: Path, direction: str | None, options: dict,
     if direction is not None and not backlash:
         raise CaseError("--direction", direction, "only with [dynamics] mesh = \"nonlinear\"",
                         "the linear mesh has one steady solution per speed: there is no branch to follow")
-    if direction not in (None, "up", "down", "both"):
-        raise CaseError("--direction", direction, "up | down | both",
-                        "the orbit is followed from the lowest speed up, from the highest down, or both")
-    directions = ("up", "down") if direction in (None, "both") else (direction,)
+    directions = study_directions(direction)
     start = time.perf_counter()
     run = run_drivetrain_study(study, out, directions, progress=progress_bar, **options)
     data = run.dataset

@@ -16,8 +16,11 @@ from pathlib import Path
 from typing import Any
 
 from thermogear.case.pieces import call_with_pieces
+from thermogear.dynamics.problems.continuation_directions import study_directions
 from thermogear.dynamics.problems.mesh_laws import mesh_law
 from thermogear.errors import CaseError
+from thermogear.sweep.schedulers import PROCESSES
+from thermogear.sweep.schedulers import scheduler as scheduler_named
 from thermogear.sweep.evaluation_methods import is_batched
 
 __all__ = ["STUDY_KINDS", "StudyKind", "StudySubject", "register_study_kind", "study", "study_kind", "study_kinds"]
@@ -58,8 +61,8 @@ def _run_drivetrain(study, out, options: dict):
 
     _refuse(options, "drivetrain", method="batch", multistart=0, warmup=None)
     direction = options["direction"]
-    directions = ("up", "down") if direction in (None, "both") else (direction,)
-    scheduler = options["scheduler"] if options["scheduler"] not in (None, "", "local") else "processes"
+    directions = study_directions(direction)
+    scheduler = scheduler_named(options["scheduler"], default=PROCESSES)
     return run_drivetrain_study(study, out, directions, scheduler, options["workers"], options["resume"],
                                 options["overwrite"], options["chunk_points"]).dataset
 
@@ -87,7 +90,7 @@ def _run_warmups(study, out, options: dict):
     from thermogear.sweep.warmup_study import WarmupSettings, run_warmup_study
 
     _refuse(options, "warm-up", direction=None, multistart=0, method="batch")
-    scheduler = options["scheduler"] if options["scheduler"] not in (None, "", "local") else "processes"
+    scheduler = scheduler_named(options["scheduler"], default=PROCESSES)
     return run_warmup_study(replace(study, chunk_points=options["chunk_points"] or 1), out,
                             options["warmup"] or WarmupSettings(), scheduler, options["workers"], options["resume"],
                             options["overwrite"], options.get("progress"))

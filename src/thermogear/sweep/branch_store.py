@@ -4,6 +4,7 @@ branches, or one point's multi-start census)."""
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -11,7 +12,28 @@ import numpy as np
 from thermogear.sweep.load_held import study_load_held
 from thermogear.sweep.metric_variables import DTE_VARIABLES
 
-__all__ = ["BRANCH_VARIABLES", "STATE_SIZE", "branch_layout", "branch_region", "orbit_arrays"]
+__all__ = ["BRANCH_POINT", "BRANCH_VARIABLES", "ORBIT_SEARCH", "STATE_SIZE", "TASK_KINDS", "TaskKind", "branch_layout",
+           "branch_region", "orbit_arrays"]
+
+
+@dataclass(frozen=True)
+class TaskKind:
+    """A kind of task of a branch study, by the tag (``name``) its tuple starts with: whether it is a point of a
+    branch (``follows_branch``: it continues from its neighbour's state, and its tuple holds a direction), and where
+    its tuple holds the direction and the speed index."""
+
+    name: str
+    follows_branch: bool
+    direction_position: int | None
+    speed_position: int
+
+
+#: A point of a branch: ("point", group, model, direction, speed[, stored state]).
+BRANCH_POINT = TaskKind("point", follows_branch=True, direction_position=3, speed_position=4)
+#: The multi-start orbit search at one point: ("orbits", group, model, speed).
+ORBIT_SEARCH = TaskKind("orbits", follows_branch=False, direction_position=None, speed_position=3)
+#: The tasks of a branch study by tag: the one place the tags are compared.
+TASK_KINDS: dict[str, TaskKind] = {kind.name: kind for kind in (BRANCH_POINT, ORBIT_SEARCH)}
 
 #: Per-direction, per-model result variables: name → (units, long name).
 BRANCH_VARIABLES: dict[str, tuple[str, str]] = {
@@ -80,10 +102,11 @@ def branch_region(study, task, speed_axis) -> dict[str, Any]:
     names = [p.name for a, p in enumerate(study.parameters) if a != speed_axis]
     region: dict[str, Any] = dict(zip(names, task[1]))
     region["model"] = task[2]
-    if task[0] == "point":
-        region["direction"] = task[3]
+    kind = TASK_KINDS[task[0]]
+    if kind.direction_position is not None:
+        region["direction"] = task[kind.direction_position]
     if speed_axis is not None:
-        region[study.parameters[speed_axis].name] = task[3] if task[0] == "orbits" else task[4]
+        region[study.parameters[speed_axis].name] = task[kind.speed_position]
     return region
 
 

@@ -29,16 +29,22 @@ import numpy as np
 
 from thermogear import warning_scope
 from thermogear.dynamics.backlash.backlash_continuation import branch_point
+from thermogear.dynamics.problems.continuation_directions import STUDY_DIRECTIONS, direction_named, study_directions
 from thermogear.errors import CaseError, JammingError
 from thermogear.mesh.model import MeshModel
-from thermogear.sweep.branch_store import BRANCH_VARIABLES, branch_layout, branch_region, orbit_arrays
+from thermogear.sweep.branch_store import (BRANCH_POINT, BRANCH_VARIABLES, ORBIT_SEARCH, TASK_KINDS, branch_layout,
+                                           branch_region, orbit_arrays)
 from thermogear.sweep.hysteresis import hysteresis_bands
 from thermogear.sweep.load_held import study_load_held
+from thermogear.sweep.schedulers import SERIAL, THREADS, Scheduler
+from thermogear.sweep.schedulers import scheduler as scheduler_named
 from thermogear.temperature.kinds import temperature_source
 
 __all__ = ["DIRECTIONS", "BRANCH_VARIABLES", "branch_study", "hysteresis_bands", "write_branch_store"]
 
-DIRECTIONS = ("up", "down", "both")
+#: The ``direction`` values of a branch study
+#: (:data:`~thermogear.dynamics.problems.continuation_directions.STUDY_DIRECTIONS`).
+DIRECTIONS = tuple(STUDY_DIRECTIONS)
 
 _FROM_BRANCH = {"kv": "kv", "max_pair_load": "max_pair_force", "max_system_load_ratio": "max_mesh_force",
                 "dte_mean": "dte_mean", "dte_rms": "dte_rms", "dte_peak_to_peak": "dte_peak_to_peak",
@@ -48,10 +54,7 @@ _FROM_BRANCH = {"kv": "kv", "max_pair_load": "max_pair_force", "max_system_load_
 
 
 def _directions(direction: str) -> tuple[str, ...]:
-    if direction not in DIRECTIONS:
-        raise CaseError("direction", direction, " | ".join(DIRECTIONS),
-                        "a branch is followed from the lowest speed up, from the highest down, or both")
-    return ("up", "down") if direction == "both" else (direction,)
+    return study_directions(direction, key="direction")
 
 
 def _group_values(study, rest: tuple[int, ...], speed_axis: int | None) -> tuple[list, tuple]:
@@ -188,7 +191,7 @@ def execute_recorded(shared: tuple, task, *previous) -> tuple[Any, list]:
     multi-start search (:func:`_search_point`), with its warnings recorded (in the thread's own scope on a thread)
     as ``(text, category, file, line)``."""
     with warning_scope.recorded() as caught:
-        if task[0] == "point":
+        if TASK_KINDS[task[0]].follows_branch:
             result = _branch_point(shared, task, previous[0][0] if previous else None)
         else:
             result = _search_point(shared, task)
@@ -209,15 +212,15 @@ def plan_branches(study, directions: tuple[str, ...], multistart: int) -> tuple[
         for model_index in range(len(study.models)):
             for direction_index, way in enumerate(directions):
                 previous = None
-                for speed_index in (range(count) if way == "up" else range(count - 1, -1, -1)):
-                    tasks.append(("point", rest, model_index, direction_index, speed_index))
+                for speed_index in direction_named(way).order(count):
+                    tasks.append((BRANCH_POINT.name, rest, model_index, direction_index, speed_index))
                     follows.append(previous)
                     previous = len(tasks) - 1
     if multistart:  # one task per point and model: a few speeds searched on every worker
         for rest in groups:
             for model_index in range(len(study.models)):
                 for speed_index in range(count):
-                    tasks.append(("orbits", rest, model_index, speed_index))
+                    tasks.append((ORBIT_SEARCH.name, rest, model_index, speed_index))
                     follows.append(None)
     return tasks, follows
 
@@ -284,7 +287,7 @@ def branch_study(study, direction: str = "both", progress=None, workers: int | N
         result, messages = outcome
         caught.extend(messages)
         region = branch_region(study, task, speed_axis)
-        if task[0] == "orbits":
+        if not TASK_KINDS[task[0]].follows_branch:  # a point's orbit search
             censuses[task] = result
             store.write(number, region, orbit_arrays(result, int(multistart)))
         else:
@@ -293,11 +296,11 @@ def branch_study(study, direction: str = "both", progress=None, workers: int | N
                                          else np.asarray(state, dtype=float)})
         advance(1)
 
-    kind = scheduler if scheduler not in (None, "", "local") else ("serial" if workers == 1 else "threads")
+    kind = scheduler_named(scheduler, default=SERIAL if workers == 1 else THREADS)
     identity = json.dumps(layout.definition, sort_keys=True, default=str)
     with (progress(len(tasks), len(done)) if progress is not None else nullcontext(lambda points=1: None)) as advance:
         _run_tasks((study, speed_axis, directions, int(multistart), identity), [task for _, task in pending],
-                   finished, kind, None if kind == "serial" else workers, caught, pending_follows)
+                   finished, kind, None if kind.calling_thread else workers, caught, pending_follows)
     if out is not None:
         return store.dataset()
     return _memory_dataset(store, study, directions, censuses, speed_axis, int(multistart))
@@ -334,7 +337,8 @@ def _memory_dataset(store, study, directions: tuple[str, ...], censuses: dict, s
                                                    "case": study.case.name, "load": load, "load_note": load_note})
 
 
-def _run_tasks(shared, tasks, finished, scheduler: str, workers: int | None, caught: list, follows=None) -> None:
+def _run_tasks(shared, tasks, finished, scheduler: Scheduler, workers: int | None, caught: list, follows=None
+               ) -> None:
     """Every task on the one executor (:mod:`thermogear.sweep.executor`); ``finished(index, (result, warnings))``
     in the calling thread as each finishes; the warnings raised again in the calling thread, once per text."""
     from contextlib import ExitStack  # noqa: PLC0415
@@ -342,7 +346,7 @@ def _run_tasks(shared, tasks, finished, scheduler: str, workers: int | None, cau
     from thermogear.sweep.executor import execute  # noqa: PLC0415
 
     with ExitStack() as stack:
-        unscoped = stack.enter_context(warning_scope.routed()) if scheduler == "threads" else []
+        unscoped = stack.enter_context(warning_scope.routed()) if scheduler.threads else []
         execute(execute_recorded, shared, tasks, finished, scheduler, workers, follows=follows)
         stack.close()
         caught.extend((str(item.message), item.category, item.filename, item.lineno) for item in unscoped)

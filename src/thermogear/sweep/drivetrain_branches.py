@@ -16,9 +16,11 @@ as valid; an orbit found but unstable keeps its numbers, marked "unstable".
 
 from __future__ import annotations
 
+from thermogear.dynamics.problems.continuation_directions import DIRECTIONS as CONTINUATION_DIRECTIONS
+
 __all__ = ["DIRECTIONS", "SAMPLES_PER_PIECE", "SUBSTEPS"]
 
-DIRECTIONS = ("up", "down")
+DIRECTIONS = tuple(CONTINUATION_DIRECTIONS)  # the branches of a backlash study, up first
 #: Sub-steps per mesh-grid interval in which the shooting looks for contact switches: the backlash solver's default
 #: (fewer let a switch go unseen on stiff supports, the solver's tests), the same for the branch and the response,
 #: so the response re-solves exactly the system whose orbit the branch found.

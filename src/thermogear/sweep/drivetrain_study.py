@@ -28,6 +28,7 @@ from typing import Any
 
 import numpy as np
 
+from thermogear.dynamics.problems.continuation_directions import direction_named
 from thermogear.errors import CaseError, JammingError, ModelLimitError, ProblemError
 from thermogear.sweep.drivetrain_branches import DIRECTIONS
 from thermogear.sweep.drivetrain_store import STAGE_KEYS, TEMPERATURES
@@ -147,7 +148,7 @@ def plan_drivetrain_study(study, built, chunk_points: int, directions: tuple[str
         for group in groups:
             for model_index in range(len(models)):
                 for direction_index, direction in enumerate(directions):
-                    order = range(speeds.size) if direction == "up" else range(speeds.size - 1, -1, -1)
+                    order = direction_named(direction).order(speeds.size)
                     previous = None
                     for speed_index in order:
                         tasks.append((group, model_index, direction_index, int(speed_index)))

@@ -31,10 +31,11 @@ from typing import Any, Callable, Iterator
 import numpy as np
 
 from thermogear import warning_scope
-from thermogear.errors import CaseError
 from thermogear.mesh.model import MeshModel
 from thermogear.sweep.batch import evaluate_block, fast_path_applies
 from thermogear.sweep.evaluation_methods import EVALUATION_METHODS, evaluation_method, is_batched
+from thermogear.sweep.schedulers import PROCESSES, THREADS, Scheduler, check_dashboard
+from thermogear.sweep.schedulers import scheduler as scheduler_named
 from thermogear.sweep.store import ResultStore
 from thermogear.warning_causes import WarningTally, warning_text
 
@@ -105,10 +106,8 @@ def run_study(study, out: str | Path, scheduler: str | None = None, resume: bool
     from thermogear.sweep.executor import execute
 
     evaluation_method(method)  # an unknown method is refused before anything is written
-    kind = local_scheduler(study, method, dashboard) if scheduler in (None, "", "local") else scheduler
-    if dashboard is not None and kind != "processes":  # refused before anything is written
-        raise CaseError("--dashboard", dashboard, "only with the local Dask cluster (--scheduler processes)",
-                        f"the {kind} scheduler serves no dashboard of its own")
+    kind = scheduler_named(scheduler, default=local_scheduler(study, method, dashboard))
+    check_dashboard(kind, dashboard)  # refused before anything is written
     store = ResultStore.resume(out, study) if resume else ResultStore.create(out, study, overwrite=overwrite)
     blocks = study.blocks()
     done = store.done_blocks()
@@ -131,9 +130,9 @@ def run_study(study, out: str | Path, scheduler: str | None = None, resume: bool
                 on_block(block.number)
             advance(block.size)
 
-        if kind == "threads":  # the workers' warnings are kept apart per thread
+        if kind.threads:  # the workers' warnings are kept apart per thread
             unscoped = stack.enter_context(warning_scope.routed())
-            execute(compute_and_store_block, (study, method, store), pending, stored, "threads", workers)
+            execute(compute_and_store_block, (study, method, store), pending, stored, kind, workers)
             stack.close()  # the router is gone: its unscoped warnings are final
             tally.update(warning_text(item) for item in unscoped)
         else:
@@ -141,13 +140,13 @@ def run_study(study, out: str | Path, scheduler: str | None = None, resume: bool
     return StudyRun(store, tally.messages(), computed=len(pending), skipped=len(done), path=Path(out))
 
 
-def local_scheduler(study, method: str, dashboard: str | None = None) -> str:
-    """The local scheduler for a study: ``"threads"`` where every model of its case runs on the fast path (the
-    numba kernel releases the GIL), ``"processes"`` otherwise (pure-Python points need processes to run in
+def local_scheduler(study, method: str, dashboard: str | None = None) -> Scheduler:
+    """The local scheduler for a study: threads where every model of its case runs on the fast path (the
+    numba kernel releases the GIL), processes otherwise (pure-Python points need processes to run in
     parallel) and wherever a dashboard is asked for (the Dask cluster serves it)."""
     if dashboard is None and is_batched(method) and fast_path_applies(MeshModel(study.case, model)
                                                                       for model in study.models):
-        return "threads"
-    return "processes"
+        return THREADS
+    return PROCESSES
 
 

@@ -8,7 +8,8 @@ calling thread through ``on_result(index, result)`` as soon as its task finishes
 advances the progress bar while the other tasks run. Where a task runs never changes a bit of its result: every
 task runs with one BLAS thread (:func:`run_task`), and a task is a pure function of ``(shared, task)``.
 
-Schedulers (:data:`SCHEDULERS`, chosen once by name; anything else is a ``dask.distributed`` scheduler address):
+Schedulers (:data:`thermogear.sweep.schedulers.SCHEDULERS`, chosen once by name; anything else is a
+``dask.distributed`` scheduler address):
 
 * ``"serial"``: a plain loop in the calling thread (debugging; the baseline of the benchmarks);
 * ``"threads"``: Dask's threaded scheduler in this process (``workers`` threads, all cores by default): tasks whose
@@ -30,18 +31,16 @@ from functools import partial
 from typing import Any
 
 from thermogear.errors import CaseError
+from thermogear.sweep.schedulers import SCHEDULERS, Scheduler, scheduler_help
+from thermogear.sweep.schedulers import scheduler as resolve_scheduler
 
 __all__ = ["LOCAL_SCHEDULERS", "QUIET_LOCAL_CLUSTER", "check_scheduler_address", "execute", "run_task",
-           "run_task_on_worker", "worker_count"]
+           "run_task_on_worker"]
 
-#: The schedulers of this machine; any other value is the address of a ``dask.distributed`` scheduler.
-LOCAL_SCHEDULERS = ("serial", "threads", "processes")
+#: The schedulers of this machine (:data:`thermogear.sweep.schedulers.SCHEDULERS`); any other value is the address
+#: of a ``dask.distributed`` scheduler.
+LOCAL_SCHEDULERS = tuple(SCHEDULERS)
 _THREAD_VARIABLES = ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS")
-
-
-def worker_count(workers: int | None) -> int:
-    """The number of local threads or processes: ``workers``, or every core."""
-    return int(workers or os.cpu_count() or 1)
 
 
 def run_task(function: Callable[..., Any], shared: Any, task: Any, *previous: Any) -> Any:
@@ -65,7 +64,7 @@ def run_task_on_worker(function: Callable[..., Any], shared: Any, task: Any, *pr
 
 
 def execute(function: Callable[..., Any], shared: Any, tasks: Sequence[Any],
-            on_result: Callable[[int, Any], None], scheduler: str = "serial", workers: int | None = None,
+            on_result: Callable[[int, Any], None], scheduler: str | Scheduler = "serial", workers: int | None = None,
             dashboard: str | None = None, follows: Sequence[int | None] | None = None) -> None:
     """Run ``function(shared, task)`` for every task on ``scheduler`` (module docstring) and call
     ``on_result(index, result)`` in the calling thread as each finishes. ``follows[i]``: the index (< i) of the
@@ -77,16 +76,15 @@ def execute(function: Callable[..., Any], shared: Any, tasks: Sequence[Any],
     follows = list(follows) if follows is not None else [None] * len(tasks)
     if any(f is not None and not 0 <= f < i for i, f in enumerate(follows)):
         raise ValueError("a task follows an earlier task only")
-    if scheduler in ("serial", "threads"):
+    kind = resolve_scheduler(scheduler)
+    if kind.in_this_process:
         from threadpoolctl import threadpool_limits
 
         with threadpool_limits(limits=1, user_api="blas"):  # for the study only: restored after it
-            if scheduler == "threads":
-                _threads(function, shared, tasks, follows, on_result, worker_count(workers))
+            if kind.threads:
+                _threads(function, shared, tasks, follows, on_result, kind.worker_count(workers))
                 return
-            if workers not in (None, 1):
-                raise CaseError("--workers", workers, "absent (or 1) with --scheduler serial",
-                                "the serial scheduler computes in the calling thread")
+            kind.worker_count(workers)  # the calling thread: one worker
             results: dict[int, Any] = {}
             followed = {follow for follow in follows if follow is not None}
             for index, task in enumerate(tasks):
@@ -96,7 +94,7 @@ def execute(function: Callable[..., Any], shared: Any, tasks: Sequence[Any],
                 if index not in followed:  # no task continues from it: let it go
                     results.pop(index)
         return
-    with _client(scheduler, workers, dashboard) as client:
+    with _client(kind, workers, dashboard) as client:
         _distributed(client, function, shared, tasks, follows, on_result)
 
 
@@ -190,12 +188,14 @@ QUIET_LOCAL_CLUSTER = {
 
 
 @contextmanager
-def _client(scheduler: str, workers: int | None, dashboard: str | None):
+def _client(scheduler: str | Scheduler, workers: int | None, dashboard: str | None):
     """A ``distributed.Client`` on a new LocalCluster (closed with it) or on a scheduler address."""
     from distributed import Client, LocalCluster
 
+    kind = resolve_scheduler(scheduler)
+    count = kind.worker_count(workers)  # a count a remote scheduler cannot take is refused before connecting
     with ExitStack() as stack:
-        if scheduler == "processes":
+        if kind.local_cluster:
             import logging
 
             # a worker that takes a moment to stop when the study closes the cluster is no news to the user
@@ -207,24 +207,21 @@ def _client(scheduler: str, workers: int | None, dashboard: str | None):
             with warnings.catch_warnings(), _one_blas_thread_environment(), dask.config.set(quiet):
                 warnings.simplefilter("ignore")
                 cluster = stack.enter_context(LocalCluster(
-                    n_workers=worker_count(workers), threads_per_worker=1, processes=True,
+                    n_workers=count, threads_per_worker=1, processes=True,
                     dashboard_address=dashboard))
                 client = stack.enter_context(Client(cluster))
             from thermogear.sweep.driver_watch import DriverWatch
 
             client.register_plugin(DriverWatch(os.getpid()))
         else:
-            if workers is not None:
-                raise CaseError("--workers", workers, "only with a local scheduler (threads or processes)",
-                                "a remote scheduler has its own workers")
-            client = stack.enter_context(Client(scheduler, timeout="30s"))
+            client = stack.enter_context(Client(kind.name, timeout="30s"))
         yield client
 
 
 def check_scheduler_address(address: str | None, timeout: float = 5.0) -> None:
     """Refuse a ``tcp://host:port`` scheduler that does not accept connections, before anything is written (one
     connection attempt naming the address, instead of the client's retries for its whole timeout)."""
-    if address in (None, "", "local", *LOCAL_SCHEDULERS):
+    if not resolve_scheduler(address).remote:
         return
     import socket
     from urllib.parse import urlsplit
@@ -232,7 +229,7 @@ def check_scheduler_address(address: str | None, timeout: float = 5.0) -> None:
     parts = urlsplit(address if "://" in address else f"tcp://{address}")
     if parts.scheme not in ("tcp", "tls"):
         return
-    allowed = "a dask.distributed scheduler address tcp://host:port, 'threads', 'processes' or 'serial'"
+    allowed = f"a dask.distributed scheduler address tcp://host:port, or {scheduler_help()}"
     try:
         host, port = parts.hostname, parts.port
     except ValueError:

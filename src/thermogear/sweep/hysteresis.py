@@ -12,6 +12,8 @@ from typing import Any
 
 import numpy as np
 
+from thermogear.dynamics.problems.continuation_directions import DIRECTIONS
+
 __all__ = ["difference_bands", "hysteresis_bands"]
 
 
@@ -44,7 +46,7 @@ def hysteresis_bands(dataset, variable: str = "dte_peak_to_peak", tolerance: flo
     two grid speeds) is listed apart as ``{direction}_sweep_steep_changes``, never as a jump. ``select``:
     values of the other parameters of a grid (their first values by default). Empty without a speed axis or
     without both directions."""
-    if "speed_rpm" not in dataset.dims or list(dataset["direction"].values) != ["up", "down"]:
+    if "speed_rpm" not in dataset.dims or tuple(dataset["direction"].values) != tuple(DIRECTIONS):
         return {}
     result = {}
     speeds = np.asarray(dataset["speed_rpm"].values, dtype=float)
@@ -65,7 +67,7 @@ def hysteresis_bands(dataset, variable: str = "dte_peak_to_peak", tolerance: flo
         if bands:
             entry["band_rpm"] = max(bands, key=lambda band: band[1] - band[0])
         for way, values in branches.items():
-            if way == "down":  # the down sweep visits the speeds from the highest
+            if not DIRECTIONS[way].ascending:  # the down sweep visits the speeds from the highest
                 values, order, apart = values[::-1], speeds[::-1], differ[::-1]
             else:
                 order, apart = speeds, differ

@@ -22,6 +22,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from thermogear.dynamics.backlash.backlash_ndof import BacklashSystem, backlash_flow_ndof, backlash_periodic_orbit
+from thermogear.dynamics.problems.continuation_directions import DIRECTIONS
 from thermogear.dynamics.problems.continuation_inputs import continuation_labels, continuation_order
 from thermogear.errors import ModelLimitError, ProblemError
 
@@ -49,7 +50,7 @@ class BacklashBranchNDOF:
         """Indices i where the peak-to-peak mesh displacement changes by more than ``relative`` of the larger
         value between point i and the next point swept (i is the point where the branch was left)."""
         values = self.peak_to_peak
-        step = 1 if self.direction == "up" else -1
+        step = DIRECTIONS[self.direction].step
         order = np.arange(values.size)[::step]
         found = [int(a) for a, b in zip(order[:-1], order[1:])
                  if abs(values[b] - values[a]) > relative * max(abs(values[a]), abs(values[b]))]

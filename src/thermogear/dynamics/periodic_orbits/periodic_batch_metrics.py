@@ -29,6 +29,7 @@ import numba
 import numpy as np
 
 from thermogear.dynamics.linear_algebra.transition_2x2 import multiplier_moduli_2x2, periodic_state_2x2, transition_2x2
+from thermogear.dynamics.results.metric_formulas import mean_and_rms, mesh_load
 
 __all__ = ["METRIC_COUNT", "periodic_metrics_batch"]
 
@@ -42,6 +43,12 @@ _C1, _C2, _C3, _C4 = 1.0 / 2.0, 1.0 / 24.0, 1.0 / 720.0, 1.0 / 40320.0
 _C5, _C6, _C7 = 1.0 / 3628800.0, 1.0 / 479001600.0, 1.0 / 87178291200.0
 _S1, _S2, _S3, _S4 = 1.0 / 6.0, 1.0 / 120.0, 1.0 / 5040.0, 1.0 / 362880.0
 _S5, _S6, _S7 = 1.0 / 39916800.0, 1.0 / 6227020800.0, 1.0 / 1307674368000.0
+
+# The metrics' formulas, defined once in thermogear.dynamics.results.metric_formulas (the Python path calls them as
+# they are), compiled here: the mesh load k·x + c·ẋ and the mean and RMS of the transmission error from its moments.
+# (numba's cache keys on this file: after editing those formulas, clear this module's __pycache__ *.nbi/*.nbc.)
+_mesh_load = numba.njit(cache=True, error_model="numpy")(mesh_load)
+_mean_and_rms = numba.njit(cache=True, error_model="numpy")(mean_and_rms)
 
 
 @numba.njit(cache=True, error_model="numpy")
@@ -174,9 +181,10 @@ def _walk_displacement(nodes, stiffness, force, pair_high, pair_low, x0, v0, sam
             start = x[j]
             xs[j] = start
             if left:
-                max_system[j] = max(max_system[j], kp * start)
-                min_system[j] = min(min_system[j], kp * start)
-                max_pair[j] = max(max_pair[j], (high if start >= 0.0 else low) * start)
+                load = _mesh_load(kp, start, 0.0, 0.0)
+                max_system[j] = max(max_system[j], load)
+                min_system[j] = min(min_system[j], load)
+                max_pair[j] = max(max_pair[j], _mesh_load(high if start >= 0.0 else low, start, 0.0, 0.0))
             top[j] = max(top[j], start)
             bottom[j] = min(bottom[j], start)
             fastest[j] = max(fastest[j], abs(v[j]))
@@ -206,9 +214,9 @@ def _walk_displacement(nodes, stiffness, force, pair_high, pair_low, x0, v0, sam
             second[j] += step * (in2[j] + 0.5 * shifted * shifted)
             upper = top[j]
             lower = bottom[j]
-            max_system[j] = max(max_system[j], k * upper)
-            min_system[j] = min(min_system[j], k * lower)
-            max_pair[j] = max(max_pair[j], (high if upper >= 0.0 else low) * upper)
+            max_system[j] = max(max_system[j], _mesh_load(k, upper, 0.0, 0.0))
+            min_system[j] = min(min_system[j], _mesh_load(k, lower, 0.0, 0.0))
+            max_pair[j] = max(max_pair[j], _mesh_load(high if upper >= 0.0 else low, upper, 0.0, 0.0))
             # the running extremes of x over the period continue from the interval's
             work[18, j] = max(work[18, j], upper) if i > 0 else upper
             work[19, j] = min(work[19, j], lower) if i > 0 else lower
@@ -221,13 +229,10 @@ def _walk_displacement(nodes, stiffness, force, pair_high, pair_low, x0, v0, sam
     low = pair_low[n - 1]
     for j in range(count):
         end = x[j]
-        mean_shift = first[j] / period
-        variance = max(second[j] / period - mean_shift * mean_shift, 0.0)
-        out[j, 0] = max(max_pair[j], (high if end >= 0.0 else low) * end)
-        out[j, 1] = max(max_system[j], k * end)
-        out[j, 2] = min(min_system[j], k * end)
-        out[j, 3] = x0[j] + mean_shift
-        out[j, 4] = math.sqrt(variance)
+        out[j, 0] = max(max_pair[j], _mesh_load(high if end >= 0.0 else low, end, 0.0, 0.0))
+        out[j, 1] = max(max_system[j], _mesh_load(k, end, 0.0, 0.0))
+        out[j, 2] = min(min_system[j], _mesh_load(k, end, 0.0, 0.0))
+        out[j, 3], out[j, 4] = _mean_and_rms(x0[j], first[j], second[j], period)
         out[j, 5] = max(work[18, j], end)
         out[j, 6] = min(work[19, j], end)
         out[j, 7] = max(fastest[j], abs(v[j]))
@@ -267,14 +272,15 @@ def _walk(mass, nodes, stiffness, damping, factor, force, pair_stiffness, x0, v0
             in2[j] = 0.5 * shifted * shifted
         for sub in range(samples):
             for j in range(count):  # loads at the sample of this sub-step (right-continuous)
-                load = k * x[j] + weight * damping[i] * factor[j] * v[j]
+                load = _mesh_load(k, x[j], weight * damping[i] * factor[j], v[j])
                 max_system[j] = max(max_system[j], load)
                 min_system[j] = min(min_system[j], load)
             for s in range(slots):
                 pk = pair_stiffness[s, i]
                 share = pk / k
                 for j in range(count):
-                    max_pair[j] = max(max_pair[j], pk * x[j] + weight * share * (damping[i] * factor[j]) * v[j])
+                    max_pair[j] = max(max_pair[j], _mesh_load(pk, x[j], weight * share * (damping[i] * factor[j]),
+                                                              v[j]))
             last = sub == samples - 1
             for j in range(count):
                 dx = x[j] - eq[j]
@@ -298,35 +304,33 @@ def _walk(mass, nodes, stiffness, damping, factor, force, pair_stiffness, x0, v0
         if i > 0:  # left limit at node i: coefficients of interval i − 1
             kp = stiffness[i - 1]
             for j in range(count):
-                load = kp * xs[j] + weight * damping[i - 1] * factor[j] * vs[j]
+                load = _mesh_load(kp, xs[j], weight * damping[i - 1] * factor[j], vs[j])
                 max_system[j] = max(max_system[j], load)
                 min_system[j] = min(min_system[j], load)
             for s in range(slots):
                 pk = pair_stiffness[s, i - 1]
                 share = pk / kp
                 for j in range(count):
-                    max_pair[j] = max(max_pair[j], pk * xs[j] + weight * share * (damping[i - 1] * factor[j]) * vs[j])
+                    max_pair[j] = max(max_pair[j], _mesh_load(pk, xs[j], weight * share * (damping[i - 1] * factor[j]),
+                                                              vs[j]))
     # the last sample, τ = T, belongs to the last interval
     k = stiffness[n - 1]
     period = nodes[n] - nodes[0]
     for j in range(count):
-        c = damping[n - 1] * factor[j]
-        load = k * x[j] + (c * v[j] if damping_force else 0.0)
+        c = damping[n - 1] * factor[j] if damping_force else 0.0
+        load = _mesh_load(k, x[j], c, v[j])
         max_system[j] = max(max_system[j], load)
         min_system[j] = min(min_system[j], load)
         for s in range(slots):
-            extra = pair_stiffness[s, n - 1] / k * c * v[j] if damping_force else 0.0
-            max_pair[j] = max(max_pair[j], pair_stiffness[s, n - 1] * x[j] + extra)
+            max_pair[j] = max(max_pair[j], _mesh_load(pair_stiffness[s, n - 1], x[j], pair_stiffness[s, n - 1] / k * c,
+                                                      v[j]))
         max_x[j] = max(max_x[j], x[j])
         min_x[j] = min(min_x[j], x[j])
         max_v[j] = max(max_v[j], abs(v[j]))
-        mean_shift = first[j] / period
-        variance = max(second[j] / period - mean_shift * mean_shift, 0.0)
         out[j, 0] = max_pair[j]
         out[j, 1] = max_system[j]
         out[j, 2] = min_system[j]
-        out[j, 3] = x0[j] + mean_shift
-        out[j, 4] = math.sqrt(variance)
+        out[j, 3], out[j, 4] = _mean_and_rms(x0[j], first[j], second[j], period)
         out[j, 5] = max_x[j]
         out[j, 6] = min_x[j]
         out[j, 7] = max_v[j]

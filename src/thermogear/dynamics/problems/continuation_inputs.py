@@ -8,6 +8,7 @@ from collections.abc import Sequence
 
 import numpy as np
 
+from thermogear.dynamics.problems.continuation_directions import DIRECTIONS
 from thermogear.errors import ProblemError
 
 __all__ = ["continuation_labels", "continuation_order"]
@@ -16,8 +17,9 @@ __all__ = ["continuation_labels", "continuation_order"]
 def continuation_labels(direction: str, count: int, parameter: Sequence[float] | None, noun: str) -> np.ndarray:
     """(count,) labels of the items (``parameter``, or 0, 1, … without one) after checking ``direction`` ("up" from
     the first item to the last, "down" back) and ``count`` >= 1; ``noun`` names an item in the errors."""
-    if direction not in ("up", "down"):
-        raise ProblemError("direction", direction, "up | down", f"sweep from the first {noun} to the last or back")
+    if direction not in DIRECTIONS:
+        raise ProblemError("direction", direction, " | ".join(DIRECTIONS),
+                           f"sweep from the first {noun} to the last or back")
     if count == 0:
         raise ProblemError(f"{noun}s", "empty", f">= 1 {noun}", "nothing to follow")
     labels = np.arange(count, dtype=float) if parameter is None else np.asarray(parameter, dtype=float)
@@ -28,4 +30,4 @@ def continuation_labels(direction: str, count: int, parameter: Sequence[float] |
 
 def continuation_order(direction: str, count: int) -> range:
     """The items' indices in the order a continuation visits them: ascending "up", descending "down"."""
-    return range(count) if direction == "up" else range(count - 1, -1, -1)
+    return DIRECTIONS[direction].order(count)

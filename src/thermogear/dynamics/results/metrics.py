@@ -13,6 +13,7 @@ from thermogear.dynamics.results.period_metrics import (contact_loss_summary, dt
                                                 frequency_metrics, load_metrics, multiplier_moduli,
                                                 pair_load_maximum)
 from thermogear.dynamics.problems.problem import MeshDynamicsProblem, region_name
+from thermogear.dynamics.results.metric_formulas import mesh_load
 from thermogear.errors import ModelLimitError
 
 
@@ -23,13 +24,12 @@ def _left_limit_index(interval: np.ndarray) -> np.ndarray:
 
 def sampled_load(stiffness: np.ndarray, damping: np.ndarray, offset: np.ndarray | None, interval: np.ndarray,
                  x: np.ndarray, v: np.ndarray, include_damping_force: bool) -> np.ndarray:
-    """k·x (+ c·ẋ) − k·e with coefficients taken on ``interval`` (last axis = samples); ``offset`` k·e or None."""
-    load = stiffness[..., interval] * x
-    if offset is not None:
-        load = load - offset[..., interval]
+    """k·x (+ c·ẋ) − k·e with coefficients taken on ``interval`` (last axis = samples); ``offset`` k·e or None
+    (:func:`~thermogear.dynamics.results.metric_formulas.mesh_load`, the compiled sweep kernel's formula)."""
     if include_damping_force:
-        load = load + damping[..., interval] * v
-    return load
+        return mesh_load(stiffness[..., interval], x, damping[..., interval], v,
+                         0.0 if offset is None else offset[..., interval])
+    return mesh_load(stiffness[..., interval], x, 0.0, 0.0, 0.0 if offset is None else offset[..., interval])
 
 
 def _load_with_left_limits(stiffness: np.ndarray, damping: np.ndarray, offset: np.ndarray | None,

@@ -6,7 +6,8 @@ period (:func:`thermogear.dynamics.results.metrics.compute_metrics`, 1-DOF or in
 * loads: the static load w0 [N]; Kv = max pair load / w0 (Luo & Li 2020 Eq. 29, :func:`dynamic_factor`) and the
   basis it was read on; the largest mesh (system) load; each also per unit face width [N/mm];
 * DTE statistics of the transmission error x(t) over the record: time mean and RMS about it (trapezoidal rule,
-  :func:`~thermogear.dynamics.results.spectra.time_mean_and_rms`), peak-to-peak;
+  :func:`~thermogear.dynamics.results.spectra.time_mean_and_rms`), peak-to-peak (the formulas in
+  :mod:`thermogear.dynamics.results.metric_formulas`, which the compiled sweep kernel compiles);
 * contact times: the fractions of the record without driving-flank contact and on the back flanks, the switches
   per mesh period;
 * the mesh and natural frequencies of the problem and the moduli of the Floquet multipliers, largest first.
@@ -18,6 +19,7 @@ from typing import Any
 
 import numpy as np
 
+from thermogear.dynamics.results.metric_formulas import peak_to_peak
 from thermogear.dynamics.results.spectra import time_mean_and_rms
 
 __all__ = ["KV_ON_PAIR_LOADS", "KV_ON_SINGLE_CONTACT", "KV_UNAVAILABLE", "contact_loss_summary", "contact_time_metrics", "dte_statistics",
@@ -66,7 +68,8 @@ def dte_statistics(time: np.ndarray, displacement: np.ndarray, span: float | Non
     increasing ``time`` [s]; the mean and RMS over ``span`` [s], the record's unless given
     (:func:`~thermogear.dynamics.results.spectra.time_mean_and_rms`)."""
     mean, rms = time_mean_and_rms(time, displacement, span)
-    return {"dte_mean": mean, "dte_rms": rms, "dte_peak_to_peak": float(np.ptp(displacement))}
+    return {"dte_mean": mean, "dte_rms": rms,
+            "dte_peak_to_peak": float(peak_to_peak(np.max(displacement), np.min(displacement)))}
 
 
 def frequency_metrics(problem) -> dict[str, float]:

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from thermogear.dynamics.results.metric_formulas import mean_and_rms
 from thermogear.errors import ProblemError
 
 __all__ = ["harmonic_spectrum", "one_sided_amplitudes", "right_continuous", "signal_spectrum", "time_mean_and_rms",
@@ -37,13 +38,15 @@ def time_mean_and_rms(time: np.ndarray, values: np.ndarray, span: float | None =
     [s]: the record's, time[-1] − time[0], unless given (the nominal period of a record of one period).
 
     Trapezoidal rule on the samples as they are: a jump sampled twice at one time is a segment of zero width and
-    carries no weight, so the integral of a piecewise-smooth signal converges as O(h²) whatever the jumps."""
+    carries no weight, so the integral of a piecewise-smooth signal converges as O(h²) whatever the jumps. The RMS
+    is :func:`~thermogear.dynamics.results.metric_formulas.mean_and_rms` (the compiled sweep kernel's formula) about
+    the trapezoidal mean, where the first moment is zero: two passes, no cancellation."""
     time = np.asarray(time, dtype=float)
     values = np.asarray(values, dtype=float)
     if span is None:
         span = time[-1] - time[0]
     mean = float(np.trapezoid(values, time) / span)
-    return mean, float(np.sqrt(max(np.trapezoid((values - mean) ** 2, time) / span, 0.0)))
+    return mean_and_rms(mean, 0.0, float(np.trapezoid((values - mean) ** 2, time)), span)
 
 
 def uniform_period_grid(period: float, points: int) -> np.ndarray:
