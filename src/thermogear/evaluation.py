@@ -21,7 +21,7 @@ from thermogear import forked
 from thermogear.citations import cite, cited_in
 from thermogear.dynamics.problems.solution_methods import solution_method
 from thermogear.mesh.model_names import ELASTIC, MODELS, THERMAL
-from thermogear.thermal_model_rules import LUO2020_RULES, THERMOELASTIC_RULES
+from thermogear.choices.thermal_models import LUO2020_RULES, THERMOELASTIC_RULES
 from thermogear.warning_causes import warning_text
 
 if TYPE_CHECKING:

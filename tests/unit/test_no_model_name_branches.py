@@ -1,7 +1,7 @@
 """No behaviour of thermogear is keyed on a model's name outside the modules that resolve names (issue 26).
 
 A model name (a simulation model, ``"elastic"`` or ``"thermal"``; a pair model; a ``[thermal] model``) is resolved
-once: :mod:`thermogear.mesh.pair_models` turns it into a pair model, :mod:`thermogear.thermal_model_rules` into the
+once: :mod:`thermogear.mesh.pair_models` turns it into a pair model, :mod:`thermogear.choices.thermal_models` into the
 input rules of a thermal model, :mod:`thermogear.mesh.model_names` holds the two simulation models' names. Anywhere
 else, code asks the model what it declares (``pair_model.thermal``, ``rules.reads_x_te``, ``rules.temperature_limits``)
 instead of testing its name. The AST scan below finds, outside those modules:
@@ -24,12 +24,12 @@ import pytest
 import thermogear
 from thermogear.mesh.model_names import MODELS
 from thermogear.mesh.pair_models import PAIR_MODELS
-from thermogear.thermal_model_rules import THERMAL_MODEL_RULES
+from thermogear.choices.thermal_models import THERMAL_MODEL_RULES
 
 SOURCE = Path(thermogear.__file__).parent
 
 #: Where model names are resolved (the registries): the only modules allowed to compare them.
-REGISTRY_MODULES = ("mesh/pair_models.py", "mesh/model_names.py", "thermal_model_rules.py")
+REGISTRY_MODULES = ("mesh/pair_models.py", "mesh/model_names.py", "choices/thermal_models.py")
 
 #: Every model name: the simulation models, the pair models and the thermal models of case files.
 MODEL_NAMES = frozenset(MODELS) | frozenset(PAIR_MODELS) | frozenset(THERMAL_MODEL_RULES)
@@ -120,7 +120,7 @@ def test_the_scan_passes_what_the_seam_writes():
 
 #: Where the solution methods (``[dynamics] method``) and the sources of X_te (``[thermal] x_te_source``) are resolved
 #: from their names (issue 33: no method chosen by comparing a string outside one registry).
-METHOD_REGISTRIES = ("dynamics/problems/solution_methods.py", "thermal_model_rules.py")
+METHOD_REGISTRIES = ("dynamics/problems/solution_methods.py", "choices/thermal_models.py")
 #: Comparisons with those names left on purpose: a response's kind (``metrics["response"]``: "periodic",
 #: "subharmonic", "non-periodic", "not settled") shares the word "periodic" with the method and is not a method.
 METHOD_KNOWN = {"report/evaluate.py": 1}
@@ -128,7 +128,7 @@ METHOD_KNOWN = {"report/evaluate.py": 1}
 
 def test_solution_methods_and_x_te_sources_are_compared_only_in_their_registries():
     from thermogear.dynamics.problems.solution_methods import SOLUTION_METHODS
-    from thermogear.thermal_model_rules import X_TE_SOURCES
+    from thermogear.choices.thermal_models import X_TE_SOURCES
 
     names = frozenset(SOLUTION_METHODS) | frozenset(X_TE_SOURCES)
     hits = {}
@@ -149,7 +149,7 @@ def test_the_schema_accepts_exactly_the_registered_methods_and_x_te_sources():
     from thermogear.dynamics.problems.solution_methods import SOLUTION_METHODS
     from thermogear.schema.dynamics import DynamicsSection
     from thermogear.schema.thermal import ThermalSection
-    from thermogear.thermal_model_rules import X_TE_SOURCES
+    from thermogear.choices.thermal_models import X_TE_SOURCES
 
     assert typing.get_args(DynamicsSection.model_fields["method"].annotation) == tuple(SOLUTION_METHODS)
     assert typing.get_args(ThermalSection.model_fields["x_te_source"].annotation) == tuple(X_TE_SOURCES)
@@ -160,7 +160,7 @@ def _choice_registries() -> dict:
     (issue 33): each name is compared in its registry only, every other module asks the resolved object."""
     from thermogear.cli.warmup import WARMUP_MODELS
     from thermogear.friction.damping import DAMPING_RULES
-    from thermogear.drivetrain_choices import END_KINDS, ROTATIONS
+    from thermogear.choices.drivetrain import END_KINDS, ROTATIONS
     from thermogear.dynamics.problems.damping_modes import DAMPING_MODES
     from thermogear.experiment.spectrum import SPECTRUM_METHODS
     from thermogear.fem.elasticity import PLANE_ASSUMPTIONS
@@ -189,8 +189,8 @@ def _choice_registries() -> dict:
         "bearing type of a loss entry (type)": ("gearbox/bearing_entries.py", BEARING_TYPES),
         "mesh damping in flight ([dynamics] damping_in_flight)": ("dynamics/problems/damping_modes.py", DAMPING_MODES),
         "load a speed sweep holds (sweep --hold)": ("sweep/load_held.py", HOLDS),
-        "kind of a train's end ([drivetrain.driving] kind)": ("drivetrain_choices.py", END_KINDS),
-        "pinion's turning sense ([drivetrain] pinion_rotation)": ("drivetrain_choices.py", ROTATIONS),
+        "kind of a train's end ([drivetrain.driving] kind)": ("choices/drivetrain.py", END_KINDS),
+        "pinion's turning sense ([drivetrain] pinion_rotation)": ("choices/drivetrain.py", ROTATIONS),
         "scheduler of a study (--scheduler)": ("sweep/schedulers.py",
                                                (*SCHEDULERS, *(name for name in LOCAL_DEFAULT_NAMES if name))),
         "direction of a branch (--direction)": ("dynamics/problems/continuation_directions.py",
@@ -227,7 +227,7 @@ def test_every_choice_is_compared_only_in_its_registry(choice):
 
 
 #: Comparisons left on purpose, with their reason. None now: the schema checks the keys of a friction law by what
-#: the law declares in :mod:`thermogear.friction_choices` (below the schema), not by its name.
+#: the law declares in :mod:`thermogear.choices.friction` (below the schema), not by its name.
 CHOICES_KNOWN: dict[str, dict[str, int]] = {}
 
 
@@ -267,7 +267,7 @@ def test_the_schema_accepts_exactly_the_registered_choices():
     from thermogear.schema.dynamics import DynamicsSection
 
     assert typing.get_args(DynamicsSection.model_fields["damping_in_flight"].annotation) == tuple(DAMPING_MODES)
-    from thermogear.drivetrain_choices import END_KINDS, ROTATIONS
+    from thermogear.choices.drivetrain import END_KINDS, ROTATIONS
     from thermogear.schema.drivetrain import DrivetrainSection, EndSection
 
     assert typing.get_args(EndSection.model_fields["kind"].annotation) == tuple(END_KINDS)
@@ -329,7 +329,7 @@ def test_the_friction_declaration_names_every_law_and_says_what_each_law_does():
     import typing
 
     from thermogear.friction.models import FRICTION_MODELS, PitchContact
-    from thermogear.friction_choices import FRICTION_INPUTS
+    from thermogear.choices.friction import FRICTION_INPUTS
     from thermogear.schema.dynamics import DampingSection
     from thermogear.schema.gearbox import GearboxSection
 

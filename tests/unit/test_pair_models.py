@@ -145,7 +145,7 @@ def test_every_thermal_model_the_schema_allows_has_a_pair_model():
 
 def test_each_thermal_pair_model_declares_the_rules_of_its_name():
     # the input rules checked at load time (thermal_model_rules) are the pair model's own: one object per model
-    from thermogear.thermal_model_rules import THERMAL_MODEL_RULES
+    from thermogear.choices.thermal_models import THERMAL_MODEL_RULES
 
     with_rules = {name: model for name, model in PAIR_MODELS.items() if model.rules is not None}
     assert set(with_rules) == set(THERMAL_MODEL_RULES)

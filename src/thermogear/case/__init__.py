@@ -40,7 +40,7 @@ from thermogear.schema import (CaseFile, DampingSection, DrivetrainSection, Dyna
 from thermogear.schema.drivetrain import check_drivetrain_fits_gears
 from thermogear.schema.drivetrain_topology import check_drivetrain_train
 from thermogear.temperature.field import (check_temperatures, default_bulk_temperature, temperature_field_from_section)
-from thermogear.thermal_model_rules import thermal_model_rules, x_te_source
+from thermogear.choices.thermal_models import thermal_model_rules, x_te_source
 from thermogear.text_files import is_existing_file, path_exists, read_user_text
 from thermogear.thermoelastic.inputs import check_thermoelastic_inputs
 from thermogear.geometry.involute import disc_polar_inertia

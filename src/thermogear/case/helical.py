@@ -14,7 +14,7 @@ import math
 from thermogear.errors import CaseError
 from thermogear.helical.geometry import HelicalPair
 from thermogear.temperature.kinds import TEMPERATURE_SOURCES, temperature_source
-from thermogear.thermal_model_rules import thermal_model_rules
+from thermogear.choices.thermal_models import thermal_model_rules
 
 __all__ = ["check_helical_case", "check_face_gradient", "transverse_gears_section"]
 

@@ -8,8 +8,8 @@ at load time, with the model that would read it, as one :class:`~thermogear.erro
 
 Rules (each from what the code reads, not from a case's name):
 
-* keys that another thermal model declares its own (:attr:`~thermogear.thermal_model_rules.ThermalModelRules.own_keys`)
-  have no effect under the case's ``thermal.model``; the paper's keys (:data:`LUO2020_KEYS`), of a model that
+* keys that another thermal model declares its own
+  (:attr:`~thermogear.choices.thermal_models.ThermalModelRules.own_keys`) have no effect under the case's ``thermal.model``; the paper's keys (:data:`LUO2020_KEYS`), of a model that
   reads X_te, are excepted when they make a complete X_te (given with ``x_te``, calibrated with
   ``calibration_drop_percent``, or from the FE model): only then is the paper's model computed beside the default;
 * ``dynamics.mesh = "linear"``: ``dynamics.damping_in_flight`` (teeth in flight through the backlash) has no effect,
@@ -22,7 +22,7 @@ import warnings
 
 from thermogear.dynamics.problems.mesh_laws import mesh_law
 from thermogear.errors import IneffectiveKeyWarning
-from thermogear.thermal_model_rules import LUO2020_RULES, THERMAL_MODEL_RULES, thermal_model_rules, x_te_source
+from thermogear.choices.thermal_models import LUO2020_RULES, THERMAL_MODEL_RULES, thermal_model_rules, x_te_source
 
 __all__ = ["LUO2020_KEYS", "keys_without_effect", "luo2020_complete", "warn_keys_without_effect"]
 

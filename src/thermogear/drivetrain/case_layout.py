@@ -20,7 +20,7 @@ from thermogear.drivetrain.mesh_contact import mesh_contact
 from thermogear.drivetrain.mesh_element import GearMesh
 from thermogear.drivetrain.point_elements import Bearing, Coupling, NodeLocation, RigidDisk, TorsionalSupport
 from thermogear.drivetrain.section import CrossSection, Material
-from thermogear.drivetrain_choices import END_KINDS, ROTATIONS
+from thermogear.choices.drivetrain import END_KINDS, ROTATIONS
 from thermogear.schema.drivetrain_topology import shaft_speed_ratios
 
 __all__ = ["drivetrain_from_section", "MESH_NAME"]

@@ -13,7 +13,7 @@ by a few per cent), and the thermal time constants (minutes) are far longer than
 The thermo-elastic mesh model (the default) evaluates gears colder than their assembly temperature (contraction,
 E rising) down to the material data's limit; the paper's k_T (``thermal.model = 'luo2020'``) describes heating from
 the stress-free state only. A state with a gear colder than its model evaluates
-(:attr:`~thermogear.thermal_model_rules.ThermalModelRules.temperature_limits`) gets the network's backlash and
+(:attr:`~thermogear.choices.thermal_models.ThermalModelRules.temperature_limits`) gets the network's backlash and
 losses but no mesh evaluation (reported as such).
 """
 
@@ -27,15 +27,15 @@ from thermogear.case.pieces import call_with_pieces
 from thermogear.dynamics.problems.mesh_laws import mesh_law
 from thermogear.errors import CaseError
 from thermogear.gearbox.backlash import ColdStart, cold_start_backlash
-from thermogear.gearbox.case_model import (PredictedTemperatureError, gearbox_model_from_case,
-                                          gearbox_operating_point, gearbox_section)
+from thermogear.gearbox.case_model import (PredictedTemperatureError, gearbox_model_from_case, gearbox_operating_point,
+                                           gearbox_section)
 from thermogear.experiment.warmup import held_x_te
 from thermogear.gearbox.description import OilConditioning
 from thermogear.gearbox.losses import NODES
 from thermogear.gearbox.model import COLDEST_START_C, GearboxThermalModel, WarmUpHistory
 from thermogear.schema.temperature import TemperatureSection
 from thermogear.temperature.limits import FLAG_MEANINGS, MATERIAL_MAXIMUM_C
-from thermogear.thermal_model_rules import thermal_model_rules
+from thermogear.choices.thermal_models import thermal_model_rules
 
 #: Longest warm-up accepted [s] (a day: the network's slowest time constants are hours at most).
 LONGEST_WARM_UP_S = 86400.0

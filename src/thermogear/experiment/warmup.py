@@ -26,7 +26,7 @@ import numpy as np
 
 from thermogear.errors import CaseError
 from thermogear.schema.temperature import CASE_MAXIMUM_C, CASE_MINIMUM_C
-from thermogear.thermal_model_rules import thermal_model_rules, x_te_source
+from thermogear.choices.thermal_models import thermal_model_rules, x_te_source
 
 if TYPE_CHECKING:
     from thermogear.schema.thermal import ThermalSection

@@ -11,7 +11,7 @@ to a published drop reproduces that drop by construction; for any other pair the
 
 from __future__ import annotations
 
-from thermogear.thermal_model_rules import x_te_source
+from thermogear.choices.thermal_models import x_te_source
 from thermogear.thermoelastic.materials import MODULUS_TEMPERATURE_COEFFICIENTS_PER_K
 
 __all__ = ["fem_interpretation"]

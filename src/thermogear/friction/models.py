@@ -57,7 +57,7 @@ import numpy as np
 
 from thermogear.errors import CaseError, ExtrapolationWarning
 from thermogear.friction import MAXIMUM_SUM_VELOCITY, MINIMUM_UNIT_LOAD, mean_friction_coefficient
-from thermogear.friction_choices import FRICTION_INPUTS, FrictionInputs
+from thermogear.choices.friction import FRICTION_INPUTS, FrictionInputs
 
 #: Lubricant factor X_L of Schlenk's law per base oil, as calibrated on FZG power-loss tests by Fernandes et al.
 #: (2015) Part II and coded in their Gear-Calculation ``oils.py`` (mineral 0.846, PAO 0.666, PAG 0.585, ester
@@ -175,7 +175,7 @@ class FrictionLaw:
     @property
     def inputs(self) -> FrictionInputs:
         """What this law takes from the case besides its name (a given coefficient, a lubricant factor), as the
-        case's checks read it (:data:`thermogear.friction_choices.FRICTION_INPUTS`)."""
+        case's checks read it (:data:`thermogear.choices.friction.FRICTION_INPUTS`)."""
         return FRICTION_INPUTS[self.name]
 
     def lubricant_factor(self, base_oil: str, given: float | None = None,

@@ -32,7 +32,7 @@ from thermogear.mesh.table_file import mesh_table_of
 from thermogear.geometry.mesh_cycle import MeshCycle, MeshGrid, load_share_at, load_shares
 from thermogear.temperature.kinds import temperature_source
 from thermogear.temperature.source import TemperatureField
-from thermogear.thermal_model_rules import x_te_source
+from thermogear.choices.thermal_models import x_te_source
 from thermogear.thermoelastic.load_sharing import loaded_transmission_error
 from thermogear.thermoelastic.mesh import ThermoelasticMesh
 

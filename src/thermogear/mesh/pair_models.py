@@ -18,7 +18,7 @@ Three models (``PAIR_MODELS``, resolved once by :func:`pair_model_class`):
 Adding a model is one subclass of :class:`PairModelBase` overriding what differs, and one line in ``PAIR_MODELS``:
 it then runs by its name, ``Simulation(case, model=name)``. A model that a case file chooses as its ``[thermal]
 model`` also declares its input rules (temperature limits, X_te, own keys): one line in
-:data:`thermogear.thermal_model_rules.THERMAL_MODEL_RULES` (which the schema reads), held as the class's ``rules``.
+:data:`thermogear.choices.thermal_models.THERMAL_MODEL_RULES` (which the schema reads), held as the class's ``rules``.
 """
 
 from __future__ import annotations
@@ -38,7 +38,7 @@ from thermogear.mesh.model_names import MODELS, THERMAL
 from thermogear.mesh.secant_checks import secant_stiffness_drop_flag, secant_stiffness_in_nonlinear_mesh
 from thermogear.stiffness.table import pair_stiffness_at
 from thermogear.temperature.source import TemperatureField, temperature_field_from_case
-from thermogear.thermal_model_rules import LUO2020_RULES, THERMOELASTIC_RULES, ThermalModelRules
+from thermogear.choices.thermal_models import LUO2020_RULES, THERMOELASTIC_RULES, ThermalModelRules
 from thermogear.thermoelastic.mesh import ThermoelasticMesh
 
 if TYPE_CHECKING:

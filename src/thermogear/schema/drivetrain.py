@@ -31,7 +31,7 @@ from typing import Annotated, Literal
 
 from pydantic import Field, model_validator
 
-from thermogear.drivetrain_choices import END_KINDS
+from thermogear.choices.drivetrain import END_KINDS
 from thermogear.errors import CaseError
 from thermogear.schema.base import Section
 from thermogear.schema.bearing_loss import BearingLossSection, check_loss_data

@@ -3,14 +3,14 @@
 from __future__ import annotations
 
 from thermogear.errors import CaseError
-from thermogear.friction_choices import FRICTION_INPUTS
+from thermogear.choices.friction import FRICTION_INPUTS
 from thermogear.registry import registered
 
 
 def check_friction_inputs(section: str, model: str, coefficient: float | None,
                           lubricant_factor: float | None) -> None:
     """The keys of a section that chooses a friction law (``[gearbox]``, ``[damping]``) checked together, as the law
-    declares them (:data:`thermogear.friction_choices.FRICTION_INPUTS`): ``friction_coefficient`` exactly with a law
+    declares them (:data:`thermogear.choices.friction.FRICTION_INPUTS`): ``friction_coefficient`` exactly with a law
     that takes a given coefficient (the ``"constant"`` law), no ``lubricant_factor`` with a law that has none
     (CaseError naming ``section.key``)."""
     inputs = registered(FRICTION_INPUTS, model, f"{section}.friction_model", "not a friction law")

@@ -7,7 +7,7 @@ from typing import Annotated, Literal
 from pydantic import Field
 
 from thermogear.schema.base import Section
-from thermogear.thermal_model_rules import THERMAL_MODEL_RULES
+from thermogear.choices.thermal_models import THERMAL_MODEL_RULES
 
 
 class ThermalSection(Section):

@@ -24,7 +24,7 @@ from thermogear import warning_scope
 from thermogear.case import cached_per_case
 from thermogear.composition import TEMPERATURE_PROVIDERS, builtin
 from thermogear.errors import ModelAssumptionWarning, ThermogearError
-from thermogear.thermal_model_rules import thermal_model_rules
+from thermogear.choices.thermal_models import thermal_model_rules
 # The field, its checks and the fit need no case machinery: they live in thermogear.temperature.field so that the
 # case loader can run them at load time; re-exported here, where the rest of the thermal model looks for them.
 from thermogear.temperature.field import (DEFAULT_LUBRICANT_DATA_MAXIMUM_C, FIT_OVERSHOOT_ABSOLUTE_K,  # noqa: F401

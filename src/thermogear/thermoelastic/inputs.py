@@ -13,10 +13,10 @@ from thermogear.temperature.kinds import temperature_source
 from thermogear.errors import CaseError, JammingError
 from thermogear.geometry import GearPair
 from thermogear.temperature.field import MATERIAL_MAXIMUM_C, MATERIAL_MINIMUM_C  # the material data's range [°C]
-from thermogear.thermal_model_rules import thermal_model_rules
+from thermogear.choices.thermal_models import thermal_model_rules
 from thermogear.thermoelastic.materials import HOUSING_EXPANSION_PER_K, MODULUS_TEMPERATURE_COEFFICIENTS_PER_K
-from thermogear.thermoelastic.operating import (BacklashAllowance, agma_minimum_backlash, backlash_at,
-                                                jamming_rise, normal_backlash)
+from thermogear.thermoelastic.operating import (BacklashAllowance, agma_minimum_backlash, backlash_at, jamming_rise,
+                                                normal_backlash)
 
 GEAR_NAMES = ("pinion", "wheel")
 

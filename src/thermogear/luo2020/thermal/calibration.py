@@ -23,7 +23,7 @@ from thermogear.stiffness.potential_energy import pair_compliance
 from thermogear.luo2020.thermal.case_inputs import PaperThermalInputs
 from thermogear.luo2020.thermal.stiffness import check_x_te
 from thermogear.temperature.source import TemperatureField
-from thermogear.thermal_model_rules import x_te_source
+from thermogear.choices.thermal_models import x_te_source
 
 if TYPE_CHECKING:
     from thermogear.case import Case
