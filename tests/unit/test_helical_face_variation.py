@@ -192,3 +192,24 @@ def test_a_face_gradient_moves_the_bearing_load_to_the_hot_end_and_a_uniform_tem
         for end in ("A", "B"):
             name = f"{shaft} bearing {end}"
             assert abs(radial(uniform, name) - radial(plain, name)) < 0.05 * change
+
+
+def test_the_variation_of_a_pair_without_deviations_swings_about_mid_face():
+    """pair_face_variation (the Python route): the period means are the uniform face's (z̄ = 0 to 1e-3 b, ρ = b/√12
+    to 1e-3), the load centre swings across mid-face, no gap moment, and the other sense sH mirrors the odd moment."""
+    from thermogear.helical.geometry import HelicalPair
+    from thermogear.materials import Material as GearMaterial
+    from thermogear.drivetrain.mesh_contact import pair_face_variation
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        helical = HelicalPair.create(27, 35, 3e-3, math.radians(20.0), math.radians(15.0), 20e-3,
+                                     bore_radii=(18e-3, 25e-3))
+        right, mirrored = (pair_face_variation(helical, GearMaterial(), 32, sense) for sense in (1, -1))
+    width = helical.face_width
+    assert abs(right.mean_load_centre) < 1e-3 * width
+    assert right.mean_gyration == pytest.approx(width / math.sqrt(12.0), rel=1e-3)
+    assert right.first.max() > 0.02 * width and right.first.min() < -0.02 * width
+    assert np.all(right.gap_moment == 0.0)
+    np.testing.assert_allclose(mirrored.first, -right.first, rtol=0.0, atol=1e-15 * width)
+    np.testing.assert_array_equal(mirrored.second, right.second)

@@ -69,7 +69,7 @@ if TYPE_CHECKING:
     from thermogear.materials import Material
 
 __all__ = ["MESH_CONTACTS", "FaceVariation", "MeshContact", "face_contact_moments", "face_variation", "mesh_contact",
-           "with_face_variations"]
+           "pair_face_variation", "with_face_variations"]
 
 
 @dataclass(frozen=True)
@@ -179,6 +179,23 @@ def face_variation(stiffness: np.ndarray, first_moment: np.ndarray, second_momen
                          np.asarray(second_moment) / stiffness - mean_second,
                          sense * np.asarray(gap_moment) / stiffness, centre,
                          math.sqrt(max(mean_second - centre**2, 0.0)))
+
+
+def pair_face_variation(helical: HelicalPair, material: Material, points: int, sense: int,
+                        slices: int = 100) -> FaceVariation:
+    """The :class:`FaceVariation` of a pair without deviations (every slice in contact) on ``points`` equal
+    intervals of the mesh period, each at its midpoint (the intervals of
+    :func:`~thermogear.mesh.helical_state.helical_mesh_state`), for a drivetrain built in Python; ``sense`` = sH,
+    the mesh's rotation sense times gear 1's hand. The case route takes each model's own, with its deviations
+    (:func:`with_face_variations`)."""
+    from thermogear.helical.slices import contact_stiffness
+
+    phases = (np.arange(points) + 0.5) / points * helical.transverse_base_pitch
+    centres, stiffness = contact_stiffness(helical, material, phases, slices)
+    per_slice = stiffness.sum(axis=-2)
+    position = centres - helical.face_width / 2.0
+    return face_variation(per_slice.sum(axis=-1), per_slice @ position, per_slice @ position**2, np.zeros(points),
+                          sense)
 
 
 def _model_variation(mesh, model, points: int) -> FaceVariation | None:
