@@ -69,7 +69,7 @@ if TYPE_CHECKING:
     from thermogear.materials import Material
 
 __all__ = ["MESH_CONTACTS", "FaceVariation", "MeshContact", "face_contact_moments", "face_variation", "mesh_contact",
-           "pair_face_variation", "with_face_variations"]
+           "case_face_variations", "pair_face_variation", "with_face_variations"]
 
 
 @dataclass(frozen=True)
@@ -232,3 +232,14 @@ def with_face_variations(drivetrain, models: tuple, points: int, references: tup
                            load_gyration=math.sqrt(max(gyration**2 + shift, 0.0)))
         meshes.append(replace(mesh, **changes))
     return replace(drivetrain, meshes=tuple(meshes))
+
+
+def case_face_variations(drivetrains: dict, mesh_models: dict, stage_models: dict, points: int,
+                         reference: str) -> dict:
+    """Each model's drivetrain (name → drivetrain) with :func:`with_face_variations` of its own mesh models
+    (``mesh_models[name]`` for the first mesh, ``stage_models[name]`` for the further stages), the means moved from
+    those of the ``reference`` model (the elastic one: no deviations)."""
+    references = (mesh_models[reference], *stage_models[reference])
+    return {name: with_face_variations(drivetrain, (mesh_models[name], *stage_models[name]), points,
+                                       None if name == reference else references)
+            for name, drivetrain in drivetrains.items()}

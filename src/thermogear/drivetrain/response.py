@@ -357,6 +357,10 @@ def _response(assembled: AssembledDrivetrain, train: MeshTrain, problems, grid: 
         own = grid.pieces[interval, column]
         excitation = problem.force_per_interval - state.normal_load
         force = problem.stiffness[own] * delta - excitation[own] + problem.damping[own] * rate
+        if mesh.varies():  # the face's first moment about the load centre strains the mesh with the relative tilt
+            k_first, c_first = mesh.face_factors(problem.nodes, problem.stiffness, problem.damping, excitation)[:2]
+            tilt = assembled.tilt_vectors[column]
+            force = force + k_first[own] * (displacement @ tilt) + c_first[own] * (velocity @ tilt)
         if len(problems) == 1:
             metrics = compute_metrics(problem, response.time, delta, rate, interval, response.multipliers)
         else:
