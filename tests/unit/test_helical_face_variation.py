@@ -91,6 +91,47 @@ def test_the_three_patterns_are_the_slices_own_sum_and_their_gaps_force():
             np.testing.assert_allclose(got, expected, rtol=0.0, atol=1e-10 * np.abs(expected).max())
 
 
+def test_the_backlash_contact_states_take_the_whole_face():
+    """The backlash system of the same face: on the back flanks every slice's gap grows by the backlash b, the force
+    T + Σ_j k_j(e_j − b) w(z_j) with the driving flanks' stiffness; in free flight the face's varying part leaves with
+    the mesh (what stays is the mean tilting stiffness k̄ρ² w_zw_zᵀ of the constant matrices, as before)."""
+    from thermogear.drivetrain.response import drivetrain_backlash_system
+    from thermogear.dynamics.backlash.backlash_pieces import contact_state_system
+    from thermogear.dynamics.backlash.backlash_system import BACK_CONTACT, DRIVING_CONTACT, FREE_FLIGHT
+
+    z, stiffness, gap = _slices()
+    k0 = stiffness.sum(axis=1)
+    variation = face_variation(k0, stiffness @ z, stiffness @ z**2, np.sum(stiffness * gap * z, axis=1), 1)
+    drivetrain = _drivetrain()
+    mesh = replace(drivetrain.meshes[0], stiffness=float(np.mean(k0)), damping=RATIO * float(np.mean(k0)),
+                   load_centre=variation.mean_load_centre, load_gyration=variation.mean_gyration,
+                   face_variation=variation)
+    assembled = replace(drivetrain, meshes=(mesh,)).assemble()
+    structure = replace(drivetrain, meshes=(replace(mesh, contact=mesh_contact("point")),)).assemble()
+    backlash = 40e-6
+    system, reduction = drivetrain_backlash_system(assembled, replace(_state(k0, np.sum(stiffness * gap, axis=1)),
+                                                                      backlash=backlash))
+    assert system.pattern_meshes == (0, 0, 0)
+    dofs = np.concatenate([np.arange(6 * node, 6 * node + 6) for node in (
+        assembled.dof(mesh.gear_1, "x") // 6, assembled.dof(mesh.gear_2, "x") // 6)])
+    w = np.array([mesh.vector_at(position) for position in z])
+    for piece in (3, 15):
+        back = contact_state_system(system, (BACK_CONTACT, ())).piece(piece)
+        drive = contact_state_system(system, (DRIVING_CONTACT, ())).piece(piece)
+        free = contact_state_system(system, (FREE_FLIGHT, ())).piece(piece)
+        expected_f = mesh_torque_forces(structure, 2e3)
+        expected_f[dofs] += np.einsum("j,ja->a", stiffness[piece] * (gap[piece] - backlash), w)
+        np.testing.assert_allclose(back[2], reduction.project_vector(expected_f), rtol=0.0,
+                                   atol=1e-10 * np.abs(expected_f).max())
+        np.testing.assert_array_equal(back[0], drive[0])
+        expected_k = structure.structure_stiffness.copy()
+        expected_k[np.ix_(dofs, dofs)] += mesh.tilting_matrix(mesh.stiffness)
+        np.testing.assert_allclose(free[0], reduction.project(expected_k), rtol=0.0,
+                                   atol=1e-10 * np.abs(expected_k).max())
+        np.testing.assert_allclose(free[2], reduction.project_vector(mesh_torque_forces(structure, 2e3)), rtol=0.0,
+                                   atol=1e-10 * np.abs(expected_f).max())
+
+
 def test_moments_held_at_their_means_give_todays_spread_route():
     """f₁ = 0, k(τ)(ρ² + f₂) = k̄ρ² and no gap moment: the three-pattern route (two patterns of zero factor) is the
     one-pattern spread route with the constant tilting term, response for response."""

@@ -111,16 +111,9 @@ def face_contact_moments(helical: HelicalPair, material: Material, slices: int =
                          points: int = 64) -> tuple[float, float]:
     """(z̄ [m] from mid-face, ρ [m]) of the slice model's stiffness averaged over one mesh period (``points``
     phases, midpoints of equal steps; ``slices`` across the face; :func:`thermogear.helical.slices.contact_stiffness`),
-    by the moments of :class:`~thermogear.helical.face_load.FaceStiffnessMoments` (every line in contact)."""
-    from thermogear.helical.face_load import FaceStiffnessMoments
-    from thermogear.helical.slices import contact_stiffness
-
-    phases = (np.arange(points) + 0.5) / points * helical.transverse_base_pitch
-    centres, stiffness = contact_stiffness(helical, material, phases, slices)
-    per_slice = stiffness.sum(axis=-2)  # (phases, slices): each slice's stiffness over its lines
-    position = centres - helical.face_width / 2.0
-    moments = FaceStiffnessMoments(phases, per_slice.sum(axis=-1), per_slice @ position, per_slice @ position**2)
-    return moments.mean_load_centre, moments.mean_gyration
+    in the slice model's face coordinate: the means of :func:`pair_face_variation` (every line in contact)."""
+    variation = pair_face_variation(helical, material, points, 1, slices)
+    return variation.mean_load_centre, variation.mean_gyration
 
 
 @dataclass(frozen=True, eq=False)

@@ -179,8 +179,9 @@ def drivetrain_backlash_system(assembled: AssembledDrivetrain,
         return BacklashSystem(linear, linear.force_pattern, deviation, states[0].backlash, tuple(zones)), reduction
     owners = mesh_columns(assembled)
     firsts = sorted(set(owners))  # each mesh's own pattern w wᵀ: its dead zone is along w
-    deviation = linear.force_factor / linear.stiffness_factor  # (N, P): on a mesh's own column e_j = Σk_ie_i / Σk_i
-    meshes = [MeshZone(linear.force_pattern[column], column, deviation[:, column], states[m].backlash)
+    deviation = {column: linear.force_factor[:, column] / linear.stiffness_factor[:, column]  # e_j = Σk_ie_i / Σk_i
+                 for column in firsts}
+    meshes = [MeshZone(linear.force_pattern[column], column, deviation[column], states[m].backlash)
               for m, column in enumerate(firsts) if m > 0]
     # on the back flanks every slice's gap grows by b: the force moves by −b·(k w + k₁′ w_z), along the mesh's own
     # pattern and the face's first (its force pattern w_z), not the second
@@ -188,7 +189,7 @@ def drivetrain_backlash_system(assembled: AssembledDrivetrain,
     for column, owner in enumerate(owners):
         if column - owner == 2:  # w_z w_zᵀ (mesh_columns' order)
             shift[:, column] = 0.0
-    return BacklashSystem(linear, linear.force_pattern[0], deviation[:, 0], states[0].backlash,
+    return BacklashSystem(linear, linear.force_pattern[0], deviation[0], states[0].backlash,
                           tuple(meshes) + tuple(zones), owners, shift), reduction
 
 
