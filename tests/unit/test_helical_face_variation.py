@@ -18,7 +18,6 @@ import numpy as np
 import pytest
 
 from drivetrain_builders import geared_pair
-from thermogear.drivetrain import Bearing
 from thermogear.drivetrain.mesh_contact import FaceVariation, face_variation, mesh_contact
 from thermogear.drivetrain.modes import drivetrain_modes
 from thermogear.drivetrain.response import drivetrain_periodic_response, drivetrain_periodic_system
@@ -52,6 +51,20 @@ def _slices():
     return z, stiffness, np.broadcast_to(gap, stiffness.shape)
 
 
+def _face():
+    """(z, stiffness, gap of _slices, the spread mesh with their variation and z̄, ρ their stiffness-weighted period
+    means, the drivetrain with it assembled, the same with a point contact: its structure without the mesh)."""
+    z, stiffness, gap = _slices()
+    k0 = stiffness.sum(axis=1)
+    variation = face_variation(k0, stiffness @ z, stiffness @ z**2, np.sum(stiffness * gap * z, axis=1), 1)
+    drivetrain = _drivetrain()
+    mesh = replace(drivetrain.meshes[0], stiffness=float(np.mean(k0)), damping=RATIO * float(np.mean(k0)),
+                   load_centre=variation.mean_load_centre, load_gyration=variation.mean_gyration,
+                   face_variation=variation)
+    structure = replace(drivetrain, meshes=(replace(mesh, contact=mesh_contact("point")),)).assemble()
+    return z, stiffness, gap, mesh, replace(drivetrain, meshes=(mesh,)).assemble(), structure
+
+
 def _state(stiffness: np.ndarray, excitation: np.ndarray | None = None, load: float = 2e3):
     deviation = None if excitation is None else excitation / stiffness
     return mesh_state_from_arrays(np.arange(stiffness.size) / stiffness.size, stiffness, damping=RATIO * stiffness,
@@ -62,15 +75,8 @@ def test_the_three_patterns_are_the_slices_own_sum_and_their_gaps_force():
     """On every piece the periodic system's stiffness is K₀ + Σ_j k_j w(z_j)w(z_j)ᵀ, its damping C₀ + Σ_j c_j w w ᵀ
     and its force T + Σ_j k_je_j w(z_j), the slice sum written out (first principles), for a mesh whose z̄ and ρ are
     the slices' stiffness-weighted period means."""
-    z, stiffness, gap = _slices()
+    z, stiffness, gap, mesh, assembled, structure = _face()
     k0 = stiffness.sum(axis=1)
-    variation = face_variation(k0, stiffness @ z, stiffness @ z**2, np.sum(stiffness * gap * z, axis=1), 1)
-    drivetrain = _drivetrain()
-    mesh = replace(drivetrain.meshes[0], stiffness=float(np.mean(k0)), damping=RATIO * float(np.mean(k0)),
-                   load_centre=variation.mean_load_centre, load_gyration=variation.mean_gyration,
-                   face_variation=variation)
-    assembled = replace(drivetrain, meshes=(mesh,)).assemble()
-    structure = replace(drivetrain, meshes=(replace(mesh, contact=mesh_contact("point")),)).assemble()
     state = _state(k0, np.sum(stiffness * gap, axis=1))
     system, reduction = drivetrain_periodic_system(assembled, state)
     assert system.pattern_count == 3
@@ -99,15 +105,8 @@ def test_the_backlash_contact_states_take_the_whole_face():
     from thermogear.dynamics.backlash.backlash_pieces import contact_state_system
     from thermogear.dynamics.backlash.backlash_system import BACK_CONTACT, DRIVING_CONTACT, FREE_FLIGHT
 
-    z, stiffness, gap = _slices()
+    z, stiffness, gap, mesh, assembled, structure = _face()
     k0 = stiffness.sum(axis=1)
-    variation = face_variation(k0, stiffness @ z, stiffness @ z**2, np.sum(stiffness * gap * z, axis=1), 1)
-    drivetrain = _drivetrain()
-    mesh = replace(drivetrain.meshes[0], stiffness=float(np.mean(k0)), damping=RATIO * float(np.mean(k0)),
-                   load_centre=variation.mean_load_centre, load_gyration=variation.mean_gyration,
-                   face_variation=variation)
-    assembled = replace(drivetrain, meshes=(mesh,)).assemble()
-    structure = replace(drivetrain, meshes=(replace(mesh, contact=mesh_contact("point")),)).assemble()
     backlash = 40e-6
     system, reduction = drivetrain_backlash_system(assembled, replace(_state(k0, np.sum(stiffness * gap, axis=1)),
                                                                       backlash=backlash))

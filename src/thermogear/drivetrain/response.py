@@ -130,7 +130,7 @@ def _mesh_patterns(assembled: AssembledDrivetrain, reduction: RigidBodyReduction
                    for m, (problem, load) in enumerate(zip(problems, loads))]
         factors = (np.column_stack([column[kind] for column in columns]) for kind in range(3))
         return (patterns, patterns, vectors, *factors)
-    stiffness_patterns, damping_patterns, force_patterns, columns = [], [], [], []
+    stiffness_patterns, force_patterns, columns = [], [], []
     for m, (mesh, problem, load) in enumerate(zip(assembled.drivetrain.meshes, problems, loads)):
         w, index = vectors[m], grid.pieces[:, m]
         excitation = problem.force_per_interval - load
