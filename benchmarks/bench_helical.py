@@ -11,9 +11,15 @@ Three figures, each a ratio helical / spur (the issue's target: helical ≤ 10×
    models; cold = a new mesh model with every stiffness table dropped, warm = the same mesh model at another speed
    and load on each call (what a sweep or a run's second state asks);
 3. a 20-point linear speed sweep of both models (``Study`` → ``run_study``, serial, into a zarr store) of the same
-   two cases, ``dynamics.mesh = "linear"``.
+   two cases, ``dynamics.mesh = "linear"``;
+4. the drivetrain (the issue's target: helical within 1.5× of spur): the periodic response of the two-shaft rotor of
+   docs/drivetrain.md (tests/data/two_shaft_drivetrain.toml, 256 points per period, every DOF) with its pair cut at
+   β = 15° and the spread contact whose moments vary over the period (three patterns: a rank-2 update per mesh)
+   against the same rotor with the spur pair, thermal model, states and assembly prepared, the two alternating;
+   and the helical one with the moments held at their means (one pattern) for reference; each also on the modes
+   to 20 kHz (``cutoff_hz``, what a case's ``response_cutoff_hz`` does).
 
-Run: python benchmarks/bench_helical.py [--quick]
+Run: python benchmarks/bench_helical.py [--quick] [--drivetrain] (``--drivetrain``: figure 4 only)
 Writes benchmarks/results/bench_helical.json.
 """
 
@@ -174,7 +180,63 @@ def linear_sweeps(points: int) -> dict:
     return row
 
 
-def main(quick: bool = False) -> dict:
+def drivetrain_responses(repeat: int) -> dict:
+    """Figure 4: ``drivetrain_periodic_response`` of the two-shaft rotor, helical spread (moments varying) against
+    spur, and helical spread with the moments at their means against spur."""
+    import tomllib
+    from dataclasses import replace
+
+    from thermogear.case import case_from_document
+    from thermogear.drivetrain.case_model import case_drivetrain
+    from thermogear.drivetrain.response import drivetrain_periodic_response
+
+    root = Path(__file__).resolve().parents[1]
+    document = tomllib.loads((root / "tests" / "data" / "two_shaft_drivetrain.toml").read_text(encoding="utf-8"))
+    prepared = {}
+    for label, helix in (("spur", 0.0), ("helical", 15.0)):
+        document["gears"].update(helix_angle_deg=helix, hand="right")
+        document["drivetrain"]["helical_contact"] = "spread"
+        built = case_drivetrain(case_from_document(document))
+        drivetrain, state = built.drivetrains["thermal"], built.mesh_states("thermal")
+        prepared[label] = (drivetrain.assemble(), state)
+        if helix:
+            assert drivetrain.meshes[0].varies()
+            held = replace(drivetrain, meshes=(replace(drivetrain.meshes[0], face_variation=None),))
+            prepared["helical, moments at their means"] = (held.assemble(), state)
+    runs = {label: (lambda item=item: drivetrain_periodic_response(*item)) for label, item in prepared.items()}
+    runs.update({f"{label}, modes to 20 kHz": (lambda item=item: drivetrain_periodic_response(*item, cutoff_hz=2e4))
+                 for label, item in prepared.items()})
+    for run in runs.values():  # imports, first compilations
+        run()
+    times = {label: [] for label in runs}
+    for _ in range(repeat):  # the three alternating: each repeat exposes all to the same load
+        for label, run in runs.items():
+            wall, cpu = time.perf_counter(), time.process_time()
+            run()
+            times[label].append((time.perf_counter() - wall, time.process_time() - cpu))
+    best = {label: np.min(np.array(values), axis=0) for label, values in times.items()}
+    rows = {}
+    for label, spur in (("helical", "spur"), ("helical, moments at their means", "spur"),
+                        ("helical, modes to 20 kHz", "spur, modes to 20 kHz"),
+                        ("helical, moments at their means, modes to 20 kHz", "spur, modes to 20 kHz")):
+        rows[label] = row = {"spur_s": float(best[spur][0]), "helical_s": float(best[label][0]),
+                             "ratio": float(best[label][0] / best[spur][0]),
+                             "spur_cpu_s": float(best[spur][1]), "helical_cpu_s": float(best[label][1]),
+                             "cpu_ratio": float(best[label][1] / best[spur][1])}
+        print(f"drivetrain periodic response, two-shaft rotor (256 pieces), {label}: spur "
+              f"{row['spur_s'] * 1e3:.0f} ms, helical {row['helical_s'] * 1e3:.0f} ms, ratio {row['ratio']:.2f} "
+              f"(CPU ratio {row['cpu_ratio']:.2f})")
+    return rows
+
+
+def main(quick: bool = False, drivetrain_only: bool = False) -> dict:
+    if drivetrain_only:
+        warnings.simplefilter("ignore")
+        result = {"drivetrain_response": drivetrain_responses(3 if quick else 7),
+                  "python": sys.version.split()[0], "machine": platform.machine()}
+        RESULTS.mkdir(exist_ok=True)
+        (RESULTS / "bench_helical_drivetrain.json").write_text(json.dumps(result, indent=2) + "\n", encoding="utf-8")
+        return result
     warnings.simplefilter("ignore")
     result = {"points_per_period": 1024,
               "library_functions": library_functions(1024, 3 if quick else 5),
@@ -188,6 +250,9 @@ def main(quick: bool = False) -> dict:
                 for label, row in result["mesh_model_state"].items()]
     figures.append(("helical/spur linear sweep, 20 speeds x 2 models (fzg_h501 / cut straight)",
                     result["linear_sweep"]))
+    result["drivetrain_response"] = drivetrain_responses(3 if quick else 7)
+    figures += [(f"helical/spur drivetrain periodic response, two-shaft rotor, {label}", row)
+                for label, row in result["drivetrain_response"].items()]
     result["figures"] = [{"name": name, "value": row["helical_s"], "baseline": row["spur_s"],
                           "ratio": row["ratio"], "unit": "s",
                           **({"cpu_ratio": row["cpu_ratio"]} if "cpu_ratio" in row else {})} for name, row in figures]
@@ -197,4 +262,4 @@ def main(quick: bool = False) -> dict:
 
 
 if __name__ == "__main__":
-    main("--quick" in sys.argv[1:])
+    main("--quick" in sys.argv[1:], "--drivetrain" in sys.argv[1:])

@@ -136,7 +136,7 @@ class Drivetrain:
 
         mass, damping, gyroscopic = np.zeros((size, size)), np.zeros((size, size)), np.zeros((size, size))
         groups: dict[str, np.ndarray] = {}
-        vectors, zones, mesh_names = [], [], []
+        vectors, tilts, zones, mesh_names = [], [], [], []
         ratios = self.speed_ratios()
         for element in self.elements(meshed):
             where = np.concatenate([dofs(location) for location in element.locations])
@@ -146,6 +146,10 @@ class Drivetrain:
                 full = np.zeros(size)
                 full[where] += vector
                 vectors.append(full)
+                tilt = np.zeros(size)
+                if getattr(element, "varies", lambda: False)():  # a spread contact's w_z, for its moments' variation
+                    tilt[where] += element.tilt_vector()
+                tilts.append(tilt)
                 mesh_names.append(element.name)
                 constant = element.stiffness_matrix()
                 if np.any(constant):  # a spread contact's tilting stiffness, under the mesh's name
@@ -166,7 +170,8 @@ class Drivetrain:
             drivetrain=self, node_positions=nodes, node_offsets=offsets, mass=mass, structure_stiffness=structure,
             structure_damping=damping, gyroscopic=gyroscopic,
             mesh_vectors=np.array(vectors) if vectors else np.zeros((0, size)), stiffness_groups=groups,
-            speed_ratios=ratios, dead_zones=tuple(zones))
+            speed_ratios=ratios, dead_zones=tuple(zones),
+            tilt_vectors=np.array(tilts) if tilts else np.zeros((0, size)))
 
 
 @dataclass(frozen=True, eq=False)
@@ -177,7 +182,8 @@ class AssembledDrivetrain:
     mesh only a helical spread contact's constant tilting part); ``mesh_vectors`` (meshes, DOFs) the w of each mesh; ``stiffness_groups`` one matrix per shaft, bearing,
     coupling and support by name (they add up to ``structure_stiffness``); ``gyroscopic`` is per unit reference
     speed [rad/s]; ``dead_zones`` (element name, dead zone on the global DOFs) of every element with one, in
-    element order (a bearing's clearance: x, then y).
+    element order (a bearing's clearance: x, then y); ``tilt_vectors`` (meshes, DOFs) the w_z of each mesh whose
+    moments vary over the period (:meth:`GearMesh.varies`; zero for the others).
     """
 
     drivetrain: Drivetrain
@@ -191,6 +197,7 @@ class AssembledDrivetrain:
     stiffness_groups: dict[str, np.ndarray]
     speed_ratios: dict[str, float]
     dead_zones: tuple[tuple[str, DeadZone], ...] = ()
+    tilt_vectors: np.ndarray | None = None
     _cache: dict = field(default_factory=dict, repr=False, compare=False)
 
     @property

@@ -133,7 +133,7 @@ def reduced_backlash_system(system: BacklashSystem, cutoff_hz: float):
     b = basis.basis
     zones = tuple(replace(zone, vector=b.T @ zone.vector) for zone in system.dead_zones)
     return BacklashSystem(basis.reduce(system.linear), b.T @ system.mesh_vector, system.deviation, system.backlash,
-                          zones), basis
+                          zones, system.pattern_meshes, system.back_shift), basis
 
 
 def drivetrain_backlash_response(assembled: AssembledDrivetrain, state: MeshState | MeshTrain,

@@ -32,6 +32,7 @@ from thermogear.composition import DRIVETRAIN_HEAT, builtin
 from thermogear.drivetrain.assembly import Drivetrain
 from thermogear.drivetrain.case_layout import drivetrain_from_section
 from thermogear.drivetrain.heat import ModeShifts, WarmState, thermal_mode_shifts, warm_drivetrain
+from thermogear.drivetrain.mesh_contact import case_face_variations
 from thermogear.drivetrain.modes import DrivetrainModes, drivetrain_modes
 from thermogear.drivetrain.response import DrivetrainResponse, drivetrain_periodic_response, drivetrain_speed_sweep
 from thermogear.drivetrain.stages import stage_train
@@ -282,6 +283,7 @@ def case_drivetrain(case, models: tuple[str, ...] = (ELASTIC, THERMAL)) -> CaseD
         if expansion:
             warm_moduli = with_clearances(warm_drivetrain(cold, replace(warm, expansion_coefficient_per_k=0.0)),
                                           clearances)
+    drivetrains = case_face_variations(drivetrains, mesh_models, stage_models, points, ELASTIC)  # helical spread
     return CaseDrivetrain(section, case.dynamics, case.gear_pair.pinion.teeth, drivetrains, mesh_models, tuple(notes),
                           warm_moduli, stage_models if case.stages else {}, train.speeds, train.repeats, train.phases,
                           warm_state=warm_state)

@@ -36,7 +36,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from thermogear.drivetrain.elements import zero_matrix
-from thermogear.drivetrain.mesh_contact import MESH_CONTACTS, MeshContact
+from thermogear.drivetrain.mesh_contact import MESH_CONTACTS, FaceVariation, MeshContact
 from thermogear.drivetrain.point_elements import NodeLocation
 from thermogear.errors import CaseError
 from thermogear.helical.mesh_vector import helical_mesh_vector
@@ -57,7 +57,9 @@ class GearMesh:
     left), ``contact`` a :class:`~thermogear.drivetrain.mesh_contact.MeshContact` (default the point at mid-face),
     ``face_width`` b [m] (the spread contact's default ρ = b/√12), ``load_centre`` z̄ [m] from mid-face along +z
     and ``load_gyration`` ρ [m] of the spread contact (None: b/√12, the uniform face). ``stiffness`` and
-    ``damping`` are then transverse, K_t and c_t.
+    ``damping`` are then transverse, K_t and c_t. ``face_variation``: the spread contact's moments over the mesh
+    period (:class:`~thermogear.drivetrain.mesh_contact.FaceVariation`; None: held at their means), taken by the
+    periodic solvers as two more patterns of the mesh (:meth:`face_factors`).
     """
 
     name: str
@@ -76,6 +78,7 @@ class GearMesh:
     face_width: float = 0.0
     load_centre: float = 0.0
     load_gyration: float | None = None
+    face_variation: FaceVariation | None = None
 
     def __post_init__(self) -> None:
         for key in ("base_radius_1", "base_radius_2", "stiffness"):
@@ -103,6 +106,9 @@ class GearMesh:
             if not math.isfinite(value) or (key != "load_centre" and value < 0.0):
                 raise CaseError(f"{self.name}.{key}", getattr(self, key), ">= 0 m, finite" if key != "load_centre"
                                 else "finite [m]", "the contact's extent across the face")
+        if self.face_variation is not None and not isinstance(self.face_variation, FaceVariation):
+            raise CaseError(f"{self.name}.face_variation", type(self.face_variation).__name__,
+                            "a FaceVariation or None", "the moments of the spread contact over the mesh period")
         if self.gear_1.shaft == self.gear_2.shaft:
             raise CaseError(f"{self.name}.gear_2", self.gear_2.shaft, "a shaft other than gear 1's",
                             "a mesh joins two shafts")
@@ -141,6 +147,23 @@ class GearMesh:
             return zero_matrix(2)
         tilt = self.tilt_vector()
         return value * gyration**2 * np.outer(tilt, tilt)
+
+    def varies(self) -> bool:
+        """Whether the periodic solvers take this mesh's moments over the period (a :class:`FaceVariation` with a
+        contact that takes one): three stiffness patterns instead of one (:meth:`face_factors`)."""
+        return self.face_variation is not None and self.contact.varies
+
+    def face_factors(self, nodes: np.ndarray, stiffness: np.ndarray, damping: np.ndarray,
+                     excitation: np.ndarray) -> np.ndarray:
+        """(5, N): the factors per interval of the patterns w w_zᵀ + w_z wᵀ (stiffness k₁′, damping c₁′), w_z w_zᵀ
+        beyond its constant k̄ρ² (k₂′ − k̄ρ², c₂′ − c̄ρ²) and the force along w_z (the gaps' moment about the load
+        centre), from the state's ``stiffness`` k(τ) [N/m], ``damping`` c(τ) [N·s/m] and ``excitation`` Σk_je_j [N]
+        on the intervals of ``nodes`` (:mod:`thermogear.drivetrain.mesh_contact`, "The variation over the period")."""
+        first, second, gap = self.face_variation.on(nodes)
+        centre, gyration = self.contact.moments(self)
+        tilt = gyration**2 + second - 2.0 * centre * first
+        return np.array([stiffness * first, damping * first, stiffness * tilt - self.stiffness * gyration**2,
+                         damping * tilt - self.damping * gyration**2, stiffness * gap - centre * excitation])
 
     def torques(self, normal_load: float) -> tuple[float, float]:
         """Driving torque on gear 1 and load torque on gear 2 [N·m], global sense, in equilibrium with W [N]."""

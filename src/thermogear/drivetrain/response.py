@@ -89,14 +89,10 @@ def _periodic_system(assembled: AssembledDrivetrain, train: MeshTrain, problems,
         reduction = rigid_body_reduction(assembled.mass, assembled.connection_stiffness(
             means[0] if means.size == 1 else means), assembled.rigid_candidates(), damping)
     loads = np.array([item.normal_load for item in train.states])
-    vectors = np.array([reduction.project_vector(w) for w in assembled.mesh_vectors])
-    patterns = np.einsum("mi,mj->mij", vectors, vectors)
-    columns = [(problem.stiffness[grid.pieces[:, m]], problem.damping[grid.pieces[:, m]],
-                (problem.force_per_interval - load)[grid.pieces[:, m]])
-               for m, (problem, load) in enumerate(zip(problems, loads))]
-    stiffness, damping_factor, force = (np.column_stack([column[kind] for column in columns]) for kind in range(3))
-    if len(problems) == 1:  # one mesh: its own pattern and factors (the single-pattern form)
-        patterns, vectors = patterns[0], vectors[0]
+    patterns, damping_patterns, vectors, stiffness, damping_factor, force = _mesh_patterns(
+        assembled, reduction, problems, grid, loads)
+    if patterns.shape[0] == 1:  # one mesh of one pattern: its own pattern and factors (the single-pattern form)
+        patterns, damping_patterns, vectors = patterns[0], damping_patterns[0], vectors[0]
         stiffness, damping_factor, force = stiffness[:, 0], damping_factor[:, 0], force[:, 0]
     projected = {} if projected is None else projected
     if "mass" not in projected:
@@ -106,8 +102,53 @@ def _periodic_system(assembled: AssembledDrivetrain, train: MeshTrain, problems,
         mass=projected["mass"], stiffness=projected["stiffness"], damping=reduction.project(damping),
         force=reduction.project_vector(mesh_torque_forces(assembled, loads[0] if loads.size == 1 else loads)),
         nodes=grid.nodes, stiffness_pattern=patterns, stiffness_factor=stiffness,
-        damping_pattern=patterns, damping_factor=damping_factor, force_pattern=vectors, force_factor=force)
+        damping_pattern=damping_patterns, damping_factor=damping_factor, force_pattern=vectors, force_factor=force)
     return system, reduction
+
+
+def mesh_columns(assembled: AssembledDrivetrain) -> tuple[int, ...]:
+    """The mesh each pattern of the drivetrain's periodic system belongs to, by its first pattern's column: one
+    pattern per mesh, three for a mesh whose moments vary over the period (:meth:`GearMesh.varies`: w wᵀ, then
+    w w_zᵀ + w_z wᵀ and w_z w_zᵀ, :mod:`thermogear.drivetrain.mesh_contact`)."""
+    owners: list[int] = []
+    for mesh in assembled.drivetrain.meshes:
+        owners += [len(owners)] * (3 if mesh.varies() else 1)
+    return tuple(owners)
+
+
+def _mesh_patterns(assembled: AssembledDrivetrain, reduction: RigidBodyReduction, problems, grid: TrainGrid,
+                   loads: np.ndarray) -> tuple[np.ndarray, ...]:
+    """(stiffness patterns (P, n, n), damping patterns (P, n, n), force patterns (P, n), stiffness, damping and
+    force factors (N, P)) of the meshes on the reduced coordinates, in the order of :func:`mesh_columns`: a mesh's
+    k(τ) w wᵀ, c(τ) w wᵀ and (Σk_ie_i)(τ) w less its static load, and where its moments vary the two further
+    patterns of the face (:meth:`GearMesh.face_factors`; the force of the gaps' moment along w_z on the second)."""
+    vectors = np.array([reduction.project_vector(w) for w in assembled.mesh_vectors])
+    if not any(mesh.varies() for mesh in assembled.drivetrain.meshes):  # one rank-one pattern per mesh
+        patterns = np.einsum("mi,mj->mij", vectors, vectors)
+        columns = [(problem.stiffness[grid.pieces[:, m]], problem.damping[grid.pieces[:, m]],
+                    (problem.force_per_interval - load)[grid.pieces[:, m]])
+                   for m, (problem, load) in enumerate(zip(problems, loads))]
+        factors = (np.column_stack([column[kind] for column in columns]) for kind in range(3))
+        return (patterns, patterns, vectors, *factors)
+    stiffness_patterns, force_patterns, columns = [], [], []
+    for m, (mesh, problem, load) in enumerate(zip(assembled.drivetrain.meshes, problems, loads)):
+        w, index = vectors[m], grid.pieces[:, m]
+        excitation = problem.force_per_interval - load
+        stiffness_patterns.append(np.outer(w, w))
+        force_patterns.append(w)
+        columns.append((problem.stiffness[index], problem.damping[index], excitation[index]))
+        if not mesh.varies():
+            continue
+        tilt = reduction.project_vector(assembled.tilt_vectors[m])
+        k_first, c_first, k_tilt, c_tilt, moment = mesh.face_factors(problem.nodes, problem.stiffness,
+                                                                     problem.damping, excitation)
+        cross = np.outer(w, tilt)
+        stiffness_patterns += [cross + cross.T, np.outer(tilt, tilt)]
+        force_patterns += [tilt, tilt]
+        columns += [(k_first[index], c_first[index], moment[index]), (k_tilt[index], c_tilt[index], 0.0 * index)]
+    patterns = np.array(stiffness_patterns)
+    factors = (np.column_stack([column[kind] for column in columns]) for kind in range(3))
+    return (patterns, patterns, np.array(force_patterns), *factors)
 
 
 def drivetrain_backlash_system(assembled: AssembledDrivetrain,
@@ -136,11 +177,20 @@ def drivetrain_backlash_system(assembled: AssembledDrivetrain,
     if linear.pattern_count == 1:
         deviation = linear.force_factor / linear.stiffness_factor
         return BacklashSystem(linear, linear.force_pattern, deviation, states[0].backlash, tuple(zones)), reduction
-    deviation = linear.force_factor / linear.stiffness_factor  # (N, M): each mesh's e_j = Σk_ie_i / Σk_i
-    meshes = [MeshZone(linear.force_pattern[m], m, deviation[:, m], states[m].backlash)
-              for m in range(1, linear.pattern_count)]
-    return BacklashSystem(linear, linear.force_pattern[0], deviation[:, 0], states[0].backlash,
-                          tuple(meshes) + tuple(zones)), reduction
+    owners = mesh_columns(assembled)
+    firsts = sorted(set(owners))  # each mesh's own pattern w wᵀ: its dead zone is along w
+    deviation = {column: linear.force_factor[:, column] / linear.stiffness_factor[:, column]  # e_j = Σk_ie_i / Σk_i
+                 for column in firsts}
+    meshes = [MeshZone(linear.force_pattern[column], column, deviation[column], states[m].backlash)
+              for m, column in enumerate(firsts) if m > 0]
+    # on the back flanks every slice's gap grows by b: the force moves by −b·(k w + k₁′ w_z), along the mesh's own
+    # pattern and the face's first (its force pattern w_z), not the second
+    shift = linear.stiffness_factor.copy()
+    for column, owner in enumerate(owners):
+        if column - owner == 2:  # w_z w_zᵀ (mesh_columns' order)
+            shift[:, column] = 0.0
+    return BacklashSystem(linear, linear.force_pattern[0], deviation[0], states[0].backlash,
+                          tuple(meshes) + tuple(zones), owners, shift), reduction
 
 
 @dataclass(frozen=True, eq=False)
@@ -308,6 +358,10 @@ def _response(assembled: AssembledDrivetrain, train: MeshTrain, problems, grid: 
         own = grid.pieces[interval, column]
         excitation = problem.force_per_interval - state.normal_load
         force = problem.stiffness[own] * delta - excitation[own] + problem.damping[own] * rate
+        if mesh.varies():  # the face's first moment about the load centre strains the mesh with the relative tilt
+            k_first, c_first = mesh.face_factors(problem.nodes, problem.stiffness, problem.damping, excitation)[:2]
+            tilt = assembled.tilt_vectors[column]
+            force = force + k_first[own] * (displacement @ tilt) + c_first[own] * (velocity @ tilt)
         if len(problems) == 1:
             metrics = compute_metrics(problem, response.time, delta, rate, interval, response.multipliers)
         else:

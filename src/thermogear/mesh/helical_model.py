@@ -47,8 +47,8 @@ from thermogear.mesh.state import MeshState, mesh_state_from_arrays
 #: ``mesh_model`` below is a :class:`thermogear.mesh.model.MeshModel` (not imported: it imports this module).
 MeshModel = object
 
-__all__ = ["HelicalMeshPeriod", "helical_mesh_period", "helical_model_state", "operating_helical_pair",
-           "face_temperature_rise", "clear_cache"]
+__all__ = ["HelicalMeshPeriod", "helical_face_moments", "helical_mesh_period", "helical_model_state",
+           "operating_helical_pair", "face_temperature_rise", "clear_cache"]
 
 
 @dataclass(frozen=True)
@@ -278,6 +278,27 @@ def helical_mesh_period(mesh_model: MeshModel, load: float, points: int, slices:
     face = FaceLoad(contacts.z, contacts.phase, line_load, approach,
                     contacts.contacts.engaged_groups(load, contacts.group, slices) if face_stiffness else None)
     return HelicalMeshPeriod(contacts.helical, contacts.phase.copy(), load, engaged, approach, face, contacts.scale)
+
+
+def helical_face_moments(mesh_model: MeshModel, load: float, points: int,
+                         slices: int = DEFAULT_SLICES) -> np.ndarray:
+    """(5, points): the moments across the face of the slices in contact at F_bt = ``load`` [N] per mesh position
+    (the phases of :func:`helical_mesh_period`), about mid-face in the slice model's face coordinate (z_s − b/2,
+    z_s = 0 the end face a contact line leaves last, where the oil leaves the mesh): k₀ = Σk_j [N/m] (the
+    period's stiffness K_t), k₁ = Σk_jζ_j [N], k₂ = Σk_jζ_j² [N·m], Σk_je_j [N] (the excitation k₀δ − F_bt of
+    the unloaded deviations) and Σk_je_jζ_j [N·m] (their moment), over every slice entry on a contact line in the
+    zone of action that carries load (its gap e_j the profile deviation at its path position plus the lead's at its
+    place across the face). The drivetrain takes them as the spread contact's variation over the period
+    (:func:`thermogear.drivetrain.mesh_contact.face_variation`)."""
+    gaps = _cached(mesh_model, ("gaps", points, slices), lambda: _slice_gaps(mesh_model, points, slices))
+    contacts = _cached(mesh_model, ("slices", points, slices), lambda: _slice_contacts(mesh_model, points, slices))
+    _, carried = contacts.contacts.carried(load)
+    stiffness = np.where(carried > 0.0, contacts.contacts.stiffness, 0.0)
+    position = (gaps.z - 0.5 * gaps.helical.face_width)[contacts.group]
+    gap = np.where(carried > 0.0, contacts.contacts.gap, 0.0)
+    return np.array([stiffness.sum(axis=-1), np.sum(stiffness * position, axis=-1),
+                     np.sum(stiffness * position**2, axis=-1), np.sum(stiffness * gap, axis=-1),
+                     np.sum(stiffness * gap * position, axis=-1)])
 
 
 def helical_model_state(mesh_model: MeshModel, transverse_state: MeshState, speed: float, load: float,

@@ -174,8 +174,13 @@ def start_states_ndof(system: BacklashSystem, starts: int) -> np.ndarray:
     linear = system.linear
     n = linear.size
     widths = np.diff(linear.nodes) / linear.period
-    stiffness = linear.stiffness + float(widths @ linear.stiffness_factor) * linear.stiffness_pattern
-    force = linear.force + float(widths @ linear.force_factor) * linear.force_pattern
+    if linear.pattern_count == 1:
+        stiffness = linear.stiffness + float(widths @ linear.stiffness_factor) * linear.stiffness_pattern
+        force = linear.force + float(widths @ linear.force_factor) * linear.force_pattern
+    else:  # several patterns (a train, a face's moments): the period-mean system
+        pattern_k, _, pattern_f, factor_k, _, factor_f = linear.stacked()
+        stiffness = linear.stiffness + np.tensordot(widths @ factor_k, pattern_k, 1)
+        force = linear.force + (widths @ factor_f) @ pattern_f
     shape = np.linalg.solve(stiffness, system.mesh_vector)
     shape = shape / (system.mesh_vector @ shape)
     deflection = abs(float(system.mesh_vector @ np.linalg.solve(stiffness, force)))

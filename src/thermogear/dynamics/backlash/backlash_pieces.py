@@ -57,14 +57,22 @@ def contact_state_system(system, key: tuple) -> PiecewiseLinearSystem:
         shift = system.deviation - (system.backlash if region == _BACK else 0.0)
         return replace(linear, stiffness=stiffness, damping=damping, force=force, force_pattern=system.mesh_vector,
                        stiffness_factor=factor, force_factor=factor * shift)
-    # a train: every mesh its own column, each zeroed in free flight and shifted by its backlash on the back flanks
+    # a train: every mesh its own column, each zeroed in free flight and shifted by its backlash on the back flanks;
+    # a mesh's further patterns (system.pattern_meshes) alike, their force moved by −b·back_shift on the back flanks
     factors, forces = linear.stiffness_factor.copy(), np.empty_like(linear.stiffness_factor)
     columns = [(0, region == _FREE, region == _BACK, system.deviation, system.backlash)]
     columns += [(zone.column, side == 0, side == -1, zone.deviation, zone.backlash) for zone, side in meshes]
+    owners = np.asarray(system.pattern_meshes)
     for column, free, back, deviation, backlash in columns:
         if free:
             factors[:, column] = 0.0
         forces[:, column] = factors[:, column] * (deviation - (backlash if back else 0.0))
+        for further in np.flatnonzero((owners == column) & (np.arange(owners.size) != column)):
+            if free:
+                factors[:, further], forces[:, further] = 0.0, 0.0
+                continue
+            shift = linear.stiffness_factor[:, further] if system.back_shift is None else system.back_shift[:, further]
+            forces[:, further] = linear.force_factor[:, further] - (backlash * shift if back else 0.0)
     return replace(linear, stiffness=stiffness, damping=damping, force=force, stiffness_factor=factors,
                    force_factor=forces)
 

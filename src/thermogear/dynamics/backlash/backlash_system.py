@@ -26,13 +26,20 @@ class BacklashSystem:
     """The linear structure (``linear``: a :class:`PiecewiseLinearSystem` whose stiffness, damping and force
     patterns are w wᵀ, w wᵀ and w with factors k_j, c_j and k_j e_j — the mesh in driving contact) and the backlash
     b [m] of the mesh coordinate g = wᵀq − e_j; ``mesh_vector`` w and ``deviation`` e_j (N,) [m]; ``dead_zones``
-    further clearances (:class:`DeadZone`), included in the linear system as if in contact."""
+    further clearances (:class:`DeadZone`), included in the linear system as if in contact.
+
+    A mesh may own several patterns (e.g. the moments of a contact spread across a face): ``pattern_meshes`` gives,
+    per pattern of a multi-pattern system, the column of its mesh's own pattern (empty: every pattern a mesh of its
+    own); every pattern of a mesh loses its stiffness factor in free flight, and on the back flanks its force factor
+    moves by −b times ``back_shift`` (N, P) (None: the stiffness factor, the mesh's own pattern)."""
 
     linear: PiecewiseLinearSystem
     mesh_vector: np.ndarray
     deviation: np.ndarray
     backlash: float
     dead_zones: tuple[DeadZone, ...] = ()
+    pattern_meshes: tuple[int, ...] = ()
+    back_shift: np.ndarray | None = None
 
     def __post_init__(self) -> None:
         n, pieces = self.linear.size, self.linear.nodes.size - 1
@@ -42,10 +49,18 @@ class BacklashSystem:
                 raise ProblemError("dead_zones", type(zone).__name__,
                                    f"DeadZone or MeshZone with a vector of {n} entries",
                                    "one entry per DOF of the linear system")
+        count = self.linear.pattern_count
+        object.__setattr__(self, "pattern_meshes", tuple(self.pattern_meshes) or tuple(range(count)))
+        owners = self.pattern_meshes
+        if len(owners) != count or owners[0] != 0 or any(owners[owner] != owner for owner in owners):
+            raise ProblemError("pattern_meshes", owners, f"{count} columns, each the column of its mesh's own "
+                               "pattern (0 first)", "every pattern of the linear system belongs to one mesh")
         columns = sorted(zone.column for zone in self.dead_zones if isinstance(zone, MeshZone))
-        if columns != list(range(1, self.linear.pattern_count)):  # the own mesh is column 0, the train's the others
-            raise ProblemError("linear", f"{self.linear.pattern_count} meshes", f"1 + {len(columns)} MeshZone(s)",
-                               "each further mesh pattern of the linear system is a MeshZone of its column")
+        if columns != sorted(set(owners) - {0}):  # the own mesh is column 0, the train's the others
+            raise ProblemError("linear", f"{len(set(owners))} meshes", f"1 + {len(columns)} MeshZone(s)",
+                               "each further mesh of the linear system is a MeshZone of its own pattern's column")
+        if self.back_shift is not None:
+            object.__setattr__(self, "back_shift", checked_array("back_shift", self.back_shift, (pieces, count)))
         for zone in self.dead_zones:
             if isinstance(zone, MeshZone) and zone.deviation.shape != (pieces,):
                 raise ProblemError("mesh_zone.deviation", zone.deviation.shape, f"({pieces},)", "one per piece")

@@ -73,6 +73,42 @@ def _rank_one_vectors(system: PiecewiseLinearSystem) -> np.ndarray:
     return pattern_f
 
 
+def _rank_one_terms(system: PiecewiseLinearSystem, stiffness_means: np.ndarray) -> tuple[np.ndarray, ...]:
+    """(vectors v_r (R, n), stiffness, damping and force factors (N, R), stiffness means (R,)): the system's
+    patterns as rank-one terms. Patterns P_K = P_C = v vᵀ with v the force pattern are taken as they are (one term
+    each); otherwise (e.g. a mesh whose contact spreads across the face: w w_zᵀ + w_z wᵀ) each pattern P_K = P_C is
+    split into its eigenvectors, P = Σ λ_r u_r u_rᵀ, each a term with factors λ_r·k and λ_r·c and no force, and each
+    force pattern is a term of its own with force factor g and no stiffness: the load ℓ_r along v_r below is then
+    the same sum, term by term (ProblemError where P_K ≠ P_C)."""
+    pattern_k, pattern_c, pattern_f, factor_k, factor_c, factor_f = system.stacked()
+    try:
+        return _rank_one_vectors(system), factor_k, factor_c, factor_f, np.asarray(stiffness_means, dtype=float)
+    except ProblemError:
+        pass
+    vectors, columns_k, columns_c, columns_f, means = [], [], [], [], []
+    zero = np.zeros(factor_k.shape[0])
+    for index, pattern in enumerate(pattern_k):
+        scale = max(np.abs(pattern).max(), 1e-300)
+        if np.abs(pattern_c[index] - pattern).max() > 1e-9 * scale:
+            raise ProblemError("damping_pattern", f"pattern {index}", "P_C = P_K",
+                               "the truncation estimate splits each pattern into rank-one terms of both")
+        values, shapes = np.linalg.eigh(pattern)
+        for value, shape in zip(values, shapes.T):
+            if abs(value) > 1e-12 * scale:
+                vectors.append(shape)
+                columns_k.append(value * factor_k[:, index])
+                columns_c.append(value * factor_c[:, index])
+                columns_f.append(zero)
+                means.append(value * stiffness_means[index])
+        vectors.append(pattern_f[index])
+        columns_k.append(zero)
+        columns_c.append(zero)
+        columns_f.append(factor_f[:, index])
+        means.append(0.0)
+    return (np.array(vectors), np.column_stack(columns_k), np.column_stack(columns_c), np.column_stack(columns_f),
+            np.array(means))
+
+
 def truncation_error(system: PiecewiseLinearSystem, basis: ModalBasis, modes: MeanModes, time: np.ndarray,
                      displacement: np.ndarray, velocity: np.ndarray) -> TruncationError:
     """The error (module docstring) of a periodic response of ``system`` solved on ``basis``, given by its
@@ -82,8 +118,7 @@ def truncation_error(system: PiecewiseLinearSystem, basis: ModalBasis, modes: Me
     piece (linear between the samples, each segment's integral against e^{−iωt} exact: no jump smeared onto a grid);
     the smooth modal coordinates on a uniform grid of S − 1 points (rounded up to even) by cubic Hermite
     interpolation."""
-    vectors = _rank_one_vectors(system)
-    factor_k, factor_c, factor_f = system.stacked()[3:]
+    vectors, factor_k, factor_c, factor_f, stiffness_means = _rank_one_terms(system, modes.stiffness_means)
     time = np.asarray(time, dtype=float)
     points = max(4, 2 * (time.size // 2))  # the samples' count, even (one period's samples less its end)
     grid = np.arange(points) * (system.period / points)
@@ -91,6 +126,7 @@ def truncation_error(system: PiecewiseLinearSystem, basis: ModalBasis, modes: Me
     sampled, sampled_rate = _on_uniform_grid(time, displacement, velocity, grid)
     modal_rate = np.fft.rfft(modes.shapes.T @ system.mass @ sampled_rate, axis=1).T  # (H, n): the modal rates
     damping_means = factor_means(factor_c, system)
+    pattern_damping_means = factor_means(system.stacked()[4], system)
     coordinate = np.asarray(displacement, dtype=float) @ vectors.T  # (S, P): vᵀq at the samples
     rate = np.asarray(velocity, dtype=float) @ vectors.T
     # ℓ on each segment between samples, with the factors of the piece the segment lies in
@@ -98,7 +134,7 @@ def truncation_error(system: PiecewiseLinearSystem, basis: ModalBasis, modes: Me
     piece = np.clip(np.searchsorted(system.nodes, middle, side="right") - 1, 0, system.nodes.size - 2)
 
     def segment_load(at: slice) -> np.ndarray:
-        return (factor_f[piece] - (factor_k[piece] - modes.stiffness_means) * coordinate[at]
+        return (factor_f[piece] - (factor_k[piece] - stiffness_means) * coordinate[at]
                 - (factor_c[piece] - damping_means) * rate[at])
 
     load = _piecewise_linear_transform(time, segment_load(slice(0, -1)), segment_load(slice(1, None)), omega,
@@ -106,9 +142,9 @@ def truncation_error(system: PiecewiseLinearSystem, basis: ModalBasis, modes: Me
     # the factors on the grid for the error's own load (second order): the mean of the two sides at a node
     after = np.clip(np.searchsorted(system.nodes, grid, side="right") - 1, 0, system.nodes.size - 2)
     before = (np.searchsorted(system.nodes, grid, side="left") - 1) % (system.nodes.size - 1)
-    stiffness_change = 0.5 * (factor_k[before] + factor_k[after]) - modes.stiffness_means
+    stiffness_change = 0.5 * (factor_k[before] + factor_k[after]) - stiffness_means
     damping_change = 0.5 * (factor_c[before] + factor_c[after]) - damping_means
-    mean_damping = system.damping + np.einsum("m,mij->ij", damping_means, system.stacked()[1])
+    mean_damping = system.damping + np.einsum("m,mij->ij", pattern_damping_means, system.stacked()[1])
     coupling = modes.shapes.T @ mean_damping @ modes.shapes  # D = ΦᵀC̄Φ
     modal_damping = np.diag(coupling).copy()
     np.fill_diagonal(coupling, 0.0)  # D_off: the damping's coupling between modes, carried as a load
