@@ -223,8 +223,9 @@ class DrivetrainSection(Section):
     helical_contact: Literal["point", "spread"] = Field("point", description=(
         "where a mesh's stiffness acts across the face: 'point' (the default) a constant normal stiffness at the "
         "operating pitch point at mid-face, as other rotordynamics tools have; 'spread' the stiffness spread "
-        "across the face, which adds the tilting stiffness k̄·b²/12 of a uniform face about mid-face "
-        "(docs/drivetrain.md, 'A helical pair on two shafts'); applies to every mesh, spur ones too"))
+        "across the face: a helical mesh's load centre and tilting stiffness from its slices, varying over the "
+        "mesh period (a spur face's are constant, k̄·b²/12 about mid-face) (docs/helical.md, 'The variation over "
+        "the period in the drivetrain'); applies to every mesh, spur ones too"))
     maximum_element_length_mm: Annotated[float, Field(ge=1.0, le=2000.0, description=(
         "longest shaft element [mm] (nodes are also placed at every attachment)"))] = 25.0
     response_cutoff_hz: Annotated[float, Field(ge=100.0, le=1e7, description=(
