@@ -26,7 +26,7 @@ original coordinates). Knows nothing of gears: matrices only.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -72,11 +72,23 @@ class ModalBasis:
     eigenvalues: np.ndarray
     pairs: int
     condition: float
+    _exponentials: dict = field(default_factory=dict, repr=False)
 
     def exponential_blocks(self, time: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """e^{τΛ} as (a, b, r): the pairs' blocks [[a, b], [−b, a]] (pairs, 1) each, the real eigenvalues' r (·, 1)."""
         factors = np.exp(time * self.eigenvalues)[:, None]
         return factors[:self.pairs].real, factors[:self.pairs].imag, factors[self.pairs:].real
+
+    def exponential(self, time: float, scale: np.ndarray) -> np.ndarray:
+        """e^{τ·S X₀ S⁻¹} (m, m) = S W e^{τΛ} W⁻¹ S⁻¹ for the diagonal ``scale`` S (m,) of a chunk's balancing; the
+        product with W formed once per τ."""
+        if time not in self._exponentials:
+            real, imaginary, alone = self.exponential_blocks(time)
+            pairs, rows = self.pairs, self.inverse
+            blocks = np.vstack([real * rows[:pairs] + imaginary * rows[pairs:2 * pairs],
+                                real * rows[pairs:2 * pairs] - imaginary * rows[:pairs], alone * rows[2 * pairs:]])
+            self._exponentials[time] = self.vectors @ blocks
+        return self._exponentials[time] * (scale[:, None] / scale[None, :])
 
     def chain(self, parts, which: np.ndarray, total: np.ndarray,
               keep_starts: bool = False) -> tuple[np.ndarray, FactoredStarts | None]:

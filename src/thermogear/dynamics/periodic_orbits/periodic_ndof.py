@@ -26,7 +26,7 @@ sum over patterns, ``K_j = K₀ + Σ_m k_jm·P_K,m`` and likewise for C and f: t
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -122,9 +122,9 @@ def _exponentials(system: PiecewiseLinearSystem, distinct: np.ndarray,
 
 def _rank_route(system: PiecewiseLinearSystem, distinct: np.ndarray,
                 operators: tuple[np.ndarray, np.ndarray] | None = None,
-                least_pieces: int | None = None, mean_factors: np.ndarray | None = None) -> tuple | None:
+                least_pieces: int | None = None, mean: tuple[np.ndarray, np.ndarray] | None = None) -> tuple | None:
     """The arguments (X₀, U, C, t, V) of :func:`~thermogear.dynamics.linear_algebra.batched_exponential.
-    expm_of_rank_updates` for the pieces ``distinct`` (X₀ the piece of ``mean_factors``, default their mean), or None
+    expm_of_rank_updates` for the pieces ``distinct`` (``mean``: X₀'s factors and X₀; default their mean's), or None
     where they take the full exponentials (fewer than ``least_pieces`` pieces, default :data:`_RANK_ROUTE_PIECES`, or
     patterns of high rank: :func:`_piece_steps`)."""
     n = system.size
@@ -136,8 +136,8 @@ def _rank_route(system: PiecewiseLinearSystem, distinct: np.ndarray,
     if rank == 0 or rank * _RANK_ROUTE_RATIO > 2 * n + 1:
         return None
     pattern_k, pattern_c, pattern_f = system.stacked()[:3]
-    mean_factors = distinct[:, 1:].mean(axis=0) if mean_factors is None else mean_factors
-    mean = _with_factors(system, np.append(1.0, mean_factors)[None]).augmented_stack(inverse)[0]
+    mean_factors, mean = (distinct[:, 1:].mean(axis=0), None) if mean is None else mean
+    mean = _with_factors(system, np.append(1.0, mean_factors)[None]).augmented_stack(inverse)[0] if mean is None else mean
     left = np.zeros((2 * n + 1, range_basis.shape[1]))
     left[n:2 * n] = inverse @ range_basis
     shift = distinct[:, 1:] - mean_factors
@@ -154,20 +154,22 @@ def _rank_route(system: PiecewiseLinearSystem, distinct: np.ndarray,
 
 
 def _transitions(system: PiecewiseLinearSystem, distinct: np.ndarray, operators, which: np.ndarray,
-                 dense: bool = True, modal=None) -> DenseSteps | PartedSteps | None:
+                 dense: bool = True, modal=None, wholes: bool = False) -> DenseSteps | PartedSteps | None:
     """The exponentials of the pieces ``distinct`` (each piece of a chunk: ``which``) as their parts
     (:class:`~thermogear.dynamics.linear_algebra.sub_steps.PartedSteps`, O(q·m) numbers a piece) where the rank-update
     route takes them without squarings (any number of pieces: the parts are what is kept, not the matrices' cost), else
     as matrices (:class:`~thermogear.dynamics.linear_algebra.sub_steps.DenseSteps`; None without ``dense``). ``modal``
-    (an eigenbasis of the piece X₀ of some factors, those factors): the parts about X₀, their chain in its basis."""
+    (an eigenbasis of a piece X₀, (X₀'s factors, X₀)): the parts about X₀, their chain in its basis and
+    their shared exponentials from it (none for ``wholes``, which only chain)."""
     from thermogear.dynamics.linear_algebra.batched_exponential import RankUpdateExponentials, rank_update_parts
 
-    basis, mean_factors = modal if modal is not None else (None, None)
-    route = _rank_route(system, distinct, operators, least_pieces=1, mean_factors=mean_factors)
-    if route is not None and basis is not None:  # the chain needs only the shared exponentials' times
+    basis, mean = modal if modal is not None else (None, None)
+    route = _rank_route(system, distinct, operators, least_pieces=1, mean=mean)
+    if route is not None and basis is not None:  # the shared exponentials from the basis (the wholes need none)
         parts = rank_update_parts(*route, shared=False)
         if isinstance(parts, RankUpdateExponentials) and not parts.squarings:
-            return PartedSteps(parts, which, basis)
+            shared = None if wholes else np.stack([basis.exponential(time, parts.scale) for time in parts.times])
+            return PartedSteps(replace(parts, exponentials=shared), which, basis)
     parts = None if route is None else rank_update_parts(*route)
     if isinstance(parts, RankUpdateExponentials) and not parts.squarings:
         return PartedSteps(parts, which)
@@ -252,8 +254,6 @@ MODAL_CHAIN = True
 def _with_factors(system: PiecewiseLinearSystem, rows: np.ndarray) -> PiecewiseLinearSystem:
     """The system's matrices with the factors of ``rows`` (width, k, c, g; per mesh where several) as its pieces
     (unit widths)."""
-    from dataclasses import replace
-
     if system.stiffness_pattern.ndim == 2:
         return replace(system, nodes=np.arange(rows.shape[0] + 1, dtype=float), stiffness_factor=rows[:, 1],
                        damping_factor=rows[:, 2], force_factor=rows[:, 3])
@@ -322,18 +322,18 @@ def chunked_transitions(system: PiecewiseLinearSystem, rows: np.ndarray, where: 
     ``dense_steps`` False (the caller forms them in a pass of its own), the wholes None without ``wholes``."""
     chunk_pieces = max(1, CHUNK_BYTES // (8 * (2 * system.size + 1) ** 2))
     operators = (_mass_inverse(system), _pattern_range(system))
-    modal, mean_factors = None, rows[:, 1:].mean(axis=0)  # the wholes about one mean piece of the period
-    route = _rank_route(system, rows[:1], operators, 1, mean_factors) if wholes and MODAL_CHAIN else None
-    basis = None if route is None else modal_basis(route[0], where.size)  # their chain in its eigenbasis
-    modal = None if basis is None else (basis, mean_factors)
+    mean_factors = rows[:, 1:].mean(axis=0)  # every piece about one mean piece of the period, chained in its eigenbasis
+    route = _rank_route(system, rows[:1], operators, 1, (mean_factors, None)) if MODAL_CHAIN else None
+    basis = None if route is None else modal_basis(route[0], where.size)
+    modal = None if basis is None else (basis, (mean_factors, route[0]))
     for first in range(0, where.size, chunk_pieces):
         unique, inverse = np.unique(where[first:first + chunk_pieces], return_inverse=True)
         chunk = rows[unique]
         whole = chunk.copy()
         whole[:, 0] *= samples
         which = inverse.ravel()
-        yield (first, _transitions(system, whole, operators, which, modal=modal) if wholes else None,
-               _transitions(system, chunk, operators, which, dense_steps))
+        yield (first, _transitions(system, whole, operators, which, modal=modal, wholes=True) if wholes else None,
+               _transitions(system, chunk, operators, which, dense_steps, modal))
 
 
 def _sample_times(system: PiecewiseLinearSystem, samples: int) -> np.ndarray:
