@@ -95,7 +95,7 @@ class ModalBasis:
         """(X_{c−1}···X₀·``total`` (m, m), the products before each piece as :class:`FactoredStarts` where
         ``keep_starts``) for the pieces ``which`` (c,) of ``parts`` (a :class:`~thermogear.dynamics.linear_algebra.
         batched_exponential.RankUpdateExponentials` without squarings, of this basis' X₀, with its ``times``)."""
-        size, pairs = total.shape[0], self.pairs
+        size = total.shape[0]
         used, local = np.unique(which, return_inverse=True)
         scale = parts.scale  # the chunk's balancing D_c
         count, rank = used.size, parts.left.shape[2]
@@ -104,18 +104,17 @@ class ModalBasis:
         left = left.reshape(size, count, rank).transpose(1, 0, 2)
         right = ((parts.right[used] * scale[None, None, :]).reshape(count * rank, size) @ self.vectors
                  ).reshape(count, rank, size)
-        blocks = [self.exponential_blocks(time) for time in parts.times]
+        from thermogear.dynamics.linear_algebra.modal_kernel import add_block_product
+
+        blocks = [tuple(np.ascontiguousarray(factor[:, 0]) for factor in self.exponential_blocks(time))
+                  for time in parts.times]
         coordinates = self.inverse @ total
         starts = np.empty((which.size, size, size)) if keep_starts else None
         for index, piece in enumerate(local.ravel()):
             if starts is not None:
                 starts[index] = coordinates
-            real, imaginary, alone = blocks[parts.which[used[piece]]]
-            cosine, sine = coordinates[:pairs], coordinates[pairs:2 * pairs]
             following = left[piece] @ (right[piece] @ coordinates)
-            following[:pairs] += real * cosine + imaginary * sine
-            following[pairs:2 * pairs] += real * sine - imaginary * cosine
-            following[2 * pairs:] += alone * coordinates[2 * pairs:]
+            add_block_product(following, coordinates, *blocks[parts.which[used[piece]]])
             coordinates = following
         return self.vectors @ coordinates, None if starts is None else FactoredStarts(self.vectors, starts)
 
