@@ -95,6 +95,8 @@ class ModalBasis:
         """(X_{c−1}···X₀·``total`` (m, m), the products before each piece as :class:`FactoredStarts` where
         ``keep_starts``) for the pieces ``which`` (c,) of ``parts`` (a :class:`~thermogear.dynamics.linear_algebra.
         batched_exponential.RankUpdateExponentials` without squarings, of this basis' X₀, with its ``times``)."""
+        from thermogear.dynamics.linear_algebra.modal_kernel import add_block_product
+
         size = total.shape[0]
         used, local = np.unique(which, return_inverse=True)
         scale = parts.scale  # the chunk's balancing D_c
@@ -104,19 +106,17 @@ class ModalBasis:
         left = left.reshape(size, count, rank).transpose(1, 0, 2)
         right = ((parts.right[used] * scale[None, None, :]).reshape(count * rank, size) @ self.vectors
                  ).reshape(count, rank, size)
-        from thermogear.dynamics.linear_algebra.modal_kernel import add_block_product
-
         blocks = [tuple(np.ascontiguousarray(factor[:, 0]) for factor in self.exponential_blocks(time))
                   for time in parts.times]
-        coordinates = self.inverse @ total
-        starts = np.empty((which.size, size, size)) if keep_starts else None
+        # each product written where it is kept: the next piece's start (the last one apart)
+        starts = np.empty((which.size + 1, size, size)) if keep_starts else np.empty((2, size, size))
+        coordinates = np.matmul(self.inverse, total, out=starts[0])
         for index, piece in enumerate(local.ravel()):
-            if starts is not None:
-                starts[index] = coordinates
-            following = left[piece] @ (right[piece] @ coordinates)
+            following = starts[index + 1] if keep_starts else starts[(index + 1) % 2]
+            np.matmul(left[piece], right[piece] @ coordinates, out=following)
             add_block_product(following, coordinates, *blocks[parts.which[used[piece]]])
             coordinates = following
-        return self.vectors @ coordinates, None if starts is None else FactoredStarts(self.vectors, starts)
+        return self.vectors @ coordinates, FactoredStarts(self.vectors, starts[:-1]) if keep_starts else None
 
 
 def modal_basis(base: np.ndarray, pieces: int, tolerance: float = ROUTE_TOLERANCE) -> ModalBasis | None:
