@@ -65,13 +65,14 @@ def left_product(rows: np.ndarray, starts) -> np.ndarray:
 class ModalBasis:
     """X₀ = W Λ W⁻¹ in real form: ``vectors`` W (m, m) (the real and imaginary parts of the ``pairs`` eigenvectors of
     positive imaginary part, then the real eigenvectors; in the original coordinates), ``inverse`` W⁻¹, the
-    ``eigenvalues`` (pairs + reals,) complex in the same order, ``condition`` κ₁(W)."""
+    ``eigenvalues`` (pairs + reals,) complex in the same order, ``condition`` κ₁(W), ``base`` X₀ itself."""
 
     vectors: np.ndarray
     inverse: np.ndarray
     eigenvalues: np.ndarray
     pairs: int
     condition: float
+    base: np.ndarray
     _exponentials: dict = field(default_factory=dict, repr=False)
 
     def exponential_blocks(self, time: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -80,14 +81,14 @@ class ModalBasis:
         return factors[:self.pairs].real, factors[:self.pairs].imag, factors[self.pairs:].real
 
     def exponential(self, time: float, scale: np.ndarray) -> np.ndarray:
-        """e^{τ·S X₀ S⁻¹} (m, m) = S W e^{τΛ} W⁻¹ S⁻¹ for the diagonal ``scale`` S (m,) of a chunk's balancing; the
-        product with W formed once per τ."""
+        """e^{τ·S X₀ S⁻¹} (m, m) for the diagonal ``scale`` S (m,) of a chunk's balancing (powers of two: exact), e^{τX₀}
+        taken once per τ by the Taylor route of :func:`~thermogear.dynamics.linear_algebra.batched_exponential.
+        batched_expm` as the chunks took it each. Not from the eigenbasis: W e^{τΛ} W⁻¹ would spread κ₁(W)·u of rounding
+        into coordinates X₀ barely couples (a spur pair's axial motion), where the Taylor products keep it small."""
+        from thermogear.dynamics.linear_algebra.batched_exponential import batched_expm
+
         if time not in self._exponentials:
-            real, imaginary, alone = self.exponential_blocks(time)
-            pairs, rows = self.pairs, self.inverse
-            blocks = np.vstack([real * rows[:pairs] + imaginary * rows[pairs:2 * pairs],
-                                real * rows[pairs:2 * pairs] - imaginary * rows[:pairs], alone * rows[2 * pairs:]])
-            self._exponentials[time] = self.vectors @ blocks
+            self._exponentials[time] = batched_expm(time * self.base)
         return self._exponentials[time] * (scale[:, None] / scale[None, :])
 
     def chain(self, parts, which: np.ndarray, total: np.ndarray,
@@ -145,4 +146,4 @@ def modal_basis(base: np.ndarray, pieces: int, tolerance: float = ROUTE_TOLERANC
     if not np.isfinite(condition) or condition * pieces * _UNIT_ROUNDOFF > tolerance:
         return None
     return ModalBasis(scale[:, None] * balanced, inverse / scale[None, :],
-                      np.concatenate([values[upper], values[real]]), int(upper.sum()), condition)
+                      np.concatenate([values[upper], values[real]]), int(upper.sum()), condition, base)
