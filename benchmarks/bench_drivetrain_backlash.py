@@ -6,8 +6,15 @@ memory of the process).
 
 Run: python benchmarks/bench_drivetrain_backlash.py [--full] [SPEED_RPM ...]   (--full: also every DOF, ~30 s+)
 Prints a table and writes benchmarks/results/bench_drivetrain_backlash.json. With --run-only: only the two
-``thermogear run`` processes, interleaved twice, with the user's CPU and peak memory as ratios to fzg_rig_type_c's
-(benchmarks/results/bench_user_drivetrain_run.json).
+``thermogear run`` processes, interleaved twice, with the user's CPU and peak memory as ratios to fzg_rig_type_c's,
+and the chain routes below (benchmarks/results/bench_user_drivetrain_run.json).
+
+The chain routes (every run): the user's drivetrain's backlash response of the elastic model at the case's speed
+(as ``run`` solves it, the start-up check included: 1024 pieces of 83 DOF on the chunked route) with the whole
+pieces multiplied in the parts' own coordinates (``MODAL_CHAIN`` False: O(m³) a piece, as before the modal chain;
+the start-up projector's factored starts need the modal route, so it forms them) and in the modal coordinates of one
+mean piece (True, the default), interleaved twice in this process: CPU of each, their
+ratio, and the relative difference of Kv and DTE RMS between the two.
 
 Per speed (the elastic mesh model's state, the case's ``points_per_period`` intervals): CPU (user + sys of this
 process) and wall seconds of ``drivetrain_backlash_response`` with ``cutoff_hz`` None (every DOF) and with the
@@ -117,6 +124,40 @@ def _run_process(case: str) -> dict:
             "peak_memory_mb": usage.ru_maxrss / 1024.0, "exit_code": child.returncode}
 
 
+def chain_route_rows() -> list[dict]:
+    """The user's drivetrain's backlash response (elastic model, the case's speed, as ``run`` solves it) with the
+    whole pieces' chain in the original and in the modal coordinates, interleaved twice: CPU seconds, the ratio of
+    each modal solve to the original-coordinates solve just before it, and the relative difference of Kv and DTE RMS
+    (the routes differ only in rounding)."""
+    from thermogear.case import load_case
+    from thermogear.drivetrain.case_model import case_drivetrain
+    from thermogear.dynamics.periodic_orbits import periodic_ndof
+
+    warnings.simplefilter("ignore")
+    case = load_case(str(Path(__file__).resolve().parents[1] / "tests" / "data" / "user_drivetrain.toml"))
+    rows = []
+    try:  # an untimed solve first: the process's first one loads numba's compiled kernels (about 1.5 s)
+        case_drivetrain(case, ("elastic",)).backlash_response("elastic")
+        for _ in range(2):
+            for modal in (False, True):
+                periodic_ndof.MODAL_CHAIN = modal
+                built = case_drivetrain(case, ("elastic",))  # afresh: nothing of the other route's solve is kept
+                response, cpu, wall = _timed(lambda: built.backlash_response("elastic"))
+                row = {"modal_chain": modal, "cpu_s": cpu, "wall_s": wall, "kv": response.kv,
+                       "dte_rms": response.metrics.get("dte_rms")}
+                if modal:
+                    before = rows[-1]
+                    row.update(cpu_over_original=cpu / before["cpu_s"], kv_relative=_relative(row["kv"], before["kv"]),
+                               dte_rms_relative=_relative(row["dte_rms"], before["dte_rms"]))
+                rows.append(row)
+                print(f"chain {'modal   ' if modal else 'original'} CPU {cpu:6.3f} s  wall {wall:6.3f} s  Kv {row['kv']}"
+                      + (f"  ({row['cpu_over_original']:.2f}× the original's CPU; Kv, DTE RMS differ by "
+                         f"{row['kv_relative']:.1e}, {row['dte_rms_relative']:.1e})" if modal else ""), flush=True)
+    finally:
+        periodic_ndof.MODAL_CHAIN = True
+    return rows
+
+
 def run_command_rows() -> list[dict]:
     """``thermogear run`` on the user's drivetrain and on fzg_rig_type_c, interleaved twice: wall, CPU, memory, and
     each user run's CPU and peak memory as ratios to the fzg_rig_type_c run just before it (issue 36's targets:
@@ -141,10 +182,10 @@ def run_command_rows() -> list[dict]:
 if __name__ == "__main__":
     if "--run-only" in sys.argv:  # only the `thermogear run` rows (issue 36's user drivetrain)
         RESULTS.mkdir(exist_ok=True)
-        (RESULTS / "bench_user_drivetrain_run.json").write_text(json.dumps({"run": run_command_rows()}, indent=2),
-                                                                 encoding="utf-8")
+        measured = {"run": run_command_rows(), "chain_routes": chain_route_rows()}
+        (RESULTS / "bench_user_drivetrain_run.json").write_text(json.dumps(measured, indent=2), encoding="utf-8")
         sys.exit(0)
     chosen = tuple(float(value) for value in sys.argv[1:] if value != "--full") or SPEEDS_RPM
-    results = {"speeds": main(chosen), "run": run_command_rows()}
+    results = {"speeds": main(chosen), "run": run_command_rows(), "chain_routes": chain_route_rows()}
     RESULTS.mkdir(exist_ok=True)
     (RESULTS / "bench_drivetrain_backlash.json").write_text(json.dumps(results, indent=2), encoding="utf-8")

@@ -95,8 +95,10 @@ def test_the_chunked_solve_with_and_without_the_exponentials_parts(monkeypatch, 
     if not parted:
         monkeypatch.setattr(periodic, "_RANK_ROUTE_RATIO", 10**9)
     rows, where = periodic.grouped_pieces(system, 2)
-    first_steps = next(periodic.chunked_transitions(system, rows, where, 2, dense_steps=False))[2]
+    first_wholes, first_steps = next(periodic.chunked_transitions(system, rows, where, 2, dense_steps=False))[1:]
     assert (first_steps is not None) == parted
+    # parted, the whole pieces chain in the modal coordinates of the period's mean piece (its guard passes here)
+    assert (getattr(first_wholes, "modal", None) is not None) == parted
     projector = MotionProjector(system, 2, np.eye(2 * system.size)[:1])
     response = periodic_response(system, samples_per_piece=2, observer=projector.add)
     reference = _reference_orbit(system, 2)

@@ -112,14 +112,18 @@ class RankUpdateExponentials:
     is D⁻¹·(E_{which[j]} + L_j·R_j)^(2^squarings)·D, with ``exponentials`` E (k, m, m) the shared e^{t X₀} of the k
     distinct scaled times (balanced), ``which`` (N,), ``left`` L (N, m, q), ``right`` R (N, q, m) the rank-q
     update of each piece (module docstring) and ``scale`` the diagonal of D (m,). Without squarings a piece acts on
-    a vector at O(m² + q·m) without its matrix being formed (:mod:`~thermogear.dynamics.linear_algebra.sub_steps`)."""
+    a vector at O(m² + q·m) without its matrix being formed (:mod:`~thermogear.dynamics.linear_algebra.sub_steps`).
+    ``times`` (k,): E_k = e^{τ_k·D X₀ D⁻¹} of the unit-width X₀ the parts were formed from, scaled by 2^−squarings (for
+    :mod:`~thermogear.dynamics.linear_algebra.modal_chain`, which needs only them: ``exponentials`` is None where they
+    were not formed, :func:`rank_update_parts`)."""
 
-    exponentials: np.ndarray
+    exponentials: np.ndarray | None
     which: np.ndarray
     left: np.ndarray
     right: np.ndarray
     scale: np.ndarray
     squarings: int
+    times: np.ndarray | None = None
 
     def __len__(self) -> int:
         return self.left.shape[0]
@@ -146,9 +150,11 @@ def expm_of_rank_updates(base: np.ndarray, left: np.ndarray, right: np.ndarray, 
 
 
 def rank_update_parts(base: np.ndarray, left: np.ndarray, right: np.ndarray, times: np.ndarray,
-                      rows: np.ndarray | None = None) -> RankUpdateExponentials | np.ndarray:
+                      rows: np.ndarray | None = None, shared: bool = True) -> RankUpdateExponentials | np.ndarray:
     """:func:`expm_of_rank_updates` held as its parts (:class:`RankUpdateExponentials`; an (N, m, m) array where
-    there is nothing to hold: no pieces, or every time zero)."""
+    there is nothing to hold: no pieces, or every time zero). Without ``shared`` the shared exponentials are not
+    formed (``exponentials`` None; their ``times`` are: for a caller that takes e^{τX₀} from an eigenbasis of X₀,
+    :mod:`~thermogear.dynamics.linear_algebra.modal_chain`)."""
     base, left = np.asarray(base, dtype=float), np.asarray(left, dtype=float)
     right, times = np.asarray(right, dtype=float), np.asarray(times, dtype=float)
     size = base.shape[0]
@@ -207,6 +213,7 @@ def rank_update_parts(base: np.ndarray, left: np.ndarray, right: np.ndarray, tim
     weighted = (left_blocks.reshape(count * size, degree, rank).transpose(0, 2, 1).reshape(count * size * rank, degree)
                 @ hankel).reshape(count * size, rank, degree).transpose(0, 2, 1).reshape(count, size, degree * rank)
     distinct, where = np.unique(times, return_inverse=True)
-    exponentials = batched_expm(distinct[:, None, None] * base[None])  # (equal widths: one, added without a copy)
+    # (equal widths: one, added without a copy)
+    exponentials = batched_expm(distinct[:, None, None] * base[None]) if shared else None
     return RankUpdateExponentials(exponentials, where.ravel(), weighted, right_blocks.reshape(count, degree * rank, size),
-                                  scale, squarings)
+                                  scale, squarings, distinct * factor)

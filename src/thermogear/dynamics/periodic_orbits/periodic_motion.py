@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from thermogear.dynamics.linear_algebra.modal_chain import left_product
 from thermogear.dynamics.linear_algebra.sub_steps import as_steps
 from thermogear.dynamics.periodic_orbits.periodic_ndof import PiecewiseLinearSystem, chunked_transitions, grouped_pieces
 from thermogear.errors import ProblemError
@@ -29,8 +30,7 @@ def motion_projections(system: PiecewiseLinearSystem, state: np.ndarray, periods
     grouped, where = grouped_pieces(system, int(samples_per_piece))
     total = np.eye(2 * system.size + 1)
     for first, wholes, steps in chunked_transitions(system, grouped, where, int(samples_per_piece)):
-        starts = np.empty((len(wholes), total.shape[0], total.shape[0]))
-        total = wholes.chain(total, starts)  # as the chunked periodic solve forms them for its observer
+        total, starts = wholes.chain_starts(total)  # as the chunked periodic solve forms them for its observer
         projector.add(first, steps, starts, total)
     return projector.projections(state, periods)
 
@@ -64,7 +64,8 @@ class MotionProjector:
 
     def add(self, first: int, steps, starts: np.ndarray | None = None, end: np.ndarray | None = None) -> None:
         """Take the sub-step transitions ``steps`` of the pieces first … first + c − 1 (the next chunk: a (c, 2n+1,
-        2n+1) array or a :mod:`~thermogear.dynamics.linear_algebra.sub_steps` form) with ``starts`` (c, 2n+1, 2n+1) the
+        2n+1) array or a :mod:`~thermogear.dynamics.linear_algebra.sub_steps` form) with ``starts`` (c, 2n+1, 2n+1, or
+        :class:`~thermogear.dynamics.linear_algebra.modal_chain.FactoredStarts`) the
         transitions from the period's start to each piece's start and ``end`` the one to the chunk's end, as the caller
         formed them (None: formed here from the whole transitions of
         :func:`~thermogear.dynamics.periodic_orbits.periodic_ndof.
@@ -80,16 +81,19 @@ class MotionProjector:
             while start < first:
                 self._transition = wholes.chain(self._transition)
                 start, wholes, _ = next(self._wholes)
-            starts = np.empty((len(wholes), *self._transition.shape))
-            end = wholes.chain(self._transition, starts)
+            end, starts = wholes.chain_starts(self._transition)
         if len(starts) != len(steps):
             raise ProblemError("starts", len(starts), f"= {len(steps)}", "one start transition per piece")
-        count = len(steps)
+        count, rows = len(steps), self._augmented.shape[0]
         current = np.broadcast_to(self._augmented, (count, *self._augmented.shape))
+        samples = np.empty((count, self.samples, *self._augmented.shape))
         for sample in range(self.samples):  # every piece of the chunk at once
-            self._transfer[first:first + count, sample] = current @ starts
+            samples[:, sample] = current
             if sample + 1 < self.samples:
                 current = steps.apply_left_all(current)
+        # every sample's rows of a piece against its start transition in one product (each start read once)
+        transfer = left_product(samples.reshape(count, self.samples * rows, -1), starts)
+        self._transfer[first:first + count] = transfer.reshape(count, self.samples, rows, -1)
         self._transition, self._fed = end, first + count
 
     def projections(self, state: np.ndarray, periods: int) -> np.ndarray:

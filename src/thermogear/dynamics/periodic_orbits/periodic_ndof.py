@@ -26,10 +26,11 @@ sum over patterns, ``K_j = K₀ + Σ_m k_jm·P_K,m`` and likewise for C and f: t
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
+from thermogear.dynamics.linear_algebra.modal_chain import modal_basis
 from thermogear.dynamics.linear_algebra.matrix_chains import (block_products as _blocks, ordered_product,
                                                               power as _power, states_at_nodes as _orbit_nodes)
 from thermogear.dynamics.linear_algebra.piece_groups import PIECE_TOLERANCE, group_rows
@@ -38,8 +39,7 @@ from thermogear.dynamics.periodic_orbits.periodic_runs import by_runs, floquet, 
 from thermogear.dynamics.problems.piecewise_system import PiecewiseLinearSystem
 from thermogear.errors import ProblemError
 
-__all__ = ["RUN_ROUTE_SIZE", "PiecewiseLinearSystem", "PeriodicResponse", "chunked_transitions",
-           "grouped_pieces",
+__all__ = ["RUN_ROUTE_SIZE", "PiecewiseLinearSystem", "PeriodicResponse", "chunked_transitions", "grouped_pieces",
            "monodromy", "ordered_product", "periodic_response", "piece_steps"]
 
 
@@ -81,9 +81,9 @@ def _piece_steps(system: PiecewiseLinearSystem, samples: int,
     largest magnitude: :func:`~thermogear.dynamics.linear_algebra.piece_groups.group_rows`, whose docstring bounds the
     effect) share one exponential, taken once (a square-wave or piecewise-constant k(τ) of a few levels needs a few
     exponentials for any number of pieces, also where a table repeats its levels only to the last bits).
-    When the patterns have low rank r (a gear mesh: r = 1, everything acts through w), every piece is the
-    mean matrix plus a rank-r term, and
-    :func:`~thermogear.dynamics.linear_algebra.batched_exponential.expm_of_rank_updates` forms all of them at O(r·n²)
+    When the patterns have low rank r (a gear mesh: r = 1, everything acts through w), every piece is the mean matrix
+    plus a rank-r term, and :func:`~thermogear.dynamics.linear_algebra.batched_exponential.expm_of_rank_updates` forms
+    all of them at O(r·n²)
     each instead of the O(n³) of a full Taylor polynomial
     (:func:`~thermogear.dynamics.linear_algebra.batched_exponential.batched_expm`); below ``_RANK_ROUTE_PIECES``
     distinct pieces the full exponentials cost little and keep Al-Mohy & Higham's tighter scaling, so they are used.
@@ -107,8 +107,7 @@ def _exponentials(system: PiecewiseLinearSystem, distinct: np.ndarray,
     ``distinct`` (:func:`grouped_pieces`; the routes: :func:`_piece_steps`); ``operators`` (M⁻¹, the patterns' range).
     ``powers``: for a few large pieces over commensurate durations, the powers of their common step instead
     (:class:`~thermogear.dynamics.linear_algebra.shared_pade.SharedPowers`, which the run route continues: no sub-step
-    exponential
-    and its squarings formed apart)."""
+    exponential and its squarings formed apart)."""
     from thermogear.dynamics.linear_algebra.batched_exponential import batched_expm, expm_of_rank_updates
 
     route = _rank_route(system, distinct, operators)
@@ -123,11 +122,11 @@ def _exponentials(system: PiecewiseLinearSystem, distinct: np.ndarray,
 
 def _rank_route(system: PiecewiseLinearSystem, distinct: np.ndarray,
                 operators: tuple[np.ndarray, np.ndarray] | None = None,
-                least_pieces: int | None = None) -> tuple | None:
-    """The arguments (X₀, U, C, t, V) of
-    :func:`~thermogear.dynamics.linear_algebra.batched_exponential.expm_of_rank_updates` for the pieces ``distinct``, or
-    None where they take the full exponentials (fewer than ``least_pieces`` pieces, or
-    patterns of high rank: :func:`_piece_steps`; default :data:`_RANK_ROUTE_PIECES`)."""
+                least_pieces: int | None = None, mean: tuple[np.ndarray, np.ndarray] | None = None) -> tuple | None:
+    """The arguments (X₀, U, C, t, V) of :func:`~thermogear.dynamics.linear_algebra.batched_exponential.
+    expm_of_rank_updates` for the pieces ``distinct`` (``mean``: X₀'s factors and X₀; default their mean's), or None
+    where they take the full exponentials (fewer than ``least_pieces`` pieces, default :data:`_RANK_ROUTE_PIECES`, or
+    patterns of high rank: :func:`_piece_steps`)."""
     n = system.size
     if distinct.shape[0] < max(1, _RANK_ROUTE_PIECES if least_pieces is None else least_pieces):
         return None
@@ -137,8 +136,8 @@ def _rank_route(system: PiecewiseLinearSystem, distinct: np.ndarray,
     if rank == 0 or rank * _RANK_ROUTE_RATIO > 2 * n + 1:
         return None
     pattern_k, pattern_c, pattern_f = system.stacked()[:3]
-    mean_factors = distinct[:, 1:].mean(axis=0)
-    mean = _with_factors(system, np.append(1.0, mean_factors)[None]).augmented_stack(inverse)[0]
+    mean_factors, mean = (distinct[:, 1:].mean(axis=0), None) if mean is None else mean
+    mean = _with_factors(system, np.append(1.0, mean_factors)[None]).augmented_stack(inverse)[0] if mean is None else mean
     left = np.zeros((2 * n + 1, range_basis.shape[1]))
     left[n:2 * n] = inverse @ range_basis
     shift = distinct[:, 1:] - mean_factors
@@ -155,15 +154,22 @@ def _rank_route(system: PiecewiseLinearSystem, distinct: np.ndarray,
 
 
 def _transitions(system: PiecewiseLinearSystem, distinct: np.ndarray, operators, which: np.ndarray,
-                 dense: bool = True) -> DenseSteps | PartedSteps | None:
+                 dense: bool = True, modal=None, wholes: bool = False) -> DenseSteps | PartedSteps | None:
     """The exponentials of the pieces ``distinct`` (each piece of a chunk: ``which``) as their parts
     (:class:`~thermogear.dynamics.linear_algebra.sub_steps.PartedSteps`, O(q·m) numbers a piece) where the rank-update
     route takes them without squarings (any number of pieces: the parts are what is kept, not the matrices' cost), else
-    as
-    matrices (:class:`~thermogear.dynamics.linear_algebra.sub_steps.DenseSteps`; None without ``dense``)."""
+    as matrices (:class:`~thermogear.dynamics.linear_algebra.sub_steps.DenseSteps`; None without ``dense``). ``modal``
+    (an eigenbasis of a piece X₀, (X₀'s factors, X₀)): the parts about X₀, their chain in its basis and
+    their shared exponentials from it (none for ``wholes``, which only chain)."""
     from thermogear.dynamics.linear_algebra.batched_exponential import RankUpdateExponentials, rank_update_parts
 
-    route = _rank_route(system, distinct, operators, least_pieces=1)
+    basis, mean = modal if modal is not None else (None, None)
+    route = _rank_route(system, distinct, operators, least_pieces=1, mean=mean)
+    if route is not None and basis is not None:  # the shared exponentials from the basis (the wholes need none)
+        parts = rank_update_parts(*route, shared=False)
+        if isinstance(parts, RankUpdateExponentials) and not parts.squarings:
+            shared = None if wholes else np.stack([basis.exponential(time, parts.scale) for time in parts.times])
+            return PartedSteps(replace(parts, exponentials=shared), which, basis)
     parts = None if route is None else rank_update_parts(*route)
     if isinstance(parts, RankUpdateExponentials) and not parts.squarings:
         return PartedSteps(parts, which)
@@ -179,8 +185,7 @@ def _large_pieces(system: PiecewiseLinearSystem, units: np.ndarray, durations: n
     """e^{A_j τ_j} of a few large pieces (unit-width augmented ``units``, ``durations`` τ_j): over commensurate
     durations from one Padé evaluation and rank updates through the patterns' range (:mod:`~thermogear.dynamics.
     shared_pade`; with ``powers`` as their :class:`~thermogear.dynamics.linear_algebra.shared_pade.SharedPowers`),
-    otherwise each
-    by itself with scipy's Padé-13 scaling and squaring (Al-Mohy & Higham 2009)."""
+    otherwise each by itself with scipy's Padé-13 scaling and squaring (Al-Mohy & Higham 2009)."""
     from scipy.linalg import expm
 
     shared = _shared_powers(system, units, durations, inverse, full_range)
@@ -240,15 +245,15 @@ RUN_ROUTE_SIZE = 201
 # that filling memory cost as much time as multiplying), the chunked route one chunk of matrices.
 LEAN_ROUTE_BYTES = 32 * 2**20
 CHUNK_BYTES = 16 * 2**20  # one chunk's matrices (75 pieces of 167 × 167): few chunks, small temporaries
-
-
+# The chunked route's whole pieces multiplied in the real eigenbasis of one mean piece where its guard trusts it
+# (:mod:`~thermogear.dynamics.linear_algebra.modal_chain`, O(q·m²) a piece; only the rounding differs, 4e-11 relative
+# on the drivetrain outputs measured). False: in the parts' own coordinates, O(m³) a piece.
+MODAL_CHAIN = True
 
 
 def _with_factors(system: PiecewiseLinearSystem, rows: np.ndarray) -> PiecewiseLinearSystem:
     """The system's matrices with the factors of ``rows`` (width, k, c, g; per mesh where several) as its pieces
     (unit widths)."""
-    from dataclasses import replace
-
     if system.stiffness_pattern.ndim == 2:
         return replace(system, nodes=np.arange(rows.shape[0] + 1, dtype=float), stiffness_factor=rows[:, 1],
                        damping_factor=rows[:, 2], force_factor=rows[:, 3])
@@ -267,8 +272,7 @@ def _pattern_range(system: PiecewiseLinearSystem) -> np.ndarray:
     return vectors[:, values > 1e-13 * values[0]]
 
 
-def monodromy(system: PiecewiseLinearSystem,
-              piece_tolerance: float = PIECE_TOLERANCE) -> tuple[np.ndarray, np.ndarray]:
+def monodromy(system: PiecewiseLinearSystem, piece_tolerance: float = PIECE_TOLERANCE) -> tuple[np.ndarray, np.ndarray]:
     """Monodromy Φ_T (2n, 2n) and the image p (2n,) of z = 0 after one period (``piece_tolerance``: see
     :func:`periodic_response`)."""
     distinct, where = _piece_steps(system, 1, piece_tolerance)
@@ -313,33 +317,41 @@ def chunked_transitions(system: PiecewiseLinearSystem, rows: np.ndarray, where: 
     transitions e^{A_j h_j/s}, s = ``samples``) over consecutive chunks of about :data:`CHUNK_BYTES` of matrices,
     in one pass: each as the parts of its rank-update exponential where it has them without squarings
     (:class:`~thermogear.dynamics.linear_algebra.sub_steps.PartedSteps`, O(q·m) numbers a piece, no (m, m) matrix per
-    piece formed), else as matrices (:class:`~thermogear.dynamics.linear_algebra.sub_steps.DenseSteps`); sub-steps None
-    where not parted
-    with ``dense_steps`` False (the caller forms them in a pass of its own), the wholes None without ``wholes``."""
+    piece formed; the wholes' chain in modal coordinates where :data:`MODAL_CHAIN`), else as matrices
+    (:class:`~thermogear.dynamics.linear_algebra.sub_steps.DenseSteps`); sub-steps None where not parted with
+    ``dense_steps`` False (the caller forms them in a pass of its own), the wholes None without ``wholes``."""
     chunk_pieces = max(1, CHUNK_BYTES // (8 * (2 * system.size + 1) ** 2))
     operators = (_mass_inverse(system), _pattern_range(system))
+    mean_factors = rows[:, 1:].mean(axis=0)  # every piece about one mean piece of the period, chained in its eigenbasis
+    route = _rank_route(system, rows[:1], operators, 1, (mean_factors, None)) if MODAL_CHAIN else None
+    basis = None if route is None else modal_basis(route[0], where.size)
+    modal = None if basis is None else (basis, (mean_factors, route[0]))
     for first in range(0, where.size, chunk_pieces):
         unique, inverse = np.unique(where[first:first + chunk_pieces], return_inverse=True)
         chunk = rows[unique]
         whole = chunk.copy()
         whole[:, 0] *= samples
         which = inverse.ravel()
-        yield (first, _transitions(system, whole, operators, which) if wholes else None,
-               _transitions(system, chunk, operators, which, dense_steps))
+        yield (first, _transitions(system, whole, operators, which, modal=modal, wholes=True) if wholes else None,
+               _transitions(system, chunk, operators, which, dense_steps, modal))
+
+
+def _sample_times(system: PiecewiseLinearSystem, samples: int) -> np.ndarray:
+    """(N·s + 1,) [s]: s = ``samples`` equal steps per piece and the period's end."""
+    offsets = np.arange(samples) / samples
+    return np.append((system.nodes[:-1, None] + np.diff(system.nodes)[:, None] * offsets).ravel(), system.period)
 
 
 def _by_chunks(system: PiecewiseLinearSystem, rows: np.ndarray, where: np.ndarray,
                samples: int, observer=None) -> PeriodicResponse:
     """:func:`periodic_response` where a stack of every distinct piece's matrix would be large (above
-    :data:`LEAN_ROUTE_BYTES`): the monodromy as the product of the whole pieces' transitions, one after another
-    (:func:`chunked_transitions`: the same N − 1 products as the block route's tree, each through the parts of the
-    piece's exponential where it has them; the observer takes the transition from the period's start to each
-    piece's start on the way, at no cost), then the orbit's state at every sub-step by stepping z₀ through the
-    sub-step transitions one after another (N·s products with a vector, O(m²) each). Exact as the block route (the
-    whole transitions are e^{A_j h_j} itself instead of the power of the sub-step's, and the products come in
-    another order: both differ at the unit roundoff), holding a chunk of matrices at a time at most. The sub-steps
-    held as their parts are formed in the first pass and kept; otherwise a second pass forms their matrices chunk by
-    chunk."""
+    :data:`LEAN_ROUTE_BYTES`): the monodromy as the product of the whole pieces' transitions one after another
+    (:func:`chunked_transitions`: the N − 1 products of the block route's tree, through the parts of each piece's
+    exponential where it has them; the observer takes the transitions from the period's start to each piece's start
+    on the way), then the state at every sub-step by stepping z₀ through the sub-step transitions (N·s products with
+    a vector). Exact as the block route (e^{A_j h_j} itself instead of the sub-step's power, other orders of products:
+    both differ at the unit roundoff), holding a chunk of matrices at most. Sub-steps held as parts are formed in the
+    first pass and kept; otherwise a second pass forms their matrices chunk by chunk."""
     size = 2 * system.size + 1
     total = np.eye(size)
     kept: list | None = []
@@ -347,8 +359,7 @@ def _by_chunks(system: PiecewiseLinearSystem, rows: np.ndarray, where: np.ndarra
     for first, wholes, steps in chunked_transitions(system, rows, where, samples, dense_steps=False):
         kept = None if kept is None or steps is None else [*kept, (first, steps)]
         if kept is not None and observer is not None and fed == first:  # it takes each piece's start transition
-            starts = np.empty((len(wholes), size, size))
-            total = wholes.chain(total, starts)
+            total, starts = wholes.chain_starts(total)
             observer(first, steps, starts, total)
             fed = first + len(steps)
         else:
@@ -366,10 +377,7 @@ def _by_chunks(system: PiecewiseLinearSystem, rows: np.ndarray, where: np.ndarra
             row = (first + offset) * samples
             state = steps.walk(offset, state, samples, states[row:row + samples])
     states[-1] = state
-    offsets = np.arange(samples) / samples
-    time = np.concatenate([(system.nodes[:-1, None] + np.diff(system.nodes)[:, None] * offsets).ravel(),
-                           [system.period]])
-    return PeriodicResponse(time, states[:, :n], states[:, n:2 * n], multipliers, initial)
+    return PeriodicResponse(_sample_times(system, samples), states[:, :n], states[:, n:2 * n], multipliers, initial)
 
 
 def _by_blocks(system: PiecewiseLinearSystem, distinct: np.ndarray, where: np.ndarray,
@@ -389,7 +397,4 @@ def _by_blocks(system: PiecewiseLinearSystem, distinct: np.ndarray, where: np.nd
         if sample + 1 < samples:
             current = (steps @ current[:, :, None])[:, :, 0]
     states = np.vstack([within.reshape(pieces * samples, 2 * n + 1), nodes[-1:]])
-    offsets = np.arange(samples) / samples
-    time = np.concatenate([(system.nodes[:-1, None] + np.diff(system.nodes)[:, None] * offsets).ravel(),
-                           [system.period]])
-    return PeriodicResponse(time, states[:, :n], states[:, n:2 * n], multipliers, initial)
+    return PeriodicResponse(_sample_times(system, samples), states[:, :n], states[:, n:2 * n], multipliers, initial)
