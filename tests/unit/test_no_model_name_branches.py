@@ -159,9 +159,10 @@ def _choice_registries() -> dict:
     """(registry module, the names it resolves) of every other choice of a model, method or law by name
     (issue 33): each name is compared in its registry only, every other module asks the resolved object."""
     from thermogear.cli.warmup import WARMUP_MODELS
-    from thermogear.friction.damping import DAMPING_RULES
+    from thermogear.friction.damping import DAMPING_RULES, DAMPING_STIFFNESSES
     from thermogear.choices.drivetrain import END_KINDS, ROTATIONS
     from thermogear.dynamics.problems.damping_modes import DAMPING_MODES
+    from thermogear.gearbox.injection import JET_POSITIONS
     from thermogear.experiment.spectrum import SPECTRUM_METHODS
     from thermogear.fem.elasticity import PLANE_ASSUMPTIONS
     from thermogear.fem.tooth_heat import BORE_CONDITIONS
@@ -195,6 +196,8 @@ def _choice_registries() -> dict:
                                                (*SCHEDULERS, *(name for name in LOCAL_DEFAULT_NAMES if name))),
         "direction of a branch (--direction)": ("dynamics/problems/continuation_directions.py",
                                                 (*DIRECTIONS, *STUDY_DIRECTIONS)),
+        "pair stiffness of the damping ([damping] stiffness)": ("friction/damping.py", DAMPING_STIFFNESSES),
+        "aim of an oil jet ([gearbox.oil] jet_position)": ("gearbox/injection.py", JET_POSITIONS),
     }
 
 
@@ -206,7 +209,8 @@ CHOICES = ("lubrication method ([gearbox.oil] lubrication)", "warm-up model (war
            "bearing type of a loss entry (type)", "mesh damping in flight ([dynamics] damping_in_flight)",
            "load a speed sweep holds (sweep --hold)", "kind of a train's end ([drivetrain.driving] kind)",
            "pinion's turning sense ([drivetrain] pinion_rotation)", "scheduler of a study (--scheduler)",
-           "direction of a branch (--direction)")
+           "direction of a branch (--direction)", "pair stiffness of the damping ([damping] stiffness)",
+           "aim of an oil jet ([gearbox.oil] jet_position)")
 
 
 @pytest.mark.parametrize("choice", CHOICES)
@@ -271,6 +275,11 @@ def test_the_schema_accepts_exactly_the_registered_choices():
     from thermogear.schema.drivetrain import DrivetrainSection, EndSection
 
     assert typing.get_args(EndSection.model_fields["kind"].annotation) == tuple(END_KINDS)
+    from thermogear.friction.damping import DAMPING_STIFFNESSES
+    from thermogear.gearbox.injection import JET_POSITIONS
+
+    assert typing.get_args(DampingSection.model_fields["stiffness"].annotation) == tuple(DAMPING_STIFFNESSES)
+    assert typing.get_args(GearboxOilSection.model_fields["jet_position"].annotation) == tuple(JET_POSITIONS)
     assert typing.get_args(DrivetrainSection.model_fields["pinion_rotation"].annotation) == tuple(ROTATIONS)
 
 

@@ -35,8 +35,9 @@ import math
 from dataclasses import dataclass
 
 from thermogear.errors import CaseError
+from thermogear.registry import registered
 
-__all__ = ["OilJet", "jet_impulse_power", "jet_validity"]
+__all__ = ["JET_POSITIONS", "JetPosition", "OilJet", "jet_impulse_power", "jet_position", "jet_validity"]
 
 #: Largest accepted flow [m³/s] (1000 L/min: far above any single-stage spur gear's jets) and jet speed [m/s].
 LARGEST_FLOW = 1000.0 / 60000.0
@@ -63,6 +64,25 @@ class OilJet:
             if (isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value)
                     or not 0.0 < value <= limit):
                 raise CaseError(f"oil_jet.{key}", value, f"(0, {limit:g}] (SI)", "an oil jet's flow and speed")
+
+
+@dataclass(frozen=True)
+class JetPosition:
+    """Where an into-mesh jet is aimed: ``name`` (the ``[gearbox.oil] jet_position`` value) and ``at_outlet``
+    (against the teeth at the mesh outlet, else with them into the inlet)."""
+
+    name: str
+    at_outlet: bool
+
+
+#: Every jet position by name (the first the default): the one place the names are compared.
+JET_POSITIONS: dict[str, JetPosition] = {position.name: position for position in (
+    JetPosition("inlet", at_outlet=False), JetPosition("outlet", at_outlet=True))}
+
+
+def jet_position(name: str) -> JetPosition:
+    """The jet position called ``name``; a CaseError naming ``gearbox.oil.jet_position`` for any other."""
+    return registered(JET_POSITIONS, name, "gearbox.oil.jet_position", "unknown jet position")
 
 
 def jet_impulse_power(jet: OilJet, density: float, pitch_line_speed: float) -> float:

@@ -31,14 +31,15 @@ from typing import TYPE_CHECKING, Any, ClassVar, Protocol
 import numpy as np
 
 from thermogear.case.pieces import call_with_pieces
+from thermogear.choices.thermal_models import LUO2020_RULES, THERMOELASTIC_RULES, ThermalModelRules
 from thermogear.dynamics.problems.mesh_laws import mesh_law
 from thermogear.errors import CaseError
+from thermogear.friction.damping import damping_stiffness
 from thermogear.luo2020.thermal.case_stiffness import paper_thermal_model
 from thermogear.mesh.model_names import MODELS, THERMAL
 from thermogear.mesh.secant_checks import secant_stiffness_drop_flag, secant_stiffness_in_nonlinear_mesh
 from thermogear.stiffness.table import pair_stiffness_at
 from thermogear.temperature.source import TemperatureField, temperature_field_from_case
-from thermogear.choices.thermal_models import LUO2020_RULES, THERMOELASTIC_RULES, ThermalModelRules
 from thermogear.thermoelastic.mesh import ThermoelasticMesh
 
 if TYPE_CHECKING:
@@ -221,7 +222,7 @@ class Luo2020Pair(PairModelBase):
     @property
     def damping_uses_pair_stiffness(self) -> bool:
         """``[damping] stiffness = "thermal"`` asks k_T for Eq. 28 (an option, not the paper)."""
-        return self.case.damping.stiffness == "thermal"
+        return damping_stiffness(self.case.damping.stiffness).pair_stiffness
 
     @property
     def load_shares_depend_on_load(self) -> bool:
