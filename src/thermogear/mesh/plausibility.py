@@ -11,6 +11,7 @@ from typing import Any
 
 import numpy as np
 
+from thermogear.case import cached_per_case
 from thermogear.mesh.model import MeshModel
 from thermogear.mesh.state import MeshState
 
@@ -31,15 +32,29 @@ DAMPING_RATIO_LIMIT = 2.0 * MEASURED_DAMPING_RATIO_RANGE[1]
 RESONANCE_MARGIN = 0.10
 
 
+@cached_per_case
+def elastic_stiffness_memo() -> dict:
+    """The elastic model's mean mesh stiffness of a case by (normal load, points per period): one memo per case,
+    dropped with the case (:func:`thermogear.case.cached_per_case`). Without the speed: the elastic stiffness of a
+    position does not depend on it, and the period's time mean of k(τ) is its mean over the path (uniform speed), so
+    every point of a speed sweep at one load asks the same value."""
+    return {}
+
+
 def thermal_result_flags(mesh: MeshModel, state: MeshState, metrics: dict[str, Any]) -> tuple[str, ...]:
     """Findings that make a result doubtful, in words (empty when nothing is flagged): the pair model's own
     (:meth:`~thermogear.mesh.pair_models.PairModelBase.result_flags`), then a resonance or a negative amplitude."""
     flags: list[str] = []
 
-    def elastic_mean_stiffness() -> float:  # the elastic model at the same point: what heat changed
-        elastic = MeshModel(mesh.case, "elastic").state(speed_rpm=state.speed_rpm, normal_load=state.normal_load,
-                                                       points_per_period=state.grid.nodes.size - 1, damping=False)
-        return elastic.mean_mesh_stiffness
+    def elastic_mean_stiffness() -> float:  # the elastic model at the same load: what heat changed
+        points = state.grid.nodes.size - 1
+        memo = elastic_stiffness_memo(mesh.case)
+        key = (float(state.normal_load), points)
+        if key not in memo:
+            elastic = MeshModel(mesh.case, "elastic").state(speed_rpm=state.speed_rpm, normal_load=state.normal_load,
+                                                           points_per_period=points, damping=False)
+            memo[key] = elastic.mean_mesh_stiffness
+        return memo[key]
 
     flags += mesh.pair_model.result_flags(state.mean_mesh_stiffness, metrics, elastic_mean_stiffness)
     ratio = metrics.get("frequency_ratio")
