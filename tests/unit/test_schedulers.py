@@ -7,7 +7,7 @@ import os
 import pytest
 
 from thermogear.errors import CaseError
-from thermogear.sweep.schedulers import PROCESSES, SCHEDULERS, SERIAL, THREADS, check_dashboard, scheduler
+from thermogear.sweep.schedulers import PROCESSES, SCHEDULERS, SERIAL, THREADS, Placement, check_dashboard, scheduler
 
 
 def test_a_name_resolves_to_its_entry_an_empty_or_local_name_to_the_default_and_anything_else_to_an_address():
@@ -16,13 +16,14 @@ def test_a_name_resolves_to_its_entry_an_empty_or_local_name_to_the_default_and_
         assert scheduler(name, default=PROCESSES) is PROCESSES
     assert scheduler(THREADS, default=PROCESSES) is THREADS  # resolved once, passed on as it is
     remote = scheduler("tcp://10.0.0.1:8786")
-    assert remote.remote and remote.name == "tcp://10.0.0.1:8786" and not remote.in_this_process
+    assert remote.placement is Placement.REMOTE and remote.name == "tcp://10.0.0.1:8786" and not remote.in_this_process
     assert set(SCHEDULERS) == {"serial", "threads", "processes"}
 
 
 def test_each_scheduler_declares_exactly_one_place_where_its_tasks_run():
-    for kind in (*SCHEDULERS.values(), scheduler("tcp://host:1")):
-        assert sum((kind.calling_thread, kind.threads, kind.local_cluster, kind.remote)) == 1, kind
+    # one placement each (an enumeration: exactly one by construction), every placement used once
+    places = [kind.placement for kind in (*SCHEDULERS.values(), scheduler("tcp://host:1"))]
+    assert sorted(place.name for place in places) == sorted(place.name for place in Placement)
     assert SERIAL.in_this_process and THREADS.in_this_process and not PROCESSES.in_this_process
     assert [kind.name for kind in SCHEDULERS.values() if kind.serves_dashboard] == ["processes"]
 

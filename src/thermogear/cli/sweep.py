@@ -16,7 +16,7 @@ from thermogear.dynamics.problems.mesh_laws import mesh_law
 from thermogear.errors import CaseError
 from thermogear.sweep.evaluation_methods import is_batched
 from thermogear.sweep.executor import check_scheduler_address
-from thermogear.sweep.schedulers import PROCESSES, check_dashboard, scheduler_help
+from thermogear.sweep.schedulers import Placement, PROCESSES, check_dashboard, scheduler_help
 from thermogear.sweep.schedulers import scheduler as scheduler_named
 
 
@@ -158,9 +158,10 @@ def sweep(
         except (OSError, TimeoutError) as error:  # the scheduler went away, or the disk refused a write
             _remove_empty_store(out, existed)
             named = scheduler_named(scheduler)  # None: the disk (the serial loop reaches no scheduler either)
-            raise CaseError("--out" if named.calling_thread else "--scheduler",
-                            str(out) if named.calling_thread else scheduler, "a reachable scheduler and a "
-                            "writable --out", f"the study could not run: {error}") from None
+            serial = named.placement is Placement.CALLING_THREAD
+            raise CaseError("--out" if serial else "--scheduler", str(out) if serial else scheduler,
+                            "a reachable scheduler and a writable --out",
+                            f"the study could not run: {error}") from None
         elapsed = time.perf_counter() - start
         figure_path = None
         if plot is not None and "speed_rpm" not in study.dims:

@@ -100,22 +100,13 @@ def damping_rule(name: str) -> MeshDampingRule:
     return registered(DAMPING_RULES, name, "damping.rule", "unknown mesh-damping rule")
 
 
-@dataclass(frozen=True)
-class DampingStiffness:
-    """Which pair stiffness Eq. 28 takes in the thermal model: ``name`` (the ``[damping] stiffness`` value) and
-    whether it is the pair model's own (``pair_stiffness``: k_T, an option) or the elastic k_e (Luo & Li's)."""
-
-    name: str
-    pair_stiffness: bool
+#: Whether Eq. 28 takes the pair model's own stiffness (k_T, an option) rather than the elastic k_e (Luo & Li's), by
+#: the ``[damping] stiffness`` value (the first the default): the one place the names are compared.
+DAMPING_STIFFNESSES: dict[str, bool] = {"elastic": False, "thermal": True}
 
 
-#: Every choice of the damping's pair stiffness by name (the first the default): the one place the names are compared.
-DAMPING_STIFFNESSES: dict[str, DampingStiffness] = {choice.name: choice for choice in (
-    DampingStiffness("elastic", pair_stiffness=False), DampingStiffness("thermal", pair_stiffness=True))}
-
-
-def damping_stiffness(name: str) -> DampingStiffness:
-    """The damping's pair-stiffness choice called ``name``; a CaseError naming ``damping.stiffness`` for any other."""
+def damping_takes_pair_stiffness(name: str) -> bool:
+    """Whether the ``[damping] stiffness`` choice ``name`` asks the pair model's stiffness (CaseError otherwise)."""
     return registered(DAMPING_STIFFNESSES, name, "damping.stiffness", "unknown pair stiffness of the damping")
 
 
@@ -243,7 +234,7 @@ class PairDamping:
     unit_load: np.ndarray
 
 
-__all__ = ["contact_region_means", "coulomb_equivalent_damping", "damping_rule", "DAMPING_RULES", "damping_stiffness",
-           "DAMPING_STIFFNESSES", "DampingStiffness", "friction_damping", "friction_damping_exponents",
+__all__ = ["contact_region_means", "coulomb_equivalent_damping", "damping_rule", "DAMPING_RULES", "damping_takes_pair_stiffness",
+           "DAMPING_STIFFNESSES", "friction_damping", "friction_damping_exponents",
            "FRICTION_DAMPING_LOAD_EXPONENT", "FRICTION_DAMPING_SPEED_EXPONENT", "friction_pair_damping",
            "mesh_circular_frequency", "mesh_damping", "MeshDampingRule", "MODELS", "PairDamping", "RULES"]

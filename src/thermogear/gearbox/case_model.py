@@ -25,7 +25,7 @@ from thermogear.case import cached_per_case
 from thermogear.errors import CaseError
 from thermogear.gearbox.bearing_entries import drivetrain_mounted_bearings, rolling_bearing
 from thermogear.gearbox.shaft_conduction import drivetrain_shaft_spans
-from thermogear.gearbox.injection import OilJet, jet_position
+from thermogear.gearbox.injection import OilJet, jet_at_outlet
 from thermogear.friction.models import friction_law
 from thermogear.lubricant.methods import lubrication_method
 from thermogear.gearbox.description import (GearboxDescription, GearboxOperatingPoint, Housing, LipSeal, MountedBearing,
@@ -125,7 +125,7 @@ def gearbox_description(gearbox: "GearboxSection | None", pair: "GearPair", mate
     wheel_immersion = (default_immersion if section.oil.wheel_immersion_mm is None
                        else section.oil.wheel_immersion_mm * 1e-3)
     jet = OilJet(section.oil.injection_flow_l_min / 60000.0, section.oil.jet_speed_m_s,
-                 at_outlet=jet_position(section.oil.jet_position).at_outlet) if lubrication.oil_jet else None
+                 at_outlet=jet_at_outlet(section.oil.jet_position)) if lubrication.oil_jet else None
     for key, depth, gear in (("wheel_immersion_mm", wheel_immersion, pair.wheel),
                              ("pinion_immersion_mm", section.oil.pinion_immersion_mm * 1e-3, pair.pinion)):
         if depth > 2.0 * gear.tip_radius:

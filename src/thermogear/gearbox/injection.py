@@ -37,7 +37,7 @@ from dataclasses import dataclass
 from thermogear.errors import CaseError
 from thermogear.registry import registered
 
-__all__ = ["JET_POSITIONS", "JetPosition", "OilJet", "jet_impulse_power", "jet_position", "jet_validity"]
+__all__ = ["JET_POSITIONS", "OilJet", "jet_at_outlet", "jet_impulse_power", "jet_validity"]
 
 #: Largest accepted flow [m³/s] (1000 L/min: far above any single-stage spur gear's jets) and jet speed [m/s].
 LARGEST_FLOW = 1000.0 / 60000.0
@@ -66,22 +66,13 @@ class OilJet:
                 raise CaseError(f"oil_jet.{key}", value, f"(0, {limit:g}] (SI)", "an oil jet's flow and speed")
 
 
-@dataclass(frozen=True)
-class JetPosition:
-    """Where an into-mesh jet is aimed: ``name`` (the ``[gearbox.oil] jet_position`` value) and ``at_outlet``
-    (against the teeth at the mesh outlet, else with them into the inlet)."""
-
-    name: str
-    at_outlet: bool
+#: Whether an into-mesh jet is aimed at the mesh outlet, against the teeth, rather than into the inlet with them, by
+#: the ``[gearbox.oil] jet_position`` value (the first the default): the one place the names are compared.
+JET_POSITIONS: dict[str, bool] = {"inlet": False, "outlet": True}
 
 
-#: Every jet position by name (the first the default): the one place the names are compared.
-JET_POSITIONS: dict[str, JetPosition] = {position.name: position for position in (
-    JetPosition("inlet", at_outlet=False), JetPosition("outlet", at_outlet=True))}
-
-
-def jet_position(name: str) -> JetPosition:
-    """The jet position called ``name``; a CaseError naming ``gearbox.oil.jet_position`` for any other."""
+def jet_at_outlet(name: str) -> bool:
+    """Whether the jet position ``name`` is the outlet (CaseError naming ``gearbox.oil.jet_position`` otherwise)."""
     return registered(JET_POSITIONS, name, "gearbox.oil.jet_position", "unknown jet position")
 
 

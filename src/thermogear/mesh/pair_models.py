@@ -34,7 +34,7 @@ from thermogear.case.pieces import call_with_pieces
 from thermogear.choices.thermal_models import LUO2020_RULES, THERMOELASTIC_RULES, ThermalModelRules
 from thermogear.dynamics.problems.mesh_laws import mesh_law
 from thermogear.errors import CaseError
-from thermogear.friction.damping import damping_stiffness
+from thermogear.friction.damping import damping_takes_pair_stiffness
 from thermogear.luo2020.thermal.case_stiffness import paper_thermal_model
 from thermogear.mesh.model_names import MODELS, THERMAL
 from thermogear.mesh.secant_checks import secant_stiffness_drop_flag, secant_stiffness_in_nonlinear_mesh
@@ -222,7 +222,7 @@ class Luo2020Pair(PairModelBase):
     @property
     def damping_uses_pair_stiffness(self) -> bool:
         """``[damping] stiffness = "thermal"`` asks k_T for Eq. 28 (an option, not the paper)."""
-        return damping_stiffness(self.case.damping.stiffness).pair_stiffness
+        return damping_takes_pair_stiffness(self.case.damping.stiffness)
 
     @property
     def load_shares_depend_on_load(self) -> bool:

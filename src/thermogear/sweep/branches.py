@@ -36,7 +36,7 @@ from thermogear.sweep.branch_store import (BRANCH_POINT, BRANCH_VARIABLES, ORBIT
                                            branch_region, orbit_arrays)
 from thermogear.sweep.hysteresis import hysteresis_bands
 from thermogear.sweep.load_held import study_load_held
-from thermogear.sweep.schedulers import SERIAL, THREADS, Scheduler
+from thermogear.sweep.schedulers import Placement, SERIAL, THREADS, Scheduler
 from thermogear.sweep.schedulers import scheduler as scheduler_named
 from thermogear.temperature.kinds import temperature_source
 
@@ -299,8 +299,9 @@ def branch_study(study, direction: str = "both", progress=None, workers: int | N
     kind = scheduler_named(scheduler, default=SERIAL if workers == 1 else THREADS)
     identity = json.dumps(layout.definition, sort_keys=True, default=str)
     with (progress(len(tasks), len(done)) if progress is not None else nullcontext(lambda points=1: None)) as advance:
+        serial = kind.placement is Placement.CALLING_THREAD
         _run_tasks((study, speed_axis, directions, int(multistart), identity), [task for _, task in pending],
-                   finished, kind, None if kind.calling_thread else workers, caught, pending_follows)
+                   finished, kind, None if serial else workers, caught, pending_follows)
     if out is not None:
         return store.dataset()
     return _memory_dataset(store, study, directions, censuses, speed_axis, int(multistart))
@@ -346,7 +347,7 @@ def _run_tasks(shared, tasks, finished, scheduler: Scheduler, workers: int | Non
     from thermogear.sweep.executor import execute  # noqa: PLC0415
 
     with ExitStack() as stack:
-        unscoped = stack.enter_context(warning_scope.routed()) if scheduler.threads else []
+        unscoped = stack.enter_context(warning_scope.routed()) if scheduler.placement is Placement.THREADS else []
         execute(execute_recorded, shared, tasks, finished, scheduler, workers, follows=follows)
         stack.close()
         caught.extend((str(item.message), item.category, item.filename, item.lineno) for item in unscoped)

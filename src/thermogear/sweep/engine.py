@@ -34,7 +34,7 @@ from thermogear import warning_scope
 from thermogear.mesh.model import MeshModel
 from thermogear.sweep.batch import evaluate_block, fast_path_applies
 from thermogear.sweep.evaluation_methods import EVALUATION_METHODS, evaluation_method, is_batched
-from thermogear.sweep.schedulers import PROCESSES, THREADS, Scheduler, check_dashboard
+from thermogear.sweep.schedulers import Placement, PROCESSES, THREADS, Scheduler, check_dashboard
 from thermogear.sweep.schedulers import scheduler as scheduler_named
 from thermogear.sweep.store import ResultStore
 from thermogear.warning_causes import WarningTally, warning_text
@@ -130,7 +130,7 @@ def run_study(study, out: str | Path, scheduler: str | None = None, resume: bool
                 on_block(block.number)
             advance(block.size)
 
-        if kind.threads:  # the workers' warnings are kept apart per thread
+        if kind.placement is Placement.THREADS:  # the workers' warnings are kept apart per thread
             unscoped = stack.enter_context(warning_scope.routed())
             execute(compute_and_store_block, (study, method, store), pending, stored, kind, workers)
             stack.close()  # the router is gone: its unscoped warnings are final

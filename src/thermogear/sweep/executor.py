@@ -31,7 +31,7 @@ from functools import partial
 from typing import Any
 
 from thermogear.errors import CaseError
-from thermogear.sweep.schedulers import SCHEDULERS, Scheduler, scheduler_help
+from thermogear.sweep.schedulers import Placement, SCHEDULERS, Scheduler, scheduler_help
 from thermogear.sweep.schedulers import scheduler as resolve_scheduler
 
 __all__ = ["LOCAL_SCHEDULERS", "QUIET_LOCAL_CLUSTER", "check_scheduler_address", "execute", "run_task",
@@ -81,7 +81,7 @@ def execute(function: Callable[..., Any], shared: Any, tasks: Sequence[Any],
         from threadpoolctl import threadpool_limits
 
         with threadpool_limits(limits=1, user_api="blas"):  # for the study only: restored after it
-            if kind.threads:
+            if kind.placement is Placement.THREADS:
                 _threads(function, shared, tasks, follows, on_result, kind.worker_count(workers))
                 return
             kind.worker_count(workers)  # the calling thread: one worker
@@ -195,7 +195,7 @@ def _client(scheduler: str | Scheduler, workers: int | None, dashboard: str | No
     kind = resolve_scheduler(scheduler)
     count = kind.worker_count(workers)  # a count a remote scheduler cannot take is refused before connecting
     with ExitStack() as stack:
-        if kind.local_cluster:
+        if kind.placement is Placement.LOCAL_CLUSTER:
             import logging
 
             # a worker that takes a moment to stop when the study closes the cluster is no news to the user
@@ -221,7 +221,7 @@ def _client(scheduler: str | Scheduler, workers: int | None, dashboard: str | No
 def check_scheduler_address(address: str | None, timeout: float = 5.0) -> None:
     """Refuse a ``tcp://host:port`` scheduler that does not accept connections, before anything is written (one
     connection attempt naming the address, instead of the client's retries for its whole timeout)."""
-    if not resolve_scheduler(address).remote:
+    if resolve_scheduler(address).placement is not Placement.REMOTE:
         return
     import socket
     from urllib.parse import urlsplit

@@ -17,51 +17,58 @@ from __future__ import annotations
 
 import os
 from dataclasses import dataclass, replace
+from enum import Enum
 
 from thermogear.errors import CaseError
 
-__all__ = ["ADDRESS", "LOCAL_DEFAULT_NAMES", "PROCESSES", "SCHEDULERS", "SERIAL", "THREADS", "Scheduler",
+__all__ = ["ADDRESS", "LOCAL_DEFAULT_NAMES", "PROCESSES", "Placement", "SCHEDULERS", "SERIAL", "THREADS", "Scheduler",
            "check_dashboard", "scheduler", "scheduler_help"]
+
+
+class Placement(Enum):
+    """Where the tasks of a study run (one of four, the callers branch on which):
+
+    * ``CALLING_THREAD``: one after the other in the calling thread (one worker at most);
+    * ``THREADS``: on threads of this process (their warnings are routed per thread);
+    * ``LOCAL_CLUSTER``: on a ``distributed.LocalCluster`` started here and closed with the study (it serves a
+      dashboard where asked);
+    * ``REMOTE``: on the workers of a scheduler at an address (they are its own).
+
+    The first two run in this process, which holds one BLAS thread for the study."""
+
+    CALLING_THREAD = "calling thread"
+    THREADS = "threads"
+    LOCAL_CLUSTER = "local cluster"
+    REMOTE = "remote"
 
 
 @dataclass(frozen=True)
 class Scheduler:
     """One scheduler of a study: ``name`` (the ``--scheduler`` value: a registered name, or the address of a
-    remote scheduler) and what the callers branch on:
-
-    * ``calling_thread``: the tasks run one after the other in the calling thread (one worker at most);
-    * ``threads``: the tasks run on threads of this process (their warnings are routed per thread);
-    * ``local_cluster``: a ``distributed.LocalCluster`` is started here and closed with the study (it serves a
-      dashboard where asked);
-    * ``remote``: the tasks run on the workers of a scheduler at the address ``name`` (they are its own).
-
-    The first two run in this process, which holds one BLAS thread for the study."""
+    remote scheduler) and where it runs the tasks (:class:`Placement`)."""
 
     name: str
-    calling_thread: bool = False
-    threads: bool = False
-    local_cluster: bool = False
-    remote: bool = False
+    placement: Placement
 
     @property
     def in_this_process(self) -> bool:
         """Whether the tasks run in this process (the calling thread or its threads)."""
-        return self.calling_thread or self.threads
+        return self.placement in (Placement.CALLING_THREAD, Placement.THREADS)
 
     @property
     def serves_dashboard(self) -> bool:
         """Whether a dashboard can be served (the local Dask cluster's)."""
-        return self.local_cluster
+        return self.placement is Placement.LOCAL_CLUSTER
 
     def worker_count(self, workers: int | None) -> int | None:
         """The threads or processes to start for ``workers`` (None: every core); 1 for the calling thread; None for a
         remote scheduler (its workers are its own). A CaseError naming ``--workers`` where the count cannot apply."""
-        if self.calling_thread:
+        if self.placement is Placement.CALLING_THREAD:
             if workers not in (None, 1):
                 raise CaseError("--workers", workers, f"absent (or 1) with --scheduler {self.name}",
                                 "the serial scheduler computes in the calling thread")
             return 1
-        if self.remote:
+        if self.placement is Placement.REMOTE:
             if workers is not None:
                 raise CaseError("--workers", workers, "only with a local scheduler (threads or processes)",
                                 "a remote scheduler has its own workers")
@@ -69,11 +76,11 @@ class Scheduler:
         return int(workers or os.cpu_count() or 1)
 
 
-SERIAL = Scheduler("serial", calling_thread=True)
-THREADS = Scheduler("threads", threads=True)
-PROCESSES = Scheduler("processes", local_cluster=True)
+SERIAL = Scheduler("serial", Placement.CALLING_THREAD)
+THREADS = Scheduler("threads", Placement.THREADS)
+PROCESSES = Scheduler("processes", Placement.LOCAL_CLUSTER)
 #: The kind of every value that names no scheduler of this machine: the address of a dask.distributed scheduler.
-ADDRESS = Scheduler("address", remote=True)
+ADDRESS = Scheduler("address", Placement.REMOTE)
 
 #: The schedulers of this machine by name: the one place their names are compared.
 SCHEDULERS: dict[str, Scheduler] = {kind.name: kind for kind in (SERIAL, THREADS, PROCESSES)}

@@ -29,11 +29,11 @@ class TemperatureSourceKind:
 
     name: str
     given: bool
+    takes_helical: bool
     uniform: bool = False
     tabulated: bool = False
     predicted_at_load: bool = False
     solved_per_state: bool = False
-    takes_helical: bool = False
 
     @property
     def computed(self) -> bool:
@@ -43,10 +43,10 @@ class TemperatureSourceKind:
 
 #: Every built-in temperature source by name: the one place the names are compared.
 TEMPERATURE_SOURCES: dict[str, TemperatureSourceKind] = {kind.name: kind for kind in (
-    TemperatureSourceKind("uniform", given=True, uniform=True, takes_helical=True),
-    TemperatureSourceKind("tabulated", given=True, tabulated=True, takes_helical=True),
-    TemperatureSourceKind("fem", given=False, solved_per_state=True),
-    TemperatureSourceKind("gearbox", given=False, predicted_at_load=True, takes_helical=True),
+    TemperatureSourceKind("uniform", given=True, takes_helical=True, uniform=True),
+    TemperatureSourceKind("tabulated", given=True, takes_helical=True, tabulated=True),
+    TemperatureSourceKind("fem", given=False, takes_helical=False, solved_per_state=True),
+    TemperatureSourceKind("gearbox", given=False, takes_helical=True, predicted_at_load=True),
 )}
 
 
@@ -54,4 +54,5 @@ def temperature_source(name: str) -> TemperatureSourceKind:
     """The kind of the temperature source ``name``; a name outside :data:`TEMPERATURE_SOURCES` is a model
     registered at run time, which predicts the case's temperatures when it is loaded
     (:func:`thermogear.case.register_temperature_model`) and gives the field through its provider."""
-    return TEMPERATURE_SOURCES.get(name) or TemperatureSourceKind(name, given=False, predicted_at_load=True)
+    return TEMPERATURE_SOURCES.get(name) or TemperatureSourceKind(name, given=False, takes_helical=False,
+                                                                      predicted_at_load=True)
