@@ -17,7 +17,7 @@ import pytest
 
 from thermogear.case import case_from_document
 from thermogear.errors import CaseError
-from thermogear.friction.models import friction_law, helical_load_factor
+from thermogear.friction.models import helical_load_factor
 from thermogear.gearbox.case_model import gearbox_model_from_case, gearbox_operating_point
 from thermogear.gearbox.losses import LossModel
 from thermogear.gearbox.mesh_loss import pair_gear_loss_factor
@@ -82,7 +82,6 @@ def test_the_iso_tr_law_takes_the_helical_load_factor():
     # μ ∝ (K_Bγ/ρ)^0.2·X_R, X_R ∝ ρ^−0.25: K_Bγ^0.2·cos(β_b)^0.2·cos(β_b)^0.25
     expected = as_spur.friction_coefficient(80.0) * factor**0.2 * math.cos(base_helix)**0.45
     assert losses.friction_coefficient(80.0) == pytest.approx(expected, rel=1e-12)
-    assert friction_law("iso_tr_13989_2").name == "iso_tr_13989_2"
 
 
 def test_a_vanishing_helix_is_the_spur_pair():
