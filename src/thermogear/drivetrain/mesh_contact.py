@@ -63,6 +63,7 @@ from typing import TYPE_CHECKING, Callable
 import numpy as np
 
 from thermogear.errors import CaseError
+from thermogear.helical.face_load import FaceStiffnessMoments
 
 if TYPE_CHECKING:
     from thermogear.helical.geometry import HelicalPair
@@ -165,13 +166,13 @@ def face_variation(stiffness: np.ndarray, first_moment: np.ndarray, second_momen
     if np.any(stiffness <= 0.0):
         raise CaseError("face_variation.stiffness", float(np.min(stiffness)), "> 0 N/m at every mesh position",
                         "the moments are taken per unit of the stiffness in contact")
-    total = float(np.sum(stiffness))
-    centre = sense * float(np.sum(first_moment)) / total
-    mean_second = float(np.sum(second_moment)) / total
-    return FaceVariation(sense * np.asarray(first_moment) / stiffness - centre,
-                         np.asarray(second_moment) / stiffness - mean_second,
-                         sense * np.asarray(gap_moment) / stiffness, centre,
-                         math.sqrt(max(mean_second - centre**2, 0.0)))
+    # the period-mean matrix's load centre and gyration are the face moments' (intervals of equal length)
+    means = FaceStiffnessMoments(np.arange(stiffness.size, dtype=float), stiffness, np.asarray(first_moment, float),
+                                 np.asarray(second_moment, float))
+    centre = sense * means.mean_load_centre
+    mean_second = float(np.mean(means.second_moment) / np.mean(means.stiffness))
+    return FaceVariation(sense * means.first_moment / stiffness - centre, means.second_moment / stiffness - mean_second,
+                         sense * np.asarray(gap_moment) / stiffness, centre, means.mean_gyration)
 
 
 def pair_face_variation(helical: HelicalPair, material: Material, points: int, sense: int,
@@ -185,10 +186,8 @@ def pair_face_variation(helical: HelicalPair, material: Material, points: int, s
 
     phases = (np.arange(points) + 0.5) / points * helical.transverse_base_pitch
     centres, stiffness = contact_stiffness(helical, material, phases, slices)
-    per_slice = stiffness.sum(axis=-2)
-    position = centres - helical.face_width / 2.0
-    return face_variation(per_slice.sum(axis=-1), per_slice @ position, per_slice @ position**2, np.zeros(points),
-                          sense)
+    moments = FaceStiffnessMoments.of_slices(phases, stiffness.sum(axis=-2), centres - helical.face_width / 2.0)
+    return face_variation(moments.stiffness, moments.first_moment, moments.second_moment, np.zeros(points), sense)
 
 
 def _model_variation(mesh, model, points: int) -> FaceVariation | None:

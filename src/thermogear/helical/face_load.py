@@ -146,6 +146,13 @@ class FaceStiffnessMoments:
     first_moment: np.ndarray  # k₁(φ) [N]
     second_moment: np.ndarray  # k₂(φ) [N·m]
 
+    @classmethod
+    def of_slices(cls, phase, stiffness, position) -> "FaceStiffnessMoments":
+        """The moments of the slices' stiffness ``stiffness`` (..., slices) [N/m] at ``position`` z_j (slices,) [m]
+        from mid-face, per mesh position ``phase`` [m]."""
+        stiffness, position = np.asarray(stiffness, dtype=float), np.asarray(position, dtype=float)
+        return cls(phase, stiffness.sum(axis=-1), stiffness @ position, stiffness @ position**2)
+
     @property
     def load_centre(self) -> np.ndarray:
         """z̄(φ) = k₁/k₀ [m] from mid-face."""
@@ -185,10 +192,8 @@ class FaceLoad:
         ``engaged_stiffness``)."""
         if self.engaged_stiffness is None:
             raise ValueError("stiffness_moments: the face load carries no engaged stiffness")
-        position = self.z - 0.5 * (self.z[0] + self.z[-1])
-        stiffness = self.engaged_stiffness
-        return FaceStiffnessMoments(self.phase, stiffness.sum(axis=-1), stiffness @ position,
-                                    stiffness @ position**2)
+        return FaceStiffnessMoments.of_slices(self.phase, self.engaged_stiffness,
+                                              self.z - 0.5 * (self.z[0] + self.z[-1]))
 
     @property
     def mean_line_load(self) -> np.ndarray:
