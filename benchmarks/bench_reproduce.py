@@ -52,6 +52,9 @@ def timed(arguments: list[str], source: Path | None, folder: Path | None = None)
 
 
 def main(repeats: int = 3, compare: Path | None = None) -> dict:
+    from timing import compile_bytecode
+
+    compile_bytecode(*([compare / "src"] if compare is not None else []))  # as installed (timing.compile_bytecode)
     python = sys.executable
     scratch = Path(tempfile.mkdtemp(prefix="bench-reproduce-"))
     command = [python, "-m", "thermogear", "reproduce", "luo2019", "--out", str(scratch / "report"), "--force",

@@ -121,73 +121,134 @@ def backlash_trajectory(system: BacklashSystem, state: np.ndarray, periods: int 
                 times.append((offset + info["time"][k], offset + info["time"][k + 1]))
                 starts.append(info["states"][k])
                 keys.append(key)
-    bounds = np.array(times)
-    tolerance = 1e-12 * period
-    # the grid: samples_per_piece steps on each piece of each period, and the end
-    steps = np.arange(int(samples_per_piece)) / samples_per_piece
-    grid = (linear.nodes[:-1, None] + np.diff(linear.nodes)[:, None] * steps).ravel()
-    grid = np.concatenate([(grid[None, :] + period * np.arange(int(periods))[:, None]).ravel(), [periods * period]])
-    samples = []  # (time, rank, segment index, time into the segment); rank 0: left side, 1: right side
-    for k in range(len(keys)):
-        if k > 0 and keys[k] != keys[k - 1]:
-            samples.append((bounds[k, 0], 0, k - 1, bounds[k - 1, 1] - bounds[k - 1, 0]))
-            samples.append((bounds[k, 0], 1, k, 0.0))
-    changes = {round(float(bounds[k, 0]) / tolerance) for k in range(1, len(keys)) if keys[k] != keys[k - 1]}
-    segment_of = np.clip(np.searchsorted(bounds[:, 0], grid, side="right") - 1, 0, len(keys) - 1)
-    for t, k in zip(grid, segment_of):
-        if any(round(float(t) / tolerance) + shift in changes for shift in (-1, 0, 1)):
-            continue  # the switch's own right-side sample stands for it
-        into = min(float(t) - bounds[k, 0], bounds[k, 1] - bounds[k, 0])
-        # a grid time on a recorded segment start (sub-steps a multiple of the grid) differs from it by rounding of
-        # the summed times only: the recorded state stands for it (no exponential; the shift is ~1e-16 of T)
-        samples.append((float(t), 1, int(k), 0.0 if into <= 1e-13 * period else into))
+    segments = _Segments.of(np.array(times), np.array(starts), keys, len(system.dead_zones))
+    rows = _samples(segments, linear.nodes, period, int(periods), int(samples_per_piece))
     pieces = piece_exponentials(system, substeps, cache)
 
     def evaluate(k: int, into: float) -> np.ndarray:
         if into == 0.0:
-            return starts[k]
-        if k + 1 < len(starts) and abs(bounds[k, 1] - bounds[k, 0] - into) <= 1e-13 * period:
-            return starts[k + 1]  # the segment's end: the state is continuous across every switch
+            return segments.starts[k]
+        if k + 1 < len(keys) and abs(segments.bounds[k, 1] - segments.bounds[k, 0] - into) <= 1e-13 * period:
+            return segments.starts[k + 1]  # the segment's end: the state is continuous across every switch
         matrix = pieces.matrix(keys[k][0], (keys[k][1], keys[k][2]))
-        return exponential_action(matrix, np.append(starts[k], 1.0), into)[:-1]
+        return exponential_action(matrix, np.append(segments.starts[k], 1.0), into)[:-1]
 
-    samples.sort(key=lambda item: (item[0], item[1]))
-    values = [evaluate(k, into) for _, _, k, into in samples]
+    values = segments.states_at(rows, period, evaluate)
     if extremum_vector is not None:
-        extra = _extrema(samples, values, keys, np.asarray(extremum_vector, dtype=float), n, evaluate)
-        samples, values = samples + [item[0] for item in extra], values + [item[1] for item in extra]
-        order = sorted(range(len(samples)), key=lambda row: (samples[row][0], samples[row][1]))
-        samples, values = [samples[row] for row in order], [values[row] for row in order]
-    values = np.array(values).reshape(len(samples), 2 * n)
-    chosen = [keys[k] for _, _, k, _ in samples]
-    zones = len(system.dead_zones)
+        extra, extra_values = _extrema(rows, values, segments, np.asarray(extremum_vector, dtype=float), n, evaluate)
+        rows = {name: np.concatenate([rows[name], extra[name]]) for name in rows}
+        values = np.vstack([values, extra_values])
+        order = np.lexsort((rows["rank"], rows["time"]))  # stable: ties keep their order, as a list sort does
+        rows, values = {name: column[order] for name, column in rows.items()}, values[order]
+    chosen = rows["segment"]
     return BacklashTrajectory(
-        np.array([item[0] for item in samples]), values, np.array([key[0] for key in chosen], dtype=int),
-        np.array([key[1] for key in chosen], dtype=int),
-        np.array([key[2] for key in chosen], dtype=int).reshape(len(chosen), zones), z,
+        rows["time"], values, segments.piece[chosen], segments.region[chosen], segments.sides[chosen], z,
         int(totals["switches"]), int(totals["zone_switches"]), float(totals["free_flight_time"]),
         float(totals["back_contact_time"]), float(period), int(periods))
 
 
-def _extrema(samples: list, values: list, keys: list, vector: np.ndarray, n: int, evaluate) -> list:
-    """Samples (time, rank, segment, time into it) with their states at the zeros of vᵀq̇ between consecutive
+@dataclass(frozen=True, eq=False)
+class _Segments:
+    """The recorded segments of a motion: ``bounds`` (K, 2) start and end time [s], ``starts`` (K, 2n) the state at
+    each start, and each segment's key as ``piece`` (K,), ``region`` (K,) and dead-zone ``sides`` (K, zones)."""
+
+    bounds: np.ndarray
+    starts: np.ndarray
+    piece: np.ndarray
+    region: np.ndarray
+    sides: np.ndarray
+
+    @classmethod
+    def of(cls, bounds: np.ndarray, starts: np.ndarray, keys: list, zones: int) -> _Segments:
+        count = len(keys)
+        return cls(bounds.reshape(count, 2), starts, np.array([key[0] for key in keys], dtype=int),
+                   np.array([key[1] for key in keys], dtype=int),
+                   np.array([key[2] for key in keys], dtype=int).reshape(count, zones))
+
+    def same_key(self, first: np.ndarray, second: np.ndarray) -> np.ndarray:
+        """Whether the segments ``first`` and ``second`` (arrays of indices) have equal keys, element by element."""
+        return ((self.piece[first] == self.piece[second]) & (self.region[first] == self.region[second])
+                & np.all(self.sides[first] == self.sides[second], axis=1))
+
+    def states_at(self, rows: dict, period: float, evaluate) -> np.ndarray:
+        """The states (S, 2n) at the samples ``rows``: a segment's recorded start where the sample sits on it, the
+        next segment's start where it sits on the segment's end (the state is continuous across every switch), the
+        exact solution inside (``evaluate``)."""
+        segment, into = rows["segment"], rows["into"]
+        count = len(self.piece)
+        width = self.bounds[segment, 1] - self.bounds[segment, 0]
+        at_end = (into != 0.0) & (segment + 1 < count) & (np.abs(width - into) <= 1e-13 * period)
+        source = np.where(at_end, np.minimum(segment + 1, count - 1), segment)
+        values = self.starts[source]
+        for row in np.flatnonzero((into != 0.0) & ~at_end):
+            values[row] = evaluate(int(segment[row]), float(into[row]))
+        return values
+
+
+def _samples(segments: _Segments, nodes: np.ndarray, period: float, periods: int, samples_per_piece: int) -> dict:
+    """The samples of the module docstring, in time order (a switch's left side first) as columns: ``time`` [s],
+    ``rank`` (0 the left side of a switch, 1 otherwise), ``segment`` and ``into`` it [s]."""
+    bounds = segments.bounds
+    count = bounds.shape[0]
+    tolerance = 1e-12 * period
+    # the grid: samples_per_piece steps on each piece of each period, and the end
+    steps = np.arange(samples_per_piece) / samples_per_piece
+    grid = (nodes[:-1, None] + np.diff(nodes)[:, None] * steps).ravel()
+    grid = np.concatenate([(grid[None, :] + period * np.arange(periods)[:, None]).ravel(), [periods * period]])
+    indices = np.arange(1, count)
+    changed = indices[~segments.same_key(indices, indices - 1)]  # where the key changes: both sides sampled
+    switch_time = np.repeat(bounds[changed, 0], 2)
+    switch_rank = np.tile([0, 1], changed.size)
+    switch_segment = np.column_stack([changed - 1, changed]).ravel()
+    switch_into = np.column_stack([bounds[changed - 1, 1] - bounds[changed - 1, 0], np.zeros(changed.size)]).ravel()
+    # a grid time within a unit of 1e-12 T of a switch: the switch's own right-side sample stands for it
+    units = np.rint(bounds[changed, 0] / tolerance).astype(np.int64)
+    grid_units = np.rint(grid / tolerance).astype(np.int64)
+    kept = ~(np.isin(grid_units - 1, units) | np.isin(grid_units, units) | np.isin(grid_units + 1, units))
+    grid = grid[kept]
+    segment_of = np.clip(np.searchsorted(bounds[:, 0], grid, side="right") - 1, 0, count - 1)
+    into = np.minimum(grid - bounds[segment_of, 0], bounds[segment_of, 1] - bounds[segment_of, 0])
+    # a grid time on a recorded segment start (sub-steps a multiple of the grid) differs from it by rounding of the
+    # summed times only: the recorded state stands for it (no exponential; the shift is ~1e-16 of T)
+    into = np.where(into <= 1e-13 * period, 0.0, into)
+    rows = {"time": np.concatenate([switch_time, grid]),
+            "rank": np.concatenate([switch_rank, np.ones(grid.size, dtype=int)]),
+            "segment": np.concatenate([switch_segment, segment_of]).astype(int),
+            "into": np.concatenate([switch_into, into])}
+    order = np.lexsort((rows["rank"], rows["time"]))  # stable: ties keep their order, as a list sort does
+    return {name: column[order] for name, column in rows.items()}
+
+
+def _extrema(rows: dict, values: np.ndarray, segments: _Segments, vector: np.ndarray, n: int,
+             evaluate) -> tuple[dict, np.ndarray]:
+    """Samples (columns as :func:`_samples` gives them) with their states at the zeros of vᵀq̇ between consecutive
     samples of one contact state."""
     from scipy.optimize import brentq
 
+    time, segment, into = rows["time"], rows["segment"], rows["into"]
+    # which neighbours to test: vᵀq̇ for all samples in one product; its rounding differs from a dot product's by at
+    # most 2γ_n·Σ|vᵢq̇ᵢ| (Higham 2002, §3.1), so a sign test is redone below, exactly, wherever it could differ
+    rates = values[:, n:] @ vector
+    near_zero = np.abs(rates) <= 4.0 * n * np.finfo(float).eps * (np.abs(values[:, n:]) @ np.abs(vector))
+    first, second = np.arange(time.size - 1), np.arange(1, time.size)
+    candidates = (segments.same_key(segment[second], segment[first]) & (time[second] > time[first])
+                  & ((rates[first] * rates[second] < 0.0) | near_zero[first] | near_zero[second]))
     found = []
-    for row in range(len(samples) - 1):
-        (t0, _, k, into0), (t1, _, k1, _) = samples[row], samples[row + 1]
-        if keys[k1] != keys[k] or t1 <= t0:  # the sub-steps of one contact state are one linear flow
-            continue
-        into1 = into0 + (t1 - t0)
+    for row in np.flatnonzero(candidates):
+        k, into0 = int(segment[row]), float(into[row])
+        into1 = into0 + (float(time[row + 1]) - float(time[row]))
         low, high = vector @ values[row][n:], vector @ values[row + 1][n:]
         if low * high < 0.0:
             def rate(s, k=k):
                 return vector @ evaluate(k, s)[n:]
 
             root = brentq(rate, into0, into1, xtol=1e-14 * max(into1, 1e-300), rtol=4 * np.finfo(float).eps)
-            found.append(((t0 + root - into0, 1, k, root), evaluate(k, root)))
-    return found
+            found.append((float(time[row]) + root - into0, k, root))
+    extra = {"time": np.array([item[0] for item in found], dtype=float), "rank": np.ones(len(found), dtype=int),
+             "segment": np.array([item[1] for item in found], dtype=int),
+             "into": np.array([item[2] for item in found], dtype=float)}
+    extra_values = np.array([evaluate(k, root) for _, k, root in found]).reshape(len(found), 2 * n)
+    return extra, extra_values
 
 
 def linear_trajectory(system: PiecewiseLinearSystem, state: np.ndarray, periods: int = 1,
