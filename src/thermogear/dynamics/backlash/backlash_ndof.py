@@ -60,8 +60,6 @@ def backlash_flow_ndof(system: BacklashSystem, state: np.ndarray, substeps: int 
     checked at once; where none changed state, that is the piece's motion (the same sub-step ends the switch search
     looks at) and it enters the monodromy as the whole piece's transition. Otherwise the sub-steps are taken one by
     one from the piece's start and every switch is located (module docstring)."""
-    from scipy.linalg import expm
-
     linear = system.linear
     n = linear.size
     cache = {} if cache is None else cache
@@ -70,73 +68,130 @@ def backlash_flow_ndof(system: BacklashSystem, state: np.ndarray, substeps: int 
     total = np.eye(2 * n + 1) if monodromy else None
     info = {"switches": 0, "free_flight_time": 0.0, "back_contact_time": 0.0, "zone_switches": 0, "time": [0.0],
             "states": [z[:-1]], "segments": [], "crossings": {}}
-    key = None
-    for piece in range(linear.nodes.size - 1):
-        start, stop = linear.nodes[piece], linear.nodes[piece + 1]
-        step = (stop - start) / substeps
+    functionals = system.state_functionals()
+    key, pending, piece = None, [], 0
+    while piece < linear.nodes.size - 1:
         previous, key = key, (system.region(z, piece), system.sides(z, piece))  # at a node the deviation steps: afresh
-        if previous is not None:
-            count_crossings(info["crossings"], previous, key)
+        if pending and key != pending[0][2]:  # the pieces taken so far end: are they one contact state?
+            failed, z, total = _settle(system, pieces, pending, info, record, total)
+            pending = []
+            if failed is not None:  # the motion from that piece's start switches: followed sub-step by sub-step
+                piece, previous, key, z = failed
+                if previous is not None:
+                    count_crossings(info["crossings"], previous, key)
+                z, key, total = _switching_piece(system, pieces, piece, key, z, substeps, info, record, total)
+                piece += 1
+                continue
         full_step = pieces.step(piece, key)
         states = np.empty((substeps, 2 * n + 1))
         trial = z
         for index in range(substeps):
             trial = full_step @ trial
             states[index] = trial
-        if system.keeps_state(states, piece, key):  # the whole piece in one contact state
-            if key[0] == _FREE:
-                info["free_flight_time"] += stop - start
-            elif key[0] == _BACK:
-                info["back_contact_time"] += stop - start
-            if record:
-                for index in range(substeps):
-                    info["time"].append(start + (index + 1) * step if index + 1 < substeps else stop)
-                    info["states"].append(states[index, :-1])
-                    info["segments"].append((piece, key[0], key[1]))
-            z = states[-1]
-            if monodromy:
-                total = pieces.whole(piece, key) @ total
-            if not np.all(np.isfinite(z)):
-                raise ProblemError("state", "not finite", "a bounded motion", "the coefficients are out of range")
-            continue
-        product = []
-        t = start
-        while t < stop - 1e-12 * (stop - start):
-            matrix, full_step = pieces.matrix(piece, key), pieces.step(piece, key)
-            h = min(step, stop - t)
-            trial = (full_step if h == step else expm(matrix * h)) @ z
-            after = (system.region(trial, piece), system.sides(trial, piece))
-            following, zone = key, None
-            if after != key:
-                h, following, zone, switched, seen = first_switch(system, piece, key, after, matrix, z, h,
-                                                                   stop - start)
-                info["switches" if zone is None else "zone_switches"] += switched
-                if seen:  # a crossing at a known instant (not a change taken over a whole sub-step)
-                    count_crossings(info["crossings"], key, following)
-            if h > 0.0:
-                segment = full_step if h == step else expm(matrix * h)
-                if monodromy:
-                    product.append(segment)
-                z = segment @ z
-                if key[0] == _FREE:
-                    info["free_flight_time"] += h
-                elif key[0] == _BACK:
-                    info["back_contact_time"] += h
-                t += h
-            if zone is not None and monodromy and system.dead_zones[zone].jumps:  # its dashpot starts or stops
-                product.append(saltation(matrix, pieces.matrix(piece, following), system.dead_zones[zone].vector, z))
-            if record:
-                info["time"].append(t)
-                info["states"].append(z[:-1])
-                info["segments"].append((piece, key[0], key[1]))
-            key = following
-            if not np.all(np.isfinite(z)):
-                raise ProblemError("state", "not finite", "a bounded motion", "the coefficients are out of range")
-        if monodromy:
-            for matrix in product:
-                total = matrix @ total
+        # taken as if it keeps its contact state, checked with the pieces of the same state in one call (_settle)
+        pending.append((piece, previous, key, z, states, states[:, :2 * n] @ functionals.T))
+        z = states[-1]
+        piece += 1
+        if len(pending) == _SETTLE_EVERY or piece == linear.nodes.size - 1:
+            failed, z, total = _settle(system, pieces, pending, info, record, total)
+            pending = []
+            if failed is not None:
+                piece, previous, key, z = failed
+                if previous is not None:
+                    count_crossings(info["crossings"], previous, key)
+                z, key, total = _switching_piece(system, pieces, piece, key, z, substeps, info, record, total)
+                piece += 1
     count_crossings(info["crossings"], key, (system.region(z, 0), system.sides(z)))  # the period's end node
     return z[:-1], None if total is None else total[:-1, :-1], info
+
+
+#: Pieces taken as keeping their contact state before their states are checked in one call (:func:`_settle`).
+_SETTLE_EVERY = 64
+
+
+def _settle(system: BacklashSystem, pieces: PieceExponentials, pending: list, info: dict, record: bool,
+            total: np.ndarray | None) -> tuple[tuple | None, np.ndarray, np.ndarray | None]:
+    """Take the ``pending`` pieces (piece, key before it, its key, start state, sub-step states, their functionals;
+    one key) up to the first whose sub-step states leave its contact state: (that piece's (piece, key before it, key,
+    start state) or None, the state where the kept ones end, the monodromy so far). The check is the per-piece rule of
+    :meth:`BacklashSystem.keeps_projected_state` on the same functionals, all rows at once; where it fails, piece by
+    piece to find the first."""
+    key = pending[0][2]
+    values = np.concatenate([entry[5] for entry in pending])
+    rows = np.repeat([entry[0] for entry in pending], pending[0][4].shape[0])
+    kept = len(pending)
+    if not system.keeps_projected_state(values, rows, key):
+        kept = next(index for index, entry in enumerate(pending)
+                    if not system.keeps_projected_state(entry[5], entry[0], key))
+    nodes, substeps = system.linear.nodes, pending[0][4].shape[0]
+    z = pending[0][3]
+    for piece, previous, key, _, states, _ in pending[:kept]:
+        if previous is not None:
+            count_crossings(info["crossings"], previous, key)
+        start, stop = nodes[piece], nodes[piece + 1]
+        if key[0] == _FREE:
+            info["free_flight_time"] += stop - start
+        elif key[0] == _BACK:
+            info["back_contact_time"] += stop - start
+        if record:
+            step = (stop - start) / substeps
+            for index in range(substeps):
+                info["time"].append(start + (index + 1) * step if index + 1 < substeps else stop)
+                info["states"].append(states[index, :-1])
+                info["segments"].append((piece, key[0], key[1]))
+        z = states[-1]
+        if total is not None:
+            total = pieces.whole(piece, key) @ total
+        if not np.all(np.isfinite(z)):
+            raise ProblemError("state", "not finite", "a bounded motion", "the coefficients are out of range")
+    failed = None if kept == len(pending) else pending[kept][:4]
+    return failed, z, total
+
+
+def _switching_piece(system: BacklashSystem, pieces: PieceExponentials, piece: int, key: tuple, z: np.ndarray,
+                     substeps: int, info: dict, record: bool, total: np.ndarray | None
+                     ) -> tuple[np.ndarray, tuple, np.ndarray | None]:
+    """One piece whose motion leaves its contact state, from ``z`` at its start: sub-step by sub-step, every switch
+    located (module docstring). Returns (the end state, the contact state there, the monodromy so far)."""
+    from scipy.linalg import expm
+
+    start, stop = system.linear.nodes[piece], system.linear.nodes[piece + 1]
+    step = (stop - start) / substeps
+    product = []
+    t = start
+    while t < stop - 1e-12 * (stop - start):
+        matrix, full_step = pieces.matrix(piece, key), pieces.step(piece, key)
+        h = min(step, stop - t)
+        trial = (full_step if h == step else expm(matrix * h)) @ z
+        after = (system.region(trial, piece), system.sides(trial, piece))
+        following, zone = key, None
+        if after != key:
+            h, following, zone, switched, seen = first_switch(system, piece, key, after, matrix, z, h, stop - start)
+            info["switches" if zone is None else "zone_switches"] += switched
+            if seen:  # a crossing at a known instant (not a change taken over a whole sub-step)
+                count_crossings(info["crossings"], key, following)
+        if h > 0.0:
+            segment = full_step if h == step else expm(matrix * h)
+            if total is not None:
+                product.append(segment)
+            z = segment @ z
+            if key[0] == _FREE:
+                info["free_flight_time"] += h
+            elif key[0] == _BACK:
+                info["back_contact_time"] += h
+            t += h
+        if zone is not None and total is not None and system.dead_zones[zone].jumps:  # its dashpot starts or stops
+            product.append(saltation(matrix, pieces.matrix(piece, following), system.dead_zones[zone].vector, z))
+        if record:
+            info["time"].append(t)
+            info["states"].append(z[:-1])
+            info["segments"].append((piece, key[0], key[1]))
+        key = following
+        if not np.all(np.isfinite(z)):
+            raise ProblemError("state", "not finite", "a bounded motion", "the coefficients are out of range")
+    for matrix in product:
+        total = matrix @ total
+    return z, key, total
 
 
 def piece_exponentials(system: BacklashSystem, substeps: int, cache: dict) -> PieceExponentials:

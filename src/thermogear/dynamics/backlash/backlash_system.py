@@ -7,6 +7,7 @@ states keep a contact state. Knows nothing of gears: matrices only.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 
@@ -77,12 +78,18 @@ class BacklashSystem:
 
     def state_functionals(self) -> np.ndarray:
         """(2 + 2·zones, 2n): the rows that give g + e_j = wᵀq, ġ = wᵀq̇ and each dead zone's u = vᵀq and u̇ of a
-        state (for :meth:`keeps_projected_state`)."""
+        state (for :meth:`keeps_projected_state`); formed once (read-only), since a flow asks for them on every
+        piece."""
+        return self._state_functionals
+
+    @cached_property
+    def _state_functionals(self) -> np.ndarray:
         n = self.linear.size
         rows = np.zeros((2 + 2 * len(self.dead_zones), 2 * n))
         rows[0, :n], rows[1, n:] = self.mesh_vector, self.mesh_vector
         for index, zone in enumerate(self.dead_zones):
             rows[2 + 2 * index, :n], rows[3 + 2 * index, n:] = zone.vector, zone.vector
+        rows.setflags(write=False)
         return rows
 
     def keeps_projected_state(self, values: np.ndarray, piece, key: tuple) -> bool:
@@ -92,14 +99,14 @@ class BacklashSystem:
         driving = (gap > 0.0) | ((gap == 0.0) & (rate > 0.0))
         back = (gap < -self.backlash) | ((gap == -self.backlash) & (rate < 0.0))
         inside = driving if region == _DRIVE else back if region == _BACK else ~(driving | back)
-        if not np.all(inside):
+        if not inside.all():
             return False
         for index, (zone, side) in enumerate(zip(self.dead_zones, sides)):
             value, speed = values[:, 2 + 2 * index], values[:, 3 + 2 * index]
             upper, lower = zone.bounds(piece)
             above = (value > upper) | ((value == upper) & (speed > 0.0))
             below = (value < lower) | ((value == lower) & (speed < 0.0))
-            if not np.all(above if side > 0 else below if side < 0 else ~(above | below)):
+            if not (above if side > 0 else below if side < 0 else ~(above | below)).all():
                 return False
         return True
 
