@@ -101,6 +101,13 @@ def helical_load_factor(total_contact_ratio: float) -> float:
     return 1.0 + 0.2 * math.sqrt((total_contact_ratio - 2.0) * (5.0 - total_contact_ratio))
 
 
+def normal_section_radius(transverse_radius, base_helix_angle: float):
+    """ρ_redC of the normal section [m], the radius every friction law takes (ISO/TR 13989-1 defines it there):
+    ρ_t/cos β_b for the transverse section's relative radius of curvature ρ_t [m] and the base helix angle β_b
+    [rad]; ρ_t itself for a spur pair (β_b = 0). Arrays broadcast."""
+    return transverse_radius / math.cos(base_helix_angle) if base_helix_angle else transverse_radius
+
+
 def _smallest(value) -> float:
     """The smallest of a number or an array (NaN where any value is not finite)."""
     values = np.asarray(value, dtype=float)
@@ -240,5 +247,5 @@ def friction_law(name: str, key: str = "gearbox.friction_model") -> FrictionLaw:
 
 
 __all__ = ["DEFAULT_DAMPING_FRICTION_MODEL", "DEFAULT_LOSS_FRICTION_MODEL", "FRICTION_MODELS", "FrictionLaw",
-           "LARGEST_CONSTANT_FRICTION", "PitchContact", "SCHLENK_LUBRICANT_FACTORS", "friction_law",
+           "LARGEST_CONSTANT_FRICTION", "PitchContact", "normal_section_radius", "SCHLENK_LUBRICANT_FACTORS", "friction_law",
            "helical_load_factor", "validity_warnings"]

@@ -26,7 +26,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from thermogear.errors import ExtrapolationWarning
-from thermogear.friction.models import PitchContact, helical_load_factor
+from thermogear.friction.models import PitchContact, helical_load_factor, normal_section_radius
 from thermogear.gearbox.bearing_entries import mounted_bearing_power
 from thermogear.gearbox.bearing_loss import seal_power_loss
 from thermogear.gearbox.churning import DippedGear, churning_power_loss, churning_validity
@@ -129,10 +129,10 @@ class LossModel:
             return 0.0
         pitch = pair.path_points["C"]
         rolling_1, rolling_2 = pair.rolling_speeds(pitch, self.operating.speed_rpm)
-        normal_section = math.cos(description.base_helix_angle)  # ρ_n = ρ_t/cos β_b (module docstring)
         contact = PitchContact(self.normal_force / pair.face_width, description.roughness, viscosity,
                                float(rolling_1 + rolling_2),
-                               float(pair.relative_radius_of_curvature(pitch)) / normal_section,
+                               normal_section_radius(float(pair.relative_radius_of_curvature(pitch)),
+                                                     description.base_helix_angle),
                                description.friction_lubricant_factor,
                                helical_load_factor(description.total_contact_ratio))
         return description.friction.coefficient(contact, description.friction_constant)

@@ -22,7 +22,7 @@ import numpy as np
 from thermogear.friction.damping import (PairDamping, friction_damping_exponents, friction_pair_damping,
                                          mesh_circular_frequency, mesh_damping)
 from thermogear.errors import CaseError
-from thermogear.friction.models import FrictionLaw, friction_law
+from thermogear.friction.models import FrictionLaw, friction_law, helical_load_factor, normal_section_radius
 from thermogear.lubricant import Lubricant, lubricant_from_case
 from thermogear.mesh.helical_model import helical_model_state
 from thermogear.mesh.model_names import MODELS, Model
@@ -220,10 +220,15 @@ class MeshModel:
         law = self.damping_friction_law
         factor = law.lubricant_factor(self.lubricant.base_oil, case.damping.lubricant_factor,
                                       key="damping.lubricant_factor")
+        radius, load_factor = pair.relative_radius_of_curvature(roll), 1.0
+        if case.helical_pair is not None:  # the laws take the normal section's radius, ISO/TR 13989's law K_Bγ
+            radius = normal_section_radius(radius, case.helical_pair.base_helix_angle)
+            load_factor = helical_load_factor(case.helical_pair.total_contact_ratio)
         friction, damping, unit_load = friction_pair_damping(
             stiffness, share, normal_load / pair.face_width, case.roughness_ra, viscosity,
-            np.asarray(rolling_1 + rolling_2, dtype=float), pair.relative_radius_of_curvature(roll), factor,
-            mesh_circular_frequency(pair.pinion.teeth, speed_rpm), law, case.damping.friction_coefficient)
+            np.asarray(rolling_1 + rolling_2, dtype=float), radius, factor,
+            mesh_circular_frequency(pair.pinion.teeth, speed_rpm), law, case.damping.friction_coefficient,
+            load_factor)
         return PairDamping(model=self.model, roll=roll, gamma=gamma, friction_coefficient=friction,
                            viscosity=viscosity, damping=damping, temperature_c=temperature, pair_stiffness=stiffness,
                            load_share=share, unit_load=unit_load)
