@@ -34,7 +34,7 @@ from thermogear.dynamics.results.spectra import harmonic_spectrum
 from thermogear.errors import CaseError
 from thermogear.mesh.state import MeshState
 
-__all__ = ["BearingSpectra", "DrivetrainResponse", "MeshResponse", "PeriodicMotion", "train_problems", "bearing_force_spectrum", "bearing_forces", "drivetrain_backlash_system", "drivetrain_periodic_system",
+__all__ = ["BearingSpectra", "DrivetrainResponse", "MeshResponse", "PeriodicMotion", "train_problems", "bearing_force_spectrum", "bearing_dofs", "bearing_forces", "drivetrain_backlash_system", "drivetrain_periodic_system",
            "drivetrain_periodic_response", "drivetrain_speed_sweep"]
 
 
@@ -377,13 +377,23 @@ def _response(assembled: AssembledDrivetrain, train: MeshTrain, problems, grid: 
                               grid.period, meshes, bearing_moments(assembled, displacement), velocity)
 
 
+def bearing_dofs(assembled: AssembledDrivetrain) -> list[int]:
+    """The DOFs the bearings sit on (x, y, z of each bearing's node), in order, each once."""
+    dofs = [assembled.dof(bearing.location, name) for bearing in assembled.drivetrain.bearings
+            for name in ("x", "y", "z")]
+    return sorted(set(dofs))
+
+
 def bearing_forces(assembled: AssembledDrivetrain, displacement: np.ndarray, velocity: np.ndarray,
-                   clearance: bool = True) -> dict[str, np.ndarray]:
+                   clearance: bool = True, dofs: list[int] | None = None) -> dict[str, np.ndarray]:
     """Force of each bearing on its housing (S, 3) [N] at the samples (S, DOFs): K·u + C·u̇, and per direction x, y
     of a bearing with a radial clearance δ, zero for |u| <= δ and k(u ∓ δ) + c·u̇ beyond (``clearance`` False: every
-    bearing in contact, as the linear system solves it)."""
+    bearing in contact, as the linear system solves it). ``dofs``: the DOFs the columns of ``displacement`` and
+    ``velocity`` hold (e.g. :func:`bearing_dofs`), None where they hold every DOF in order."""
+    column = None if dofs is None else {dof: index for index, dof in enumerate(dofs)}
     forces = {}
     for bearing in assembled.drivetrain.bearings:
-        dofs = [assembled.dof(bearing.location, name) for name in ("x", "y", "z")]
-        forces[bearing.name] = bearing.housing_force(displacement[:, dofs], velocity[:, dofs], clearance)
+        own = [assembled.dof(bearing.location, name) for name in ("x", "y", "z")]
+        own = own if column is None else [column[dof] for dof in own]
+        forces[bearing.name] = bearing.housing_force(displacement[:, own], velocity[:, own], clearance)
     return forces

@@ -13,7 +13,7 @@ from typing import Any
 import numpy as np
 
 from thermogear.drivetrain.assembly import AssembledDrivetrain
-from thermogear.drivetrain.response import MeshResponse, bearing_forces, train_problems
+from thermogear.drivetrain.response import MeshResponse, bearing_dofs, bearing_forces, train_problems
 from thermogear.drivetrain.train import MeshTrain
 from thermogear.dynamics.backlash.backlash_ndof import (BACK_CONTACT, DRIVING_CONTACT, FREE_FLIGHT, BacklashSystem,
                                                         MeshZone)
@@ -27,13 +27,11 @@ __all__ = ["SampledMotion", "mesh_contacts", "mesh_trajectory",
            "sampled_metrics", "sampled_motion", "train_mesh_responses"]
 
 
-def _expanded(reduction, basis, values: np.ndarray) -> np.ndarray:
-    """(S, m) solver coordinates → (S, DOFs): with a modal basis B (r, m) under the rigid-body reduction Q (DOFs, r),
-    q = (Q B) η, the two bases multiplied once (DOFs·r·m) instead of every sample passing through r coordinates
-    (S·DOFs·r: a transient's 10⁴–10⁵ samples)."""
-    if basis is not None:
-        return values @ reduction.expand(basis.basis).T
-    return reduction.expand(values.T).T
+def _expansion(reduction, basis) -> np.ndarray:
+    """E (DOFs, m), q = E·(solver coordinates): with a modal basis B (r, m) under the rigid-body reduction Q (DOFs, r)
+    E = Q B, the two bases multiplied once (DOFs·r·m) instead of every sample passing through r coordinates
+    (S·DOFs·r: a transient's 10⁴–10⁵ samples); Q itself without one."""
+    return reduction.basis if basis is None else reduction.expand(basis.basis)
 
 
 def mesh_trajectory(trajectory: BacklashTrajectory, zone: int) -> BacklashTrajectory:
@@ -83,10 +81,11 @@ def train_mesh_responses(assembled: AssembledDrivetrain, train: MeshTrain, reduc
 
 @dataclass(frozen=True, eq=False)
 class SampledMotion:
-    """A sampled motion on every DOF: ``displacement`` (S, DOFs), δ = wᵀq [m] and its rate [m/s], the
-    ``mesh_force`` k_j·φ(g) + c_j·ġ and its elastic part k_j·φ(g) [N], ``bearing_forces`` name → (S, 3) [N]."""
+    """A sampled motion: ``displacement`` (S, DOFs) on every DOF (None where only δ and the forces were formed, e.g.
+    the whole motion from rest), δ = wᵀq [m] and its rate [m/s], the ``mesh_force`` k_j·φ(g) + c_j·ġ and its elastic
+    part k_j·φ(g) [N], ``bearing_forces`` name → (S, 3) [N]."""
 
-    displacement: np.ndarray
+    displacement: np.ndarray | None
     transmission_error: np.ndarray
     transmission_error_rate: np.ndarray
     mesh_force: np.ndarray
@@ -95,20 +94,27 @@ class SampledMotion:
 
 
 def sampled_motion(assembled: AssembledDrivetrain, problem, reduction, basis, trajectory: BacklashTrajectory,
-                   deviation: np.ndarray, backlash: float, mesh: int = 0) -> SampledMotion:
+                   deviation: np.ndarray, backlash: float, mesh: int = 0, every_dof: bool = True) -> SampledMotion:
     """The trajectory (in the solver's coordinates) on every DOF with δ and the forces of the module docstring;
     ``deviation`` ē_j [m] per piece and the ``backlash`` b [m] of the mesh coordinate g = δ − ē_j of the
-    drivetrain's ``mesh``-th mesh (``trajectory.region`` its region)."""
-    displacement = _expanded(reduction, basis, trajectory.displacement)
-    velocity = _expanded(reduction, basis, trajectory.velocity)
-    w = assembled.mesh_vectors[mesh]
-    delta, rate = displacement @ w, velocity @ w
+    drivetrain's ``mesh``-th mesh (``trajectory.region`` its region). Without ``every_dof`` only δ, its rate and the
+    bearings' DOFs are formed (``displacement`` None): what a long motion needs, at a fraction of the memory."""
+    expansion, w = _expansion(reduction, basis), assembled.mesh_vectors[mesh]
+    if every_dof:
+        displacement = trajectory.displacement @ expansion.T
+        velocity = trajectory.velocity @ expansion.T
+        delta, rate, forces = displacement @ w, velocity @ w, bearing_forces(assembled, displacement, velocity)
+    else:
+        on_mesh, dofs = expansion.T @ w, bearing_dofs(assembled)
+        delta, rate = trajectory.displacement @ on_mesh, trajectory.velocity @ on_mesh
+        rows = expansion[dofs].T
+        displacement, forces = None, bearing_forces(assembled, trajectory.displacement @ rows,
+                                                    trajectory.velocity @ rows, dofs=dofs)
     piece, region = trajectory.piece, trajectory.region
     gap = delta - deviation[piece]
     elastic = np.where(region == DRIVING_CONTACT, gap, np.where(region == BACK_CONTACT, gap + backlash, 0.0))
     elastic = problem.stiffness[piece] * elastic
-    return SampledMotion(displacement, delta, rate, elastic + problem.damping[piece] * rate, elastic,
-                         bearing_forces(assembled, displacement, velocity))
+    return SampledMotion(displacement, delta, rate, elastic + problem.damping[piece] * rate, elastic, forces)
 
 
 def sampled_metrics(problem, trajectory: BacklashTrajectory, motion: SampledMotion, multipliers: np.ndarray,
