@@ -125,6 +125,7 @@ def _settle(system: BacklashSystem, pieces: PieceExponentials, pending: list, in
                     if not system.keeps_projected_state(entry[5], entry[0], key))
     nodes, substeps = system.linear.nodes, pending[0][4].shape[0]
     z = pending[0][3]
+    finite = kept == 0 or bool(np.isfinite([entry[4][-1] for entry in pending[:kept]]).all())
     for piece, previous, key, _, states, _ in pending[:kept]:
         if previous is not None:
             count_crossings(info["crossings"], previous, key)
@@ -135,14 +136,13 @@ def _settle(system: BacklashSystem, pieces: PieceExponentials, pending: list, in
             info["back_contact_time"] += stop - start
         if record:
             step = (stop - start) / substeps
-            for index in range(substeps):
-                info["time"].append(start + (index + 1) * step if index + 1 < substeps else stop)
-                info["states"].append(states[index, :-1])
-                info["segments"].append((piece, key[0], key[1]))
+            info["time"].extend([start + (index + 1) * step for index in range(substeps - 1)] + [stop])
+            info["states"].extend(states[:, :-1])
+            info["segments"].extend([(piece, key[0], key[1])] * substeps)
         z = states[-1]
         if total is not None:
             total = pieces.whole(piece, key) @ total
-        if not np.all(np.isfinite(z)):
+        if not finite and not np.all(np.isfinite(z)):
             raise ProblemError("state", "not finite", "a bounded motion", "the coefficients are out of range")
     failed = None if kept == len(pending) else pending[kept][:4]
     return failed, z, total

@@ -116,12 +116,12 @@ def backlash_trajectory(system: BacklashSystem, state: np.ndarray, periods: int 
         for name in totals:
             totals[name] += info[name]
         offset = index * period
-        for k, key in enumerate(info["segments"]):
-            if info["time"][k + 1] > info["time"][k]:  # a segment cut to nothing at a switch has no inside
-                times.append((offset + info["time"][k], offset + info["time"][k + 1]))
-                starts.append(info["states"][k])
-                keys.append(key)
-    segments = _Segments.of(np.array(times), np.array(starts), keys, len(system.dead_zones))
+        time = np.asarray(info["time"], dtype=float)
+        inside = np.flatnonzero(time[1:] > time[:-1])  # a segment cut to nothing at a switch has no inside
+        times.append(np.column_stack([offset + time[:-1][inside], offset + time[1:][inside]]))
+        starts.append(np.asarray(info["states"][:-1])[inside])
+        keys.extend(info["segments"][k] for k in inside)
+    segments = _Segments.of(np.vstack(times), np.vstack(starts), keys, len(system.dead_zones))
     rows = _samples(segments, linear.nodes, period, int(periods), int(samples_per_piece))
     pieces = piece_exponentials(system, substeps, cache)
 
