@@ -64,3 +64,19 @@ def test_the_helical_load_factor_as_a_field_of_the_contact():
     assert law.coefficient(contact, warn=False) == pytest.approx(_friction(LOAD_WITHOUT * 1.274, 30.09), rel=1e-14)
     assert friction_law("schlenk").coefficient(contact, warn=False) == friction_law("schlenk").coefficient(
         PitchContact(LOAD_WITHOUT, ROUGHNESS, 30.09e-3, SUM_VELOCITY, RELATIVE_RADIUS, 1.0), warn=False)
+
+
+def test_the_load_is_taken_at_the_reference_circle():
+    # The printout builds w_Bt on F_t, the nominal tangential force at the reference circle (F_t/b = 666.85 N/mm
+    # times its load factors = 1119.632 N/mm). thermogear's contacts carry the load along the line of action,
+    # F_bt/b = (F_t/b)/cos α_t, with the reference transverse pressure angle α_t = 20.284° (printed): the law must
+    # turn it back into F_t/b. Identity to rounding; Schlenk's law takes F_bt/b itself and must not change.
+    reference_angle = math.radians(20.284)
+    along_the_line = LOAD_WITHOUT / math.cos(reference_angle)
+    contact = PitchContact(along_the_line, ROUGHNESS, 30.09e-3, SUM_VELOCITY, RELATIVE_RADIUS, 1.0, 1.274,
+                           reference_angle)
+    law = friction_law("iso_tr_13989_2")
+    assert law.coefficient(contact, warn=False) == pytest.approx(_friction(LOAD_WITHOUT * 1.274, 30.09), rel=1e-12)
+    schlenk = friction_law("schlenk")
+    assert schlenk.coefficient(contact, warn=False) == schlenk.coefficient(
+        PitchContact(along_the_line, ROUGHNESS, 30.09e-3, SUM_VELOCITY, RELATIVE_RADIUS, 1.0), warn=False)

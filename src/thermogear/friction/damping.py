@@ -189,7 +189,8 @@ def contact_region_means(mesh_values, contact_count, weights=None) -> dict[str, 
 
 def friction_pair_damping(pair_stiffness, load_share, total_unit_load, roughness, viscosity, sum_velocity,
                           relative_radius, lubricant_factor, circular_frequency, law: FrictionLaw | None = None,
-                          constant: float | None = None, helical_load_factor: float = 1.0):
+                          constant: float | None = None, helical_load_factor: float = 1.0,
+                          reference_pressure_angle: float = 0.0):
     """Friction coefficient, equivalent viscous damping and unit load of tooth pairs (Luo & Li Eqs. 27–28).
 
     μ of the friction ``law`` (default the paper's, DIN 3990-4 as Luo & Li Eq. 27; ``constant`` the value of the
@@ -197,7 +198,8 @@ def friction_pair_damping(pair_stiffness, load_share, total_unit_load, roughness
     composite ``roughness`` R_a [m], ``viscosity`` η [Pa·s] at the contact, ``sum_velocity`` v_Σ [m/s] and
     ``relative_radius`` ρ_red [m] at the contact (of the normal section for a helical pair,
     :func:`~thermogear.friction.models.normal_section_radius`), X_L ``lubricant_factor`` [–],
-    ``helical_load_factor`` K_Bγ [–] (1 for a spur pair; only ISO/TR 13989's law takes it); then c = 4·μ·k/(π·ω_m) with
+    ``helical_load_factor`` K_Bγ [–] (1 for a spur pair) and ``reference_pressure_angle`` α_t [rad] (only ISO/TR
+    13989's law takes these two, :class:`~thermogear.friction.models.PitchContact`); then c = 4·μ·k/(π·ω_m) with
     the pair stiffness k [N/m] (total) and the mesh circular frequency ω_m [rad/s]. Arrays broadcast.
     The formula's usual limits are checked on the pair's total unit load w_Bt (the standard's load) and warned
     about once. Returns (μ [–], c [N·s/m], unit load of the pair [N/m]).
@@ -207,7 +209,7 @@ def friction_pair_damping(pair_stiffness, load_share, total_unit_load, roughness
     friction_validity_warnings(float(total_unit_load), sum_velocity)
     law = FRICTION_MODELS[DEFAULT_DAMPING_FRICTION_MODEL] if law is None else law
     contact = PitchContact(unit_load, roughness, viscosity, sum_velocity, relative_radius, lubricant_factor,
-                           helical_load_factor)
+                           helical_load_factor, reference_pressure_angle)
     shape = np.broadcast(unit_load, *(np.asarray(value) for value in (roughness, viscosity, sum_velocity,
                                                                       relative_radius))).shape
     friction = np.array(np.broadcast_to(np.asarray(law.law(contact, constant), dtype=float), shape))

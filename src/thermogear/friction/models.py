@@ -75,8 +75,11 @@ class PitchContact:
     """The contact at the pitch point of a gear pair: unit load w_Bt = F_bt/b [N/m], composite roughness
     R_a [m], dynamic viscosity η [Pa·s], sum of rolling speeds v_ΣC [m/s], relative radius of curvature
     ρ_redC [m] (of the normal section for a helical pair: ρ_t/cos β_b) and the lubricant factor X_L of the chosen
-    law [–]; ``helical_load_factor`` K_Bγ [–] (:func:`helical_load_factor`; 1 for a spur pair), which only the
-    ISO/TR 13989 law takes."""
+    law [–]; ``helical_load_factor`` K_Bγ [–] (:func:`helical_load_factor`; 1 for a spur pair) and
+    ``reference_pressure_angle`` α_t [rad], the transverse pressure angle at the reference circle, which only the
+    ISO/TR 13989 law takes: its load is the nominal tangential force at the reference circle, w = F_t/b with
+    F_t = F_bt·cos α_t (ISO 6336-1's F_t = 2000·T/d; a KISSsoft printout of the law builds its w_Bt on F_t);
+    0 takes ``unit_load`` as that load."""
 
     unit_load: float
     roughness: float
@@ -85,6 +88,7 @@ class PitchContact:
     relative_radius: float
     lubricant_factor: float
     helical_load_factor: float = 1.0
+    reference_pressure_angle: float = 0.0
 
 
 def helical_load_factor(total_contact_ratio: float) -> float:
@@ -141,7 +145,7 @@ def _iso_tr_13989_2(contact: PitchContact, constant: float | None) -> float:
     load, speed = contact.unit_load * 1e-3, contact.sum_velocity  # N/mm, m/s
     radius, roughness, viscosity = contact.relative_radius * 1e3, contact.roughness * 1e6, contact.viscosity * 1e3
     roughness_factor = 2.2 * (roughness / radius)**0.25
-    load = load * contact.helical_load_factor
+    load = load * math.cos(contact.reference_pressure_angle) * contact.helical_load_factor  # F_t/b·K_Bγ
     return 0.045 * (load / (speed * radius))**0.2 * viscosity**-0.05 * roughness_factor * contact.lubricant_factor
 
 

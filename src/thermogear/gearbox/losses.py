@@ -134,7 +134,7 @@ class LossModel:
                                normal_section_radius(float(pair.relative_radius_of_curvature(pitch)),
                                                      description.base_helix_angle),
                                description.friction_lubricant_factor,
-                               helical_load_factor(description.total_contact_ratio))
+                               helical_load_factor(description.total_contact_ratio), pair.pinion.pressure_angle)
         return description.friction.coefficient(contact, description.friction_constant)
 
     @property

@@ -228,7 +228,7 @@ class MeshModel:
             stiffness, share, normal_load / pair.face_width, case.roughness_ra, viscosity,
             np.asarray(rolling_1 + rolling_2, dtype=float), radius, factor,
             mesh_circular_frequency(pair.pinion.teeth, speed_rpm), law, case.damping.friction_coefficient,
-            load_factor)
+            load_factor, pair.pinion.pressure_angle)
         return PairDamping(model=self.model, roll=roll, gamma=gamma, friction_coefficient=friction,
                            viscosity=viscosity, damping=damping, temperature_c=temperature, pair_stiffness=stiffness,
                            load_share=share, unit_load=unit_load)
