@@ -251,5 +251,5 @@ def friction_law(name: str, key: str = "gearbox.friction_model") -> FrictionLaw:
 
 
 __all__ = ["DEFAULT_DAMPING_FRICTION_MODEL", "DEFAULT_LOSS_FRICTION_MODEL", "FRICTION_MODELS", "FrictionLaw",
-           "LARGEST_CONSTANT_FRICTION", "PitchContact", "normal_section_radius", "SCHLENK_LUBRICANT_FACTORS", "friction_law",
-           "helical_load_factor", "validity_warnings"]
+           "LARGEST_CONSTANT_FRICTION", "PitchContact", "SCHLENK_LUBRICANT_FACTORS", "friction_law",
+           "helical_load_factor", "normal_section_radius", "validity_warnings"]
