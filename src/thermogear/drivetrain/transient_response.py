@@ -77,8 +77,9 @@ def drivetrain_transient(assembled: AssembledDrivetrain, state: MeshState | Mesh
             system, basis = reduced_backlash_system(system, cutoff_hz)
         start = np.zeros(2 * system.linear.size)
         with one_blas_thread():
+            # the extrema only where maxima are read: the last period's metrics
             trajectory = backlash_trajectory(system, start, int(periods), samples_per_piece, substeps,
-                                             system.mesh_vector)
+                                             system.mesh_vector, extremum_periods=1)
         deviation, gap = system.deviation, system.backlash
     else:
         linear, reduction = drivetrain_periodic_system(assembled, state)

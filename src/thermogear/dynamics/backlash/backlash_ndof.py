@@ -127,7 +127,7 @@ def _settle(system: BacklashSystem, pieces: PieceExponentials, pending: list, in
     z = pending[0][3]
     finite = kept == 0 or bool(np.isfinite([entry[4][-1] for entry in pending[:kept]]).all())
     for piece, previous, key, _, states, _ in pending[:kept]:
-        if previous is not None:
+        if previous is not None and previous != key:  # the same state on both sides crosses nothing
             count_crossings(info["crossings"], previous, key)
         start, stop = nodes[piece], nodes[piece + 1]
         if key[0] == _FREE:

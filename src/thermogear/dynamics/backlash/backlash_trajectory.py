@@ -88,15 +88,17 @@ class BacklashTrajectory:
 
 def backlash_trajectory(system: BacklashSystem, state: np.ndarray, periods: int = 1, samples_per_piece: int = 8,
                         substeps: int = 16, extremum_vector: np.ndarray | None = None,
-                        cache: dict | None = None) -> BacklashTrajectory:
+                        cache: dict | None = None, extremum_periods: int | None = None) -> BacklashTrajectory:
     """The motion from ``state`` (2n,) at τ = 0 over ``periods`` periods, sampled as the module docstring says.
 
     ``substeps`` per piece to find the switches (see
     :func:`~thermogear.dynamics.backlash.backlash_ndof.backlash_flow_ndof`). ``extremum_vector`` v (n,): also sample
     every extremum of vᵀq inside a segment (a zero of vᵀq̇ between two samples, located by Brent's method on the exact
     solution), so that a quantity monotone in vᵀq on a segment (a mesh force in one contact region) takes its exact
-    maximum at a sample. ``cache``: the flow's exponentials, e.g. those of the shooting that found the orbit
-    (:func:`~thermogear.dynamics.backlash.backlash_ndof.backlash_flow_ndof`).
+    maximum at a sample; only in the last ``extremum_periods`` periods where given (e.g. 1 where only the last
+    period's maxima are read: Brent's search is a third of a long motion's cost). ``cache``: the flow's exponentials,
+    e.g. those of the shooting that found the orbit (:func:`~thermogear.dynamics.backlash.backlash_ndof.
+    backlash_flow_ndof`).
     """
     for key, value in (("periods", periods), ("samples_per_piece", samples_per_piece)):
         if isinstance(value, bool) or int(value) != value or value < 1:
@@ -125,17 +127,22 @@ def backlash_trajectory(system: BacklashSystem, state: np.ndarray, periods: int 
     rows = _samples(segments, linear.nodes, period, int(periods), int(samples_per_piece))
     pieces = piece_exponentials(system, substeps, cache)
 
+    matrices: dict[int, np.ndarray] = {}  # each segment's augmented matrix, formed once (Brent asks several times)
+
     def evaluate(k: int, into: float) -> np.ndarray:
         if into == 0.0:
             return segments.starts[k]
         if k + 1 < len(keys) and abs(segments.bounds[k, 1] - segments.bounds[k, 0] - into) <= 1e-13 * period:
             return segments.starts[k + 1]  # the segment's end: the state is continuous across every switch
-        matrix = pieces.matrix(keys[k][0], (keys[k][1], keys[k][2]))
-        return exponential_action(matrix, np.append(segments.starts[k], 1.0), into)[:-1]
+        if k not in matrices:
+            matrices[k] = pieces.matrix(keys[k][0], (keys[k][1], keys[k][2]))
+        return exponential_action(matrices[k], np.append(segments.starts[k], 1.0), into)[:-1]
 
     values = segments.states_at(rows, period, evaluate)
     if extremum_vector is not None:
-        extra, extra_values = _extrema(rows, values, segments, np.asarray(extremum_vector, dtype=float), n, evaluate)
+        extrema_from = 0.0 if extremum_periods is None else max(int(periods) - int(extremum_periods), 0) * period
+        extra, extra_values = _extrema(rows, values, segments, np.asarray(extremum_vector, dtype=float), n, evaluate,
+                                       extrema_from)
         rows = {name: np.concatenate([rows[name], extra[name]]) for name in rows}
         values = np.vstack([values, extra_values])
         order = np.lexsort((rows["rank"], rows["time"]))  # stable: ties keep their order, as a list sort does
@@ -220,9 +227,9 @@ def _samples(segments: _Segments, nodes: np.ndarray, period: float, periods: int
 
 
 def _extrema(rows: dict, values: np.ndarray, segments: _Segments, vector: np.ndarray, n: int,
-             evaluate) -> tuple[dict, np.ndarray]:
+             evaluate, start: float = 0.0) -> tuple[dict, np.ndarray]:
     """Samples (columns as :func:`_samples` gives them) with their states at the zeros of vᵀq̇ between consecutive
-    samples of one contact state."""
+    samples of one contact state, from the time ``start`` [s] on."""
     from scipy.optimize import brentq
 
     time, segment, into = rows["time"], rows["segment"], rows["into"]
@@ -232,6 +239,7 @@ def _extrema(rows: dict, values: np.ndarray, segments: _Segments, vector: np.nda
     near_zero = np.abs(rates) <= 4.0 * n * np.finfo(float).eps * (np.abs(values[:, n:]) @ np.abs(vector))
     first, second = np.arange(time.size - 1), np.arange(1, time.size)
     candidates = (segments.same_key(segment[second], segment[first]) & (time[second] > time[first])
+                  & (time[first] >= start)
                   & ((rates[first] * rates[second] < 0.0) | near_zero[first] | near_zero[second]))
     found = []
     for row in np.flatnonzero(candidates):
@@ -260,7 +268,7 @@ def linear_trajectory(system: PiecewiseLinearSystem, state: np.ndarray, periods:
     for key, value in (("periods", periods), ("samples_per_piece", samples_per_piece)):
         if isinstance(value, bool) or int(value) != value or value < 1:
             raise ProblemError(key, value, "integer >= 1", "whole periods and samples per piece")
-    n, pieces, samples = system.size, system.nodes.size - 1, int(samples_per_piece)
+    pieces, samples = system.nodes.size - 1, int(samples_per_piece)
     distinct, where = piece_steps(system, samples)  # every piece's sub-step exponential, batched
     steps = distinct[where]
     z = np.append(np.asarray(state, dtype=float), 1.0)
