@@ -124,6 +124,7 @@ def backlash_trajectory(system: BacklashSystem, state: np.ndarray, periods: int 
         starts.append(np.asarray(info["states"][:-1])[inside])
         keys.extend(info["segments"][k] for k in inside)
     segments = _Segments.of(np.vstack(times), np.vstack(starts), keys, len(system.dead_zones))
+    del times, starts  # the periods' parts, copied into the segments (a long motion's largest arrays)
     rows = _samples(segments, linear.nodes, period, int(periods), int(samples_per_piece))
     pieces = piece_exponentials(system, substeps, cache)
 
