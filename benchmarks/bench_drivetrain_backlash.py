@@ -109,18 +109,18 @@ def main(speeds: tuple[float, ...]) -> list[dict]:
     return rows
 
 
-def _run_process(case: str) -> dict:
-    """Wall seconds, CPU seconds and peak resident memory [MB] of ``thermogear run CASE --json`` in a child process
-    (its own imports included), from that child's own resource usage (os.wait4)."""
+def _run_process(case: str, *options: str) -> dict:
+    """Wall seconds, CPU seconds and peak resident memory [MB] of ``thermogear run CASE --json [OPTIONS]`` in a child
+    process (its own imports included), from that child's own resource usage (os.wait4)."""
     import subprocess
 
     wall = time.perf_counter()
-    child = subprocess.Popen([sys.executable, "-m", "thermogear", "run", case, "--json", "-q"],
+    child = subprocess.Popen([sys.executable, "-m", "thermogear", "run", case, "--json", "-q", *options],
                              stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     _, status, usage = os.wait4(child.pid, 0)
     wall = time.perf_counter() - wall
     child.returncode = os.waitstatus_to_exitcode(status)
-    return {"case": case, "wall_s": wall, "cpu_s": usage.ru_utime + usage.ru_stime,
+    return {"case": case, "options": list(options), "wall_s": wall, "cpu_s": usage.ru_utime + usage.ru_stime,
             "peak_memory_mb": usage.ru_maxrss / 1024.0, "exit_code": child.returncode}
 
 
@@ -179,6 +179,13 @@ def run_command_rows() -> list[dict]:
                       "memory of fzg_rig_type_c)") if case == user else ""
             print(f"run {Path(case).name:24s} wall {row['wall_s']:6.2f} s  CPU {row['cpu_s']:6.2f} s  peak "
                   f"memory {row['peak_memory_mb']:7.1f} MB  exit {row['exit_code']}{ratios}", flush=True)
+    # the motion from rest over the case's 60 mesh periods, both models (issue 36: it made fzg_rig_type_c hang)
+    row = _run_process("fzg_rig_type_c", "--method", "transient")
+    row["cpu_over_fzg_rig_type_c"] = row["cpu_s"] / rows[-2]["cpu_s"]
+    rows.append(row)
+    print(f"run fzg_rig_type_c --method transient wall {row['wall_s']:6.2f} s  CPU {row['cpu_s']:6.2f} s  peak memory "
+          f"{row['peak_memory_mb']:7.1f} MB  exit {row['exit_code']}  ({row['cpu_over_fzg_rig_type_c']:.2f}x CPU of the "
+          "periodic run)", flush=True)
     return rows
 
 
