@@ -81,7 +81,7 @@ def test_rank_updates_refuse_bad_shapes():
 def test_rank_two_update_scaled_by_its_own_norm():
     # a rank-2 update whose columns cancel (U = [w, w + δt], R_j = g_j [s; −s]: U R_j = −g_j δ t sᵀ), as a mesh whose
     # moments vary gives it (w and the tilt vector): ‖U‖₁‖R_j‖₁ ≈ 2g_j·max|s| overstates ‖U R_j‖₁ = g_jδ‖t‖₁ max|s|
-    # about 100 times, and the scaling follows the update's own norm (three squarings fewer here)
+    # about 100 times; the scaling follows a bound of the update's own norm (three squarings fewer here)
     from scipy.linalg import expm
 
     from thermogear.dynamics.linear_algebra.batched_exponential import expm_of_rank_updates, rank_update_parts
