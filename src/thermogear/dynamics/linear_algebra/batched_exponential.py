@@ -207,10 +207,10 @@ def rank_update_parts(base: np.ndarray, left: np.ndarray, right: np.ndarray, tim
     degree = _rank_update_degree(beta)
     # Krylov blocks of all pieces at once, as rows (N·r, m), each step one product with X₀ᵀ:
     # Y_iᵀ = Y_{i−1}ᵀ X₀ᵀ + (C_j V Y_{i−1})ᵀ Uᵀ; and Z_k = C_j (V X₀ᵏ) from the q rows' own powers
-    left_blocks = np.empty((count, rank, degree, size))  # Y_iᵀ of every piece, rows as the recursion forms them
+    left_blocks = np.empty((count, rank, size, degree))  # Y_i of every piece, its r columns apart
     krylov = np.broadcast_to(left.T, (count, rank, size)).reshape(count * rank, size)
     for order in range(degree):
-        left_blocks[:, :, order, :] = krylov.reshape(count, rank, size)
+        left_blocks[:, :, :, order] = krylov.reshape(count, rank, size)
         if order + 1 < degree:
             projected = (krylov @ rows.T).reshape(count, rank, rows.shape[0])  # (V Y_j)ᵀ: (N, r_b, q)
             coupling = right @ projected.transpose(0, 2, 1)  # C_j V Y_j: (N, r_a, r_b)
@@ -225,10 +225,11 @@ def rank_update_parts(base: np.ndarray, left: np.ndarray, right: np.ndarray, tim
     orders = np.arange(degree)
     hankel = 1.0 / np.array([[math.factorial(i + k + 1) for k in orders] for i in orders], dtype=float)
     powers = times[:, None] ** np.arange(degree + 1)[None]  # (N, d+1)
-    left_blocks *= powers[:, None, :degree, None]
+    left_blocks *= powers[:, None, None, :degree]
     right_blocks *= powers[:, 1:, None, None]
-    # Σ_i t^i Y_i/(i+k+1)! for each k, then as the columns (k, r) of L_j (N, m, d·r): one copy for any rank
-    weighted = np.matmul(hankel.T, left_blocks).transpose(0, 3, 2, 1).reshape(count, size, degree * rank)
+    # Σ_i t^i Y_i/(i+k+1)! for each k, then as the columns (k, r) of L_j (N, m, d·r) (a copy where r > 1)
+    weighted = (left_blocks.reshape(count * rank * size, degree) @ hankel).reshape(count, rank, size, degree)
+    weighted = weighted.transpose(0, 2, 3, 1).reshape(count, size, degree * rank)
     distinct, where = np.unique(times, return_inverse=True)
     # (equal widths: one, added without a copy)
     exponentials = batched_expm(distinct[:, None, None] * base[None]) if shared else None
