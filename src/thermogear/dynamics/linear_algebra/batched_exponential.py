@@ -220,18 +220,18 @@ def rank_update_parts(base: np.ndarray, left: np.ndarray, right: np.ndarray, tim
         row_powers.append(row_powers[-1] @ base)
     stacked_rows = np.stack(row_powers, axis=1).reshape(rows.shape[0], degree * size)  # (q, d·m)
     right_blocks = (right.reshape(count * rank, -1) @ stacked_rows).reshape(count, rank, degree, size)
-    right_blocks = right_blocks.transpose(0, 2, 1, 3) if rank > 1 else right_blocks.reshape(count, degree, 1, size)
     # t^{i+k+1}/(i+k+1)! = t^i · [1/(i+k+1)!] · t^{k+1}: the Hankel matrix of 1/p! is shared by every piece
     orders = np.arange(degree)
     hankel = 1.0 / np.array([[math.factorial(i + k + 1) for k in orders] for i in orders], dtype=float)
     powers = times[:, None] ** np.arange(degree + 1)[None]  # (N, d+1)
     left_blocks *= powers[:, None, None, :degree]
-    right_blocks *= powers[:, 1:, None, None]
-    # Σ_i t^i Y_i/(i+k+1)! for each k, then as the columns (k, r) of L_j (N, m, d·r) (a copy where r > 1)
+    right_blocks *= powers[:, None, 1:, None]
+    # Σ_i t^i Y_i/(i+k+1)! for each k, then as the columns (r, k) of L_j (N, m, r·d) (a copy where r > 1), the rows
+    # (r, k) of R_j as they are formed
     weighted = (left_blocks.reshape(count * rank * size, degree) @ hankel).reshape(count, rank, size, degree)
-    weighted = weighted.transpose(0, 2, 3, 1).reshape(count, size, degree * rank)
+    weighted = weighted.transpose(0, 2, 1, 3).reshape(count, size, rank * degree)
     distinct, where = np.unique(times, return_inverse=True)
     # (equal widths: one, added without a copy)
     exponentials = batched_expm(distinct[:, None, None] * base[None]) if shared else None
-    return RankUpdateExponentials(exponentials, where.ravel(), weighted, right_blocks.reshape(count, degree * rank, size),
+    return RankUpdateExponentials(exponentials, where.ravel(), weighted, right_blocks.reshape(count, rank * degree, size),
                                   scale, squarings, distinct * factor)
