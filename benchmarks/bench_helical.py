@@ -21,7 +21,8 @@ Three figures, each a ratio helical / spur (the issue's target: helical ≤ 10×
    each also on the modes to 20 kHz (``cutoff_hz``, what a case's ``response_cutoff_hz`` does).
 
 Run: python benchmarks/bench_helical.py [--quick] [--drivetrain] (``--drivetrain``: figure 4 only)
-Writes benchmarks/results/bench_helical.json.
+Writes benchmarks/results/bench_helical.json (``--drivetrain``: bench_helical_two_shaft.json; bench_helical_drivetrain.json
+is the other script's, benchmarks/bench_helical_drivetrain.py).
 """
 
 from __future__ import annotations
@@ -239,7 +240,7 @@ def main(quick: bool = False, drivetrain_only: bool = False) -> dict:
         result = {"drivetrain_response": drivetrain_responses(3 if quick else 7),
                   "python": sys.version.split()[0], "machine": platform.machine()}
         RESULTS.mkdir(exist_ok=True)
-        (RESULTS / "bench_helical_drivetrain.json").write_text(json.dumps(result, indent=2) + "\n", encoding="utf-8")
+        (RESULTS / "bench_helical_two_shaft.json").write_text(json.dumps(result, indent=2) + "\n", encoding="utf-8")
         return result
     warnings.simplefilter("ignore")
     result = {"points_per_period": 1024,
