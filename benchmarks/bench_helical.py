@@ -16,11 +16,13 @@ Three figures, each a ratio helical / spur (the issue's target: helical ≤ 10×
    docs/drivetrain.md (tests/data/two_shaft_drivetrain.toml, 256 points per period, every DOF) with its pair cut at
    β = 15° and the spread contact whose moments vary over the period (three patterns: a rank-2 update per mesh)
    against the same rotor with the spur pair, thermal model, states and assembly prepared, the two alternating;
-   and the helical one with the moments held at their means (one pattern) for reference; each also on the modes
-   to 20 kHz (``cutoff_hz``, what a case's ``response_cutoff_hz`` does).
+   and the helical one with the moments held at their means (one pattern) for reference; and the point contact (the
+   default ``helical_contact``: a constant normal stiffness at mid-face) of the helical pair against the spur pair's;
+   each also on the modes to 20 kHz (``cutoff_hz``, what a case's ``response_cutoff_hz`` does).
 
 Run: python benchmarks/bench_helical.py [--quick] [--drivetrain] (``--drivetrain``: figure 4 only)
-Writes benchmarks/results/bench_helical.json.
+Writes benchmarks/results/bench_helical.json (``--drivetrain``: bench_helical_two_shaft.json; bench_helical_drivetrain.json
+is the other script's, benchmarks/bench_helical_drivetrain.py).
 """
 
 from __future__ import annotations
@@ -181,8 +183,9 @@ def linear_sweeps(points: int) -> dict:
 
 
 def drivetrain_responses(repeat: int) -> dict:
-    """Figure 4: ``drivetrain_periodic_response`` of the two-shaft rotor, helical spread (moments varying) against
-    spur, and helical spread with the moments at their means against spur."""
+    """Figure 4: ``drivetrain_periodic_response`` of the two-shaft rotor, helical against spur with the same contact:
+    the spread contact (the helical one with its moments varying, and held at their means) and the point contact
+    (the default ``helical_contact``), each on every DOF and on the modes to 20 kHz, all runs alternating."""
     import tomllib
     from dataclasses import replace
 
@@ -193,32 +196,34 @@ def drivetrain_responses(repeat: int) -> dict:
     root = Path(__file__).resolve().parents[1]
     document = tomllib.loads((root / "tests" / "data" / "two_shaft_drivetrain.toml").read_text(encoding="utf-8"))
     prepared = {}
-    for label, helix in (("spur", 0.0), ("helical", 15.0)):
-        document["gears"].update(helix_angle_deg=helix, hand="right")
-        document["drivetrain"]["helical_contact"] = "spread"
-        built = case_drivetrain(case_from_document(document))
-        drivetrain, state = built.drivetrains["thermal"], built.mesh_states("thermal")
-        prepared[label] = (drivetrain.assemble(), state)
-        if helix:
-            assert drivetrain.meshes[0].varies()
-            held = replace(drivetrain, meshes=(replace(drivetrain.meshes[0], face_variation=None),))
-            prepared["helical, moments at their means"] = (held.assemble(), state)
+    for contact in ("spread", "point"):
+        for label, helix in (("spur", 0.0), ("helical", 15.0)):
+            document["gears"].update(helix_angle_deg=helix, hand="right")
+            document["drivetrain"]["helical_contact"] = contact
+            built = case_drivetrain(case_from_document(document))
+            drivetrain, state = built.drivetrains["thermal"], built.mesh_states("thermal")
+            name = label if contact == "spread" else f"{label}, point contact"
+            prepared[name] = (drivetrain.assemble(), state)
+            if helix and contact == "spread":
+                assert drivetrain.meshes[0].varies()
+                held = replace(drivetrain, meshes=(replace(drivetrain.meshes[0], face_variation=None),))
+                prepared["helical, moments at their means"] = (held.assemble(), state)
     runs = {label: (lambda item=item: drivetrain_periodic_response(*item)) for label, item in prepared.items()}
     runs.update({f"{label}, modes to 20 kHz": (lambda item=item: drivetrain_periodic_response(*item, cutoff_hz=2e4))
                  for label, item in prepared.items()})
     for run in runs.values():  # imports, first compilations
         run()
     times = {label: [] for label in runs}
-    for _ in range(repeat):  # the three alternating: each repeat exposes all to the same load
+    for _ in range(repeat):  # all alternating: each repeat exposes every run to the same load
         for label, run in runs.items():
             wall, cpu = time.perf_counter(), time.process_time()
             run()
             times[label].append((time.perf_counter() - wall, time.process_time() - cpu))
     best = {label: np.min(np.array(values), axis=0) for label, values in times.items()}
     rows = {}
-    for label, spur in (("helical", "spur"), ("helical, moments at their means", "spur"),
-                        ("helical, modes to 20 kHz", "spur, modes to 20 kHz"),
-                        ("helical, moments at their means, modes to 20 kHz", "spur, modes to 20 kHz")):
+    pairs = [("helical", "spur"), ("helical, moments at their means", "spur"),
+             ("helical, point contact", "spur, point contact")]
+    for label, spur in pairs + [(f"{label}, modes to 20 kHz", f"{spur}, modes to 20 kHz") for label, spur in pairs]:
         rows[label] = row = {"spur_s": float(best[spur][0]), "helical_s": float(best[label][0]),
                              "ratio": float(best[label][0] / best[spur][0]),
                              "spur_cpu_s": float(best[spur][1]), "helical_cpu_s": float(best[label][1]),
@@ -235,7 +240,7 @@ def main(quick: bool = False, drivetrain_only: bool = False) -> dict:
         result = {"drivetrain_response": drivetrain_responses(3 if quick else 7),
                   "python": sys.version.split()[0], "machine": platform.machine()}
         RESULTS.mkdir(exist_ok=True)
-        (RESULTS / "bench_helical_drivetrain.json").write_text(json.dumps(result, indent=2) + "\n", encoding="utf-8")
+        (RESULTS / "bench_helical_two_shaft.json").write_text(json.dumps(result, indent=2) + "\n", encoding="utf-8")
         return result
     warnings.simplefilter("ignore")
     result = {"points_per_period": 1024,

@@ -76,3 +76,37 @@ def test_rank_updates_refuse_bad_shapes():
         expm_of_rank_updates(np.eye(3), np.ones((3, 1)), np.ones((2, 1, 3)), -np.ones(2))
     with pytest.raises(ProblemError, match="matrices"):
         expm_of_rank_updates(np.eye(3), np.ones((3, 1)), np.ones((2, 1, 2)), np.ones(2), rows=np.ones((3, 3)))
+
+
+def test_rank_two_update_scaled_by_its_own_norm():
+    # a rank-2 update whose columns cancel (U = [w, w + δt], R_j = g_j [s; −s]: U R_j = −g_j δ t sᵀ), as a mesh whose
+    # moments vary gives it (w and the tilt vector): ‖U‖₁‖R_j‖₁ ≈ 2g_j·max|s| overstates ‖U R_j‖₁ = g_jδ‖t‖₁ max|s|
+    # about 100 times; the scaling follows a bound of the update's own norm (three squarings fewer here)
+    from scipy.linalg import expm
+
+    from thermogear.dynamics.linear_algebra.batched_exponential import expm_of_rank_updates, rank_update_parts
+
+    rng = np.random.default_rng(5)
+    base = rng.normal(size=(9, 9))
+    base *= 1.5 / np.abs(base).sum(axis=0).max()
+    w, t, s = rng.normal(size=9), rng.normal(size=9), rng.normal(size=9)
+    left = np.column_stack([w, w + 0.01 * t])
+    gains = rng.uniform(1.0, 3.0, 12)
+    right = gains[:, None, None] * np.array([s, -s])[None]
+    times = np.ones(12)
+    parts = rank_update_parts(base, left, right, times)
+    balance = parts.scale[:, None] / parts.scale[None, :]  # the norms are taken after the balancing
+
+    def norm(matrix):
+        return np.abs(matrix * balance).sum(axis=0).max()
+
+    update = max(norm(left @ r) for r in right)
+    product = (np.abs(left * parts.scale[:, None]).sum(axis=0).max()
+               * max(np.abs(r / parts.scale[None, :]).sum(axis=0).max() for r in right))  # ‖U‖₁·max_j‖R_j‖₁
+    assert product > 50.0 * update
+    assert parts.squarings == int(np.ceil(np.log2(norm(base) + update)))
+    assert int(np.ceil(np.log2(norm(base) + product))) >= parts.squarings + 3
+    reference = np.array([expm(base + left @ r) for r in right])
+    values = expm_of_rank_updates(base, left, right, times)
+    error = np.abs(values - reference).max(axis=(1, 2)) / np.abs(reference).max(axis=(1, 2))
+    assert error.max() < 1e-13  # the series within 2⁻⁵³ per scaled step, a few units of rounding

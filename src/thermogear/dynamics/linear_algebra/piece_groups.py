@@ -38,15 +38,23 @@ PIECE_TOLERANCE = 1e-9
 
 def _column_labels(values: np.ndarray, width: float) -> np.ndarray:
     """Labels of the clusters of one column: sorted values, a new cluster where a value lies more than ``width``
-    above its cluster's first (so every cluster spans at most ``width``)."""
+    above its cluster's first (so every cluster spans at most ``width``). A gap above ``width`` between neighbours
+    always starts a cluster, and a run between such gaps that spans at most ``width`` is one cluster; only a run
+    that spans more is scanned value by value (the rule's own order), so the labels are those of the scan."""
     order = np.argsort(values, kind="stable")
     ordered = values[order]
+    starts = np.zeros(values.size, dtype=bool)
+    starts[1:] = np.diff(ordered) > width
+    runs = np.flatnonzero(np.append(True, starts[1:])) if values.size else np.zeros(0, dtype=np.int64)
+    ends = np.append(runs[1:], values.size)
+    wide = ordered[ends - 1] - ordered[runs] > width if values.size else np.zeros(0, dtype=bool)
+    for first, end in zip(runs[wide].tolist(), ends[wide].tolist()):
+        start = ordered[first]
+        for position in range(first + 1, end):
+            if ordered[position] - start > width:
+                starts[position], start = True, ordered[position]
     labels = np.empty(values.size, dtype=np.int64)
-    label, start = 0, ordered[0] if ordered.size else 0.0
-    for position, value in enumerate(ordered):
-        if value - start > width:
-            label, start = label + 1, value
-        labels[order[position]] = label
+    labels[order] = np.cumsum(starts)
     return labels
 
 
