@@ -13,7 +13,8 @@ from typing import Any
 import numpy as np
 
 from thermogear.drivetrain.assembly import AssembledDrivetrain
-from thermogear.drivetrain.response import MeshResponse, bearing_dofs, bearing_forces, train_problems
+from thermogear.drivetrain.response import (MeshResponse, bearing_dofs, bearing_forces, solver_expansion,
+                                           train_problems)
 from thermogear.drivetrain.train import MeshTrain
 from thermogear.dynamics.backlash.backlash_ndof import (BACK_CONTACT, DRIVING_CONTACT, FREE_FLIGHT, BacklashSystem,
                                                         MeshZone)
@@ -25,13 +26,6 @@ from thermogear.dynamics.results.period_metrics import (contact_loss_summary, co
 
 __all__ = ["SampledMotion", "mesh_contacts", "mesh_trajectory",
            "sampled_metrics", "sampled_motion", "train_mesh_responses"]
-
-
-def _expansion(reduction, basis) -> np.ndarray:
-    """E (DOFs, m), q = E·(solver coordinates): with a modal basis B (r, m) under the rigid-body reduction Q (DOFs, r)
-    E = Q B, the two bases multiplied once (DOFs·r·m) instead of every sample passing through r coordinates
-    (S·DOFs·r: a transient's 10⁴–10⁵ samples); Q itself without one."""
-    return reduction.basis if basis is None else reduction.expand(basis.basis)
 
 
 def mesh_trajectory(trajectory: BacklashTrajectory, zone: int) -> BacklashTrajectory:
@@ -99,7 +93,7 @@ def sampled_motion(assembled: AssembledDrivetrain, problem, reduction, basis, tr
     ``deviation`` ē_j [m] per piece and the ``backlash`` b [m] of the mesh coordinate g = δ − ē_j of the
     drivetrain's ``mesh``-th mesh (``trajectory.region`` its region). Without ``every_dof`` only δ, its rate and the
     bearings' DOFs are formed (``displacement`` None): what a long motion needs, at a fraction of the memory."""
-    expansion, w = _expansion(reduction, basis), assembled.mesh_vectors[mesh]
+    expansion, w = solver_expansion(reduction, basis), assembled.mesh_vectors[mesh]
     if every_dof:
         displacement = trajectory.displacement @ expansion.T
         velocity = trajectory.velocity @ expansion.T
