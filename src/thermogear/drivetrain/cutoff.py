@@ -46,7 +46,7 @@ import numpy as np
 
 from thermogear.drivetrain.assembly import AssembledDrivetrain
 from thermogear.drivetrain.response import (DrivetrainResponse, _as_train, _grid, _periodic_system, _response,
-                                            drivetrain_periodic_response, solver_expansion)
+                                            drivetrain_periodic_response)
 from thermogear.drivetrain.train import MeshTrain
 from thermogear.drivetrain.static_state import mesh_torque_forces
 from thermogear.dynamics.periodic_orbits.periodic_ndof import PiecewiseLinearSystem
@@ -135,7 +135,7 @@ class _SharedReduction:
         from thermogear.dynamics.modes.modal_reduction import modal_basis
 
         basis = modal_basis(system, 2.0 * math.pi * cutoff, modes=modes)
-        transform = solver_expansion(reduction, basis)
+        transform = reduction.expansion(basis.basis)
         vector = transform.T @ assembled.mesh_vectors[0]
         project = (lambda matrix: transform.T @ (matrix @ transform))
         return cls(reduction, basis, project(assembled.mass), project(assembled.structure_stiffness),

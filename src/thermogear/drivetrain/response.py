@@ -36,7 +36,7 @@ from thermogear.mesh.state import MeshState
 
 __all__ = ["BearingSpectra", "DrivetrainResponse", "MeshResponse", "PeriodicMotion", "bearing_dofs",
            "bearing_force_spectrum", "bearing_forces", "drivetrain_backlash_system", "drivetrain_periodic_response",
-           "drivetrain_periodic_system", "drivetrain_speed_sweep", "solver_expansion", "train_problems"]
+           "drivetrain_periodic_system", "drivetrain_speed_sweep", "train_problems"]
 
 
 def drivetrain_periodic_system(assembled: AssembledDrivetrain,
@@ -346,7 +346,7 @@ def _response(assembled: AssembledDrivetrain, train: MeshTrain, problems, grid: 
     """The periodic orbit of the (reduced) system expanded to every DOF, with δ, the mesh and bearing forces and the
     metrics of each mesh (the orbit from ``solves`` where it holds the same system's, else solved)."""
     response = (periodic_response if solves is None else solves.response)(system, samples_per_piece)
-    expansion = solver_expansion(reduction, basis)
+    expansion = reduction.expansion(None if basis is None else basis.basis)  # the solver's coordinates → every DOF
     displacement, velocity = response.displacement @ expansion.T, response.velocity @ expansion.T
     pieces = grid.nodes.size - 1
     interval = np.minimum(np.arange(displacement.shape[0]) // samples_per_piece, pieces - 1)
@@ -374,13 +374,6 @@ def _response(assembled: AssembledDrivetrain, train: MeshTrain, problems, grid: 
     return DrivetrainResponse(response.time, first.transmission_error, first.transmission_error_rate,
                               first.mesh_force, forces, displacement, response.multipliers, first.metrics,
                               grid.period, meshes, bearing_moments(assembled, displacement), velocity)
-
-
-def solver_expansion(reduction: RigidBodyReduction, basis) -> np.ndarray:
-    """E (DOFs, m), q = E·(the solver's coordinates): with a modal basis B (r, m) under the rigid-body reduction
-    Q (DOFs, r), E = Q B, the two bases multiplied once (DOFs·r·m) instead of every sample passing through the r
-    coordinates (S·DOFs·r); Q itself without one."""
-    return reduction.basis if basis is None else reduction.expand(basis.basis)
 
 
 def bearing_dofs(assembled: AssembledDrivetrain) -> list[int]:

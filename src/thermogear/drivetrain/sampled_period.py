@@ -13,8 +13,7 @@ from typing import Any
 import numpy as np
 
 from thermogear.drivetrain.assembly import AssembledDrivetrain
-from thermogear.drivetrain.response import (MeshResponse, bearing_dofs, bearing_forces, solver_expansion,
-                                           train_problems)
+from thermogear.drivetrain.response import MeshResponse, bearing_dofs, bearing_forces, train_problems
 from thermogear.drivetrain.train import MeshTrain
 from thermogear.dynamics.backlash.backlash_ndof import (BACK_CONTACT, DRIVING_CONTACT, FREE_FLIGHT, BacklashSystem,
                                                         MeshZone)
@@ -93,7 +92,7 @@ def sampled_motion(assembled: AssembledDrivetrain, problem, reduction, basis, tr
     ``deviation`` ē_j [m] per piece and the ``backlash`` b [m] of the mesh coordinate g = δ − ē_j of the
     drivetrain's ``mesh``-th mesh (``trajectory.region`` its region). Without ``every_dof`` only δ, its rate and the
     bearings' DOFs are formed (``displacement`` None): what a long motion needs, at a fraction of the memory."""
-    expansion, w = solver_expansion(reduction, basis), assembled.mesh_vectors[mesh]
+    expansion, w = reduction.expansion(None if basis is None else basis.basis), assembled.mesh_vectors[mesh]
     if every_dof:
         displacement = trajectory.displacement @ expansion.T
         velocity = trajectory.velocity @ expansion.T

@@ -72,6 +72,12 @@ class RigidBodyReduction:
         """q = Q p (works on (count,) and (count, k) arrays)."""
         return self.basis @ reduced
 
+    def expansion(self, basis: np.ndarray | None = None) -> np.ndarray:
+        """E with q = E η for the coordinates η of a ``basis`` B (r, k) of the reduced space (e.g. a modal basis):
+        E = Q B, formed once, so that samples pass straight from η to q (S·n·k) instead of through p (S·n·r); Q
+        itself without one."""
+        return self.basis if basis is None else self.basis @ basis
+
 
 def rigid_body_reduction(mass: np.ndarray, connection_stiffness: np.ndarray, candidates: np.ndarray,
                          damping: np.ndarray | None = None) -> RigidBodyReduction:
