@@ -56,10 +56,12 @@ def backlash_flow_ndof(system: BacklashSystem, state: np.ndarray, substeps: int 
     :class:`~thermogear.dynamics.backlash.backlash_pieces. PieceExponentials`, are formed once per ``substeps``, in
     batches).
 
-    Each piece is first stepped through its ``substeps`` sub-steps in the contact state it starts in and the states
-    checked at once; where none changed state, that is the piece's motion (the same sub-step ends the switch search
-    looks at) and it enters the monodromy as the whole piece's transition. Otherwise the sub-steps are taken one by
-    one from the piece's start and every switch is located (module docstring)."""
+    Each piece is first stepped through its ``substeps`` sub-steps in the contact state it starts in, and the states
+    of up to :data:`_SETTLE_EVERY` consecutive pieces of one state are checked in one call (:func:`_settle`); where
+    none changed state, that is the piece's motion (the same sub-step ends the switch search looks at) and it enters
+    the monodromy as the whole piece's transition. From the first piece that leaves its state, the sub-steps are
+    taken one by one from the piece's start and every switch is located (module docstring); the pieces after it are
+    stepped again from its end."""
     linear = system.linear
     n = linear.size
     cache = {} if cache is None else cache
