@@ -155,7 +155,8 @@ def chain_route_rows() -> list[dict]:
                     row.update(cpu_over_original=cpu / before["cpu_s"], kv_relative=_relative(row["kv"], before["kv"]),
                                dte_rms_relative=_relative(row["dte_rms"], before["dte_rms"]))
                 rows.append(row)
-                print(f"chain {'modal   ' if modal else 'original'} CPU {cpu:6.3f} s  wall {wall:6.3f} s  Kv {row['kv']}"
+                route = "modal   " if modal else "original"
+                print(f"chain {route} CPU {cpu:6.3f} s  wall {wall:6.3f} s  Kv {row['kv']}"
                       + (f"  ({row['cpu_over_original']:.2f}× the original's CPU; Kv, DTE RMS differ by "
                          f"{row['kv_relative']:.1e}, {row['dte_rms_relative']:.1e})" if modal else ""), flush=True)
     finally:
@@ -189,8 +190,8 @@ def run_command_rows() -> list[dict]:
     row["cpu_over_fzg_rig_type_c"] = row["cpu_s"] / rows[-2]["cpu_s"]
     rows.append(row)
     print(f"run fzg_rig_type_c --method transient wall {row['wall_s']:6.2f} s  CPU {row['cpu_s']:6.2f} s  peak memory "
-          f"{row['peak_memory_mb']:7.1f} MB  exit {row['exit_code']}  ({row['cpu_over_fzg_rig_type_c']:.2f}x CPU of the "
-          "periodic run)", flush=True)
+          f"{row['peak_memory_mb']:7.1f} MB  exit {row['exit_code']}  ({row['cpu_over_fzg_rig_type_c']:.2f}x CPU of "
+          "the periodic run)", flush=True)
     return rows
 
 

@@ -21,8 +21,8 @@ Three figures, each a ratio helical / spur (the issue's target: helical ≤ 10×
    each also on the modes to 20 kHz (``cutoff_hz``, what a case's ``response_cutoff_hz`` does).
 
 Run: python benchmarks/bench_helical.py [--quick] [--drivetrain] (``--drivetrain``: figure 4 only)
-Writes benchmarks/results/bench_helical.json (``--drivetrain``: bench_helical_two_shaft.json; bench_helical_drivetrain.json
-is the other script's, benchmarks/bench_helical_drivetrain.py).
+Writes benchmarks/results/bench_helical.json (``--drivetrain``: bench_helical_two_shaft.json;
+bench_helical_drivetrain.json is the other script's, benchmarks/bench_helical_drivetrain.py).
 """
 
 from __future__ import annotations

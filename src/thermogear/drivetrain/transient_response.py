@@ -34,9 +34,10 @@ class DrivetrainTransient:
     """The motion from rest: ``time`` (S,) [s] over ``periods`` mesh periods of ``period`` [s]; ``motion`` its
     samples (δ, its rate, the mesh and bearing forces, no displacement of every DOF: 60 periods of a 100-DOF
     drivetrain would hold about a gigabyte; :class:`~thermogear.drivetrain.backlash_response.SampledMotion`);
-    ``region`` (S,) of the mesh; ``backlash`` whether the mesh may separate; ``end_state`` the solver's state after the last period; ``last_period`` the
-    metrics of the last period (keys of :func:`~thermogear.drivetrain.backlash_response.sampled_metrics` less the
-    orbit's) and ``last_period_forces`` its bearing forces. A train: ``period`` the common period, the fields above
+    ``region`` (S,) of the mesh; ``backlash`` whether the mesh may separate; ``end_state`` the solver's state after
+    the last period; ``last_period`` the metrics of the last period (keys of
+    :func:`~thermogear.drivetrain.backlash_response.sampled_metrics` less the orbit's) and ``last_period_forces`` its
+    bearing forces. A train: ``period`` the common period, the fields above
     the first mesh's, ``meshes`` each mesh's last period (δ, force, metrics) by name."""
 
     time: np.ndarray
