@@ -212,6 +212,10 @@ class AssembledDrivetrain:
         local = node_index(self.node_positions[location.shaft], location.shaft, location.position)
         return 6 * (self.node_offsets[location.shaft] + local) + DOF_NAMES.index(name)
 
+    def translation_dofs(self, location: NodeLocation) -> list[int]:
+        """Global indices of the node's x, y, z DOFs (where a bearing's forces act)."""
+        return [self.dof(location, name) for name in ("x", "y", "z")]
+
     def dof_mask(self, names: tuple[str, ...], shaft: str | None = None) -> np.ndarray:
         """Boolean mask (DOFs,) of the named DOF kinds, on one shaft or all."""
         mask = np.zeros(self.size, dtype=bool)

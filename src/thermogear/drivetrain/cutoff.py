@@ -214,8 +214,7 @@ def cutoff_error_estimate(assembled: AssembledDrivetrain, state: MeshState | Mes
     dte_scale = float(np.ptp(response.transmission_error))
     forces, force_scale = [], 0.0
     for bearing in assembled.drivetrain.bearings:
-        dofs = [assembled.dof(bearing.location, name) for name in ("x", "y", "z")]
-        displacement, rate = error.observed(reduction.basis[dofs])
+        displacement, rate = error.observed(reduction.basis[assembled.translation_dofs(bearing.location)])
         forces.append(float(np.abs(bearing.housing_force(displacement, rate, False)).max()))
         force_scale = max(force_scale, float(np.ptp(response.bearing_forces[bearing.name], axis=0).max()))
     force = max(forces, default=0.0)

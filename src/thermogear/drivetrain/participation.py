@@ -43,7 +43,7 @@ def bearing_force_modal_terms(assembled: AssembledDrivetrain, modes: DrivetrainM
         raise CaseError("modes", "damped modes", "undamped modes (drivetrain_modes without damped or speed)",
                         "the modal terms use M-normalised real shapes")
     item = found[0]
-    dofs = [assembled.dof(item.location, name) for name in ("x", "y", "z")]
+    dofs = assembled.translation_dofs(item.location)
     shapes = modes.shapes
     omega = modes.angular_frequencies
     damping = np.einsum("ij,ij->j", shapes, assembled.damping(0.0) @ shapes)

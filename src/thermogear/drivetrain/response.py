@@ -378,9 +378,8 @@ def _response(assembled: AssembledDrivetrain, train: MeshTrain, problems, grid: 
 
 def bearing_dofs(assembled: AssembledDrivetrain) -> list[int]:
     """The DOFs the bearings sit on (x, y, z of each bearing's node), in order, each once."""
-    dofs = [assembled.dof(bearing.location, name) for bearing in assembled.drivetrain.bearings
-            for name in ("x", "y", "z")]
-    return sorted(set(dofs))
+    bearings = assembled.drivetrain.bearings
+    return sorted({dof for bearing in bearings for dof in assembled.translation_dofs(bearing.location)})
 
 
 def bearing_forces(assembled: AssembledDrivetrain, displacement: np.ndarray, velocity: np.ndarray,
@@ -392,7 +391,7 @@ def bearing_forces(assembled: AssembledDrivetrain, displacement: np.ndarray, vel
     column = None if dofs is None else {dof: index for index, dof in enumerate(dofs)}
     forces = {}
     for bearing in assembled.drivetrain.bearings:
-        own = [assembled.dof(bearing.location, name) for name in ("x", "y", "z")]
+        own = assembled.translation_dofs(bearing.location)
         own = own if column is None else [column[dof] for dof in own]
         forces[bearing.name] = bearing.housing_force(displacement[:, own], velocity[:, own], clearance)
     return forces

@@ -62,8 +62,7 @@ def bearing_reactions(assembled: AssembledDrivetrain, displacement: np.ndarray) 
     """Force of each bearing on its housing, K_b·u (3,) [N], for a displacement (DOFs,) [SI]."""
     forces = {}
     for bearing in assembled.drivetrain.bearings:
-        dofs = [assembled.dof(bearing.location, name) for name in ("x", "y", "z")]
-        u = displacement[dofs][None]
+        u = displacement[assembled.translation_dofs(bearing.location)][None]
         forces[bearing.name] = bearing.housing_force(u, np.zeros_like(u), clearance=False)[0]
     return forces
 
